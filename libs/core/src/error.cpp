@@ -1,0 +1,2 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/core/error.hpp>
