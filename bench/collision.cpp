@@ -1,0 +1,270 @@
+// SPDX-License-Identifier: MIT
+// Narrow phase: e2d SAT, e2d GJK/EPA and Box2D 2.4 on the same pairs, in one binary.
+// Each case is an array of pairs, so branches and memory behave as in a real step; every
+// iteration collides every pair once. Reported: ns per pair and the ratio to Box2D.
+#include "ratio_reporter.hpp"
+
+#include <e2d/physics/geometry.hpp>
+#include <e2d/physics/manifold.hpp>
+
+#include <box2d/b2_circle_shape.h>
+#include <box2d/b2_collision.h>
+#include <box2d/b2_polygon_shape.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace ph = e2d::physics;
+
+constexpr int kPairsPerCase = 256;
+
+// One shape in both engines' form.
+struct Shape {
+    bool circle = false;
+    ph::Polygon polygon{};
+    ph::Circle disc{};
+    b2PolygonShape b2polygon{};
+    b2CircleShape b2disc{};
+};
+
+struct Pair {
+    int a = 0;
+    int b = 0;
+    ph::Transform xfA{};
+    ph::Transform xfB{};
+    b2Transform b2xfA{};
+    b2Transform b2xfB{};
+};
+
+struct Case {
+    std::string name;
+    std::vector<Shape> shapes;
+    std::vector<Pair> pairs;
+    bool expectContact = true;
+};
+
+// Uniform float in [lo, hi) from the engine's raw bits, identical on every standard library.
+struct Rng {
+    std::mt19937 engine{12345u};
+    float operator()(float lo, float hi) {
+        return lo + (hi - lo) * static_cast<float>(engine() >> 8) * (1.0f / 16777216.0f);
+    }
+};
+
+Shape polygonShape(const std::vector<ph::Vec2>& points) {
+    Shape s;
+    s.polygon = ph::makePolygon(points);
+    std::vector<b2Vec2> b2points;
+    for (int i = 0; i < s.polygon.count; ++i) {
+        b2points.emplace_back(s.polygon.vertices[i].x, s.polygon.vertices[i].y);
+    }
+    s.b2polygon.Set(b2points.data(), static_cast<int32>(b2points.size()));
+    return s;
+}
+
+Shape boxShape(float hx, float hy) {
+    return polygonShape({{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}});
+}
+
+Shape circleShape(float radius) {
+    Shape s;
+    s.circle = true;
+    s.disc = ph::Circle{{0.0f, 0.0f}, radius};
+    s.b2disc.m_radius = radius;
+    s.b2disc.m_p.SetZero();
+    return s;
+}
+
+Pair makePair(int a, int b, ph::Vec2 pa, float angleA, ph::Vec2 pb, float angleB) {
+    Pair p;
+    p.a = a;
+    p.b = b;
+    p.xfA = {pa, ph::Rot::fromAngle(angleA)};
+    p.xfB = {pb, ph::Rot::fromAngle(angleB)};
+    p.b2xfA.Set({pa.x, pa.y}, angleA);
+    p.b2xfB.Set({pb.x, pb.y}, angleB);
+    return p;
+}
+
+std::vector<Case> makeCases() {
+    Rng rng;
+    std::vector<Case> cases;
+
+    // A box resting on a box: B sits 1 cm into A, jittered by a millimetre.
+    {
+        Case c{"box_box_resting", {boxShape(0.5f, 0.5f)}, {}, true};
+        for (int i = 0; i < kPairsPerCase; ++i) {
+            c.pairs.push_back(makePair(0, 0, {0.0f, 0.0f}, 0.0f,
+                                       {rng(-0.05f, 0.05f), 0.99f + rng(-0.001f, 0.001f)},
+                                       rng(-0.01f, 0.01f)));
+        }
+        cases.push_back(std::move(c));
+    }
+    // Rotated boxes of different sizes, overlapping.
+    {
+        Case c{"box_box_rotated", {boxShape(0.5f, 0.5f), boxShape(1.0f, 0.25f)}, {}, true};
+        for (int i = 0; i < kPairsPerCase; ++i) {
+            c.pairs.push_back(makePair(0, 1, {0.0f, 0.0f}, rng(-3.14f, 3.14f),
+                                       {rng(-0.6f, 0.6f), rng(-0.6f, 0.6f)}, rng(-3.14f, 3.14f)));
+        }
+        cases.push_back(std::move(c));
+    }
+    // Random 8-gons (8 points on a circle at sorted random angles), overlapping.
+    {
+        Case c{"ngon8_overlapping", {}, {}, true};
+        for (int s = 0; s < 32; ++s) {
+            const float radius = rng(0.3f, 1.0f);
+            std::vector<ph::Vec2> points;
+            for (int k = 0; k < 8; ++k) {
+                const float angle = (static_cast<float>(k) + rng(0.1f, 0.9f)) * (6.2831853f / 8.0f);
+                points.push_back({radius * std::cos(angle), radius * std::sin(angle)});
+            }
+            c.shapes.push_back(polygonShape(points));
+        }
+        for (int i = 0; i < kPairsPerCase; ++i) {
+            c.pairs.push_back(makePair(i % 32, (i * 7 + 3) % 32, {0.0f, 0.0f}, rng(-3.14f, 3.14f),
+                                       {rng(-0.25f, 0.25f), rng(-0.25f, 0.25f)}, rng(-3.14f, 3.14f)));
+        }
+        cases.push_back(std::move(c));
+    }
+    // Boxes 3 m apart: every routine should leave early.
+    {
+        Case c{"box_box_separated", {boxShape(0.5f, 0.5f)}, {}, false};
+        for (int i = 0; i < kPairsPerCase; ++i) {
+            const float angle = rng(0.0f, 6.2831853f);
+            c.pairs.push_back(makePair(0, 0, {0.0f, 0.0f}, rng(-3.14f, 3.14f),
+                                       {3.0f * std::cos(angle), 3.0f * std::sin(angle)},
+                                       rng(-3.14f, 3.14f)));
+        }
+        cases.push_back(std::move(c));
+    }
+    // A circle against a box, overlapping.
+    {
+        Case c{"circle_polygon", {boxShape(0.5f, 0.5f), circleShape(0.3f)}, {}, true};
+        for (int i = 0; i < kPairsPerCase; ++i) {
+            const float angle = rng(0.0f, 6.2831853f);
+            const float d = rng(0.3f, 0.7f);
+            c.pairs.push_back(makePair(0, 1, {0.0f, 0.0f}, rng(-3.14f, 3.14f),
+                                       {d * std::cos(angle), d * std::sin(angle)}, 0.0f));
+        }
+        cases.push_back(std::move(c));
+    }
+    // Two circles, overlapping.
+    {
+        Case c{"circle_circle", {circleShape(0.5f), circleShape(0.3f)}, {}, true};
+        for (int i = 0; i < kPairsPerCase; ++i) {
+            const float angle = rng(0.0f, 6.2831853f);
+            const float d = rng(0.1f, 0.75f);
+            c.pairs.push_back(makePair(0, 1, {0.0f, 0.0f}, 0.0f,
+                                       {d * std::cos(angle), d * std::sin(angle)}, 0.0f));
+        }
+        cases.push_back(std::move(c));
+    }
+    return cases;
+}
+
+const std::vector<Case>& cases() {
+    static const std::vector<Case> all = makeCases();
+    return all;
+}
+
+enum class Engine { Sat, GjkEpa, Box2D };
+
+int collideOnce(const Case& c, const Pair& p, Engine engine) {
+    const Shape& a = c.shapes[static_cast<std::size_t>(p.a)];
+    const Shape& b = c.shapes[static_cast<std::size_t>(p.b)];
+    if (engine == Engine::Box2D) {
+        b2Manifold m;
+        if (a.circle && b.circle) {
+            b2CollideCircles(&m, &a.b2disc, p.b2xfA, &b.b2disc, p.b2xfB);
+        } else if (b.circle) {
+            b2CollidePolygonAndCircle(&m, &a.b2polygon, p.b2xfA, &b.b2disc, p.b2xfB);
+        } else {
+            b2CollidePolygons(&m, &a.b2polygon, p.b2xfA, &b.b2polygon, p.b2xfB);
+        }
+        benchmark::DoNotOptimize(m);
+        return m.pointCount;
+    }
+    ph::Manifold m;
+    if (a.circle && b.circle) {
+        m = ph::collideCircles(a.disc, p.xfA, b.disc, p.xfB);
+    } else if (b.circle) {
+        m = ph::collidePolygonAndCircle(a.polygon, p.xfA, b.disc, p.xfB);
+    } else if (engine == Engine::Sat) {
+        m = ph::collidePolygons(a.polygon, p.xfA, b.polygon, p.xfB);
+    } else {
+        m = ph::collidePolygonsGjkEpa(a.polygon, p.xfA, b.polygon, p.xfB);
+    }
+    benchmark::DoNotOptimize(m);
+    return m.pointCount;
+}
+
+void collideCase(benchmark::State& state, const Case* c, Engine engine) {
+    for (auto _ : state) {
+        for (const Pair& p : c->pairs) {
+            collideOnce(*c, p, engine);
+        }
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(c->pairs.size()));
+}
+
+bool hasCircle(const Case& c) {
+    for (const Shape& s : c.shapes) {
+        if (s.circle) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// Before timing anything: both engines must agree on whether each pair touches, or the
+// comparison would be meaningless.
+bool checkAgreement() {
+    bool ok = true;
+    for (const Case& c : cases()) {
+        for (std::size_t i = 0; i < c.pairs.size(); ++i) {
+            const int box2d = collideOnce(c, c.pairs[i], Engine::Box2D);
+            const int sat = collideOnce(c, c.pairs[i], Engine::Sat);
+            const int gjk = collideOnce(c, c.pairs[i], Engine::GjkEpa);
+            const bool expected = c.expectContact;
+            if ((box2d > 0) != expected || (sat > 0) != expected || (gjk > 0) != expected) {
+                std::fprintf(stderr, "%s pair %zu: contact points box2d=%d sat=%d gjk=%d, expected %s\n",
+                             c.name.c_str(), i, box2d, sat, gjk, expected ? "contact" : "none");
+                ok = false;
+            }
+        }
+    }
+    return ok;
+}
+
+void registerAll() {
+    for (const Case& c : cases()) {
+        const std::string base = "collide/" + c.name + "/";
+        benchmark::RegisterBenchmark((base + "box2d").c_str(), collideCase, &c, Engine::Box2D);
+        benchmark::RegisterBenchmark((base + "e2d_sat").c_str(), collideCase, &c, Engine::Sat);
+        if (!hasCircle(c)) { // circles use the direct routines whatever the algorithm
+            benchmark::RegisterBenchmark((base + "e2d_gjk_epa").c_str(), collideCase, &c,
+                                         Engine::GjkEpa);
+        }
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (!checkAgreement()) {
+        std::fprintf(stderr, "e2d and Box2D disagree on which pairs touch; not benchmarking\n");
+        return 1;
+    }
+    registerAll();
+    return e2d::bench::runWithRatios(argc, argv, "box2d", {"e2d_sat", "e2d_gjk_epa", "box2d"},
+                                     "ns per pair");
+}

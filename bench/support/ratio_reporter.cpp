@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+#include "ratio_reporter.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace e2d::bench {
+
+RatioReporter::RatioReporter(std::string baseline, std::vector<std::string> engineOrder)
+    : baseline_(std::move(baseline)), engines_(std::move(engineOrder)) {}
+
+void RatioReporter::ReportRuns(const std::vector<Run>& reports) {
+    std::vector<Run> runs = reports;
+    for (Run& run : runs) {
+        if (run.error_occurred || run.run_type != Run::RT_Iteration) {
+            continue;
+        }
+        const std::string name = run.run_name.function_name;
+        const auto last = name.rfind('/');
+        if (last == std::string::npos) {
+            continue;
+        }
+        const std::string caseName = name.substr(0, last);
+        const std::string engine = name.substr(last + 1);
+        const auto items = run.counters.find("items_per_second");
+        if (items == run.counters.end() || items->second.value <= 0.0) {
+            continue;
+        }
+        // items_per_second is already a rate over real time; invert it to ns per item.
+        const double ns = 1e9 / items->second.value;
+        if (std::find(caseOrder_.begin(), caseOrder_.end(), caseName) == caseOrder_.end()) {
+            caseOrder_.push_back(caseName);
+        }
+        nsPerItem_[caseName][engine] = ns;
+        run.counters["ns_per_item"] = benchmark::Counter(ns);
+        const auto& byEngine = nsPerItem_[caseName];
+        const auto base = byEngine.find(baseline_);
+        if (engine != baseline_ && base != byEngine.end() && base->second > 0.0) {
+            run.counters["vs_" + baseline_] = benchmark::Counter(ns / base->second);
+        }
+    }
+    ConsoleReporter::ReportRuns(runs);
+}
+
+std::string RatioReporter::markdownTable(const std::string& unit) const {
+    std::ostringstream out;
+    out << "| case |";
+    for (const auto& e : engines_) {
+        out << ' ' << e << " (" << unit << ") |";
+    }
+    for (const auto& e : engines_) {
+        if (e != baseline_) {
+            out << ' ' << e << " / " << baseline_ << " |";
+        }
+    }
+    out << "\n|---|";
+    for (std::size_t i = 0; i < 2 * engines_.size() - 1; ++i) {
+        out << "---:|";
+    }
+    out << '\n';
+    char buf[64];
+    for (const auto& c : caseOrder_) {
+        const auto& byEngine = nsPerItem_.at(c);
+        out << "| " << c << " |";
+        for (const auto& e : engines_) {
+            const auto it = byEngine.find(e);
+            if (it == byEngine.end()) {
+                out << " - |";
+            } else {
+                std::snprintf(buf, sizeof buf, " %.1f |", it->second);
+                out << buf;
+            }
+        }
+        const auto base = byEngine.find(baseline_);
+        for (const auto& e : engines_) {
+            if (e == baseline_) {
+                continue;
+            }
+            const auto it = byEngine.find(e);
+            if (it == byEngine.end() || base == byEngine.end()) {
+                out << " - |";
+            } else {
+                std::snprintf(buf, sizeof buf, " %.2f |", it->second / base->second);
+                out << buf;
+            }
+        }
+        out << '\n';
+    }
+    return out.str();
+}
+
+std::string RatioReporter::takeTableFlag(int& argc, char** argv) {
+    static constexpr const char* kFlag = "--e2d_table=";
+    std::string path;
+    int kept = 0;
+    for (int i = 0; i < argc; ++i) {
+        if (std::strncmp(argv[i], kFlag, std::strlen(kFlag)) == 0) {
+            path = argv[i] + std::strlen(kFlag);
+        } else {
+            argv[kept++] = argv[i];
+        }
+    }
+    argc = kept;
+    return path;
+}
+
+int runWithRatios(int argc, char** argv, const std::string& baseline,
+                  const std::vector<std::string>& engineOrder, const std::string& unit) {
+    const std::string tablePath = RatioReporter::takeTableFlag(argc, argv);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
+        return 2;
+    }
+    RatioReporter reporter(baseline, engineOrder);
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    benchmark::Shutdown();
+    const std::string table = reporter.markdownTable(unit);
+    std::printf("\n%s", table.c_str());
+    if (!tablePath.empty()) {
+        std::ofstream(tablePath) << table;
+    }
+    return 0;
+}
+
+} // namespace e2d::bench

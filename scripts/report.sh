@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The main job, from a fresh Debian 12 machine: build e2d optimised and produce its report.
+# Until the validation harness lands (issue: validation/), the report is the headless smoke run of
+# core and the collision benchmark against Box2D 2.4, written to report/.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+root="$PWD"
+"$root/scripts/install-deps.sh"
+out="${1:-$root/report}"
+mkdir -p "$out"
+
+cmake --preset release >/dev/null
+cmake --build --preset release
+
+echo "=== core smoke run (headless game loop)"
+"$root/build/release/apps/core_smoke/e2d-smoke" | tee "$out/smoke.txt"
+
+echo "=== collision benchmark: e2d SAT, e2d GJK/EPA and Box2D 2.4 in one binary"
+"$root/build/release/bench/e2d_bench_collision" --benchmark_min_time=0.2 \
+  --benchmark_out="$out/bench_collision.json" --benchmark_out_format=json \
+  --e2d_table="$out/bench_collision.md"
+echo
+echo "Report written to $out/ (bench_collision.md, bench_collision.json, smoke.txt)"

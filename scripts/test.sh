@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# Every test e2d has, from a fresh Debian 12 machine:
+#   1. the release build: every library's GoogleTest suite, the benchmarks (short runs);
+#   2. the same suites under AddressSanitizer + UndefinedBehaviorSanitizer;
+#   3. the libFuzzer targets, each for E2D_FUZZ_SECONDS (default 30);
+#   4. the consumer project, built against an install of e2d, linking only e2d::physics.
+# Ends with one line "e2d tests: N passed, M failed". Exit status 0 only if all passed.
+set -uo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+root="$PWD"
+"$root/scripts/install-deps.sh" || exit 1
+
+export MESA_SHADER_CACHE_DISABLE=true ALSOFT_DRIVERS=null
+export CCACHE_DIR="${CCACHE_DIR:-$HOME/.cache/ccache}"
+fuzz_seconds="${E2D_FUZZ_SECONDS:-30}"
+logs="$root/build/logs"
+mkdir -p "$logs"
+passed=0
+failed=0
+failures=()
+
+# ctest_stage NAME PRESET: configure, build and test one configuration, counting its tests.
+ctest_stage() {
+  local name="$1" preset="$2"
+  echo "=== $name: configure and build (preset $preset)"
+  if ! cmake --preset "$preset" >"$logs/$preset-configure.log" 2>&1; then
+    tail -30 "$logs/$preset-configure.log"
+    failures+=("$name: configure failed (see $logs/$preset-configure.log)")
+    failed=$((failed + 1))
+    return
+  fi
+  if ! cmake --build --preset "$preset" >"$logs/$preset-build.log" 2>&1; then
+    grep -E -A5 'error|FAILED' "$logs/$preset-build.log" | head -60
+    failures+=("$name: build failed (see $logs/$preset-build.log)")
+    failed=$((failed + 1))
+    return
+  fi
+  echo "=== $name: test"
+  ctest --preset "$preset" 2>&1 | tee "$logs/$preset-test.log" | grep -vE '^ +Start|Test +#[0-9]+: .* Passed'
+  local line
+  line=$(grep -E '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$logs/$preset-test.log" | tail -1)
+  if [ -z "$line" ]; then
+    failures+=("$name: ctest printed no summary")
+    failed=$((failed + 1))
+    return
+  fi
+  local nfail ntotal
+  nfail=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$line")
+  ntotal=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\2/' <<<"$line")
+  passed=$((passed + ntotal - nfail))
+  failed=$((failed + nfail))
+  [ "$nfail" -eq 0 ] || failures+=("$name: $nfail of $ntotal tests failed")
+}
+
+ctest_stage "release" release
+ctest_stage "asan+ubsan" asan
+
+echo "=== fuzz: libFuzzer targets, ${fuzz_seconds}s each"
+if cmake --preset fuzz >"$logs/fuzz-configure.log" 2>&1 && cmake --build --preset fuzz >"$logs/fuzz-build.log" 2>&1; then
+  for fuzzer in "$root"/build/fuzz/libs/physics/fuzz/fuzz_*; do
+    [ -x "$fuzzer" ] || continue
+    target=$(basename "$fuzzer")
+    corpus="$root/build/fuzz/corpus/$target"
+    mkdir -p "$corpus"
+    seeds="$root/libs/physics/fuzz/corpus/$target"
+    [ -d "$seeds" ] || seeds=""
+    if "$fuzzer" -max_total_time="$fuzz_seconds" -print_final_stats=1 \
+         -artifact_prefix="$logs/$target-" "$corpus" $seeds >"$logs/$target.log" 2>&1; then
+      echo "$target: ok ($(grep -E 'stat::number_of_executed_units' "$logs/$target.log" | awk '{print $2}') runs)"
+      passed=$((passed + 1))
+    else
+      tail -40 "$logs/$target.log"
+      failures+=("fuzz: $target found a failure (see $logs/$target.log)")
+      failed=$((failed + 1))
+    fi
+  done
+else
+  tail -30 "$logs/fuzz-build.log" "$logs/fuzz-configure.log"
+  failures+=("fuzz: build failed")
+  failed=$((failed + 1))
+fi
+
+echo "=== consumer: find_package(e2d COMPONENTS physics) against an install"
+if "$root/scripts/check-consumer.sh" "$root/build/release" 2>&1 | tee "$logs/consumer.log"; then
+  passed=$((passed + 1))
+else
+  failures+=("consumer: see $logs/consumer.log")
+  failed=$((failed + 1))
+fi
+
+for f in "${failures[@]}"; do echo "FAILED: $f"; done
+echo "e2d tests: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
