@@ -16,9 +16,11 @@ namespace {
 constexpr float kFlipTolerance = 0.1f * kLinearSlop;
 // Cores farther apart than this are "separated": their closest features decide the contact.
 constexpr float kSeparatedCores = 0.1f * kLinearSlop;
-// The closest-point direction counts as the reference face's normal above this cosine
-// (about 2.6 degrees); otherwise the contact is a single vertex contact.
-constexpr float kFaceCosine = 0.999f;
+// Closest points of the two edges offset along the reference face by no more than this
+// (metres) make a face contact; more, and it is a vertex contact with one point. Only rounding
+// noise of exactly parallel edges should pass: clipping a true vertex contact to the face
+// would overstate its separation by the offset times the incident edge's slope.
+constexpr float kFaceOffset = 0.01f * kLinearSlop;
 
 struct EdgeSeparation {
     int edge = 0;
@@ -114,7 +116,7 @@ Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& 
         // distance >= separation > 0, so w is well defined.
         const float distance = std::sqrt(sd.distanceSquared);
         const Vec2 w = (sd.closest2 - sd.closest1) / distance;
-        if (dot(w, normal1) < kFaceCosine) {
+        if (std::fabs(cross(normal1, sd.closest2 - sd.closest1)) > kFaceOffset) {
             Vec2 c1 = sd.closest1 + poly1.radius * w;
             Vec2 c2 = sd.closest2 - poly2.radius * w;
             int feature1 = sd.fraction1 < 0.5f ? i11 : i12;
