@@ -27,8 +27,9 @@ struct EdgeSeparation {
     float separation = -FLT_MAX;
 };
 
-// The edge of poly1 whose normal separates poly2 the most (the least penetration).
-EdgeSeparation findMaxSeparation(const Polygon& poly1, const Polygon& poly2) {
+// The edge of poly1 whose normal separates poly2 the most (the least penetration). Stops at
+// the first edge that separates them by more than `limit`: the pair has no contact then.
+EdgeSeparation findMaxSeparation(const Polygon& poly1, const Polygon& poly2, float limit) {
     EdgeSeparation best;
     for (int i = 0; i < poly1.count; ++i) {
         const Vec2 n = poly1.normals[i];
@@ -41,6 +42,9 @@ EdgeSeparation findMaxSeparation(const Polygon& poly1, const Polygon& poly2) {
         if (si > best.separation) {
             best.separation = si;
             best.edge = i;
+            if (si > limit) {
+                break;
+            }
         }
     }
     return best;
@@ -71,11 +75,11 @@ Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& 
 
     const float radius = a.radius + b.radius;
     const float limit = margin + radius;
-    const EdgeSeparation sepA = findMaxSeparation(localA, localB);
+    const EdgeSeparation sepA = findMaxSeparation(localA, localB, limit);
     if (sepA.separation > limit) {
         return Manifold{};
     }
-    const EdgeSeparation sepB = findMaxSeparation(localB, localA);
+    const EdgeSeparation sepB = findMaxSeparation(localB, localA, limit);
     if (sepB.separation > limit) {
         return Manifold{};
     }
