@@ -12,8 +12,8 @@ namespace {
 // Feature code for "the side of a capsule" in capsule ids; vertices are 0 and 1.
 constexpr int kCapsuleSide = 2;
 // Closest points offset along a capsule's axis by no more than this (metres) make a side
-// contact with up to two points; see kFaceOffset in manifold_sat.cpp.
-constexpr float kCapsuleFaceOffset = 0.01f * kLinearSlop;
+// contact with up to two points, for the reason given at detail::kFaceOffset.
+constexpr float kCapsuleFaceOffset = detail::kFaceOffset;
 
 // One point between two round features: cores at pA and pB (A's frame) `distance` apart along
 // unit `normal`, radii rA and rB.

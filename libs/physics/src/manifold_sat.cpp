@@ -10,17 +10,9 @@
 namespace e2d::physics {
 namespace {
 
-// B's separation from A may beat A's by this much before B's face becomes the reference: an
-// absolute bias (metres) so that nearly equal faces do not flip-flop from one step to the next
-// and change the feature ids.
-constexpr float kFlipTolerance = 0.1f * kLinearSlop;
-// Cores farther apart than this are "separated": their closest features decide the contact.
-constexpr float kSeparatedCores = 0.1f * kLinearSlop;
-// Closest points of the two edges offset along the reference face by no more than this
-// (metres) make a face contact; more, and it is a vertex contact with one point. Only rounding
-// noise of exactly parallel edges should pass: clipping a true vertex contact to the face
-// would overstate its separation by the offset times the incident edge's slope.
-constexpr float kFaceOffset = 0.01f * kLinearSlop;
+using detail::kFaceOffset;
+using detail::kFlipTolerance;
+using detail::kSeparatedCores;
 
 struct EdgeSeparation {
     int edge = 0;
