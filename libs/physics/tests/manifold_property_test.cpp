@@ -220,11 +220,10 @@ TEST(CollideProperties, AgreeWithBruteForceDistance) {
             EXPECT_NEAR(minSeparation, minReversed, 0.1f * kLinearSlop + 1e-5f);
         }
         if (coreGap > 0.0f) {
-            // Separated cores: the deepest point is the true gap (a face contact may measure
-            // it along the face normal, never more than the gap).
+            // Separated cores: the deepest point's separation is the true gap between the
+            // rounded surfaces, corners included (40 000 trials agree within 1e-4 m).
             ++separatedContacts;
-            EXPECT_LE(minSeparation, trueSeparation + tolerance);
-            EXPECT_GE(minSeparation, trueSeparation - 0.002f);
+            EXPECT_NEAR(minSeparation, trueSeparation, tolerance);
         } else {
             EXPECT_LT(minSeparation, 0.0f);
         }
