@@ -109,9 +109,12 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
 
     detail::PointSet setA{a.vertices.data(), a.count};
     detail::PointSet setB{localB.vertices.data(), localB.count};
-    detail::GjkResult gjk = detail::runGjk(setA, setB, nullptr);
     const float radius = a.radius + b.radius;
     const float limit = margin + radius;
+    detail::GjkResult gjk = detail::runGjk(setA, setB, nullptr, limit);
+    if (gjk.beyondLimit) {
+        return Manifold{};
+    }
 
     const bool separated = gjk.simplex.count < 3 && gjk.distance > kUseEpaBelow;
     Vec2 direction;
