@@ -117,18 +117,33 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
     }
 
     const bool separated = gjk.simplex.count < 3 && gjk.distance > kUseEpaBelow;
+    FaceChoice faceA;
+    FaceChoice faceB;
     Vec2 direction;
     if (separated) {
         if (gjk.distance > limit) {
             return Manifold{};
         }
         direction = (gjk.pointB - gjk.pointA) * (1.0f / gjk.distance);
+        faceA = bestBracketingFace(a, localB, direction);
+        faceB = bestBracketingFace(localB, a, -direction);
     } else {
-        direction = detail::runEpa(setA, setB, gjk.simplex).normal;
+        detail::EpaResult epa = detail::runEpa(setA, setB, gjk.simplex);
+        direction = epa.normal;
+        if (epa.converged && epa.faceA >= 0) {
+            // A's face is the axis of least penetration: nothing of B's can beat it by the
+            // flip tolerance, so B's faces need no test.
+            faceA = {epa.faceA, -epa.depth};
+            faceB = {0, -FLT_MAX};
+        } else if (epa.converged && epa.faceB >= 0) {
+            faceB = {epa.faceB, -epa.depth};
+            faceA = bestBracketingFace(a, localB, direction);
+        } else {
+            faceA = bestBracketingFace(a, localB, direction);
+            faceB = bestBracketingFace(localB, a, -direction);
+        }
     }
 
-    const FaceChoice faceA = bestBracketingFace(a, localB, direction);
-    const FaceChoice faceB = bestBracketingFace(localB, a, -direction);
     const bool flip = faceB.separation > faceA.separation + kFlipTolerance;
     const float separation = flip ? faceB.separation : faceA.separation;
     if (separation > limit) {
