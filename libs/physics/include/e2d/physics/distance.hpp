@@ -118,9 +118,10 @@ struct ShapeCastPairInput {
 /// (each step moves B by the current GJK distance divided by the approach speed along the
 /// normal, so it never passes the contact). The shapes touch when their rounded surfaces are
 /// closer than kShapeCastTolerance. Output (world): `point` on the surface of A, `normal` from A
-/// to B at the contact; `hit` with `fraction` 0 when they overlap at the start (normal then
-/// (0, 0)); no hit when they move apart, do not meet before maxFraction, or after
-/// kMaxShapeCastIterations.
+/// to B at the contact; `hit` with `fraction` 0 when they touch or overlap at the start (the
+/// normal is then (0, 0) if even the core hulls overlap); no hit when they move apart, do not
+/// meet before maxFraction, or after kMaxShapeCastIterations (grazing approaches converge
+/// slowly; the fraction then reported is still short of any contact).
 CastOutput shapeCast(const ShapeCastPairInput& input);
 
 } // namespace e2d::physics
