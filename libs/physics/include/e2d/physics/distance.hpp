@@ -121,7 +121,7 @@ struct ShapeCastPairInput {
 /// to B at the contact; `hit` with `fraction` 0 when they touch or overlap at the start (the
 /// normal is then (0, 0) if even the core hulls overlap); no hit when they move apart, do not
 /// meet before maxFraction, or after kMaxShapeCastIterations (grazing approaches converge
-/// slowly; the fraction then reported is still short of any contact).
+/// slowly; `fraction` then tells how far B is known to move freely).
 CastOutput shapeCast(const ShapeCastPairInput& input);
 
 } // namespace e2d::physics
