@@ -17,6 +17,10 @@ namespace e2d::physics {
 /// points GJK ends well before (it stops when a support point repeats, which bounds it by the
 /// number of point pairs); the cap guards against floating-point cycling.
 inline constexpr int kMaxGjkIterations = 20;
+/// GJK also stops when a new support point brings the simplex closer to the origin by less than
+/// this fraction of the coordinates' magnitude (rounding noise; e.g. duplicated points). The
+/// reported distance is then within about that much of the exact one.
+inline constexpr float kGjkRelativeTolerance = 1.0e-6f;
 /// The most EPA iterations penetration() runs (the Minkowski difference of two proxies has at
 /// most 2 * kMaxPolygonVertices vertices, so a polytope that grows by one vertex per iteration
 /// is complete before this).
@@ -77,9 +81,10 @@ struct DistanceOutput {
 };
 
 /// Closest points of two convex proxies by GJK (2D simplex with Voronoi-region reduction).
-/// Runs at most kMaxGjkIterations; ends when a support point repeats or the simplex encloses
-/// the origin. Never returns NaN for finite input, whatever the degeneracy (duplicated points,
-/// collinear supports, one-point proxies, identical shapes at the same place). `cache` may be
+/// Runs at most kMaxGjkIterations; ends when a support point repeats, when progress falls
+/// below kGjkRelativeTolerance, or when the simplex encloses the origin (overlap). Never returns
+/// NaN for finite input, whatever the degeneracy (duplicated points, collinear supports,
+/// one-point proxies, identical shapes at the same place). `cache` may be
 /// null; if given it warm-starts the search and is updated.
 /// With useRadii, rounded shapes whose cores are closer than the sum of radii overlap: distance
 /// 0 and pointA == pointB at the middle of the gap.
