@@ -87,7 +87,7 @@ struct DistanceOutput {
 /// one-point proxies, identical shapes at the same place). `cache` may be
 /// null; if given it warm-starts the search and is updated.
 /// With useRadii, rounded shapes whose cores are closer than the sum of radii overlap: distance
-/// 0 and pointA == pointB at the middle of the gap.
+/// 0 and pointA == pointB in the middle of the overlap.
 DistanceOutput shapeDistance(const DistanceInput& input, SimplexCache* cache = nullptr);
 
 /// Result of penetration(). Points and normal are in world coordinates.
