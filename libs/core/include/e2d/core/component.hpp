@@ -23,7 +23,9 @@ class Scene;
 ///
 /// Uniqueness: a type that may appear at most once per object declares
 /// `static constexpr bool kUnique = true;` (derived types inherit it). `addComponent<T>` then
-/// refuses a second component that is a T, counting components still waiting to be added.
+/// refuses a component that is a T when one is already attached or waiting to be added, and
+/// any component that is-a U when a component was added as unique type U (so a subclass of a
+/// unique Rigidbody cannot sit next to a plain Rigidbody, in either order).
 class Component {
 public:
     /// Components are not unique unless a derived class says so.
@@ -93,6 +95,8 @@ public:
 private:
     friend class GameObject;
     GameObject* gameObject_ = nullptr;
+    // For a component added as a unique type U: tells whether another component is a U.
+    bool (*isSameUniqueKind_)(const Component&) = nullptr;
     bool initialized_ = false;
 };
 

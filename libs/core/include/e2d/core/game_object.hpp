@@ -102,8 +102,9 @@ public:
     // Components --------------------------------------------------------------------------
 
     /// Constructs a T from `args` and queues it; it is attached at the start of the next
-    /// frame. Returns it (owned by this object), or nullptr when T is unique and a T is
-    /// already attached or queued (a warning is logged if there is a logger).
+    /// frame. Returns it (owned by this object), or nullptr when uniqueness forbids it (see
+    /// Component; a warning is logged if there is a logger, and a refused component that
+    /// had to be constructed for the check is destroyed at once).
     template <class T, class... Args>
     T* addComponent(Args&&... args);
 
@@ -140,8 +141,9 @@ private:
 
     GameObject(Scene& scene, GameObjectId id);
 
-    template <class T>
-    bool hasUniqueConflict() const;
+    // True if an attached (not leaving) or queued (not cancelled) component satisfies it.
+    template <class Predicate>
+    bool hasConflict(Predicate&& conflicts) const;
     void warnRefusedUnique(const std::type_info& type) const;
     template <class T>
     void collectInChildren(std::vector<T*>& out) const;
@@ -186,32 +188,45 @@ private:
 template <class T, class... Args>
 T* GameObject::addComponent(Args&&... args) {
     static_assert(std::is_base_of_v<Component, T>, "addComponent<T>: T must derive from core::Component");
+    // The common refusal (a T already there) is decided before constructing anything.
     if constexpr (T::kUnique) {
-        if (hasUniqueConflict<T>()) {
+        if (hasConflict([](const Component& c) { return dynamic_cast<const T*>(&c) != nullptr; })) {
             warnRefusedUnique(typeid(T));
             return nullptr;
         }
     }
     auto component = std::make_unique<T>(std::forward<Args>(args)...);
+    // A T that is also a subclass of an already-present unique type is only detectable on
+    // the object itself.
+    const Component& candidate = *component;
+    if (hasConflict([&candidate](const Component& c) {
+            return c.isSameUniqueKind_ != nullptr && c.isSameUniqueKind_(candidate);
+        })) {
+        warnRefusedUnique(typeid(T));
+        return nullptr;
+    }
     T* raw = component.get();
-    static_cast<Component*>(raw)->gameObject_ = this;
+    auto* base = static_cast<Component*>(raw);
+    base->gameObject_ = this;
+    if constexpr (T::kUnique) {
+        base->isSameUniqueKind_ = [](const Component& c) { return dynamic_cast<const T*>(&c) != nullptr; };
+    }
     pendingAdd_.push_back(std::move(component));
     return raw;
 }
 
-template <class T>
-bool GameObject::hasUniqueConflict() const {
+template <class Predicate>
+bool GameObject::hasConflict(Predicate&& conflicts) const {
+    const auto leaving = [this](const Component* c) {
+        return std::find(pendingRemove_.begin(), pendingRemove_.end(), c) != pendingRemove_.end();
+    };
     for (const auto& component : components_) {
-        const bool leaving = std::find(pendingRemove_.begin(), pendingRemove_.end(), component.get()) !=
-                             pendingRemove_.end();
-        if (!leaving && dynamic_cast<const T*>(component.get()) != nullptr) {
+        if (!leaving(component.get()) && conflicts(*component)) {
             return true;
         }
     }
     for (const auto& component : pendingAdd_) {
-        const bool cancelled = std::find(pendingRemove_.begin(), pendingRemove_.end(), component.get()) !=
-                               pendingRemove_.end();
-        if (!cancelled && dynamic_cast<const T*>(component.get()) != nullptr) {
+        if (!leaving(component.get()) && conflicts(*component)) {
             return true;
         }
     }
