@@ -270,12 +270,19 @@ ConfigResult parseConfig(std::string_view text, std::string_view sourceName) {
 }
 
 ConfigResult loadConfig(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
+    // An ifstream opens a directory without complaint on POSIX systems; reading it fails
+    // silently, so it is checked for explicitly.
+    std::error_code ec;
+    const bool isDirectory = std::filesystem::is_directory(path, ec);
+    std::ifstream file;
+    if (!isDirectory) {
+        file.open(path, std::ios::binary);
+    }
     std::ostringstream contents;
-    if (file) {
+    if (file.is_open()) {
         contents << file.rdbuf();
     }
-    if (!file || file.bad()) {
+    if (!file.is_open() || file.bad()) {
         ConfigResult result;
         result.diagnostics.push_back(ConfigDiagnostic{ConfigDiagnostic::Severity::Warning, path.string(), 0, {},
                                                       "cannot read the file, using the defaults"});
