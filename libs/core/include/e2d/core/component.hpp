@@ -36,8 +36,9 @@ public:
     Component(const Component&) = delete;
     Component& operator=(const Component&) = delete;
 
-    /// The object this component is attached to (set before onAddedToGameObject, never null
-    /// from then on).
+    /// The object this component belongs to: set by `GameObject::addComponent`, so it is
+    /// already valid while the component waits to be attached (nullptr only for a component
+    /// that was never added).
     [[nodiscard]] GameObject* gameObject() const noexcept { return gameObject_; }
     /// The scene of the owning object (nullptr before the component is attached).
     [[nodiscard]] Scene* scene() const noexcept;
