@@ -36,7 +36,8 @@ class TaggedScene : public Scene {
 protected:
     void onInitialize() override {
         gLog->add(Tag, "sceneInit");
-        createGameObject().addComponent<Recorder>(*gLog, std::string(Tag) + "Object");
+        e2d::core::GameObject& object = createGameObject();
+        object.addComponent<Recorder>(*gLog, std::string(Tag) + "Object");
     }
     void onTerminate() override { gLog->add(Tag, "sceneTerm"); }
 };
