@@ -266,6 +266,37 @@ ConfigResult parseConfig(std::string_view text, std::string_view sourceName) {
         }
         seen.insert_or_assign(std::string(key), lineNumber);
     }
+
+    // A min above its max is blamed on whichever of the two was written last; both go back
+    // to their defaults, which are consistent.
+    const auto checkOrder = [&](std::string_view minKey, float Config::*minField, std::string_view maxKey,
+                                float Config::*maxField) {
+        Config& c = result.config;
+        if (c.*minField <= c.*maxField) {
+            return;
+        }
+        const auto lineOf = [&seen](std::string_view k) {
+            const auto it = seen.find(k);
+            return it != seen.end() ? it->second : 0;
+        };
+        const int minLine = lineOf(minKey);
+        const int maxLine = lineOf(maxKey);
+        if (maxLine > minLine) {
+            report(Severity::Error, maxLine, maxKey,
+                   "must be >= " + std::string(minKey) + " (" + detail::formatNumber(c.*minField) + "), got " +
+                       detail::formatNumber(c.*maxField));
+        } else {
+            report(Severity::Error, minLine, minKey,
+                   "must be <= " + std::string(maxKey) + " (" + detail::formatNumber(c.*maxField) + "), got " +
+                       detail::formatNumber(c.*minField));
+        }
+        const Config defaults;
+        c.*minField = defaults.*minField;
+        c.*maxField = defaults.*maxField;
+    };
+    checkOrder("minAttenuationDistance", &Config::minAttenuationDistance, "maxAttenuationDistance",
+               &Config::maxAttenuationDistance);
+    checkOrder("minPanningDistance", &Config::minPanningDistance, "maxPanningDistance", &Config::maxPanningDistance);
     return result;
 }
 

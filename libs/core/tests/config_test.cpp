@@ -219,6 +219,21 @@ TEST(Config, WarningsForUnknownAndDuplicateKeys) {
     EXPECT_TRUE(r.hasWarnings());
 }
 
+TEST(Config, MinAboveMaxIsBlamedOnTheLaterKeyAndResetsBoth) {
+    const ConfigResult r = parseConfig("minAttenuationDistance = 600\n"
+                                       "maxAttenuationDistance = 500\n"
+                                       "minPanningDistance = 700\n",
+                                       "game.cfg");
+    EXPECT_THAT(texts(r),
+                ElementsAre("game.cfg:2: maxAttenuationDistance: must be >= minAttenuationDistance (600), got 500",
+                            "game.cfg:3: minPanningDistance: must be <= maxPanningDistance (512), got 700"));
+    EXPECT_EQ(r.config.minAttenuationDistance, 256.0f);
+    EXPECT_EQ(r.config.maxAttenuationDistance, 512.0f);
+    EXPECT_EQ(r.config.minPanningDistance, 256.0f);
+    // Equal bounds are fine.
+    EXPECT_THAT(parseConfig("minPanningDistance = 512").diagnostics, IsEmpty());
+}
+
 TEST(Config, EmptyTextGivesDefaults) {
     const ConfigResult r = parseConfig("", "empty.cfg");
     EXPECT_THAT(r.diagnostics, IsEmpty());

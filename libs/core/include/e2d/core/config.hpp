@@ -124,7 +124,7 @@ struct ConfigResult {
 /// integer ("12px" and "1.5" are errors).
 ///
 /// Errors: bad or out-of-range number, unknown enum value (the accepted ones are listed),
-/// line without `=`, empty key. Warnings: unknown key (ignored), duplicate key (the last value
+/// line without `=`, empty key, a min distance above its max (both reset to defaults). Warnings: unknown key (ignored), duplicate key (the last value
 /// wins). `sourceName` is used in diagnostics.
 [[nodiscard]] ConfigResult parseConfig(std::string_view text, std::string_view sourceName = "config");
 
