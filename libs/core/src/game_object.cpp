@@ -84,6 +84,11 @@ glm::vec3 GameObject::worldPosition() const {
     return glm::vec3(worldTransform()[3]);
 }
 
+float GameObject::worldOrientation() const {
+    const glm::mat4& world = worldTransform();
+    return std::atan2(world[0][1], world[0][0]);
+}
+
 // Hierarchy ------------------------------------------------------------------------------
 
 bool GameObject::isAncestorOf(const GameObject& other) const noexcept {

@@ -152,6 +152,21 @@ TEST(GameObjectTransform, ThreeLevelsComposeAndDirtyPropagates) {
     expectNear(glm::vec2(c.worldPosition()), {8.0f, 0.0f});
 }
 
+TEST(GameObjectTransform, WorldOrientationAddsUpTheChain) {
+    Scene scene;
+    GameObject& a = scene.createGameObject();
+    GameObject& b = scene.createGameObject();
+    a.addChild(b);
+    a.setOrientation(0.5f);
+    a.setScale(3.0f);
+    b.setOrientation(0.25f);
+    EXPECT_NEAR(b.worldOrientation(), 0.75f, kEps);
+    // Past a half turn the angle wraps into (-pi, pi]: 2 + 2 = 4 rad is 4 - 2 pi.
+    a.setOrientation(2.0f);
+    b.setOrientation(2.0f);
+    EXPECT_NEAR(b.worldOrientation(), 4.0f - 2.0f * std::numbers::pi_v<float>, kEps);
+}
+
 TEST(GameObjectTransform, DirtyReachesGrandchildrenAfterAPartialRead) {
     Scene scene;
     GameObject& a = scene.createGameObject();

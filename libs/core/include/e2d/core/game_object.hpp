@@ -27,8 +27,8 @@ class Scene;
 /// Created and owned by a Scene (`Scene::createGameObject()`); refer to it across frames by
 /// its GameObjectId. Its behaviour is the sum of its components.
 ///
-/// Transform: `position()` (x, y in world units; z is the draw order, larger is drawn in
-/// front), `scale()` and `orientation()` are relative to the parent (to the world for a root
+/// Transform: `position()` (x, y in world units; z orders drawing, as the renderer defines),
+/// `scale()` and `orientation()` are relative to the parent (to the world for a root
 /// object). Orientation is in radians, counter-clockwise positive with y pointing up (the seed
 /// used clockwise). The local matrix is T(position) * R(orientation) * S(scale); the world
 /// matrix is parent world * local, cached and recomputed only after something on the path to
@@ -82,6 +82,10 @@ public:
     [[nodiscard]] const glm::mat4& worldTransform() const;
     /// Translation column of the world transform.
     [[nodiscard]] glm::vec3 worldPosition() const;
+    /// Angle of the world x axis in radians, in (-pi, pi], counter-clockwise from +x. Equals
+    /// the sum of the orientations up to the root when no object on the way has a negative
+    /// or non-uniform scale.
+    [[nodiscard]] float worldOrientation() const;
     /// True when the cached world transform is out of date (it is rebuilt on the next read).
     [[nodiscard]] bool isTransformDirty() const noexcept { return worldDirty_; }
 
