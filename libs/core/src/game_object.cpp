@@ -169,10 +169,19 @@ void GameObject::removeComponent(Component* component) {
     }
     if (std::find(pendingRemove_.begin(), pendingRemove_.end(), component) == pendingRemove_.end()) {
         pendingRemove_.push_back(component);
+        queueComponentChange();
+    }
+}
+
+void GameObject::queueComponentChange() {
+    if (!componentChangeQueued_) {
+        componentChangeQueued_ = true;
+        scene_->componentChanges_.push_back(this);
     }
 }
 
 void GameObject::applyPendingComponents() {
+    componentChangeQueued_ = false;
     // Swapped out first: events below may queue more work, which waits for the next frame.
     std::vector<Component*> removals;
     removals.swap(pendingRemove_);

@@ -166,6 +166,8 @@ void Scene::destroyPending() {
     const auto dying = [](const GameObject* o) { return o->beingDestroyed_; };
     objects_.erase(std::remove_if(objects_.begin(), objects_.end(), dying), objects_.end());
     pendingAdd_.erase(std::remove_if(pendingAdd_.begin(), pendingAdd_.end(), dying), pendingAdd_.end());
+    componentChanges_.erase(std::remove_if(componentChanges_.begin(), componentChanges_.end(), dying),
+                            componentChanges_.end());
     for (GameObject* object : batch) {
         if (object->parent_ != nullptr && !object->parent_->beingDestroyed_) {
             object->detachFromParent();
@@ -192,7 +194,11 @@ void Scene::beginFrame() {
 
     destroyPending();
 
-    for (GameObject* object : objects_) {
+    // Objects still waiting to join are in this list too; applying their components here
+    // instead of when they join sends the same events in the same order.
+    std::vector<GameObject*> changed;
+    changed.swap(componentChanges_);
+    for (GameObject* object : changed) {
         object->applyPendingComponents();
     }
 
@@ -271,6 +277,7 @@ void Scene::dispatchTerminate() {
     objects_.clear();
     pendingAdd_.clear();
     pendingDestroy_.clear();
+    componentChanges_.clear();
     for (Slot& slot : slots_) {
         if (slot.object) {
             freeSlot(*slot.object);

@@ -340,3 +340,38 @@ TEST(Scene, ComponentsAddedToALiveObjectAreInitialisedOnAttach) {
     scene.beginFrame();
     EXPECT_THAT(log.events, ElementsAre("late:added", "late:init"));
 }
+
+TEST(Scene, QueuedComponentsOfADestroyedObjectAreDroppedWithIt) {
+    EventLog log;
+    Scene scene;
+    GameObject& o = scene.createGameObject();
+    GameObject& other = scene.createGameObject();
+    scene.beginFrame();
+    o.addComponent<Recorder>(log, "queued");
+    other.addComponent<Recorder>(log, "survivor");
+    scene.destroyGameObject(o);
+    scene.beginFrame();
+    EXPECT_THAT(log.events, ElementsAre("queued:destroyed", "survivor:added", "survivor:init"));
+    log.clear();
+    scene.beginFrame(); // nothing left queued
+    EXPECT_THAT(log.events, IsEmpty());
+}
+
+TEST(Scene, ComponentAddedToAJoiningObjectDuringInitialisationIsInitialisedWithIt) {
+    EventLog log;
+    struct Helper : Component {
+        EventLog* log = nullptr;
+        GameObject* target = nullptr;
+        void onInitialize() override { target->addComponent<Recorder>(*log, "gift"); }
+    };
+    Scene scene;
+    GameObject& giver = scene.createGameObject();
+    scene.beginFrame();
+    GameObject& receiver = scene.createGameObject();
+    auto* helper = giver.addComponent<Helper>();
+    helper->log = &log;
+    helper->target = &receiver;
+    scene.beginFrame(); // helper attaches (and initialises) before receiver joins
+    EXPECT_THAT(log.events, ElementsAre("gift:added", "gift:init"));
+    EXPECT_TRUE(receiver.isInitialized());
+}

@@ -152,6 +152,9 @@ private:
     template <class T>
     void collectInChildren(std::vector<T*>& out) const;
 
+    // Tells the scene this object has queued component changes, so beginFrame() visits
+    // only such objects.
+    void queueComponentChange();
     void markWorldDirty() const noexcept;
     void detachFromParent() noexcept;
 
@@ -182,6 +185,7 @@ private:
     bool initialized_ = false;
     bool pendingDestroy_ = false;
     bool beingDestroyed_ = false; // set by Scene while it destroys a batch
+    bool componentChangeQueued_ = false;
 
     std::vector<std::unique_ptr<Component>> pendingAdd_;
     std::vector<Component*> pendingRemove_;
@@ -216,6 +220,7 @@ T* GameObject::addComponent(Args&&... args) {
         base->isSameUniqueKind_ = [](const Component& c) { return dynamic_cast<const T*>(&c) != nullptr; };
     }
     pendingAdd_.push_back(std::move(component));
+    queueComponentChange();
     return raw;
 }
 

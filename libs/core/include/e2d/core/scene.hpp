@@ -131,6 +131,8 @@ protected:
     }
 
 private:
+    friend class GameObject;
+
     struct Slot {
         std::unique_ptr<GameObject> object;
         std::uint32_t generation = 1;
@@ -150,6 +152,7 @@ private:
     std::vector<GameObject*> objects_;
     std::vector<GameObject*> pendingAdd_;
     std::vector<GameObject*> pendingDestroy_;
+    std::vector<GameObject*> componentChanges_; // objects with queued component changes
     int dispatchDepth_ = 0;
 };
 
