@@ -343,6 +343,11 @@ Aabb World::shapeAabb(ShapeId id) const {
     return impl_->shape(impl_->require(id, "shapeAabb")).aabb;
 }
 
+Aabb World::shapeFatAabb(ShapeId id) const {
+    const detail::Shape& s = impl_->shape(impl_->require(id, "shapeFatAabb"));
+    return s.proxyKey != kNullIndex ? impl_->broadPhase.fatAabb(s.proxyKey) : s.aabb;
+}
+
 Filter World::shapeFilter(ShapeId id) const {
     return impl_->shape(impl_->require(id, "shapeFilter")).filter;
 }

@@ -7,7 +7,6 @@
 #include "id_pool.hpp"
 
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 namespace e2d::physics::detail {
@@ -65,8 +64,6 @@ struct World::Impl {
     detail::IdPool bodyIds;
     detail::IdPool shapeIds;
     detail::BroadPhase broadPhase;
-    // Scratch for updatePairs(), kept to avoid allocating every step.
-    std::vector<std::pair<std::uint64_t, std::uint64_t>> stalePairs;
 
     // Index of a live body named by `id`, or kNullIndex.
     [[nodiscard]] int find(BodyId id) const {

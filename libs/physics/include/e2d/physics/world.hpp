@@ -144,6 +144,10 @@ public:
     [[nodiscard]] const ShapeGeometry& shapeGeometry(ShapeId id) const;
     /// The tight world box of the shape at its body's current transform.
     [[nodiscard]] Aabb shapeAabb(ShapeId id) const;
+    /// The enlarged box the broad phase keeps for the shape (contains shapeAabb(); pairs are
+    /// found by overlap of these). The tight box while the body is disabled. For debug drawing
+    /// and tests.
+    [[nodiscard]] Aabb shapeFatAabb(ShapeId id) const;
     [[nodiscard]] Filter shapeFilter(ShapeId id) const;
     /// Changes what the shape touches. Its pairs are found again at the next updatePairs()
     /// (pairs the new filter rejects end, new ones may begin).
