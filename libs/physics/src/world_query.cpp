@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/physics/world.hpp>
 
+#include <e2d/physics/distance.hpp>
+
 #include "world_check.hpp"
 #include "world_impl.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -38,6 +41,32 @@ void checkBox(const char* function, const Aabb& box) {
         check::fail(function, "box must be finite with lower <= upper, got lower " +
                                   check::text(box.lower) + ", upper " + check::text(box.upper));
     }
+}
+
+// Whether the segment from p to p + maxFraction * d meets the box (slab test; touching counts).
+bool segmentMeetsBox(Vec2 p, Vec2 d, float maxFraction, const Aabb& box) {
+    float lo = 0.0f;
+    float hi = maxFraction;
+    for (int axis = 0; axis < 2; ++axis) {
+        float origin = axis == 0 ? p.x : p.y;
+        float dir = axis == 0 ? d.x : d.y;
+        float lower = axis == 0 ? box.lower.x : box.lower.y;
+        float upper = axis == 0 ? box.upper.x : box.upper.y;
+        if (dir == 0.0f) {
+            if (origin < lower || origin > upper) {
+                return false;
+            }
+            continue;
+        }
+        float t1 = (lower - origin) / dir;
+        float t2 = (upper - origin) / dir;
+        lo = std::max(lo, std::min(t1, t2));
+        hi = std::min(hi, std::max(t1, t2));
+        if (lo > hi) {
+            return false;
+        }
+    }
+    return true;
 }
 
 // Where the ray `input` (world space) enters one shape placed at `xf`.
@@ -224,6 +253,60 @@ std::vector<ShapeId> World::overlapPoint(Vec2 point, const QueryFilter& filter) 
     std::sort(result.begin(), result.end(),
               [](ShapeId a, ShapeId b) { return a.index1 < b.index1; });
     return result;
+}
+
+std::optional<RayResult> World::castShape(const ShapeGeometry& geometry, const Transform& transform,
+                                          Vec2 translation, const QueryFilter& filter) const {
+    const char* fn = "castShape";
+    validate(geometry, "physics::World::castShape()");
+    check::requirePosition(fn, "transform.p", transform.p);
+    if (!isFinite(transform.q.c) || !isFinite(transform.q.s) ||
+        std::abs(transform.q.c * transform.q.c + transform.q.s * transform.q.s - 1.0f) > 1e-3f) {
+        check::fail(fn, "transform.q must be a unit rotation (c^2 + s^2 = 1), got (" +
+                            check::text(transform.q.c) + ", " + check::text(transform.q.s) + ")");
+    }
+    checkRay(fn, transform.p, translation);
+
+    const Impl& w = *impl_;
+    ShapeCastPairInput input;
+    input.proxyB = makeProxy(geometry);
+    input.transformB = transform;
+    input.translationB = translation;
+    input.maxFraction = 1.0f;
+
+    // Candidates come from one tree query over the box the shape sweeps; each candidate's box,
+    // grown by the moving box's half-extents, must also meet the path of the moving box's centre
+    // (a slab test) before the exact cast runs.
+    Aabb start = computeAabb(geometry, transform);
+    Aabb end{start.lower + translation, start.upper + translation};
+    Aabb swept = unionOf(start, end);
+    swept.lower -= Vec2(kLinearSlop, kLinearSlop);
+    swept.upper += Vec2(kLinearSlop, kLinearSlop);
+    Vec2 center = 0.5f * (start.lower + start.upper);
+    // Grown by the slop because shapeCast() reports a hit slightly before the surfaces touch.
+    Vec2 half = 0.5f * (start.upper - start.lower) + Vec2(kLinearSlop, kLinearSlop);
+
+    std::optional<RayResult> best;
+    for (BodyType type : kAllTypes) {
+        w.broadPhase.tree(type).query(swept, filter.maskBits, [&](int, std::uint64_t userData) {
+            auto index = static_cast<int>(userData);
+            const detail::Shape& shape = w.shape(index);
+            if (!passes(shape, filter) ||
+                !segmentMeetsBox(center, translation, input.maxFraction,
+                                 {shape.aabb.lower - half, shape.aabb.upper + half})) {
+                return true;
+            }
+            input.proxyA = makeProxy(shape.geometry);
+            input.transformA = w.body(shape.body).transform;
+            CastOutput out = shapeCast(input);
+            if (out.hit && (!best || out.fraction < best->fraction)) {
+                best = RayResult{w.shapeId(index), out.point, out.normal, out.fraction, false};
+                input.maxFraction = out.fraction;
+            }
+            return true;
+        });
+    }
+    return best;
 }
 
 } // namespace e2d::physics

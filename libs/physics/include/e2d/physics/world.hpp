@@ -202,6 +202,16 @@ public:
     [[nodiscard]] std::vector<ShapeId> overlapPoint(Vec2 point,
                                                     const QueryFilter& filter = {}) const;
 
+    /// The first shape that `geometry`, placed at `transform` (local to world, like a body's)
+    /// and moved by `translation` (metres, finite, non-zero), would touch. `point` is on the
+    /// surface of the shape hit, `normal` points out of it towards the moving shape and
+    /// `fraction` is how far along `translation` they meet. A shape the geometry already
+    /// overlaps at the start is hit at fraction 0 with a zero normal. Back faces play no part.
+    /// Throws core::Error for an invalid geometry or non-finite input.
+    [[nodiscard]] std::optional<RayResult> castShape(const ShapeGeometry& geometry,
+                                                     const Transform& transform, Vec2 translation,
+                                                     const QueryFilter& filter = {}) const;
+
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
