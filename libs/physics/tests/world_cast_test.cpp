@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <e2d/physics/distance.hpp>
 #include <e2d/physics/world.hpp>
 
 #include "world_random_scene.hpp"
