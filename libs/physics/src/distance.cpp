@@ -229,7 +229,13 @@ Simplex readCache(PointSet a, PointSet b, const SimplexCache* cache) {
         }
     }
     if (s.count == 0) {
-        s.v[0] = makeVertex(a, b, 0, 0);
+        // Start from a true support pair (a vertex of the Minkowski difference), not from an
+        // arbitrary pair: EPA later needs every simplex vertex on the boundary.
+        Vec2 d = b.points[0] - a.points[0];
+        if (lengthSquared(d) == 0.0f) {
+            d = Vec2{1.0f, 0.0f};
+        }
+        s.v[0] = makeVertex(a, b, supportIndex(a, -d), supportIndex(b, d));
         s.count = 1;
     }
     return s;

@@ -66,7 +66,8 @@ struct EpaResult {
 };
 
 // Expands GJK's final simplex into the Minkowski difference until the edge closest to the
-// origin is found. Any simplex (1, 2 or 3 vertices) is accepted.
+// origin is found. Any simplex (1, 2 or 3 vertices) of support points (as runGjk makes without a
+// cache) is accepted.
 EpaResult runEpa(PointSet a, PointSet b, const Simplex& simplex);
 
 } // namespace e2d::physics::detail

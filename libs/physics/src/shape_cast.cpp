@@ -23,6 +23,9 @@ CastOutput shapeCast(const ShapeCastPairInput& input) {
     CastOutput output;
     SimplexCache cache;
     float t = 0.0f;
+    // Landing exactly on the contact leaves no distance to take a direction from; the normal of
+    // the step that got there is the contact normal.
+    Vec2 lastNormal{0.0f, 0.0f};
     for (int iteration = 0; iteration < kMaxShapeCastIterations; ++iteration) {
         for (int i = 0; i < input.proxyB.count; ++i) {
             pointsB[i] = startB[i] + t * translation;
@@ -31,8 +34,8 @@ CastOutput shapeCast(const ShapeCastPairInput& input) {
         output.iterations = iteration + 1;
         float gap = gjk.distance - radius;
         bool coresApart = gjk.simplex.count < 3 && gjk.distance > detail::kGjkTouching;
-        Vec2 normal = coresApart ? (gjk.pointB - gjk.pointA) * (1.0f / gjk.distance)
-                                 : Vec2{0.0f, 0.0f};
+        Vec2 normal = coresApart ? (gjk.pointB - gjk.pointA) * (1.0f / gjk.distance) : lastNormal;
+        lastNormal = normal;
         if (gap < kShapeCastTolerance) {
             output.hit = true;
             output.fraction = t;
