@@ -66,6 +66,7 @@ TEST(WorldPairs, CandidatePairsMatchBruteForceOverManyFrames) {
         std::size_t totalPairs = 0;
         for (int frame = 0; frame < 25; ++frame) {
             scene.world.updatePairs();
+            scene.index();
             PairSet expected = bruteForcePairs(scene);
             ASSERT_EQ(candidatePairs(scene.world), expected) << "seed " << seed << " frame " << frame;
             totalPairs += expected.size();
