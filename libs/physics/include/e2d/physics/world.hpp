@@ -183,7 +183,7 @@ public:
     // --- queries (world space; they read the broad phase, so updatePairs() is not needed) ---
 
     /// The first shape the ray from `origin` to `origin + translation` hits (metres; the
-    /// translation is finite and non-zero).
+    /// translation is finite and non-zero, both ends within kHuge).
     [[nodiscard]] std::optional<RayResult> castRayClosest(Vec2 origin, Vec2 translation,
                                                           const QueryFilter& filter = {}) const;
     /// Every hit along the ray, sorted by fraction (ties by shape slot).
