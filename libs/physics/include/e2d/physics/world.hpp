@@ -177,7 +177,8 @@ public:
     void updatePairs();
     /// Number of current candidate pairs.
     [[nodiscard]] int candidatePairCount() const;
-    /// Calls `callback(a, b)` once per current pair, a's slot before b's, in no fixed order.
+    /// Calls `callback(a, b)` once per current pair, a's slot before b's, in the broad phase's
+    /// table order: not sorted, but the same operations give the same order (determinism).
     void forEachCandidatePair(FunctionRef<void(ShapeId, ShapeId)> callback) const;
 
     // --- queries (world space; they read the broad phase, so updatePairs() is not needed) ---
