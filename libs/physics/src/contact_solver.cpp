@@ -212,7 +212,8 @@ void applyRestitution(std::span<ContactConstraint> constraints, std::span<BodySt
         for (int i = 0; i < c.pointCount; ++i) {
             ContactConstraintPoint& cp = c.points[i];
             // Only points that were approaching fast and actually took load bounce.
-            if (cp.relativeVelocity > -threshold || cp.maxNormalImpulse == 0.0f) {
+            if (cp.relativeVelocity > -threshold || cp.maxNormalImpulse == 0.0f ||
+                cp.velocityBias > 0.0f) {
                 continue;
             }
             Vec2 rA = cp.anchorA;
@@ -247,11 +248,10 @@ void prepareClassic(std::span<ContactConstraint> constraints, float restitutionT
                 // closes this step, comes from applyRestitution() afterwards.
                 continue;
             }
+            // Touching points bounce through velocityBias; applyRestitution() skips them.
             if (cp.relativeVelocity < -restitutionThreshold) {
                 cp.velocityBias = -c.restitution * cp.relativeVelocity;
             }
-            // Touching points bounce through velocityBias, not through applyRestitution().
-            cp.relativeVelocity = 0.0f;
         }
     }
 }
