@@ -4,6 +4,7 @@
 #include <e2d/core/error.hpp>
 
 #include <charconv>
+#include <cmath>
 #include <string>
 
 namespace e2d::physics {
@@ -24,16 +25,17 @@ ShapeProxy makeProxy(std::span<const Vec2> points, float radius) {
                           std::to_string(kMaxPolygonVertices) + " points, got " +
                           std::to_string(points.size()));
     }
-    if (!isFinite(radius) || radius < 0.0f) {
-        throw core::Error("physics::makeProxy(): radius must be finite and >= 0, got " +
+    if (!isFinite(radius) || radius < 0.0f || radius > kHuge) {
+        throw core::Error("physics::makeProxy(): radius must be finite, >= 0 and within kHuge, got " +
                           numberText(radius));
     }
     ShapeProxy proxy;
     for (std::size_t i = 0; i < points.size(); ++i) {
-        if (!isFinite(points[i])) {
+        if (!isFinite(points[i]) || std::fabs(points[i].x) > kHuge ||
+            std::fabs(points[i].y) > kHuge) {
             throw core::Error("physics::makeProxy(): point " + std::to_string(i) +
-                              " is not finite: (" + numberText(points[i].x) + ", " +
-                              numberText(points[i].y) + ")");
+                              " must be finite and within kHuge, got (" + numberText(points[i].x) +
+                              ", " + numberText(points[i].y) + ")");
         }
         proxy.points[i] = points[i];
     }

@@ -136,7 +136,9 @@ bool World::Impl::shouldPair(int shapeA, int shapeB) const {
     if (a.isSensor && b.isSensor) {
         return false;
     }
-    if (body(a.body).type == BodyType::Static && body(b.body).type == BodyType::Static) {
+    // The broad phase already skips these (one tree per body type); this keeps the rule true
+    // whatever it looks up.
+    if (body(a.body).type != BodyType::Dynamic && body(b.body).type != BodyType::Dynamic) {
         return false;
     }
     return shouldCollide(a.filter, b.filter);

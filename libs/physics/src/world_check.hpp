@@ -5,20 +5,16 @@
 #include <e2d/physics/constants.hpp>
 #include <e2d/physics/math.hpp>
 
-#include <charconv>
+#include "error_format.hpp"
+
 #include <cmath>
 #include <string>
 
 // Building the messages of World's input checks: "physics::World::fn(): what, got value".
 namespace e2d::physics::detail::world_check {
 
-inline std::string text(float x) {
-    char buffer[32];
-    auto result = std::to_chars(buffer, buffer + sizeof(buffer), x);
-    return std::string(buffer, result.ptr);
-}
-
-inline std::string text(Vec2 v) { return "(" + text(v.x) + ", " + text(v.y) + ")"; }
+inline std::string text(float x) { return formatFloat(x); }
+inline std::string text(Vec2 v) { return formatVec(v); }
 
 [[noreturn]] inline void fail(const char* function, const std::string& what) {
     throw core::Error(std::string("physics::World::") + function + "(): " + what);

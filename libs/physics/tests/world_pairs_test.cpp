@@ -36,7 +36,7 @@ PairSet bruteForcePairs(const RandomScene& scene) {
             const test::BodyRecord& ba = scene.bodyOf(a);
             const test::BodyRecord& bb = scene.bodyOf(b);
             if (a.body == b.body || !ba.enabled || !bb.enabled ||
-                (ba.type == BodyType::Static && bb.type == BodyType::Static) ||
+                (ba.type != BodyType::Dynamic && bb.type != BodyType::Dynamic) ||
                 (a.isSensor && b.isSensor) || !shouldCollide(a.filter, b.filter) ||
                 !overlaps(scene.world.shapeFatAabb(a.id), scene.world.shapeFatAabb(b.id))) {
                 continue;
@@ -66,6 +66,13 @@ TEST(WorldPairs, CandidatePairsMatchBruteForceOverManyFrames) {
         std::size_t totalPairs = 0;
         for (int frame = 0; frame < 25; ++frame) {
             scene.world.updatePairs();
+            scene.index();
+            // The fat boxes the brute force uses must hold the shapes where they are now.
+            for (const ShapeRecord& shape : scene.shapes) {
+                ASSERT_TRUE(contains(scene.world.shapeFatAabb(shape.id),
+                                     computeAabb(shape.geometry, scene.transformOf(shape))))
+                    << "seed " << seed << " frame " << frame;
+            }
             PairSet expected = bruteForcePairs(scene);
             ASSERT_EQ(candidatePairs(scene.world), expected) << "seed " << seed << " frame " << frame;
             totalPairs += expected.size();
@@ -116,11 +123,13 @@ TEST(WorldPairs, RulesOnHandBuiltPairs) {
         return world.createBody(def);
     };
     Circle circle{{0.0f, 0.0f}, 1.0f};
-    // Two static shapes touching: never a pair.
+    // Two static shapes touching, or a static and a kinematic one: never a pair.
     BodyId ground1 = body(BodyType::Static, {0.0f, 0.0f});
     BodyId ground2 = body(BodyType::Static, {1.0f, 0.0f});
     world.createShape(ground1, {}, circle);
     world.createShape(ground2, {}, circle);
+    BodyId platform = body(BodyType::Kinematic, {0.5f, -0.5f});
+    world.createShape(platform, {}, circle);
     // Two shapes of one dynamic body overlapping each other: never a pair.
     BodyId car = body(BodyType::Dynamic, {20.0f, 0.0f});
     ShapeId car1 = world.createShape(car, {}, circle);
@@ -128,11 +137,11 @@ TEST(WorldPairs, RulesOnHandBuiltPairs) {
     world.updatePairs();
     EXPECT_EQ(world.candidatePairCount(), 0);
 
-    // A dynamic ball on the static ground: a pair.
+    // A dynamic ball on the static ground and the kinematic platform: three pairs.
     BodyId ball = body(BodyType::Dynamic, {0.5f, 1.0f});
     ShapeId ballShape = world.createShape(ball, {}, circle);
     world.updatePairs();
-    EXPECT_EQ(world.candidatePairCount(), 2);
+    EXPECT_EQ(world.candidatePairCount(), 3);
 
     // Two sensors do not pair; a sensor pairs with a solid shape.
     ShapeDef sensor;
@@ -145,9 +154,9 @@ TEST(WorldPairs, RulesOnHandBuiltPairs) {
     PairSet pairs = candidatePairs(world);
     EXPECT_TRUE(pairs.count({car1.index1, triggerShape.index1}) == 1);
     EXPECT_TRUE(pairs.count({car2.index1, triggerShape.index1}) == 1);
-    EXPECT_EQ(world.candidatePairCount(), 2 + 2 + 2); // ground, trigger, trigger2 with car
+    EXPECT_EQ(world.candidatePairCount(), 3 + 2 + 2); // ball: grounds and platform; car: triggers
 
-    // Masks: the ball stops touching category 1 (the ground's): its ground pairs end.
+    // Masks: the ball stops touching category 1 (ground and platform): those pairs end.
     Filter filter;
     filter.maskBits = ~std::uint64_t{1};
     world.setShapeFilter(ballShape, filter);

@@ -202,8 +202,10 @@ public:
     /// Brings the candidate pairs up to date: looks for new pairs around the shapes whose boxes
     /// moved since the last call (not around the others), then drops pairs whose fattened
     /// boxes no longer overlap. Two shapes pair when their fat boxes overlap, they belong to
-    /// different bodies, not both bodies are static, shouldCollide() accepts their filters and
-    /// not both are sensors (a sensor pairs only with non-sensor shapes).
+    /// different bodies, at least one body is dynamic (static and kinematic bodies do not
+    /// respond to contacts, so static-static, static-kinematic and kinematic-kinematic pairs are
+    /// never looked for, sensors included), shouldCollide() accepts their filters and not both
+    /// are sensors (a sensor pairs only with non-sensor shapes).
     void updatePairs();
     /// Number of current candidate pairs.
     [[nodiscard]] int candidatePairCount() const;
