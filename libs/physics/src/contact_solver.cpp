@@ -69,6 +69,7 @@ void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyVi
         cp.tangentImpulse = mp.tangentImpulse;
         cp.maxNormalImpulse = 0.0f;
         cp.velocityBias = 0.0f;
+        cp.impactSeen = false;
         cp.normalMass = effectiveMass(normal, rA, rB, c);
         cp.tangentMass = effectiveMass(tangent, rA, rB, c);
         Vec2 vrA = a.linearVelocity + cross(a.angularVelocity, rA);
@@ -147,6 +148,12 @@ void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState
             Vec2 rB = cp.anchorB;
             Vec2 dv = (vB + cross(wB, rB)) - (vA + cross(wA, rA));
             float vn = dot(dv, normal);
+            if (!cp.impactSeen && vn + std::max(s, 0.0f) * invH < 0.0f) {
+                // The point starts to push now: the approach speed at impact is this one, not
+                // the one at the start of the step (gravity kept accelerating meanwhile).
+                cp.impactSeen = true;
+                cp.relativeVelocity = vn;
+            }
             float impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
             float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
             impulse = newImpulse - cp.normalImpulse;

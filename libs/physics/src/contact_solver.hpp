@@ -19,7 +19,8 @@ struct ContactConstraintPoint {
     // Separation minus dot(anchorB - anchorA, normal): adding the current anchor offset gives
     // the current separation without running the narrow phase again.
     float baseSeparation = 0.0f;
-    // Normal velocity before the step: what restitution reflects.
+    // Normal velocity before the step, replaced by the one at the sub-step where the point
+    // starts to push (the moment of impact): what restitution reflects.
     float relativeVelocity = 0.0f;
     float normalImpulse = 0.0f;
     float tangentImpulse = 0.0f;
@@ -29,6 +30,7 @@ struct ContactConstraintPoint {
     float tangentMass = 0.0f;
     // Classic mode: target normal velocity from restitution.
     float velocityBias = 0.0f;
+    bool impactSeen = false;
 };
 
 struct ContactConstraint {

@@ -7,6 +7,7 @@
 #include "world_check.hpp"
 #include "world_impl.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace e2d::physics {
@@ -36,12 +37,15 @@ void World::step(float timeStep) {
     s.sensorEndEvents.clear();
     s.hitEvents.clear();
     s.nonFiniteBodies.clear();
-    w.updateContacts();
-    if (timeStep == 0.0f) {
-        return;
+    s.endEvents.swap(s.pendingEndEvents);
+    s.sensorEndEvents.swap(s.pendingSensorEndEvents);
+    s.inStep = true;
+    w.updateContacts(timeStep);
+    if (timeStep > 0.0f) {
+        w.solve(timeStep);
+        w.updateSleep(timeStep);
     }
-    w.solve(timeStep);
-    w.updateSleep(timeStep);
+    s.inStep = false;
 }
 
 void World::Impl::solve(float dt) {
@@ -159,11 +163,17 @@ void World::Impl::solve(float dt) {
         b.transform = bs.transform;
         b.linearVelocity = st.linearVelocity;
         b.angularVelocity = st.angularVelocity;
+        // The broad-phase box also covers where the body will be next step, so the pairs
+        // (and speculative contacts) exist before a fast body arrives.
+        Vec2 ahead = dt * b.linearVelocity;
         for (int si = b.headShape; si != kNullIndex; si = shape(si).nextShape) {
             detail::Shape& sh = shape(si);
             sh.aabb = computeAabb(sh.geometry, b.transform);
             if (sh.proxyKey != kNullIndex) {
-                broadPhase.moveProxy(sh.proxyKey, sh.aabb);
+                Aabb swept = sh.aabb;
+                swept.lower += Vec2{std::min(ahead.x, 0.0f), std::min(ahead.y, 0.0f)};
+                swept.upper += Vec2{std::max(ahead.x, 0.0f), std::max(ahead.y, 0.0f)};
+                broadPhase.moveProxy(sh.proxyKey, swept);
             }
         }
     }
