@@ -197,7 +197,9 @@ void World::Impl::solve(float dt) {
             }
         }
         if (fastestPoint >= 0) {
-            s.hitEvents.push_back({c.idA, c.idB, c.manifold.points[fastestPoint].point,
+            // A speculative point sits midway across the gap; the hit is on A's surface.
+            const ManifoldPoint& mp = c.manifold.points[fastestPoint];
+            s.hitEvents.push_back({c.idA, c.idB, mp.point - 0.5f * mp.separation * c.manifold.normal,
                                    c.manifold.normal, fastest});
         }
     }
