@@ -23,7 +23,12 @@ inline std::string formatFloat(float value) {
     return std::string(buffer, result.ptr);
 }
 
-inline std::string formatVec(Vec2 v) { return "(" + formatFloat(v.x) + ", " + formatFloat(v.y) + ")"; }
+// Appends rather than `"(" + std::string`, which trips GCC 12's -Wrestrict false positive at -O3.
+inline std::string formatVec(Vec2 v) {
+    std::string text(1, '(');
+    text.append(formatFloat(v.x)).append(", ").append(formatFloat(v.y)).push_back(')');
+    return text;
+}
 
 [[noreturn]] inline void fail(std::string_view function, std::string_view what) {
     std::string message;

@@ -6,6 +6,7 @@
 #include "polygon_clip.hpp"
 
 #include <cfloat>
+#include <cmath>
 
 namespace e2d::physics {
 
@@ -14,12 +15,6 @@ namespace {
 // Below this core distance (metres) GJK's normal is built from two nearly equal points and is
 // too inaccurate to pick a face; EPA from the touching simplex gives the face normal instead.
 constexpr float kUseEpaBelow = 10.0f * kEpaTolerance;
-// The next three match the separating-axis routine (manifold_sat.cpp), so that both algorithms
-// make the same decisions: the bias towards A's face, the face separation above which the
-// closest features decide, and the cosine above which the closest direction is a face normal.
-constexpr float kFlipTolerance = 0.1f * kLinearSlop;
-constexpr float kSeparatedCores = 0.1f * kLinearSlop;
-constexpr float kFaceCosine = 0.999f;
 
 // Separation of `other` from edge `edge` of `poly`, both in one frame: how far the deepest
 // vertex of `other` lies in front of the edge (negative when it is behind it).
@@ -109,24 +104,44 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
 
     detail::PointSet setA{a.vertices.data(), a.count};
     detail::PointSet setB{localB.vertices.data(), localB.count};
-    detail::GjkResult gjk = detail::runGjk(setA, setB, nullptr);
     const float radius = a.radius + b.radius;
     const float limit = margin + radius;
+    detail::GjkResult gjk = detail::runGjk(setA, setB, nullptr, limit);
+    if (gjk.beyondLimit) {
+        return Manifold{};
+    }
 
     const bool separated = gjk.simplex.count < 3 && gjk.distance > kUseEpaBelow;
+    FaceChoice faceA;
+    FaceChoice faceB;
     Vec2 direction;
     if (separated) {
         if (gjk.distance > limit) {
             return Manifold{};
         }
         direction = (gjk.pointB - gjk.pointA) * (1.0f / gjk.distance);
+        faceA = bestBracketingFace(a, localB, direction);
+        faceB = bestBracketingFace(localB, a, -direction);
     } else {
-        direction = detail::runEpa(setA, setB, gjk.simplex).normal;
+        detail::EpaResult epa = detail::runEpa(setA, setB, gjk.simplex);
+        direction = epa.normal;
+        if (epa.converged && epa.faceA >= 0) {
+            // A's face is the axis of least penetration: nothing of B's can beat it by the
+            // flip tolerance, so B's faces need no test.
+            faceA = {epa.faceA, -epa.depth};
+            faceB = {0, -FLT_MAX};
+        } else if (epa.converged && epa.faceB >= 0) {
+            faceB = {epa.faceB, -epa.depth};
+            faceA = bestBracketingFace(a, localB, direction);
+        } else {
+            faceA = bestBracketingFace(a, localB, direction);
+            faceB = bestBracketingFace(localB, a, -direction);
+        }
     }
 
-    const FaceChoice faceA = bestBracketingFace(a, localB, direction);
-    const FaceChoice faceB = bestBracketingFace(localB, a, -direction);
-    const bool flip = faceB.separation > faceA.separation + kFlipTolerance;
+    // Reference face, corner contacts: decided as in the separating-axis routine (the shared
+    // tolerances of manifold_detail.hpp), so that both algorithms agree.
+    const bool flip = faceB.separation > faceA.separation + detail::kFlipTolerance;
     const float separation = flip ? faceB.separation : faceA.separation;
     if (separation > limit) {
         return Manifold{};
@@ -144,7 +159,8 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
         referenceNormal = a.normals[edgeA];
     }
 
-    if (separated && separation > kSeparatedCores && dot(direction, referenceNormal) < kFaceCosine) {
+    if (separated && separation > detail::kSeparatedCores &&
+        std::fabs(cross(referenceNormal, gjk.pointB - gjk.pointA)) > detail::kFaceOffset) {
         // Separated at a corner: the face separation underestimates the gap, so the closest
         // points give a single point with the true distance and direction.
         Manifold m;
