@@ -126,6 +126,12 @@ void World::Impl::solve(float dt) {
                                {c.friction, c.restitution, c.rollingResistance},
                                rigidSide ? softness.vsStatic : softness.dynamic);
         cc.contactIndex = static_cast<int>(ci);
+        auto gravityOf = [&](const detail::ContactBodyView& v, int bodyIndex) {
+            float scale = body(bodyIndex).motion.gravityScale;
+            return Vec2{v.invMass.x > 0.0f ? scale * gravity.x : 0.0f,
+                        v.invMass.y > 0.0f ? scale * gravity.y : 0.0f};
+        };
+        cc.pressAcceleration = -dot(gravityOf(b, c.bodyB) - gravityOf(a, c.bodyA), cc.normal);
     }
 
     detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def};

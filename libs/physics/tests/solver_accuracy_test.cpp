@@ -44,6 +44,23 @@ std::vector<float> bouncePeaks(float restitution, float seconds) {
     return peaks;
 }
 
+TEST(SolverAccuracy, HalfRestitutionReboundsToAQuarter) {
+    std::vector<float> peaks = bouncePeaks(0.5f, 1.5f);
+    ASSERT_GE(peaks.size(), 1u);
+    // h' = e^2 h = 0.25 m, within 2 %.
+    EXPECT_NEAR(peaks[0], 0.25f, 0.02f * 0.25f);
+}
+
+TEST(SolverAccuracy, ElasticBallKeepsItsHeightOverFiveBounces) {
+    std::vector<float> peaks = bouncePeaks(1.0f, 5.0f);
+    ASSERT_GE(peaks.size(), 5u);
+    for (int i = 0; i < 5; ++i) {
+        EXPECT_GE(peaks[static_cast<std::size_t>(i)], 0.98f) << "bounce " << i + 1;
+        EXPECT_LE(peaks[static_cast<std::size_t>(i)], 1.02f) << "bounce " << i + 1;
+    }
+}
+
+// Scenes with default settings: sleeping is part of how a resting pile stays put.
 TEST(SolverAccuracy, ZeroRestitutionDoesNotBounce) {
     std::vector<float> peaks = bouncePeaks(0.0f, 2.0f);
     for (float p : peaks) {
