@@ -236,14 +236,17 @@ void applyRestitution(std::span<ContactConstraint> constraints, std::span<BodySt
             // Q = v^2 + 2 g s - g h v exactly (v: normal velocity, s: gap). Without care a
             // bounce loses about g h v of it every time; instead the rebound speed is chosen so
             // that Q after the bounce is e^2 times Q at the impact: the ball rises to e^2 times
-            // the height it fell from, as in the continuous case.
+            // the height it fell from, as in the continuous case. (Sub-step solves with a
+            // constant acceleration; contact forces only act while touching.)
             float approach = -cp.relativeVelocity;
             float target = c.restitution * approach;
             float g = c.pressAcceleration;
             if (g > 0.0f) {
+                // The rebound starts from wherever the push-out left the point.
                 float q = approach * approach + 2.0f * g * cp.impactGap + g * h * approach;
-                float e2q = c.restitution * c.restitution * q;
-                target = 0.5f * (g * h + std::sqrt(g * g * h * h + 4.0f * e2q));
+                float gapNow = currentSeparation(c, cp, *sa, *sb);
+                float rhs = std::max(c.restitution * c.restitution * q - 2.0f * g * gapNow, 0.0f);
+                target = 0.5f * (g * h + std::sqrt(g * g * h * h + 4.0f * rhs));
             }
             float impulse = -cp.normalMass * (vn - target);
             float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
