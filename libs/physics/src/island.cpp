@@ -94,7 +94,7 @@ void World::Impl::updateSleep(float dt) {
         }
         detail::BodyMotion& m = b.motion;
         float w = std::abs(b.angularVelocity);
-        if (!m.enableSleep || m.isBullet ||
+        if (!m.enableSleep ||
             dot(b.linearVelocity, b.linearVelocity) > linearTolSq || w > angularTol) {
             m.sleepTime = 0.0f;
         } else {
