@@ -169,8 +169,8 @@ private:
     void removeLeaf(int leaf);
     [[nodiscard]] int findBestSibling(const Aabb& box) const;
     void refit(int index);
-    bool rotate(int index, bool areaRotations);
-    void refitAncestors(int index, bool areaRotations);
+    bool rotate(int index);
+    void refitAncestors(int index);
     void checkProxy(int proxyId, const char* function) const {
         if (!isProxy(proxyId)) {
             throwBadProxy(proxyId, function);

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/scenes/scene.hpp>
+
+#include <memory>
+#include <vector>
+
+class b2World;
+class b2Body;
+
+namespace e2d::scenes {
+
+/// Box2D 2.4 settings the harness and benchmarks use (Box2D's own defaults).
+struct Box2DSettings {
+    int velocityIterations = 8;
+    int positionIterations = 3;
+    bool allowSleeping = true;
+    bool continuous = true;
+    bool warmStarting = true;
+};
+
+/// A Box2D 2.4 world built from a SceneDesc. Translation notes: Box2D gives every polygon a
+/// 0.01 m skin (b2_polygonRadius), so boxes placed exactly touching start 0.02 m overlapped and
+/// are pushed apart; segments become two-sided b2EdgeShapes; capsules become a box plus two
+/// circles on one body (Box2D 2.4 has no capsule); restitution threshold stays Box2D's 1 m/s.
+struct Box2DScene {
+    std::unique_ptr<b2World> world;
+    std::vector<b2Body*> bodies; ///< in SceneDesc order
+    Box2DSettings settings;
+
+    Box2DScene();
+    Box2DScene(Box2DScene&&) noexcept;
+    Box2DScene& operator=(Box2DScene&&) noexcept;
+    ~Box2DScene();
+
+    void step(float timeStep);
+};
+
+Box2DScene buildBox2D(const SceneDesc& scene, const Box2DSettings& settings = {});
+
+} // namespace e2d::scenes

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+/// Engine-neutral scene descriptions, shared by the benchmarks and the validation harness so a
+/// benchmark scene is the same scene the harness checks. Builders turn a SceneDesc into an e2d
+/// world or a Box2D 2.4 world; they translate, they do not tune.
+namespace e2d::scenes {
+
+enum class BodyKind : std::uint8_t { Static, Kinematic, Dynamic };
+enum class ShapeKind : std::uint8_t { Box, Polygon, Circle, Capsule, Segment };
+
+struct ShapeDesc {
+    ShapeKind kind = ShapeKind::Box;
+    glm::vec2 halfExtents{0.5f, 0.5f}; ///< Box: half-width, half-height, metres
+    glm::vec2 center{0.0f, 0.0f};      ///< Box/Circle: local centre, metres
+    float angle = 0.0f;                ///< Box: local rotation, radians
+    std::vector<glm::vec2> points;     ///< Polygon: local points (hull taken); metres
+    float radius = 0.0f;               ///< Circle/Capsule radius; Polygon rounding, metres
+    glm::vec2 point1{0.0f, 0.0f};      ///< Capsule/Segment: first end, local, metres
+    glm::vec2 point2{0.0f, 0.0f};      ///< Capsule/Segment: second end, local, metres
+    float density = 1.0f;              ///< kg/m^2
+    float friction = 0.6f;             ///< Coulomb coefficient
+    float restitution = 0.0f;          ///< 0 inelastic .. 1 elastic
+};
+
+struct BodyDesc {
+    BodyKind kind = BodyKind::Dynamic;
+    glm::vec2 position{0.0f, 0.0f}; ///< metres
+    float angle = 0.0f;             ///< radians, counter-clockwise
+    glm::vec2 linearVelocity{0.0f, 0.0f};
+    float angularVelocity = 0.0f;
+    bool bullet = false;
+    bool fixedRotation = false;
+    std::vector<ShapeDesc> shapes;
+    std::string tag; ///< names bodies the metrics look at, e.g. "top"
+};
+
+struct SceneDesc {
+    std::string name;
+    glm::vec2 gravity{0.0f, -10.0f}; ///< m/s^2
+    float timeStep = 1.0f / 60.0f;   ///< seconds
+    std::vector<BodyDesc> bodies;
+};
+
+/// A static box: the ground of most scenes.
+BodyDesc staticBox(glm::vec2 position, glm::vec2 halfExtents, float friction = 0.6f);
+/// A dynamic box of half-size `half`, density 1.
+BodyDesc dynamicBox(glm::vec2 position, float half, float friction = 0.6f);
+
+/// Box2D v3's "large pyramid" benchmark layout: a static ground box of half-extents 100 x 1 at
+/// (0, -1) and a pyramid of `base` rows of boxes of half-size 0.5, density 1, friction 0.6; row i
+/// (0 = bottom) holds base - i boxes at x = (i+1)*0.5 + (j-i) - base/2, y = i + 0.5.
+/// The last box created (tag "top") is the apex.
+SceneDesc pyramid(int base);
+
+/// Box2D v3's "many pyramids" layout: rows x columns pyramids of `base` rows on two-sided static
+/// segments from x = -110 to 110 at y = 0, 11, 22, ...
+SceneDesc manyPyramids(int rows = 20, int columns = 20, int base = 10);
+
+/// `count` boxes of half-size 0.5 stacked touching on a ground box; the last one has tag "top".
+SceneDesc verticalStack(int count, float friction = 0.6f);
+
+/// `count` circles of radius 0.25 falling into a static box open at the top.
+SceneDesc fallingCircles(int count);
+
+} // namespace e2d::scenes
