@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/physics/collider.hpp>
+
+#include <e2d/core/error.hpp>
+#include <e2d/core/game_object.hpp>
+#include <e2d/physics/physics_system.hpp>
+#include <e2d/physics/rigidbody.hpp>
+
+#include "object_pose.hpp"
+
+#include <glm/mat4x4.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace e2d::physics {
+
+namespace {
+
+void requireNonNegative(float value, const char* field) {
+    if (!std::isfinite(value) || value < 0.0f) {
+        throw core::Error(std::string("physics::Collider::Collider(): def.") + field +
+                          " must be finite and >= 0, got " + std::to_string(value));
+    }
+}
+
+} // namespace
+
+Collider::Collider(PhysicsSystem& system, const ShapeGeometry& geometry, const ColliderDef& def)
+    : system_(system), geometry_(geometry), def_(def) {
+    validate(geometry, "physics::Collider::Collider()");
+    requireNonNegative(def.density, "density");
+    requireNonNegative(def.friction, "friction");
+    requireNonNegative(def.restitution, "restitution");
+    requireNonNegative(def.rollingResistance, "rollingResistance");
+}
+
+Collider::~Collider() = default;
+
+void Collider::onInitialize() { attach(); }
+
+void Collider::onTerminate() { detach(); }
+
+void Collider::attach() {
+    detach();
+    core::GameObject& object = *gameObject();
+    // The world matrix's basis vectors carry the scale of the object and all its parents.
+    const glm::mat4& m = object.worldTransform();
+    const glm::vec2 scale{std::hypot(m[0][0], m[0][1]), std::hypot(m[1][0], m[1][1])};
+    const ShapeGeometry scaled = detail::scaledGeometry(geometry_, scale);
+    BodyId body{};
+    if (Rigidbody* rb = object.getComponent<Rigidbody>(); rb != nullptr && !rb->leaving_) {
+        body = rb->ensureBody();
+    } else {
+        const detail::Pose pose = detail::worldPose(object);
+        BodyDef def;
+        def.type = BodyType::Static;
+        def.position = pose.position;
+        def.angle = pose.angle;
+        ownBody_ = system_.world().createBody(def);
+        writtenPosition_ = pose.position;
+        writtenAngle_ = pose.angle;
+        body = ownBody_;
+        system_.registerStaticCollider(*this);
+    }
+    ShapeDef def;
+    def.density = def_.density;
+    def.friction = def_.friction;
+    def.restitution = def_.restitution;
+    def.rollingResistance = def_.rollingResistance;
+    def.isSensor = def_.isTrigger;
+    def.filter.categoryBits = def_.category.bits();
+    def.filter.maskBits = def_.mask.bits();
+    shape_ = system_.world().createShape(body, def, scaled);
+    system_.registerCollider(shape_, *this);
+}
+
+void Collider::detach() noexcept {
+    if (!shape_.isNull()) {
+        system_.unregisterCollider(shape_);
+        if (system_.world().isValid(shape_)) {
+            system_.world().destroyShape(shape_);
+        }
+        shape_ = {};
+    }
+    if (!ownBody_.isNull()) {
+        system_.unregisterStaticCollider(*this);
+        if (system_.world().isValid(ownBody_)) {
+            system_.world().destroyBody(ownBody_);
+        }
+        ownBody_ = {};
+    }
+}
+
+} // namespace e2d::physics
