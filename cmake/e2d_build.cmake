@@ -69,15 +69,18 @@ function(e2d_add_library name)
     FILE e2d_${name}_targets.cmake DESTINATION ${E2D_PACKAGE_DIR})
 endfunction()
 
-# e2d_add_tests(<lib> SOURCES ... [LIBRARIES ...] [LABELS ...])
-# One GoogleTest executable per library, linking only that library; every test is a CTest
-# test labelled with the library's name.
+# e2d_add_tests(<lib> SOURCES ... [SUFFIX name] [LIBRARIES ...] [LABELS ...])
+# One GoogleTest executable per library (e2d_<lib>_tests, or e2d_<lib>_<suffix>_tests), linking
+# only that library; every test is a CTest test labelled with the library's name and LABELS.
 function(e2d_add_tests lib)
   if(NOT E2D_BUILD_TESTS)
     return()
   endif()
-  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "SUFFIX" "SOURCES;LIBRARIES;LABELS" ${ARGN})
   set(target e2d_${lib}_tests)
+  if(ARG_SUFFIX)
+    set(target e2d_${lib}_${ARG_SUFFIX}_tests)
+  endif()
   add_executable(${target} ${ARG_SOURCES})
   target_link_libraries(${target} PRIVATE e2d::${lib} ${ARG_LIBRARIES} GTest::gmock
     GTest::gtest_main e2d_warnings)
