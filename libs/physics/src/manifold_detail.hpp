@@ -21,19 +21,43 @@ inline constexpr float kSeparatedCores = 0.1f * kLinearSlop;
 // to the face overstates its separation by the offset times the incident edge's slope.
 inline constexpr float kFaceOffset = 0.01f * kLinearSlop;
 
-// Moves a manifold computed in A's local frame to world space. On entry each point's `point`
-// holds its position in A's frame; on exit `point` is the world point and the anchors are
-// relative to each transform's origin along world axes, as ManifoldPoint documents.
-inline Manifold localToWorld(Manifold m, const Transform& xfA, const Transform& xfB) {
-    m.normal = rotate(xfA.q, m.normal);
-    Vec2 shift = xfA.p - xfB.p;
-    for (int i = 0; i < m.pointCount; ++i) {
-        ManifoldPoint& mp = m.points[i];
-        mp.anchorA = rotate(xfA.q, mp.point);
-        mp.anchorB = mp.anchorA + shift;
-        mp.point = mp.anchorA + xfA.p;
-    }
-    return m;
+// A manifold in A's local frame, before the move to world space: only the fields the pair
+// routines compute. Only the first `count` points are written: nothing is zeroed.
+struct LocalManifold {
+    Vec2 normal;          // from A to B, A's frame
+    Vec2 points[2];       // midway between the surfaces, A's frame
+    float separations[2];
+    std::uint16_t ids[2];
+    int count;
+};
+
+// Moves a manifold computed in A's local frame to world space: `point` becomes the world
+// point, the anchors are relative to each transform's origin along world axes (ManifoldPoint).
+// Built as one aggregate so that no zeroing of the whole Manifold precedes the writes.
+inline ManifoldPoint toWorldPoint(Vec2 local, float separation, std::uint16_t id,
+                                  const Transform& xfA, Vec2 shift) {
+    const Vec2 anchorA = rotate(xfA.q, local);
+    return ManifoldPoint{anchorA + xfA.p, anchorA, anchorA + shift, separation, 0.0f, 0.0f, id,
+                         false};
+}
+
+inline Manifold localToWorld(const LocalManifold& m, const Transform& xfA, const Transform& xfB) {
+    const Vec2 shift = xfA.p - xfB.p;
+    return Manifold{
+        rotate(xfA.q, m.normal),
+        {m.count > 0 ? toWorldPoint(m.points[0], m.separations[0], m.ids[0], xfA, shift)
+                     : ManifoldPoint{},
+         m.count > 1 ? toWorldPoint(m.points[1], m.separations[1], m.ids[1], xfA, shift)
+                     : ManifoldPoint{}},
+        m.count};
+}
+
+// One point in A's frame: the usual result of the round-shape routines.
+inline Manifold singlePointToWorld(Vec2 localNormal, Vec2 localPoint, float separation,
+                                   std::uint16_t id, const Transform& xfA, const Transform& xfB) {
+    return Manifold{rotate(xfA.q, localNormal),
+                    {toWorldPoint(localPoint, separation, id, xfA, xfA.p - xfB.p), ManifoldPoint{}},
+                    1};
 }
 
 // A manifold's A and B swapped: the normal flips, the anchors and the two halves of each

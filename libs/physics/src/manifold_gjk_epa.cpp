@@ -12,13 +12,15 @@ namespace e2d::physics {
 
 namespace {
 
+using detail::PolygonRef;
+
 // Below this core distance (metres) GJK's normal is built from two nearly equal points and is
 // too inaccurate to pick a face; EPA from the touching simplex gives the face normal instead.
 constexpr float kUseEpaBelow = 10.0f * kEpaTolerance;
 
 // Separation of `other` from edge `edge` of `poly`, both in one frame: how far the deepest
 // vertex of `other` lies in front of the edge (negative when it is behind it).
-float edgeSeparation(const Polygon& poly, int edge, const Polygon& other) {
+float edgeSeparation(PolygonRef poly, int edge, PolygonRef other) {
     Vec2 n = poly.normals[edge];
     Vec2 v = poly.vertices[edge];
     float result = FLT_MAX;
@@ -39,7 +41,7 @@ struct FaceChoice {
 // between the normals of the two faces at the closest vertex. So only the two faces whose
 // normals bracket `direction` (the faces at the support vertex in that direction) are tested
 // on each polygon, instead of all of them as the separating-axis search does.
-FaceChoice bestBracketingFace(const Polygon& poly, const Polygon& other, Vec2 direction) {
+FaceChoice bestBracketingFace(PolygonRef poly, PolygonRef other, Vec2 direction) {
     int best = 0;
     float bestDot = dot(poly.normals[0], direction);
     for (int i = 1; i < poly.count; ++i) {
@@ -63,7 +65,7 @@ FaceChoice bestBracketingFace(const Polygon& poly, const Polygon& other, Vec2 di
     return first;
 }
 
-int incidentEdge(const Polygon& poly, Vec2 referenceNormal) {
+int incidentEdge(PolygonRef poly, Vec2 referenceNormal) {
     int best = 0;
     float bestDot = FLT_MAX;
     for (int i = 0; i < poly.count; ++i) {
@@ -94,16 +96,16 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
                                const Transform& xfB, float margin) {
     // Everything happens in A's frame: B's vertices and normals are moved once.
     Transform relative = invMulTransforms(xfA, xfB);
-    Polygon localB;
-    localB.count = b.count;
-    localB.radius = b.radius;
+    detail::PolygonScratch movedB;
     for (int i = 0; i < b.count; ++i) {
-        localB.vertices[i] = transformPoint(relative, b.vertices[i]);
-        localB.normals[i] = rotate(relative.q, b.normals[i]);
+        movedB.vertices[i] = transformPoint(relative, b.vertices[i]);
+        movedB.normals[i] = rotate(relative.q, b.normals[i]);
     }
+    const PolygonRef localB{movedB.vertices, movedB.normals, b.radius, b.count};
+    const PolygonRef refA = detail::refOf(a);
 
     detail::PointSet setA{a.vertices.data(), a.count};
-    detail::PointSet setB{localB.vertices.data(), localB.count};
+    detail::PointSet setB{localB.vertices, localB.count};
     const float radius = a.radius + b.radius;
     const float limit = margin + radius;
     detail::GjkResult gjk = detail::runGjk(setA, setB, nullptr, limit);
@@ -120,8 +122,8 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
             return Manifold{};
         }
         direction = (gjk.pointB - gjk.pointA) * (1.0f / gjk.distance);
-        faceA = bestBracketingFace(a, localB, direction);
-        faceB = bestBracketingFace(localB, a, -direction);
+        faceA = bestBracketingFace(refA, localB, direction);
+        faceB = bestBracketingFace(localB, refA, -direction);
     } else {
         detail::EpaResult epa = detail::runEpa(setA, setB, gjk.simplex);
         direction = epa.normal;
@@ -132,10 +134,10 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
             faceB = {0, -FLT_MAX};
         } else if (epa.converged && epa.faceB >= 0) {
             faceB = {epa.faceB, -epa.depth};
-            faceA = bestBracketingFace(a, localB, direction);
+            faceA = bestBracketingFace(refA, localB, direction);
         } else {
-            faceA = bestBracketingFace(a, localB, direction);
-            faceB = bestBracketingFace(localB, a, -direction);
+            faceA = bestBracketingFace(refA, localB, direction);
+            faceB = bestBracketingFace(localB, refA, -direction);
         }
     }
 
@@ -151,7 +153,7 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
     Vec2 referenceNormal; // from A to B
     if (flip) {
         edgeB = faceB.edge;
-        edgeA = incidentEdge(a, localB.normals[edgeB]);
+        edgeA = incidentEdge(refA, localB.normals[edgeB]);
         referenceNormal = -localB.normals[edgeB];
     } else {
         edgeA = faceA.edge;
@@ -163,20 +165,16 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
         std::fabs(cross(referenceNormal, gjk.pointB - gjk.pointA)) > detail::kFaceOffset) {
         // Separated at a corner: the face separation underestimates the gap, so the closest
         // points give a single point with the true distance and direction.
-        Manifold m;
-        ManifoldPoint& mp = m.points[0];
         Vec2 surfaceA = gjk.pointA + a.radius * direction;
         Vec2 surfaceB = gjk.pointB - b.radius * direction;
-        mp.point = 0.5f * (surfaceA + surfaceB);
-        mp.separation = gjk.distance - radius;
-        mp.id = makeFeatureId(closestVertex(gjk.simplex, true), closestVertex(gjk.simplex, false));
-        m.normal = direction;
-        m.pointCount = 1;
-        return detail::localToWorld(m, xfA, xfB);
+        return detail::singlePointToWorld(
+            direction, 0.5f * (surfaceA + surfaceB), gjk.distance - radius,
+            makeFeatureId(closestVertex(gjk.simplex, true), closestVertex(gjk.simplex, false)), xfA,
+            xfB);
     }
 
-    Manifold m = detail::clipPolygons(a, localB, edgeA, edgeB, flip, margin);
-    return detail::localToWorld(m, xfA, xfB);
+    return detail::localToWorld(detail::clipPolygons(refA, localB, edgeA, edgeB, flip, margin), xfA,
+                                xfB);
 }
 
 } // namespace e2d::physics

@@ -17,15 +17,14 @@ constexpr float kCapsuleFaceOffset = detail::kFaceOffset;
 
 // One point between two round features: cores at pA and pB (A's frame) `distance` apart along
 // unit `normal`, radii rA and rB.
-Manifold singlePoint(Vec2 pA, Vec2 pB, Vec2 normal, float distance, float rA, float rB,
-                     std::uint16_t id) {
-    Manifold m;
+detail::LocalManifold singlePoint(Vec2 pA, Vec2 pB, Vec2 normal, float distance, float rA,
+                                  float rB, std::uint16_t id) {
+    detail::LocalManifold m;
     m.normal = normal;
-    ManifoldPoint& mp = m.points[0];
-    mp.point = 0.5f * ((pA + rA * normal) + (pB - rB * normal));
-    mp.separation = distance - rA - rB;
-    mp.id = id;
-    m.pointCount = 1;
+    m.points[0] = 0.5f * ((pA + rA * normal) + (pB - rB * normal));
+    m.separations[0] = distance - rA - rB;
+    m.ids[0] = id;
+    m.count = 1;
     return m;
 }
 
@@ -33,7 +32,7 @@ Manifold singlePoint(Vec2 pA, Vec2 pB, Vec2 normal, float distance, float rA, fl
 // `normal` pointing from the reference to the incident segment. Fails (returns false) when the
 // segments barely overlap along u, in which case a single closest-point contact is better.
 bool clipToReference(Vec2 p1, Vec2 u, float len, Vec2 normal, Vec2 q1, Vec2 q2, float r1, float r2,
-                     float margin, Manifold& m, int (&incidentIds)[2]) {
+                     float margin, detail::LocalManifold& m, int (&incidentIds)[2]) {
     float a1 = dot(q1 - p1, u);
     float a2 = dot(q2 - p1, u);
     float span = a2 - a1;
@@ -48,7 +47,7 @@ bool clipToReference(Vec2 p1, Vec2 u, float len, Vec2 normal, Vec2 q1, Vec2 q2, 
         return false;
     }
     m.normal = normal;
-    m.pointCount = 0;
+    m.count = 0;
     const float params[2] = {lo, hi};
     for (int k = 0; k < 2; ++k) {
         Vec2 q = q1 + params[k] * (q2 - q1);
@@ -57,10 +56,10 @@ bool clipToReference(Vec2 p1, Vec2 u, float len, Vec2 normal, Vec2 q1, Vec2 q2, 
         if (separation > margin) {
             continue;
         }
-        ManifoldPoint& mp = m.points[m.pointCount++];
-        mp.point = q + (0.5f * (r1 - r2 - core)) * normal;
-        mp.separation = separation;
-        mp.id = static_cast<std::uint16_t>(incidentIds[k]);
+        m.points[m.count] = q + (0.5f * (r1 - r2 - core)) * normal;
+        m.separations[m.count] = separation;
+        m.ids[m.count] = static_cast<std::uint16_t>(incidentIds[k]);
+        ++m.count;
     }
     return true;
 }
@@ -69,18 +68,25 @@ bool clipToReference(Vec2 p1, Vec2 u, float len, Vec2 normal, Vec2 q1, Vec2 q2, 
 
 Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b, const Transform& xfB,
                         float margin) {
-    const Transform xf = invMulTransforms(xfA, xfB);
-    const Vec2 pA = a.center;
-    const Vec2 pB = transformPoint(xf, b.center);
+    // Centres relative to A's origin along world axes: no frame change is needed for two
+    // circles, and the anchors come out directly.
+    const Vec2 cA = rotate(xfA.q, a.center);
+    const Vec2 cB = rotate(xfB.q, b.center) + (xfB.p - xfA.p);
+    const Vec2 d = cB - cA;
     const float limit = a.radius + b.radius + margin;
-    const float distSq = distanceSquared(pA, pB);
+    const float distSq = lengthSquared(d);
     if (distSq > limit * limit) {
         return Manifold{};
     }
     const float dist = std::sqrt(distSq);
     // Concentric circles have no preferred direction; A's x axis is as good as any.
-    const Vec2 normal = dist > FLT_EPSILON ? (pB - pA) / dist : Vec2{1.0f, 0.0f};
-    return detail::localToWorld(singlePoint(pA, pB, normal, dist, a.radius, b.radius, 0), xfA, xfB);
+    const Vec2 normal = dist > FLT_EPSILON ? d * (1.0f / dist) : rotate(xfA.q, Vec2{1.0f, 0.0f});
+    const Vec2 anchorA = 0.5f * ((cA + a.radius * normal) + (cB - b.radius * normal));
+    return Manifold{normal,
+                    {ManifoldPoint{anchorA + xfA.p, anchorA, anchorA + (xfA.p - xfB.p),
+                                   dist - a.radius - b.radius, 0.0f, 0.0f, 0, false},
+                     ManifoldPoint{}},
+                    1};
 }
 
 Manifold collideCapsuleAndCircle(const Capsule& a, const Transform& xfA, const Circle& b,
@@ -128,7 +134,7 @@ Manifold collideCapsules(const Capsule& a, const Transform& xfA, const Capsule& 
     // When the closest points are level along one axis, the contact is on that
     // capsule's side (parallel or resting capsules): clip the other axis to it for up to two
     // points. Otherwise it is an end-to-end contact with one point.
-    Manifold m;
+    detail::LocalManifold m;
     const float lenA = distance(p1, p2);
     const float lenB = distance(q1, q2);
     const Vec2 uA = lenA > 0.0f ? (p2 - p1) / lenA : Vec2{0.0f, 0.0f};
@@ -178,7 +184,7 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
     }
     const Vec2 v1 = a.vertices[face];
     const Vec2 v2 = a.vertices[face + 1 < a.count ? face + 1 : 0];
-    Manifold m;
+    detail::LocalManifold m;
     if (separation > FLT_EPSILON && dot(c - v1, v2 - v1) < 0.0f) {
         float dist = distance(v1, c);
         if (dist > limit) {

@@ -13,6 +13,8 @@ namespace {
 using detail::kFaceOffset;
 using detail::kFlipTolerance;
 using detail::kSeparatedCores;
+using detail::LocalManifold;
+using detail::PolygonRef;
 
 struct EdgeSeparation {
     int edge = 0;
@@ -21,7 +23,7 @@ struct EdgeSeparation {
 
 // The edge of poly1 whose normal separates poly2 the most (the least penetration). Stops at
 // the first edge that separates them by more than `limit`: the pair has no contact then.
-EdgeSeparation findMaxSeparation(const Polygon& poly1, const Polygon& poly2, float limit) {
+inline EdgeSeparation findMaxSeparation(PolygonRef poly1, PolygonRef poly2, float limit) {
     EdgeSeparation best;
     for (int i = 0; i < poly1.count; ++i) {
         const Vec2 n = poly1.normals[i];
@@ -34,7 +36,7 @@ EdgeSeparation findMaxSeparation(const Polygon& poly1, const Polygon& poly2, flo
         if (si > best.separation) {
             best.separation = si;
             best.edge = i;
-            if (si > limit) {
+            if (si > limit) [[unlikely]] {
                 break;
             }
         }
@@ -42,22 +44,34 @@ EdgeSeparation findMaxSeparation(const Polygon& poly1, const Polygon& poly2, flo
     return best;
 }
 
-// The SAT manifold of two polygons given in one frame; each point's `point` is in that frame.
-Manifold collideInFrame(const Polygon& localA, const Polygon& localB, float margin) {
+// Marks "no contact" in a LocalManifold without touching its points.
+inline LocalManifold noContact() {
+    LocalManifold m;
+    m.count = 0;
+    return m;
+}
+
+// The SAT manifold of two polygons given in one frame; each point is in that frame.
+// `localB` (B moved to that frame) has its vertices ready; its normals are moved lazily by
+// `moveNormals` once A's faces found no separating axis, so separated pairs skip that work.
+template <class MoveNormals>
+LocalManifold collideInFrame(PolygonRef localA, PolygonRef localB, float margin,
+                             MoveNormals&& moveNormals) {
     const float radius = localA.radius + localB.radius;
     const float limit = margin + radius;
     const EdgeSeparation sepA = findMaxSeparation(localA, localB, limit);
     if (sepA.separation > limit) {
-        return Manifold{};
+        return noContact();
     }
+    moveNormals();
     const EdgeSeparation sepB = findMaxSeparation(localB, localA, limit);
     if (sepB.separation > limit) {
-        return Manifold{};
+        return noContact();
     }
 
     const bool flip = sepB.separation > sepA.separation + kFlipTolerance;
-    const Polygon& poly1 = flip ? localB : localA;
-    const Polygon& poly2 = flip ? localA : localB;
+    const PolygonRef& poly1 = flip ? localB : localA;
+    const PolygonRef& poly2 = flip ? localA : localB;
     const int edge1 = flip ? sepB.edge : sepA.edge;
     const float separation = flip ? sepB.separation : sepA.separation;
 
@@ -73,8 +87,7 @@ Manifold collideInFrame(const Polygon& localA, const Polygon& localB, float marg
         }
     }
 
-    Manifold m;
-    if (separation > kSeparatedCores) {
+    if (separation > kSeparatedCores) [[unlikely]] {
         // Face separation only bounds the distance from below; near a corner the real gap is
         // larger, which matters for rounded polygons and for speculative points. The closest
         // points of the two edges tell a face contact from a vertex contact.
@@ -86,7 +99,7 @@ Manifold collideInFrame(const Polygon& localA, const Polygon& localB, float marg
             detail::segmentDistance(poly1.vertices[i11], poly1.vertices[i12], poly2.vertices[i21],
                                     poly2.vertices[i22]);
         if (sd.distanceSquared > limit * limit) {
-            return Manifold{};
+            return noContact();
         }
         // distance >= separation > 0, so w is well defined.
         const float distance = std::sqrt(sd.distanceSquared);
@@ -96,12 +109,12 @@ Manifold collideInFrame(const Polygon& localA, const Polygon& localB, float marg
             Vec2 c2 = sd.closest2 - poly2.radius * w;
             int feature1 = sd.fraction1 < 0.5f ? i11 : i12;
             int feature2 = sd.fraction2 < 0.5f ? i21 : i22;
-            ManifoldPoint& mp = m.points[0];
-            mp.point = 0.5f * (c1 + c2);
-            mp.separation = distance - radius;
-            mp.id = flip ? makeFeatureId(feature2, feature1) : makeFeatureId(feature1, feature2);
+            LocalManifold m;
+            m.points[0] = 0.5f * (c1 + c2);
+            m.separations[0] = distance - radius;
+            m.ids[0] = flip ? makeFeatureId(feature2, feature1) : makeFeatureId(feature1, feature2);
             m.normal = flip ? -w : w;
-            m.pointCount = 1;
+            m.count = 1;
             return m;
         }
     }
@@ -118,31 +131,36 @@ constexpr float kShiftSquared = 100.0f * 100.0f;
 
 Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
                          const Transform& xfB, float margin) {
-    // Work in A's frame: B is moved there once.
+    // Work in A's frame: B is moved there once (its normals only when they are needed).
     const Vec2 origin = a.vertices[0];
     const bool shift = lengthSquared(origin) > kShiftSquared;
     Transform frame = xfA;
-    if (shift) {
+    if (shift) [[unlikely]] {
         frame.p = transformPoint(xfA, origin);
     }
     const Transform xf = invMulTransforms(frame, xfB);
-    Polygon localB;
-    localB.count = b.count;
-    localB.radius = b.radius;
+    detail::PolygonScratch movedB;
     for (int i = 0; i < b.count; ++i) {
-        localB.vertices[i] = transformPoint(xf, b.vertices[i]);
-        localB.normals[i] = rotate(xf.q, b.normals[i]);
+        movedB.vertices[i] = transformPoint(xf, b.vertices[i]);
     }
-    if (!shift) {
-        return detail::localToWorld(collideInFrame(a, localB, margin), xfA, xfB);
+    auto moveNormals = [&] {
+        for (int i = 0; i < b.count; ++i) {
+            movedB.normals[i] = rotate(xf.q, b.normals[i]);
+        }
+    };
+    const PolygonRef localB{movedB.vertices, movedB.normals, b.radius, b.count};
+    if (!shift) [[likely]] {
+        return detail::localToWorld(collideInFrame(detail::refOf(a), localB, margin, moveNormals),
+                                    xfA, xfB);
     }
-    Polygon localA = a;
+    detail::PolygonScratch movedA;
     for (int i = 0; i < a.count; ++i) {
-        localA.vertices[i] = a.vertices[i] - origin;
+        movedA.vertices[i] = a.vertices[i] - origin;
     }
-    Manifold m = collideInFrame(localA, localB, margin);
-    for (int i = 0; i < m.pointCount; ++i) {
-        m.points[i].point += origin;
+    const PolygonRef localA{movedA.vertices, a.normals.data(), a.radius, a.count};
+    LocalManifold m = collideInFrame(localA, localB, margin, moveNormals);
+    for (int i = 0; i < m.count; ++i) {
+        m.points[i] += origin;
     }
     return detail::localToWorld(m, xfA, xfB);
 }

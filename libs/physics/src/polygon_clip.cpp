@@ -3,11 +3,11 @@
 
 namespace e2d::physics::detail {
 
-Manifold clipPolygons(const Polygon& a, const Polygon& b, int edgeA, int edgeB, bool flip,
-                      float margin) {
+LocalManifold clipPolygons(PolygonRef a, PolygonRef b, int edgeA, int edgeB, bool flip,
+                           float margin) {
     // poly1 holds the reference edge i11 -> i12, poly2 the incident edge i21 -> i22.
-    const Polygon& poly1 = flip ? b : a;
-    const Polygon& poly2 = flip ? a : b;
+    const PolygonRef& poly1 = flip ? b : a;
+    const PolygonRef& poly2 = flip ? a : b;
     const int i11 = flip ? edgeB : edgeA;
     const int i12 = i11 + 1 < poly1.count ? i11 + 1 : 0;
     const int i21 = flip ? edgeA : edgeB;
@@ -51,16 +51,16 @@ Manifold clipPolygons(const Polygon& a, const Polygon& b, int edgeA, int edgeB, 
     separationLower -= r1 + r2;
     separationUpper -= r1 + r2;
 
-    Manifold m;
+    LocalManifold m;
+    m.count = 0;
     auto add = [&](Vec2 p, float separation, int featureA, int featureB) {
         if (separation > margin) {
             return;
         }
-        ManifoldPoint& mp = m.points[m.pointCount++];
-        mp.point = p;
-        mp.anchorA = p;
-        mp.separation = separation;
-        mp.id = makeFeatureId(featureA, featureB);
+        m.points[m.count] = p;
+        m.separations[m.count] = separation;
+        m.ids[m.count] = makeFeatureId(featureA, featureB);
+        ++m.count;
     };
     // Ids are (feature of a, feature of b) whichever polygon holds the reference edge.
     if (!flip) {
