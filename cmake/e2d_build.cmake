@@ -69,14 +69,14 @@ function(e2d_add_library name)
     FILE e2d_${name}_targets.cmake DESTINATION ${E2D_PACKAGE_DIR})
 endfunction()
 
-# e2d_add_tests(<lib> SOURCES ... [SUFFIX name] [LIBRARIES ...] [LABELS ...])
+# e2d_add_tests(<lib> SOURCES ... [SUFFIX name] [LIBRARIES ...] [LABEL label])
 # One GoogleTest executable per library (e2d_<lib>_tests, or e2d_<lib>_<suffix>_tests), linking
-# only that library; every test is a CTest test labelled with the library's name and LABELS.
+# only that library; every test is a CTest test labelled with the library's name (or LABEL).
 function(e2d_add_tests lib)
   if(NOT E2D_BUILD_TESTS)
     return()
   endif()
-  cmake_parse_arguments(ARG "" "SUFFIX" "SOURCES;LIBRARIES;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "SUFFIX;LABEL" "SOURCES;LIBRARIES" ${ARGN})
   set(target e2d_${lib}_tests)
   if(ARG_SUFFIX)
     set(target e2d_${lib}_${ARG_SUFFIX}_tests)
@@ -85,9 +85,15 @@ function(e2d_add_tests lib)
   target_link_libraries(${target} PRIVATE e2d::${lib} ${ARG_LIBRARIES} GTest::gmock
     GTest::gtest_main e2d_warnings)
   target_include_directories(${target} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/src)
+  # One label per executable: gtest_discover_tests flattens a label list into separate
+  # property arguments, so LABELS a;b would not survive it.
+  set(label ${lib})
+  if(ARG_LABEL)
+    set(label ${ARG_LABEL})
+  endif()
   gtest_discover_tests(${target}
     DISCOVERY_MODE PRE_TEST
-    PROPERTIES LABELS "${lib};${ARG_LABELS}")
+    PROPERTIES LABELS ${label})
 endfunction()
 
 # Writes e2dConfig.cmake and one dependency file per component. Called once, last.
