@@ -15,7 +15,10 @@ RatioReporter::RatioReporter(std::string baseline, std::vector<std::string> engi
 void RatioReporter::ReportRuns(const std::vector<Run>& reports) {
     std::vector<Run> runs = reports;
     for (Run& run : runs) {
-        if (run.error_occurred || run.run_type != Run::RT_Iteration) {
+        // With repetitions, the median stands for the benchmark; single runs stand for themselves.
+        const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
+        if (run.error_occurred || (run.run_type != Run::RT_Iteration && !median) ||
+            (run.run_type == Run::RT_Iteration && run.repetitions > 1)) {
             continue;
         }
         const std::string name = run.run_name.function_name;
