@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: MIT
+#include "plan.hpp"
+
+#include <algorithm>
+
+namespace e2d::validation {
+
+const char* runRoleName(RunRole role) {
+    switch (role) {
+    case RunRole::Baseline:
+        return "baseline";
+    case RunRole::Sweep:
+        return "sweep";
+    case RunRole::Feature:
+        return "feature";
+    }
+    return "?";
+}
+
+std::vector<EngineConfig> baselineConfigs(const std::vector<std::string>& engines) {
+    std::vector<EngineConfig> out;
+    for (const std::string& engine : engines) {
+        if (engine == "box2d") {
+            EngineConfig c;
+            c.engine = "box2d";
+            out.push_back(c);
+        } else if (engine == "e2d") {
+            for (const char* solver : {"soft", "classic"}) {
+                for (const char* collision : {"sat", "gjk"}) {
+                    EngineConfig c;
+                    c.engine = "e2d";
+                    c.solver = solver;
+                    c.collision = collision;
+                    out.push_back(c);
+                }
+            }
+        }
+    }
+    return out;
+}
+
+std::vector<std::pair<std::string, EngineConfig>> sweepPoints(const EngineConfig& baseline,
+                                                              SweepLevel level) {
+    std::vector<std::pair<std::string, EngineConfig>> out;
+    if (level == SweepLevel::None) {
+        return out;
+    }
+    const bool subSteps = baseline.engine == "e2d" && baseline.solver == "soft";
+    if (subSteps) {
+        const std::vector<int> full{1, 2, 4, 8, 16};
+        const std::vector<int> quick{1, 4};
+        for (int n : level == SweepLevel::Full ? full : quick) {
+            EngineConfig c = baseline;
+            c.subSteps = n;
+            out.emplace_back("sub-steps " + std::to_string(n), c);
+        }
+    } else {
+        // Velocity iterations do most of the work; position iterations grow slowly with them.
+        const std::vector<std::pair<int, int>> full{{1, 1}, {2, 1}, {4, 2}, {8, 3}, {16, 6}, {32, 10}};
+        const std::vector<std::pair<int, int>> quick{{2, 1}, {8, 3}};
+        for (auto [v, p] : level == SweepLevel::Full ? full : quick) {
+            EngineConfig c = baseline;
+            c.velocityIterations = v;
+            c.positionIterations = p;
+            out.emplace_back("vel " + std::to_string(v) + ", pos " + std::to_string(p), c);
+        }
+    }
+    return out;
+}
+
+std::vector<std::pair<std::string, EngineConfig>> featureVariants(const EngineConfig& baseline) {
+    std::vector<std::pair<std::string, EngineConfig>> out;
+    auto add = [&](const std::string& label, auto&& change) {
+        EngineConfig c = baseline;
+        change(c);
+        out.emplace_back(label, c);
+    };
+    add("ccd off", [](EngineConfig& c) { c.continuous = false; });
+    add("sleep off", [](EngineConfig& c) { c.sleeping = false; });
+    add("warm start off", [](EngineConfig& c) { c.warmStarting = false; });
+    if (baseline.engine == "e2d") {
+        if (baseline.solver == "soft") {
+            add("relax 0", [](EngineConfig& c) { c.relaxIterations = 0; });
+            add("relax 2", [](EngineConfig& c) { c.relaxIterations = 2; });
+        }
+        add("speculative 0", [](EngineConfig& c) { c.speculativeDistance = 0.0f; });
+        add("speculative 0.04", [](EngineConfig& c) { c.speculativeDistance = 0.04f; });
+    }
+    return out;
+}
+
+std::vector<RunSpec> makePlan(const std::vector<Scenario>& scenarios,
+                              const std::vector<std::string>& engines, SweepLevel level,
+                              bool features) {
+    std::vector<RunSpec> plan;
+    for (int i = 0; i < static_cast<int>(scenarios.size()); ++i) {
+        const Scenario& s = scenarios[static_cast<std::size_t>(i)];
+        for (EngineConfig base : baselineConfigs(engines)) {
+            if (auto it = s.settings.find(base.engine); it != s.settings.end()) {
+                it->second.applyTo(base);
+            }
+            plan.push_back({i, RunRole::Baseline, base, "baseline"});
+            if (!s.sweep) {
+                continue;
+            }
+            for (auto& [label, config] : sweepPoints(base, level)) {
+                // The baseline already is this point: do not run it twice.
+                if (!(config == base)) {
+                    plan.push_back({i, RunRole::Sweep, config, label});
+                }
+            }
+            if (features) {
+                for (auto& [label, config] : featureVariants(base)) {
+                    plan.push_back({i, RunRole::Feature, config, label});
+                }
+            }
+        }
+    }
+    return plan;
+}
+
+} // namespace e2d::validation
