@@ -1,0 +1,222 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/physics/constants.hpp>
+#include <e2d/physics/function_ref.hpp>
+#include <e2d/physics/geometry.hpp>
+#include <e2d/physics/id.hpp>
+#include <e2d/physics/manifold.hpp>
+#include <e2d/physics/math.hpp>
+#include <e2d/physics/query.hpp>
+#include <e2d/physics/types.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+/// The physics world: bodies, the shapes attached to them, the broad phase that pairs them,
+/// and the queries (ray casts, overlap tests) over them.
+namespace e2d::physics {
+
+/// How a World is set up. World's constructor validates every field.
+struct WorldDef {
+    /// Acceleration of gravity, m/s^2, finite. Default (0, -10).
+    Vec2 gravity{0.0f, -10.0f};
+    /// Narrow phase for polygon pairs. Default CollisionAlgorithm::Sat.
+    CollisionAlgorithm collisionAlgorithm = CollisionAlgorithm::Sat;
+    /// Contact points closer than this are reported before the shapes touch, metres, finite,
+    /// in [0, kAabbMargin]. Default kSpeculativeDistance (0.02 m).
+    float speculativeDistance = kSpeculativeDistance;
+    /// Bodies to reserve room for, >= 0. Default 0 (grow on demand).
+    int bodyCapacity = 0;
+    /// Shapes to reserve room for, >= 0. Default 0 (grow on demand).
+    int shapeCapacity = 0;
+};
+
+/// How a body is created. World::createBody() validates every field.
+struct BodyDef {
+    /// Static, kinematic or dynamic. Default static.
+    BodyType type = BodyType::Static;
+    /// World position of the body origin, metres, finite, |x|, |y| <= kHuge. Default (0, 0).
+    Vec2 position{0.0f, 0.0f};
+    /// Rotation, radians counter-clockwise, finite. Default 0.
+    float angle = 0.0f;
+    /// Velocity of the body origin, m/s, finite. Default (0, 0).
+    Vec2 linearVelocity{0.0f, 0.0f};
+    /// Angular velocity, radians/s counter-clockwise, finite. Default 0.
+    float angularVelocity = 0.0f;
+    /// Anything the application wants to find the body's owner by. Default 0.
+    std::uint64_t userData = 0;
+    /// A disabled body's shapes are not in the broad phase: no pairs, no query hits.
+    /// Default true.
+    bool enabled = true;
+};
+
+/// How a shape is created. World::createShape() validates every field.
+struct ShapeDef {
+    /// kg/m^2, finite, >= 0. Default 1.
+    float density = 1.0f;
+    /// Coulomb friction coefficient, finite, >= 0. Default 0.6.
+    float friction = 0.6f;
+    /// Bounciness, finite, >= 0 (1 is elastic). Default 0.
+    float restitution = 0.0f;
+    /// Rolling resistance (torque per normal force), metres, finite, >= 0. Default 0.
+    float rollingResistance = 0.0f;
+    /// What the shape is and what it may touch. Default: category bit 0, touches everything.
+    Filter filter{};
+    /// A sensor detects overlap but is not solid. Sensors pair only with non-sensor shapes and
+    /// are skipped by queries unless QueryFilter::includeSensors. Default false.
+    bool isSensor = false;
+    /// Anything the application wants to find the shape's owner by. Default 0.
+    std::uint64_t userData = 0;
+};
+
+/// A physics world. Owns its bodies and shapes, hands out BodyId and ShapeId handles, and
+/// checks every handle on use: a stale or null handle throws core::Error (isValid() tells
+/// beforehand). Functions that throw leave the world unchanged. Worlds are independent: any
+/// number may live in one process, each used from one thread at a time.
+///
+/// Handles are not tagged with their world: a handle from another world is only caught when
+/// its slot or generation does not exist here.
+class World {
+public:
+    /// Throws core::Error naming the first invalid field of `def`.
+    explicit World(const WorldDef& def = {});
+    ~World();
+    World(World&&) noexcept;
+    /// The moved-from world may only be destroyed or assigned to.
+    World& operator=(World&&) noexcept;
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+
+    // --- world settings ---
+
+    [[nodiscard]] Vec2 gravity() const;
+    /// m/s^2, finite.
+    void setGravity(Vec2 gravity);
+    [[nodiscard]] CollisionAlgorithm collisionAlgorithm() const;
+    [[nodiscard]] float speculativeDistance() const;
+
+    // --- bodies ---
+
+    /// A new body. Throws core::Error naming the invalid field of `def`.
+    BodyId createBody(const BodyDef& def);
+    /// Destroys the body and all its shapes (their pairs go with them).
+    void destroyBody(BodyId id);
+    /// Whether `id` names a live body of this world.
+    [[nodiscard]] bool isValid(BodyId id) const;
+
+    [[nodiscard]] BodyType bodyType(BodyId id) const;
+    /// The body's transform: origin position (metres) and rotation.
+    [[nodiscard]] Transform transform(BodyId id) const;
+    /// Teleports the body: position (metres, finite, within kHuge) and angle (radians, finite).
+    /// Its shapes' broad-phase boxes follow (pairs update at the next updatePairs()).
+    void setTransform(BodyId id, Vec2 position, float angle);
+    [[nodiscard]] Vec2 linearVelocity(BodyId id) const;
+    /// m/s, finite.
+    void setLinearVelocity(BodyId id, Vec2 velocity);
+    [[nodiscard]] float angularVelocity(BodyId id) const;
+    /// radians/s, finite.
+    void setAngularVelocity(BodyId id, float velocity);
+    [[nodiscard]] std::uint64_t bodyUserData(BodyId id) const;
+    void setBodyUserData(BodyId id, std::uint64_t userData);
+    [[nodiscard]] bool isBodyEnabled(BodyId id) const;
+    /// Disabling removes the body's shapes from the broad phase (their pairs end, queries skip
+    /// them); enabling puts them back.
+    void setBodyEnabled(BodyId id, bool enabled);
+    /// The body's shapes, most recently created first.
+    [[nodiscard]] std::vector<ShapeId> bodyShapes(BodyId id) const;
+
+    // --- shapes ---
+
+    /// Attaches a shape to a body; `geometry` is in the body's local frame. Throws core::Error
+    /// naming the invalid field of `def` or of `geometry` (see physics::validate()).
+    ShapeId createShape(BodyId body, const ShapeDef& def, const ShapeGeometry& geometry);
+    /// Detaches and destroys the shape (its pairs go with it).
+    void destroyShape(ShapeId id);
+    /// Whether `id` names a live shape of this world.
+    [[nodiscard]] bool isValid(ShapeId id) const;
+
+    [[nodiscard]] BodyId shapeBody(ShapeId id) const;
+    [[nodiscard]] ShapeType shapeType(ShapeId id) const;
+    /// The geometry in the body's local frame, as given to createShape().
+    [[nodiscard]] const ShapeGeometry& shapeGeometry(ShapeId id) const;
+    /// The tight world box of the shape at its body's current transform.
+    [[nodiscard]] Aabb shapeAabb(ShapeId id) const;
+    /// The enlarged box the broad phase keeps for the shape (contains shapeAabb(); pairs are
+    /// found by overlap of these). The tight box while the body is disabled. For debug drawing
+    /// and tests.
+    [[nodiscard]] Aabb shapeFatAabb(ShapeId id) const;
+    [[nodiscard]] Filter shapeFilter(ShapeId id) const;
+    /// Changes what the shape touches. Its pairs are found again at the next updatePairs()
+    /// (pairs the new filter rejects end, new ones may begin).
+    void setShapeFilter(ShapeId id, const Filter& filter);
+    [[nodiscard]] bool isSensor(ShapeId id) const;
+    [[nodiscard]] float shapeDensity(ShapeId id) const;
+    [[nodiscard]] float shapeFriction(ShapeId id) const;
+    [[nodiscard]] float shapeRestitution(ShapeId id) const;
+    [[nodiscard]] float shapeRollingResistance(ShapeId id) const;
+    [[nodiscard]] std::uint64_t shapeUserData(ShapeId id) const;
+    void setShapeUserData(ShapeId id, std::uint64_t userData);
+
+    // --- counts ---
+
+    [[nodiscard]] int bodyCount() const;
+    [[nodiscard]] int shapeCount() const;
+
+    // --- candidate pairs (the broad phase; the solver will turn them into contacts) ---
+
+    /// Brings the candidate pairs up to date: looks for new pairs around the shapes whose boxes
+    /// moved since the last call (not around the others), then drops pairs whose fattened
+    /// boxes no longer overlap. Two shapes pair when their fat boxes overlap, they belong to
+    /// different bodies, at least one body is dynamic (static and kinematic bodies do not
+    /// respond to contacts, so static-static, static-kinematic and kinematic-kinematic pairs are
+    /// never looked for, sensors included), shouldCollide() accepts their filters and not both
+    /// are sensors (a sensor pairs only with non-sensor shapes).
+    void updatePairs();
+    /// Number of current candidate pairs.
+    [[nodiscard]] int candidatePairCount() const;
+    /// Calls `callback(a, b)` once per current pair, a's slot before b's, in no fixed order.
+    void forEachCandidatePair(FunctionRef<void(ShapeId, ShapeId)> callback) const;
+
+    // --- queries (world space; they read the broad phase, so updatePairs() is not needed) ---
+
+    /// The first shape the ray from `origin` to `origin + translation` hits (metres; the
+    /// translation is finite and non-zero).
+    [[nodiscard]] std::optional<RayResult> castRayClosest(Vec2 origin, Vec2 translation,
+                                                          const QueryFilter& filter = {}) const;
+    /// Every hit along the ray, sorted by fraction (ties by shape slot).
+    [[nodiscard]] std::vector<RayResult> castRayAll(Vec2 origin, Vec2 translation,
+                                                    const QueryFilter& filter = {}) const;
+    /// The ray against one shape, ignoring filters and sensor status. With back faces
+    /// (ignoreBackFaces false) the closer of entry and exit is returned.
+    [[nodiscard]] std::optional<RayResult> rayCastShape(ShapeId id, Vec2 origin, Vec2 translation,
+                                                        bool ignoreBackFaces = true) const;
+    /// Calls `callback(shape)` for each shape whose tight world box overlaps `box`; the callback
+    /// returns false to stop. `box` must be finite with lower <= upper.
+    void overlapAabb(const Aabb& box, const QueryFilter& filter,
+                     FunctionRef<bool(ShapeId)> callback) const;
+    /// The shapes whose tight world box overlaps `box`, in slot order.
+    [[nodiscard]] std::vector<ShapeId> overlapAabb(const Aabb& box,
+                                                   const QueryFilter& filter = {}) const;
+    /// The shapes containing `point` (metres, finite; see physics::testPoint), in slot order.
+    [[nodiscard]] std::vector<ShapeId> overlapPoint(Vec2 point,
+                                                    const QueryFilter& filter = {}) const;
+
+    /// The first shape that `geometry`, placed at `transform` (local to world, like a body's)
+    /// and moved by `translation` (metres, finite, non-zero), would touch. `point` is on the
+    /// surface of the shape hit, `normal` points out of it towards the moving shape and
+    /// `fraction` is how far along `translation` they meet. A shape the geometry already
+    /// overlaps at the start is hit at fraction 0 with a zero normal. Back faces play no part.
+    /// Throws core::Error for an invalid geometry or non-finite input.
+    [[nodiscard]] std::optional<RayResult> castShape(const ShapeGeometry& geometry,
+                                                     const Transform& transform, Vec2 translation,
+                                                     const QueryFilter& filter = {}) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace e2d::physics

@@ -1,0 +1,223 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/physics/manifold.hpp>
+
+#include "manifold_detail.hpp"
+#include "shape_detail.hpp"
+
+#include <cfloat>
+
+namespace e2d::physics {
+namespace {
+
+// Feature code for "the side of a capsule" in capsule ids; vertices are 0 and 1.
+constexpr int kCapsuleSide = 2;
+// How far from perpendicular (sine) the closest-point direction may be to a capsule's axis
+// for a face contact with up to two points.
+constexpr float kCapsuleFaceSine = 0.01f;
+
+// One point between two round features: cores at pA and pB (A's frame) `distance` apart along
+// unit `normal`, radii rA and rB.
+Manifold singlePoint(Vec2 pA, Vec2 pB, Vec2 normal, float distance, float rA, float rB,
+                     std::uint16_t id) {
+    Manifold m;
+    m.normal = normal;
+    ManifoldPoint& mp = m.points[0];
+    mp.point = 0.5f * ((pA + rA * normal) + (pB - rB * normal));
+    mp.separation = distance - rA - rB;
+    mp.id = id;
+    m.pointCount = 1;
+    return m;
+}
+
+// Clips incident segment [q1, q2] to the extent of reference segment p1 + [0, len] * u, with
+// `normal` pointing from the reference to the incident segment. Fails (returns false) when the
+// segments barely overlap along u, in which case a single closest-point contact is better.
+bool clipToReference(Vec2 p1, Vec2 u, float len, Vec2 normal, Vec2 q1, Vec2 q2, float r1, float r2,
+                     float margin, Manifold& m, int (&incidentIds)[2]) {
+    float a1 = dot(q1 - p1, u);
+    float a2 = dot(q2 - p1, u);
+    float span = a2 - a1;
+    if (std::fabs(span) < kLinearSlop) {
+        return false;
+    }
+    float s0 = -a1 / span;
+    float s1 = (len - a1) / span;
+    float lo = std::fmax(0.0f, std::fmin(s0, s1));
+    float hi = std::fmin(1.0f, std::fmax(s0, s1));
+    if ((hi - lo) * std::fabs(span) < kLinearSlop) {
+        return false;
+    }
+    m.normal = normal;
+    m.pointCount = 0;
+    const float params[2] = {lo, hi};
+    for (int k = 0; k < 2; ++k) {
+        Vec2 q = q1 + params[k] * (q2 - q1);
+        float core = dot(q - p1, normal);
+        float separation = core - r1 - r2;
+        if (separation > margin) {
+            continue;
+        }
+        ManifoldPoint& mp = m.points[m.pointCount++];
+        mp.point = q + (0.5f * (r1 - r2 - core)) * normal;
+        mp.separation = separation;
+        mp.id = static_cast<std::uint16_t>(incidentIds[k]);
+    }
+    return true;
+}
+
+} // namespace
+
+Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b, const Transform& xfB,
+                        float margin) {
+    const Transform xf = invMulTransforms(xfA, xfB);
+    const Vec2 pA = a.center;
+    const Vec2 pB = transformPoint(xf, b.center);
+    const float limit = a.radius + b.radius + margin;
+    const float distSq = distanceSquared(pA, pB);
+    if (distSq > limit * limit) {
+        return Manifold{};
+    }
+    const float dist = std::sqrt(distSq);
+    // Concentric circles have no preferred direction; A's x axis is as good as any.
+    const Vec2 normal = dist > FLT_EPSILON ? (pB - pA) / dist : Vec2{1.0f, 0.0f};
+    return detail::localToWorld(singlePoint(pA, pB, normal, dist, a.radius, b.radius, 0), xfA, xfB);
+}
+
+Manifold collideCapsuleAndCircle(const Capsule& a, const Transform& xfA, const Circle& b,
+                                 const Transform& xfB, float margin) {
+    const Transform xf = invMulTransforms(xfA, xfB);
+    const Vec2 pB = transformPoint(xf, b.center);
+    const Vec2 pA = detail::closestPointOnSegment(a.center1, a.center2, pB);
+    const float limit = a.radius + b.radius + margin;
+    const float distSq = distanceSquared(pA, pB);
+    if (distSq > limit * limit) {
+        return Manifold{};
+    }
+    const float dist = std::sqrt(distSq);
+    // A centre on the axis: push out sideways, the shortest way out of a capsule.
+    const Vec2 normal =
+        dist > FLT_EPSILON ? (pB - pA) / dist : normalize(leftPerp(a.center2 - a.center1));
+    return detail::localToWorld(singlePoint(pA, pB, normal, dist, a.radius, b.radius, 0), xfA, xfB);
+}
+
+Manifold collideCapsules(const Capsule& a, const Transform& xfA, const Capsule& b,
+                         const Transform& xfB, float margin) {
+    const Transform xf = invMulTransforms(xfA, xfB);
+    const Vec2 p1 = a.center1;
+    const Vec2 p2 = a.center2;
+    const Vec2 q1 = transformPoint(xf, b.center1);
+    const Vec2 q2 = transformPoint(xf, b.center2);
+    const float rA = a.radius;
+    const float rB = b.radius;
+    const float limit = rA + rB + margin;
+
+    const detail::SegmentDistance sd = detail::segmentDistance(p1, p2, q1, q2);
+    if (sd.distanceSquared > limit * limit) {
+        return Manifold{};
+    }
+    const float dist = std::sqrt(sd.distanceSquared);
+    if (dist < 0.1f * kLinearSlop) {
+        // The axes cross or touch: no closest-point direction, so find the axis of least
+        // penetration with SAT on the two segments (complete for non-parallel segments).
+        return collidePolygons(detail::makeCapsulePolygon(a.center1, a.center2, rA), xfA,
+                               detail::makeCapsulePolygon(b.center1, b.center2, rB), xfB, margin);
+    }
+    const Vec2 w = (sd.closest2 - sd.closest1) / dist;
+
+    // When the closest-point direction is perpendicular to one axis, the contact is on that
+    // capsule's side (parallel or resting capsules): clip the other axis to it for up to two
+    // points. Otherwise it is an end-to-end contact with one point.
+    Manifold m;
+    const float lenA = distance(p1, p2);
+    const float lenB = distance(q1, q2);
+    const Vec2 uA = lenA > 0.0f ? (p2 - p1) / lenA : Vec2{0.0f, 0.0f};
+    const Vec2 uB = lenB > 0.0f ? (q2 - q1) / lenB : Vec2{0.0f, 0.0f};
+    if (lenA > 0.0f && std::fabs(dot(w, uA)) <= kCapsuleFaceSine) {
+        Vec2 n = leftPerp(uA);
+        n = dot(n, w) < 0.0f ? -n : n;
+        int ids[2] = {makeFeatureId(kCapsuleSide, 0), makeFeatureId(kCapsuleSide, 1)};
+        if (clipToReference(p1, uA, lenA, n, q1, q2, rA, rB, margin, m, ids)) {
+            return detail::localToWorld(m, xfA, xfB);
+        }
+    }
+    if (lenB > 0.0f && std::fabs(dot(w, uB)) <= kCapsuleFaceSine) {
+        Vec2 n = leftPerp(uB);
+        n = dot(n, w) > 0.0f ? -n : n; // from B towards A
+        int ids[2] = {makeFeatureId(0, kCapsuleSide), makeFeatureId(1, kCapsuleSide)};
+        if (clipToReference(q1, uB, lenB, n, p1, p2, rB, rA, margin, m, ids)) {
+            m.normal = -m.normal;
+            return detail::localToWorld(m, xfA, xfB);
+        }
+    }
+    const int featureA = sd.fraction1 < 0.5f ? 0 : 1;
+    const int featureB = sd.fraction2 < 0.5f ? 0 : 1;
+    m = singlePoint(sd.closest1, sd.closest2, w, dist, rA, rB, makeFeatureId(featureA, featureB));
+    return detail::localToWorld(m, xfA, xfB);
+}
+
+Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const Circle& b,
+                                 const Transform& xfB, float margin) {
+    const Transform xf = invMulTransforms(xfA, xfB);
+    const Vec2 c = transformPoint(xf, b.center);
+    const float limit = a.radius + b.radius + margin;
+
+    // The face that separates the centre the most; the closest feature is that face or one of
+    // its two vertices.
+    int face = 0;
+    float separation = -FLT_MAX;
+    for (int i = 0; i < a.count; ++i) {
+        float s = dot(a.normals[i], c - a.vertices[i]);
+        if (s > separation) {
+            separation = s;
+            face = i;
+        }
+    }
+    if (separation > limit) {
+        return Manifold{};
+    }
+    const Vec2 v1 = a.vertices[face];
+    const Vec2 v2 = a.vertices[face + 1 < a.count ? face + 1 : 0];
+    Manifold m;
+    if (separation > FLT_EPSILON && dot(c - v1, v2 - v1) < 0.0f) {
+        float dist = distance(v1, c);
+        if (dist > limit) {
+            return Manifold{};
+        }
+        m = singlePoint(v1, c, (c - v1) / dist, dist, a.radius, b.radius, 0);
+    } else if (separation > FLT_EPSILON && dot(c - v2, v1 - v2) < 0.0f) {
+        float dist = distance(v2, c);
+        if (dist > limit) {
+            return Manifold{};
+        }
+        m = singlePoint(v2, c, (c - v2) / dist, dist, a.radius, b.radius, 0);
+    } else {
+        // Face region, or the centre is inside the core: push out through the face.
+        const Vec2 n = a.normals[face];
+        m = singlePoint(c - separation * n, c, n, separation, a.radius, b.radius, 0);
+    }
+    return detail::localToWorld(m, xfA, xfB);
+}
+
+Manifold collidePolygonAndCapsule(const Polygon& a, const Transform& xfA, const Capsule& b,
+                                  const Transform& xfB, float margin) {
+    return collidePolygons(a, xfA, detail::makeCapsulePolygon(b.center1, b.center2, b.radius), xfB,
+                           margin);
+}
+
+Manifold collideSegmentAndCircle(const Segment& a, const Transform& xfA, const Circle& b,
+                                 const Transform& xfB, float margin) {
+    return collideCapsuleAndCircle(Capsule{a.point1, a.point2, 0.0f}, xfA, b, xfB, margin);
+}
+
+Manifold collideSegmentAndCapsule(const Segment& a, const Transform& xfA, const Capsule& b,
+                                  const Transform& xfB, float margin) {
+    return collideCapsules(Capsule{a.point1, a.point2, 0.0f}, xfA, b, xfB, margin);
+}
+
+Manifold collideSegmentAndPolygon(const Segment& a, const Transform& xfA, const Polygon& b,
+                                  const Transform& xfB, float margin) {
+    return collidePolygons(detail::makeCapsulePolygon(a.point1, a.point2, 0.0f), xfA, b, xfB,
+                           margin);
+}
+
+} // namespace e2d::physics

@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/physics/manifold.hpp>
+
+#include "manifold_detail.hpp"
+#include "polygon_clip.hpp"
+#include "shape_detail.hpp"
+
+#include <cfloat>
+
+namespace e2d::physics {
+namespace {
+
+// B's separation from A may beat A's by this much before B's face becomes the reference: an
+// absolute bias (metres) so that nearly equal faces do not flip-flop from one step to the next
+// and change the feature ids.
+constexpr float kFlipTolerance = 0.1f * kLinearSlop;
+// Cores farther apart than this are "separated": their closest features decide the contact.
+constexpr float kSeparatedCores = 0.1f * kLinearSlop;
+// The closest-point direction counts as the reference face's normal above this cosine
+// (about 2.6 degrees); otherwise the contact is a single vertex contact.
+constexpr float kFaceCosine = 0.999f;
+
+struct EdgeSeparation {
+    int edge = 0;
+    float separation = -FLT_MAX;
+};
+
+// The edge of poly1 whose normal separates poly2 the most (the least penetration).
+EdgeSeparation findMaxSeparation(const Polygon& poly1, const Polygon& poly2) {
+    EdgeSeparation best;
+    for (int i = 0; i < poly1.count; ++i) {
+        const Vec2 n = poly1.normals[i];
+        const Vec2 v = poly1.vertices[i];
+        float si = FLT_MAX;
+        for (int j = 0; j < poly2.count; ++j) {
+            float sij = dot(n, poly2.vertices[j] - v);
+            si = sij < si ? sij : si;
+        }
+        if (si > best.separation) {
+            best.separation = si;
+            best.edge = i;
+        }
+    }
+    return best;
+}
+
+} // namespace
+
+Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
+                         const Transform& xfB, float margin) {
+    // Work in A's frame, relative to A's first vertex: B is moved once, and coordinates stay
+    // small however far the bodies are from the world origin.
+    const Vec2 origin = a.vertices[0];
+    const Transform xf = invMulTransforms(xfA, xfB);
+    Polygon localA;
+    localA.count = a.count;
+    localA.radius = a.radius;
+    for (int i = 0; i < a.count; ++i) {
+        localA.vertices[i] = a.vertices[i] - origin;
+        localA.normals[i] = a.normals[i];
+    }
+    Polygon localB;
+    localB.count = b.count;
+    localB.radius = b.radius;
+    for (int i = 0; i < b.count; ++i) {
+        localB.vertices[i] = transformPoint(xf, b.vertices[i]) - origin;
+        localB.normals[i] = rotate(xf.q, b.normals[i]);
+    }
+
+    const float radius = a.radius + b.radius;
+    const float limit = margin + radius;
+    const EdgeSeparation sepA = findMaxSeparation(localA, localB);
+    if (sepA.separation > limit) {
+        return Manifold{};
+    }
+    const EdgeSeparation sepB = findMaxSeparation(localB, localA);
+    if (sepB.separation > limit) {
+        return Manifold{};
+    }
+
+    const bool flip = sepB.separation > sepA.separation + kFlipTolerance;
+    const Polygon& poly1 = flip ? localB : localA;
+    const Polygon& poly2 = flip ? localA : localB;
+    const int edge1 = flip ? sepB.edge : sepA.edge;
+    const float separation = flip ? sepB.separation : sepA.separation;
+
+    // The incident edge: the one of poly2 whose normal is most anti-parallel to the reference.
+    const Vec2 normal1 = poly1.normals[edge1];
+    int incident = 0;
+    float minDot = FLT_MAX;
+    for (int j = 0; j < poly2.count; ++j) {
+        float d = dot(normal1, poly2.normals[j]);
+        if (d < minDot) {
+            minDot = d;
+            incident = j;
+        }
+    }
+
+    Manifold m;
+    if (separation > kSeparatedCores) {
+        // Face separation only bounds the distance from below; near a corner the real gap is
+        // larger, which matters for rounded polygons and for speculative points. The closest
+        // points of the two edges tell a face contact from a vertex contact.
+        const int i11 = edge1;
+        const int i12 = i11 + 1 < poly1.count ? i11 + 1 : 0;
+        const int i21 = incident;
+        const int i22 = i21 + 1 < poly2.count ? i21 + 1 : 0;
+        const detail::SegmentDistance sd =
+            detail::segmentDistance(poly1.vertices[i11], poly1.vertices[i12], poly2.vertices[i21],
+                                    poly2.vertices[i22]);
+        if (sd.distanceSquared > limit * limit) {
+            return Manifold{};
+        }
+        // distance >= separation > 0, so w is well defined.
+        const float distance = std::sqrt(sd.distanceSquared);
+        const Vec2 w = (sd.closest2 - sd.closest1) / distance;
+        if (dot(w, normal1) < kFaceCosine) {
+            Vec2 c1 = sd.closest1 + poly1.radius * w;
+            Vec2 c2 = sd.closest2 - poly2.radius * w;
+            int feature1 = sd.fraction1 < 0.5f ? i11 : i12;
+            int feature2 = sd.fraction2 < 0.5f ? i21 : i22;
+            ManifoldPoint& mp = m.points[0];
+            mp.point = 0.5f * (c1 + c2) + origin;
+            mp.separation = distance - radius;
+            mp.id = flip ? makeFeatureId(feature2, feature1) : makeFeatureId(feature1, feature2);
+            m.normal = flip ? -w : w;
+            m.pointCount = 1;
+            return detail::localToWorld(m, xfA, xfB);
+        }
+    }
+
+    m = detail::clipPolygons(localA, localB, flip ? incident : edge1, flip ? edge1 : incident, flip,
+                             margin);
+    for (int i = 0; i < m.pointCount; ++i) {
+        m.points[i].point += origin;
+    }
+    return detail::localToWorld(m, xfA, xfB);
+}
+
+} // namespace e2d::physics

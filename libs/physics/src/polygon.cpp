@@ -1,0 +1,224 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/physics/geometry.hpp>
+
+#include "error_format.hpp"
+#include "shape_detail.hpp"
+
+#include <string>
+
+namespace e2d::physics {
+namespace {
+
+void checkRadius(float radius, const char* function) {
+    if (!detail::isSane(radius) || radius < 0.0f) {
+        detail::fail(function, "radius must be finite and >= 0, got " + detail::formatFloat(radius));
+    }
+}
+
+void checkHalfExtent(float value, const char* name, const char* function) {
+    if (!detail::isSane(value) || value <= 0.0f) {
+        detail::fail(function, std::string("half-extent ") + name + " must be finite and > 0, got " +
+                                   detail::formatFloat(value));
+    }
+}
+
+// Builds normals and centroid for counter-clockwise, convex, validated vertices.
+Polygon finishPolygon(const Vec2* vertices, int count, float radius) {
+    Polygon polygon;
+    polygon.count = count;
+    polygon.radius = radius;
+    for (int i = 0; i < count; ++i) {
+        polygon.vertices[i] = vertices[i];
+    }
+    for (int i = 0; i < count; ++i) {
+        Vec2 edge = vertices[i + 1 < count ? i + 1 : 0] - vertices[i];
+        polygon.normals[i] = normalize(rightPerp(edge));
+    }
+    // Triangle fan from vertex 0 rather than the origin: the vertices may be far from the
+    // origin, and small relative coordinates keep the cross products accurate.
+    Vec2 origin = vertices[0];
+    Vec2 weighted{0.0f, 0.0f};
+    float area = 0.0f;
+    for (int i = 1; i + 1 < count; ++i) {
+        Vec2 e1 = vertices[i] - origin;
+        Vec2 e2 = vertices[i + 1] - origin;
+        float a = 0.5f * cross(e1, e2);
+        weighted += (a / 3.0f) * (e1 + e2);
+        area += a;
+    }
+    polygon.centroid = origin + weighted / area;
+    return polygon;
+}
+
+Polygon makeFromHull(const Hull& hull, float radius, const char* function) {
+    checkRadius(radius, function);
+    if (hull.count < 3 || hull.count > kMaxPolygonVertices) {
+        detail::fail(function, "hull has " + std::to_string(hull.count) + " points, expected 3 to " +
+                                   std::to_string(kMaxPolygonVertices) + " (use computeHull())");
+    }
+    for (int i = 0; i < hull.count; ++i) {
+        if (!detail::isSane(hull.points[i])) {
+            detail::fail(function, "hull point " + std::to_string(i) +
+                                       " must be finite and within kHuge, got " +
+                                       detail::formatVec(hull.points[i]));
+        }
+    }
+    // A hand-made hull must still be strictly convex and counter-clockwise, or the normals and
+    // every collision routine would be wrong.
+    for (int i = 0; i < hull.count; ++i) {
+        Vec2 a = hull.points[i];
+        Vec2 b = hull.points[(i + 1) % hull.count];
+        Vec2 c = hull.points[(i + 2) % hull.count];
+        if (!(cross(b - a, c - b) > 0.0f)) {
+            detail::fail(function, "hull is not strictly convex and counter-clockwise at point " +
+                                       std::to_string((i + 1) % hull.count) + " " +
+                                       detail::formatVec(b) + " (use computeHull())");
+        }
+    }
+    return finishPolygon(hull.points.data(), hull.count, radius);
+}
+
+} // namespace
+
+Polygon makePolygon(std::span<const Vec2> points, float radius) {
+    constexpr const char* kFunction = "physics::makePolygon()";
+    checkRadius(radius, kFunction);
+    return makeFromHull(detail::computeHull(points, kFunction), radius, kFunction);
+}
+
+Polygon makePolygon(const Hull& hull, float radius) {
+    return makeFromHull(hull, radius, "physics::makePolygon()");
+}
+
+Polygon makeBox(float hx, float hy) {
+    constexpr const char* kFunction = "physics::makeBox()";
+    checkHalfExtent(hx, "hx", kFunction);
+    checkHalfExtent(hy, "hy", kFunction);
+    Polygon box;
+    box.count = 4;
+    box.vertices[0] = {-hx, -hy};
+    box.vertices[1] = {hx, -hy};
+    box.vertices[2] = {hx, hy};
+    box.vertices[3] = {-hx, hy};
+    box.normals[0] = {0.0f, -1.0f};
+    box.normals[1] = {1.0f, 0.0f};
+    box.normals[2] = {0.0f, 1.0f};
+    box.normals[3] = {-1.0f, 0.0f};
+    return box;
+}
+
+Polygon makeOffsetBox(float hx, float hy, Vec2 center, float angle) {
+    constexpr const char* kFunction = "physics::makeOffsetBox()";
+    checkHalfExtent(hx, "hx", kFunction);
+    checkHalfExtent(hy, "hy", kFunction);
+    if (!detail::isSane(center)) {
+        detail::fail(kFunction, "center must be finite and within kHuge, got " + detail::formatVec(center));
+    }
+    if (!std::isfinite(angle)) {
+        detail::fail(kFunction, "angle must be finite, got " + detail::formatFloat(angle));
+    }
+    Polygon box = makeBox(hx, hy);
+    Transform xf{center, Rot::fromAngle(angle)};
+    for (int i = 0; i < box.count; ++i) {
+        box.vertices[i] = transformPoint(xf, box.vertices[i]);
+        box.normals[i] = rotate(xf.q, box.normals[i]);
+    }
+    box.centroid = center;
+    return box;
+}
+
+Polygon makeRoundedBox(float hx, float hy, float radius) {
+    constexpr const char* kFunction = "physics::makeRoundedBox()";
+    checkHalfExtent(hx, "hx", kFunction);
+    checkHalfExtent(hy, "hy", kFunction);
+    checkRadius(radius, kFunction);
+    Polygon box = makeBox(hx, hy);
+    box.radius = radius;
+    return box;
+}
+
+void validate(const ShapeGeometry& shape, const char* function) {
+    using detail::fail;
+    using detail::formatFloat;
+    using detail::formatVec;
+    using detail::isSane;
+    switch (typeOf(shape)) {
+    case ShapeType::Circle: {
+        const auto& circle = std::get<Circle>(shape);
+        if (!isSane(circle.center)) {
+            fail(function, "circle center must be finite and within kHuge, got " + formatVec(circle.center));
+        }
+        if (!isSane(circle.radius) || circle.radius <= 0.0f) {
+            fail(function, "circle radius must be finite and > 0, got " + formatFloat(circle.radius));
+        }
+        return;
+    }
+    case ShapeType::Capsule: {
+        const auto& capsule = std::get<Capsule>(shape);
+        if (!isSane(capsule.center1) || !isSane(capsule.center2)) {
+            fail(function, "capsule centers must be finite and within kHuge, got " +
+                               formatVec(capsule.center1) + " and " + formatVec(capsule.center2));
+        }
+        if (!isSane(capsule.radius) || capsule.radius <= 0.0f) {
+            fail(function, "capsule radius must be finite and > 0, got " + formatFloat(capsule.radius));
+        }
+        // A capsule shorter than the slop has no usable axis; a Circle says what is meant.
+        float len = distance(capsule.center1, capsule.center2);
+        if (!(len >= kLinearSlop)) {
+            fail(function, "capsule centers must be at least kLinearSlop (" + formatFloat(kLinearSlop) +
+                               " m) apart, got " + formatFloat(len) + " (use a Circle)");
+        }
+        return;
+    }
+    case ShapeType::Segment: {
+        const auto& segment = std::get<Segment>(shape);
+        if (!isSane(segment.point1) || !isSane(segment.point2)) {
+            fail(function, "segment points must be finite and within kHuge, got " +
+                               formatVec(segment.point1) + " and " + formatVec(segment.point2));
+        }
+        float len = distance(segment.point1, segment.point2);
+        if (!(len >= kLinearSlop)) {
+            fail(function, "segment points must be at least kLinearSlop (" + formatFloat(kLinearSlop) +
+                               " m) apart, got " + formatFloat(len));
+        }
+        return;
+    }
+    case ShapeType::Polygon: {
+        const auto& polygon = std::get<Polygon>(shape);
+        if (polygon.count < 3 || polygon.count > kMaxPolygonVertices) {
+            fail(function, "polygon has " + std::to_string(polygon.count) + " vertices, expected 3 to " +
+                               std::to_string(kMaxPolygonVertices) + " (use makePolygon())");
+        }
+        if (!isSane(polygon.radius) || polygon.radius < 0.0f) {
+            fail(function, "polygon radius must be finite and >= 0, got " + formatFloat(polygon.radius));
+        }
+        if (!isSane(polygon.centroid)) {
+            fail(function, "polygon centroid must be finite and within kHuge, got " +
+                               formatVec(polygon.centroid));
+        }
+        for (int i = 0; i < polygon.count; ++i) {
+            if (!isSane(polygon.vertices[i])) {
+                fail(function, "polygon vertex " + std::to_string(i) +
+                                   " must be finite and within kHuge, got " + formatVec(polygon.vertices[i]));
+            }
+            Vec2 n = polygon.normals[i];
+            if (!isFinite(n) || std::fabs(lengthSquared(n) - 1.0f) > 1.0e-3f) {
+                fail(function, "polygon normal " + std::to_string(i) + " must be a unit vector, got " +
+                                   formatVec(n) + " (use makePolygon())");
+            }
+        }
+        for (int i = 0; i < polygon.count; ++i) {
+            Vec2 a = polygon.vertices[i];
+            Vec2 b = polygon.vertices[(i + 1) % polygon.count];
+            Vec2 c = polygon.vertices[(i + 2) % polygon.count];
+            if (!(cross(b - a, c - b) > 0.0f)) {
+                fail(function, "polygon is not strictly convex and counter-clockwise at vertex " +
+                                   std::to_string((i + 1) % polygon.count) + " (use makePolygon())");
+            }
+        }
+        return;
+    }
+    }
+}
+
+} // namespace e2d::physics

@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/physics/world.hpp>
+
+#include "broad_phase.hpp"
+#include "id_pool.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace e2d::physics::detail {
+
+inline constexpr int kNullIndex = -1;
+
+// A body slot. Slots of destroyed bodies stay in the array (alive == false) and keep their
+// generation, so a stale BodyId is recognised; the id pool reuses them.
+struct Body {
+    Transform transform{};
+    Vec2 linearVelocity{0.0f, 0.0f};
+    float angularVelocity = 0.0f;
+    std::uint64_t userData = 0;
+    // Shapes of a body form an intrusive doubly linked list through the shape array, so a body
+    // owns no heap memory of its own.
+    int headShape = kNullIndex;
+    int shapeCount = 0;
+    std::uint16_t generation = 1;
+    BodyType type = BodyType::Static;
+    bool enabled = true;
+    bool alive = false;
+};
+
+struct Shape {
+    ShapeGeometry geometry{};
+    // Tight world box at the body's current transform.
+    Aabb aabb{};
+    Filter filter{};
+    std::uint64_t userData = 0;
+    float density = 1.0f;
+    float friction = 0.6f;
+    float restitution = 0.0f;
+    float rollingResistance = 0.0f;
+    int body = kNullIndex;
+    int prevShape = kNullIndex;
+    int nextShape = kNullIndex;
+    // Broad-phase proxy key; kNullIndex while the body is disabled.
+    int proxyKey = kNullIndex;
+    std::uint16_t generation = 1;
+    bool isSensor = false;
+    bool alive = false;
+};
+
+} // namespace e2d::physics::detail
+
+namespace e2d::physics {
+
+struct World::Impl {
+    Vec2 gravity{0.0f, -10.0f};
+    CollisionAlgorithm collisionAlgorithm = CollisionAlgorithm::Sat;
+    float speculativeDistance = kSpeculativeDistance;
+
+    std::vector<detail::Body> bodies;
+    std::vector<detail::Shape> shapes;
+    detail::IdPool bodyIds;
+    detail::IdPool shapeIds;
+    detail::BroadPhase broadPhase;
+
+    // Index of a live body named by `id`, or kNullIndex.
+    [[nodiscard]] int find(BodyId id) const {
+        if (id.index1 == 0 || id.index1 > bodies.size()) {
+            return detail::kNullIndex;
+        }
+        const detail::Body& body = bodies[id.index1 - 1];
+        return body.alive && body.generation == id.generation ? static_cast<int>(id.index1 - 1)
+                                                              : detail::kNullIndex;
+    }
+    [[nodiscard]] int find(ShapeId id) const {
+        if (id.index1 == 0 || id.index1 > shapes.size()) {
+            return detail::kNullIndex;
+        }
+        const detail::Shape& shape = shapes[id.index1 - 1];
+        return shape.alive && shape.generation == id.generation ? static_cast<int>(id.index1 - 1)
+                                                                : detail::kNullIndex;
+    }
+    // Like find(), but throws core::Error naming `function` for a stale or null handle.
+    int require(BodyId id, const char* function) const;
+    int require(ShapeId id, const char* function) const;
+
+    [[nodiscard]] BodyId bodyId(int index) const {
+        return {static_cast<std::uint32_t>(index) + 1, bodies[static_cast<std::size_t>(index)].generation};
+    }
+    [[nodiscard]] ShapeId shapeId(int index) const {
+        return {static_cast<std::uint32_t>(index) + 1, shapes[static_cast<std::size_t>(index)].generation};
+    }
+    detail::Body& body(int index) { return bodies[static_cast<std::size_t>(index)]; }
+    const detail::Body& body(int index) const { return bodies[static_cast<std::size_t>(index)]; }
+    detail::Shape& shape(int index) { return shapes[static_cast<std::size_t>(index)]; }
+    const detail::Shape& shape(int index) const { return shapes[static_cast<std::size_t>(index)]; }
+
+    void createProxy(int shapeIndex);
+    void destroyProxy(int shapeIndex);
+    void destroyShapeAt(int shapeIndex);
+    // Whether two shapes may become a candidate pair (the broad phase's filter).
+    [[nodiscard]] bool shouldPair(int shapeA, int shapeB) const;
+};
+
+} // namespace e2d::physics

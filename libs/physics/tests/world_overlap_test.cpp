@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/physics/world.hpp>
+
+#include "world_random_scene.hpp"
+
+namespace e2d::physics {
+namespace {
+
+using test::RandomScene;
+using test::ShapeRecord;
+
+std::vector<ShapeId> bruteForceBox(const RandomScene& scene, const Aabb& box,
+                                   const QueryFilter& filter) {
+    std::vector<ShapeId> result;
+    for (const ShapeRecord& s : scene.shapes) {
+        if (scene.bodyOf(s).enabled && test::seenBy(s, filter) &&
+            overlaps(computeAabb(s.geometry, scene.transformOf(s)), box)) {
+            result.push_back(s.id);
+        }
+    }
+    return test::sortedIds(result);
+}
+
+std::vector<ShapeId> bruteForcePoint(const RandomScene& scene, Vec2 point,
+                                     const QueryFilter& filter) {
+    std::vector<ShapeId> result;
+    for (const ShapeRecord& s : scene.shapes) {
+        if (scene.bodyOf(s).enabled && test::seenBy(s, filter) &&
+            testPoint(s.geometry, invTransformPoint(scene.transformOf(s), point))) {
+            result.push_back(s.id);
+        }
+    }
+    return test::sortedIds(result);
+}
+
+QueryFilter randomFilter(test::Random& random) {
+    QueryFilter filter;
+    static constexpr std::uint64_t kMasks[] = {~std::uint64_t{0}, 0x1, 0x6};
+    filter.maskBits = kMasks[random.below(3)];
+    filter.categoryBits = random.below(2) == 0 ? 0x1 : 0x2;
+    filter.includeSensors = random.below(2) == 0;
+    return filter;
+}
+
+TEST(WorldOverlap, AabbAndPointQueriesMatchBruteForce) {
+    for (std::uint32_t seed : {1u, 2u, 3u}) {
+        RandomScene scene(seed, 120, 15.0f);
+        test::Random& random = scene.random();
+        int nonEmptyBoxes = 0;
+        int nonEmptyPoints = 0;
+        for (int frame = 0; frame < 6; ++frame) {
+            for (int q = 0; q < 40; ++q) {
+                QueryFilter filter = randomFilter(random);
+                Vec2 c{random.uniform(-16.0f, 16.0f), random.uniform(-16.0f, 16.0f)};
+                Vec2 h{random.uniform(0.0f, 4.0f), random.uniform(0.0f, 4.0f)};
+                Aabb box{c - h, c + h};
+                std::vector<ShapeId> expected = bruteForceBox(scene, box, filter);
+                EXPECT_EQ(scene.world.overlapAabb(box, filter), expected) << "seed " << seed;
+                nonEmptyBoxes += expected.empty() ? 0 : 1;
+
+                std::vector<ShapeId> inside = bruteForcePoint(scene, c, filter);
+                EXPECT_EQ(scene.world.overlapPoint(c, filter), inside) << "seed " << seed;
+                nonEmptyPoints += inside.empty() ? 0 : 1;
+            }
+            // Move some bodies (any type: a teleported static body moves too), disable a few.
+            for (test::BodyRecord& body : scene.bodies) {
+                if (random.below(3) == 0) {
+                    Vec2 p = body.position + Vec2(random.uniform(-3.0f, 3.0f),
+                                                  random.uniform(-3.0f, 3.0f));
+                    scene.moveBody(body, p, random.uniform(-3.0f, 3.0f));
+                }
+                if (random.below(20) == 0) {
+                    body.enabled = !body.enabled;
+                    scene.world.setBodyEnabled(body.id, body.enabled);
+                }
+            }
+        }
+        // The comparison means something only if many queries found shapes.
+        EXPECT_GT(nonEmptyBoxes, 60);
+        EXPECT_GT(nonEmptyPoints, 10);
+    }
+}
+
+TEST(WorldOverlap, CallbackCanStopEarly) {
+    RandomScene scene(7, 50, 3.0f);
+    int calls = 0;
+    scene.world.overlapAabb({{-10.0f, -10.0f}, {10.0f, 10.0f}}, {}, [&](ShapeId) {
+        ++calls;
+        return calls < 3;
+    });
+    EXPECT_EQ(calls, 3);
+}
+
+TEST(WorldOverlap, SetTransformMovesTheShapeInTheTree) {
+    World world;
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    BodyId body = world.createBody(def);
+    ShapeId box = world.createShape(body, {}, makeBox(0.5f, 0.5f));
+    EXPECT_EQ(world.overlapPoint({0.0f, 0.0f}), std::vector<ShapeId>{box});
+
+    world.setTransform(body, {20.0f, -7.0f}, 0.3f);
+    EXPECT_TRUE(world.overlapPoint({0.0f, 0.0f}).empty());
+    EXPECT_TRUE(world.overlapAabb({{-1.0f, -1.0f}, {1.0f, 1.0f}}).empty());
+    EXPECT_FALSE(world.castRayClosest({-5.0f, 0.0f}, {10.0f, 0.0f}).has_value());
+    EXPECT_EQ(world.overlapPoint({20.0f, -7.0f}), std::vector<ShapeId>{box});
+    EXPECT_EQ(world.overlapAabb({{19.0f, -8.0f}, {19.5f, -7.5f}}), std::vector<ShapeId>{box});
+    std::optional<RayResult> hit = world.castRayClosest({15.0f, -7.0f}, {10.0f, 0.0f});
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_EQ(hit->shape, box);
+
+    // A small move that stays inside the fat box is still seen exactly by the queries.
+    world.setTransform(body, {20.05f, -7.0f}, 0.0f);
+    EXPECT_TRUE(world.overlapPoint({19.52f, -7.0f}).empty());
+    EXPECT_EQ(world.overlapPoint({20.54f, -7.0f}), std::vector<ShapeId>{box});
+    EXPECT_TRUE(contains(world.shapeFatAabb(box), world.shapeAabb(box)));
+}
+
+} // namespace
+} // namespace e2d::physics

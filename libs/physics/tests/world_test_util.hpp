@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/core/error.hpp>
+#include <e2d/physics/world.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <string>
+
+// Helpers shared by the world_*_test.cpp files.
+namespace e2d::physics::test {
+
+/// The message of the core::Error that `f` throws, or "no error".
+template <class F>
+std::string errorOf(F&& f) {
+    try {
+        f();
+    } catch (const core::Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+#define E2D_EXPECT_ERROR(statement, needle)                                                       \
+    EXPECT_PRED_FORMAT2(::testing::IsSubstring, needle,                                           \
+                        ::e2d::physics::test::errorOf([&] { statement; }))
+
+/// Uniform floats from a fixed-seed engine, mapped by hand so that results do not depend on
+/// the standard library's distributions.
+class Random {
+public:
+    explicit Random(std::uint32_t seed) : engine_(seed) {}
+    /// In [lo, hi).
+    float uniform(float lo, float hi) {
+        double unit = static_cast<double>(engine_()) / 4294967296.0;
+        return lo + static_cast<float>(unit) * (hi - lo);
+    }
+    /// In [0, n).
+    int below(int n) { return static_cast<int>(engine_() % static_cast<std::uint32_t>(n)); }
+
+private:
+    std::mt19937 engine_;
+};
+
+} // namespace e2d::physics::test
