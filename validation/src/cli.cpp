@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -59,6 +60,52 @@ fs::path resolve(const std::string& fileOrName, const fs::path& dir) {
     }
     throw ScenarioError("--scenario " + fileOrName + ": no such file, and no scenario of that name in " +
                         dir.string() + " (see --list)");
+}
+
+// Family order of the report, then names in natural order (stack_5 before stack_10).
+void sortScenarios(std::vector<Scenario>& scenarios) {
+    const std::vector<std::string> families{"stacking", "friction", "restitution", "conservation",
+                                            "hard"};
+    auto rank = [&](const Scenario& s) {
+        return std::find(families.begin(), families.end(), s.family) - families.begin();
+    };
+    auto natural = [](const std::string& a, const std::string& b) {
+        std::size_t i = 0;
+        std::size_t j = 0;
+        while (i < a.size() && j < b.size()) {
+            if (std::isdigit(static_cast<unsigned char>(a[i])) != 0 &&
+                std::isdigit(static_cast<unsigned char>(b[j])) != 0) {
+                std::size_t ie = i;
+                std::size_t je = j;
+                while (ie < a.size() && std::isdigit(static_cast<unsigned char>(a[ie])) != 0) {
+                    ++ie;
+                }
+                while (je < b.size() && std::isdigit(static_cast<unsigned char>(b[je])) != 0) {
+                    ++je;
+                }
+                const std::string na = a.substr(i, ie - i);
+                const std::string nb = b.substr(j, je - j);
+                if (na.size() != nb.size()) {
+                    return na.size() < nb.size();
+                }
+                if (na != nb) {
+                    return na < nb;
+                }
+                i = ie;
+                j = je;
+            } else {
+                if (a[i] != b[j]) {
+                    return a[i] < b[j];
+                }
+                ++i;
+                ++j;
+            }
+        }
+        return a.size() - i < b.size() - j;
+    };
+    std::stable_sort(scenarios.begin(), scenarios.end(), [&](const Scenario& a, const Scenario& b) {
+        return rank(a) != rank(b) ? rank(a) < rank(b) : natural(a.name, b.name);
+    });
 }
 
 std::string joined(const std::vector<std::string>& args) {
@@ -147,6 +194,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         err << "e2d-validate: " << e.what() << "\n";
         return kExitBadInput;
     }
+    sortScenarios(scenarios);
     if (o.list) {
         for (const Scenario& s : scenarios) {
             out << s.name << "  [" << s.family << (s.quick ? ", quick" : "") << "]  "

@@ -10,6 +10,11 @@
 namespace e2d::validation {
 namespace {
 
+float skinOf(const b2Fixture* fixture) {
+    const b2Shape::Type type = fixture->GetType();
+    return type == b2Shape::e_polygon || type == b2Shape::e_edge ? b2_polygonRadius : 0.0f;
+}
+
 class Box2DEngine final : public Engine {
 public:
     Box2DEngine(const scenes::SceneDesc& scene, const EngineConfig& config)
@@ -48,8 +53,9 @@ public:
     }
 
     [[nodiscard]] float maxPenetration() const override {
-        // Box2D's separations are measured between the skinned shapes (b2_polygonRadius
-        // included), which is the surface its solver keeps apart.
+        // Box2D's separations are between the skinned shapes (polygons and edges grow by
+        // b2_polygonRadius); the skin is not part of the scene, so it is added back to measure
+        // the overlap of the shapes the scene describes, as for every other engine.
         float deepest = 0.0f;
         for (const b2Contact* c = scene_.world->GetContactList(); c != nullptr; c = c->GetNext()) {
             if (!c->IsTouching()) {
@@ -57,9 +63,10 @@ public:
             }
             b2WorldManifold wm;
             c->GetWorldManifold(&wm);
+            const float skin = skinOf(c->GetFixtureA()) + skinOf(c->GetFixtureB());
             const int n = c->GetManifold()->pointCount;
             for (int i = 0; i < n; ++i) {
-                deepest = std::max(deepest, -wm.separations[i]);
+                deepest = std::max(deepest, -(wm.separations[i] + skin));
             }
         }
         return deepest;
@@ -77,8 +84,9 @@ std::string box2DNotes() {
            "(b2_polygonRadius), so boxes placed exactly touching start 0.02 m overlapped and "
            "are pushed apart; linear slop 0.005 m; restitution threshold 1 m/s; at most 2 m of "
            "travel per step (b2_maxTranslation); segments are two-sided b2EdgeShapes; a capsule "
-           "is two circles and a box on one body; penetration is measured between the skinned "
-           "shapes. Friction and restitution mix as sqrt(f1 f2) and max(e1, e2).";
+           "is two circles and a box on one body; penetration is measured between the shapes "
+           "as the scene gives them (skin excluded), so a resting Box2D box shows a gap of up to "
+           "0.015 m, not an overlap. Friction and restitution mix as sqrt(f1 f2) and max(e1, e2).";
 }
 
 std::unique_ptr<Engine> makeBox2DEngine(const scenes::SceneDesc& scene, const EngineConfig& config) {

@@ -11,6 +11,9 @@
 #ifndef E2D_VALIDATION_VERSION
 #define E2D_VALIDATION_VERSION "unknown"
 #endif
+#ifndef E2D_VALIDATION_BOX2D_VERSION
+#define E2D_VALIDATION_BOX2D_VERSION "unknown"
+#endif
 #ifndef E2D_VALIDATION_BUILD_TYPE
 #define E2D_VALIDATION_BUILD_TYPE "unknown"
 #endif
@@ -40,8 +43,10 @@ std::string cpuModel() {
 Environment collectEnvironment() {
     Environment env;
     env.e2dVersion = E2D_VALIDATION_VERSION;
-    env.box2dVersion = std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) +
-                       "." + std::to_string(b2_version.revision);
+    // The package's version; Box2D 2.4.1's own b2_version still says 2.4.0.
+    env.box2dVersion = std::string(E2D_VALIDATION_BOX2D_VERSION) + " (b2_version " +
+                       std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) +
+                       "." + std::to_string(b2_version.revision) + ")";
 #if defined(__clang__)
     env.compiler = "clang " __clang_version__;
 #elif defined(__GNUC__)

@@ -55,12 +55,13 @@ struct SummaryCell {
 /// scenarios.
 struct SweepPoint {
     std::string label;
+    int effort = 0;         ///< iterations or sub-steps: the order along the curve
     double ms = 0.0;        ///< sum of the median ms/step
     double error = 0.0;     ///< mean normalised error (1 = at tolerance)
     int failed = 0;         ///< scenarios with a failed check
     int scenarios = 0;
 };
-/// curves[scenario family][engine family], sorted by cost.
+/// curves[scenario family][engine family], in order of solver effort.
 [[nodiscard]] std::map<std::string, std::map<std::string, std::vector<SweepPoint>>> sweepCurves(
     const Report& report);
 

@@ -430,8 +430,11 @@ std::string reportSummary(const Report& r) {
                 o << "FAIL  " << r.scenarios[i].name << " [" << family << "]";
                 for (const CheckResult& c : cell.run->checks) {
                     if (!c.passed) {
-                        o << "  " << c.kind << ": measured " << fmt(c.measured, 4)
-                          << ", expected " << fmt(c.expected, 4) << " +- " << fmt(c.tolerance, 3);
+                        o << "  " << c.kind << (c.body.empty() ? "" : "(" + c.body + ")") << ": "
+                          << c.quantity << " measured " << fmt(c.measured, 4) << ", expected "
+                          << fmt(c.expected, 4) << ", error " << fmt(c.error, 3) << " vs "
+                          << fmt(c.tolerance, 3) << (c.detail.empty() ? "" : " (" + c.detail + ")")
+                          << ";";
                     }
                 }
                 if (!cell.run->failure.empty()) {

@@ -87,6 +87,9 @@ std::map<std::string, std::map<std::string, std::vector<SweepPoint>>> sweepCurve
         }
         SweepPoint& p = acc[s.family][engine][effortLabel(r.spec.config)];
         p.label = effortLabel(r.spec.config);
+        p.effort = r.spec.config.engine == "e2d" && r.spec.config.solver == "soft"
+                       ? r.spec.config.subSteps
+                       : r.spec.config.velocityIterations;
         p.ms += r.metrics.msMedian;
         p.error += r.normalizedError;
         p.failed += r.passed ? 0 : 1;
@@ -107,7 +110,7 @@ std::map<std::string, std::map<std::string, std::vector<SweepPoint>>> sweepCurve
                 }
             }
             std::sort(curve.begin(), curve.end(),
-                      [](const SweepPoint& a, const SweepPoint& b) { return a.ms < b.ms; });
+                      [](const SweepPoint& a, const SweepPoint& b) { return a.effort < b.effort; });
         }
     }
     return out;

@@ -1,3 +1,0 @@
-// SPDX-License-Identifier: MIT
-#include <gtest/gtest.h>
-TEST(Placeholder, Builds) { SUCCEED(); }
