@@ -4,6 +4,7 @@
 #include <e2d/core/error.hpp>
 
 #include <charconv>
+#include <cmath>
 #include <string>
 
 namespace e2d::physics {
@@ -24,16 +25,17 @@ ShapeProxy makeProxy(std::span<const Vec2> points, float radius) {
                           std::to_string(kMaxPolygonVertices) + " points, got " +
                           std::to_string(points.size()));
     }
-    if (!isFinite(radius) || radius < 0.0f) {
-        throw core::Error("physics::makeProxy(): radius must be finite and >= 0, got " +
+    if (!isFinite(radius) || radius < 0.0f || radius > kHuge) {
+        throw core::Error("physics::makeProxy(): radius must be finite, >= 0 and within kHuge, got " +
                           numberText(radius));
     }
     ShapeProxy proxy;
     for (std::size_t i = 0; i < points.size(); ++i) {
-        if (!isFinite(points[i])) {
+        if (!isFinite(points[i]) || std::fabs(points[i].x) > kHuge ||
+            std::fabs(points[i].y) > kHuge) {
             throw core::Error("physics::makeProxy(): point " + std::to_string(i) +
-                              " is not finite: (" + numberText(points[i].x) + ", " +
-                              numberText(points[i].y) + ")");
+                              " must be finite and within kHuge, got (" + numberText(points[i].x) +
+                              ", " + numberText(points[i].y) + ")");
         }
         proxy.points[i] = points[i];
     }
@@ -199,14 +201,12 @@ SimplexVertex makeVertex(PointSet a, PointSet b, int indexA, int indexB) {
     SimplexVertex v;
     v.indexA = indexA;
     v.indexB = indexB;
-    v.wA = a.points[indexA];
-    v.wB = b.points[indexB];
-    v.w = v.wB - v.wA;
+    v.w = b.points[indexB] - a.points[indexA];
     v.a = 1.0f;
     return v;
 }
 
-Simplex readCache(PointSet a, PointSet b, const SimplexCache* cache) {
+Simplex readCache(PointSet a, PointSet b, const SimplexCache* cache, Vec2 direction) {
     Simplex s;
     if (cache != nullptr && cache->count > 0 && cache->count <= 3) {
         bool valid = true;
@@ -231,7 +231,10 @@ Simplex readCache(PointSet a, PointSet b, const SimplexCache* cache) {
     if (s.count == 0) {
         // Start from a true support pair (a vertex of the Minkowski difference), not from an
         // arbitrary pair: EPA later needs every simplex vertex on the boundary.
-        Vec2 d = b.points[0] - a.points[0];
+        Vec2 d = direction;
+        if (lengthSquared(d) == 0.0f) {
+            d = b.points[0] - a.points[0];
+        }
         if (lengthSquared(d) == 0.0f) {
             d = Vec2{1.0f, 0.0f};
         }
@@ -243,9 +246,9 @@ Simplex readCache(PointSet a, PointSet b, const SimplexCache* cache) {
 
 } // namespace
 
-GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache) {
+GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache, float limit, Vec2 direction) {
     GjkResult result;
-    Simplex s = readCache(a, b, cache);
+    Simplex s = readCache(a, b, cache, direction);
 
     int savedA[3];
     int savedB[3];
@@ -286,24 +289,28 @@ GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache) {
         if (repeated) {
             break;
         }
+        // Every point of the Minkowski difference is at most dot(v.w, d) along d, so when that
+        // is negative the origin is at least -dot(v.w, d) / |d| away.
+        float reach = dot(v.w, d);
+        float dd = lengthSquared(d);
+        if (reach < 0.0f && reach * reach > limit * limit * dd) {
+            result.beyondLimit = true;
+            break;
+        }
         // Duplicated input points give new indices at old positions: stop when the new point
         // is no farther towards the origin than the simplex, up to rounding.
-        float gain = dot(v.w - s.v[0].w, d);
-        float scale = std::fmax(std::fmax(std::fabs(v.w.x), std::fabs(v.w.y)),
-                                std::fmax(std::fabs(s.v[0].w.x), std::fabs(s.v[0].w.y)));
-        if (gain <= 1.0e-6f * scale * length(d)) {
+        float gain = reach - dot(s.v[0].w, d);
+        float scale2 = std::fmax(lengthSquared(v.w), lengthSquared(s.v[0].w));
+        if (gain <= 0.0f || gain * gain <= 1.0e-12f * scale2 * dd) {
             break;
         }
         s.v[s.count] = v;
         ++s.count;
     }
 
-    Vec2 pointA{0.0f, 0.0f};
-    Vec2 pointB{0.0f, 0.0f};
-    for (int i = 0; i < s.count; ++i) {
-        pointA += s.v[i].a * s.v[i].wA;
-        pointB += s.v[i].a * s.v[i].wB;
-    }
+    Vec2 pointA;
+    Vec2 pointB;
+    witnessPoints(a, b, s, pointA, pointB);
     if (s.count == 3) {
         pointB = pointA;
     }

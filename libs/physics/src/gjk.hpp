@@ -3,6 +3,8 @@
 
 #include <e2d/physics/distance.hpp>
 
+#include <cfloat>
+
 // GJK and EPA on two point sets given in one common frame (the callers use A's local frame, so
 // only B's points are transformed and the numbers stay small). Shared by shapeDistance(),
 // penetration(), shapeCast(), timeOfImpact() and collidePolygonsGjkEpa().
@@ -30,9 +32,7 @@ inline int supportIndex(PointSet set, Vec2 direction) {
 
 // A vertex of the Minkowski difference B - A.
 struct SimplexVertex {
-    Vec2 wA{0.0f, 0.0f}; // support point of A
-    Vec2 wB{0.0f, 0.0f}; // support point of B
-    Vec2 w{0.0f, 0.0f};  // wB - wA
+    Vec2 w{0.0f, 0.0f}; // b.points[indexB] - a.points[indexA]
     float a = 1.0f;      // barycentric weight of the closest point
     int indexA = 0;
     int indexB = 0;
@@ -49,12 +49,28 @@ struct GjkResult {
     Vec2 pointB{0.0f, 0.0f}; // closest point on hull B
     float distance = 0.0f;   // between the hulls, no radii
     int iterations = 0;
+    bool beyondLimit = false; // stopped early: the hulls are farther apart than the limit
 };
 
 // Core distances below this (metres) count as touching: no normal can be derived from them.
 inline constexpr float kGjkTouching = 1.0e-6f;
 
-GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache);
+// `limit` (metres): callers that only care about hulls closer than this let GJK stop as soon as
+// a support plane proves the distance is larger (then only beyondLimit is meaningful).
+// Without a cache the search starts along `direction` (from A towards B, e.g. between the
+// centroids; (0, 0) means "from the first points").
+GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache, float limit = FLT_MAX,
+                 Vec2 direction = Vec2{0.0f, 0.0f});
+
+// The simplex's closest points on each hull (barycentric combination of its vertices).
+inline void witnessPoints(PointSet a, PointSet b, const Simplex& s, Vec2& pointA, Vec2& pointB) {
+    pointA = Vec2{0.0f, 0.0f};
+    pointB = Vec2{0.0f, 0.0f};
+    for (int i = 0; i < s.count; ++i) {
+        pointA += s.v[i].a * a.points[s.v[i].indexA];
+        pointB += s.v[i].a * b.points[s.v[i].indexB];
+    }
+}
 
 struct EpaResult {
     Vec2 normal{1.0f, 0.0f}; // unit, from A to B
@@ -63,6 +79,11 @@ struct EpaResult {
     float depth = 0.0f; // of the hulls, no radii; negative if in fact separated
     int iterations = 0;
     bool converged = true;
+    // The hull edge the closest polytope edge comes from, when the sets are polygons in
+    // counter-clockwise order: edge faceA of A (from point faceA to faceA + 1) or edge faceB of
+    // B; -1 when it is not one edge (a vertex pair, or the polytope degenerated).
+    int faceA = -1;
+    int faceB = -1;
 };
 
 // Expands GJK's final simplex into the Minkowski difference until the edge closest to the

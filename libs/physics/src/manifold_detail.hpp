@@ -5,6 +5,22 @@
 
 namespace e2d::physics::detail {
 
+// Decisions every polygon manifold makes the same way, whichever algorithm found the axis
+// (SAT in manifold_sat.cpp, GJK/EPA in manifold_gjk_epa.cpp), so that the two agree.
+//
+// B's face separation must beat A's by this much (metres) before B's face becomes the
+// reference: nearly equal faces then do not flip-flop between steps and change the ids.
+inline constexpr float kFlipTolerance = 0.1f * kLinearSlop;
+// Cores whose face separation exceeds this (metres) are "separated": their closest features,
+// not the face, decide the contact (the face separation only bounds the gap from below).
+inline constexpr float kSeparatedCores = 0.1f * kLinearSlop;
+// Separated closest points offset along the reference face by at most this (metres) make a
+// face contact (clipped, up to two points); more, and it is a vertex contact with one point
+// along the closest-point direction. Only rounding noise of exactly parallel edges should
+// pass: an angle test instead lets a point just past the face's end through, and clipping it
+// to the face overstates its separation by the offset times the incident edge's slope.
+inline constexpr float kFaceOffset = 0.01f * kLinearSlop;
+
 // Moves a manifold computed in A's local frame to world space. On entry each point's `point`
 // holds its position in A's frame; on exit `point` is the world point and the anchors are
 // relative to each transform's origin along world axes, as ManifoldPoint documents.

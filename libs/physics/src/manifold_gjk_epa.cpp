@@ -2,6 +2,7 @@
 #include <e2d/physics/manifold.hpp>
 
 #include "gjk.hpp"
+#include "manifold_detail.hpp"
 #include "polygon_clip.hpp"
 
 #include <cfloat>
@@ -13,6 +14,12 @@ namespace {
 // Below this core distance (metres) GJK's normal is built from two nearly equal points and is
 // too inaccurate to pick a face; EPA from the touching simplex gives the face normal instead.
 constexpr float kUseEpaBelow = 10.0f * kEpaTolerance;
+// The next three match the separating-axis routine (manifold_sat.cpp), so that both algorithms
+// make the same decisions: the bias towards A's face, the face separation above which the
+// closest features decide, and the cosine above which the closest direction is a face normal.
+constexpr float kFlipTolerance = 0.1f * kLinearSlop;
+constexpr float kSeparatedCores = 0.1f * kLinearSlop;
+constexpr float kFaceCosine = 0.999f;
 
 // Separation of `other` from edge `edge` of `poly`, both in one frame: how far the deepest
 // vertex of `other` lies in front of the edge (negative when it is behind it).
@@ -21,7 +28,8 @@ float edgeSeparation(const Polygon& poly, int edge, const Polygon& other) {
     Vec2 v = poly.vertices[edge];
     float result = FLT_MAX;
     for (int j = 0; j < other.count; ++j) {
-        result = std::fmin(result, dot(n, other.vertices[j] - v));
+        float s = dot(n, other.vertices[j] - v);
+        result = s < result ? s : result;
     }
     return result;
 }
@@ -31,11 +39,11 @@ struct FaceChoice {
     float separation = -FLT_MAX;
 };
 
-// The axis of least penetration of a pair of convex polygons is a face normal of one of them,
-// and the direction GJK or EPA found lies between the normals of the two faces that bracket it
-// (the faces at the support vertex in that direction). Testing those two on each polygon
-// gives the same face as a full separating-axis search over all the faces: EPA's direction is
-// that face's normal, and when separated the best face is adjacent to a closest feature.
+// The axis of least penetration (or greatest separation) of two convex polygons is a face
+// normal of one of them. EPA's direction is that normal; GJK's closest-point direction lies
+// between the normals of the two faces at the closest vertex. So only the two faces whose
+// normals bracket `direction` (the faces at the support vertex in that direction) are tested
+// on each polygon, instead of all of them as the separating-axis search does.
 FaceChoice bestBracketingFace(const Polygon& poly, const Polygon& other, Vec2 direction) {
     int best = 0;
     float bestDot = dot(poly.normals[0], direction);
@@ -48,22 +56,22 @@ FaceChoice bestBracketingFace(const Polygon& poly, const Polygon& other, Vec2 di
     }
     int prev = best == 0 ? poly.count - 1 : best - 1;
     int next = best + 1 == poly.count ? 0 : best + 1;
-    int second = dot(poly.normals[prev], direction) > dot(poly.normals[next], direction) ? prev
-                                                                                          : next;
+    int second =
+        dot(poly.normals[prev], direction) > dot(poly.normals[next], direction) ? prev : next;
     FaceChoice first{best, edgeSeparation(poly, best, other)};
-    FaceChoice other2{second, edgeSeparation(poly, second, other)};
+    FaceChoice neighbour{second, edgeSeparation(poly, second, other)};
     // On an exact tie keep the lower index, as a search over the faces in order would.
-    if (other2.separation > first.separation ||
-        (other2.separation == first.separation && other2.edge < first.edge)) {
-        return other2;
+    if (neighbour.separation > first.separation ||
+        (neighbour.separation == first.separation && neighbour.edge < first.edge)) {
+        return neighbour;
     }
     return first;
 }
 
 int incidentEdge(const Polygon& poly, Vec2 referenceNormal) {
     int best = 0;
-    float bestDot = dot(poly.normals[0], referenceNormal);
-    for (int i = 1; i < poly.count; ++i) {
+    float bestDot = FLT_MAX;
+    for (int i = 0; i < poly.count; ++i) {
         float d = dot(poly.normals[i], referenceNormal);
         if (d < bestDot) {
             best = i;
@@ -71,6 +79,18 @@ int incidentEdge(const Polygon& poly, Vec2 referenceNormal) {
         }
     }
     return best;
+}
+
+// The vertex of one polygon where a separated closest point lies: the simplex point of that
+// polygon with the largest barycentric weight.
+int closestVertex(const detail::Simplex& s, bool ofA) {
+    int best = 0;
+    for (int i = 1; i < s.count; ++i) {
+        if (s.v[i].a > s.v[best].a) {
+            best = i;
+        }
+    }
+    return ofA ? s.v[best].indexA : s.v[best].indexB;
 }
 
 } // namespace
@@ -89,46 +109,76 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
 
     detail::PointSet setA{a.vertices.data(), a.count};
     detail::PointSet setB{localB.vertices.data(), localB.count};
-    detail::GjkResult gjk = detail::runGjk(setA, setB, nullptr);
-    float radius = a.radius + b.radius;
+    const float radius = a.radius + b.radius;
+    const float limit = margin + radius;
+    detail::GjkResult gjk = detail::runGjk(setA, setB, nullptr, limit);
+    if (gjk.beyondLimit) {
+        return Manifold{};
+    }
 
+    const bool separated = gjk.simplex.count < 3 && gjk.distance > kUseEpaBelow;
+    FaceChoice faceA;
+    FaceChoice faceB;
     Vec2 direction;
-    if (gjk.simplex.count < 3 && gjk.distance > kUseEpaBelow) {
-        if (gjk.distance > margin + radius) {
+    if (separated) {
+        if (gjk.distance > limit) {
             return Manifold{};
         }
         direction = (gjk.pointB - gjk.pointA) * (1.0f / gjk.distance);
+        faceA = bestBracketingFace(a, localB, direction);
+        faceB = bestBracketingFace(localB, a, -direction);
     } else {
-        direction = detail::runEpa(setA, setB, gjk.simplex).normal;
+        detail::EpaResult epa = detail::runEpa(setA, setB, gjk.simplex);
+        direction = epa.normal;
+        if (epa.converged && epa.faceA >= 0) {
+            // A's face is the axis of least penetration: nothing of B's can beat it by the
+            // flip tolerance, so B's faces need no test.
+            faceA = {epa.faceA, -epa.depth};
+            faceB = {0, -FLT_MAX};
+        } else if (epa.converged && epa.faceB >= 0) {
+            faceB = {epa.faceB, -epa.depth};
+            faceA = bestBracketingFace(a, localB, direction);
+        } else {
+            faceA = bestBracketingFace(a, localB, direction);
+            faceB = bestBracketingFace(localB, a, -direction);
+        }
     }
 
-    FaceChoice faceA = bestBracketingFace(a, localB, direction);
-    FaceChoice faceB = bestBracketingFace(localB, a, -direction);
-
-    // The same preference for A's face as the separating-axis routine, so that both algorithms
-    // pick the same reference face when two faces are nearly equally good.
-    constexpr float kFlipTolerance = 0.1f * kLinearSlop;
-    bool flip = faceB.separation > faceA.separation + kFlipTolerance;
+    const bool flip = faceB.separation > faceA.separation + kFlipTolerance;
+    const float separation = flip ? faceB.separation : faceA.separation;
+    if (separation > limit) {
+        return Manifold{};
+    }
     int edgeA;
     int edgeB;
+    Vec2 referenceNormal; // from A to B
     if (flip) {
         edgeB = faceB.edge;
         edgeA = incidentEdge(a, localB.normals[edgeB]);
+        referenceNormal = -localB.normals[edgeB];
     } else {
         edgeA = faceA.edge;
         edgeB = incidentEdge(localB, a.normals[edgeA]);
+        referenceNormal = a.normals[edgeA];
     }
 
-    Manifold manifold = detail::clipPolygons(a, localB, edgeA, edgeB, flip, margin);
-    manifold.normal = rotate(xfA.q, manifold.normal);
-    for (int i = 0; i < manifold.pointCount; ++i) {
-        ManifoldPoint& mp = manifold.points[i];
-        Vec2 offset = rotate(xfA.q, mp.point);
-        mp.anchorA = offset;
-        mp.anchorB = offset + (xfA.p - xfB.p);
-        mp.point = offset + xfA.p;
+    if (separated && separation > kSeparatedCores && dot(direction, referenceNormal) < kFaceCosine) {
+        // Separated at a corner: the face separation underestimates the gap, so the closest
+        // points give a single point with the true distance and direction.
+        Manifold m;
+        ManifoldPoint& mp = m.points[0];
+        Vec2 surfaceA = gjk.pointA + a.radius * direction;
+        Vec2 surfaceB = gjk.pointB - b.radius * direction;
+        mp.point = 0.5f * (surfaceA + surfaceB);
+        mp.separation = gjk.distance - radius;
+        mp.id = makeFeatureId(closestVertex(gjk.simplex, true), closestVertex(gjk.simplex, false));
+        m.normal = direction;
+        m.pointCount = 1;
+        return detail::localToWorld(m, xfA, xfB);
     }
-    return manifold;
+
+    Manifold m = detail::clipPolygons(a, localB, edgeA, edgeB, flip, margin);
+    return detail::localToWorld(m, xfA, xfB);
 }
 
 } // namespace e2d::physics

@@ -11,9 +11,9 @@ namespace {
 
 // Feature code for "the side of a capsule" in capsule ids; vertices are 0 and 1.
 constexpr int kCapsuleSide = 2;
-// How far from perpendicular (sine) the closest-point direction may be to a capsule's axis
-// for a face contact with up to two points.
-constexpr float kCapsuleFaceSine = 0.01f;
+// Closest points offset along a capsule's axis by no more than this (metres) make a side
+// contact with up to two points, for the reason given at detail::kFaceOffset.
+constexpr float kCapsuleFaceOffset = detail::kFaceOffset;
 
 // One point between two round features: cores at pA and pB (A's frame) `distance` apart along
 // unit `normal`, radii rA and rB.
@@ -122,9 +122,10 @@ Manifold collideCapsules(const Capsule& a, const Transform& xfA, const Capsule& 
         return collidePolygons(detail::makeCapsulePolygon(a.center1, a.center2, rA), xfA,
                                detail::makeCapsulePolygon(b.center1, b.center2, rB), xfB, margin);
     }
-    const Vec2 w = (sd.closest2 - sd.closest1) / dist;
+    const Vec2 delta = sd.closest2 - sd.closest1;
+    const Vec2 w = delta / dist;
 
-    // When the closest-point direction is perpendicular to one axis, the contact is on that
+    // When the closest points are level along one axis, the contact is on that
     // capsule's side (parallel or resting capsules): clip the other axis to it for up to two
     // points. Otherwise it is an end-to-end contact with one point.
     Manifold m;
@@ -132,7 +133,7 @@ Manifold collideCapsules(const Capsule& a, const Transform& xfA, const Capsule& 
     const float lenB = distance(q1, q2);
     const Vec2 uA = lenA > 0.0f ? (p2 - p1) / lenA : Vec2{0.0f, 0.0f};
     const Vec2 uB = lenB > 0.0f ? (q2 - q1) / lenB : Vec2{0.0f, 0.0f};
-    if (lenA > 0.0f && std::fabs(dot(w, uA)) <= kCapsuleFaceSine) {
+    if (lenA > 0.0f && std::fabs(dot(delta, uA)) <= kCapsuleFaceOffset) {
         Vec2 n = leftPerp(uA);
         n = dot(n, w) < 0.0f ? -n : n;
         int ids[2] = {makeFeatureId(kCapsuleSide, 0), makeFeatureId(kCapsuleSide, 1)};
@@ -140,7 +141,7 @@ Manifold collideCapsules(const Capsule& a, const Transform& xfA, const Capsule& 
             return detail::localToWorld(m, xfA, xfB);
         }
     }
-    if (lenB > 0.0f && std::fabs(dot(w, uB)) <= kCapsuleFaceSine) {
+    if (lenB > 0.0f && std::fabs(dot(delta, uB)) <= kCapsuleFaceOffset) {
         Vec2 n = leftPerp(uB);
         n = dot(n, w) > 0.0f ? -n : n; // from B towards A
         int ids[2] = {makeFeatureId(0, kCapsuleSide), makeFeatureId(1, kCapsuleSide)};

@@ -10,23 +10,18 @@
 namespace e2d::physics {
 namespace {
 
-// B's separation from A may beat A's by this much before B's face becomes the reference: an
-// absolute bias (metres) so that nearly equal faces do not flip-flop from one step to the next
-// and change the feature ids.
-constexpr float kFlipTolerance = 0.1f * kLinearSlop;
-// Cores farther apart than this are "separated": their closest features decide the contact.
-constexpr float kSeparatedCores = 0.1f * kLinearSlop;
-// The closest-point direction counts as the reference face's normal above this cosine
-// (about 2.6 degrees); otherwise the contact is a single vertex contact.
-constexpr float kFaceCosine = 0.999f;
+using detail::kFaceOffset;
+using detail::kFlipTolerance;
+using detail::kSeparatedCores;
 
 struct EdgeSeparation {
     int edge = 0;
     float separation = -FLT_MAX;
 };
 
-// The edge of poly1 whose normal separates poly2 the most (the least penetration).
-EdgeSeparation findMaxSeparation(const Polygon& poly1, const Polygon& poly2) {
+// The edge of poly1 whose normal separates poly2 the most (the least penetration). Stops at
+// the first edge that separates them by more than `limit`: the pair has no contact then.
+EdgeSeparation findMaxSeparation(const Polygon& poly1, const Polygon& poly2, float limit) {
     EdgeSeparation best;
     for (int i = 0; i < poly1.count; ++i) {
         const Vec2 n = poly1.normals[i];
@@ -39,6 +34,9 @@ EdgeSeparation findMaxSeparation(const Polygon& poly1, const Polygon& poly2) {
         if (si > best.separation) {
             best.separation = si;
             best.edge = i;
+            if (si > limit) {
+                break;
+            }
         }
     }
     return best;
@@ -69,11 +67,11 @@ Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& 
 
     const float radius = a.radius + b.radius;
     const float limit = margin + radius;
-    const EdgeSeparation sepA = findMaxSeparation(localA, localB);
+    const EdgeSeparation sepA = findMaxSeparation(localA, localB, limit);
     if (sepA.separation > limit) {
         return Manifold{};
     }
-    const EdgeSeparation sepB = findMaxSeparation(localB, localA);
+    const EdgeSeparation sepB = findMaxSeparation(localB, localA, limit);
     if (sepB.separation > limit) {
         return Manifold{};
     }
@@ -114,7 +112,7 @@ Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& 
         // distance >= separation > 0, so w is well defined.
         const float distance = std::sqrt(sd.distanceSquared);
         const Vec2 w = (sd.closest2 - sd.closest1) / distance;
-        if (dot(w, normal1) < kFaceCosine) {
+        if (std::fabs(cross(normal1, sd.closest2 - sd.closest1)) > kFaceOffset) {
             Vec2 c1 = sd.closest1 + poly1.radius * w;
             Vec2 c2 = sd.closest2 - poly2.radius * w;
             int feature1 = sd.fraction1 < 0.5f ? i11 : i12;

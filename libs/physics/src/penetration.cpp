@@ -76,14 +76,11 @@ Support supportOf(PointSet a, PointSet b, Vec2 direction) {
 }
 
 // The answer for a Minkowski difference with no area: any move along `axis` (unit) separates.
-EpaResult flatAnswer(const Simplex& simplex, Vec2 axis) {
+EpaResult flatAnswer(PointSet a, PointSet b, const Simplex& simplex, Vec2 axis) {
     EpaResult result;
-    Vec2 pointA{0.0f, 0.0f};
-    Vec2 pointB{0.0f, 0.0f};
-    for (int i = 0; i < simplex.count; ++i) {
-        pointA += simplex.v[i].a * simplex.v[i].wA;
-        pointB += simplex.v[i].a * simplex.v[i].wB;
-    }
+    Vec2 pointA;
+    Vec2 pointB;
+    witnessPoints(a, b, simplex, pointA, pointB);
     result.normal = axis;
     result.pointA = pointA;
     result.pointB = pointB;
@@ -96,6 +93,11 @@ EpaResult flatAnswer(const Simplex& simplex, Vec2 axis) {
 
 EpaResult runEpa(PointSet a, PointSet b, const Simplex& simplex) {
     Polytope poly;
+    if (simplex.count < 1 || simplex.count > 3) {
+        EpaResult invalid; // not a GJK simplex
+        invalid.converged = false;
+        return invalid;
+    }
     for (int i = 0; i < simplex.count; ++i) {
         poly.add(simplex.v[i].w, simplex.v[i].indexA, simplex.v[i].indexB);
     }
@@ -111,7 +113,7 @@ EpaResult runEpa(PointSet a, PointSet b, const Simplex& simplex) {
             }
         }
         if (poly.count == 1) {
-            return flatAnswer(simplex, Vec2{1.0f, 0.0f});
+            return flatAnswer(a, b, simplex, Vec2{1.0f, 0.0f});
         }
     }
     if (poly.count == 2) {
@@ -128,7 +130,7 @@ EpaResult runEpa(PointSet a, PointSet b, const Simplex& simplex) {
             }
         }
         if (!(bestArea > 1.0e-9f * length(e))) {
-            return flatAnswer(simplex, side);
+            return flatAnswer(a, b, simplex, side);
         }
         poly.add(best.w, best.a, best.b);
     }
@@ -195,6 +197,17 @@ EpaResult runEpa(PointSet a, PointSet b, const Simplex& simplex) {
     result.pointB = bI + t * (bJ - bI);
     result.depth = poly.distance[i];
     result.iterations = iteration;
+    // An edge of B - A joins two points that share A's point (an edge of B) or B's point (an
+    // edge of A, walked in the same counter-clockwise order since -A is A turned by pi).
+    int ia = poly.indexA[i];
+    int ja = poly.indexA[j];
+    int ib = poly.indexB[i];
+    int jb = poly.indexB[j];
+    if (ib == jb && ja == (ia + 1 == a.count ? 0 : ia + 1)) {
+        result.faceA = ia;
+    } else if (ia == ja && jb == (ib + 1 == b.count ? 0 : ib + 1)) {
+        result.faceB = ib;
+    }
     return result;
 }
 

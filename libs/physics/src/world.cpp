@@ -50,6 +50,9 @@ void validateBodyDef(const BodyDef& def) {
     check::requireFinite(fn, "def.angle", def.angle);
     check::requireFinite(fn, "def.linearVelocity", def.linearVelocity);
     check::requireFinite(fn, "def.angularVelocity", def.angularVelocity);
+    check::requireNonNegative(fn, "def.linearDamping", def.linearDamping);
+    check::requireNonNegative(fn, "def.angularDamping", def.angularDamping);
+    check::requireFinite(fn, "def.gravityScale", def.gravityScale);
 }
 
 void validateShapeDef(const ShapeDef& def) {
@@ -97,6 +100,7 @@ void World::Impl::createProxy(int shapeIndex) {
 void World::Impl::destroyProxy(int shapeIndex) {
     detail::Shape& s = shape(shapeIndex);
     if (s.proxyKey != kNullIndex) {
+        destroyContacts(shapeIndex);
         broadPhase.destroyProxy(s.proxyKey);
         s.proxyKey = kNullIndex;
     }
@@ -117,8 +121,10 @@ void World::Impl::destroyShapeAt(int shapeIndex) {
     --b.shapeCount;
     s.alive = false;
     s.generation = nextGeneration(s.generation);
+    int bodyIndex = s.body;
     s.body = s.prevShape = s.nextShape = kNullIndex;
     shapeIds.release(shapeIndex);
+    updateMass(bodyIndex);
 }
 
 bool World::Impl::shouldPair(int shapeA, int shapeB) const {
@@ -142,7 +148,9 @@ bool World::Impl::shouldPair(int shapeA, int shapeB) const {
 
 World::World(const WorldDef& def) {
     validateWorldDef(def);
+    validate(def.solver);
     impl_ = std::make_unique<Impl>();
+    impl_->sim.def = def.solver;
     impl_->gravity = def.gravity;
     impl_->collisionAlgorithm = def.collisionAlgorithm;
     impl_->speculativeDistance = def.speculativeDistance;
@@ -184,6 +192,7 @@ BodyId World::createBody(const BodyDef& def) {
     b.type = def.type;
     b.enabled = def.enabled;
     b.alive = true;
+    w.initMotion(index, def);
     return w.bodyId(index);
 }
 
@@ -216,6 +225,7 @@ void World::setTransform(BodyId id, Vec2 position, float angle) {
     check::requireFinite("setTransform", "angle", angle);
     detail::Body& b = w.body(index);
     b.transform = {position, Rot::fromAngle(angle)};
+    w.wakeBody(index);
     for (int s = b.headShape; s != kNullIndex; s = w.shape(s).nextShape) {
         detail::Shape& shape = w.shape(s);
         shape.aabb = computeAabb(shape.geometry, b.transform);
@@ -233,6 +243,9 @@ void World::setLinearVelocity(BodyId id, Vec2 velocity) {
     int index = impl_->require(id, "setLinearVelocity");
     check::requireFinite("setLinearVelocity", "velocity", velocity);
     impl_->body(index).linearVelocity = velocity;
+    if (velocity.x != 0.0f || velocity.y != 0.0f) {
+        impl_->wakeBody(index);
+    }
 }
 
 float World::angularVelocity(BodyId id) const {
@@ -243,6 +256,9 @@ void World::setAngularVelocity(BodyId id, float velocity) {
     int index = impl_->require(id, "setAngularVelocity");
     check::requireFinite("setAngularVelocity", "velocity", velocity);
     impl_->body(index).angularVelocity = velocity;
+    if (velocity != 0.0f) {
+        impl_->wakeBody(index);
+    }
 }
 
 std::uint64_t World::bodyUserData(BodyId id) const {
@@ -264,6 +280,9 @@ void World::setBodyEnabled(BodyId id, bool enabled) {
         return;
     }
     w.body(index).enabled = enabled;
+    if (enabled) {
+        w.wakeBody(index);
+    }
     for (int s = w.body(index).headShape; s != kNullIndex; s = w.shape(s).nextShape) {
         if (enabled) {
             w.createProxy(s);
@@ -320,6 +339,7 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ShapeGeomet
     if (b.enabled) {
         w.createProxy(index);
     }
+    w.updateMass(bodyIndex);
     return w.shapeId(index);
 }
 

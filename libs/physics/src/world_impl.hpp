@@ -5,6 +5,7 @@
 
 #include "broad_phase.hpp"
 #include "id_pool.hpp"
+#include "simulation.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -28,6 +29,8 @@ struct Body {
     BodyType type = BodyType::Static;
     bool enabled = true;
     bool alive = false;
+    // Dynamics (mass, damping, forces, sleep, contact list): owned by the step code.
+    BodyMotion motion{};
 };
 
 struct Shape {
@@ -102,6 +105,26 @@ struct World::Impl {
     void destroyShapeAt(int shapeIndex);
     // Whether two shapes may become a candidate pair (the broad phase's filter).
     [[nodiscard]] bool shouldPair(int shapeA, int shapeB) const;
+
+    // --- dynamics (world_step.cpp, contact.cpp, island.cpp, world_dynamics.cpp) ---
+
+    detail::Simulation sim;
+
+    // Sets the body's motion fields from the def (createBody()).
+    void initMotion(int bodyIndex, const BodyDef& def);
+    // Mass, centre and extents from the shapes' densities (after a shape is added or removed).
+    void updateMass(int bodyIndex);
+    // Ends the shape's contacts (end events, wakes the other bodies): before its proxy goes.
+    void destroyContacts(int shapeIndex);
+    // Wakes the body and every sleeping body touching it, transitively.
+    void wakeBody(int bodyIndex);
+    // Pairs -> contacts; narrow phase; begin/end/sensor events.
+    void updateContacts();
+    void createContact(int shapeA, int shapeB);
+    void destroyContact(int contactIndex, bool reportEnd);
+    void solve(float dt);
+    void solveContinuous(int simIndex);
+    void updateSleep(float dt);
 };
 
 } // namespace e2d::physics

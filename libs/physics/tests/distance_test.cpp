@@ -58,11 +58,14 @@ TEST(MakeProxy, RejectsBadInput) {
     std::vector<Vec2> one{{0.0f, 0.0f}};
     EXPECT_THAT([&] { (void)makeProxy(one, -1.0f); },
                 ::testing::ThrowsMessage<core::Error>(HasSubstr(
-                    "physics::makeProxy(): radius must be finite and >= 0, got -1")));
+                    "physics::makeProxy(): radius must be finite, >= 0 and within kHuge, got -1")));
     std::vector<Vec2> bad{{0.0f, 0.0f}, {NAN, 1.0f}};
     EXPECT_THAT([&] { (void)makeProxy(bad, 0.0f); },
                 ::testing::ThrowsMessage<core::Error>(
-                    HasSubstr("physics::makeProxy(): point 1 is not finite")));
+                    HasSubstr("physics::makeProxy(): point 1 must be finite and within kHuge, got (nan, 1)")));
+    std::vector<Vec2> far{{0.0f, 0.0f}, {1.0f, 2.0e5f}};
+    EXPECT_THAT([&] { (void)makeProxy(far, 0.0f); },
+                ::testing::ThrowsMessage<core::Error>(HasSubstr("got (1, 2e+05)")));
 }
 
 TEST(MakeProxy, FromShapes) {

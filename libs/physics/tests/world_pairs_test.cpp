@@ -66,6 +66,13 @@ TEST(WorldPairs, CandidatePairsMatchBruteForceOverManyFrames) {
         std::size_t totalPairs = 0;
         for (int frame = 0; frame < 25; ++frame) {
             scene.world.updatePairs();
+            scene.index();
+            // The fat boxes the brute force uses must hold the shapes where they are now.
+            for (const ShapeRecord& shape : scene.shapes) {
+                ASSERT_TRUE(contains(scene.world.shapeFatAabb(shape.id),
+                                     computeAabb(shape.geometry, scene.transformOf(shape))))
+                    << "seed " << seed << " frame " << frame;
+            }
             PairSet expected = bruteForcePairs(scene);
             ASSERT_EQ(candidatePairs(scene.world), expected) << "seed " << seed << " frame " << frame;
             totalPairs += expected.size();

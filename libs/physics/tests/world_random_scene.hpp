@@ -34,6 +34,7 @@ public:
         for (int i = 0; i < bodyCount; ++i) {
             addBody();
         }
+        index();
     }
 
     World world;
@@ -92,9 +93,19 @@ public:
         }
     }
 
+    /// Builds the body lookup bodyOf() and transformOf() use; call after adding or removing
+    /// bodies, before those two.
+    void index() {
+        table_.assign(bodies.size() + shapes.size() + 64, nullptr);
+        for (const BodyRecord& b : bodies) {
+            if (b.id.index1 >= table_.size()) {
+                table_.resize(b.id.index1 + 1, nullptr);
+            }
+            table_[b.id.index1] = &b;
+        }
+    }
     [[nodiscard]] const BodyRecord& bodyOf(const ShapeRecord& shape) const {
-        return *std::find_if(bodies.begin(), bodies.end(),
-                             [&](const BodyRecord& b) { return b.id == shape.body; });
+        return *table_.at(shape.body.index1);
     }
     [[nodiscard]] Transform transformOf(const ShapeRecord& shape) const {
         const BodyRecord& body = bodyOf(shape);
@@ -122,6 +133,7 @@ public:
     [[nodiscard]] float extent() const { return extent_; }
 
 private:
+    std::vector<const BodyRecord*> table_; // by BodyId::index1
     Random random_;
     float extent_;
 };

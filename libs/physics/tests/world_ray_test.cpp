@@ -26,7 +26,7 @@ ShapeId addShape(World& world, BodyType type, Vec2 position, float angle,
 
 // A unit box (half-extents 1) at (5, 0) on a static body and a circle of radius 1 at (10, 0.5)
 // on a dynamic one; the ray runs along the x axis from the origin to (20, 0).
-struct RayScene : ::testing::Test {
+struct WorldRayScene : ::testing::Test {
     World world;
     ShapeId box = addShape(world, BodyType::Static, {5.0f, 0.0f}, 0.0f, makeBox(1.0f, 1.0f));
     ShapeId circle =
@@ -37,7 +37,7 @@ struct RayScene : ::testing::Test {
     float half = std::sqrt(0.75f);
 };
 
-TEST_F(RayScene, ClosestHitIsTheBoxFrontFace) {
+TEST_F(WorldRayScene, ClosestHitIsTheBoxFrontFace) {
     std::optional<RayResult> hit = world.castRayClosest(origin, translation);
     ASSERT_TRUE(hit.has_value());
     EXPECT_EQ(hit->shape, box);
@@ -47,7 +47,7 @@ TEST_F(RayScene, ClosestHitIsTheBoxFrontFace) {
     EXPECT_FALSE(hit->exit);
 }
 
-TEST_F(RayScene, ClosestHitAcrossTreesIsTheNearestOne) {
+TEST_F(WorldRayScene, ClosestHitAcrossTreesIsTheNearestOne) {
     // From the right, the dynamic circle comes first even though the static tree is cast first.
     std::optional<RayResult> hit = world.castRayClosest({20.0f, 0.0f}, {-20.0f, 0.0f});
     ASSERT_TRUE(hit.has_value());
@@ -58,7 +58,7 @@ TEST_F(RayScene, ClosestHitAcrossTreesIsTheNearestOne) {
     expectVec(hit->normal, {half, -0.5f});
 }
 
-TEST_F(RayScene, AllHitsAreSortedByFraction) {
+TEST_F(WorldRayScene, AllHitsAreSortedByFraction) {
     std::vector<RayResult> hits = world.castRayAll(origin, translation);
     ASSERT_EQ(hits.size(), 2u);
     EXPECT_EQ(hits[0].shape, box);
@@ -69,7 +69,7 @@ TEST_F(RayScene, AllHitsAreSortedByFraction) {
     expectVec(hits[1].normal, {-half, -0.5f});
 }
 
-TEST_F(RayScene, BackFacesAddTheExitPoints) {
+TEST_F(WorldRayScene, BackFacesAddTheExitPoints) {
     QueryFilter filter;
     filter.ignoreBackFaces = false;
     std::vector<RayResult> hits = world.castRayAll(origin, translation, filter);
@@ -89,7 +89,7 @@ TEST_F(RayScene, BackFacesAddTheExitPoints) {
     expectVec(hits[3].normal, {half, -0.5f});
 }
 
-TEST_F(RayScene, RayStartingInsideSeesOnlyTheExitWithBackFaces) {
+TEST_F(WorldRayScene, RayStartingInsideSeesOnlyTheExitWithBackFaces) {
     Vec2 inside{5.5f, 0.0f};
     std::optional<RayResult> hit = world.castRayClosest(inside, translation);
     ASSERT_TRUE(hit.has_value());
@@ -104,7 +104,7 @@ TEST_F(RayScene, RayStartingInsideSeesOnlyTheExitWithBackFaces) {
     expectVec(hit->normal, {1.0f, 0.0f});
 }
 
-TEST_F(RayScene, ARayEndingInsideAShapeHasNoExitThere) {
+TEST_F(WorldRayScene, ARayEndingInsideAShapeHasNoExitThere) {
     QueryFilter filter;
     filter.ignoreBackFaces = false;
     std::vector<RayResult> hits = world.castRayAll(origin, {5.0f, 0.0f}, filter);
@@ -114,7 +114,7 @@ TEST_F(RayScene, ARayEndingInsideAShapeHasNoExitThere) {
     EXPECT_NEAR(hits[0].fraction, 4.0f / 5.0f, kTol);
 }
 
-TEST_F(RayScene, MaskFilterHidesShapesBothWays) {
+TEST_F(WorldRayScene, MaskFilterHidesShapesBothWays) {
     Filter boxFilter;
     boxFilter.categoryBits = 0x2;
     world.setShapeFilter(box, boxFilter);
@@ -135,7 +135,7 @@ TEST_F(RayScene, MaskFilterHidesShapesBothWays) {
     EXPECT_EQ(world.castRayAll(origin, translation, everything).size(), 2u);
 }
 
-TEST_F(RayScene, RayCastShapeLooksAtOneShapeOnly) {
+TEST_F(WorldRayScene, RayCastShapeLooksAtOneShapeOnly) {
     std::optional<RayResult> hit = world.rayCastShape(circle, origin, translation);
     ASSERT_TRUE(hit.has_value());
     EXPECT_EQ(hit->shape, circle);
@@ -147,7 +147,7 @@ TEST_F(RayScene, RayCastShapeLooksAtOneShapeOnly) {
     expectVec(hit->point, {6.0f, 0.0f});
 }
 
-TEST_F(RayScene, RayPassesDisabledBodiesAndMovedShapes) {
+TEST_F(WorldRayScene, RayPassesDisabledBodiesAndMovedShapes) {
     world.setBodyEnabled(world.shapeBody(box), false);
     std::optional<RayResult> hit = world.castRayClosest(origin, translation);
     ASSERT_TRUE(hit.has_value());

@@ -36,8 +36,8 @@ struct ShapeProxy {
     float radius = 0.0f;                            ///< rounding radius, metres, >= 0
 };
 
-/// A proxy of the given points (1..kMaxPolygonVertices, finite; duplicates are allowed) and
-/// radius (finite, >= 0). Throws core::Error naming the bad count or value.
+/// A proxy of the given points (1..kMaxPolygonVertices, finite and within kHuge; duplicates
+/// are allowed) and radius (finite, 0..kHuge). Throws core::Error naming the bad count or value.
 ShapeProxy makeProxy(std::span<const Vec2> points, float radius);
 /// Proxies of the shapes, in their local frame (a circle is one point, a capsule or segment two).
 ShapeProxy makeProxy(const Polygon& polygon);

@@ -84,6 +84,9 @@ struct CastOutput {
 /// Convex hull of `points`, welding points closer than kLinearSlop. Throws core::Error naming
 /// the problem: fewer than 3 distinct points, all points collinear (zero area), a non-finite
 /// coordinate, or more than kMaxPolygonVertices points on the hull.
+/// Points within kLinearSlop of the line through their hull neighbours are dropped too. Any
+/// winding in, counter-clockwise out. Welding is quadratic in the number of points: meant for
+/// the handful of points of a shape, not for large clouds.
 Hull computeHull(std::span<const Vec2> points);
 
 /// A polygon from any point cloud (its convex hull), rounded by `radius` (>= 0). Throws core::Error.
@@ -97,7 +100,9 @@ Polygon makeOffsetBox(float hx, float hy, Vec2 center, float angle);
 /// A box whose corners are rounded by `radius`; the outer half-extents are hx + radius, hy + radius.
 Polygon makeRoundedBox(float hx, float hy, float radius);
 
-/// Mass properties at `density` (kg/m^2, >= 0). Segments have none.
+/// Mass properties at `density` (kg/m^2, >= 0). Segments have none. Exact for every shape,
+/// rounded polygons included (core + edge strips + corner sectors). Throws core::Error for a
+/// negative or non-finite density.
 MassData computeMass(const Circle& shape, float density);
 MassData computeMass(const Capsule& shape, float density);
 MassData computeMass(const Polygon& shape, float density);
@@ -118,6 +123,9 @@ bool testPoint(const Polygon& shape, Vec2 localPoint);
 bool testPoint(const ShapeGeometry& shape, Vec2 localPoint);
 
 /// Ray casts in the shape's local frame. A ray starting inside a solid shape does not hit it.
+/// Segments are two-sided. Rounded polygons and capsules are cast exactly (offset faces and
+/// corner arcs). On a hit, `normal` is the outward surface normal, facing the ray; `iterations`
+/// is 0 (no iterative method is used).
 CastOutput rayCast(const RayCastInput& input, const Circle& shape);
 CastOutput rayCast(const RayCastInput& input, const Capsule& shape);
 CastOutput rayCast(const RayCastInput& input, const Segment& shape);
@@ -125,7 +133,11 @@ CastOutput rayCast(const RayCastInput& input, const Polygon& shape);
 CastOutput rayCast(const RayCastInput& input, const ShapeGeometry& shape);
 
 /// Throws core::Error unless every number in the shape is finite and sizes are valid.
-/// `function` names the caller in the message.
+/// `function` names the caller in the message. Coordinates and radii must be within kHuge;
+/// circle and capsule radii > 0, polygon radius >= 0; polygons 3 to kMaxPolygonVertices
+/// vertices, strictly convex, counter-clockwise, with unit normals. A capsule (or segment)
+/// whose two points are closer than kLinearSlop is rejected, not turned into a circle: its
+/// axis would be undefined, and a Circle says what is meant.
 void validate(const ShapeGeometry& shape, const char* function);
 
 } // namespace e2d::physics

@@ -39,7 +39,13 @@ constexpr std::uint16_t makeFeatureId(int a, int b) {
 }
 
 /// Pair routines. Points farther apart than `margin` (metres, >= 0: the speculative distance)
-/// are not reported; pointCount == 0 means no contact within the margin.
+/// are not reported; pointCount == 0 means no contact within the margin. The shapes are not
+/// validated (this is the hot path): pass shapes that validate() accepts.
+///
+/// Polygon-capsule, segment-polygon and overlapping capsule axes go through collidePolygons()
+/// with the capsule or segment as a 2-vertex polygon (rounded by the capsule's radius); a
+/// segment is a capsule of radius 0 for the circle and capsule routines. Circle pairs report
+/// id 0; capsule pairs use 0/1 for an end and 2 for the side; polygon pairs use vertex indices.
 Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b, const Transform& xfB,
                         float margin = kSpeculativeDistance);
 Manifold collideCapsuleAndCircle(const Capsule& a, const Transform& xfA, const Circle& b,

@@ -2,17 +2,20 @@
 #pragma once
 
 #include <e2d/physics/constants.hpp>
+#include <e2d/physics/events.hpp>
 #include <e2d/physics/function_ref.hpp>
 #include <e2d/physics/geometry.hpp>
 #include <e2d/physics/id.hpp>
 #include <e2d/physics/manifold.hpp>
 #include <e2d/physics/math.hpp>
 #include <e2d/physics/query.hpp>
+#include <e2d/physics/solver_def.hpp>
 #include <e2d/physics/types.hpp>
 
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 /// The physics world: bodies, the shapes attached to them, the broad phase that pairs them,
@@ -32,6 +35,12 @@ struct WorldDef {
     int bodyCapacity = 0;
     /// Shapes to reserve room for, >= 0. Default 0 (grow on demand).
     int shapeCapacity = 0;
+
+    // --- dynamics (World::step) ---
+
+    /// Solver mode, sub-steps, contact softness, restitution threshold, speed cap, sleeping,
+    /// continuous collision and material mixing. Defaults: see SolverDef.
+    SolverDef solver{};
 };
 
 /// How a body is created. World::createBody() validates every field.
@@ -42,7 +51,7 @@ struct BodyDef {
     Vec2 position{0.0f, 0.0f};
     /// Rotation, radians counter-clockwise, finite. Default 0.
     float angle = 0.0f;
-    /// Velocity of the body origin, m/s, finite. Default (0, 0).
+    /// Velocity of the centre of mass, m/s, finite. Default (0, 0).
     Vec2 linearVelocity{0.0f, 0.0f};
     /// Angular velocity, radians/s counter-clockwise, finite. Default 0.
     float angularVelocity = 0.0f;
@@ -51,6 +60,28 @@ struct BodyDef {
     /// A disabled body's shapes are not in the broad phase: no pairs, no query hits.
     /// Default true.
     bool enabled = true;
+
+    // --- dynamics (World::step) ---
+
+    /// Linear damping coefficient, 1/s, finite, >= 0. Default 0.
+    float linearDamping = 0.0f;
+    /// Angular damping coefficient, 1/s, finite, >= 0. Default 0.
+    float angularDamping = 0.0f;
+    /// Multiplies the world's gravity for this body, finite. Default 1.
+    float gravityScale = 1.0f;
+    /// The body never rotates (infinite rotational inertia). Default false.
+    bool fixedRotation = false;
+    /// The centre of mass never moves along world x (the seed's freeze X). Default false.
+    bool lockX = false;
+    /// The centre of mass never moves along world y (the seed's freeze Y). Default false.
+    bool lockY = false;
+    /// A fast dynamic body: continuous collision against static shapes every step, not only
+    /// when it moves far. Default false.
+    bool isBullet = false;
+    /// Whether the body may sleep. Default true.
+    bool enableSleep = true;
+    /// Whether the body starts awake. Default true.
+    bool isAwake = true;
 };
 
 /// How a shape is created. World::createShape() validates every field.
@@ -113,8 +144,9 @@ public:
     /// Teleports the body: position (metres, finite, within kHuge) and angle (radians, finite).
     /// Its shapes' broad-phase boxes follow (pairs update at the next updatePairs()).
     void setTransform(BodyId id, Vec2 position, float angle);
+    /// Velocity of the centre of mass, m/s.
     [[nodiscard]] Vec2 linearVelocity(BodyId id) const;
-    /// m/s, finite.
+    /// m/s, finite. Wakes the body when non-zero.
     void setLinearVelocity(BodyId id, Vec2 velocity);
     [[nodiscard]] float angularVelocity(BodyId id) const;
     /// radians/s, finite.
@@ -213,6 +245,81 @@ public:
     [[nodiscard]] std::optional<RayResult> castShape(const ShapeGeometry& geometry,
                                                      const Transform& transform, Vec2 translation,
                                                      const QueryFilter& filter = {}) const;
+
+    // --- dynamics (world_step.cpp, world_dynamics.cpp) ---
+
+    /// Advances the world by `timeStep` seconds (finite, >= 0; 0 updates contacts and events
+    /// only): pairs, contacts, narrow phase, solver, continuous collision, sleeping, events.
+    /// Call it at a fixed rate (e.g. 1/60 s) for stable results.
+    void step(float timeStep);
+    [[nodiscard]] const SolverDef& solverDef() const;
+
+    /// Mass (kg), local centre of mass (metres) and rotational inertia about it (kg*m^2).
+    [[nodiscard]] MassData massData(BodyId id) const;
+    /// Overrides the mass the shapes give (dynamic bodies only; mass finite > 0, inertia
+    /// finite >= 0, centre finite). Adding or removing a shape recomputes it from densities.
+    void setMassData(BodyId id, const MassData& massData);
+    /// The centre of mass in world coordinates, metres.
+    [[nodiscard]] Vec2 worldCenterOfMass(BodyId id) const;
+
+    [[nodiscard]] float linearDamping(BodyId id) const;
+    /// 1/s, finite, >= 0.
+    void setLinearDamping(BodyId id, float damping);
+    [[nodiscard]] float angularDamping(BodyId id) const;
+    /// 1/s, finite, >= 0.
+    void setAngularDamping(BodyId id, float damping);
+    [[nodiscard]] float gravityScale(BodyId id) const;
+    /// Finite.
+    void setGravityScale(BodyId id, float scale);
+    [[nodiscard]] bool isFixedRotation(BodyId id) const;
+    void setFixedRotation(BodyId id, bool fixed);
+    /// Per-axis position locks of the centre of mass (world x and y).
+    void setPositionLocks(BodyId id, bool lockX, bool lockY);
+    [[nodiscard]] bool isLockedX(BodyId id) const;
+    [[nodiscard]] bool isLockedY(BodyId id) const;
+    [[nodiscard]] bool isBullet(BodyId id) const;
+    void setBullet(BodyId id, bool bullet);
+
+    /// Force (newtons, finite) at a world point (metres, finite), applied during the next step
+    /// (forces are cleared after each step). Wakes the body if `wake`. Ignored by non-dynamic
+    /// bodies and by sleeping ones not woken.
+    void applyForce(BodyId id, Vec2 force, Vec2 point, bool wake = true);
+    /// Force at the centre of mass, newtons, finite.
+    void applyForceToCenter(BodyId id, Vec2 force, bool wake = true);
+    /// Torque, N*m, finite.
+    void applyTorque(BodyId id, float torque, bool wake = true);
+    /// Impulse (N*s, finite) at a world point: changes the velocity at once.
+    void applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 point, bool wake = true);
+    /// Impulse at the centre of mass, N*s, finite.
+    void applyLinearImpulseToCenter(BodyId id, Vec2 impulse, bool wake = true);
+    /// Angular impulse, N*m*s, finite.
+    void applyAngularImpulse(BodyId id, float impulse, bool wake = true);
+
+    /// Whether the body is awake. Static bodies are never awake.
+    [[nodiscard]] bool isAwake(BodyId id) const;
+    /// Wakes the body (and everything it touches), or puts its island to sleep.
+    void setAwake(BodyId id, bool awake);
+    [[nodiscard]] bool isSleepEnabled(BodyId id) const;
+    /// A body that may not sleep keeps its island awake.
+    void setSleepEnabled(BodyId id, bool enabled);
+    /// Number of awake dynamic and kinematic bodies.
+    [[nodiscard]] int awakeBodyCount() const;
+
+    /// Events of the last step (see events.hpp), valid until the next step.
+    [[nodiscard]] std::span<const ContactBeginTouchEvent> contactBeginEvents() const;
+    [[nodiscard]] std::span<const ContactEndTouchEvent> contactEndEvents() const;
+    [[nodiscard]] std::span<const SensorBeginTouchEvent> sensorBeginEvents() const;
+    [[nodiscard]] std::span<const SensorEndTouchEvent> sensorEndEvents() const;
+    [[nodiscard]] std::span<const ContactHitEvent> hitEvents() const;
+    /// Bodies the last step disabled because their state became non-finite (NaN or infinite
+    /// position or velocity); the rest of the world went on.
+    [[nodiscard]] std::span<const BodyId> nonFiniteBodies() const;
+
+    /// Number of contacts (pairs of shapes whose fat boxes overlap), touching or not.
+    [[nodiscard]] int contactCount() const;
+    /// Calls `callback` for each touching solid contact (manifold with points), in a fixed
+    /// order.
+    void forEachTouchingContact(FunctionRef<void(const ContactData&)> callback) const;
 
 private:
     struct Impl;

@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/physics/geometry.hpp>
+#include <e2d/physics/math.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace e2d::physics {
+
+namespace detail {
+
+/// A LIFO stack of node indices that lives on the call stack while it holds at most `N` entries
+/// and spills into a std::vector past that, so tree traversals allocate nothing for trees of
+/// sane height (a traversal holds at most about height + 1 entries).
+template <int N>
+class TreeStack {
+public:
+    void push(int value) {
+        if (count_ < N) {
+            fixed_[count_++] = value;
+        } else {
+            overflow_.push_back(value);
+        }
+    }
+    int pop() {
+        if (!overflow_.empty()) {
+            int value = overflow_.back();
+            overflow_.pop_back();
+            return value;
+        }
+        return fixed_[--count_];
+    }
+    [[nodiscard]] bool empty() const { return count_ == 0 && overflow_.empty(); }
+
+private:
+    int fixed_[N];
+    int count_ = 0;
+    std::vector<int> overflow_;
+};
+
+} // namespace detail
+
+/// A dynamic bounding-volume hierarchy of axis-aligned boxes ("proxies"), for fast overlap
+/// queries and ray casts over objects that are created, moved and destroyed all the time.
+///
+/// Leaves hold the boxes the user gives; internal nodes hold the union of their children's
+/// boxes and categories. New leaves are placed by the surface-area heuristic (in 2D the
+/// perimeter is the cost metric) and tree rotations keep the hierarchy shallow and tight.
+/// All nodes live in one contiguous array with a free list; a proxy id is the index of its
+/// leaf and stays valid until destroyProxy(). The tree stores boxes as given: fattening them
+/// (so that small motions need no update) is the caller's business, as the broad phase does.
+///
+/// A tree is a plain value: copyable, movable, no shared state. It is not thread-safe to modify
+/// while another thread queries it; concurrent const queries are fine.
+class DynamicTree {
+public:
+    /// The null proxy id.
+    static constexpr int kNullProxy = -1;
+    /// Category bits that match every mask.
+    static constexpr std::uint64_t kAllBits = ~std::uint64_t{0};
+
+    DynamicTree();
+
+    /// Adds a proxy for `aabb` (finite, lower <= upper, metres) with collision category
+    /// `categoryBits` and an opaque `userData`, and returns its id (>= 0). Throws core::Error on a
+    /// non-finite or inverted box.
+    int createProxy(const Aabb& aabb, std::uint64_t categoryBits, std::uint64_t userData);
+
+    /// Removes the proxy. Its id may be reused by a later createProxy(). Throws core::Error if
+    /// `proxyId` is not a live proxy.
+    void destroyProxy(int proxyId);
+
+    /// Gives the proxy a new box and reinserts it (the tree stays tight). Throws core::Error on a
+    /// bad id or box; the tree is unchanged then.
+    void moveProxy(int proxyId, const Aabb& aabb);
+
+    /// Gives the proxy a new box without reinserting it: its ancestors grow in place to contain
+    /// the box, and never shrink. Cheaper than moveProxy() for a box that grew a little, but the
+    /// tree gets looser; moveProxy() or rebuild() tightens it again. Throws like moveProxy().
+    void enlargeProxy(int proxyId, const Aabb& aabb);
+
+    /// The box of a proxy, as last given. Throws core::Error on a bad id.
+    [[nodiscard]] const Aabb& aabb(int proxyId) const;
+    /// The user data of a proxy. Throws core::Error on a bad id.
+    [[nodiscard]] std::uint64_t userData(int proxyId) const;
+    /// The category bits of a proxy. Throws core::Error on a bad id.
+    [[nodiscard]] std::uint64_t categoryBits(int proxyId) const;
+    /// Whether `proxyId` names a live proxy.
+    [[nodiscard]] bool isProxy(int proxyId) const;
+
+    /// Calls `callback(int proxyId, std::uint64_t userData)` for every proxy whose box overlaps
+    /// `box` (touching counts) and whose category bits share a bit with `maskBits`. The callback
+    /// returns bool: false stops the query (a callback returning void never stops it). The
+    /// callback must not modify the tree. Order is the tree's, not the ids'. Throws core::Error if
+    /// `box` is not finite. Allocates nothing unless the tree is more than 128 levels deep.
+    template <class F>
+    void query(const Aabb& box, std::uint64_t maskBits, F&& callback) const;
+
+    /// Casts the ray `input` (world space: from origin to origin + maxFraction * translation)
+    /// through the tree and calls
+    /// `float callback(const RayCastInput& clipped, int proxyId, std::uint64_t userData)` for
+    /// every proxy (matching `maskBits`) whose box the current ray segment may cross. `clipped`
+    /// is the input with maxFraction lowered to the closest hit reported so far; the callback
+    /// does the exact test against its object and returns:
+    ///   - 0: stop the cast now;
+    ///   - a fraction f with 0 < f < clipped.maxFraction: clip the ray to f (closest-hit casts
+    ///     return the hit fraction);
+    ///   - clipped.maxFraction or more: keep going unclipped (all-hits casts);
+    ///   - a negative value, e.g. -1: ignore this proxy (filtered out) and keep going.
+    /// The callback must not modify the tree. Throws core::Error if any number in `input` is not
+    /// finite or maxFraction < 0.
+    template <class F>
+    void rayCast(const RayCastInput& input, std::uint64_t maskBits, F&& callback) const;
+
+    /// Number of live proxies.
+    [[nodiscard]] int proxyCount() const { return proxyCount_; }
+    /// Height of the root (a single leaf has height 0; an empty tree reports 0).
+    [[nodiscard]] int height() const;
+    /// Sum of the perimeters of the internal nodes divided by the perimeter of the root: a
+    /// measure of tree quality (lower is better; 0 for trees with fewer than two proxies).
+    [[nodiscard]] float areaRatio() const;
+
+    /// Rebuilds the whole hierarchy top-down with a binned surface-area heuristic. Proxy ids,
+    /// boxes and user data are unchanged; typically lowers areaRatio(), e.g. after a level load
+    /// or many enlargeProxy() calls. Allocates temporary arrays.
+    void rebuild();
+
+    /// Removes every proxy. Keeps the node storage.
+    void clear();
+
+    /// Checks the whole structure: parent/child links, free list, leaf count, heights, that every
+    /// internal box contains its children's and that internal categories are the union of the
+    /// children's. For tests and debugging: O(nodes).
+    [[nodiscard]] bool validate() const;
+
+private:
+    struct Node {
+        Aabb aabb;                  // leaf: as given; internal: union of the children
+        std::uint64_t categoryBits; // internal: union of the children's
+        std::uint64_t userData;     // leaves only
+        int parent;                 // free nodes: next free node
+        int child1;                 // kNullProxy for leaves
+        int child2;
+        int height; // leaf 0, free -1
+
+        [[nodiscard]] bool isLeaf() const { return child1 == kNullProxy; }
+    };
+
+    int allocateNode();
+    void freeNode(int index);
+    void insertLeaf(int leaf);
+    void removeLeaf(int leaf);
+    [[nodiscard]] int findBestSibling(const Aabb& box) const;
+    void refit(int index);
+    void rotate(int index);
+    void checkProxy(int proxyId, const char* function) const;
+
+    static bool isValidBox(const Aabb& box) {
+        return std::isfinite(box.lower.x) && std::isfinite(box.lower.y) &&
+               std::isfinite(box.upper.x) && std::isfinite(box.upper.y);
+    }
+    [[noreturn]] static void throwBadQueryBox(const Aabb& box);
+    [[noreturn]] static void throwBadRay(const RayCastInput& input);
+
+    std::vector<Node> nodes_;
+    int root_ = kNullProxy;
+    int freeList_ = kNullProxy;
+    int proxyCount_ = 0;
+};
+
+template <class F>
+void DynamicTree::query(const Aabb& box, std::uint64_t maskBits, F&& callback) const {
+    if (!isValidBox(box)) {
+        throwBadQueryBox(box);
+    }
+    if (root_ == kNullProxy) {
+        return;
+    }
+    detail::TreeStack<128> stack;
+    stack.push(root_);
+    while (!stack.empty()) {
+        const int index = stack.pop();
+        const Node& node = nodes_[static_cast<std::size_t>(index)];
+        if ((node.categoryBits & maskBits) == 0 || !overlaps(node.aabb, box)) {
+            continue;
+        }
+        if (node.isLeaf()) {
+            if constexpr (std::is_void_v<std::invoke_result_t<F&, int, std::uint64_t>>) {
+                callback(index, node.userData);
+            } else {
+                if (!callback(index, node.userData)) {
+                    return;
+                }
+            }
+        } else {
+            stack.push(node.child2);
+            stack.push(node.child1);
+        }
+    }
+}
+
+template <class F>
+void DynamicTree::rayCast(const RayCastInput& input, std::uint64_t maskBits, F&& callback) const {
+    if (!isFinite(input.origin) || !isFinite(input.translation) ||
+        !std::isfinite(input.maxFraction) || input.maxFraction < 0.0f) {
+        throwBadRay(input);
+    }
+    if (root_ == kNullProxy) {
+        return;
+    }
+    const Vec2 p1 = input.origin;
+    const Vec2 d = input.translation;
+    // Unit normal of the ray: a box lies off the ray's line when its centre is farther from the
+    // line than its extent projected on this normal.
+    const Vec2 n = normalize(leftPerp(d));
+    const Vec2 absN{std::fabs(n.x), std::fabs(n.y)};
+
+    float maxFraction = input.maxFraction;
+    Vec2 p2 = p1 + maxFraction * d;
+    Aabb segment{{std::fmin(p1.x, p2.x), std::fmin(p1.y, p2.y)},
+                 {std::fmax(p1.x, p2.x), std::fmax(p1.y, p2.y)}};
+
+    detail::TreeStack<128> stack;
+    stack.push(root_);
+    while (!stack.empty()) {
+        const int index = stack.pop();
+        const Node& node = nodes_[static_cast<std::size_t>(index)];
+        if ((node.categoryBits & maskBits) == 0 || !overlaps(node.aabb, segment)) {
+            continue;
+        }
+        const Vec2 c = 0.5f * (node.aabb.lower + node.aabb.upper);
+        const Vec2 h = 0.5f * (node.aabb.upper - node.aabb.lower);
+        if (std::fabs(dot(n, p1 - c)) - dot(absN, h) > 0.0f) {
+            continue;
+        }
+        if (node.isLeaf()) {
+            const RayCastInput clipped{input.origin, input.translation, maxFraction};
+            const float value = callback(clipped, index, node.userData);
+            if (value == 0.0f) {
+                return;
+            }
+            if (value > 0.0f && value < maxFraction) {
+                maxFraction = value;
+                p2 = p1 + maxFraction * d;
+                segment = {{std::fmin(p1.x, p2.x), std::fmin(p1.y, p2.y)},
+                           {std::fmax(p1.x, p2.x), std::fmax(p1.y, p2.y)}};
+            }
+        } else {
+            stack.push(node.child2);
+            stack.push(node.child1);
+        }
+    }
+}
+
+} // namespace e2d::physics

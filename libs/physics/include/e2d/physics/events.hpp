@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/physics/id.hpp>
+#include <e2d/physics/manifold.hpp>
+#include <e2d/physics/math.hpp>
+
+/// What happened during World::step(), read after it as arrays. Each array is valid until the
+/// next step() (or until a shape or body it names is destroyed: check with World::isValid()).
+namespace e2d::physics {
+
+/// Two solid shapes started touching (their manifold gained points). shapeA < shapeB by slot.
+struct ContactBeginTouchEvent {
+    ShapeId shapeA;
+    ShapeId shapeB;
+    Manifold manifold; ///< the first manifold; normal from A to B
+};
+
+/// Two solid shapes stopped touching, or one was destroyed, disabled or re-filtered while
+/// touching (then its id may already be stale).
+struct ContactEndTouchEvent {
+    ShapeId shapeA;
+    ShapeId shapeB;
+};
+
+/// A shape entered a sensor.
+struct SensorBeginTouchEvent {
+    ShapeId sensorShape;
+    ShapeId visitorShape;
+};
+
+/// A shape left a sensor (or one of them went away).
+struct SensorEndTouchEvent {
+    ShapeId sensorShape;
+    ShapeId visitorShape;
+};
+
+/// Two shapes hit each other faster than SolverDef::hitEventThreshold.
+struct ContactHitEvent {
+    ShapeId shapeA;
+    ShapeId shapeB;
+    Vec2 point{0.0f, 0.0f};  ///< world point of the fastest approaching manifold point, metres
+    Vec2 normal{0.0f, 0.0f}; ///< from A to B
+    float approachSpeed = 0.0f; ///< normal speed before the hit, m/s, > 0
+};
+
+/// A touching contact as World::forEachContact() shows it.
+struct ContactData {
+    ShapeId shapeA;
+    ShapeId shapeB;
+    const Manifold* manifold = nullptr; ///< valid during the callback
+};
+
+} // namespace e2d::physics

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+
+/// How World::step() solves contacts: the solver mode and its tuning. Part of WorldDef.
+namespace e2d::physics {
+
+/// Which contact solver World::step() runs.
+enum class SolverMode : std::uint8_t {
+    /// Sub-stepped soft constraints (default): per sub-step integrate, warm start, solve with a
+    /// soft bias, integrate positions, relax without bias; restitution after the sub-steps.
+    SoftStep,
+    /// The Box2D 2.4 recipe: velocity iterations with warm starting, restitution bias, then
+    /// non-linear Gauss-Seidel position iterations.
+    Classic,
+};
+
+/// How two shapes' friction or restitution coefficients combine into the contact's.
+enum class MixingRule : std::uint8_t {
+    GeometricMean, ///< sqrt(a * b)
+    Average,       ///< (a + b) / 2
+    Min,           ///< min(a, b)
+    Max,           ///< max(a, b)
+    Multiply,      ///< a * b
+};
+
+/// The solver's settings. World's constructor validates every field and names the bad one.
+struct SolverDef {
+    /// Default SolverMode::SoftStep.
+    SolverMode mode = SolverMode::SoftStep;
+    /// Soft step: sub-steps per step, in [1, 64]. Default 4.
+    int subSteps = 4;
+    /// Soft step: extra relax iterations per sub-step (after the first), in [0, 64]. Default 0.
+    int relaxIterations = 0;
+    /// Classic: velocity iterations per step, in [1, 256]. Default 8.
+    int velocityIterations = 8;
+    /// Classic: position iterations per step, in [0, 256]. Default 3.
+    int positionIterations = 3;
+    /// Soft step: stiffness of contacts, hertz, finite, > 0. Capped at a quarter of the
+    /// sub-step rate; contacts against static bodies use twice this. Default 30.
+    float contactHertz = 30.0f;
+    /// Soft step: damping ratio of contacts, finite, >= 0 (1 is critical). Default 10.
+    float contactDampingRatio = 10.0f;
+    /// Soft step: the fastest overlapping shapes are pushed apart, m/s, finite, > 0. Default 3.
+    float contactPushMaxSpeed = 3.0f;
+    /// Contacts approaching faster than this bounce (restitution), m/s, finite, >= 0.
+    /// Default 1.
+    float restitutionThreshold = 1.0f;
+    /// Linear speeds are clamped to this, m/s, finite, > 0. Default 400 (4 m/s per metre of
+    /// e2d's length unit, times 100: the solver stays stable well past game speeds).
+    float maxLinearSpeed = 400.0f;
+    /// Contacts whose approach speed is at least this emit a hit event, m/s, finite, >= 0.
+    /// Default 1.
+    float hitEventThreshold = 1.0f;
+    /// A body slower than this (at its centre of mass) may sleep, m/s, finite, >= 0.
+    /// Default 0.05.
+    float linearSleepTolerance = 0.05f;
+    /// A body turning slower than this may sleep, radians/s, finite, >= 0. Default 2 degrees/s
+    /// (0.0349).
+    float angularSleepTolerance = 0.0349066f;
+    /// Seconds a whole island must stay slow before it sleeps, finite, > 0. Default 0.5.
+    float timeToSleep = 0.5f;
+    /// Whether bodies may sleep at all. Default true.
+    bool enableSleep = true;
+    /// Whether fast bodies and bullets use time of impact against static shapes. Default true.
+    bool enableContinuous = true;
+    /// How shape frictions combine. Default MixingRule::GeometricMean.
+    MixingRule frictionMixing = MixingRule::GeometricMean;
+    /// How shape restitutions combine. Default MixingRule::Max.
+    MixingRule restitutionMixing = MixingRule::Max;
+};
+
+/// Throws core::Error naming the first invalid field, as "physics::World::World(): def.solver.x
+/// must be ..., got v".
+void validate(const SolverDef& def);
+
+/// Combines two coefficients by `rule`.
+float mix(MixingRule rule, float a, float b);
+
+} // namespace e2d::physics

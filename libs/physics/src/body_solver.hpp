@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/physics/solver_def.hpp>
+
+#include "contact_solver.hpp"
+#include "solver_body.hpp"
+
+#include <span>
+
+// The step's stages over the awake bodies' arrays and the contact constraints: the soft-step
+// sub-step loop and the classic iterations. The world builds the arrays, this runs them.
+namespace e2d::physics::detail {
+
+struct SolverStep {
+    std::span<BodySim> sims;
+    std::span<BodyState> states; // same order as sims
+    std::span<ContactConstraint> constraints;
+    Vec2 gravity{0.0f, 0.0f};
+    float dt = 0.0f;
+    const SolverDef* def = nullptr;
+};
+
+// Gravity, forces and damping over h seconds; speeds clamped to maxLinearSpeed.
+void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, Vec2 gravity,
+                         float h, float maxLinearSpeed);
+// Accumulates each body's motion over h seconds into its deltaPosition/deltaRotation.
+void integratePositions(std::span<BodyState> states, float h);
+
+// Runs the velocity and position stages of one step; positions end in the states' deltas.
+void solveSoftStep(const SolverStep& step);
+void solveClassic(const SolverStep& step);
+
+// Moves each sim by its state's deltas (centre, rotation, origin). A body that became
+// non-finite is left so; the world checks and disables it.
+void finalizePositions(std::span<BodySim> sims, std::span<const BodyState> states);
+
+// Contact softness at the sub-step rate: contactHertz capped at a quarter of the sub-step
+// rate; against static bodies twice as stiff.
+struct ContactSoftness {
+    Softness dynamic;
+    Softness vsStatic;
+};
+ContactSoftness makeContactSoftness(const SolverDef& def, float dt);
+
+} // namespace e2d::physics::detail

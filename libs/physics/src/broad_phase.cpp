@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: MIT
+#include "broad_phase.hpp"
+
+#include <e2d/core/error.hpp>
+
+#include <string>
+
+namespace e2d::physics::detail {
+
+namespace {
+
+Aabb fatten(const Aabb& box, BodyType type) {
+    // Static proxies never move by themselves: a margin would only create extra pairs.
+    if (type == BodyType::Static) {
+        return box;
+    }
+    const Vec2 margin{kAabbMargin, kAabbMargin};
+    return {box.lower - margin, box.upper + margin};
+}
+
+} // namespace
+
+void BroadPhase::checkKey(int proxyKey, const char* function) const {
+    if (proxyKey < 0 || static_cast<std::size_t>(proxyKey) >= infos_.size() ||
+        (proxyKey & 3) >= kBodyTypeCount ||
+        !trees_[treeIndex(proxyKey)].isProxy(proxyIdOf(proxyKey))) {
+        throw core::Error(std::string("physics::BroadPhase::") + function +
+                          "(): no proxy with key " + std::to_string(proxyKey));
+    }
+}
+
+int BroadPhase::createProxy(const Aabb& aabb, BodyType type, std::uint64_t categoryBits,
+                            std::uint64_t userData) {
+    if (userData > 0xFFFFFFFFu) {
+        throw core::Error("physics::BroadPhase::createProxy(): userData must fit in 32 bits, got " +
+                          std::to_string(userData));
+    }
+    const int typeIndex = static_cast<int>(type);
+    if (typeIndex < 0 || typeIndex >= kBodyTypeCount) {
+        throw core::Error("physics::BroadPhase::createProxy(): bad body type " +
+                          std::to_string(typeIndex));
+    }
+    // Reserve first so that nothing can throw after the tree changed.
+    moveBuffer_.reserve(moveBuffer_.size() + 1);
+    DynamicTree& tree = trees_[static_cast<std::size_t>(typeIndex)];
+    const int proxyId = tree.createProxy(fatten(aabb, type), categoryBits, userData);
+    const int key = makeProxyKey(proxyId, type);
+    if (static_cast<std::size_t>(key) >= infos_.size()) {
+        infos_.resize(static_cast<std::size_t>(key) + 1 + infos_.size() / 2);
+    }
+    info(key) = ProxyInfo{};
+    bufferMove(key);
+    return key;
+}
+
+void BroadPhase::destroyProxy(int proxyKey) {
+    checkKey(proxyKey, "destroyProxy");
+    ProxyInfo& pi = info(proxyKey);
+    if (pi.moveIndex >= 0) {
+        moveBuffer_[static_cast<std::size_t>(pi.moveIndex)] = kNullProxyKey;
+        pi.moveIndex = -1;
+    }
+    if (pi.pairCount > 0) {
+        scratchKeys_.clear();
+        pairs_.forEach([&](const PairEntry& e) {
+            if (e.proxyKeyA == proxyKey || e.proxyKeyB == proxyKey) {
+                scratchKeys_.push_back(e.key);
+            }
+        });
+        for (const std::uint64_t key : scratchKeys_) {
+            erasePair(key);
+        }
+    }
+    trees_[treeIndex(proxyKey)].destroyProxy(proxyIdOf(proxyKey));
+    info(proxyKey) = ProxyInfo{};
+}
+
+bool BroadPhase::moveProxy(int proxyKey, const Aabb& aabb) {
+    checkKey(proxyKey, "moveProxy");
+    DynamicTree& tree = trees_[treeIndex(proxyKey)];
+    const int proxyId = proxyIdOf(proxyKey);
+    if (contains(tree.aabb(proxyId), aabb)) {
+        return false;
+    }
+    moveBuffer_.reserve(moveBuffer_.size() + 1);
+    tree.moveProxy(proxyId, fatten(aabb, proxyTypeOf(proxyKey)));
+    bufferMove(proxyKey);
+    return true;
+}
+
+void BroadPhase::bufferMove(int proxyKey) {
+    checkKey(proxyKey, "bufferMove");
+    ProxyInfo& pi = info(proxyKey);
+    if (pi.moveIndex >= 0) {
+        return;
+    }
+    pi.moveIndex = static_cast<int>(moveBuffer_.size());
+    moveBuffer_.push_back(proxyKey);
+}
+
+int BroadPhase::proxyCount() const {
+    int count = 0;
+    for (const DynamicTree& tree : trees_) {
+        count += tree.proxyCount();
+    }
+    return count;
+}
+
+void BroadPhase::erasePair(std::uint64_t key) {
+    PairEntry removed;
+    if (pairs_.erase(key, &removed)) {
+        --info(removed.proxyKeyA).pairCount;
+        --info(removed.proxyKeyB).pairCount;
+    }
+}
+
+bool BroadPhase::removePair(std::uint64_t userDataA, std::uint64_t userDataB) {
+    if (userDataA == userDataB) {
+        return false;
+    }
+    const std::uint64_t key = makePairKey(userDataA, userDataB);
+    if (!pairs_.contains(key)) {
+        return false;
+    }
+    erasePair(key);
+    return true;
+}
+
+int BroadPhase::prunePairs() {
+    scratchKeys_.clear();
+    pairs_.forEach([&](const PairEntry& e) {
+        if (!overlaps(fatAabb(e.proxyKeyA), fatAabb(e.proxyKeyB))) {
+            scratchKeys_.push_back(e.key);
+        }
+    });
+    for (const std::uint64_t key : scratchKeys_) {
+        erasePair(key);
+    }
+    return static_cast<int>(scratchKeys_.size());
+}
+
+} // namespace e2d::physics::detail

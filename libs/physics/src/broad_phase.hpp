@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "pair_set.hpp"
+
+#include <e2d/physics/constants.hpp>
+#include <e2d/physics/dynamic_tree.hpp>
+#include <e2d/physics/types.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace e2d::physics::detail {
+
+/// A proxy key packs a tree proxy id and the tree it lives in (one tree per BodyType).
+inline constexpr int kNullProxyKey = -1;
+constexpr int makeProxyKey(int proxyId, BodyType type) {
+    return (proxyId << 2) | static_cast<int>(type);
+}
+constexpr int proxyIdOf(int proxyKey) { return proxyKey >> 2; }
+constexpr BodyType proxyTypeOf(int proxyKey) { return static_cast<BodyType>(proxyKey & 3); }
+
+/// A pair of proxies whose fat boxes overlap. userDataA < userDataB (shape indices).
+struct ProxyPair {
+    std::uint64_t userDataA = 0;
+    std::uint64_t userDataB = 0;
+    int proxyKeyA = kNullProxyKey; ///< proxy of userDataA
+    int proxyKeyB = kNullProxyKey; ///< proxy of userDataB
+};
+
+/// The World's broad phase: one DynamicTree per BodyType, fat boxes, a move buffer and a
+/// persistent set of pairs found incrementally.
+///
+/// The caller gives tight boxes; moving proxies are stored fattened by kAabbMargin (static ones
+/// are not fattened), and a move only touches the tree when the tight box leaves the fat one.
+/// updatePairs() queries the trees for the proxies moved since the last update only: dynamic
+/// against every tree, kinematic and static against the dynamic tree, so static-static (and
+/// kinematic-kinematic, kinematic-static) pairs are never looked for. Pairs stay in the set
+/// until the caller removes them (removePair(), prunePairs()) or a proxy is destroyed.
+///
+/// userData is the shape index and must fit in 32 bits; two proxies never share a userData.
+class BroadPhase {
+public:
+    /// Adds a proxy for the tight box `aabb` and buffers it as moved, so the next
+    /// updatePairs() finds its pairs. Returns its proxy key. Throws core::Error on a bad box.
+    int createProxy(const Aabb& aabb, BodyType type, std::uint64_t categoryBits,
+                    std::uint64_t userData);
+    /// Removes the proxy and every pair it is part of. Cheap when it has no pairs left (the
+    /// World usually removes them first); otherwise one pass over the pair table.
+    void destroyProxy(int proxyKey);
+    /// Reports the new tight box. Returns true (and buffers a move) when it left the fat box,
+    /// which is then recomputed around it.
+    bool moveProxy(int proxyKey, const Aabb& aabb);
+    /// Buffers the proxy as moved so the next update looks for its pairs again (e.g. after its
+    /// filter changed or its body woke up).
+    void bufferMove(int proxyKey);
+
+    [[nodiscard]] const Aabb& fatAabb(int proxyKey) const {
+        return trees_[treeIndex(proxyKey)].aabb(proxyIdOf(proxyKey));
+    }
+    [[nodiscard]] std::uint64_t userData(int proxyKey) const {
+        return trees_[treeIndex(proxyKey)].userData(proxyIdOf(proxyKey));
+    }
+    [[nodiscard]] const DynamicTree& tree(BodyType type) const {
+        return trees_[static_cast<std::size_t>(type)];
+    }
+    [[nodiscard]] int proxyCount() const;
+
+    /// Finds the pairs of moved proxies that are not in the set yet, asks
+    /// `bool shouldPair(std::uint64_t userDataA, std::uint64_t userDataB)` (A < B) about each,
+    /// adds the accepted ones to the set and lists them in newPairs(), sorted by (A, B).
+    /// Clears the move buffer. With nothing moved it queries nothing.
+    template <class ShouldPair>
+    void updatePairs(ShouldPair&& shouldPair);
+
+    /// The pairs the last updatePairs() added, sorted; valid until the next updatePairs().
+    [[nodiscard]] std::span<const ProxyPair> newPairs() const { return newPairs_; }
+
+    /// Removes a pair; returns false if it was not in the set.
+    bool removePair(std::uint64_t userDataA, std::uint64_t userDataB);
+    [[nodiscard]] bool containsPair(std::uint64_t userDataA, std::uint64_t userDataB) const {
+        return userDataA != userDataB && pairs_.contains(makePairKey(userDataA, userDataB));
+    }
+    [[nodiscard]] int pairCount() const { return pairs_.size(); }
+    /// Calls f(const ProxyPair&) for every pair, in table order (deterministic). f must not
+    /// modify the broad phase.
+    template <class F>
+    void forEachPair(F&& f) const {
+        pairs_.forEach([&](const PairEntry& e) {
+            f(ProxyPair{pairKeyLow(e.key), pairKeyHigh(e.key), e.proxyKeyA, e.proxyKeyB});
+        });
+    }
+    /// Removes every pair whose fat boxes no longer overlap; returns how many.
+    int prunePairs();
+
+    /// Proxies waiting in the move buffer (destroyed ones included until the next update).
+    [[nodiscard]] int moveCount() const { return static_cast<int>(moveBuffer_.size()); }
+    /// Tree queries the last updatePairs() ran (a debug counter).
+    [[nodiscard]] int lastQueryCount() const { return queryCount_; }
+
+private:
+    struct ProxyInfo {
+        int pairCount = 0;
+        int moveIndex = -1; // index in moveBuffer_, -1 when not buffered
+    };
+
+    static std::size_t treeIndex(int proxyKey) {
+        return static_cast<std::size_t>(proxyKey & 3);
+    }
+    ProxyInfo& info(int proxyKey) { return infos_[static_cast<std::size_t>(proxyKey)]; }
+    [[nodiscard]] bool isMoved(int proxyKey) const {
+        return infos_[static_cast<std::size_t>(proxyKey)].moveIndex >= 0;
+    }
+    void checkKey(int proxyKey, const char* function) const;
+    void erasePair(std::uint64_t key);
+
+    std::array<DynamicTree, kBodyTypeCount> trees_;
+    std::vector<ProxyInfo> infos_; // indexed by proxy key
+    std::vector<int> moveBuffer_;
+    std::vector<ProxyPair> newPairs_;
+    std::vector<std::uint64_t> scratchKeys_;
+    PairSet pairs_;
+    int queryCount_ = 0;
+};
+
+template <class ShouldPair>
+void BroadPhase::updatePairs(ShouldPair&& shouldPair) {
+    newPairs_.clear();
+    queryCount_ = 0;
+    for (const int key : moveBuffer_) {
+        if (key == kNullProxyKey) {
+            continue; // destroyed after it moved
+        }
+        const BodyType type = proxyTypeOf(key);
+        const DynamicTree& own = trees_[treeIndex(key)];
+        const Aabb box = own.aabb(proxyIdOf(key));
+        const std::uint64_t ud = own.userData(proxyIdOf(key));
+
+        auto queryTree = [&](BodyType otherType) {
+            ++queryCount_;
+            trees_[static_cast<std::size_t>(otherType)].query(
+                box, DynamicTree::kAllBits, [&](int otherId, std::uint64_t otherUd) {
+                    const int otherKey = makeProxyKey(otherId, otherType);
+                    // When both moved, the one with the lower key reports the pair (the queries
+                    // are symmetric: each one's query covers the other's tree).
+                    if (otherKey == key || (otherKey < key && isMoved(otherKey))) {
+                        return;
+                    }
+                    const std::uint64_t pairKey = makePairKey(ud, otherUd);
+                    if (pairs_.contains(pairKey)) {
+                        return;
+                    }
+                    const bool mineIsA = ud < otherUd;
+                    const std::uint64_t a = mineIsA ? ud : otherUd;
+                    const std::uint64_t b = mineIsA ? otherUd : ud;
+                    if (!shouldPair(a, b)) {
+                        return;
+                    }
+                    newPairs_.push_back(
+                        {a, b, mineIsA ? key : otherKey, mineIsA ? otherKey : key});
+                });
+        };
+        switch (type) {
+        case BodyType::Dynamic:
+            queryTree(BodyType::Dynamic);
+            queryTree(BodyType::Kinematic);
+            queryTree(BodyType::Static);
+            break;
+        case BodyType::Kinematic:
+        case BodyType::Static:
+            queryTree(BodyType::Dynamic);
+            break;
+        }
+    }
+    for (const int key : moveBuffer_) {
+        if (key != kNullProxyKey) {
+            info(key).moveIndex = -1;
+        }
+    }
+    moveBuffer_.clear();
+
+    // Query order depends on tree shape; sorted pairs (and insertion in that order) do not.
+    std::sort(newPairs_.begin(), newPairs_.end(), [](const ProxyPair& x, const ProxyPair& y) {
+        return x.userDataA < y.userDataA || (x.userDataA == y.userDataA && x.userDataB < y.userDataB);
+    });
+    for (const ProxyPair& p : newPairs_) {
+        pairs_.insert({makePairKey(p.userDataA, p.userDataB), p.proxyKeyA, p.proxyKeyB});
+        ++info(p.proxyKeyA).pairCount;
+        ++info(p.proxyKeyB).pairCount;
+    }
+}
+
+} // namespace e2d::physics::detail

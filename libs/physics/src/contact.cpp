@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: MIT
+// Contacts: created from new broad-phase pairs, destroyed when the fat boxes part or a shape
+// goes, updated by the narrow phase (carrying impulses by feature id) with begin/end and
+// sensor events.
+#include "world_impl.hpp"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace e2d::physics {
+
+using detail::kNullIndex;
+
+namespace {
+
+int sideOf(const detail::Contact& c, int bodyIndex) { return c.bodyA == bodyIndex ? 0 : 1; }
+
+} // namespace
+
+void World::Impl::createContact(int shapeA, int shapeB) {
+    detail::Simulation& s = sim;
+    int ci;
+    if (!s.freeContacts.empty()) {
+        ci = s.freeContacts.back();
+        s.freeContacts.pop_back();
+    } else {
+        ci = static_cast<int>(s.contacts.size());
+        s.contacts.emplace_back();
+    }
+    const detail::Shape& a = shape(shapeA);
+    const detail::Shape& b = shape(shapeB);
+    detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
+    c = detail::Contact{};
+    c.shapeA = shapeA;
+    c.shapeB = shapeB;
+    c.bodyA = a.body;
+    c.bodyB = b.body;
+    c.idA = shapeId(shapeA);
+    c.idB = shapeId(shapeB);
+    c.sensor = a.isSensor || b.isSensor;
+    c.friction = detail::mixFriction(s.def, a.friction, b.friction);
+    c.restitution = detail::mixRestitution(s.def, a.restitution, b.restitution);
+    c.rollingResistance = std::max(a.rollingResistance, b.rollingResistance);
+    c.alive = true;
+    for (int side = 0; side < 2; ++side) {
+        detail::BodyMotion& m = body(side == 0 ? c.bodyA : c.bodyB).motion;
+        c.prev[side] = kNullIndex;
+        c.next[side] = m.contactHead;
+        if (m.contactHead != kNullIndex) {
+            detail::Contact& head = s.contacts[static_cast<std::size_t>(m.contactHead)];
+            head.prev[sideOf(head, side == 0 ? c.bodyA : c.bodyB)] = ci;
+        }
+        m.contactHead = ci;
+    }
+    ++s.contactCount;
+}
+
+void World::Impl::destroyContact(int contactIndex, bool reportEnd) {
+    detail::Simulation& s = sim;
+    detail::Contact& c = s.contacts[static_cast<std::size_t>(contactIndex)];
+    if (reportEnd && c.touching) {
+        if (c.sensor) {
+            bool aIsSensor = shape(c.shapeA).isSensor;
+            s.sensorEndEvents.push_back(aIsSensor ? SensorEndTouchEvent{c.idA, c.idB}
+                                                  : SensorEndTouchEvent{c.idB, c.idA});
+        } else {
+            s.endEvents.push_back({c.idA, c.idB});
+        }
+    }
+    for (int side = 0; side < 2; ++side) {
+        int bodyIndex = side == 0 ? c.bodyA : c.bodyB;
+        if (c.prev[side] != kNullIndex) {
+            detail::Contact& p = s.contacts[static_cast<std::size_t>(c.prev[side])];
+            p.next[sideOf(p, bodyIndex)] = c.next[side];
+        } else {
+            body(bodyIndex).motion.contactHead = c.next[side];
+        }
+        if (c.next[side] != kNullIndex) {
+            detail::Contact& n = s.contacts[static_cast<std::size_t>(c.next[side])];
+            n.prev[sideOf(n, bodyIndex)] = c.prev[side];
+        }
+    }
+    c.alive = false;
+    s.freeContacts.push_back(contactIndex);
+    --s.contactCount;
+}
+
+void World::Impl::destroyContacts(int shapeIndex) {
+    int bodyIndex = shape(shapeIndex).body;
+    int ci = body(bodyIndex).motion.contactHead;
+    while (ci != kNullIndex) {
+        detail::Contact& c = sim.contacts[static_cast<std::size_t>(ci)];
+        int next = c.next[sideOf(c, bodyIndex)];
+        if (c.shapeA == shapeIndex || c.shapeB == shapeIndex) {
+            int other = c.bodyA == bodyIndex ? c.bodyB : c.bodyA;
+            // Whatever rested on this shape must notice it is gone.
+            if (c.touching) {
+                wakeBody(other);
+            }
+            broadPhase.removePair(static_cast<std::uint64_t>(c.shapeA),
+                                  static_cast<std::uint64_t>(c.shapeB));
+            destroyContact(ci, true);
+        }
+        ci = next;
+    }
+}
+
+void World::Impl::updateContacts() {
+    detail::Simulation& s = sim;
+    broadPhase.updatePairs([this](std::uint64_t a, std::uint64_t b) {
+        return shouldPair(static_cast<int>(a), static_cast<int>(b));
+    });
+    for (const detail::ProxyPair& p : broadPhase.newPairs()) {
+        createContact(static_cast<int>(p.userDataA), static_cast<int>(p.userDataB));
+    }
+
+    int contactSlots = static_cast<int>(s.contacts.size());
+    for (int ci = 0; ci < contactSlots; ++ci) {
+        detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
+        if (!c.alive) {
+            continue;
+        }
+        const detail::Shape& sa = shape(c.shapeA);
+        const detail::Shape& sb = shape(c.shapeB);
+        if (!overlaps(broadPhase.fatAabb(sa.proxyKey), broadPhase.fatAabb(sb.proxyKey))) {
+            broadPhase.removePair(static_cast<std::uint64_t>(c.shapeA),
+                                  static_cast<std::uint64_t>(c.shapeB));
+            destroyContact(ci, true);
+            continue;
+        }
+        detail::Body& ba = body(c.bodyA);
+        detail::Body& bb = body(c.bodyB);
+        bool awakeA = ba.motion.awake;
+        bool awakeB = bb.motion.awake;
+        if (!awakeA && !awakeB) {
+            // Asleep (or asleep against static): nothing moved, the manifold still holds.
+            continue;
+        }
+        bool wasTouching = c.touching;
+        if (c.sensor) {
+            Manifold m = collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
+                                 collisionAlgorithm, 0.0f);
+            c.touching = m.pointCount > 0;
+            if (c.touching != wasTouching) {
+                bool aIsSensor = sa.isSensor;
+                ShapeId sensorId = aIsSensor ? c.idA : c.idB;
+                ShapeId visitorId = aIsSensor ? c.idB : c.idA;
+                if (c.touching) {
+                    s.sensorBeginEvents.push_back({sensorId, visitorId});
+                } else {
+                    s.sensorEndEvents.push_back({sensorId, visitorId});
+                }
+            }
+            continue;
+        }
+
+        Manifold old = c.manifold;
+        c.manifold = collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
+                             collisionAlgorithm, speculativeDistance);
+        Manifold& m = c.manifold;
+        for (int i = 0; i < m.pointCount; ++i) {
+            ManifoldPoint& mp = m.points[i];
+            mp.normalImpulse = 0.0f;
+            mp.tangentImpulse = 0.0f;
+            mp.persisted = false;
+            for (int j = 0; j < old.pointCount; ++j) {
+                if (old.points[j].id == mp.id) {
+                    mp.normalImpulse = old.points[j].normalImpulse;
+                    mp.tangentImpulse = old.points[j].tangentImpulse;
+                    mp.persisted = true;
+                    break;
+                }
+            }
+        }
+        c.touching = m.pointCount > 0;
+        if (c.touching && !wasTouching) {
+            s.beginEvents.push_back({c.idA, c.idB, m});
+        } else if (!c.touching && wasTouching) {
+            s.endEvents.push_back({c.idA, c.idB});
+        }
+        if (c.touching && awakeA != awakeB) {
+            // Something awake touches a sleeping island: it wakes (static bodies never do).
+            wakeBody(awakeA ? c.bodyB : c.bodyA);
+        }
+    }
+}
+
+} // namespace e2d::physics

@@ -1,0 +1,353 @@
+// SPDX-License-Identifier: MIT
+#include "contact_solver.hpp"
+
+#include <e2d/physics/constants.hpp>
+
+#include <algorithm>
+
+namespace e2d::physics::detail {
+
+namespace {
+
+// Component-wise product: per-axis inverse mass times an impulse.
+inline Vec2 scale(Vec2 invMass, Vec2 p) { return {invMass.x * p.x, invMass.y * p.y}; }
+
+inline float effectiveMass(Vec2 axis, Vec2 rA, Vec2 rB, const ContactConstraint& c) {
+    float rnA = cross(rA, axis);
+    float rnB = cross(rB, axis);
+    float k = c.invMassA.x * axis.x * axis.x + c.invMassA.y * axis.y * axis.y +
+              c.invMassB.x * axis.x * axis.x + c.invMassB.y * axis.y * axis.y +
+              c.invInertiaA * rnA * rnA + c.invInertiaB * rnB * rnB;
+    return k > 0.0f ? 1.0f / k : 0.0f;
+}
+
+// A static body has no state; its constraints read and write this zero one instead. Writes
+// are harmless: a static side has zero inverse mass, so nothing is ever added to it.
+struct StatePair {
+    BodyState* a;
+    BodyState* b;
+};
+
+inline StatePair statesOf(const ContactConstraint& c, std::span<BodyState> states,
+                          BodyState& dummyA, BodyState& dummyB) {
+    BodyState* a = c.indexA >= 0 ? &states[static_cast<std::size_t>(c.indexA)] : &dummyA;
+    BodyState* b = c.indexB >= 0 ? &states[static_cast<std::size_t>(c.indexB)] : &dummyB;
+    return {a, b};
+}
+
+} // namespace
+
+void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyView& a,
+                    const ContactBodyView& b, const ContactMaterial& material, Softness softness) {
+    c.indexA = a.stateIndex;
+    c.indexB = b.stateIndex;
+    c.normal = m.normal;
+    c.invMassA = a.invMass;
+    c.invMassB = b.invMass;
+    c.invInertiaA = a.invInertia;
+    c.invInertiaB = b.invInertia;
+    c.friction = material.friction;
+    c.restitution = material.restitution;
+    c.rollingResistance = material.rollingResistance;
+    c.rollingImpulse = 0.0f;
+    float kRoll = a.invInertia + b.invInertia;
+    c.rollingMass = kRoll > 0.0f ? 1.0f / kRoll : 0.0f;
+    c.softness = softness;
+    c.pointCount = m.pointCount;
+
+    Vec2 normal = m.normal;
+    Vec2 tangent = rightPerp(normal);
+    for (int i = 0; i < m.pointCount; ++i) {
+        const ManifoldPoint& mp = m.points[i];
+        ContactConstraintPoint& cp = c.points[i];
+        Vec2 rA = mp.anchorA - a.centerOffset;
+        Vec2 rB = mp.anchorB - b.centerOffset;
+        cp.anchorA = rA;
+        cp.anchorB = rB;
+        cp.baseSeparation = mp.separation - dot(rB - rA, normal);
+        cp.normalImpulse = mp.normalImpulse;
+        cp.tangentImpulse = mp.tangentImpulse;
+        cp.maxNormalImpulse = 0.0f;
+        cp.velocityBias = 0.0f;
+        cp.normalMass = effectiveMass(normal, rA, rB, c);
+        cp.tangentMass = effectiveMass(tangent, rA, rB, c);
+        Vec2 vrA = a.linearVelocity + cross(a.angularVelocity, rA);
+        Vec2 vrB = b.linearVelocity + cross(b.angularVelocity, rB);
+        cp.relativeVelocity = dot(normal, vrB - vrA);
+    }
+}
+
+void warmStartContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states) {
+    BodyState dummyA;
+    BodyState dummyB;
+    for (ContactConstraint& c : constraints) {
+        auto [sa, sb] = statesOf(c, states, dummyA, dummyB);
+        Vec2 vA = sa->linearVelocity;
+        float wA = sa->angularVelocity;
+        Vec2 vB = sb->linearVelocity;
+        float wB = sb->angularVelocity;
+        Vec2 normal = c.normal;
+        Vec2 tangent = rightPerp(normal);
+        for (int i = 0; i < c.pointCount; ++i) {
+            const ContactConstraintPoint& cp = c.points[i];
+            Vec2 p = cp.normalImpulse * normal + cp.tangentImpulse * tangent;
+            wA -= c.invInertiaA * cross(cp.anchorA, p);
+            vA -= scale(c.invMassA, p);
+            wB += c.invInertiaB * cross(cp.anchorB, p);
+            vB += scale(c.invMassB, p);
+        }
+        wA -= c.invInertiaA * c.rollingImpulse;
+        wB += c.invInertiaB * c.rollingImpulse;
+        sa->linearVelocity = vA;
+        sa->angularVelocity = wA;
+        sb->linearVelocity = vB;
+        sb->angularVelocity = wB;
+    }
+}
+
+void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states,
+                   float invH, bool useBias, float pushMaxSpeed) {
+    BodyState dummyA;
+    BodyState dummyB;
+    for (ContactConstraint& c : constraints) {
+        auto [sa, sb] = statesOf(c, states, dummyA, dummyB);
+        Vec2 vA = sa->linearVelocity;
+        float wA = sa->angularVelocity;
+        Vec2 vB = sb->linearVelocity;
+        float wB = sb->angularVelocity;
+        Vec2 dpA = sa->deltaPosition;
+        Rot qA = sa->deltaRotation;
+        Vec2 dpB = sb->deltaPosition;
+        Rot qB = sb->deltaRotation;
+        Vec2 normal = c.normal;
+        Vec2 tangent = rightPerp(normal);
+        Vec2 mA = c.invMassA;
+        Vec2 mB = c.invMassB;
+        float iA = c.invInertiaA;
+        float iB = c.invInertiaB;
+        float totalNormalImpulse = 0.0f;
+
+        for (int i = 0; i < c.pointCount; ++i) {
+            ContactConstraintPoint& cp = c.points[i];
+            Vec2 prA = rotate(qA, cp.anchorA);
+            Vec2 prB = rotate(qB, cp.anchorB);
+            float s = dot((dpB - dpA) + (prB - prA), normal) + cp.baseSeparation;
+            float bias = 0.0f;
+            float massScale = 1.0f;
+            float impulseScale = 0.0f;
+            if (s > 0.0f) {
+                // Speculative: let the gap close within this sub-step, no further.
+                bias = s * invH;
+            } else if (useBias) {
+                bias = std::max(c.softness.biasRate * s, -pushMaxSpeed);
+                massScale = c.softness.massScale;
+                impulseScale = c.softness.impulseScale;
+            }
+            Vec2 rA = cp.anchorA;
+            Vec2 rB = cp.anchorB;
+            Vec2 dv = (vB + cross(wB, rB)) - (vA + cross(wA, rA));
+            float vn = dot(dv, normal);
+            float impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
+            float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
+            impulse = newImpulse - cp.normalImpulse;
+            cp.normalImpulse = newImpulse;
+            cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, impulse);
+            totalNormalImpulse += newImpulse;
+            Vec2 p = impulse * normal;
+            vA -= scale(mA, p);
+            wA -= iA * cross(rA, p);
+            vB += scale(mB, p);
+            wB += iB * cross(rB, p);
+        }
+
+        for (int i = 0; i < c.pointCount; ++i) {
+            ContactConstraintPoint& cp = c.points[i];
+            Vec2 rA = cp.anchorA;
+            Vec2 rB = cp.anchorB;
+            Vec2 dv = (vB + cross(wB, rB)) - (vA + cross(wA, rA));
+            float vt = dot(dv, tangent);
+            float impulse = -cp.tangentMass * vt;
+            float maxFriction = c.friction * cp.normalImpulse;
+            float newImpulse = std::clamp(cp.tangentImpulse + impulse, -maxFriction, maxFriction);
+            impulse = newImpulse - cp.tangentImpulse;
+            cp.tangentImpulse = newImpulse;
+            Vec2 p = impulse * tangent;
+            vA -= scale(mA, p);
+            wA -= iA * cross(rA, p);
+            vB += scale(mB, p);
+            wB += iB * cross(rB, p);
+        }
+
+        if (c.rollingResistance > 0.0f) {
+            float maxLambda = c.rollingResistance * totalNormalImpulse;
+            float deltaLambda = -c.rollingMass * (wB - wA);
+            float lambda = c.rollingImpulse;
+            c.rollingImpulse = std::clamp(lambda + deltaLambda, -maxLambda, maxLambda);
+            deltaLambda = c.rollingImpulse - lambda;
+            wA -= iA * deltaLambda;
+            wB += iB * deltaLambda;
+        }
+
+        sa->linearVelocity = vA;
+        sa->angularVelocity = wA;
+        sb->linearVelocity = vB;
+        sb->angularVelocity = wB;
+    }
+}
+
+void applyRestitution(std::span<ContactConstraint> constraints, std::span<BodyState> states,
+                      float threshold) {
+    BodyState dummyA;
+    BodyState dummyB;
+    for (ContactConstraint& c : constraints) {
+        if (c.restitution == 0.0f) {
+            continue;
+        }
+        auto [sa, sb] = statesOf(c, states, dummyA, dummyB);
+        Vec2 vA = sa->linearVelocity;
+        float wA = sa->angularVelocity;
+        Vec2 vB = sb->linearVelocity;
+        float wB = sb->angularVelocity;
+        Vec2 normal = c.normal;
+        for (int i = 0; i < c.pointCount; ++i) {
+            ContactConstraintPoint& cp = c.points[i];
+            // Only points that were approaching fast and actually took load bounce.
+            if (cp.relativeVelocity > -threshold || cp.maxNormalImpulse == 0.0f ||
+                cp.velocityBias > 0.0f) {
+                continue;
+            }
+            Vec2 rA = cp.anchorA;
+            Vec2 rB = cp.anchorB;
+            Vec2 dv = (vB + cross(wB, rB)) - (vA + cross(wA, rA));
+            float vn = dot(dv, normal);
+            float impulse = -cp.normalMass * (vn + c.restitution * cp.relativeVelocity);
+            float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
+            impulse = newImpulse - cp.normalImpulse;
+            cp.normalImpulse = newImpulse;
+            cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, impulse);
+            Vec2 p = impulse * normal;
+            vA -= scale(c.invMassA, p);
+            wA -= c.invInertiaA * cross(rA, p);
+            vB += scale(c.invMassB, p);
+            wB += c.invInertiaB * cross(rB, p);
+        }
+        sa->linearVelocity = vA;
+        sa->angularVelocity = wA;
+        sb->linearVelocity = vB;
+        sb->angularVelocity = wB;
+    }
+}
+
+void prepareClassic(std::span<ContactConstraint> constraints, float restitutionThreshold) {
+    for (ContactConstraint& c : constraints) {
+        for (int i = 0; i < c.pointCount; ++i) {
+            ContactConstraintPoint& cp = c.points[i];
+            float s = dot(cp.anchorB - cp.anchorA, c.normal) + cp.baseSeparation;
+            if (s > 0.0f) {
+                // Speculative: velocityBias is set per solve from the gap; a bounce, if the gap
+                // closes this step, comes from applyRestitution() afterwards.
+                continue;
+            }
+            // Touching points bounce through velocityBias; applyRestitution() skips them.
+            if (cp.relativeVelocity < -restitutionThreshold) {
+                cp.velocityBias = -c.restitution * cp.relativeVelocity;
+            }
+        }
+    }
+}
+
+void solveVelocitiesClassic(std::span<ContactConstraint> constraints, std::span<BodyState> states,
+                            float invDt) {
+    BodyState dummyA;
+    BodyState dummyB;
+    for (ContactConstraint& c : constraints) {
+        auto [sa, sb] = statesOf(c, states, dummyA, dummyB);
+        Vec2 vA = sa->linearVelocity;
+        float wA = sa->angularVelocity;
+        Vec2 vB = sb->linearVelocity;
+        float wB = sb->angularVelocity;
+        Vec2 normal = c.normal;
+        Vec2 tangent = rightPerp(normal);
+        Vec2 mA = c.invMassA;
+        Vec2 mB = c.invMassB;
+        float iA = c.invInertiaA;
+        float iB = c.invInertiaB;
+
+        // Friction first, as Box2D 2.4 does: the normal impulse then has the last word.
+        for (int i = 0; i < c.pointCount; ++i) {
+            ContactConstraintPoint& cp = c.points[i];
+            Vec2 rA = cp.anchorA;
+            Vec2 rB = cp.anchorB;
+            Vec2 dv = (vB + cross(wB, rB)) - (vA + cross(wA, rA));
+            float impulse = -cp.tangentMass * dot(dv, tangent);
+            float maxFriction = c.friction * cp.normalImpulse;
+            float newImpulse = std::clamp(cp.tangentImpulse + impulse, -maxFriction, maxFriction);
+            impulse = newImpulse - cp.tangentImpulse;
+            cp.tangentImpulse = newImpulse;
+            Vec2 p = impulse * tangent;
+            vA -= scale(mA, p);
+            wA -= iA * cross(rA, p);
+            vB += scale(mB, p);
+            wB += iB * cross(rB, p);
+        }
+
+        for (int i = 0; i < c.pointCount; ++i) {
+            ContactConstraintPoint& cp = c.points[i];
+            Vec2 rA = cp.anchorA;
+            Vec2 rB = cp.anchorB;
+            float s = dot(rB - rA, normal) + cp.baseSeparation;
+            float target = s > 0.0f ? -s * invDt : cp.velocityBias;
+            Vec2 dv = (vB + cross(wB, rB)) - (vA + cross(wA, rA));
+            float vn = dot(dv, normal);
+            float impulse = -cp.normalMass * (vn - target);
+            float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
+            impulse = newImpulse - cp.normalImpulse;
+            cp.normalImpulse = newImpulse;
+            cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, impulse);
+            Vec2 p = impulse * normal;
+            vA -= scale(mA, p);
+            wA -= iA * cross(rA, p);
+            vB += scale(mB, p);
+            wB += iB * cross(rB, p);
+        }
+
+        sa->linearVelocity = vA;
+        sa->angularVelocity = wA;
+        sb->linearVelocity = vB;
+        sb->angularVelocity = wB;
+    }
+}
+
+float solvePositionsClassic(std::span<ContactConstraint> constraints,
+                            std::span<BodyState> states) {
+    constexpr float kBaumgarte = 0.2f;
+    constexpr float kMaxCorrection = 0.2f;
+    float minSeparation = 0.0f;
+    BodyState dummyA;
+    BodyState dummyB;
+    for (ContactConstraint& c : constraints) {
+        auto [sa, sb] = statesOf(c, states, dummyA, dummyB);
+        Vec2 normal = c.normal;
+        for (int i = 0; i < c.pointCount; ++i) {
+            const ContactConstraintPoint& cp = c.points[i];
+            Vec2 prA = rotate(sa->deltaRotation, cp.anchorA);
+            Vec2 prB = rotate(sb->deltaRotation, cp.anchorB);
+            float s = dot((sb->deltaPosition - sa->deltaPosition) + (prB - prA), normal) +
+                      cp.baseSeparation;
+            minSeparation = std::min(minSeparation, s);
+            float correction = std::clamp(kBaumgarte * (s + kLinearSlop), -kMaxCorrection, 0.0f);
+            float k = effectiveMass(normal, prA, prB, c);
+            float impulse = -correction * k;
+            Vec2 p = impulse * normal;
+            sa->deltaPosition -= scale(c.invMassA, p);
+            sa->deltaRotation = integrateRotation(sa->deltaRotation,
+                                                  -c.invInertiaA * cross(prA, p));
+            sb->deltaPosition += scale(c.invMassB, p);
+            sb->deltaRotation = integrateRotation(sb->deltaRotation,
+                                                  c.invInertiaB * cross(prB, p));
+        }
+    }
+    return minSeparation;
+}
+
+} // namespace e2d::physics::detail

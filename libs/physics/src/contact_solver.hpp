@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/physics/manifold.hpp>
+
+#include "solver_body.hpp"
+
+#include <span>
+
+// Contact constraints over plain arrays: the soft-step passes (warm start, solve, relax,
+// restitution) and the classic ones (velocity and position iterations). No world in sight,
+// so they are tested on hand-made manifolds.
+namespace e2d::physics::detail {
+
+struct ContactConstraintPoint {
+    // From each centre of mass at the start of the step, world axes.
+    Vec2 anchorA{0.0f, 0.0f};
+    Vec2 anchorB{0.0f, 0.0f};
+    // Separation minus dot(anchorB - anchorA, normal): adding the current anchor offset gives
+    // the current separation without running the narrow phase again.
+    float baseSeparation = 0.0f;
+    // Normal velocity before the step: what restitution reflects.
+    float relativeVelocity = 0.0f;
+    float normalImpulse = 0.0f;
+    float tangentImpulse = 0.0f;
+    // Largest normal impulse any pass applied this step (hit events, touch reporting).
+    float maxNormalImpulse = 0.0f;
+    float normalMass = 0.0f;
+    float tangentMass = 0.0f;
+    // Classic mode: target normal velocity from restitution.
+    float velocityBias = 0.0f;
+};
+
+struct ContactConstraint {
+    ContactConstraintPoint points[2];
+    Vec2 normal{0.0f, 0.0f};
+    Vec2 invMassA{0.0f, 0.0f};
+    Vec2 invMassB{0.0f, 0.0f};
+    float invInertiaA = 0.0f;
+    float invInertiaB = 0.0f;
+    float friction = 0.0f;
+    float restitution = 0.0f;
+    float rollingResistance = 0.0f;
+    float rollingImpulse = 0.0f;
+    float rollingMass = 0.0f;
+    Softness softness{};
+    int indexA = -1; // BodyState index, -1 for a static body
+    int indexB = -1;
+    int pointCount = 0;
+    int contactIndex = -1; // the world's contact, to store impulses back
+};
+
+// One side of a contact as prepare() needs it.
+struct ContactBodyView {
+    Vec2 centerOffset{0.0f, 0.0f}; // centre of mass minus origin, world axes
+    Vec2 linearVelocity{0.0f, 0.0f};
+    float angularVelocity = 0.0f;
+    Vec2 invMass{0.0f, 0.0f};
+    float invInertia = 0.0f;
+    int stateIndex = -1;
+};
+
+struct ContactMaterial {
+    float friction = 0.0f;
+    float restitution = 0.0f;
+    float rollingResistance = 0.0f;
+};
+
+// Fills `c` from the manifold (impulses warm-start from the manifold's stored ones).
+void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyView& a,
+                    const ContactBodyView& b, const ContactMaterial& material, Softness softness);
+
+// Soft step.
+void warmStartContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states);
+// useBias: push overlapping points apart with the soft bias (solve) or not (relax).
+// Speculative points (separation > 0) keep their bias either way.
+void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states,
+                   float invH, bool useBias, float pushMaxSpeed);
+void applyRestitution(std::span<ContactConstraint> constraints, std::span<BodyState> states,
+                      float threshold);
+
+// Classic. prepareClassic() sets the restitution targets from relativeVelocity.
+void prepareClassic(std::span<ContactConstraint> constraints, float restitutionThreshold);
+void solveVelocitiesClassic(std::span<ContactConstraint> constraints, std::span<BodyState> states,
+                            float invDt);
+// One non-linear Gauss-Seidel pass over the separations; moves deltaPosition/deltaRotation.
+// Returns the smallest separation seen.
+float solvePositionsClassic(std::span<ContactConstraint> constraints, std::span<BodyState> states);
+
+// The current separation of point `p` of `c` from the bodies' motion since the step began.
+inline float currentSeparation(const ContactConstraint& c, const ContactConstraintPoint& p,
+                               const BodyState& a, const BodyState& b) {
+    Vec2 prA = rotate(a.deltaRotation, p.anchorA);
+    Vec2 prB = rotate(b.deltaRotation, p.anchorB);
+    Vec2 d = (b.deltaPosition - a.deltaPosition) + (prB - prA);
+    return dot(d, c.normal) + p.baseSeparation;
+}
+
+} // namespace e2d::physics::detail

@@ -1,0 +1,691 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/physics/dynamic_tree.hpp>
+
+#include <e2d/core/error.hpp>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cstddef>
+#include <limits>
+#include <string>
+
+namespace e2d::physics {
+
+namespace {
+
+std::string formatFloat(float value) {
+    std::array<char, 32> buffer{};
+    auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    return std::string(buffer.data(), result.ptr);
+}
+
+std::string formatVec(Vec2 v) { return "(" + formatFloat(v.x) + ", " + formatFloat(v.y) + ")"; }
+
+std::string formatBox(const Aabb& box) {
+    return "lower " + formatVec(box.lower) + " upper " + formatVec(box.upper);
+}
+
+void checkBox(const Aabb& box, const char* function) {
+    const bool finite = isFinite(box.lower) && isFinite(box.upper);
+    if (!finite) {
+        throw core::Error(std::string("physics::DynamicTree::") + function +
+                          "(): aabb must be finite, got " + formatBox(box));
+    }
+    if (box.lower.x > box.upper.x || box.lower.y > box.upper.y) {
+        throw core::Error(std::string("physics::DynamicTree::") + function +
+                          "(): aabb must have lower <= upper, got " + formatBox(box));
+    }
+}
+
+Vec2 centerOf(const Aabb& box) { return 0.5f * (box.lower + box.upper); }
+
+// Largest height difference between siblings that rotations tolerate (see rotate()).
+constexpr int kMaxImbalance = 2;
+
+} // namespace
+
+DynamicTree::DynamicTree() = default;
+
+void DynamicTree::throwBadQueryBox(const Aabb& box) {
+    throw core::Error("physics::DynamicTree::query(): box must be finite, got " + formatBox(box));
+}
+
+void DynamicTree::throwBadRay(const RayCastInput& input) {
+    throw core::Error("physics::DynamicTree::rayCast(): ray must be finite with maxFraction >= 0, "
+                      "got origin " +
+                      formatVec(input.origin) + " translation " + formatVec(input.translation) +
+                      " maxFraction " + formatFloat(input.maxFraction));
+}
+
+void DynamicTree::checkProxy(int proxyId, const char* function) const {
+    if (!isProxy(proxyId)) {
+        throw core::Error(std::string("physics::DynamicTree::") + function +
+                          "(): no proxy with id " + std::to_string(proxyId));
+    }
+}
+
+bool DynamicTree::isProxy(int proxyId) const {
+    if (proxyId < 0 || static_cast<std::size_t>(proxyId) >= nodes_.size()) {
+        return false;
+    }
+    const Node& node = nodes_[static_cast<std::size_t>(proxyId)];
+    return node.height == 0;
+}
+
+int DynamicTree::allocateNode() {
+    if (freeList_ == kNullProxy) {
+        // Grow geometrically and thread the new nodes onto the free list in index order, so
+        // that ids are handed out 0, 1, 2... in a fresh tree.
+        const std::size_t oldSize = nodes_.size();
+        const std::size_t newSize = std::max<std::size_t>(16, 2 * oldSize);
+        if (newSize > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+            throw core::Error("physics::DynamicTree::createProxy(): too many nodes");
+        }
+        nodes_.resize(newSize);
+        for (std::size_t i = oldSize; i < newSize; ++i) {
+            Node& node = nodes_[i];
+            node = Node{};
+            node.parent = i + 1 < newSize ? static_cast<int>(i + 1) : kNullProxy;
+            node.child1 = kNullProxy;
+            node.child2 = kNullProxy;
+            node.height = -1;
+        }
+        freeList_ = static_cast<int>(oldSize);
+    }
+    const int index = freeList_;
+    Node& node = nodes_[static_cast<std::size_t>(index)];
+    freeList_ = node.parent;
+    node.parent = kNullProxy;
+    node.child1 = kNullProxy;
+    node.child2 = kNullProxy;
+    node.height = 0;
+    node.categoryBits = 0;
+    node.userData = 0;
+    return index;
+}
+
+void DynamicTree::freeNode(int index) {
+    Node& node = nodes_[static_cast<std::size_t>(index)];
+    node.parent = freeList_;
+    node.child1 = kNullProxy;
+    node.child2 = kNullProxy;
+    node.height = -1;
+    freeList_ = index;
+}
+
+int DynamicTree::createProxy(const Aabb& aabb, std::uint64_t categoryBits, std::uint64_t userData) {
+    checkBox(aabb, "createProxy");
+    const int index = allocateNode();
+    Node& node = nodes_[static_cast<std::size_t>(index)];
+    node.aabb = aabb;
+    node.categoryBits = categoryBits;
+    node.userData = userData;
+    insertLeaf(index);
+    ++proxyCount_;
+    return index;
+}
+
+void DynamicTree::destroyProxy(int proxyId) {
+    checkProxy(proxyId, "destroyProxy");
+    removeLeaf(proxyId);
+    freeNode(proxyId);
+    --proxyCount_;
+}
+
+void DynamicTree::moveProxy(int proxyId, const Aabb& aabb) {
+    checkProxy(proxyId, "moveProxy");
+    checkBox(aabb, "moveProxy");
+    removeLeaf(proxyId);
+    nodes_[static_cast<std::size_t>(proxyId)].aabb = aabb;
+    insertLeaf(proxyId);
+}
+
+void DynamicTree::enlargeProxy(int proxyId, const Aabb& aabb) {
+    checkProxy(proxyId, "enlargeProxy");
+    checkBox(aabb, "enlargeProxy");
+    nodes_[static_cast<std::size_t>(proxyId)].aabb = aabb;
+    int index = nodes_[static_cast<std::size_t>(proxyId)].parent;
+    while (index != kNullProxy) {
+        Node& node = nodes_[static_cast<std::size_t>(index)];
+        if (contains(node.aabb, aabb)) {
+            // Every ancestor above already contains this one.
+            break;
+        }
+        node.aabb = unionOf(node.aabb, aabb);
+        index = node.parent;
+    }
+}
+
+const Aabb& DynamicTree::aabb(int proxyId) const {
+    checkProxy(proxyId, "aabb");
+    return nodes_[static_cast<std::size_t>(proxyId)].aabb;
+}
+
+std::uint64_t DynamicTree::userData(int proxyId) const {
+    checkProxy(proxyId, "userData");
+    return nodes_[static_cast<std::size_t>(proxyId)].userData;
+}
+
+std::uint64_t DynamicTree::categoryBits(int proxyId) const {
+    checkProxy(proxyId, "categoryBits");
+    return nodes_[static_cast<std::size_t>(proxyId)].categoryBits;
+}
+
+int DynamicTree::height() const {
+    return root_ == kNullProxy ? 0 : nodes_[static_cast<std::size_t>(root_)].height;
+}
+
+float DynamicTree::areaRatio() const {
+    if (root_ == kNullProxy) {
+        return 0.0f;
+    }
+    const float rootArea = perimeter(nodes_[static_cast<std::size_t>(root_)].aabb);
+    float total = 0.0f;
+    for (const Node& node : nodes_) {
+        if (node.height > 0) {
+            total += perimeter(node.aabb);
+        }
+    }
+    return rootArea > 0.0f ? total / rootArea : 0.0f;
+}
+
+void DynamicTree::clear() {
+    if (nodes_.empty()) {
+        return;
+    }
+    const std::size_t size = nodes_.size();
+    for (std::size_t i = 0; i < size; ++i) {
+        Node& node = nodes_[i];
+        node.parent = i + 1 < size ? static_cast<int>(i + 1) : kNullProxy;
+        node.child1 = kNullProxy;
+        node.child2 = kNullProxy;
+        node.height = -1;
+    }
+    freeList_ = 0;
+    root_ = kNullProxy;
+    proxyCount_ = 0;
+}
+
+// Branch-and-bound descent for the sibling that minimises the surface-area cost of inserting
+// `box`: the perimeter of the new parent plus the growth of every ancestor. Going down into a
+// subtree can never cost less than the growth already paid plus perimeter(box), which bounds the
+// search; of the two children the one with the lower bound is explored (greedy, as in Box2D v3).
+int DynamicTree::findBestSibling(const Aabb& box) const {
+    const float boxArea = perimeter(box);
+    int index = root_;
+    const Node* node = &nodes_[static_cast<std::size_t>(root_)];
+    float nodeArea = perimeter(node->aabb);
+    float directCost = perimeter(unionOf(node->aabb, box));
+    float inheritedCost = 0.0f;
+
+    int best = root_;
+    float bestCost = directCost;
+
+    while (!node->isLeaf()) {
+        // Every descendant pays for this node's growth.
+        inheritedCost += directCost - nodeArea;
+
+        const int c1 = node->child1;
+        const int c2 = node->child2;
+        const Node& n1 = nodes_[static_cast<std::size_t>(c1)];
+        const Node& n2 = nodes_[static_cast<std::size_t>(c2)];
+
+        const float area1 = perimeter(n1.aabb);
+        const float direct1 = perimeter(unionOf(n1.aabb, box));
+        const float cost1 = direct1 + inheritedCost;
+        if (cost1 < bestCost) {
+            best = c1;
+            bestCost = cost1;
+        }
+        const float area2 = perimeter(n2.aabb);
+        const float direct2 = perimeter(unionOf(n2.aabb, box));
+        const float cost2 = direct2 + inheritedCost;
+        if (cost2 < bestCost) {
+            best = c2;
+            bestCost = cost2;
+        }
+
+        const float inf = std::numeric_limits<float>::infinity();
+        const float bound1 = n1.isLeaf() ? inf : boxArea + inheritedCost + (direct1 - area1);
+        const float bound2 = n2.isLeaf() ? inf : boxArea + inheritedCost + (direct2 - area2);
+        if (bound1 >= bestCost && bound2 >= bestCost) {
+            break;
+        }
+        if (bound1 <= bound2) {
+            index = c1;
+            nodeArea = area1;
+            directCost = direct1;
+        } else {
+            index = c2;
+            nodeArea = area2;
+            directCost = direct2;
+        }
+        node = &nodes_[static_cast<std::size_t>(index)];
+    }
+    return best;
+}
+
+void DynamicTree::refit(int index) {
+    Node& node = nodes_[static_cast<std::size_t>(index)];
+    const Node& a = nodes_[static_cast<std::size_t>(node.child1)];
+    const Node& b = nodes_[static_cast<std::size_t>(node.child2)];
+    node.aabb = unionOf(a.aabb, b.aabb);
+    node.categoryBits = a.categoryBits | b.categoryBits;
+    node.height = 1 + std::max(a.height, b.height);
+}
+
+// Tree rotations at node A (children B, C): swap a child of A with a grandchild on the other side
+// when that shrinks the inner node it lands in (surface area, after Kopta et al. 2012). Area alone
+// can let the height grow without bound on adversarial input, so when A's subtrees differ in
+// height by more than kMaxImbalance the swap must make A shorter instead (the cheapest such
+// swap). Measured on 10k-box scenes, a tolerance of 1 (AVL) makes the trees 2-4x worse by area
+// ratio, 2 costs under 10% against pure area rotations and keeps heights within ~1.4 log2 n.
+// A's own box and category are unchanged by any rotation; its height is refitted by the caller.
+void DynamicTree::rotate(int index) {
+    Node& a = nodes_[static_cast<std::size_t>(index)];
+    if (a.height < 2) {
+        return;
+    }
+    const int ib = a.child1;
+    const int ic = a.child2;
+    Node& b = nodes_[static_cast<std::size_t>(ib)];
+    Node& c = nodes_[static_cast<std::size_t>(ic)];
+
+    // A candidate moves `low` (a child of A) under `high` (the other child), in place of
+    // `grand` (a child of `high`); `stay` is high's other child.
+    struct Candidate {
+        int low = kNullProxy;
+        int high = kNullProxy;
+        int grand = kNullProxy;
+        int stay = kNullProxy;
+        float cost = 0.0f; // change of high's perimeter
+        int newHeight = 0; // A's height afterwards
+    };
+    std::array<Candidate, 4> candidates{};
+    int count = 0;
+    auto consider = [&](int low, int high) {
+        const Node& lowNode = nodes_[static_cast<std::size_t>(low)];
+        const Node& highNode = nodes_[static_cast<std::size_t>(high)];
+        if (highNode.isLeaf()) {
+            return;
+        }
+        const int g[2] = {highNode.child1, highNode.child2};
+        for (int k = 0; k < 2; ++k) {
+            const int grand = g[k];
+            const int stay = g[1 - k];
+            const Node& grandNode = nodes_[static_cast<std::size_t>(grand)];
+            const Node& stayNode = nodes_[static_cast<std::size_t>(stay)];
+            Candidate& cand = candidates[static_cast<std::size_t>(count++)];
+            cand.low = low;
+            cand.high = high;
+            cand.grand = grand;
+            cand.stay = stay;
+            cand.cost = perimeter(unionOf(lowNode.aabb, stayNode.aabb)) - perimeter(highNode.aabb);
+            const int highHeight = 1 + std::max(lowNode.height, stayNode.height);
+            cand.newHeight = 1 + std::max(grandNode.height, highHeight);
+        }
+    };
+
+    const Candidate* chosen = nullptr;
+    const int balance = c.height - b.height;
+    if (balance > kMaxImbalance || balance < -kMaxImbalance) {
+        // Lower the tall side: the short child goes down under the tall one, a grandchild comes
+        // up; of the swaps that make A shorter, the one that costs least area.
+        if (balance > 0) {
+            consider(ib, ic);
+        } else {
+            consider(ic, ib);
+        }
+        for (int k = 0; k < count; ++k) {
+            const Candidate& cand = candidates[static_cast<std::size_t>(k)];
+            if (cand.newHeight < a.height && (chosen == nullptr || cand.cost < chosen->cost)) {
+                chosen = &cand;
+            }
+        }
+    } else {
+        consider(ib, ic);
+        consider(ic, ib);
+        float bestCost = 0.0f;
+        for (int k = 0; k < count; ++k) {
+            const Candidate& cand = candidates[static_cast<std::size_t>(k)];
+            if (cand.cost < bestCost) {
+                bestCost = cand.cost;
+                chosen = &cand;
+            }
+        }
+    }
+    if (chosen == nullptr) {
+        return;
+    }
+
+    const Candidate cand = *chosen;
+    Node& high = nodes_[static_cast<std::size_t>(cand.high)];
+    Node& low = nodes_[static_cast<std::size_t>(cand.low)];
+    Node& grand = nodes_[static_cast<std::size_t>(cand.grand)];
+    // A's child `low` is replaced by `grand`; `high` takes `low` in place of `grand`.
+    if (a.child1 == cand.low) {
+        a.child1 = cand.grand;
+    } else {
+        a.child2 = cand.grand;
+    }
+    grand.parent = index;
+    if (high.child1 == cand.grand) {
+        high.child1 = cand.low;
+    } else {
+        high.child2 = cand.low;
+    }
+    low.parent = cand.high;
+    refit(cand.high);
+}
+
+void DynamicTree::insertLeaf(int leaf) {
+    if (root_ == kNullProxy) {
+        root_ = leaf;
+        nodes_[static_cast<std::size_t>(leaf)].parent = kNullProxy;
+        return;
+    }
+    const int sibling = findBestSibling(nodes_[static_cast<std::size_t>(leaf)].aabb);
+    // allocateNode() may reallocate the node array: take references only after it.
+    const int newParent = allocateNode();
+    Node& parentNode = nodes_[static_cast<std::size_t>(newParent)];
+    Node& siblingNode = nodes_[static_cast<std::size_t>(sibling)];
+    Node& leafNode = nodes_[static_cast<std::size_t>(leaf)];
+    const int oldParent = siblingNode.parent;
+
+    parentNode.parent = oldParent;
+    parentNode.child1 = sibling;
+    parentNode.child2 = leaf;
+    parentNode.userData = 0;
+    siblingNode.parent = newParent;
+    leafNode.parent = newParent;
+    refit(newParent);
+
+    if (oldParent == kNullProxy) {
+        root_ = newParent;
+    } else {
+        Node& op = nodes_[static_cast<std::size_t>(oldParent)];
+        if (op.child1 == sibling) {
+            op.child1 = newParent;
+        } else {
+            op.child2 = newParent;
+        }
+    }
+
+    for (int index = oldParent; index != kNullProxy;
+         index = nodes_[static_cast<std::size_t>(index)].parent) {
+        refit(index);
+        rotate(index);
+        refit(index);
+    }
+}
+
+void DynamicTree::removeLeaf(int leaf) {
+    if (leaf == root_) {
+        root_ = kNullProxy;
+        return;
+    }
+    const int parent = nodes_[static_cast<std::size_t>(leaf)].parent;
+    const Node& parentNode = nodes_[static_cast<std::size_t>(parent)];
+    const int grandParent = parentNode.parent;
+    const int sibling = parentNode.child1 == leaf ? parentNode.child2 : parentNode.child1;
+
+    if (grandParent == kNullProxy) {
+        root_ = sibling;
+        nodes_[static_cast<std::size_t>(sibling)].parent = kNullProxy;
+        freeNode(parent);
+        nodes_[static_cast<std::size_t>(leaf)].parent = kNullProxy;
+        return;
+    }
+    Node& gp = nodes_[static_cast<std::size_t>(grandParent)];
+    if (gp.child1 == parent) {
+        gp.child1 = sibling;
+    } else {
+        gp.child2 = sibling;
+    }
+    nodes_[static_cast<std::size_t>(sibling)].parent = grandParent;
+    freeNode(parent);
+    nodes_[static_cast<std::size_t>(leaf)].parent = kNullProxy;
+
+    for (int index = grandParent; index != kNullProxy;
+         index = nodes_[static_cast<std::size_t>(index)].parent) {
+        refit(index);
+        rotate(index);
+        refit(index);
+    }
+}
+
+void DynamicTree::rebuild() {
+    if (proxyCount_ < 3) {
+        return;
+    }
+    // Collect the leaves and free every internal node.
+    std::vector<int> leaves;
+    leaves.reserve(static_cast<std::size_t>(proxyCount_));
+    {
+        detail::TreeStack<128> stack;
+        stack.push(root_);
+        while (!stack.empty()) {
+            const int index = stack.pop();
+            const Node& node = nodes_[static_cast<std::size_t>(index)];
+            if (node.isLeaf()) {
+                leaves.push_back(index);
+            } else {
+                stack.push(node.child1);
+                stack.push(node.child2);
+                freeNode(index);
+            }
+        }
+    }
+    // Sorting by id makes the result independent of the old tree's shape.
+    std::sort(leaves.begin(), leaves.end());
+
+    struct Task {
+        int begin;
+        int end;
+        int parent;
+        int slot; // 1 or 2: which child of parent
+    };
+    std::vector<Task> tasks;
+    std::vector<int> internals; // in creation order: parents before children
+    internals.reserve(leaves.size());
+    tasks.push_back({0, static_cast<int>(leaves.size()), kNullProxy, 0});
+
+    constexpr int kBins = 16;
+    std::vector<int> binOf(leaves.size());
+    std::vector<int> rightLeaves;
+    rightLeaves.reserve(leaves.size());
+
+    auto link = [&](int child, int parent, int slot) {
+        nodes_[static_cast<std::size_t>(child)].parent = parent;
+        if (parent == kNullProxy) {
+            root_ = child;
+        } else if (slot == 1) {
+            nodes_[static_cast<std::size_t>(parent)].child1 = child;
+        } else {
+            nodes_[static_cast<std::size_t>(parent)].child2 = child;
+        }
+    };
+
+    while (!tasks.empty()) {
+        const Task task = tasks.back();
+        tasks.pop_back();
+        const int n = task.end - task.begin;
+        if (n == 1) {
+            link(leaves[static_cast<std::size_t>(task.begin)], task.parent, task.slot);
+            continue;
+        }
+        // No growth: the internal nodes freed above are reused.
+        const int node = allocateNode();
+        internals.push_back(node);
+        link(node, task.parent, task.slot);
+
+        auto first = leaves.begin() + task.begin;
+        auto last = leaves.begin() + task.end;
+
+        Vec2 cmin{std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
+        Vec2 cmax = -cmin;
+        for (auto it = first; it != last; ++it) {
+            const Vec2 c = centerOf(nodes_[static_cast<std::size_t>(*it)].aabb);
+            cmin = {std::fmin(cmin.x, c.x), std::fmin(cmin.y, c.y)};
+            cmax = {std::fmax(cmax.x, c.x), std::fmax(cmax.y, c.y)};
+        }
+        const int axis = (cmax.x - cmin.x) >= (cmax.y - cmin.y) ? 0 : 1;
+        const float lo = axis == 0 ? cmin.x : cmin.y;
+        const float extent = axis == 0 ? cmax.x - cmin.x : cmax.y - cmin.y;
+        auto axisCenter = [&](int leaf) {
+            const Vec2 c = centerOf(nodes_[static_cast<std::size_t>(leaf)].aabb);
+            return axis == 0 ? c.x : c.y;
+        };
+
+        int mid = task.begin + n / 2;
+        bool split = false;
+        if (extent > 0.0f) {
+            std::array<Aabb, kBins> binBox{};
+            std::array<int, kBins> binCount{};
+            const float scale = static_cast<float>(kBins) / extent;
+            for (int i = task.begin; i < task.end; ++i) {
+                const int leaf = leaves[static_cast<std::size_t>(i)];
+                int bin = static_cast<int>((axisCenter(leaf) - lo) * scale);
+                bin = std::clamp(bin, 0, kBins - 1);
+                binOf[static_cast<std::size_t>(i)] = bin;
+                const Aabb& box = nodes_[static_cast<std::size_t>(leaf)].aabb;
+                binBox[static_cast<std::size_t>(bin)] =
+                    binCount[static_cast<std::size_t>(bin)] == 0
+                        ? box
+                        : unionOf(binBox[static_cast<std::size_t>(bin)], box);
+                ++binCount[static_cast<std::size_t>(bin)];
+            }
+            // Cost of splitting before bin k: perimeter * count on each side.
+            std::array<float, kBins> rightCost{};
+            Aabb acc{};
+            int accCount = 0;
+            for (int k = kBins - 1; k > 0; --k) {
+                if (binCount[static_cast<std::size_t>(k)] > 0) {
+                    acc = accCount == 0 ? binBox[static_cast<std::size_t>(k)]
+                                        : unionOf(acc, binBox[static_cast<std::size_t>(k)]);
+                    accCount += binCount[static_cast<std::size_t>(k)];
+                }
+                rightCost[static_cast<std::size_t>(k)] =
+                    accCount == 0 ? -1.0f : perimeter(acc) * static_cast<float>(accCount);
+            }
+            float bestCost = std::numeric_limits<float>::infinity();
+            int bestSplit = -1;
+            acc = Aabb{};
+            accCount = 0;
+            for (int k = 1; k < kBins; ++k) {
+                if (binCount[static_cast<std::size_t>(k - 1)] > 0) {
+                    acc = accCount == 0 ? binBox[static_cast<std::size_t>(k - 1)]
+                                        : unionOf(acc, binBox[static_cast<std::size_t>(k - 1)]);
+                    accCount += binCount[static_cast<std::size_t>(k - 1)];
+                }
+                const float right = rightCost[static_cast<std::size_t>(k)];
+                if (accCount == 0 || right < 0.0f) {
+                    continue;
+                }
+                const float cost = perimeter(acc) * static_cast<float>(accCount) + right;
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    bestSplit = k;
+                }
+            }
+            if (bestSplit > 0) {
+                // Stable partition keeps the order (and so the result) deterministic.
+                int write = task.begin;
+                rightLeaves.clear();
+                for (int i = task.begin; i < task.end; ++i) {
+                    const int leaf = leaves[static_cast<std::size_t>(i)];
+                    if (binOf[static_cast<std::size_t>(i)] < bestSplit) {
+                        leaves[static_cast<std::size_t>(write++)] = leaf;
+                    } else {
+                        rightLeaves.push_back(leaf);
+                    }
+                }
+                std::copy(rightLeaves.begin(), rightLeaves.end(), leaves.begin() + write);
+                if (write > task.begin && write < task.end) {
+                    mid = write;
+                    split = true;
+                }
+            }
+        }
+        if (!split) {
+            // Coincident centres (or an unhelpful binning): median split by position, ties by id.
+            std::nth_element(first, leaves.begin() + mid, last, [&](int x, int y) {
+                const float cx = axisCenter(x);
+                const float cy = axisCenter(y);
+                return cx < cy || (cx == cy && x < y);
+            });
+        }
+        tasks.push_back({mid, task.end, node, 2});
+        tasks.push_back({task.begin, mid, node, 1});
+    }
+
+    // Children were created after their parents: refit in reverse creation order.
+    for (auto it = internals.rbegin(); it != internals.rend(); ++it) {
+        refit(*it);
+    }
+}
+
+bool DynamicTree::validate() const {
+    int reachable = 0;
+    int leaves = 0;
+    if (root_ != kNullProxy) {
+        if (root_ < 0 || static_cast<std::size_t>(root_) >= nodes_.size() ||
+            nodes_[static_cast<std::size_t>(root_)].parent != kNullProxy) {
+            return false;
+        }
+        detail::TreeStack<128> stack;
+        stack.push(root_);
+        while (!stack.empty()) {
+            const int index = stack.pop();
+            ++reachable;
+            if (reachable > static_cast<int>(nodes_.size())) {
+                return false; // a cycle
+            }
+            const Node& node = nodes_[static_cast<std::size_t>(index)];
+            if (node.height < 0 || !isValidBox(node.aabb) ||
+                node.aabb.lower.x > node.aabb.upper.x || node.aabb.lower.y > node.aabb.upper.y) {
+                return false;
+            }
+            if (node.isLeaf()) {
+                if (node.child2 != kNullProxy || node.height != 0) {
+                    return false;
+                }
+                ++leaves;
+                continue;
+            }
+            const int kids[2] = {node.child1, node.child2};
+            for (int kid : kids) {
+                if (kid < 0 || static_cast<std::size_t>(kid) >= nodes_.size()) {
+                    return false;
+                }
+                const Node& child = nodes_[static_cast<std::size_t>(kid)];
+                if (child.parent != index || child.height < 0 || !contains(node.aabb, child.aabb)) {
+                    return false;
+                }
+            }
+            const Node& a = nodes_[static_cast<std::size_t>(node.child1)];
+            const Node& b = nodes_[static_cast<std::size_t>(node.child2)];
+            if (node.height != 1 + std::max(a.height, b.height) ||
+                node.categoryBits != (a.categoryBits | b.categoryBits)) {
+                return false;
+            }
+            stack.push(node.child1);
+            stack.push(node.child2);
+        }
+    }
+    int freeCount = 0;
+    for (int index = freeList_; index != kNullProxy;
+         index = nodes_[static_cast<std::size_t>(index)].parent) {
+        if (index < 0 || static_cast<std::size_t>(index) >= nodes_.size() ||
+            nodes_[static_cast<std::size_t>(index)].height != -1) {
+            return false;
+        }
+        if (++freeCount > static_cast<int>(nodes_.size())) {
+            return false;
+        }
+    }
+    return leaves == proxyCount_ && reachable + freeCount == static_cast<int>(nodes_.size());
+}
+
+} // namespace e2d::physics

@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: MIT
+// Islands and sleeping. Islands are found afresh each step by union-find over the awake bodies
+// joined by solved contacts (static and kinematic bodies do not join islands); an island
+// whose every body has been slow for timeToSleep sleeps as a whole. Waking floods through
+// touching contacts, so a sleeping pile wakes together.
+#include <e2d/physics/world.hpp>
+
+#include "world_impl.hpp"
+
+#include <algorithm>
+
+namespace e2d::physics {
+
+using detail::kNullIndex;
+
+namespace {
+
+int findRoot(std::vector<int>& parent, int i) {
+    while (parent[static_cast<std::size_t>(i)] != i) {
+        int grand = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+        parent[static_cast<std::size_t>(i)] = grand; // path halving
+        i = grand;
+    }
+    return i;
+}
+
+} // namespace
+
+void World::Impl::wakeBody(int bodyIndex) {
+    detail::Body& start = body(bodyIndex);
+    if (!start.alive || start.type == BodyType::Static || start.motion.awake) {
+        return;
+    }
+    std::vector<int>& stack = sim.wakeStack;
+    stack.clear();
+    start.motion.awake = true;
+    start.motion.sleepTime = 0.0f;
+    stack.push_back(bodyIndex);
+    while (!stack.empty()) {
+        int k = stack.back();
+        stack.pop_back();
+        for (int ci = body(k).motion.contactHead; ci != kNullIndex;) {
+            const detail::Contact& c = sim.contacts[static_cast<std::size_t>(ci)];
+            int side = c.bodyA == k ? 0 : 1;
+            int other = side == 0 ? c.bodyB : c.bodyA;
+            detail::Body& o = body(other);
+            if (c.touching && !c.sensor && o.type != BodyType::Static && !o.motion.awake) {
+                o.motion.awake = true;
+                o.motion.sleepTime = 0.0f;
+                stack.push_back(other);
+            }
+            ci = c.next[side];
+        }
+    }
+}
+
+void World::Impl::updateSleep(float dt) {
+    detail::Simulation& s = sim;
+    const SolverDef& def = s.def;
+    auto n = static_cast<int>(s.sims.size());
+    s.islandParent.resize(static_cast<std::size_t>(n));
+    s.islandSleepTime.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        s.islandParent[static_cast<std::size_t>(i)] = i;
+        s.islandSleepTime[static_cast<std::size_t>(i)] = kHuge;
+    }
+    for (const detail::ContactConstraint& c : s.constraints) {
+        if (c.indexA < 0 || c.indexB < 0) {
+            continue;
+        }
+        // Kinematic bodies would chain everything they carry into one island.
+        if (body(s.sims[static_cast<std::size_t>(c.indexA)].bodyIndex).type != BodyType::Dynamic ||
+            body(s.sims[static_cast<std::size_t>(c.indexB)].bodyIndex).type != BodyType::Dynamic) {
+            continue;
+        }
+        int ra = findRoot(s.islandParent, c.indexA);
+        int rb = findRoot(s.islandParent, c.indexB);
+        if (ra != rb) {
+            // The lower index becomes the root, so the result does not depend on contact order.
+            s.islandParent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
+        }
+    }
+
+    float linearTolSq = def.linearSleepTolerance * def.linearSleepTolerance;
+    float angularTol = def.angularSleepTolerance;
+    for (int i = 0; i < n; ++i) {
+        const detail::BodySim& bs = s.sims[static_cast<std::size_t>(i)];
+        detail::Body& b = body(bs.bodyIndex);
+        if (!b.enabled) {
+            continue; // disabled this step (non-finite)
+        }
+        detail::BodyMotion& m = b.motion;
+        float w = std::abs(b.angularVelocity);
+        if (!def.enableSleep || !m.enableSleep || m.isBullet ||
+            dot(b.linearVelocity, b.linearVelocity) > linearTolSq || w > angularTol) {
+            m.sleepTime = 0.0f;
+        } else {
+            m.sleepTime += dt;
+        }
+        int root = findRoot(s.islandParent, i);
+        float& islandTime = s.islandSleepTime[static_cast<std::size_t>(root)];
+        islandTime = std::min(islandTime, m.sleepTime);
+    }
+    if (!def.enableSleep) {
+        return;
+    }
+    for (int i = 0; i < n; ++i) {
+        int root = findRoot(s.islandParent, i);
+        if (s.islandSleepTime[static_cast<std::size_t>(root)] < def.timeToSleep) {
+            continue;
+        }
+        detail::Body& b = body(s.sims[static_cast<std::size_t>(i)].bodyIndex);
+        b.motion.awake = false;
+        b.linearVelocity = {0.0f, 0.0f};
+        b.angularVelocity = 0.0f;
+    }
+}
+
+void World::setAwake(BodyId id, bool awake) {
+    Impl& w = *impl_;
+    int index = w.require(id, "setAwake");
+    if (awake) {
+        w.wakeBody(index);
+        return;
+    }
+    detail::Body& start = w.body(index);
+    if (start.type == BodyType::Static || !start.motion.awake) {
+        return;
+    }
+    // Sleep the whole touching group, or the first step would wake it again.
+    std::vector<int>& stack = w.sim.wakeStack;
+    stack.clear();
+    stack.push_back(index);
+    start.motion.awake = false;
+    while (!stack.empty()) {
+        int k = stack.back();
+        stack.pop_back();
+        detail::Body& b = w.body(k);
+        b.linearVelocity = {0.0f, 0.0f};
+        b.angularVelocity = 0.0f;
+        b.motion.sleepTime = 0.0f;
+        b.motion.force = {0.0f, 0.0f};
+        b.motion.torque = 0.0f;
+        for (int ci = b.motion.contactHead; ci != kNullIndex;) {
+            const detail::Contact& c = w.sim.contacts[static_cast<std::size_t>(ci)];
+            int side = c.bodyA == k ? 0 : 1;
+            int other = side == 0 ? c.bodyB : c.bodyA;
+            detail::Body& o = w.body(other);
+            if (c.touching && !c.sensor && o.type == BodyType::Dynamic && o.motion.awake) {
+                o.motion.awake = false;
+                stack.push_back(other);
+            }
+            ci = c.next[side];
+        }
+    }
+}
+
+} // namespace e2d::physics

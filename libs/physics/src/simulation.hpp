@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/physics/events.hpp>
+#include <e2d/physics/geometry.hpp>
+#include <e2d/physics/manifold.hpp>
+#include <e2d/physics/solver_def.hpp>
+
+#include "contact_solver.hpp"
+#include "solver_body.hpp"
+
+#include <cstdint>
+#include <vector>
+
+// The dynamics half of the world: per-body motion data, the persistent contacts and the
+// per-step scratch arrays. World::Impl holds one Simulation; every array here is reused from
+// step to step, so a warm world allocates nothing per step.
+namespace e2d::physics::detail {
+
+// A body's dynamics, kept in its world slot (detail::Body::motion).
+struct BodyMotion {
+    Vec2 localCenter{0.0f, 0.0f};
+    float mass = 0.0f;
+    float inertia = 0.0f; // about the centre of mass
+    float invMass = 0.0f;
+    float invInertia = 0.0f;
+    Vec2 force{0.0f, 0.0f};
+    float torque = 0.0f;
+    float linearDamping = 0.0f;
+    float angularDamping = 0.0f;
+    float gravityScale = 1.0f;
+    float sleepTime = 0.0f;
+    // Smallest and largest distance from the centre of mass to the shapes' surfaces, metres:
+    // a body that moves more than minExtent in a step may tunnel (continuous collision).
+    float minExtent = 0.0f;
+    float maxExtent = 0.0f;
+    int contactHead = -1;  // intrusive list of the body's contacts
+    int solverIndex = -1;  // index in this step's awake arrays, -1 when not awake
+    bool fixedRotation = false;
+    bool lockX = false;
+    bool lockY = false;
+    bool isBullet = false;
+    bool enableSleep = true;
+    bool awake = true;
+};
+
+// A pair of shapes whose fat boxes overlap. Contacts live in one array with a free list;
+// each is linked into both bodies' lists (side 0: body A, side 1: body B).
+struct Contact {
+    Manifold manifold{};
+    float friction = 0.0f;
+    float restitution = 0.0f;
+    float rollingResistance = 0.0f;
+    int shapeA = -1;
+    int shapeB = -1;
+    int bodyA = -1;
+    int bodyB = -1;
+    int prev[2] = {-1, -1};
+    int next[2] = {-1, -1};
+    int constraintIndex = -1; // this step's constraint, -1 if not solved
+    ShapeId idA{};
+    ShapeId idB{};
+    bool touching = false;
+    bool sensor = false; // one shape is a sensor: overlap only, no constraint
+    bool alive = false;
+};
+
+struct Simulation {
+    SolverDef def{};
+
+    std::vector<Contact> contacts;
+    std::vector<int> freeContacts;
+    int contactCount = 0;
+
+    // Per-step scratch, same order: the awake moving bodies and their world slots.
+    std::vector<BodySim> sims;
+    std::vector<BodyState> states;
+    std::vector<ContactConstraint> constraints;
+    std::vector<int> islandParent; // union-find over the awake arrays
+    std::vector<float> islandSleepTime;
+    std::vector<int> wakeStack;
+
+    std::vector<ContactBeginTouchEvent> beginEvents;
+    std::vector<ContactEndTouchEvent> endEvents;
+    std::vector<SensorBeginTouchEvent> sensorBeginEvents;
+    std::vector<SensorEndTouchEvent> sensorEndEvents;
+    std::vector<ContactHitEvent> hitEvents;
+    std::vector<BodyId> nonFiniteBodies;
+};
+
+// Mixed material of two shapes under the world's rules.
+inline float mixFriction(const SolverDef& def, float a, float b) {
+    return mix(def.frictionMixing, a, b);
+}
+inline float mixRestitution(const SolverDef& def, float a, float b) {
+    return mix(def.restitutionMixing, a, b);
+}
+
+} // namespace e2d::physics::detail

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/physics/math.hpp>
+
+#include <cmath>
+#include <cstdint>
+
+// The solver's view of the awake moving bodies: two contiguous arrays built once per step.
+namespace e2d::physics::detail {
+
+// Per-axis locks and other per-body solver switches.
+enum BodyFlag : std::uint8_t {
+    kLockX = 1,        // the centre of mass never moves along x
+    kLockY = 2,        // ... along y
+    kLockRotation = 4, // fixed rotation
+    kIsBullet = 8,
+    kIsFast = 16,      // moved far enough this step to need time of impact
+};
+
+// What the sub-step loops touch, and nothing else, so many fit in a cache line. Static bodies
+// have no BodyState: constraints against them use a zero state (index -1).
+struct BodyState {
+    Vec2 linearVelocity{0.0f, 0.0f};
+    float angularVelocity = 0.0f;
+    std::uint32_t flags = 0;
+    // Motion since the start of the step; the contact solver recomputes separations from it.
+    Vec2 deltaPosition{0.0f, 0.0f};
+    Rot deltaRotation{};
+};
+
+// Everything else the step needs about an awake moving body.
+struct BodySim {
+    Transform transform{};     // body origin
+    Vec2 center{0.0f, 0.0f};   // world centre of mass
+    Vec2 center0{0.0f, 0.0f};  // centre of mass at the start of the step
+    Rot rotation0{};           // rotation at the start of the step
+    Vec2 localCenter{0.0f, 0.0f};
+    Vec2 force{0.0f, 0.0f};
+    float torque = 0.0f;
+    // Per-axis inverse mass: a locked axis has zero.
+    Vec2 invMass{0.0f, 0.0f};
+    float invInertia = 0.0f;
+    float linearDamping = 0.0f;
+    float angularDamping = 0.0f;
+    float gravityScale = 1.0f;
+    // Largest distance from the centre of mass to a shape's surface, for continuous collision.
+    float maxExtent = 0.0f;
+    int bodyIndex = -1; // the world's body slot
+    std::uint32_t flags = 0;
+};
+
+// q advanced by angle `da` (small): q + da * perp(q), renormalised. Cheaper than sin/cos and
+// exact enough for one sub-step.
+inline Rot integrateRotation(Rot q, float da) {
+    float c = q.c - da * q.s;
+    float s = q.s + da * q.c;
+    float mag = std::sqrt(c * c + s * s);
+    float inv = mag > 0.0f ? 1.0f / mag : 0.0f;
+    return {c * inv, s * inv};
+}
+
+// Soft constraint coefficients for a spring of `hertz` and damping ratio `zeta` stepped by h.
+struct Softness {
+    float biasRate = 0.0f;
+    float massScale = 1.0f;
+    float impulseScale = 0.0f;
+};
+
+inline Softness makeSoftness(float hertz, float zeta, float h) {
+    if (hertz == 0.0f) {
+        return {0.0f, 1.0f, 0.0f};
+    }
+    float omega = 2.0f * 3.14159265359f * hertz;
+    float a1 = 2.0f * zeta + h * omega;
+    float a2 = h * omega * a1;
+    float a3 = 1.0f / (1.0f + a2);
+    return {omega / a1, a2 * a3, a3};
+}
+
+} // namespace e2d::physics::detail

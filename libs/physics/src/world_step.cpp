@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: MIT
+// World::step(): pairs -> contacts -> narrow phase -> solver arrays -> solve -> continuous ->
+// write back and broad-phase moves -> stored impulses, hit events -> sleep.
+#include <e2d/physics/world.hpp>
+
+#include "body_solver.hpp"
+#include "world_check.hpp"
+#include "world_impl.hpp"
+
+#include <cmath>
+
+namespace e2d::physics {
+
+using detail::kNullIndex;
+namespace check = detail::world_check;
+
+namespace {
+
+bool isFiniteState(const detail::BodySim& s, const detail::BodyState& st) {
+    return isFinite(s.center) && isFinite(s.transform.p) && isFinite(s.transform.q.c) &&
+           isFinite(s.transform.q.s) && isFinite(st.linearVelocity) &&
+           isFinite(st.angularVelocity);
+}
+
+} // namespace
+
+void World::step(float timeStep) {
+    if (!(isFinite(timeStep) && timeStep >= 0.0f)) {
+        check::fail("step", "timeStep must be finite and >= 0, got " + check::text(timeStep));
+    }
+    Impl& w = *impl_;
+    detail::Simulation& s = w.sim;
+    s.beginEvents.clear();
+    s.endEvents.clear();
+    s.sensorBeginEvents.clear();
+    s.sensorEndEvents.clear();
+    s.hitEvents.clear();
+    s.nonFiniteBodies.clear();
+    w.updateContacts();
+    if (timeStep == 0.0f) {
+        return;
+    }
+    w.solve(timeStep);
+    w.updateSleep(timeStep);
+}
+
+void World::Impl::solve(float dt) {
+    detail::Simulation& s = sim;
+    const SolverDef& def = s.def;
+
+    // The awake moving bodies, in slot order.
+    s.sims.clear();
+    s.states.clear();
+    for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
+        detail::Body& b = bodies[bi];
+        detail::BodyMotion& m = b.motion;
+        if (!b.alive || !b.enabled || b.type == BodyType::Static || !m.awake) {
+            m.solverIndex = kNullIndex;
+            continue;
+        }
+        m.solverIndex = static_cast<int>(s.sims.size());
+        detail::BodySim& bs = s.sims.emplace_back();
+        bs.transform = b.transform;
+        bs.localCenter = m.localCenter;
+        bs.center = transformPoint(b.transform, m.localCenter);
+        bs.center0 = bs.center;
+        bs.rotation0 = b.transform.q;
+        bs.force = m.force;
+        bs.torque = m.torque;
+        bs.invMass = {m.lockX ? 0.0f : m.invMass, m.lockY ? 0.0f : m.invMass};
+        bs.invInertia = m.invInertia;
+        bs.linearDamping = m.linearDamping;
+        bs.angularDamping = m.angularDamping;
+        bs.gravityScale = m.gravityScale;
+        bs.maxExtent = m.maxExtent;
+        bs.bodyIndex = static_cast<int>(bi);
+        detail::BodyState& st = s.states.emplace_back();
+        // A kinematic body keeps its velocity; a locked axis has none.
+        st.linearVelocity = {m.lockX && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.x,
+                             m.lockY && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.y};
+        st.angularVelocity = m.invInertia == 0.0f && b.type == BodyType::Dynamic
+                                 ? 0.0f
+                                 : b.angularVelocity;
+    }
+
+    // One constraint per touching solid contact with a moving side.
+    s.constraints.clear();
+    detail::ContactSoftness softness = detail::makeContactSoftness(def, dt);
+    auto viewOf = [&](int bodyIndex) {
+        const detail::Body& b = body(bodyIndex);
+        const detail::BodyMotion& m = b.motion;
+        detail::ContactBodyView v;
+        v.centerOffset = rotate(b.transform.q, m.localCenter);
+        if (m.solverIndex != kNullIndex) {
+            const detail::BodySim& bs = s.sims[static_cast<std::size_t>(m.solverIndex)];
+            const detail::BodyState& st = s.states[static_cast<std::size_t>(m.solverIndex)];
+            v.linearVelocity = st.linearVelocity;
+            v.angularVelocity = st.angularVelocity;
+            v.invMass = bs.invMass;
+            v.invInertia = bs.invInertia;
+            v.stateIndex = m.solverIndex;
+        }
+        return v;
+    };
+    for (std::size_t ci = 0; ci < s.contacts.size(); ++ci) {
+        detail::Contact& c = s.contacts[ci];
+        c.constraintIndex = kNullIndex;
+        if (!c.alive || !c.touching || c.sensor) {
+            continue;
+        }
+        if (body(c.bodyA).motion.solverIndex == kNullIndex &&
+            body(c.bodyB).motion.solverIndex == kNullIndex) {
+            continue;
+        }
+        detail::ContactBodyView a = viewOf(c.bodyA);
+        detail::ContactBodyView b = viewOf(c.bodyB);
+        bool rigidSide = (a.invMass.x == 0.0f && a.invMass.y == 0.0f && a.invInertia == 0.0f) ||
+                         (b.invMass.x == 0.0f && b.invMass.y == 0.0f && b.invInertia == 0.0f);
+        c.constraintIndex = static_cast<int>(s.constraints.size());
+        detail::ContactConstraint& cc = s.constraints.emplace_back();
+        detail::prepareContact(cc, c.manifold, a, b,
+                               {c.friction, c.restitution, c.rollingResistance},
+                               rigidSide ? softness.vsStatic : softness.dynamic);
+        cc.contactIndex = static_cast<int>(ci);
+    }
+
+    detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def};
+    if (def.mode == SolverMode::SoftStep) {
+        detail::solveSoftStep(step);
+    } else {
+        detail::solveClassic(step);
+    }
+    detail::finalizePositions(s.sims, s.states);
+
+    if (def.enableContinuous) {
+        for (std::size_t k = 0; k < s.sims.size(); ++k) {
+            solveContinuous(static_cast<int>(k));
+        }
+    }
+
+    // Write back, move the proxies; a body whose state went non-finite is disabled instead.
+    for (std::size_t k = 0; k < s.sims.size(); ++k) {
+        const detail::BodySim& bs = s.sims[k];
+        const detail::BodyState& st = s.states[k];
+        detail::Body& b = body(bs.bodyIndex);
+        b.motion.force = {0.0f, 0.0f};
+        b.motion.torque = 0.0f;
+        if (!isFiniteState(bs, st)) {
+            s.nonFiniteBodies.push_back(bodyId(bs.bodyIndex));
+            b.linearVelocity = {0.0f, 0.0f};
+            b.angularVelocity = 0.0f;
+            b.enabled = false;
+            b.motion.solverIndex = kNullIndex;
+            for (int si = b.headShape; si != kNullIndex; si = shape(si).nextShape) {
+                destroyProxy(si);
+            }
+            continue;
+        }
+        b.transform = bs.transform;
+        b.linearVelocity = st.linearVelocity;
+        b.angularVelocity = st.angularVelocity;
+        for (int si = b.headShape; si != kNullIndex; si = shape(si).nextShape) {
+            detail::Shape& sh = shape(si);
+            sh.aabb = computeAabb(sh.geometry, b.transform);
+            if (sh.proxyKey != kNullIndex) {
+                broadPhase.moveProxy(sh.proxyKey, sh.aabb);
+            }
+        }
+    }
+
+    // Impulses back to the manifolds for next step's warm start; hit events.
+    for (const detail::ContactConstraint& cc : s.constraints) {
+        detail::Contact& c = s.contacts[static_cast<std::size_t>(cc.contactIndex)];
+        if (!c.alive) {
+            continue; // ended with a non-finite body
+        }
+        float fastest = def.hitEventThreshold;
+        int fastestPoint = -1;
+        for (int j = 0; j < cc.pointCount; ++j) {
+            const detail::ContactConstraintPoint& cp = cc.points[j];
+            c.manifold.points[j].normalImpulse = cp.normalImpulse;
+            c.manifold.points[j].tangentImpulse = cp.tangentImpulse;
+            float approach = -cp.relativeVelocity;
+            if (cp.maxNormalImpulse > 0.0f && approach > fastest) {
+                fastest = approach;
+                fastestPoint = j;
+            }
+        }
+        if (fastestPoint >= 0) {
+            s.hitEvents.push_back({c.idA, c.idB, c.manifold.points[fastestPoint].point,
+                                   c.manifold.normal, fastest});
+        }
+    }
+}
+
+} // namespace e2d::physics

@@ -1,0 +1,381 @@
+// SPDX-License-Identifier: MIT
+// The contact solver over plain arrays: bodies against the ground plane y = 0, with manifolds
+// built by hand (no narrow phase), so the solver is checked on its own.
+#include "../src/body_solver.hpp"
+#include "../src/contact_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace e2d::physics::detail {
+namespace {
+
+constexpr float kDt = 1.0f / 60.0f;
+constexpr float kG = 10.0f;
+
+// One dynamic body: a box (half-extents hx, hy) or a disc (radius r, hx == 0).
+struct PlaneBody {
+    BodySim sim;
+    BodyState state;
+    float hx = 0.0f;
+    float hy = 0.0f;
+    float radius = 0.0f;
+    Manifold cache{}; // last step's manifold against the ground, for warm starting
+};
+
+PlaneBody makeBox(Vec2 position, float hx, float hy, float density = 1.0f) {
+    PlaneBody b;
+    float mass = density * 4.0f * hx * hy;
+    float inertia = mass * (4.0f * hx * hx + 4.0f * hy * hy) / 12.0f;
+    b.sim.transform.p = position;
+    b.sim.center = position;
+    b.sim.invMass = {1.0f / mass, 1.0f / mass};
+    b.sim.invInertia = 1.0f / inertia;
+    b.hx = hx;
+    b.hy = hy;
+    return b;
+}
+
+PlaneBody makeDisc(Vec2 position, float radius, float density = 1.0f) {
+    PlaneBody b;
+    float mass = density * 3.14159265f * radius * radius;
+    float inertia = 0.5f * mass * radius * radius;
+    b.sim.transform.p = position;
+    b.sim.center = position;
+    b.sim.invMass = {1.0f / mass, 1.0f / mass};
+    b.sim.invInertia = 1.0f / inertia;
+    b.radius = radius;
+    return b;
+}
+
+// The body's manifold against the ground (shape A, static, origin at 0): normal +y, points
+// midway between the surfaces, speculative margin kSpeculativeDistance.
+Manifold groundManifold(const PlaneBody& b) {
+    Manifold m;
+    m.normal = {0.0f, 1.0f};
+    const Transform& xf = b.sim.transform;
+    auto addPoint = [&](Vec2 surface, std::uint16_t id) {
+        float s = surface.y;
+        if (s > kSpeculativeDistance || m.pointCount == 2) {
+            return;
+        }
+        ManifoldPoint& mp = m.points[m.pointCount++];
+        mp.point = {surface.x, 0.5f * s};
+        mp.anchorA = mp.point;
+        mp.anchorB = mp.point - xf.p;
+        mp.separation = s;
+        mp.id = id;
+        for (int j = 0; j < b.cache.pointCount; ++j) {
+            if (b.cache.points[j].id == id) {
+                mp.normalImpulse = b.cache.points[j].normalImpulse;
+                mp.tangentImpulse = b.cache.points[j].tangentImpulse;
+            }
+        }
+    };
+    if (b.radius > 0.0f) {
+        addPoint(xf.p - Vec2{0.0f, b.radius}, 0);
+    } else {
+        // The two lowest corners.
+        Vec2 corners[4] = {{-b.hx, -b.hy}, {b.hx, -b.hy}, {b.hx, b.hy}, {-b.hx, b.hy}};
+        int lowest = 0;
+        for (int i = 1; i < 4; ++i) {
+            if (transformPoint(xf, corners[i]).y < transformPoint(xf, corners[lowest]).y) {
+                lowest = i;
+            }
+        }
+        int next = (lowest + 1) % 4;
+        int prev = (lowest + 3) % 4;
+        int second = transformPoint(xf, corners[next]).y < transformPoint(xf, corners[prev]).y
+                         ? next
+                         : prev;
+        addPoint(transformPoint(xf, corners[lowest]), static_cast<std::uint16_t>(lowest));
+        addPoint(transformPoint(xf, corners[second]), static_cast<std::uint16_t>(second));
+    }
+    return m;
+}
+
+struct Harness {
+    std::vector<PlaneBody> bodies;
+    SolverDef def{};
+    ContactMaterial material{0.6f, 0.0f, 0.0f};
+    Vec2 gravity{0.0f, -kG};
+
+    void step() {
+        std::vector<BodySim> sims;
+        std::vector<BodyState> states;
+        std::vector<ContactConstraint> constraints;
+        std::vector<Manifold> manifolds;
+        ContactSoftness softness = makeContactSoftness(def, kDt);
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            PlaneBody& b = bodies[i];
+            b.sim.center0 = b.sim.center;
+            b.sim.rotation0 = b.sim.transform.q;
+            b.state.deltaPosition = {0.0f, 0.0f};
+            b.state.deltaRotation = {};
+            sims.push_back(b.sim);
+            states.push_back(b.state);
+            Manifold m = groundManifold(b);
+            manifolds.push_back(m);
+            if (m.pointCount > 0) {
+                ContactBodyView ground;
+                ContactBodyView body{rotate(b.sim.transform.q, b.sim.localCenter),
+                                     b.state.linearVelocity, b.state.angularVelocity,
+                                     b.sim.invMass, b.sim.invInertia, static_cast<int>(i)};
+                ContactConstraint c;
+                prepareContact(c, m, ground, body, material, softness.vsStatic);
+                c.contactIndex = static_cast<int>(i);
+                constraints.push_back(c);
+            }
+        }
+        SolverStep s{sims, states, constraints, gravity, kDt, &def};
+        if (def.mode == SolverMode::SoftStep) {
+            solveSoftStep(s);
+        } else {
+            solveClassic(s);
+        }
+        finalizePositions(sims, states);
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            bodies[i].sim = sims[i];
+            bodies[i].state = states[i];
+            bodies[i].cache = manifolds[i];
+        }
+        for (const ContactConstraint& c : constraints) {
+            Manifold& m = bodies[static_cast<std::size_t>(c.contactIndex)].cache;
+            for (int j = 0; j < c.pointCount; ++j) {
+                m.points[j].normalImpulse = c.points[j].normalImpulse;
+                m.points[j].tangentImpulse = c.points[j].tangentImpulse;
+            }
+        }
+    }
+};
+
+TEST(Softness, MatchesTheClosedForm) {
+    // omega = 2 pi 30, zeta = 10, h = 1/240: a1 = 2 zeta + h omega, a2 = h omega a1.
+    float omega = 2.0f * 3.14159265f * 30.0f;
+    float h = 1.0f / 240.0f;
+    float a1 = 20.0f + h * omega;
+    float a2 = h * omega * a1;
+    Softness s = makeSoftness(30.0f, 10.0f, h);
+    EXPECT_NEAR(s.biasRate, omega / a1, 1e-4f);
+    EXPECT_NEAR(s.massScale, a2 / (1.0f + a2), 1e-6f);
+    EXPECT_NEAR(s.impulseScale, 1.0f / (1.0f + a2), 1e-6f);
+    Softness rigid = makeSoftness(0.0f, 1.0f, h);
+    EXPECT_EQ(rigid.massScale, 1.0f);
+    EXPECT_EQ(rigid.impulseScale, 0.0f);
+}
+
+TEST(ContactSoftness, CapsHertzAtAQuarterOfTheSubStepRate) {
+    SolverDef def;
+    def.contactHertz = 1000.0f;
+    def.subSteps = 4;
+    ContactSoftness s = makeContactSoftness(def, kDt);
+    // Sub-step rate 240 Hz: capped at 60 Hz, static contacts at 120 Hz.
+    Softness expected = makeSoftness(60.0f, def.contactDampingRatio, kDt / 4.0f);
+    Softness expectedStatic = makeSoftness(120.0f, def.contactDampingRatio, kDt / 4.0f);
+    EXPECT_FLOAT_EQ(s.dynamic.biasRate, expected.biasRate);
+    EXPECT_FLOAT_EQ(s.vsStatic.biasRate, expectedStatic.biasRate);
+}
+
+TEST(IntegrateVelocities, AppliesGravityForceDampingAndSpeedCap) {
+    BodySim sim;
+    sim.invMass = {0.5f, 0.5f};
+    sim.invInertia = 2.0f;
+    sim.force = {4.0f, 0.0f};
+    sim.torque = 1.0f;
+    sim.linearDamping = 1.0f;
+    BodyState state;
+    state.linearVelocity = {1.0f, 0.0f};
+    std::vector<BodySim> sims{sim};
+    std::vector<BodyState> states{state};
+    integrateVelocities(sims, states, {0.0f, -10.0f}, 0.5f, 400.0f);
+    // v = h a + v0 / (1 + h c): x = 0.5 * 2 + 1 / 1.5, y = -5; w = h I^-1 torque = 1.
+    EXPECT_NEAR(states[0].linearVelocity.x, 1.0f + 1.0f / 1.5f, 1e-6f);
+    EXPECT_NEAR(states[0].linearVelocity.y, -5.0f, 1e-6f);
+    EXPECT_NEAR(states[0].angularVelocity, 1.0f, 1e-6f);
+
+    states[0].linearVelocity = {300.0f, 400.0f};
+    sims[0].force = {};
+    sims[0].linearDamping = 0.0f;
+    integrateVelocities(sims, states, {0.0f, 0.0f}, 0.01f, 100.0f);
+    EXPECT_NEAR(length(states[0].linearVelocity), 100.0f, 1e-3f);
+    EXPECT_NEAR(states[0].linearVelocity.x, 60.0f, 1e-3f);
+}
+
+TEST(IntegrateVelocities, LockedAxisAndKinematicIgnoreGravity) {
+    BodySim locked;
+    locked.invMass = {0.0f, 1.0f};
+    BodySim kinematic;
+    std::vector<BodySim> sims{locked, kinematic};
+    std::vector<BodyState> states(2);
+    states[1].linearVelocity = {2.0f, 0.0f};
+    integrateVelocities(sims, states, {-3.0f, -10.0f}, 0.1f, 400.0f);
+    EXPECT_EQ(states[0].linearVelocity.x, 0.0f);
+    EXPECT_NEAR(states[0].linearVelocity.y, -1.0f, 1e-6f);
+    EXPECT_EQ(states[1].linearVelocity.x, 2.0f);
+    EXPECT_EQ(states[1].linearVelocity.y, 0.0f);
+}
+
+TEST(SoftStep, BoxRestsOnTheGround) {
+    Harness h;
+    h.bodies.push_back(makeBox({0.0f, 0.5f}, 0.5f, 0.5f));
+    for (int i = 0; i < 300; ++i) {
+        h.step();
+    }
+    const PlaneBody& b = h.bodies[0];
+    // Soft contacts hold a resting box within a slop of the surface, not moving.
+    EXPECT_NEAR(b.sim.center.y, 0.5f, kLinearSlop);
+    EXPECT_NEAR(b.sim.center.x, 0.0f, 1e-5f);
+    EXPECT_NEAR(b.sim.transform.q.s, 0.0f, 1e-5f);
+    EXPECT_LT(length(b.state.linearVelocity), 1e-3f);
+    // The stored impulses carry the weight: sum = m g dt.
+    float total = b.cache.points[0].normalImpulse + b.cache.points[1].normalImpulse;
+    EXPECT_NEAR(total, 1.0f * kG * kDt / static_cast<float>(h.def.subSteps), 1e-3f);
+}
+
+TEST(SoftStep, SpeculativeContactStopsExactlyAtTheSurface) {
+    Harness h;
+    h.gravity = {0.0f, 0.0f};
+    h.bodies.push_back(makeDisc({0.0f, 0.51f}, 0.5f));
+    h.bodies[0].state.linearVelocity = {0.0f, -3.0f}; // would move 5 cm this step
+    h.step();
+    // The 1 cm gap closes and no more: the disc stops on the surface.
+    EXPECT_NEAR(h.bodies[0].sim.center.y, 0.5f, 1e-4f);
+    EXPECT_NEAR(h.bodies[0].state.linearVelocity.y, 0.0f, 1e-3f);
+}
+
+TEST(SoftStep, RestitutionReflectsThePreStepNormalVelocity) {
+    Harness h;
+    h.gravity = {0.0f, 0.0f};
+    h.material.restitution = 0.5f;
+    h.bodies.push_back(makeDisc({0.0f, 0.5f}, 0.5f));
+    h.bodies[0].state.linearVelocity = {0.0f, -4.0f};
+    h.step();
+    EXPECT_NEAR(h.bodies[0].state.linearVelocity.y, 2.0f, 1e-3f);
+
+    // Below the threshold (1 m/s) nothing bounces.
+    h.bodies[0] = makeDisc({0.0f, 0.5f}, 0.5f);
+    h.bodies[0].state.linearVelocity = {0.0f, -0.8f};
+    h.step();
+    EXPECT_NEAR(h.bodies[0].state.linearVelocity.y, 0.0f, 1e-3f);
+}
+
+TEST(SoftStep, SlidingBoxDeceleratesAtMuG) {
+    Harness h;
+    h.material.friction = 0.3f;
+    h.bodies.push_back(makeBox({0.0f, 0.5f}, 0.5f, 0.5f));
+    for (int i = 0; i < 60; ++i) {
+        h.step(); // settle
+    }
+    h.bodies[0].state.linearVelocity = {5.0f, 0.0f};
+    for (int i = 0; i < 60; ++i) {
+        h.step();
+    }
+    // v(1 s) = 5 - mu g t = 2.
+    EXPECT_NEAR(h.bodies[0].state.linearVelocity.x, 2.0f, 0.02f);
+    EXPECT_NEAR(h.bodies[0].sim.transform.q.s, 0.0f, 1e-3f);
+}
+
+TEST(SoftStep, RollingResistanceSlowsARollingDisc) {
+    Harness free;
+    Harness resisted;
+    resisted.material.rollingResistance = 0.05f;
+    for (Harness* h : {&free, &resisted}) {
+        h->bodies.push_back(makeDisc({0.0f, 0.5f}, 0.5f));
+        h->bodies[0].state.linearVelocity = {2.0f, 0.0f};
+        h->bodies[0].state.angularVelocity = -4.0f; // rolling without slipping
+        for (int i = 0; i < 60; ++i) {
+            h->step();
+        }
+    }
+    EXPECT_NEAR(free.bodies[0].state.linearVelocity.x, 2.0f, 1e-3f);
+    // Rolling resistance torque c m g about the contact on a disc with I_contact = 3/2 m r^2
+    // gives a = c g / (3/2 r) = 0.05 * 10 / 0.75 = 0.667 m/s^2.
+    EXPECT_NEAR(resisted.bodies[0].state.linearVelocity.x, 2.0f - 0.667f, 0.03f);
+}
+
+TEST(SoftStep, HeadOnElasticCollisionSwapsVelocities) {
+    // Two equal discs, A moving right at 1 m/s, B left at 1 m/s, touching along x.
+    SolverDef def;
+    BodySim a;
+    a.invMass = {1.0f, 1.0f};
+    a.invInertia = 1.0f;
+    a.center = {-0.5f, 0.0f};
+    a.center0 = a.center;
+    a.transform.p = a.center;
+    BodySim b = a;
+    b.center = {0.5f, 0.0f};
+    b.center0 = b.center;
+    b.transform.p = b.center;
+    std::vector<BodySim> sims{a, b};
+    std::vector<BodyState> states(2);
+    states[0].linearVelocity = {1.0f, 0.0f};
+    states[1].linearVelocity = {-1.0f, 0.0f};
+    Manifold m;
+    m.normal = {1.0f, 0.0f};
+    m.pointCount = 1;
+    m.points[0].anchorA = {0.5f, 0.0f};
+    m.points[0].anchorB = {-0.5f, 0.0f};
+    for (SolverMode mode : {SolverMode::SoftStep, SolverMode::Classic}) {
+        def.mode = mode;
+        std::vector<BodyState> st = states;
+        std::vector<BodySim> sm = sims;
+        ContactBodyView va{{}, st[0].linearVelocity, 0.0f, {1.0f, 1.0f}, 1.0f, 0};
+        ContactBodyView vb{{}, st[1].linearVelocity, 0.0f, {1.0f, 1.0f}, 1.0f, 1};
+        std::vector<ContactConstraint> cs(1);
+        prepareContact(cs[0], m, va, vb, {0.0f, 1.0f, 0.0f}, makeContactSoftness(def, kDt).dynamic);
+        SolverStep step{sm, st, cs, {0.0f, 0.0f}, kDt, &def};
+        if (mode == SolverMode::SoftStep) {
+            solveSoftStep(step);
+        } else {
+            solveClassic(step);
+        }
+        EXPECT_NEAR(st[0].linearVelocity.x, -1.0f, 1e-3f) << static_cast<int>(mode);
+        EXPECT_NEAR(st[1].linearVelocity.x, 1.0f, 1e-3f) << static_cast<int>(mode);
+        EXPECT_NEAR(st[0].linearVelocity.x + st[1].linearVelocity.x, 0.0f, 1e-5f);
+    }
+}
+
+TEST(Classic, BoxRestsOnTheGround) {
+    Harness h;
+    h.def.mode = SolverMode::Classic;
+    h.bodies.push_back(makeBox({0.0f, 0.5f}, 0.5f, 0.5f));
+    for (int i = 0; i < 300; ++i) {
+        h.step();
+    }
+    const PlaneBody& b = h.bodies[0];
+    // The position iterations allow a slop of overlap.
+    EXPECT_NEAR(b.sim.center.y, 0.5f, 2.0f * kLinearSlop);
+    EXPECT_NEAR(b.sim.transform.q.s, 0.0f, 1e-4f);
+    EXPECT_LT(length(b.state.linearVelocity), 0.02f);
+}
+
+TEST(Classic, OverlapIsCorrectedByPositionIterations) {
+    Harness h;
+    h.def.mode = SolverMode::Classic;
+    h.gravity = {0.0f, 0.0f};
+    h.bodies.push_back(makeBox({0.0f, 0.4f}, 0.5f, 0.5f)); // 10 cm deep
+    for (int i = 0; i < 30; ++i) {
+        h.step();
+    }
+    // Baumgarte 0.2 per iteration removes the overlap down to about a slop.
+    EXPECT_GT(h.bodies[0].sim.center.y, 0.5f - 2.0f * kLinearSlop);
+    EXPECT_LT(h.bodies[0].sim.center.y, 0.5f + kLinearSlop);
+}
+
+TEST(SoftStep, LockedAxisIsNotPushed) {
+    Harness h;
+    h.gravity = {0.0f, 0.0f};
+    h.bodies.push_back(makeDisc({0.0f, 0.45f}, 0.5f)); // 5 cm deep
+    h.bodies[0].sim.invMass.y = 0.0f;                  // y locked
+    h.bodies[0].state.linearVelocity = {1.0f, 0.0f};
+    for (int i = 0; i < 10; ++i) {
+        h.step();
+    }
+    EXPECT_EQ(h.bodies[0].sim.center.y, 0.45f);
+    EXPECT_NEAR(h.bodies[0].state.linearVelocity.y, 0.0f, 1e-6f);
+}
+
+} // namespace
+} // namespace e2d::physics::detail

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/core/error.hpp>
+#include <e2d/physics/manifold.hpp>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <string>
+
+namespace e2d::physics::test {
+
+inline constexpr float kPi = std::numbers::pi_v<float>;
+
+// Runs `f` and returns the core::Error message it threw ("" if it threw nothing).
+template <class F>
+std::string errorMessage(F&& f) {
+    try {
+        f();
+    } catch (const core::Error& e) {
+        return e.what();
+    }
+    return {};
+}
+
+inline Transform makeTransform(float x, float y, float angle) { return {{x, y}, Rot::fromAngle(angle)}; }
+
+#define E2D_EXPECT_VEC2_NEAR(actual, ex, ey, tol)                                                    \
+    do {                                                                                           \
+        const ::e2d::physics::Vec2 e2dActual_ = (actual);                                          \
+        EXPECT_NEAR(e2dActual_.x, (ex), (tol)) << #actual ".x";                                    \
+        EXPECT_NEAR(e2dActual_.y, (ey), (tol)) << #actual ".y";                                    \
+    } while (false)
+
+// The anchors of every point must match the point and the two transforms.
+inline void expectAnchorsConsistent(const Manifold& m, const Transform& xfA, const Transform& xfB) {
+    for (int i = 0; i < m.pointCount; ++i) {
+        const ManifoldPoint& mp = m.points[i];
+        E2D_EXPECT_VEC2_NEAR(mp.anchorA, mp.point.x - xfA.p.x, mp.point.y - xfA.p.y, 1e-5f);
+        E2D_EXPECT_VEC2_NEAR(mp.anchorB, mp.point.x - xfB.p.x, mp.point.y - xfB.p.y, 1e-5f);
+    }
+}
+
+} // namespace e2d::physics::test
