@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "engine.hpp"
 #include "engine_box2d.hpp"
+#include "engine_e2d.hpp"
 
 #include <sstream>
 
@@ -10,17 +11,23 @@ std::unique_ptr<Engine> makeEngine(const scenes::SceneDesc& scene, const EngineC
     if (config.engine == "box2d") {
         return makeBox2DEngine(scene, config);
     }
-    throw EngineError("engine \"" + config.engine + "\" is not available in this build (have: box2d)");
+    if (config.engine == "e2d") {
+        return makeE2dEngine(scene, config);
+    }
+    throw EngineError("engine \"" + config.engine + "\" is not available in this build (have: box2d, e2d)");
 }
 
 std::string translationNotes(const EngineConfig& config) {
     if (config.engine == "box2d") {
         return box2DNotes();
     }
+    if (config.engine == "e2d") {
+        return e2dNotes();
+    }
     return "engine \"" + config.engine + "\" is not available in this build";
 }
 
-std::vector<std::string> availableEngines() { return {"box2d"}; }
+std::vector<std::string> availableEngines() { return {"box2d", "e2d"}; }
 
 std::string EngineConfig::family() const {
     if (engine == "e2d") {
@@ -34,10 +41,12 @@ std::string EngineConfig::describe() const {
     const char* on = "on";
     const char* off = "off";
     if (engine == "e2d" && solver == "soft") {
-        out << "sub-steps " << subSteps << ", relax " << relaxIterations << ", speculative "
-            << speculativeDistance << " m";
+        out << "sub-steps " << subSteps << ", extra relax " << relaxIterations;
     } else {
         out << "vel " << velocityIterations << ", pos " << positionIterations;
+    }
+    if (engine == "e2d") {
+        out << ", speculative " << speculativeDistance << " m";
     }
     out << ", ccd " << (continuous ? on : off) << ", sleep " << (sleeping ? on : off);
     if (!warmStarting) {

@@ -22,7 +22,7 @@ struct EngineConfig {
     int velocityIterations = 8;     ///< Box2D and e2d classic
     int positionIterations = 3;     ///< Box2D and e2d classic
     int subSteps = 4;               ///< e2d soft
-    int relaxIterations = 1;        ///< e2d soft
+    int relaxIterations = 0;        ///< e2d soft: extra relax iterations per sub-step
     float speculativeDistance = 0.02f; ///< e2d, metres
     bool continuous = true;         ///< CCD for fast/bullet bodies
     bool sleeping = true;
