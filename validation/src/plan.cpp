@@ -45,24 +45,28 @@ std::vector<std::pair<std::string, EngineConfig>> sweepPoints(const EngineConfig
     if (level == SweepLevel::None) {
         return out;
     }
+    // Sleeping off: a scene that falls asleep steps for free, which would credit the cost
+    // axis with how soon it sleeps instead of what the solver costs.
+    EngineConfig awake = baseline;
+    awake.sleeping = false;
     const bool subSteps = baseline.engine == "e2d" && baseline.solver == "soft";
     if (subSteps) {
         const std::vector<int> full{1, 2, 4, 8, 16};
         const std::vector<int> quick{1, 4};
         for (int n : level == SweepLevel::Full ? full : quick) {
-            EngineConfig c = baseline;
+            EngineConfig c = awake;
             c.subSteps = n;
-            out.emplace_back("sub-steps " + std::to_string(n), c);
+            out.emplace_back(effortLabel(c), c);
         }
     } else {
         // Velocity iterations do most of the work; position iterations grow slowly with them.
         const std::vector<std::pair<int, int>> full{{1, 1}, {2, 1}, {4, 2}, {8, 3}, {16, 6}, {32, 10}};
         const std::vector<std::pair<int, int>> quick{{2, 1}, {8, 3}};
         for (auto [v, p] : level == SweepLevel::Full ? full : quick) {
-            EngineConfig c = baseline;
+            EngineConfig c = awake;
             c.velocityIterations = v;
             c.positionIterations = p;
-            out.emplace_back("vel " + std::to_string(v) + ", pos " + std::to_string(p), c);
+            out.emplace_back(effortLabel(c), c);
         }
     }
     return out;
@@ -70,13 +74,16 @@ std::vector<std::pair<std::string, EngineConfig>> sweepPoints(const EngineConfig
 
 std::vector<std::pair<std::string, EngineConfig>> featureVariants(const EngineConfig& baseline) {
     std::vector<std::pair<std::string, EngineConfig>> out;
+    // Against the sleep-off reference at the baseline's effort (a sweep point), for the same
+    // reason as the sweep; sleeping itself is judged by the baseline run.
+    EngineConfig awake = baseline;
+    awake.sleeping = false;
     auto add = [&](const std::string& label, auto&& change) {
-        EngineConfig c = baseline;
+        EngineConfig c = awake;
         change(c);
         out.emplace_back(label, c);
     };
     add("ccd off", [](EngineConfig& c) { c.continuous = false; });
-    add("sleep off", [](EngineConfig& c) { c.sleeping = false; });
     if (baseline.engine == "box2d") {
         // e2d always warm starts; Box2D 2.4 can switch it off.
         add("warm start off", [](EngineConfig& c) { c.warmStarting = false; });
@@ -90,6 +97,14 @@ std::vector<std::pair<std::string, EngineConfig>> featureVariants(const EngineCo
         add("speculative 0.04", [](EngineConfig& c) { c.speculativeDistance = 0.04f; });
     }
     return out;
+}
+
+std::string effortLabel(const EngineConfig& c) {
+    if (c.engine == "e2d" && c.solver == "soft") {
+        return "sub-steps " + std::to_string(c.subSteps);
+    }
+    return "vel " + std::to_string(c.velocityIterations) + ", pos " +
+           std::to_string(c.positionIterations);
 }
 
 std::vector<RunSpec> makePlan(const std::vector<Scenario>& scenarios,
@@ -107,10 +122,7 @@ std::vector<RunSpec> makePlan(const std::vector<Scenario>& scenarios,
                 continue;
             }
             for (auto& [label, config] : sweepPoints(base, level)) {
-                // The baseline already is this point: do not run it twice.
-                if (!(config == base)) {
-                    plan.push_back({i, RunRole::Sweep, config, label});
-                }
+                plan.push_back({i, RunRole::Sweep, config, label});
             }
             // Feature switches on one collision algorithm per mode: SAT against GJK is already
             // its own curve.

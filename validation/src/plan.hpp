@@ -17,6 +17,9 @@ enum class RunRole {
 
 [[nodiscard]] const char* runRoleName(RunRole role);
 
+/// The solver-effort label of a configuration ("vel 8, pos 3", "sub-steps 4").
+[[nodiscard]] std::string effortLabel(const EngineConfig& config);
+
 struct RunSpec {
     int scenario = 0;        ///< index into the scenario list
     RunRole role = RunRole::Baseline;
@@ -31,12 +34,13 @@ enum class SweepLevel { None, Quick, Full };
 /// at that engine's defaults (Box2D: 8 velocity and 3 position iterations).
 [[nodiscard]] std::vector<EngineConfig> baselineConfigs(const std::vector<std::string>& engines);
 
-/// Sweep points of one baseline: the solver effort (iterations or sub-steps) from low to high.
-/// The same points for every scenario: nothing is tuned per scenario.
+/// Sweep points of one baseline: the solver effort (iterations or sub-steps) from low to high,
+/// with sleeping off. The same points for every scenario: nothing is tuned per scenario.
 [[nodiscard]] std::vector<std::pair<std::string, EngineConfig>> sweepPoints(
     const EngineConfig& baseline, SweepLevel level);
 
-/// The baseline with one optional feature switched, labelled ("ccd off", "sleep off", ...).
+/// The baseline with sleeping off and one optional feature switched, labelled ("ccd off",
+/// "speculative 0", ...). Compared with the sweep point at the baseline's effort.
 [[nodiscard]] std::vector<std::pair<std::string, EngineConfig>> featureVariants(
     const EngineConfig& baseline);
 

@@ -48,9 +48,6 @@ struct SummaryCell {
 /// summary[scenario index][family] for the baseline runs.
 [[nodiscard]] std::vector<std::map<std::string, SummaryCell>> summaryTable(const Report& report);
 
-/// The solver-effort label of a configuration ("vel 8, pos 3", "sub-steps 4").
-[[nodiscard]] std::string effortLabel(const EngineConfig& config);
-
 /// One point of a family's speed-against-error curve: summed over the family's swept
 /// scenarios.
 struct SweepPoint {
@@ -65,8 +62,9 @@ struct SweepPoint {
 [[nodiscard]] std::map<std::string, std::map<std::string, std::vector<SweepPoint>>> sweepCurves(
     const Report& report);
 
-/// The effect of one feature switch on a scenario family, against the baseline runs of the
-/// same scenarios.
+/// The effect of one feature switch on a scenario family, against the reference runs of the
+/// same scenarios: the sweep point at the baseline's effort (sleeping off). The "sleep on" row
+/// is the baseline run itself against that reference.
 struct FeatureCost {
     std::string feature;
     double baselineMs = 0.0;

@@ -45,46 +45,17 @@ std::vector<std::map<std::string, SummaryCell>> summaryTable(const Report& repor
     return table;
 }
 
-std::string effortLabel(const EngineConfig& c) {
-    if (c.engine == "e2d" && c.solver == "soft") {
-        return "sub-steps " + std::to_string(c.subSteps);
-    }
-    return "vel " + std::to_string(c.velocityIterations) + ", pos " +
-           std::to_string(c.positionIterations);
-}
-
-namespace {
-
-// The baseline configuration of a family, with default features: only runs that differ from
-// it in effort belong on the sweep curve.
-bool sameFeatures(const EngineConfig& a, const EngineConfig& b) {
-    return a.continuous == b.continuous && a.sleeping == b.sleeping &&
-           a.warmStarting == b.warmStarting && a.relaxIterations == b.relaxIterations &&
-           a.speculativeDistance == b.speculativeDistance;
-}
-
-} // namespace
-
 std::map<std::string, std::map<std::string, std::vector<SweepPoint>>> sweepCurves(
     const Report& report) {
     // family -> engine -> label -> points; only scenarios that have the whole sweep count, so
     // every point of a curve sums the same scenarios.
     std::map<std::string, std::map<std::string, std::map<std::string, SweepPoint>>> acc;
-    std::map<std::string, const EngineConfig*> baselines;
-    for (const RunResult& r : report.runs) {
-        if (r.spec.role == RunRole::Baseline) {
-            baselines.emplace(r.spec.config.family(), &r.spec.config);
-        }
-    }
     for (const RunResult& r : report.runs) {
         const Scenario& s = report.scenarios[static_cast<std::size_t>(r.spec.scenario)];
-        if (!s.sweep || r.spec.role == RunRole::Feature) {
+        if (r.spec.role != RunRole::Sweep) {
             continue;
         }
         const std::string engine = r.spec.config.family();
-        if (!sameFeatures(r.spec.config, *baselines[engine])) {
-            continue;
-        }
         SweepPoint& p = acc[s.family][engine][effortLabel(r.spec.config)];
         p.label = effortLabel(r.spec.config);
         p.effort = r.spec.config.engine == "e2d" && r.spec.config.solver == "soft"
@@ -118,31 +89,41 @@ std::map<std::string, std::map<std::string, std::vector<SweepPoint>>> sweepCurve
 
 std::map<std::string, std::map<std::string, std::vector<FeatureCost>>> featureCosts(
     const Report& report) {
-    // Baseline of each (scenario, engine family).
-    std::map<std::pair<int, std::string>, const RunResult*> base;
+    // Reference of each (scenario, engine family): the sweep point at the baseline's effort.
+    std::map<std::pair<int, std::string>, const RunResult*> baselines;
     for (const RunResult& r : report.runs) {
         if (r.spec.role == RunRole::Baseline) {
-            base[{r.spec.scenario, r.spec.config.family()}] = &r;
+            baselines[{r.spec.scenario, r.spec.config.family()}] = &r;
+        }
+    }
+    std::map<std::pair<int, std::string>, const RunResult*> reference;
+    std::set<std::pair<int, std::string>> featured;
+    for (const RunResult& r : report.runs) {
+        const std::pair<int, std::string> key{r.spec.scenario, r.spec.config.family()};
+        auto b = baselines.find(key);
+        if (r.spec.role == RunRole::Sweep && b != baselines.end() &&
+            effortLabel(r.spec.config) == effortLabel(b->second->spec.config)) {
+            reference[key] = &r;
+        }
+        if (r.spec.role == RunRole::Feature) {
+            featured.insert(key);
         }
     }
     std::map<std::string, std::map<std::string, std::map<std::string, FeatureCost>>> acc;
-    std::vector<std::string> order;
-    for (const RunResult& r : report.runs) {
-        if (r.spec.role != RunRole::Feature) {
-            continue;
-        }
+    std::vector<std::string> order{"sleep on"};
+    auto add = [&](const RunResult& r, const std::string& feature) {
         const std::string engine = r.spec.config.family();
-        auto it = base.find({r.spec.scenario, engine});
-        if (it == base.end()) {
-            continue;
+        auto it = reference.find({r.spec.scenario, engine});
+        if (it == reference.end()) {
+            return;
         }
         const RunResult& b = *it->second;
         const Scenario& s = report.scenarios[static_cast<std::size_t>(r.spec.scenario)];
-        FeatureCost& c = acc[s.family][engine][r.spec.variant];
-        if (std::find(order.begin(), order.end(), r.spec.variant) == order.end()) {
-            order.push_back(r.spec.variant);
+        FeatureCost& c = acc[s.family][engine][feature];
+        if (std::find(order.begin(), order.end(), feature) == order.end()) {
+            order.push_back(feature);
         }
-        c.feature = r.spec.variant;
+        c.feature = feature;
         c.baselineMs += b.metrics.msMedian;
         c.ms += r.metrics.msMedian;
         c.baselineError += b.normalizedError;
@@ -150,6 +131,15 @@ std::map<std::string, std::map<std::string, std::vector<FeatureCost>>> featureCo
         c.baselineFailed += b.passed ? 0 : 1;
         c.failed += r.passed ? 0 : 1;
         c.scenarios += 1;
+    };
+    for (const RunResult& r : report.runs) {
+        if (r.spec.role == RunRole::Feature) {
+            add(r, r.spec.variant);
+        } else if (r.spec.role == RunRole::Baseline &&
+                   featured.contains({r.spec.scenario, r.spec.config.family()})) {
+            // Sleeping is judged by the baseline itself (sleep on) against the reference.
+            add(r, "sleep on");
+        }
     }
     std::map<std::string, std::map<std::string, std::vector<FeatureCost>>> out;
     for (auto& [family, engines] : acc) {

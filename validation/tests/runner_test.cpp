@@ -125,9 +125,13 @@ TEST(Plan, BaselineSweepAndFeatures) {
         }
     }
     EXPECT_EQ(baselines, 2);
-    // Six sweep points, one of which (8, 3) is the baseline itself.
-    EXPECT_EQ(sweeps, 5);
-    EXPECT_EQ(features, 3);
+    // Six sweep points (sleeping off, so (8, 3) is not the baseline); ccd and warm starting
+    // switched off against it.
+    EXPECT_EQ(sweeps, 6);
+    EXPECT_EQ(features, 2);
+    for (const RunSpec& r : plan) {
+        EXPECT_EQ(r.config.sleeping, r.role == RunRole::Baseline);
+    }
 }
 
 TEST(Runner, ParallelResultsComeBackInPlanOrder) {
