@@ -18,7 +18,7 @@ Scenario shipped(const std::string& name) {
 
 Report smallReport() {
     Report report;
-    report.scenarios = {shipped("stack_5"), shipped("drop_e05"), shipped("slope_slide")};
+    report.scenarios = {shipped("stack_5"), shipped("drop_e050"), shipped("slope_slide")};
     report.runs = runPlan(report.scenarios,
                           makePlan(report.scenarios, {"box2d"}, SweepLevel::Quick, true), 2, {});
     report.env = collectEnvironment();
@@ -91,7 +91,7 @@ TEST(ReportHtml, IsSelfContainedAndBalanced) {
 // The summary marks an e2d run red when it does worse than Box2D on the same scenario.
 TEST(ReportModel, E2dWorseThanBox2DIsFlagged) {
     Report report;
-    report.scenarios = {shipped("stack_5"), shipped("drop_e05")};
+    report.scenarios = {shipped("stack_5"), shipped("drop_e050")};
     auto run = [](int scenario, const std::string& engine, bool passed, double error) {
         RunResult r;
         r.spec.scenario = scenario;

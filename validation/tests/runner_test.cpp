@@ -135,7 +135,7 @@ TEST(Plan, BaselineSweepAndFeatures) {
 }
 
 TEST(Runner, ParallelResultsComeBackInPlanOrder) {
-    std::vector<Scenario> scenarios{shipped("drop_e05"), shipped("elastic_impact")};
+    std::vector<Scenario> scenarios{shipped("drop_e050"), shipped("elastic_impact")};
     const std::vector<RunSpec> plan = makePlan(scenarios, {"box2d"}, SweepLevel::Quick, false);
     int calls = 0;
     const std::vector<RunResult> results =
