@@ -6,6 +6,7 @@
 #include <e2d/physics/world.hpp>
 
 #include <algorithm>
+#include <sstream>
 #include <vector>
 
 namespace e2d::validation {
@@ -133,11 +134,35 @@ private:
 } // namespace
 
 std::string e2dNotes() {
-    return "e2d physics::World: shapes as the scene gives them (no skin); boxes are 4-vertex "
-           "polygons, capsules and segments are native; speculative contacts within the "
-           "speculative distance; restitution threshold 1 m/s; friction mixed as sqrt(f1 f2), "
-           "restitution as max(e1, e2) (the same rules as Box2D); soft step: contact stiffness "
-           "30 Hz, damping ratio 10, push-out at most 3 m/s; linear speed capped at 400 m/s.";
+    // Read from the defaults, so the notes follow the library.
+    const ph::SolverDef d;
+    const ph::WorldDef w;
+    auto rule = [](ph::MixingRule r) {
+        switch (r) {
+        case ph::MixingRule::GeometricMean:
+            return "sqrt(a b)";
+        case ph::MixingRule::Average:
+            return "(a + b) / 2";
+        case ph::MixingRule::Min:
+            return "min(a, b)";
+        case ph::MixingRule::Max:
+            return "max(a, b)";
+        case ph::MixingRule::Multiply:
+            return "a b";
+        }
+        return "?";
+    };
+    std::ostringstream out;
+    out << "e2d physics::World: shapes as the scene gives them (no skin); boxes are 4-vertex "
+           "polygons, capsules and segments are native; speculative contacts within "
+        << w.speculativeDistance << " m; restitution threshold " << d.restitutionThreshold
+        << " m/s; friction mixed as " << rule(d.frictionMixing) << ", restitution as "
+        << rule(d.restitutionMixing) << "; soft step: contact stiffness " << d.contactHertz
+        << " Hz, damping ratio " << d.contactDampingRatio << ", push-out at most "
+        << d.contactPushMaxSpeed << " m/s; linear speed capped at " << d.maxLinearSpeed
+        << " m/s; sleep after " << d.timeToSleep << " s below " << d.linearSleepTolerance
+        << " m/s.";
+    return out.str();
 }
 
 std::unique_ptr<Engine> makeE2dEngine(const scenes::SceneDesc& scene, const EngineConfig& config) {
