@@ -79,8 +79,8 @@ function(e2d_add_tests lib)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES;LABELS" ${ARGN})
   set(target e2d_${lib}_tests)
   add_executable(${target} ${ARG_SOURCES})
-  target_link_libraries(${target} PRIVATE e2d::${lib} ${ARG_LIBRARIES} GTest::gtest_main
-    e2d_warnings)
+  target_link_libraries(${target} PRIVATE e2d::${lib} ${ARG_LIBRARIES} GTest::gmock
+    GTest::gtest_main e2d_warnings)
   target_include_directories(${target} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/src)
   gtest_discover_tests(${target}
     DISCOVERY_MODE PRE_TEST

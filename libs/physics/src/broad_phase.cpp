@@ -46,7 +46,12 @@ int BroadPhase::createProxy(const Aabb& aabb, BodyType type, std::uint64_t categ
     const int proxyId = tree.createProxy(fatten(aabb, type), categoryBits, userData);
     const int key = makeProxyKey(proxyId, type);
     if (static_cast<std::size_t>(key) >= infos_.size()) {
-        infos_.resize(static_cast<std::size_t>(key) + 1 + infos_.size() / 2);
+        try {
+            infos_.resize(static_cast<std::size_t>(key) + 1 + infos_.size() / 2);
+        } catch (...) {
+            tree.destroyProxy(proxyId); // leave the broad phase as it was
+            throw;
+        }
     }
     info(key) = ProxyInfo{};
     bufferMove(key);

@@ -107,9 +107,7 @@ private:
         int moveIndex = -1; // index in moveBuffer_, -1 when not buffered
     };
 
-    static std::size_t treeIndex(int proxyKey) {
-        return static_cast<std::size_t>(proxyKey & 3);
-    }
+    static std::size_t treeIndex(int proxyKey) { return static_cast<std::size_t>(proxyKey & 3); }
     ProxyInfo& info(int proxyKey) { return infos_[static_cast<std::size_t>(proxyKey)]; }
     [[nodiscard]] bool isMoved(int proxyKey) const {
         return infos_[static_cast<std::size_t>(proxyKey)].moveIndex >= 0;
@@ -159,8 +157,7 @@ void BroadPhase::updatePairs(ShouldPair&& shouldPair) {
                     if (!shouldPair(a, b)) {
                         return;
                     }
-                    newPairs_.push_back(
-                        {a, b, mineIsA ? key : otherKey, mineIsA ? otherKey : key});
+                    newPairs_.push_back({a, b, mineIsA ? key : otherKey, mineIsA ? otherKey : key});
                 });
         };
         switch (type) {
@@ -184,7 +181,8 @@ void BroadPhase::updatePairs(ShouldPair&& shouldPair) {
 
     // Query order depends on tree shape; sorted pairs (and insertion in that order) do not.
     std::sort(newPairs_.begin(), newPairs_.end(), [](const ProxyPair& x, const ProxyPair& y) {
-        return x.userDataA < y.userDataA || (x.userDataA == y.userDataA && x.userDataB < y.userDataB);
+        return x.userDataA < y.userDataA ||
+               (x.userDataA == y.userDataA && x.userDataB < y.userDataB);
     });
     for (const ProxyPair& p : newPairs_) {
         pairs_.insert({makePairKey(p.userDataA, p.userDataB), p.proxyKeyA, p.proxyKeyB});

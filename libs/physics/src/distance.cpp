@@ -301,7 +301,8 @@ GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache, float limit, Vec2 
         // is no farther towards the origin than the simplex, up to rounding.
         float gain = reach - dot(s.v[0].w, d);
         float scale2 = std::fmax(lengthSquared(v.w), lengthSquared(s.v[0].w));
-        if (gain <= 0.0f || gain * gain <= 1.0e-12f * scale2 * dd) {
+        if (gain <= 0.0f ||
+            gain * gain <= kGjkRelativeTolerance * kGjkRelativeTolerance * scale2 * dd) {
             break;
         }
         s.v[s.count] = v;

@@ -27,14 +27,22 @@ Hull computeHull(std::span<const Vec2> points, const char* function) {
     }
 
     // Weld first so that near-duplicates can neither create sliver edges nor hide the fact
-    // that there are fewer than 3 distinct points. Quadratic, but hulls are built once per
-    // shape from a handful of points; this is not hot code.
+    // that there are fewer than 3 distinct points. Sorted by x, a point can only weld to kept
+    // points less than kLinearSlop to its left, so the scan stays short even for big clouds.
+    std::vector<Vec2> sorted(points.begin(), points.end());
+    std::sort(sorted.begin(), sorted.end(),
+              [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     std::vector<Vec2> unique;
-    unique.reserve(points.size());
+    unique.reserve(sorted.size());
     constexpr float kWeldSquared = kLinearSlop * kLinearSlop;
-    for (Vec2 p : points) {
-        bool welded = std::any_of(unique.begin(), unique.end(),
-                                  [&](Vec2 q) { return distanceSquared(p, q) < kWeldSquared; });
+    for (Vec2 p : sorted) {
+        bool welded = false;
+        for (std::size_t k = unique.size(); k-- > 0 && p.x - unique[k].x < kLinearSlop;) {
+            if (distanceSquared(p, unique[k]) < kWeldSquared) {
+                welded = true;
+                break;
+            }
+        }
         if (!welded) {
             unique.push_back(p);
         }
@@ -45,9 +53,8 @@ Hull computeHull(std::span<const Vec2> points, const char* function) {
                            std::to_string(unique.size()));
     }
 
-    // Andrew's monotone chain; exact collinear points are dropped by the <= 0 test.
-    std::sort(unique.begin(), unique.end(),
-              [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    // Andrew's monotone chain over the x-sorted points; exact collinear points are dropped by
+    // the <= 0 test.
     std::vector<Vec2> hull(2 * unique.size());
     std::size_t k = 0;
     for (Vec2 p : unique) {

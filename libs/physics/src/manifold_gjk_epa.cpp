@@ -6,6 +6,7 @@
 #include "polygon_clip.hpp"
 
 #include <cfloat>
+#include <cmath>
 
 namespace e2d::physics {
 
@@ -14,12 +15,6 @@ namespace {
 // Below this core distance (metres) GJK's normal is built from two nearly equal points and is
 // too inaccurate to pick a face; EPA from the touching simplex gives the face normal instead.
 constexpr float kUseEpaBelow = 10.0f * kEpaTolerance;
-// The next three match the separating-axis routine (manifold_sat.cpp), so that both algorithms
-// make the same decisions: the bias towards A's face, the face separation above which the
-// closest features decide, and the cosine above which the closest direction is a face normal.
-constexpr float kFlipTolerance = 0.1f * kLinearSlop;
-constexpr float kSeparatedCores = 0.1f * kLinearSlop;
-constexpr float kFaceCosine = 0.999f;
 
 // Separation of `other` from edge `edge` of `poly`, both in one frame: how far the deepest
 // vertex of `other` lies in front of the edge (negative when it is behind it).
@@ -144,7 +139,9 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
         }
     }
 
-    const bool flip = faceB.separation > faceA.separation + kFlipTolerance;
+    // Reference face, corner contacts: decided as in the separating-axis routine (the shared
+    // tolerances of manifold_detail.hpp), so that both algorithms agree.
+    const bool flip = faceB.separation > faceA.separation + detail::kFlipTolerance;
     const float separation = flip ? faceB.separation : faceA.separation;
     if (separation > limit) {
         return Manifold{};
@@ -162,7 +159,8 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
         referenceNormal = a.normals[edgeA];
     }
 
-    if (separated && separation > kSeparatedCores && dot(direction, referenceNormal) < kFaceCosine) {
+    if (separated && separation > detail::kSeparatedCores &&
+        std::fabs(cross(referenceNormal, gjk.pointB - gjk.pointA)) > detail::kFaceOffset) {
         // Separated at a corner: the face separation underestimates the gap, so the closest
         // points give a single point with the true distance and direction.
         Manifold m;

@@ -42,30 +42,9 @@ EdgeSeparation findMaxSeparation(const Polygon& poly1, const Polygon& poly2, flo
     return best;
 }
 
-} // namespace
-
-Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
-                         const Transform& xfB, float margin) {
-    // Work in A's frame, relative to A's first vertex: B is moved once, and coordinates stay
-    // small however far the bodies are from the world origin.
-    const Vec2 origin = a.vertices[0];
-    const Transform xf = invMulTransforms(xfA, xfB);
-    Polygon localA;
-    localA.count = a.count;
-    localA.radius = a.radius;
-    for (int i = 0; i < a.count; ++i) {
-        localA.vertices[i] = a.vertices[i] - origin;
-        localA.normals[i] = a.normals[i];
-    }
-    Polygon localB;
-    localB.count = b.count;
-    localB.radius = b.radius;
-    for (int i = 0; i < b.count; ++i) {
-        localB.vertices[i] = transformPoint(xf, b.vertices[i]) - origin;
-        localB.normals[i] = rotate(xf.q, b.normals[i]);
-    }
-
-    const float radius = a.radius + b.radius;
+// The SAT manifold of two polygons given in one frame; each point's `point` is in that frame.
+Manifold collideInFrame(const Polygon& localA, const Polygon& localB, float margin) {
+    const float radius = localA.radius + localB.radius;
     const float limit = margin + radius;
     const EdgeSeparation sepA = findMaxSeparation(localA, localB, limit);
     if (sepA.separation > limit) {
@@ -118,17 +97,50 @@ Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& 
             int feature1 = sd.fraction1 < 0.5f ? i11 : i12;
             int feature2 = sd.fraction2 < 0.5f ? i21 : i22;
             ManifoldPoint& mp = m.points[0];
-            mp.point = 0.5f * (c1 + c2) + origin;
+            mp.point = 0.5f * (c1 + c2);
             mp.separation = distance - radius;
             mp.id = flip ? makeFeatureId(feature2, feature1) : makeFeatureId(feature1, feature2);
             m.normal = flip ? -w : w;
             m.pointCount = 1;
-            return detail::localToWorld(m, xfA, xfB);
+            return m;
         }
     }
+    return detail::clipPolygons(localA, localB, flip ? incident : edge1, flip ? edge1 : incident,
+                                flip, margin);
+}
 
-    m = detail::clipPolygons(localA, localB, flip ? incident : edge1, flip ? edge1 : incident, flip,
-                             margin);
+// Beyond this distance (metres) of A's first vertex from A's origin, the work moves to a
+// frame at that vertex: coordinates relative to A's origin would lose precision (float ulp is
+// 8e-6 m at 100 m). Below it, copying A to shift it costs more than it gains.
+constexpr float kShiftSquared = 100.0f * 100.0f;
+
+} // namespace
+
+Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
+                         const Transform& xfB, float margin) {
+    // Work in A's frame: B is moved there once.
+    const Vec2 origin = a.vertices[0];
+    const bool shift = lengthSquared(origin) > kShiftSquared;
+    Transform frame = xfA;
+    if (shift) {
+        frame.p = transformPoint(xfA, origin);
+    }
+    const Transform xf = invMulTransforms(frame, xfB);
+    Polygon localB;
+    localB.count = b.count;
+    localB.radius = b.radius;
+    for (int i = 0; i < b.count; ++i) {
+        localB.vertices[i] = transformPoint(xf, b.vertices[i]);
+        localB.normals[i] = rotate(xf.q, b.normals[i]);
+    }
+    if (!shift) {
+        return detail::localToWorld(collideInFrame(a, localB, margin), xfA, xfB);
+    }
+    Polygon localA = a;
+    for (int i = 0; i < a.count; ++i) {
+        localA.vertices[i] = a.vertices[i] - origin;
+    }
+    Manifold m = collideInFrame(localA, localB, margin);
     for (int i = 0; i < m.pointCount; ++i) {
         m.points[i].point += origin;
     }

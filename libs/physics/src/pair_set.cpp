@@ -2,7 +2,6 @@
 #include "pair_set.hpp"
 
 #include <cstddef>
-#include <utility>
 
 namespace e2d::physics::detail {
 
@@ -85,7 +84,8 @@ bool PairSet::erase(std::uint64_t key, PairEntry* removed) {
             break;
         }
         const std::size_t home = static_cast<std::size_t>(hash(slots_[j].key)) & mask;
-        const bool homeInRange = hole <= j ? (hole < home && home <= j) : (hole < home || home <= j);
+        const bool homeInRange =
+            hole <= j ? (hole < home && home <= j) : (hole < home || home <= j);
         if (!homeInRange) {
             slots_[hole] = slots_[j];
             hole = j;

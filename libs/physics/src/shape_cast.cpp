@@ -54,6 +54,7 @@ CastOutput shapeCast(const ShapeCastPairInput& input) {
             return output;
         }
     }
+    output.fraction = t; // no convergence: how far B is known to move freely
     return output;
 }
 

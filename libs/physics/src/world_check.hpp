@@ -14,7 +14,13 @@
 namespace e2d::physics::detail::world_check {
 
 inline std::string text(float x) { return formatFloat(x); }
-inline std::string text(Vec2 v) { return formatVec(v); }
+// Appends instead of `"(" + std::string`: g++ 12 at -O3 reports a false -Wrestrict inside
+// operator+(const char*, std::string&&) (GCC bug 105329).
+inline std::string text(Vec2 v) {
+    std::string out = "(";
+    out.append(formatFloat(v.x)).append(", ").append(formatFloat(v.y)).append(")");
+    return out;
+}
 
 [[noreturn]] inline void fail(const char* function, const std::string& what) {
     throw core::Error(std::string("physics::World::") + function + "(): " + what);

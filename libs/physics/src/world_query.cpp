@@ -33,6 +33,12 @@ void checkRay(const char* function, Vec2 origin, Vec2 translation) {
         check::fail(function,
                     "translation must be finite and non-zero, got " + check::text(translation));
     }
+    // Beyond kHuge nothing can be hit, and the end point must stay representable.
+    if (!check::isWithinHuge(origin + translation)) {
+        check::fail(function, "origin + translation must be within kHuge (" +
+                                  check::text(kHuge) + " m), got " +
+                                  check::text(origin + translation));
+    }
 }
 
 void checkBox(const char* function, const Aabb& box) {

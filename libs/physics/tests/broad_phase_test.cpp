@@ -152,7 +152,8 @@ TEST(BroadPhase, NeverPairsStaticWithStaticNorKinematicWithoutDynamic) {
         return true;
     });
     // The dynamic box pairs with all four, once each, lower userData first.
-    const std::vector<std::pair<std::uint64_t, std::uint64_t>> expected{{0, 4}, {1, 4}, {2, 4}, {3, 4}};
+    const std::vector<std::pair<std::uint64_t, std::uint64_t>> expected{
+        {0, 4}, {1, 4}, {2, 4}, {3, 4}};
     std::sort(asked.begin(), asked.end());
     EXPECT_EQ(asked, expected);
     ASSERT_EQ(bp.newPairs().size(), 4u);
@@ -322,7 +323,8 @@ TEST(BroadPhase, SameInputsGiveTheSamePairsInTheSameOrder) {
                 trace.push_back(p.userDataA << 32 | p.userDataB);
             }
             bp.prunePairs();
-            bp.forEachPair([&](const ProxyPair& p) { trace.push_back(p.userDataA << 32 | p.userDataB); });
+            bp.forEachPair(
+                [&](const ProxyPair& p) { trace.push_back(p.userDataA << 32 | p.userDataB); });
         }
         return trace;
     };

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 namespace e2d::physics {
@@ -127,6 +128,22 @@ TEST(Hull, EightPointsAreAllowedNineAreNot) {
         cloud.push_back(p);
     }
     EXPECT_EQ(computeHull(cloud).count, 6);
+}
+
+TEST(Hull, LargeCloudInsideAHexagon) {
+    // 50 000 points inside the unit disc, many of them within kLinearSlop of each other, and a
+    // hexagon of radius 2 around them: the hull is the hexagon.
+    std::vector<Vec2> cloud = regularPolygon(6, 2.0f);
+    std::mt19937 rng(7);
+    for (int i = 0; i < 50000; ++i) {
+        float a = 6.2831853f * static_cast<float>(rng() % 100000u) / 100000.0f;
+        float r = static_cast<float>(rng() % 1000u) / 1000.0f;
+        cloud.push_back({r * std::cos(a), r * std::sin(a)});
+    }
+    Hull hull = computeHull(cloud);
+    ASSERT_EQ(hull.count, 6);
+    expectStrictlyConvexCcw(hull);
+    EXPECT_NEAR(signedArea(hull), 1.5f * std::sqrt(3.0f) * 4.0f, 1e-4f);
 }
 
 TEST(Hull, MakePolygonNamesItselfInErrors) {

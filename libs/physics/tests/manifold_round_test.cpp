@@ -4,7 +4,10 @@
 
 #include "geometry_test_util.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <random>
+#include <vector>
 
 namespace e2d::physics {
 namespace {
@@ -225,6 +228,40 @@ TEST(CollideSegments, SegmentAgainstCircleCapsuleAndPolygon) {
             EXPECT_NEAR(m.points[i].separation, -0.01f, 1e-6f);
             EXPECT_NEAR(std::fabs(m.points[i].point.x - 2.0f), 0.5f, 1e-6f);
         }
+    }
+}
+
+std::vector<std::uint16_t> sortedIds(const Manifold& m) {
+    std::vector<std::uint16_t> ids;
+    for (int i = 0; i < m.pointCount; ++i) {
+        ids.push_back(m.points[i].id);
+    }
+    std::sort(ids.begin(), ids.end());
+    return ids;
+}
+
+TEST(CapsuleContacts, IdsStayTheSameUnderSmallMotions) {
+    // A capsule lying on a box, and on another capsule, nudged by small random motions.
+    Polygon ground = makeBox(3.0f, 0.5f);
+    Capsule lower{{-2.0f, 0.0f}, {2.0f, 0.0f}, 0.25f};
+    Capsule capsule{{-1.0f, 0.0f}, {1.0f, 0.0f}, 0.25f};
+    Manifold onBox = collidePolygonAndCapsule(ground, kIdentity, capsule, makeTransform(0.0f, 0.74f, 0.0f));
+    Manifold onCapsule = collideCapsules(lower, kIdentity, capsule, makeTransform(0.0f, 0.49f, 0.0f));
+    ASSERT_EQ(onBox.pointCount, 2);
+    ASSERT_EQ(onCapsule.pointCount, 2);
+    std::mt19937 rng(42);
+    auto uniform = [&](float lo, float hi) {
+        return lo + (hi - lo) * static_cast<float>(rng() - rng.min()) /
+                        static_cast<float>(rng.max() - rng.min());
+    };
+    for (int trial = 0; trial < 100; ++trial) {
+        float dx = uniform(-0.02f, 0.02f), dy = uniform(-0.004f, 0.004f), angle = uniform(-0.002f, 0.002f);
+        Manifold m = collidePolygonAndCapsule(ground, kIdentity, capsule, makeTransform(dx, 0.74f + dy, angle));
+        ASSERT_EQ(m.pointCount, 2) << trial;
+        EXPECT_EQ(sortedIds(m), sortedIds(onBox)) << trial;
+        m = collideCapsules(lower, kIdentity, capsule, makeTransform(dx, 0.49f + dy, angle));
+        ASSERT_EQ(m.pointCount, 2) << trial;
+        EXPECT_EQ(sortedIds(m), sortedIds(onCapsule)) << trial;
     }
 }
 

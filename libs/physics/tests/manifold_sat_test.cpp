@@ -89,6 +89,23 @@ TEST(CollidePolygons, DeepPenetrationAndOverhang) {
     EXPECT_NEAR(xs[1], 5.0f, 1e-5f);
 }
 
+TEST(CollidePolygons, PolygonFarFromItsBodyOrigin) {
+    // Level geometry often puts offset boxes far from a static body's origin: the result must
+    // match the same ground centred on its body, to well below kLinearSlop.
+    const Polygon farGround = makeOffsetBox(5.0f, 0.5f, {1000.0f, -2000.0f}, 0.0f);
+    const Transform xfBox = makeTransform(1000.2f, -2000.0f + 0.99f, 0.0f);
+    Manifold m = collidePolygons(farGround, kIdentity, makeBox(0.5f, 0.5f), xfBox);
+    ASSERT_EQ(m.pointCount, 2);
+    E2D_EXPECT_VEC2_NEAR(m.normal, 0.0f, 1.0f, 1e-6f);
+    std::vector<float> xs = sortedX(m);
+    EXPECT_NEAR(xs[0], 999.7f, 1e-4f);
+    EXPECT_NEAR(xs[1], 1000.7f, 1e-4f);
+    for (int i = 0; i < 2; ++i) {
+        EXPECT_NEAR(m.points[i].separation, -0.01f, 1e-4f);
+    }
+    expectAnchorsConsistent(m, kIdentity, xfBox);
+}
+
 TEST(CollidePolygons, TiltedBoxRestsOnOneCorner) {
     // Turned by 0.1 rad, the lower corner (-0.5, -0.5) sits 0.5 (sin + cos) below the centre;
     // put it 0.01 into the ground. The other bottom corner is then sin(0.1) - 0.01 = 0.0898

@@ -139,6 +139,23 @@ TEST(Validate, NamesTheCallerAndTheBadValue) {
     EXPECT_EQ(errorMessage([&] { validate(inside, fn); }),
               "physics::World::createShape(): polygon is not strictly convex and counter-clockwise "
               "at vertex 2 (use makePolygon())");
+    const float inf = std::numeric_limits<float>::infinity();
+    EXPECT_EQ(errorMessage([&] { validate(Capsule{{0, 0}, {inf, 0}, 1.0f}, fn); }),
+              "physics::World::createShape(): capsule centers must be finite and within kHuge, got "
+              "(0, 0) and (inf, 0)");
+    EXPECT_EQ(errorMessage([&] { validate(Segment{{0, 0}, {0, 2e5f}}, fn); }),
+              "physics::World::createShape(): segment points must be finite and within kHuge, got "
+              "(0, 0) and (0, 200000)");
+    Polygon farVertex = makeBox(1.0f, 1.0f);
+    farVertex.vertices[3] = {nan, 1.0f};
+    EXPECT_EQ(errorMessage([&] { validate(farVertex, fn); }),
+              "physics::World::createShape(): polygon vertex 3 must be finite and within kHuge, got "
+              "(nan, 1)");
+    Polygon badCentroid = makeBox(1.0f, 1.0f);
+    badCentroid.centroid = {0.0f, -inf};
+    EXPECT_EQ(errorMessage([&] { validate(badCentroid, fn); }),
+              "physics::World::createShape(): polygon centroid must be finite and within kHuge, got "
+              "(0, -inf)");
     Polygon badNormal = makeBox(1.0f, 1.0f);
     badNormal.normals[1] = {2.0f, 0.0f};
     EXPECT_EQ(errorMessage([&] { validate(badNormal, fn); }),

@@ -172,6 +172,9 @@ TEST(WorldDefs, QueryInputIsChecked) {
     World world;
     EXPECT_EQ(errorOf([&] { (void)world.castRayClosest({0.0f, 0.0f}, {0.0f, 0.0f}); }),
               "physics::World::castRayClosest(): translation must be finite and non-zero, got (0, 0)");
+    E2D_EXPECT_ERROR((void)world.castRayClosest({0.0f, 0.0f}, {3.0e38f, 0.0f}),
+                     "physics::World::castRayClosest(): origin + translation must be within kHuge "
+                     "(100000 m), got (3e+38, 0)");
     E2D_EXPECT_ERROR((void)world.castRayAll({kNan, 0.0f}, {1.0f, 0.0f}),
                      "physics::World::castRayAll(): origin must be finite");
     E2D_EXPECT_ERROR((void)world.overlapAabb({{1.0f, 0.0f}, {0.0f, 1.0f}}),

@@ -17,6 +17,10 @@ namespace e2d::physics {
 /// points GJK ends well before (it stops when a support point repeats, which bounds it by the
 /// number of point pairs); the cap guards against floating-point cycling.
 inline constexpr int kMaxGjkIterations = 20;
+/// GJK also stops when a new support point brings the simplex closer to the origin by less than
+/// this fraction of the coordinates' magnitude (rounding noise; e.g. duplicated points). The
+/// reported distance is then within about that much of the exact one.
+inline constexpr float kGjkRelativeTolerance = 1.0e-6f;
 /// The most EPA iterations penetration() runs (the Minkowski difference of two proxies has at
 /// most 2 * kMaxPolygonVertices vertices, so a polytope that grows by one vertex per iteration
 /// is complete before this).
@@ -77,12 +81,13 @@ struct DistanceOutput {
 };
 
 /// Closest points of two convex proxies by GJK (2D simplex with Voronoi-region reduction).
-/// Runs at most kMaxGjkIterations; ends when a support point repeats or the simplex encloses
-/// the origin. Never returns NaN for finite input, whatever the degeneracy (duplicated points,
-/// collinear supports, one-point proxies, identical shapes at the same place). `cache` may be
+/// Runs at most kMaxGjkIterations; ends when a support point repeats, when progress falls
+/// below kGjkRelativeTolerance, or when the simplex encloses the origin (overlap). Never returns
+/// NaN for finite input, whatever the degeneracy (duplicated points, collinear supports,
+/// one-point proxies, identical shapes at the same place). `cache` may be
 /// null; if given it warm-starts the search and is updated.
 /// With useRadii, rounded shapes whose cores are closer than the sum of radii overlap: distance
-/// 0 and pointA == pointB at the middle of the gap.
+/// 0 and pointA == pointB in the middle of the overlap.
 DistanceOutput shapeDistance(const DistanceInput& input, SimplexCache* cache = nullptr);
 
 /// Result of penetration(). Points and normal are in world coordinates.
@@ -118,9 +123,10 @@ struct ShapeCastPairInput {
 /// (each step moves B by the current GJK distance divided by the approach speed along the
 /// normal, so it never passes the contact). The shapes touch when their rounded surfaces are
 /// closer than kShapeCastTolerance. Output (world): `point` on the surface of A, `normal` from A
-/// to B at the contact; `hit` with `fraction` 0 when they overlap at the start (normal then
-/// (0, 0)); no hit when they move apart, do not meet before maxFraction, or after
-/// kMaxShapeCastIterations.
+/// to B at the contact; `hit` with `fraction` 0 when they touch or overlap at the start (the
+/// normal is then (0, 0) if even the core hulls overlap); no hit when they move apart, do not
+/// meet before maxFraction, or after kMaxShapeCastIterations (grazing approaches converge
+/// slowly; `fraction` then tells how far B is known to move freely).
 CastOutput shapeCast(const ShapeCastPairInput& input);
 
 } // namespace e2d::physics

@@ -85,13 +85,25 @@ public:
     void enlargeProxy(int proxyId, const Aabb& aabb);
 
     /// The box of a proxy, as last given. Throws core::Error on a bad id.
-    [[nodiscard]] const Aabb& aabb(int proxyId) const;
+    [[nodiscard]] const Aabb& aabb(int proxyId) const {
+        checkProxy(proxyId, "aabb");
+        return nodes_[static_cast<std::size_t>(proxyId)].aabb;
+    }
     /// The user data of a proxy. Throws core::Error on a bad id.
-    [[nodiscard]] std::uint64_t userData(int proxyId) const;
+    [[nodiscard]] std::uint64_t userData(int proxyId) const {
+        checkProxy(proxyId, "userData");
+        return nodes_[static_cast<std::size_t>(proxyId)].userData;
+    }
     /// The category bits of a proxy. Throws core::Error on a bad id.
-    [[nodiscard]] std::uint64_t categoryBits(int proxyId) const;
+    [[nodiscard]] std::uint64_t categoryBits(int proxyId) const {
+        checkProxy(proxyId, "categoryBits");
+        return nodes_[static_cast<std::size_t>(proxyId)].categoryBits;
+    }
     /// Whether `proxyId` names a live proxy.
-    [[nodiscard]] bool isProxy(int proxyId) const;
+    [[nodiscard]] bool isProxy(int proxyId) const {
+        return proxyId >= 0 && static_cast<std::size_t>(proxyId) < nodes_.size() &&
+               nodes_[static_cast<std::size_t>(proxyId)].height == 0;
+    }
 
     /// Calls `callback(int proxyId, std::uint64_t userData)` for every proxy whose box overlaps
     /// `box` (touching counts) and whose category bits share a bit with `maskBits`. The callback
@@ -157,15 +169,25 @@ private:
     void removeLeaf(int leaf);
     [[nodiscard]] int findBestSibling(const Aabb& box) const;
     void refit(int index);
-    void rotate(int index);
-    void checkProxy(int proxyId, const char* function) const;
+    bool rotate(int index);
+    void refitAncestors(int index);
+    void checkProxy(int proxyId, const char* function) const {
+        if (!isProxy(proxyId)) {
+            throwBadProxy(proxyId, function);
+        }
+    }
 
     static bool isValidBox(const Aabb& box) {
         return std::isfinite(box.lower.x) && std::isfinite(box.lower.y) &&
                std::isfinite(box.upper.x) && std::isfinite(box.upper.y);
     }
+    static Aabb segmentBox(Vec2 p1, Vec2 p2) {
+        return {{p1.x < p2.x ? p1.x : p2.x, p1.y < p2.y ? p1.y : p2.y},
+                {p1.x < p2.x ? p2.x : p1.x, p1.y < p2.y ? p2.y : p1.y}};
+    }
     [[noreturn]] static void throwBadQueryBox(const Aabb& box);
     [[noreturn]] static void throwBadRay(const RayCastInput& input);
+    [[noreturn]] static void throwBadProxy(int proxyId, const char* function);
 
     std::vector<Node> nodes_;
     int root_ = kNullProxy;
@@ -222,8 +244,7 @@ void DynamicTree::rayCast(const RayCastInput& input, std::uint64_t maskBits, F&&
 
     float maxFraction = input.maxFraction;
     Vec2 p2 = p1 + maxFraction * d;
-    Aabb segment{{std::fmin(p1.x, p2.x), std::fmin(p1.y, p2.y)},
-                 {std::fmax(p1.x, p2.x), std::fmax(p1.y, p2.y)}};
+    Aabb segment = segmentBox(p1, p2);
 
     detail::TreeStack<128> stack;
     stack.push(root_);
@@ -247,8 +268,7 @@ void DynamicTree::rayCast(const RayCastInput& input, std::uint64_t maskBits, F&&
             if (value > 0.0f && value < maxFraction) {
                 maxFraction = value;
                 p2 = p1 + maxFraction * d;
-                segment = {{std::fmin(p1.x, p2.x), std::fmin(p1.y, p2.y)},
-                           {std::fmax(p1.x, p2.x), std::fmax(p1.y, p2.y)}};
+                segment = segmentBox(p1, p2);
             }
         } else {
             stack.push(node.child2);

@@ -85,8 +85,8 @@ struct CastOutput {
 /// the problem: fewer than 3 distinct points, all points collinear (zero area), a non-finite
 /// coordinate, or more than kMaxPolygonVertices points on the hull.
 /// Points within kLinearSlop of the line through their hull neighbours are dropped too. Any
-/// winding in, counter-clockwise out. Welding is quadratic in the number of points: meant for
-/// the handful of points of a shape, not for large clouds.
+/// winding in, counter-clockwise out. O(n log n) for n points spread out; points bunched
+/// within kLinearSlop of each other in x cost more.
 Hull computeHull(std::span<const Vec2> points);
 
 /// A polygon from any point cloud (its convex hull), rounded by `radius` (>= 0). Throws core::Error.

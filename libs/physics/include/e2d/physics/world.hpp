@@ -209,13 +209,14 @@ public:
     void updatePairs();
     /// Number of current candidate pairs.
     [[nodiscard]] int candidatePairCount() const;
-    /// Calls `callback(a, b)` once per current pair, a's slot before b's, in no fixed order.
+    /// Calls `callback(a, b)` once per current pair, a's slot before b's, in the broad phase's
+    /// table order: not sorted, but the same operations give the same order (determinism).
     void forEachCandidatePair(FunctionRef<void(ShapeId, ShapeId)> callback) const;
 
     // --- queries (world space; they read the broad phase, so updatePairs() is not needed) ---
 
     /// The first shape the ray from `origin` to `origin + translation` hits (metres; the
-    /// translation is finite and non-zero).
+    /// translation is finite and non-zero, both ends within kHuge).
     [[nodiscard]] std::optional<RayResult> castRayClosest(Vec2 origin, Vec2 translation,
                                                           const QueryFilter& filter = {}) const;
     /// Every hit along the ray, sorted by fraction (ties by shape slot).

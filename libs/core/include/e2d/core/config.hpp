@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace e2d::core {
+
+/// How the view adapts when the window's aspect ratio differs from the reference size.
+enum class ScreenFitMode { Expand, WidthFit, HeightFit, BestFit };
+enum class WindowMode { Windowed, Fullscreen };
+enum class TextureFilteringMode { Nearest, Linear };
+
+/// The spelling used in config files ("expand", "widthFit", "heightFit", "bestFit", ...).
+[[nodiscard]] std::string_view toString(ScreenFitMode mode) noexcept;
+[[nodiscard]] std::string_view toString(WindowMode mode) noexcept;
+[[nodiscard]] std::string_view toString(TextureFilteringMode mode) noexcept;
+
+/// Everything the game configuration file sets (seed Figure 107, plus two e2d keys).
+///
+/// Defaults are the figure's values except where noted: PHYSICS is in metres and seconds
+/// (the seed used pixels), `firstScene` is empty (a game-specific name is no library default)
+/// and `windowTitle` is "e2d".
+struct Config {
+    // SCENE
+    /// Registry name of the scene to start with. Default "" (none).
+    std::string firstScene;
+
+    // DISPLAY
+    /// Size the game is designed for, in pixels (>= 1). Default 1024 x 624.
+    int referenceWindowWidth = 1024;
+    int referenceWindowHeight = 624;
+    /// Initial window size in pixels (>= 1). Default 1024 x 624.
+    int windowWidth = 1024;
+    int windowHeight = 624;
+    /// Default widthFit.
+    ScreenFitMode screenFitMode = ScreenFitMode::WidthFit;
+    /// Default windowed.
+    WindowMode windowMode = WindowMode::Windowed;
+    /// Any text, spaces allowed. Default "e2d".
+    std::string windowTitle = "e2d";
+    /// Default nearest.
+    TextureFilteringMode textureFilteringMode = TextureFilteringMode::Nearest;
+    /// Draw-order (z) range of the camera, > 0. Default 1000.
+    float maxCameraDepth = 1000.0f;
+
+    // TEXT
+    /// Base font size in pixels (>= 1). Default 100.
+    int fontSize = 100;
+
+    // PHYSICS
+    /// Gravity in m/s^2. Default (0, -9.81).
+    float gravityX = 0.0f;
+    float gravityY = -9.81f;
+    /// Seconds per physics step, > 0 and <= 1. Default 1/60.
+    double fixedTimestep = 1.0 / 60.0;
+    /// Solver iterations per step (>= 1). Default 4.
+    int collisionResolutionSteps = 4;
+    /// Overlap tolerated before position correction, metres (>= 0). Default 0.005.
+    float allowedPenetration = 0.005f;
+    /// Fraction of the overlap corrected per step, in [0, 1]. Default 0.2.
+    float penetrationBiasFactor = 0.2f;
+    /// Speed below which a body may rest, m/s (>= 0). Default 0.05.
+    float minRigidbodySpeed = 0.05f;
+
+    // SOUND (world units, >= 0)
+    /// Default 256.
+    float minAttenuationDistance = 256.0f;
+    /// Default 512.
+    float maxAttenuationDistance = 512.0f;
+    /// Default 256.
+    float minPanningDistance = 256.0f;
+    /// Default 512.
+    float maxPanningDistance = 512.0f;
+    /// Overall gain (>= 0). Default 0.2.
+    float masterGain = 0.2f;
+
+    // LOOP (e2d additions)
+    /// Fixed steps run at most per frame before time is dropped (>= 1). Default 5.
+    int maxStepsPerFrame = 5;
+    /// Seed for the game's Random. Default 0.
+    std::uint64_t randomSeed = 0;
+};
+
+/// One problem found while reading a configuration.
+struct ConfigDiagnostic {
+    enum class Severity { Warning, Error };
+
+    Severity severity = Severity::Error;
+    /// Source name as given to parseConfig / the path given to loadConfig.
+    std::string file;
+    /// 1-based line, 0 when the problem is not tied to a line (missing file).
+    int line = 0;
+    /// The key concerned (empty when there is none, e.g. a line without '=').
+    std::string key;
+    /// What is wrong, e.g. "expected an integer, got 'abc'".
+    std::string message;
+
+    /// "file:line: key: message", e.g. "game.cfg:12: windowWidth: expected an integer,
+    /// got 'abc'" (line and key left out when absent).
+    [[nodiscard]] std::string toString() const;
+};
+
+/// A configuration plus what went wrong reading it. Anything missing or wrong keeps its
+/// default, so `config` is always usable.
+struct ConfigResult {
+    Config config;
+    std::vector<ConfigDiagnostic> diagnostics;
+
+    [[nodiscard]] bool hasErrors() const noexcept;
+    [[nodiscard]] bool hasWarnings() const noexcept;
+};
+
+/// Parses configuration text.
+///
+/// Format: one `key = value` per line; blank lines and lines starting with `#` are ignored;
+/// whitespace around key and value is trimmed and a value may contain spaces
+/// (`windowTitle = My Game`); there are no inline comments. Keys and enum values are
+/// case-sensitive. Numbers are read locale-independently; an integer must be a whole
+/// integer ("12px" and "1.5" are errors).
+///
+/// Errors: bad or out-of-range number, unknown enum value (the accepted ones are listed),
+/// line without `=`, empty key, a min distance above its max (both reset to defaults). Warnings: unknown key (ignored), duplicate key (the last value
+/// wins). `sourceName` is used in diagnostics.
+[[nodiscard]] ConfigResult parseConfig(std::string_view text, std::string_view sourceName = "config");
+
+/// Reads and parses the file at `path`. A file that cannot be read gives the defaults and a
+/// warning; it never throws for that.
+[[nodiscard]] ConfigResult loadConfig(const std::filesystem::path& path);
+
+} // namespace e2d::core

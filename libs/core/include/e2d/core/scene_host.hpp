@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include <string_view>
+
+namespace e2d::core {
+
+class Logger;
+
+/// What a Scene needs from whatever runs it (in place of the seed's global Game).
+/// Implemented by SceneDirector; tests can implement it directly.
+class SceneHost {
+public:
+    virtual ~SceneHost() = default;
+
+    /// Requests a change to the scene registered as `name`, done at the start of the next
+    /// frame.
+    virtual void changeToScene(std::string_view name) = 0;
+    /// Requests the end of the game loop.
+    virtual void terminateGame() = 0;
+    /// Current window size in pixels.
+    [[nodiscard]] virtual glm::ivec2 windowSize() const = 0;
+    /// Size the game was designed for, in pixels (see Config::referenceWindowWidth).
+    [[nodiscard]] virtual glm::ivec2 referenceWindowSize() const = 0;
+    /// The game's logger.
+    [[nodiscard]] virtual Logger& logger() = 0;
+
+protected:
+    SceneHost() = default;
+    SceneHost(const SceneHost&) = default;
+    SceneHost& operator=(const SceneHost&) = default;
+};
+
+} // namespace e2d::core

@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/core/game_object.hpp>
+
+#include <e2d/core/error.hpp>
+#include <e2d/core/log.hpp>
+#include <e2d/core/scene.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace e2d::core {
+
+GameObject::GameObject(Scene& scene, GameObjectId id) : scene_(&scene), id_(id) {}
+
+GameObject::~GameObject() = default;
+
+Logger* GameObject::logger() const noexcept {
+    return scene_->logger();
+}
+
+// Transform ------------------------------------------------------------------------------
+
+void GameObject::setPosition(glm::vec3 position) noexcept {
+    position_ = position;
+    localDirty_ = true;
+    markWorldDirty();
+}
+
+void GameObject::setPosition(glm::vec2 position) noexcept {
+    setPosition(glm::vec3(position, position_.z));
+}
+
+void GameObject::translate(glm::vec2 delta) noexcept {
+    setPosition(glm::vec3(position_.x + delta.x, position_.y + delta.y, position_.z));
+}
+
+void GameObject::setScale(glm::vec2 scale) noexcept {
+    scale_ = scale;
+    localDirty_ = true;
+    markWorldDirty();
+}
+
+void GameObject::setOrientation(float radians) noexcept {
+    orientation_ = radians;
+    localDirty_ = true;
+    markWorldDirty();
+}
+
+void GameObject::markWorldDirty() const noexcept {
+    // A dirty object always has dirty descendants (a world matrix is only rebuilt after its
+    // parent's), so the walk can stop at the first object that is already dirty.
+    if (worldDirty_) {
+        return;
+    }
+    worldDirty_ = true;
+    for (const GameObject* child : children_) {
+        child->markWorldDirty();
+    }
+}
+
+const glm::mat4& GameObject::localTransform() const {
+    if (localDirty_) {
+        const float c = std::cos(orientation_);
+        const float s = std::sin(orientation_);
+        local_ = glm::mat4(1.0f);
+        local_[0] = glm::vec4(c * scale_.x, s * scale_.x, 0.0f, 0.0f);
+        local_[1] = glm::vec4(-s * scale_.y, c * scale_.y, 0.0f, 0.0f);
+        local_[3] = glm::vec4(position_, 1.0f);
+        localDirty_ = false;
+    }
+    return local_;
+}
+
+const glm::mat4& GameObject::worldTransform() const {
+    if (worldDirty_) {
+        world_ = parent_ != nullptr ? parent_->worldTransform() * localTransform() : localTransform();
+        worldDirty_ = false;
+    }
+    return world_;
+}
+
+glm::vec3 GameObject::worldPosition() const {
+    return glm::vec3(worldTransform()[3]);
+}
+
+float GameObject::worldOrientation() const {
+    const glm::mat4& world = worldTransform();
+    return std::atan2(world[0][1], world[0][0]);
+}
+
+// Hierarchy ------------------------------------------------------------------------------
+
+bool GameObject::isAncestorOf(const GameObject& other) const noexcept {
+    for (const GameObject* p = other.parent_; p != nullptr; p = p->parent_) {
+        if (p == this) {
+            return true;
+        }
+    }
+    return false;
+}
+
+void GameObject::addChild(GameObject& child) {
+    if (&child == this) {
+        throw Error("core::GameObject::addChild(): object " + std::to_string(id_.index) +
+                    " cannot be its own child");
+    }
+    if (child.scene_ != scene_) {
+        throw Error("core::GameObject::addChild(): object " + std::to_string(child.id_.index) +
+                    " belongs to another scene");
+    }
+    if (child.isAncestorOf(*this)) {
+        throw Error("core::GameObject::addChild(): object " + std::to_string(child.id_.index) +
+                    " is an ancestor of object " + std::to_string(id_.index) + ", this would make a cycle");
+    }
+    if (child.parent_ == this) {
+        return;
+    }
+    child.detachFromParent();
+    child.parent_ = this;
+    children_.push_back(&child);
+    child.markWorldDirty();
+}
+
+void GameObject::removeChild(GameObject& child) {
+    if (child.parent_ != this) {
+        throw Error("core::GameObject::removeChild(): object " + std::to_string(child.id_.index) +
+                    " is not a child of object " + std::to_string(id_.index));
+    }
+    child.detachFromParent();
+}
+
+void GameObject::setParent(GameObject* parent) {
+    if (parent != nullptr) {
+        parent->addChild(*this);
+    } else {
+        detachFromParent();
+    }
+}
+
+void GameObject::detachFromParent() noexcept {
+    if (parent_ == nullptr) {
+        return;
+    }
+    auto& siblings = parent_->children_;
+    siblings.erase(std::find(siblings.begin(), siblings.end(), this));
+    parent_ = nullptr;
+    markWorldDirty();
+}
+
+// Components -----------------------------------------------------------------------------
+
+void GameObject::warnRefusedUnique(const std::type_info& type) const {
+    if (Logger* log = logger()) {
+        log->warning(std::string("core::GameObject::addComponent(): object ") + std::to_string(id_.index) +
+                     " already has a unique component of type " + type.name() + ", the new one is refused");
+    }
+}
+
+void GameObject::removeComponent(Component* component) {
+    if (component == nullptr) {
+        throw Error("core::GameObject::removeComponent(): component is null");
+    }
+    const auto owns = [component](const std::unique_ptr<Component>& c) { return c.get() == component; };
+    if (std::none_of(components_.begin(), components_.end(), owns) &&
+        std::none_of(pendingAdd_.begin(), pendingAdd_.end(), owns)) {
+        throw Error("core::GameObject::removeComponent(): the component does not belong to object " +
+                    std::to_string(id_.index));
+    }
+    if (std::find(pendingRemove_.begin(), pendingRemove_.end(), component) == pendingRemove_.end()) {
+        pendingRemove_.push_back(component);
+        queueComponentChange();
+    }
+}
+
+void GameObject::queueComponentChange() {
+    if (!componentChangeQueued_) {
+        componentChangeQueued_ = true;
+        scene_->componentChanges_.push_back(this);
+    }
+}
+
+void GameObject::applyPendingComponents() {
+    componentChangeQueued_ = false;
+    // Swapped out first: events below may queue more work, which waits for the next frame.
+    std::vector<Component*> removals;
+    removals.swap(pendingRemove_);
+    std::vector<std::unique_ptr<Component>> additions;
+    additions.swap(pendingAdd_);
+
+    for (Component* component : removals) {
+        const auto owns = [component](const std::unique_ptr<Component>& c) { return c.get() == component; };
+        if (auto queued = std::find_if(additions.begin(), additions.end(), owns); queued != additions.end()) {
+            additions.erase(queued); // never attached: no events
+            continue;
+        }
+        if (component->initialized_) {
+            component->initialized_ = false;
+            component->onTerminate();
+        }
+        component->onRemovedFromGameObject();
+        components_.erase(std::find_if(components_.begin(), components_.end(), owns));
+    }
+
+    for (auto& owned : additions) {
+        Component* component = owned.get();
+        components_.push_back(std::move(owned));
+        component->onAddedToGameObject();
+        if (initialized_) {
+            component->initialized_ = true;
+            component->onInitialize();
+        }
+    }
+}
+
+void GameObject::initialize() {
+    initialized_ = true;
+    for (const auto& component : components_) {
+        if (!component->initialized_) {
+            component->initialized_ = true;
+            component->onInitialize();
+        }
+    }
+}
+
+void GameObject::terminate() {
+    if (!initialized_) {
+        return;
+    }
+    initialized_ = false;
+    for (const auto& component : components_) {
+        if (component->initialized_) {
+            component->initialized_ = false;
+            component->onTerminate();
+        }
+    }
+}
+
+void GameObject::dispatchCollisionEnter(const ContactInfo& contact) {
+    forEachComponent([&contact](Component& c) { c.onCollisionEnter(contact); });
+}
+
+void GameObject::dispatchCollisionExit(const ContactInfo& contact) {
+    forEachComponent([&contact](Component& c) { c.onCollisionExit(contact); });
+}
+
+void GameObject::dispatchTriggerEnter(const ContactInfo& contact) {
+    forEachComponent([&contact](Component& c) { c.onTriggerEnter(contact); });
+}
+
+void GameObject::dispatchTriggerExit(const ContactInfo& contact) {
+    forEachComponent([&contact](Component& c) { c.onTriggerExit(contact); });
+}
+
+} // namespace e2d::core

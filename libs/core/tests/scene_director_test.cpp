@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/core/error.hpp>
+#include <e2d/core/game_object.hpp>
+#include <e2d/core/log.hpp>
+#include <e2d/core/scene_director.hpp>
+#include <e2d/core/scene_registry.hpp>
+#include <e2d/core/system.hpp>
+
+#include "test_support.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+using e2d::core::Logger;
+using e2d::core::LogLevel;
+using e2d::core::Scene;
+using e2d::core::SceneDirector;
+using e2d::core::SceneRegistry;
+using e2d::core::System;
+using e2d::core::test::EventLog;
+using e2d::core::test::Recorder;
+using testing::ElementsAre;
+using testing::HasSubstr;
+using testing::IsEmpty;
+
+namespace {
+
+// Each test installs its log here; scenes are default-constructed by the registry.
+EventLog* gLog = nullptr;
+
+template <const char* Tag>
+class TaggedScene : public Scene {
+protected:
+    void onInitialize() override {
+        gLog->add(Tag, "sceneInit");
+        e2d::core::GameObject& object = createGameObject();
+        object.addComponent<Recorder>(*gLog, std::string(Tag) + "Object");
+    }
+    void onTerminate() override { gLog->add(Tag, "sceneTerm"); }
+};
+
+constexpr char kMenu[] = "menu";
+constexpr char kLevel[] = "level";
+using MenuScene = TaggedScene<kMenu>;
+using LevelScene = TaggedScene<kLevel>;
+
+class ClearCounter : public System {
+public:
+    void clear() override { gLog->add("system", "clear"); }
+};
+
+class SceneDirectorTest : public testing::Test {
+protected:
+    SceneDirectorTest()
+        : logger(LogLevel::Trace, [this](LogLevel level, std::string_view message) {
+              if (level >= LogLevel::Warning) {
+                  problems.emplace_back(message);
+              }
+          }),
+          director(registry, logger) {
+        gLog = &log;
+        registry.add<MenuScene>("Menu");
+        registry.add<LevelScene>("Level");
+        director.addSystem(system);
+    }
+    ~SceneDirectorTest() override { gLog = nullptr; }
+
+    EventLog log;
+    std::vector<std::string> problems;
+    Logger logger;
+    SceneRegistry registry;
+    ClearCounter system;
+    SceneDirector director;
+};
+
+} // namespace
+
+TEST_F(SceneDirectorTest, StartCreatesAndInitialisesTheScene) {
+    EXPECT_EQ(director.scene(), nullptr);
+    EXPECT_TRUE(director.start("Menu"));
+    ASSERT_NE(director.scene(), nullptr);
+    EXPECT_EQ(director.sceneName(), "Menu");
+    EXPECT_EQ(director.scene()->host(), &director);
+    // No clear() on the first start: there was no previous scene.
+    EXPECT_THAT(log.events, ElementsAre("menu:sceneInit", "menuObject:added", "menuObject:init"));
+}
+
+TEST_F(SceneDirectorTest, ChangeHappensOnApplyAndTerminatesTheOldSceneThenClearsSystems) {
+    director.start("Menu");
+    log.clear();
+    director.scene()->changeToScene("Level");
+    EXPECT_EQ(director.sceneName(), "Menu"); // not yet
+    ASSERT_TRUE(director.pendingChange().has_value());
+    EXPECT_EQ(*director.pendingChange(), "Level");
+
+    EXPECT_TRUE(director.applyPendingChange());
+    EXPECT_EQ(director.sceneName(), "Level");
+    EXPECT_FALSE(director.pendingChange().has_value());
+    EXPECT_THAT(log.events, ElementsAre("menu:sceneTerm", "menuObject:term", "menuObject:destroyed", "system:clear",
+                                        "level:sceneInit", "levelObject:added", "levelObject:init"));
+    EXPECT_FALSE(director.applyPendingChange()); // nothing pending any more
+}
+
+TEST_F(SceneDirectorTest, UnknownSceneIsLoggedAndTheCurrentOneKept) {
+    director.start("Menu");
+    Scene* menu = director.scene();
+    log.clear();
+    director.changeToScene("Nowhere");
+    EXPECT_FALSE(director.applyPendingChange());
+    EXPECT_EQ(director.scene(), menu);
+    EXPECT_THAT(log.events, IsEmpty()); // no terminate, no clear
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems[0], "core::SceneDirector: unknown scene 'Nowhere', keeping scene 'Menu'");
+    EXPECT_FALSE(director.pendingChange().has_value());
+}
+
+TEST_F(SceneDirectorTest, UnknownFirstSceneFails) {
+    EXPECT_FALSE(director.start("Nowhere"));
+    EXPECT_EQ(director.scene(), nullptr);
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_THAT(problems[0], HasSubstr("unknown scene 'Nowhere', no scene is running"));
+}
+
+TEST_F(SceneDirectorTest, LastRequestWinsAndSameNameRestarts) {
+    director.start("Menu");
+    Scene* first = director.scene();
+    director.changeToScene("Level");
+    director.changeToScene("Menu");
+    log.clear();
+    EXPECT_TRUE(director.applyPendingChange());
+    EXPECT_EQ(director.sceneName(), "Menu");
+    EXPECT_THAT(log.events, ElementsAre("menu:sceneTerm", "menuObject:term", "menuObject:destroyed", "system:clear",
+                                        "menu:sceneInit", "menuObject:added", "menuObject:init"));
+    static_cast<void>(first); // the old instance is gone; only its events are checked
+}
+
+TEST_F(SceneDirectorTest, StopTerminatesTheScene) {
+    director.start("Level");
+    log.clear();
+    director.stop();
+    EXPECT_EQ(director.scene(), nullptr);
+    EXPECT_EQ(director.sceneName(), "");
+    EXPECT_THAT(log.events, ElementsAre("level:sceneTerm", "levelObject:term", "levelObject:destroyed"));
+}
+
+TEST_F(SceneDirectorTest, HostServices) {
+    director.start("Menu");
+    director.setWindowSize({640, 480});
+    director.setReferenceWindowSize({320, 240});
+    Scene& scene = *director.scene();
+    EXPECT_EQ(scene.windowWidth(), 640);
+    EXPECT_EQ(scene.referenceWindowHeight(), 240);
+    EXPECT_EQ(scene.logger(), &logger);
+    EXPECT_FALSE(director.terminateRequested());
+    scene.terminateGame();
+    EXPECT_TRUE(director.terminateRequested());
+}
+
+TEST_F(SceneDirectorTest, SystemsAreRegisteredOnce) {
+    EXPECT_THAT(director.systems(), ElementsAre(&system));
+    EXPECT_THROW(director.addSystem(system), e2d::core::Error);
+}

@@ -1,0 +1,377 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/core/error.hpp>
+#include <e2d/core/game_object.hpp>
+#include <e2d/core/scene.hpp>
+
+#include "test_support.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+
+using e2d::core::Component;
+using e2d::core::Error;
+using e2d::core::GameObject;
+using e2d::core::GameObjectId;
+using e2d::core::Scene;
+using e2d::core::test::EventLog;
+using e2d::core::test::Recorder;
+using e2d::core::test::TestHost;
+using testing::ElementsAre;
+using testing::HasSubstr;
+using testing::IsEmpty;
+using testing::ThrowsMessage;
+
+namespace {
+
+// A scene that records its own events, and builds two objects in onInitialize.
+class RecordingScene : public Scene {
+public:
+    explicit RecordingScene(EventLog& log) : log_(log) {}
+    GameObject* first = nullptr;
+    GameObject* second = nullptr;
+
+protected:
+    void onInitialize() override {
+        log_.add("scene", "init");
+        first = &createGameObject();
+        first->addComponent<Recorder>(log_, "a1");
+        first->addComponent<Recorder>(log_, "a2");
+        second = &createGameObject();
+        second->addComponent<Recorder>(log_, "b1");
+    }
+    void onTerminate() override { log_.add("scene", "term"); }
+    void update(double) override { log_.add("scene", "update"); }
+    void fixedUpdate(double) override { log_.add("scene", "fixed"); }
+    void onButtonDown(int) override { log_.add("scene", "buttonDown"); }
+
+private:
+    EventLog& log_;
+};
+
+} // namespace
+
+TEST(Scene, ObjectsCreatedInOnInitializeJoinAtOnce) {
+    EventLog log;
+    RecordingScene scene(log);
+    scene.dispatchInitialize();
+    EXPECT_THAT(log.events, ElementsAre("scene:init", "a1:added", "a2:added", "b1:added", "a1:init", "a2:init", "b1:init"));
+    EXPECT_THAT(scene.gameObjects(), ElementsAre(scene.first, scene.second));
+    EXPECT_TRUE(scene.first->isInitialized());
+}
+
+TEST(Scene, EventsGoSceneFirstThenObjectsThenComponentsInOrder) {
+    EventLog log;
+    RecordingScene scene(log);
+    scene.dispatchInitialize();
+    log.clear();
+    scene.dispatchFixedUpdate(0.01);
+    scene.dispatchUpdate(0.02);
+    scene.dispatchButtonDown(32);
+    EXPECT_THAT(log.events, ElementsAre("scene:fixed", "a1:fixed", "a2:fixed", "b1:fixed",          //
+                                        "scene:update", "a1:update", "a2:update", "b1:update",      //
+                                        "scene:buttonDown", "a1:buttonDown", "a2:buttonDown", "b1:buttonDown"));
+}
+
+TEST(Scene, EveryInputEventIsForwarded) {
+    struct Input : Component {
+        std::vector<std::string> seen;
+        void onButtonUp(int key) override { seen.push_back("up" + std::to_string(key)); }
+        void onControllerButtonDown(int c, int b) override { seen.push_back("cdown" + std::to_string(c) + std::to_string(b)); }
+        void onControllerButtonUp(int c, int b) override { seen.push_back("cup" + std::to_string(c) + std::to_string(b)); }
+        void onMouseButtonDown(int b, glm::vec2 s, glm::vec2 w) override {
+            seen.push_back("mdown" + std::to_string(b) + std::to_string(int(s.x)) + std::to_string(int(w.y)));
+        }
+        void onMouseButtonUp(int b, glm::vec2, glm::vec2) override { seen.push_back("mup" + std::to_string(b)); }
+        void onMouseMove(glm::vec2 s, glm::vec2 w) override {
+            seen.push_back("move" + std::to_string(int(s.y)) + std::to_string(int(w.x)));
+        }
+    };
+    Scene scene;
+    auto* input = scene.createGameObject().addComponent<Input>();
+    scene.beginFrame();
+    scene.dispatchButtonUp(7);
+    scene.dispatchControllerButtonDown(1, 2);
+    scene.dispatchControllerButtonUp(3, 4);
+    scene.dispatchMouseButtonDown(0, {5.0f, 6.0f}, {7.0f, 8.0f});
+    scene.dispatchMouseButtonUp(1, {}, {});
+    scene.dispatchMouseMove({1.0f, 2.0f}, {3.0f, 4.0f});
+    EXPECT_THAT(input->seen, ElementsAre("up7", "cdown12", "cup34", "mdown058", "mup1", "move23"));
+}
+
+TEST(Scene, CreatedObjectJoinsAtTheStartOfTheNextFrame) {
+    EventLog log;
+    Scene scene;
+    GameObject& o = scene.createGameObject();
+    o.addComponent<Recorder>(log, "r");
+    EXPECT_THAT(scene.gameObjects(), IsEmpty());
+    EXPECT_EQ(scene.find(o.id()), &o); // findable while waiting
+    EXPECT_FALSE(o.isInitialized());
+    scene.dispatchUpdate(0.1);
+    EXPECT_THAT(log.events, IsEmpty());
+    scene.beginFrame();
+    EXPECT_THAT(scene.gameObjects(), ElementsAre(&o));
+    EXPECT_THAT(log.events, ElementsAre("r:added", "r:init"));
+}
+
+namespace {
+
+// From inside update(): spawns an object (with a Recorder) on the first frame and destroys
+// its own object on the second.
+class Spawner : public Component {
+public:
+    explicit Spawner(EventLog& log) : log_(log) {}
+    void update(double) override {
+        ++frame;
+        if (frame == 1) {
+            GameObject& spawned = scene()->createGameObject();
+            spawned.addComponent<Recorder>(log_, "spawned");
+            spawnedId = spawned.id();
+        } else if (frame == 2) {
+            scene()->destroyGameObject(*gameObject());
+            scene()->destroyGameObject(*gameObject()); // twice is harmless
+        }
+    }
+    int frame = 0;
+    GameObjectId spawnedId;
+
+private:
+    EventLog& log_;
+};
+
+} // namespace
+
+TEST(Scene, CreateAndDestroyFromInsideUpdateAreDeferred) {
+    EventLog log;
+    Scene scene;
+    GameObject& host = scene.createGameObject();
+    auto* spawner = host.addComponent<Spawner>(log);
+    host.addComponent<Recorder>(log, "host");
+    scene.beginFrame();
+    log.clear();
+
+    scene.dispatchUpdate(0.1); // spawns
+    EXPECT_EQ(scene.gameObjects().size(), 1u);
+    EXPECT_THAT(log.events, ElementsAre("host:update"));
+    log.clear();
+
+    scene.beginFrame();
+    EXPECT_EQ(scene.gameObjects().size(), 2u);
+    EXPECT_THAT(log.events, ElementsAre("spawned:added", "spawned:init"));
+    log.clear();
+
+    const GameObjectId hostId = host.id();
+    const GameObjectId spawnedId = spawner->spawnedId; // spawner dies with its object
+    scene.dispatchUpdate(0.1); // destroys its own object: it still finishes this frame
+    EXPECT_THAT(log.events, ElementsAre("host:update", "spawned:update"));
+    EXPECT_TRUE(host.isPendingDestroy());
+    EXPECT_EQ(scene.find(hostId), &host);
+    log.clear();
+
+    scene.beginFrame();
+    EXPECT_THAT(log.events, ElementsAre("host:term", "host:destroyed"));
+    EXPECT_EQ(scene.find(hostId), nullptr);
+    EXPECT_NE(scene.find(spawnedId), nullptr);
+    EXPECT_EQ(scene.gameObjects().size(), 1u);
+}
+
+TEST(Scene, DestroyingAParentDestroysItsChildrenParentsFirst) {
+    EventLog log;
+    Scene scene;
+    GameObject& root = scene.createGameObject();
+    GameObject& child = scene.createGameObject();
+    GameObject& grandchild = scene.createGameObject();
+    GameObject& bystander = scene.createGameObject();
+    GameObject& sibling = scene.createGameObject();
+    root.addChild(child);
+    child.addChild(grandchild);
+    bystander.addChild(sibling);
+    root.addComponent<Recorder>(log, "root");
+    child.addComponent<Recorder>(log, "child");
+    grandchild.addComponent<Recorder>(log, "grandchild");
+    bystander.addComponent<Recorder>(log, "bystander");
+    scene.beginFrame();
+    log.clear();
+
+    const GameObjectId ids[] = {root.id(), child.id(), grandchild.id()};
+    scene.destroyGameObject(child);      // also covered by the root's destruction
+    EXPECT_TRUE(scene.destroyGameObject(root.id()));
+    scene.beginFrame();
+
+    // All terminations first (everything still intact), then the destructions.
+    EXPECT_THAT(log.events, ElementsAre("child:term", "grandchild:term", "root:term", "child:destroyed",
+                                        "grandchild:destroyed", "root:destroyed"));
+    for (const GameObjectId id : ids) {
+        EXPECT_EQ(scene.find(id), nullptr);
+    }
+    EXPECT_THAT(scene.gameObjects(), ElementsAre(&bystander, &sibling));
+    EXPECT_THAT(bystander.children(), ElementsAre(&sibling));
+}
+
+TEST(Scene, DestroyingAChildDetachesItFromItsParent) {
+    Scene scene;
+    GameObject& parent = scene.createGameObject();
+    GameObject& child = scene.createGameObject();
+    parent.addChild(child);
+    scene.beginFrame();
+    scene.destroyGameObject(child);
+    scene.beginFrame();
+    EXPECT_THAT(parent.children(), IsEmpty());
+    EXPECT_THAT(scene.gameObjects(), ElementsAre(&parent));
+}
+
+TEST(Scene, ObjectDestroyedBeforeJoiningGetsNoEvents) {
+    EventLog log;
+    Scene scene;
+    GameObject& o = scene.createGameObject();
+    o.addComponent<Recorder>(log, "r");
+    const GameObjectId id = o.id();
+    scene.destroyGameObject(o);
+    scene.beginFrame();
+    EXPECT_THAT(log.events, ElementsAre("r:destroyed"));
+    EXPECT_EQ(scene.find(id), nullptr);
+    EXPECT_THAT(scene.gameObjects(), IsEmpty());
+}
+
+TEST(Scene, StaleIdIsDetectedAfterTheSlotIsReused) {
+    Scene scene;
+    const GameObjectId old = scene.createGameObject().id();
+    EXPECT_FALSE(old.isNull());
+    scene.beginFrame();
+    EXPECT_TRUE(scene.destroyGameObject(old));
+    scene.beginFrame();
+
+    GameObject& reuser = scene.createGameObject();
+    EXPECT_EQ(reuser.id().index, old.index); // same slot...
+    EXPECT_NE(reuser.id().generation, old.generation); // ...new generation
+    EXPECT_EQ(scene.find(old), nullptr);
+    EXPECT_EQ(scene.find(reuser.id()), &reuser);
+    EXPECT_FALSE(scene.destroyGameObject(old));
+    EXPECT_FALSE(reuser.isPendingDestroy());
+}
+
+TEST(Scene, NullAndOutOfRangeIdsFindNothing) {
+    Scene scene;
+    scene.createGameObject();
+    EXPECT_TRUE(GameObjectId{}.isNull());
+    EXPECT_EQ(scene.find(GameObjectId{}), nullptr);
+    EXPECT_EQ(scene.find(GameObjectId{57, 1}), nullptr);
+    EXPECT_FALSE(scene.destroyGameObject(GameObjectId{}));
+}
+
+TEST(Scene, DestroyRejectsObjectsOfAnotherScene) {
+    Scene one;
+    Scene two;
+    GameObject& stranger = two.createGameObject();
+    EXPECT_THAT([&] { one.destroyGameObject(stranger); },
+                ThrowsMessage<Error>("core::Scene::destroyGameObject(): object 0 belongs to another scene"));
+}
+
+TEST(Scene, TerminateCallsOnTerminateEverywhereAndInvalidatesIds) {
+    EventLog log;
+    RecordingScene scene(log);
+    scene.dispatchInitialize();
+    GameObject& late = scene.createGameObject(); // never joined: no onTerminate
+    late.addComponent<Recorder>(log, "late");
+    const GameObjectId ids[] = {scene.first->id(), scene.second->id(), late.id()};
+    log.clear();
+
+    scene.dispatchTerminate();
+    EXPECT_THAT(log.events, ElementsAre("scene:term", "a1:term", "a2:term", "b1:term", "a1:destroyed",
+                                        "a2:destroyed", "b1:destroyed", "late:destroyed"));
+    for (const GameObjectId id : ids) {
+        EXPECT_EQ(scene.find(id), nullptr);
+    }
+    EXPECT_THAT(scene.gameObjects(), IsEmpty());
+}
+
+TEST(Scene, BeginFrameFromInsideAnEventIsRefused) {
+    struct Reentrant : Component {
+        std::string error;
+        void update(double) override {
+            try {
+                scene()->beginFrame();
+            } catch (const Error& e) {
+                error = e.what();
+            }
+        }
+    };
+    Scene scene;
+    scene.attachHost(nullptr, "Level1");
+    auto* r = scene.createGameObject().addComponent<Reentrant>();
+    scene.beginFrame();
+    scene.dispatchUpdate(0.0);
+    EXPECT_EQ(r->error, "core::Scene::beginFrame(): called from inside an event of scene 'Level1'");
+}
+
+TEST(Scene, HostServices) {
+    TestHost host;
+    Scene scene;
+    scene.attachHost(&host, "Menu");
+    EXPECT_EQ(scene.name(), "Menu");
+    EXPECT_EQ(scene.host(), &host);
+    EXPECT_EQ(scene.logger(), &host.logger());
+    EXPECT_EQ(scene.windowWidth(), 800);
+    EXPECT_EQ(scene.windowHeight(), 600);
+    EXPECT_EQ(scene.referenceWindowWidth(), 1024);
+    EXPECT_EQ(scene.referenceWindowHeight(), 624);
+    scene.changeToScene("Level2");
+    EXPECT_EQ(host.requestedScene, "Level2");
+    scene.terminateGame();
+    EXPECT_TRUE(host.terminateRequested);
+}
+
+TEST(Scene, HostServicesWithoutAHostThrow) {
+    Scene scene;
+    EXPECT_EQ(scene.logger(), nullptr);
+    EXPECT_THAT([&] { scene.changeToScene("X"); },
+                ThrowsMessage<Error>("core::Scene::changeToScene(): the scene has no host attached"));
+    EXPECT_THAT([&] { scene.terminateGame(); }, ThrowsMessage<Error>(HasSubstr("terminateGame()")));
+    EXPECT_THAT([&] { (void)scene.windowWidth(); }, ThrowsMessage<Error>(HasSubstr("windowWidth()")));
+}
+
+TEST(Scene, ComponentsAddedToALiveObjectAreInitialisedOnAttach) {
+    EventLog log;
+    Scene scene;
+    GameObject& o = scene.createGameObject();
+    scene.beginFrame();
+    o.addComponent<Recorder>(log, "late");
+    scene.beginFrame();
+    EXPECT_THAT(log.events, ElementsAre("late:added", "late:init"));
+}
+
+TEST(Scene, QueuedComponentsOfADestroyedObjectAreDroppedWithIt) {
+    EventLog log;
+    Scene scene;
+    GameObject& o = scene.createGameObject();
+    GameObject& other = scene.createGameObject();
+    scene.beginFrame();
+    o.addComponent<Recorder>(log, "queued");
+    other.addComponent<Recorder>(log, "survivor");
+    scene.destroyGameObject(o);
+    scene.beginFrame();
+    EXPECT_THAT(log.events, ElementsAre("queued:destroyed", "survivor:added", "survivor:init"));
+    log.clear();
+    scene.beginFrame(); // nothing left queued
+    EXPECT_THAT(log.events, IsEmpty());
+}
+
+TEST(Scene, ComponentAddedToAJoiningObjectDuringInitialisationIsInitialisedWithIt) {
+    EventLog log;
+    struct Helper : Component {
+        EventLog* log = nullptr;
+        GameObject* target = nullptr;
+        void onInitialize() override { target->addComponent<Recorder>(*log, "gift"); }
+    };
+    Scene scene;
+    GameObject& giver = scene.createGameObject();
+    scene.beginFrame();
+    GameObject& receiver = scene.createGameObject();
+    auto* helper = giver.addComponent<Helper>();
+    helper->log = &log;
+    helper->target = &receiver;
+    scene.beginFrame(); // helper attaches (and initialises) before receiver joins
+    EXPECT_THAT(log.events, ElementsAre("gift:added", "gift:init"));
+    EXPECT_TRUE(receiver.isInitialized());
+}
