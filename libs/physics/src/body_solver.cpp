@@ -59,7 +59,7 @@ void solveSoftStep(const SolverStep& step) {
             solveContacts(step.constraints, step.states, invH, false, def.contactPushMaxSpeed);
         }
     }
-    applyRestitution(step.constraints, step.states, def.restitutionThreshold);
+    applyRestitution(step.constraints, step.states, def.restitutionThreshold, h);
 }
 
 void solveClassic(const SolverStep& step) {
@@ -71,7 +71,7 @@ void solveClassic(const SolverStep& step) {
     for (int i = 0; i < def.velocityIterations; ++i) {
         solveVelocitiesClassic(step.constraints, step.states, invDt);
     }
-    applyRestitution(step.constraints, step.states, def.restitutionThreshold);
+    applyRestitution(step.constraints, step.states, def.restitutionThreshold, step.dt);
     integratePositions(step.states, step.dt);
     for (int i = 0; i < def.positionIterations; ++i) {
         // Box2D 2.4's stopping rule: done once nothing overlaps by more than 3 slops.

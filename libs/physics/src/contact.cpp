@@ -5,6 +5,7 @@
 #include "world_impl.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace e2d::physics {
@@ -61,10 +62,11 @@ void World::Impl::destroyContact(int contactIndex, bool reportEnd) {
     if (reportEnd && c.touching) {
         if (c.sensor) {
             bool aIsSensor = shape(c.shapeA).isSensor;
-            s.sensorEndEvents.push_back(aIsSensor ? SensorEndTouchEvent{c.idA, c.idB}
-                                                  : SensorEndTouchEvent{c.idB, c.idA});
+            (s.inStep ? s.sensorEndEvents : s.pendingSensorEndEvents)
+                .push_back(aIsSensor ? SensorEndTouchEvent{c.idA, c.idB}
+                                     : SensorEndTouchEvent{c.idB, c.idA});
         } else {
-            s.endEvents.push_back({c.idA, c.idB});
+            (s.inStep ? s.endEvents : s.pendingEndEvents).push_back({c.idA, c.idB});
         }
     }
     for (int side = 0; side < 2; ++side) {
@@ -105,7 +107,7 @@ void World::Impl::destroyContacts(int shapeIndex) {
     }
 }
 
-void World::Impl::updateContacts() {
+void World::Impl::updateContacts(float dt) {
     detail::Simulation& s = sim;
     broadPhase.updatePairs([this](std::uint64_t a, std::uint64_t b) {
         return shouldPair(static_cast<int>(a), static_cast<int>(b));
@@ -154,9 +156,16 @@ void World::Impl::updateContacts() {
             continue;
         }
 
+        // Speculative margin: the fixed one plus how far the pair can close in one step, so a
+        // fast approach is caught before it overlaps (bounded, as a huge margin would stop
+        // bodies against points they would have passed).
+        float closing = length(bb.linearVelocity - ba.linearVelocity) +
+                        std::abs(ba.angularVelocity) * ba.motion.maxExtent +
+                        std::abs(bb.angularVelocity) * bb.motion.maxExtent;
+        float margin = std::min(speculativeDistance + dt * closing, 4.0f * kAabbMargin);
         Manifold old = c.manifold;
         c.manifold = collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
-                             collisionAlgorithm, speculativeDistance);
+                             collisionAlgorithm, margin);
         Manifold& m = c.manifold;
         for (int i = 0; i < m.pointCount; ++i) {
             ManifoldPoint& mp = m.points[i];

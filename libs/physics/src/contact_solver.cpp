@@ -4,6 +4,7 @@
 #include <e2d/physics/constants.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace e2d::physics::detail {
 
@@ -69,6 +70,8 @@ void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyVi
         cp.tangentImpulse = mp.tangentImpulse;
         cp.maxNormalImpulse = 0.0f;
         cp.velocityBias = 0.0f;
+        cp.impactSeen = false;
+        cp.impactGap = 0.0f;
         cp.normalMass = effectiveMass(normal, rA, rB, c);
         cp.tangentMass = effectiveMass(tangent, rA, rB, c);
         Vec2 vrA = a.linearVelocity + cross(a.angularVelocity, rA);
@@ -147,6 +150,15 @@ void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState
             Vec2 rB = cp.anchorB;
             Vec2 dv = (vB + cross(wB, rB)) - (vA + cross(wA, rA));
             float vn = dot(dv, normal);
+            if (!cp.impactSeen && vn + std::max(s, 0.0f) * invH < 0.0f) {
+                // The point starts to push now: the approach speed at impact is this one, not
+                // the one at the start of the step (gravity kept accelerating meanwhile).
+                cp.impactSeen = true;
+                cp.relativeVelocity = vn;
+                // The gap this velocity leads to at the end of the sub-step (positions move after
+                // the biased solve, before the relax), to pair it with its velocity.
+                cp.impactGap = useBias ? s + vn / invH : s;
+            }
             float impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
             float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
             impulse = newImpulse - cp.normalImpulse;
@@ -196,7 +208,7 @@ void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState
 }
 
 void applyRestitution(std::span<ContactConstraint> constraints, std::span<BodyState> states,
-                      float threshold) {
+                      float threshold, float h) {
     BodyState dummyA;
     BodyState dummyB;
     for (ContactConstraint& c : constraints) {
@@ -220,7 +232,23 @@ void applyRestitution(std::span<ContactConstraint> constraints, std::span<BodySt
             Vec2 rB = cp.anchorB;
             Vec2 dv = (vB + cross(wB, rB)) - (vA + cross(wA, rA));
             float vn = dot(dv, normal);
-            float impulse = -cp.normalMass * (vn + c.restitution * cp.relativeVelocity);
+            // Semi-implicit Euler under a constant acceleration g along the normal keeps
+            // Q = v^2 + 2 g s - g h v exactly (v: normal velocity, s: gap). Without care a
+            // bounce loses about g h v of it every time; instead the rebound speed is chosen so
+            // that Q after the bounce is e^2 times Q at the impact: the ball rises to e^2 times
+            // the height it fell from, as in the continuous case. (Sub-step solves with a
+            // constant acceleration; contact forces only act while touching.)
+            float approach = -cp.relativeVelocity;
+            float target = c.restitution * approach;
+            float g = c.pressAcceleration;
+            if (g > 0.0f) {
+                // The rebound starts from wherever the push-out left the point.
+                float q = approach * approach + 2.0f * g * cp.impactGap + g * h * approach;
+                float gapNow = currentSeparation(c, cp, *sa, *sb);
+                float rhs = std::max(c.restitution * c.restitution * q - 2.0f * g * gapNow, 0.0f);
+                target = 0.5f * (g * h + std::sqrt(g * g * h * h + 4.0f * rhs));
+            }
+            float impulse = -cp.normalMass * (vn - target);
             float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
             impulse = newImpulse - cp.normalImpulse;
             cp.normalImpulse = newImpulse;

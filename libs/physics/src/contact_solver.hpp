@@ -19,7 +19,8 @@ struct ContactConstraintPoint {
     // Separation minus dot(anchorB - anchorA, normal): adding the current anchor offset gives
     // the current separation without running the narrow phase again.
     float baseSeparation = 0.0f;
-    // Normal velocity before the step: what restitution reflects.
+    // Normal velocity before the step, replaced by the one at the sub-step where the point
+    // starts to push (the moment of impact): what restitution reflects.
     float relativeVelocity = 0.0f;
     float normalImpulse = 0.0f;
     float tangentImpulse = 0.0f;
@@ -29,6 +30,9 @@ struct ContactConstraintPoint {
     float tangentMass = 0.0f;
     // Classic mode: target normal velocity from restitution.
     float velocityBias = 0.0f;
+    // Gap left when the impact was seen (the point still closes it in that sub-step), metres.
+    float impactGap = 0.0f;
+    bool impactSeen = false;
 };
 
 struct ContactConstraint {
@@ -43,6 +47,9 @@ struct ContactConstraint {
     float rollingResistance = 0.0f;
     float rollingImpulse = 0.0f;
     float rollingMass = 0.0f;
+    // Relative acceleration from gravity pressing B onto A along the normal, m/s^2 (>= 0 means
+    // pressing). Restitution uses it to bounce to the height the integrator would reach.
+    float pressAcceleration = 0.0f;
     Softness softness{};
     int indexA = -1; // BodyState index, -1 for a static body
     int indexB = -1;
@@ -76,8 +83,9 @@ void warmStartContacts(std::span<ContactConstraint> constraints, std::span<BodyS
 // Speculative points (separation > 0) keep their bias either way.
 void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states,
                    float invH, bool useBias, float pushMaxSpeed);
+// h: the sub-step the positions were integrated with.
 void applyRestitution(std::span<ContactConstraint> constraints, std::span<BodyState> states,
-                      float threshold);
+                      float threshold, float h);
 
 // Classic. prepareClassic() sets the restitution targets from relativeVelocity.
 void prepareClassic(std::span<ContactConstraint> constraints, float restitutionThreshold);

@@ -57,6 +57,9 @@ void World::Impl::wakeBody(int bodyIndex) {
 void World::Impl::updateSleep(float dt) {
     detail::Simulation& s = sim;
     const SolverDef& def = s.def;
+    if (!def.enableSleep) {
+        return;
+    }
     auto n = static_cast<int>(s.sims.size());
     s.islandParent.resize(static_cast<std::size_t>(n));
     s.islandSleepTime.resize(static_cast<std::size_t>(n));
@@ -91,7 +94,7 @@ void World::Impl::updateSleep(float dt) {
         }
         detail::BodyMotion& m = b.motion;
         float w = std::abs(b.angularVelocity);
-        if (!def.enableSleep || !m.enableSleep || m.isBullet ||
+        if (!m.enableSleep ||
             dot(b.linearVelocity, b.linearVelocity) > linearTolSq || w > angularTol) {
             m.sleepTime = 0.0f;
         } else {
@@ -100,9 +103,6 @@ void World::Impl::updateSleep(float dt) {
         int root = findRoot(s.islandParent, i);
         float& islandTime = s.islandSleepTime[static_cast<std::size_t>(root)];
         islandTime = std::min(islandTime, m.sleepTime);
-    }
-    if (!def.enableSleep) {
-        return;
     }
     for (int i = 0; i < n; ++i) {
         int root = findRoot(s.islandParent, i);

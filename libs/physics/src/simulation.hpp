@@ -86,6 +86,11 @@ struct Simulation {
     std::vector<SensorEndTouchEvent> sensorEndEvents;
     std::vector<ContactHitEvent> hitEvents;
     std::vector<BodyId> nonFiniteBodies;
+    // End events of contacts destroyed between steps (a shape destroyed, a body disabled):
+    // handed out with the next step's events, so the current arrays stay valid meanwhile.
+    std::vector<ContactEndTouchEvent> pendingEndEvents;
+    std::vector<SensorEndTouchEvent> pendingSensorEndEvents;
+    bool inStep = false;
 };
 
 // Mixed material of two shapes under the world's rules.

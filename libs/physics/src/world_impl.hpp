@@ -119,7 +119,7 @@ struct World::Impl {
     // Wakes the body and every sleeping body touching it, transitively.
     void wakeBody(int bodyIndex);
     // Pairs -> contacts; narrow phase; begin/end/sensor events.
-    void updateContacts();
+    void updateContacts(float dt);
     void createContact(int shapeA, int shapeB);
     void destroyContact(int contactIndex, bool reportEnd);
     void solve(float dt);

@@ -7,6 +7,7 @@
 #include "world_check.hpp"
 #include "world_impl.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace e2d::physics {
@@ -36,12 +37,15 @@ void World::step(float timeStep) {
     s.sensorEndEvents.clear();
     s.hitEvents.clear();
     s.nonFiniteBodies.clear();
-    w.updateContacts();
-    if (timeStep == 0.0f) {
-        return;
+    s.endEvents.swap(s.pendingEndEvents);
+    s.sensorEndEvents.swap(s.pendingSensorEndEvents);
+    s.inStep = true;
+    w.updateContacts(timeStep);
+    if (timeStep > 0.0f) {
+        w.solve(timeStep);
+        w.updateSleep(timeStep);
     }
-    w.solve(timeStep);
-    w.updateSleep(timeStep);
+    s.inStep = false;
 }
 
 void World::Impl::solve(float dt) {
@@ -122,6 +126,12 @@ void World::Impl::solve(float dt) {
                                {c.friction, c.restitution, c.rollingResistance},
                                rigidSide ? softness.vsStatic : softness.dynamic);
         cc.contactIndex = static_cast<int>(ci);
+        auto gravityOf = [&](const detail::ContactBodyView& v, int bodyIndex) {
+            float scale = body(bodyIndex).motion.gravityScale;
+            return Vec2{v.invMass.x > 0.0f ? scale * gravity.x : 0.0f,
+                        v.invMass.y > 0.0f ? scale * gravity.y : 0.0f};
+        };
+        cc.pressAcceleration = -dot(gravityOf(b, c.bodyB) - gravityOf(a, c.bodyA), cc.normal);
     }
 
     detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def};
@@ -159,11 +169,17 @@ void World::Impl::solve(float dt) {
         b.transform = bs.transform;
         b.linearVelocity = st.linearVelocity;
         b.angularVelocity = st.angularVelocity;
+        // The broad-phase box also covers where the body will be next step, so the pairs
+        // (and speculative contacts) exist before a fast body arrives.
+        Vec2 ahead = dt * b.linearVelocity;
         for (int si = b.headShape; si != kNullIndex; si = shape(si).nextShape) {
             detail::Shape& sh = shape(si);
             sh.aabb = computeAabb(sh.geometry, b.transform);
             if (sh.proxyKey != kNullIndex) {
-                broadPhase.moveProxy(sh.proxyKey, sh.aabb);
+                Aabb swept = sh.aabb;
+                swept.lower += Vec2{std::min(ahead.x, 0.0f), std::min(ahead.y, 0.0f)};
+                swept.upper += Vec2{std::max(ahead.x, 0.0f), std::max(ahead.y, 0.0f)};
+                broadPhase.moveProxy(sh.proxyKey, swept);
             }
         }
     }
@@ -187,7 +203,9 @@ void World::Impl::solve(float dt) {
             }
         }
         if (fastestPoint >= 0) {
-            s.hitEvents.push_back({c.idA, c.idB, c.manifold.points[fastestPoint].point,
+            // A speculative point sits midway across the gap; the hit is on A's surface.
+            const ManifoldPoint& mp = c.manifold.points[fastestPoint];
+            s.hitEvents.push_back({c.idA, c.idB, mp.point - 0.5f * mp.separation * c.manifold.normal,
                                    c.manifold.normal, fastest});
         }
     }

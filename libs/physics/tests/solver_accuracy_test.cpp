@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: MIT
+// Accuracy of World::step() at 60 Hz with the default soft step: bounces, friction, rolling,
+// stacks, mass ratios, overlap recovery, conservation. Expected values are closed forms.
+#include "world_step_util.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace e2d::physics::test {
+namespace {
+
+constexpr float kPi = 3.14159265f;
+constexpr float kG = 10.0f;
+
+// Peak heights of the ball's bottom after each bounce (a bounce: the ball was going down and
+// now goes up), for `seconds`.
+std::vector<float> bouncePeaks(float restitution, float seconds) {
+    WorldDef def;
+    def.solver.enableSleep = false;
+    World world{def};
+    addGround(world);
+    const float radius = 0.25f;
+    BodyId ball = addBall(world, {0.0f, 1.0f + radius}, radius, restitution);
+    std::vector<float> peaks;
+    float peak = -1.0f;
+    bool rising = false;
+    int steps = static_cast<int>(seconds / kStep);
+    for (int i = 0; i < steps; ++i) {
+        world.step(kStep);
+        float vy = world.linearVelocity(ball).y;
+        float bottom = world.transform(ball).p.y - radius;
+        if (vy > 0.0f) {
+            rising = true;
+            peak = std::max(peak, bottom);
+        } else if (rising) {
+            peaks.push_back(std::max(peak, bottom));
+            rising = false;
+            peak = -1.0f;
+        }
+    }
+    return peaks;
+}
+
+TEST(SolverAccuracy, HalfRestitutionReboundsToAQuarter) {
+    std::vector<float> peaks = bouncePeaks(0.5f, 1.5f);
+    ASSERT_GE(peaks.size(), 1u);
+    // h' = e^2 h = 0.25 m, within 2 %.
+    EXPECT_NEAR(peaks[0], 0.25f, 0.02f * 0.25f);
+}
+
+TEST(SolverAccuracy, ElasticBallKeepsItsHeightOverFiveBounces) {
+    std::vector<float> peaks = bouncePeaks(1.0f, 5.0f);
+    ASSERT_GE(peaks.size(), 5u);
+    for (int i = 0; i < 5; ++i) {
+        EXPECT_GE(peaks[static_cast<std::size_t>(i)], 0.98f) << "bounce " << i + 1;
+        EXPECT_LE(peaks[static_cast<std::size_t>(i)], 1.02f) << "bounce " << i + 1;
+    }
+}
+
+// Scenes with default settings: sleeping is part of how a resting pile stays put.
+TEST(SolverAccuracy, ZeroRestitutionDoesNotBounce) {
+    std::vector<float> peaks = bouncePeaks(0.0f, 2.0f);
+    for (float p : peaks) {
+        EXPECT_LT(p, 0.005f);
+    }
+}
+
+struct SlopeRun {
+    float travel = 0.0f; // along the slope, downwards, metres
+};
+
+// A box (half-size 0.5) or a disc (radius 0.5) released at rest on a 30 degree slope.
+SlopeRun slide(float friction, bool disc, float seconds, bool sleep = true) {
+    WorldDef def;
+    def.solver.enableSleep = sleep;
+    World world{def};
+    const float theta = kPi / 6.0f;
+    BodyId slope = world.createBody({.angle = theta});
+    ShapeDef sd;
+    sd.friction = friction;
+    world.createShape(slope, sd, makeOffsetBox(30.0f, 1.0f, {0.0f, -1.0f}, 0.0f));
+    Rot q = Rot::fromAngle(theta);
+    Vec2 start = rotate(q, {0.0f, 0.5f});
+    BodyDef bd;
+    bd.type = BodyType::Dynamic;
+    bd.position = start;
+    bd.angle = disc ? 0.0f : theta;
+    BodyId body = world.createBody(bd);
+    if (disc) {
+        world.createShape(body, sd, Circle{{0.0f, 0.0f}, 0.5f});
+    } else {
+        world.createShape(body, sd, makeBox(0.5f, 0.5f));
+    }
+    int steps = static_cast<int>(std::lround(seconds / kStep));
+    for (int i = 0; i < steps; ++i) {
+        world.step(kStep);
+    }
+    Vec2 down{-q.c, -q.s};
+    return {dot(world.transform(body).p - start, down)};
+}
+
+TEST(SolverAccuracy, StaticFrictionHoldsABoxOnASlope) {
+    // tan 30 = 0.577 < 0.6: the box must not creep.
+    EXPECT_LT(std::abs(slide(0.6f, false, 10.0f).travel), 0.001f);
+    EXPECT_LT(std::abs(slide(0.6f, false, 10.0f, false).travel), 0.001f);
+}
+
+TEST(SolverAccuracy, KineticFrictionSlidesAtTheClosedFormRate) {
+    float theta = kPi / 6.0f;
+    float mu = 0.2f;
+    float expected = 0.5f * kG * (std::sin(theta) - mu * std::cos(theta)) * 1.0f;
+    EXPECT_NEAR(slide(mu, false, 1.0f).travel, expected, 0.02f * expected);
+}
+
+TEST(SolverAccuracy, DiscRollsAtTwoThirdsGSinTheta) {
+    float theta = kPi / 6.0f;
+    float expected = 0.5f * (2.0f / 3.0f) * kG * std::sin(theta) * 1.0f;
+    EXPECT_NEAR(slide(0.6f, true, 1.0f).travel, expected, 0.02f * expected);
+}
+
+TEST(SolverAccuracy, HeavyBoxOnALightOneStands) {
+    WorldDef def;
+    def.solver.enableSleep = false;
+    World world{def};
+    addGround(world);
+    BodyId light = addBox(world, {0.0f, 0.5f}, 0.5f, 0.6f, 1.0f);
+    BodyId heavy = addBox(world, {0.0f, 1.5f}, 0.5f, 0.6f, 100.0f);
+    float deepest = 0.0f;
+    for (int i = 0; i < 600; ++i) {
+        world.step(kStep);
+        deepest = std::max(deepest, maxPenetration(world));
+    }
+    // It stands: the heavy box stays on top, level and centred. Soft contacts yield under
+    // the 100:1 load (a few centimetres), so the height is only checked to 10 cm.
+    EXPECT_NEAR(world.transform(light).p.x, 0.0f, 0.01f);
+    EXPECT_NEAR(world.transform(heavy).p.x, 0.0f, 0.01f);
+    EXPECT_NEAR(world.transform(heavy).q.angle(), 0.0f, 0.01f);
+    EXPECT_NEAR(world.transform(heavy).p.y, 1.5f, 0.1f);
+    EXPECT_LT(deepest, 0.1f);
+}
+
+TEST(SolverAccuracy, OverlappedBoxesSeparateGently) {
+    World world;
+    addGround(world);
+    std::vector<BodyId> boxes;
+    for (int i = 0; i < 8; ++i) {
+        // 25 % overlap with the box below.
+        boxes.push_back(addBox(world, {0.0f, 0.5f + 0.75f * static_cast<float>(i)}, 0.5f));
+    }
+    float fastest = 0.0f;
+    for (int i = 0; i < 300; ++i) {
+        world.step(kStep);
+        for (BodyId b : boxes) {
+            fastest = std::max(fastest, length(world.linearVelocity(b)));
+        }
+    }
+    EXPECT_LT(fastest, 10.0f);
+    EXPECT_LT(maxPenetration(world), 0.01f);
+    EXPECT_NEAR(world.transform(boxes.back()).p.y, 7.5f, 0.1f);
+}
+
+TEST(SolverAccuracy, ElasticCollisionConservesMomentumAndEnergy) {
+    World world{WorldDef{.gravity = {0.0f, 0.0f}}};
+    ShapeDef sd;
+    sd.friction = 0.0f;
+    sd.restitution = 1.0f;
+    BodyDef bd;
+    bd.type = BodyType::Dynamic;
+    bd.position = {-2.0f, 0.0f};
+    bd.linearVelocity = {4.0f, 0.0f};
+    BodyId a = world.createBody(bd);
+    world.createShape(a, sd, Circle{{0.0f, 0.0f}, 0.5f});
+    bd.position = {2.0f, 0.3f};
+    bd.linearVelocity = {-2.0f, 0.0f};
+    BodyId b = world.createBody(bd);
+    sd.density = 3.0f;
+    world.createShape(b, sd, Circle{{0.0f, 0.0f}, 0.5f});
+    float ma = world.massData(a).mass;
+    float mb = world.massData(b).mass;
+    auto momentum = [&] {
+        return ma * world.linearVelocity(a) + mb * world.linearVelocity(b);
+    };
+    auto energy = [&] {
+        return 0.5f * ma * dot(world.linearVelocity(a), world.linearVelocity(a)) +
+               0.5f * mb * dot(world.linearVelocity(b), world.linearVelocity(b)) +
+               0.5f * world.massData(a).rotationalInertia * world.angularVelocity(a) *
+                   world.angularVelocity(a) +
+               0.5f * world.massData(b).rotationalInertia * world.angularVelocity(b) *
+                   world.angularVelocity(b);
+    };
+    Vec2 p0 = momentum();
+    float e0 = energy();
+    for (int i = 0; i < 90; ++i) {
+        world.step(kStep);
+    }
+    // They did collide: B now moves right.
+    ASSERT_GT(world.linearVelocity(b).x, 0.0f);
+    Vec2 p1 = momentum();
+    EXPECT_LT(length(p1 - p0), 1e-4f * length(p0));
+    EXPECT_NEAR(energy(), e0, 0.01f * e0);
+}
+
+} // namespace
+} // namespace e2d::physics::test
