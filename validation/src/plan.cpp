@@ -119,6 +119,12 @@ std::vector<RunSpec> makePlan(const std::vector<Scenario>& scenarios,
             }
             plan.push_back({i, RunRole::Baseline, base, "baseline"});
             if (!s.sweep) {
+                // A scaling point still needs its cost with sleeping off: the reference run.
+                if (!s.scaling.empty() && level != SweepLevel::None) {
+                    EngineConfig awake = base;
+                    awake.sleeping = false;
+                    plan.push_back({i, RunRole::Sweep, awake, effortLabel(awake)});
+                }
                 continue;
             }
             for (auto& [label, config] : sweepPoints(base, level)) {

@@ -52,7 +52,8 @@ std::map<std::string, std::map<std::string, std::vector<SweepPoint>>> sweepCurve
     std::map<std::string, std::map<std::string, std::map<std::string, SweepPoint>>> acc;
     for (const RunResult& r : report.runs) {
         const Scenario& s = report.scenarios[static_cast<std::size_t>(r.spec.scenario)];
-        if (r.spec.role != RunRole::Sweep) {
+        // Unswept scenarios may have a reference run (for scaling); it is not a curve point.
+        if (r.spec.role != RunRole::Sweep || !s.sweep) {
             continue;
         }
         const std::string engine = r.spec.config.family();

@@ -120,14 +120,16 @@ TEST(Plan, BaselineSweepAndFeatures) {
         baselines += r.role == RunRole::Baseline ? 1 : 0;
         sweeps += r.role == RunRole::Sweep ? 1 : 0;
         features += r.role == RunRole::Feature ? 1 : 0;
-        if (r.scenario == 1) {
-            EXPECT_EQ(r.role, RunRole::Baseline); // pyramid_100 is not swept
+        if (r.scenario == 1 && r.role == RunRole::Sweep) {
+            // pyramid_100 is not swept; it only gets the reference run for the scaling plot.
+            EXPECT_EQ(r.variant, "vel 8, pos 3");
         }
+        EXPECT_TRUE(r.scenario == 0 || r.role != RunRole::Feature);
     }
     EXPECT_EQ(baselines, 2);
-    // Six sweep points (sleeping off, so (8, 3) is not the baseline); ccd and warm starting
-    // switched off against it.
-    EXPECT_EQ(sweeps, 6);
+    // Six sweep points of stack_5 (sleeping off, so (8, 3) is not the baseline) and the
+    // reference of pyramid_100; ccd and warm starting switched off.
+    EXPECT_EQ(sweeps, 6 + 1);
     EXPECT_EQ(features, 2);
     for (const RunSpec& r : plan) {
         EXPECT_EQ(r.config.sleeping, r.role == RunRole::Baseline);
