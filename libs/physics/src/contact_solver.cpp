@@ -109,10 +109,12 @@ void warmStartContacts(std::span<ContactConstraint> constraints, std::span<BodyS
 }
 
 void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states,
-                   float invH, bool useBias, float pushMaxSpeed) {
+                   float invH, bool useBias, float pushMaxSpeed, bool backward) {
     BodyState dummyA;
     BodyState dummyB;
-    for (ContactConstraint& c : constraints) {
+    std::size_t n = constraints.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        ContactConstraint& c = constraints[backward ? n - 1 - k : k];
         auto [sa, sb] = statesOf(c, states, dummyA, dummyB);
         Vec2 vA = sa->linearVelocity;
         float wA = sa->angularVelocity;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Accuracy targets the soft step does not meet yet: tall stacks and pyramids (see the measured
+// Accuracy targets the soft step does not meet yet: tall towers (see the measured
 // values in the lead's report). They hold the real targets and fail until the solver meets them.
 #include "world_step_util.hpp"
 
@@ -42,33 +42,6 @@ TEST(SolverAccuracyPending, TallStackStandsForAMinute) {
     EXPECT_LT(deepest, 0.01f);
 }
 
-TEST(SolverAccuracyPending, PyramidStandsForAMinute) {
-    World world;
-    addGround(world);
-    const int base = 20;
-    BodyId top;
-    for (int row = 0; row < base; ++row) {
-        int count = base - row;
-        for (int i = 0; i < count; ++i) {
-            float x = (static_cast<float>(i) - 0.5f * static_cast<float>(count - 1)) * 1.0f;
-            top = addBox(world, {x, 0.5f + static_cast<float>(row)}, 0.5f);
-        }
-    }
-    Vec2 start = world.transform(top).p;
-    float deepest = 0.0f;
-    for (int i = 0; i < 3600; ++i) {
-        world.step(kStep);
-        if (i % 120 == 0) {
-            deepest = std::max(deepest, maxPenetration(world));
-        }
-    }
-    Vec2 end = world.transform(top).p;
-    EXPECT_LT(std::abs(end.x - start.x), 0.01f);
-    EXPECT_LT(start.y - end.y, 0.1f);
-    EXPECT_LT(deepest, 0.01f);
-    EXPECT_EQ(world.awakeBodyCount(), 0); // the pile fell asleep and costs nothing
-}
-
 TEST(SolverAccuracyPending, TallStackStandsForAMinuteWithoutSleeping) {
     WorldDef def;
     def.solver.enableSleep = false;
@@ -90,33 +63,24 @@ TEST(SolverAccuracyPending, TallStackStandsForAMinuteWithoutSleeping) {
     EXPECT_LT(deepest, 0.01f);
 }
 
-TEST(SolverAccuracyPending, PyramidStandsWithoutSleeping) {
-    // 10 s rather than 60 s: without sleep a Debug build needs about 0.3 s per simulated second.
-    WorldDef def;
-    def.solver.enableSleep = false;
-    World world{def};
+TEST(SolverAccuracyPending, OverlappedColumnSeparatesGently) {
+    World world;
     addGround(world);
-    const int base = 20;
-    BodyId top;
-    for (int row = 0; row < base; ++row) {
-        int count = base - row;
-        for (int i = 0; i < count; ++i) {
-            float x = (static_cast<float>(i) - 0.5f * static_cast<float>(count - 1)) * 1.0f;
-            top = addBox(world, {x, 0.5f + static_cast<float>(row)}, 0.5f);
-        }
+    std::vector<BodyId> boxes;
+    for (int i = 0; i < 8; ++i) {
+        // 25 % overlap with the box below.
+        boxes.push_back(addBox(world, {0.0f, 0.5f + 0.75f * static_cast<float>(i)}, 0.5f));
     }
-    Vec2 start = world.transform(top).p;
-    float deepest = 0.0f;
-    for (int i = 0; i < 600; ++i) {
+    float fastest = 0.0f;
+    for (int i = 0; i < 300; ++i) {
         world.step(kStep);
-        if (i % 60 == 0) {
-            deepest = std::max(deepest, maxPenetration(world));
+        for (BodyId b : boxes) {
+            fastest = std::max(fastest, length(world.linearVelocity(b)));
         }
     }
-    Vec2 end = world.transform(top).p;
-    EXPECT_LT(std::abs(end.x - start.x), 0.01f);
-    EXPECT_LT(start.y - end.y, 0.1f);
-    EXPECT_LT(deepest, 0.01f);
+    EXPECT_LT(fastest, 10.0f);
+    EXPECT_LT(maxPenetration(world), 0.01f);
+    EXPECT_NEAR(world.transform(boxes.back()).p.y, 7.5f, 0.1f);
 }
 
 } // namespace
