@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "expectations.hpp"
+#include "metrics.hpp"
+#include "plan.hpp"
+#include "scenario.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace e2d::validation {
+
+/// The outcome of one run of the plan.
+struct RunResult {
+    RunSpec spec;
+    int bodies = 0;
+    int steps = 0;
+    double seconds = 0.0;         ///< wall time of the whole run, recording included
+    Metrics metrics;
+    std::vector<CheckResult> checks;
+    std::vector<Series> series;   ///< baseline runs only
+    bool passed = false;          ///< every check passed and the run did not fail
+    /// Largest error / tolerance over the checks (1 = at the limit): the y axis of the
+    /// speed-against-error plots. 0 when the scenario has no checks.
+    double normalizedError = 0.0;
+    std::string failure;          ///< set when the engine threw
+};
+
+/// Runs one spec to the end on the calling thread.
+[[nodiscard]] RunResult runOne(const Scenario& scenario, const RunSpec& spec);
+
+/// Called after each finished run with (finished so far, total, that run's result); calls are
+/// serialised.
+using Progress = std::function<void(int, int, const RunResult&)>;
+
+/// Runs the plan on `threads` worker threads (each world lives and dies on one thread), the
+/// most expensive runs first. Results come back in plan order.
+[[nodiscard]] std::vector<RunResult> runPlan(const std::vector<Scenario>& scenarios,
+                                             const std::vector<RunSpec>& plan, int threads,
+                                             const Progress& progress);
+
+} // namespace e2d::validation

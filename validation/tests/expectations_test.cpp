@@ -1,0 +1,210 @@
+// SPDX-License-Identifier: MIT
+#include "expectations.hpp"
+#include "metrics.hpp"
+#include "svg_plot.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace e2d::validation {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+TEST(Expectations, BounceApexIsESquaredH) {
+    EXPECT_DOUBLE_EQ(bounceApex(0.5, 5.0), 1.25);
+    EXPECT_DOUBLE_EQ(bounceApex(0.75, 5.0), 2.8125);
+    EXPECT_DOUBLE_EQ(bounceApex(0.0, 5.0), 0.0);
+    EXPECT_DOUBLE_EQ(bounceApex(1.0, 5.0), 5.0);
+}
+
+TEST(Expectations, SlideDistanceOnASlope) {
+    // 30 deg, mu 0.2, g 10: a = 10 (0.5 - 0.2 * 0.8660254) = 3.2679492; 2 s: 0.5 a 4 = 6.5358984.
+    EXPECT_NEAR(slideDistance(10.0, kPi / 6.0, 0.2, 2.0), 6.5358984, 1e-6);
+    // 45 deg, mu 0.5: a = 10 * 0.7071068 * 0.5 = 3.5355339; 1.5 s: 0.5 a 2.25 = 3.9774756.
+    EXPECT_NEAR(slideDistance(10.0, kPi / 4.0, 0.5, 1.5), 3.9774756, 1e-6);
+    // Below the friction angle (tan 20 deg = 0.364 < 0.5) the box holds.
+    EXPECT_DOUBLE_EQ(slideDistance(10.0, 20.0 * kPi / 180.0, 0.5, 2.0), 0.0);
+    // Frictionless: 0.5 g sin t^2.
+    EXPECT_NEAR(slideDistance(10.0, kPi / 6.0, 0.0, 1.0), 2.5, 1e-12);
+}
+
+TEST(Expectations, StoppingDistanceAndPosition) {
+    // 5 m/s, mu 0.5, g 10: 25 / 10 = 2.5 m, reached at t = v / (mu g) = 1 s.
+    EXPECT_DOUBLE_EQ(stoppingDistance(5.0, 0.5, 10.0), 2.5);
+    EXPECT_DOUBLE_EQ(slidingPosition(5.0, 0.5, 10.0, 0.5), 5.0 * 0.5 - 0.5 * 5.0 * 0.25);
+    EXPECT_DOUBLE_EQ(slidingPosition(5.0, 0.5, 10.0, 1.0), 2.5);
+    EXPECT_DOUBLE_EQ(slidingPosition(5.0, 0.5, 10.0, 3.0), 2.5);
+}
+
+TEST(Expectations, RollingDiscAcceleratesAtTwoThirdsGSin) {
+    // 30 deg, g 10: a = (2/3) 10 0.5 = 10/3; 2 s: 0.5 a 4 = 20/3.
+    EXPECT_NEAR(rollingDistance(10.0, kPi / 6.0, 2.0), 20.0 / 3.0, 1e-12);
+}
+
+TEST(Expectations, OneDimensionalImpacts) {
+    // m2 = 3 m1, 4 m/s against -2 m/s. P = 4 - 6 = -2 (per m1), M = 4.
+    const Impact1D elastic = impact1D(1.0, 4.0, 3.0, -2.0, 1.0);
+    EXPECT_NEAR(elastic.v1, -5.0, 1e-12);
+    EXPECT_NEAR(elastic.v2, 1.0, 1e-12);
+    const Impact1D half = impact1D(1.0, 4.0, 3.0, -2.0, 0.5);
+    EXPECT_NEAR(half.v1, -2.75, 1e-12);
+    EXPECT_NEAR(half.v2, 0.25, 1e-12);
+    // KE ratio of the shipped inelastic scenario: (0.5 * 7.5625 + 1.5 * 0.0625) / 14 = 3.875/14.
+    const double ke0 = 0.5 * 16.0 + 1.5 * 4.0;
+    const double ke1 = 0.5 * half.v1 * half.v1 + 1.5 * half.v2 * half.v2;
+    EXPECT_NEAR(ke1 / ke0, 0.276786, 1e-6);
+    const Impact1D plastic = impact1D(1.0, 4.0, 3.0, -2.0, 0.0);
+    EXPECT_NEAR(plastic.v1, -0.5, 1e-12);
+    EXPECT_NEAR(plastic.v2, -0.5, 1e-12);
+}
+
+TEST(Metrics, MedianAndP95) {
+    std::vector<double> v;
+    for (int i = 20; i >= 1; --i) {
+        v.push_back(i);
+    }
+    const auto [median, p95] = medianAndP95(v);
+    EXPECT_DOUBLE_EQ(median, 10.5);
+    EXPECT_DOUBLE_EQ(p95, 19.0); // nearest rank: ceil(0.95 * 20) = 19th value
+    EXPECT_EQ(medianAndP95({}), (std::pair<double, double>{0.0, 0.0}));
+}
+
+// A recording of a ball that falls from 5 m above rest and rebounds with e = 0.5 perfectly
+// (exact ballistic samples), for the evaluation code.
+Recording bouncingBall(double e) {
+    Recording rec;
+    rec.timeStep = 1.0f / 600.0f;
+    const double g = 10.0;
+    const double h = 5.0;
+    const double restY = 0.5;
+    const double tImpact = std::sqrt(2.0 * h / g);
+    const double vUp = e * g * tImpact;
+    std::vector<Sample> ball;
+    // Up to 1.8 s: after the first rebound, before the second landing (at 2 s for e = 0.5).
+    for (int k = 0; k <= 1080; ++k) {
+        const double t = k * double(rec.timeStep);
+        double y;
+        double vy;
+        if (t < tImpact) {
+            y = restY + h - 0.5 * g * t * t;
+            vy = -g * t;
+        } else {
+            const double s = t - tImpact;
+            y = restY + vUp * s - 0.5 * g * s * s;
+            vy = vUp - g * s;
+        }
+        ball.push_back({{0.0f, static_cast<float>(y)}, 0.0f, {0.0f, static_cast<float>(vy)}});
+        rec.kineticEnergy.push_back(0.5f * static_cast<float>(vy * vy));
+        rec.momentum.push_back({0.0f, static_cast<float>(vy)});
+        rec.maxSpeed.push_back(static_cast<float>(std::abs(vy)));
+        rec.penetration.push_back(0.0f);
+        rec.allAsleep.push_back(false);
+        if (k > 0) {
+            rec.stepMs.push_back(1.0);
+        }
+    }
+    rec.tagged["ball"] = ball;
+    return rec;
+}
+
+TEST(Evaluate, BounceHeightOfAnExactTrajectory) {
+    const Recording rec = bouncingBall(0.5);
+    Check c;
+    c.kind = CheckKind::BounceHeight;
+    c.body = "ball";
+    c.height = 5.0f;
+    c.restY = 0.5f;
+    c.restitution = 0.5f;
+    c.tolerance = 0.01f;
+    const CheckResult r = evaluate(c, rec, 10.0f);
+    EXPECT_DOUBLE_EQ(r.expected, 1.25);
+    EXPECT_NEAR(r.measured, 1.25, 1e-3);
+    EXPECT_TRUE(r.passed);
+    // The same trajectory judged as e = 0.75 (expected 2.8125 m) fails.
+    c.restitution = 0.75f;
+    EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
+}
+
+TEST(Evaluate, MomentumKineticEnergyAndSpeed) {
+    const Recording rec = bouncingBall(0.5);
+    Check c;
+    c.kind = CheckKind::MaxSpeed;
+    c.limit = 11.0f;
+    // Fastest at impact: g t = sqrt(2 g h) = 10 m/s.
+    CheckResult r = evaluate(c, rec, 10.0f);
+    EXPECT_NEAR(r.measured, 10.0, 0.02);
+    EXPECT_TRUE(r.passed);
+    c.limit = 9.0f;
+    EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
+    // Gravity changes momentum: the check must see it.
+    c.kind = CheckKind::Momentum;
+    c.tolerance = 0.01f;
+    EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
+}
+
+TEST(Evaluate, SlideDistanceIsMeasuredAlongTheSlope) {
+    Recording rec;
+    rec.timeStep = 0.5f;
+    const float theta = static_cast<float>(kPi / 6.0);
+    const glm::vec2 down{-std::cos(theta), -std::sin(theta)};
+    const glm::vec2 normal{-std::sin(theta), std::cos(theta)};
+    std::vector<Sample> block;
+    for (int k = 0; k <= 4; ++k) {
+        const float t = 0.5f * static_cast<float>(k);
+        const float s = static_cast<float>(slideDistance(10.0, theta, 0.2, t));
+        // A push out along the normal (a skin) must not count as sliding.
+        block.push_back({s * down + (k > 0 ? 0.015f : 0.0f) * normal, 0.0f, {}});
+        rec.kineticEnergy.push_back(0.0f);
+    }
+    rec.tagged["block"] = block;
+    Check c;
+    c.kind = CheckKind::SlideDistance;
+    c.body = "block";
+    c.slopeAngle = theta;
+    c.friction = 0.2f;
+    c.time = 2.0f;
+    c.tolerance = 1e-3f;
+    const CheckResult r = evaluate(c, rec, 10.0f);
+    EXPECT_NEAR(r.expected, 6.5358984, 1e-6);
+    EXPECT_NEAR(r.measured, 6.5358984, 1e-4);
+    EXPECT_TRUE(r.passed);
+}
+
+TEST(Evaluate, StandingFailsWhenTheTopFalls) {
+    Recording rec;
+    rec.tagged["top"] = {{{0.0f, 9.5f}, 0.0f, {}}, {{0.02f, 9.45f}, 0.0f, {}}};
+    rec.kineticEnergy = {0.0f, 0.0f};
+    Check c;
+    c.kind = CheckKind::Standing;
+    c.body = "top";
+    c.tolerance = 0.05f;
+    c.minY = 9.0f;
+    EXPECT_TRUE(evaluate(c, rec, 10.0f).passed);
+    rec.tagged["top"].back().position = {0.02f, 0.5f}; // fell straight down
+    EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
+    rec.tagged["top"].back().position = {0.3f, 9.5f}; // slid off sideways
+    EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
+}
+
+TEST(SvgPlot, ParetoFrontKeepsTheUnbeatenPoints) {
+    const auto front = paretoFront({{3.0, 1.0}, {1.0, 5.0}, {2.0, 2.0}, {2.5, 3.0}, {4.0, 1.0}});
+    const std::vector<std::pair<double, double>> expected{{1.0, 5.0}, {2.0, 2.0}, {3.0, 1.0}};
+    EXPECT_EQ(front, expected);
+}
+
+TEST(SvgPlot, EscapesText) {
+    EXPECT_EQ(escapeHtml("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
+    Plot p;
+    p.title = "<x>";
+    p.series.push_back({"s", "#000", {{1.0, 2.0}, {2.0, 3.0}}, false, true, {}});
+    const std::string svg = renderSvg(p);
+    EXPECT_EQ(svg.find("<x>"), std::string::npos);
+    EXPECT_NE(svg.find("&lt;x&gt;"), std::string::npos);
+    EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+}
+
+} // namespace
+} // namespace e2d::validation

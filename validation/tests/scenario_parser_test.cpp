@@ -1,0 +1,205 @@
+// SPDX-License-Identifier: MIT
+#include "scenario_parser.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+namespace e2d::validation {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+// The message of the ScenarioError that parsing `text` throws, or "" if it parses.
+std::string errorOf(const std::string& text) {
+    try {
+        (void)parseScenario(text, "test");
+    } catch (const ScenarioError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// A valid scene with four bodies (ground, box, circle, capsule) into which tests splice errors.
+std::string scene(const std::string& extraRoot, const std::string& circleShape,
+                  const std::string& extraBox = "") {
+    return R"({"family": "stacking", "duration": 2)" + extraRoot + R"(,
+      "bodies": [
+        {"type": "static", "position": [0, -1], "shape": {"type": "box", "halfExtents": [10, 1]}},
+        {"position": [0, 0.5], "tag": "top", "shape": {"type": "box")" + extraBox + R"(}},
+        {"position": [2, 0.5], "shapes": [{"type": "box"}]},
+        {"position": [4, 0.5], "shapes": [)" + circleShape + R"(]}
+      ]})";
+}
+
+TEST(ScenarioParser, ParsesAValidScene) {
+    const Scenario s = parseScenario(scene(R"(, "gravity": [0, -9.8], "quick": true)",
+                                           R"({"type": "circle", "radius": 0.5, "restitution": 0.5})"),
+                                     "fallback");
+    EXPECT_EQ(s.name, "fallback");
+    EXPECT_EQ(s.family, "stacking");
+    EXPECT_FLOAT_EQ(s.duration, 2.0f);
+    EXPECT_FLOAT_EQ(s.settle, 1.0f); // min(1, duration / 2)
+    EXPECT_TRUE(s.quick);
+    EXPECT_FLOAT_EQ(s.scene.gravity.y, -9.8f);
+    ASSERT_EQ(s.scene.bodies.size(), 4u);
+    EXPECT_EQ(s.scene.bodies[0].kind, scenes::BodyKind::Static);
+    EXPECT_EQ(s.scene.bodies[1].tag, "top");
+    EXPECT_EQ(s.scene.bodies[3].shapes[0].kind, scenes::ShapeKind::Circle);
+    EXPECT_FLOAT_EQ(s.scene.bodies[3].shapes[0].restitution, 0.5f);
+}
+
+TEST(ScenarioParser, NamesThePathOfANegativeRadius) {
+    EXPECT_EQ(errorOf(scene("", R"({"type": "circle", "radius": -1})")),
+              "bodies[3].shapes[0].radius: must be > 0, got -1");
+}
+
+TEST(ScenarioParser, NamesThePathOfASingleShape) {
+    const std::string text = R"({"family": "hard", "bodies": [
+        {"shape": {"type": "circle", "radius": 0.5}},
+        {"shape": {"type": "circle", "radius": 0}}]})";
+    EXPECT_EQ(errorOf(text), "bodies[1].shape.radius: must be > 0, got 0");
+}
+
+TEST(ScenarioParser, RejectsUnknownFieldsWithTheirPath) {
+    EXPECT_EQ(errorOf(scene("", R"({"type": "circle", "radius": 1, "frction": 0.2})")),
+              "bodies[3].shapes[0].frction: unknown field");
+    EXPECT_EQ(errorOf(scene(R"(, "duraton": 3)", R"({"type": "circle", "radius": 1})")),
+              "duraton: unknown field");
+    // A field of another shape type is unknown for this one.
+    EXPECT_EQ(errorOf(scene("", R"({"type": "circle", "radius": 1, "halfExtents": [1, 1]})")),
+              "bodies[3].shapes[0].halfExtents: unknown field");
+}
+
+TEST(ScenarioParser, RejectsWrongTypes) {
+    EXPECT_EQ(errorOf(scene(R"(, "timeStep": "fast")", R"({"type": "circle", "radius": 1})")),
+              "timeStep: expected a number, got string");
+    EXPECT_EQ(errorOf(scene("", R"({"type": "circle", "radius": 1})", R"(, "halfExtents": [1])")),
+              "bodies[1].shape.halfExtents: expected [x, y], got an array of 1");
+    EXPECT_EQ(errorOf(scene("", R"({"type": "circle", "radius": 1})", R"(, "halfExtents": [1, "a"])")),
+              "bodies[1].shape.halfExtents[1]: expected a number, got string");
+    EXPECT_EQ(errorOf(scene(R"(, "quick": 1)", R"({"type": "circle", "radius": 1})")),
+              "quick: expected true or false, got number");
+    EXPECT_EQ(errorOf(R"([1, 2])"), "(root): expected an object, got array");
+}
+
+TEST(ScenarioParser, RejectsOutOfRangeValues) {
+    EXPECT_EQ(errorOf(scene("", R"({"type": "circle", "radius": 1})", R"(, "halfExtents": [1, -2])")),
+              "bodies[1].shape.halfExtents[1]: must be > 0, got -2");
+    EXPECT_EQ(errorOf(scene(R"(, "settle": 3)", R"({"type": "circle", "radius": 1})")),
+              "settle: must be < duration (2), got 3");
+    EXPECT_EQ(errorOf(scene("", R"({"type": "capsule", "point1": [0, 0], "point2": [0, 0], "radius": 1})")),
+              "bodies[3].shapes[0].point2: must differ from point1");
+    EXPECT_EQ(errorOf(scene("", R"({"type": "polygon", "points": [[0, 0], [1, 0], [2, 0]]})")),
+              "bodies[3].shapes[0].points: the points enclose no area");
+    EXPECT_EQ(errorOf(scene("", R"({"type": "blob"})")),
+              "bodies[3].shapes[0].type: expected box, polygon, circle, capsule or segment, got \"blob\"");
+}
+
+TEST(ScenarioParser, ChecksGeneratorsSettingsAndChecks) {
+    EXPECT_EQ(errorOf(R"({"family": "stacking", "generators": [{"type": "pyramid", "base": 0}]})"),
+              "generators[0].base: must be in [1, 200], got 0");
+    EXPECT_EQ(errorOf(R"({"family": "stacking", "generators": [{"type": "verticalStack", "count": 2.5}]})"),
+              "generators[0].count: expected an integer, got 2.5");
+    EXPECT_EQ(errorOf(R"({"family": "stacking", "generators": [{"type": "verticalStack"}],
+                          "settings": {"box2d": {"subSteps": 4}}})"),
+              "settings.box2d.subSteps: unknown field");
+    EXPECT_EQ(errorOf(R"({"family": "stacking", "generators": [{"type": "verticalStack"}],
+                          "checks": [{"type": "standing", "body": "apex", "tolerance": 1, "minY": 0}]})"),
+              "checks[0].body: no body has tag \"apex\"");
+    EXPECT_EQ(errorOf(R"({"family": "stacking", "generators": [{"type": "verticalStack"}],
+                          "checks": [{"type": "maxSpeed"}]})"),
+              "checks[0].limit: required field is missing");
+    EXPECT_THAT(errorOf(R"({"family": "stacking", "generators": [{"type": "verticalStack"}],
+                          "checks": [{"type": "bounce"}]})"),
+                StartsWith("checks[0].type: expected one of standing, maxPenetration"));
+    EXPECT_EQ(errorOf(R"({"family": "friction", "duration": 2, "generators": [{"type": "verticalStack"}],
+                          "checks": [{"type": "rollingDistance", "body": "top", "slopeDeg": 20,
+                                      "time": 3, "tolerance": 0.1}]})"),
+              "checks[0].time: must be <= duration (2), got 3");
+}
+
+TEST(ScenarioParser, RejectsBadDocuments) {
+    EXPECT_THAT(errorOf("{\"family\": "), StartsWith("(root): not valid JSON"));
+    EXPECT_EQ(errorOf(R"({"bodies": [{"shape": {"type": "circle", "radius": 1}}]})"),
+              "family: expected stacking, friction, restitution, conservation or hard, got \"\"");
+    EXPECT_EQ(errorOf(R"({"family": "hard"})"),
+              "bodies: the scene has no bodies (give bodies or generators)");
+    EXPECT_EQ(errorOf(R"({"family": "hard", "bodies": [{"angle": 1, "angleDeg": 2,
+                          "shape": {"type": "circle", "radius": 1}}]})"),
+              "bodies[0].angleDeg: give either angle (radians) or angleDeg, not both");
+}
+
+TEST(ScenarioParser, AnglesInDegreesBecomeRadians) {
+    const Scenario s = parseScenario(R"({"family": "hard", "bodies": [{"angleDeg": 90,
+        "shape": {"type": "box", "angleDeg": 180}}]})", "x");
+    EXPECT_NEAR(s.scene.bodies[0].angle, 1.5707963f, 1e-6f);
+    EXPECT_NEAR(s.scene.bodies[0].shapes[0].angle, 3.1415927f, 1e-6f);
+}
+
+TEST(Generators, PyramidHasTheBox2DLayout) {
+    // base 3: rows of 3, 2, 1 unit boxes on a ground whose top is y = 0.
+    const Scenario s = parseScenario(
+        R"({"family": "stacking", "generators": [{"type": "pyramid", "base": 3}]})", "p");
+    ASSERT_EQ(s.scene.bodies.size(), 1u + 6u);
+    EXPECT_EQ(s.scene.bodies[0].kind, scenes::BodyKind::Static);
+    EXPECT_FLOAT_EQ(s.scene.bodies[0].position.y + s.scene.bodies[0].shapes[0].halfExtents.y, 0.0f);
+    EXPECT_FLOAT_EQ(s.scene.bodies[1].position.x, -1.0f);
+    EXPECT_FLOAT_EQ(s.scene.bodies[1].position.y, 0.5f);
+    EXPECT_FLOAT_EQ(s.scene.bodies[3].position.x, 1.0f);
+    EXPECT_FLOAT_EQ(s.scene.bodies[4].position.x, -0.5f); // second row, shifted half a box
+    EXPECT_FLOAT_EQ(s.scene.bodies[4].position.y, 1.5f);
+    EXPECT_FLOAT_EQ(s.scene.bodies[6].position.x, 0.0f);  // apex
+    EXPECT_FLOAT_EQ(s.scene.bodies[6].position.y, 2.5f);
+    EXPECT_EQ(s.scene.bodies[6].tag, "top");
+}
+
+TEST(Generators, StackDominoesAndGrid) {
+    const Scenario s = parseScenario(R"({"family": "stacking", "generators": [
+        {"type": "verticalStack", "count": 4, "half": 0.25, "origin": [10, 2], "tag": "apex"},
+        {"type": "dominoes", "count": 5, "spacing": 0.8, "push": -2, "ground": false},
+        {"type": "grid", "columns": 3, "rows": 2, "spacing": [1, 2], "origin": [0, 20],
+         "shape": {"type": "circle", "radius": 0.3}}]})", "g");
+    ASSERT_EQ(s.scene.bodies.size(), 1u + 4u + 5u + 6u);
+    EXPECT_FLOAT_EQ(s.scene.bodies[4].position.x, 10.0f);
+    EXPECT_FLOAT_EQ(s.scene.bodies[4].position.y, 2.0f + 0.25f * 7.0f);
+    EXPECT_EQ(s.scene.bodies[4].tag, "apex");
+    EXPECT_FLOAT_EQ(s.scene.bodies[5].angularVelocity, -2.0f);
+    EXPECT_FLOAT_EQ(s.scene.bodies[9].position.x, 4.0f * 0.8f);
+    EXPECT_FLOAT_EQ(s.scene.bodies[9].shapes[0].halfExtents.x, 0.125f);
+    EXPECT_FLOAT_EQ(s.scene.bodies[15].position.x, 2.0f);
+    EXPECT_FLOAT_EQ(s.scene.bodies[15].position.y, 22.0f);
+    EXPECT_EQ(s.scene.bodies[15].shapes[0].kind, scenes::ShapeKind::Circle);
+}
+
+TEST(ScenarioParser, EveryShippedScenarioParses) {
+    int count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(E2D_VALIDATION_SCENARIOS_DIR)) {
+        if (entry.path().extension() != ".json") {
+            continue;
+        }
+        SCOPED_TRACE(entry.path().string());
+        const Scenario s = loadScenario(entry.path());
+        EXPECT_EQ(s.name, entry.path().stem().string());
+        EXPECT_FALSE(s.checks.empty());
+        EXPECT_FALSE(s.measures.empty());
+        ++count;
+    }
+    EXPECT_GE(count, 25);
+}
+
+TEST(ScenarioParser, LoadPrefixesTheFileName) {
+    try {
+        (void)loadScenario("/nonexistent/x.json");
+        FAIL() << "expected a ScenarioError";
+    } catch (const ScenarioError& e) {
+        EXPECT_THAT(e.what(), HasSubstr("/nonexistent/x.json: cannot open the file"));
+    }
+}
+
+} // namespace
+} // namespace e2d::validation
