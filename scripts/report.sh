@@ -6,6 +6,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 root="$PWD"
 "$root/scripts/install-deps.sh"
+export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 out="${1:-$root/report}"
 mkdir -p "$out"
 

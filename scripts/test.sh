@@ -12,6 +12,8 @@ root="$PWD"
 
 export MESA_SHADER_CACHE_DISABLE=true ALSOFT_DRIVERS=null
 export CCACHE_DIR="${CCACHE_DIR:-$HOME/.cache/ccache}"
+# Clones in other folders (CI's) reuse the cache: paths relative to the checkout, cwd not hashed.
+export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 fuzz_seconds="${E2D_FUZZ_SECONDS:-30}"
 logs="$root/build/logs"
 mkdir -p "$logs"
