@@ -6,6 +6,7 @@
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
+#include "component_check.hpp"
 #include "object_pose.hpp"
 
 #include <glm/mat4x4.hpp>
@@ -15,24 +16,15 @@
 
 namespace e2d::physics {
 
-namespace {
-
-void requireNonNegative(float value, const char* field) {
-    if (!std::isfinite(value) || value < 0.0f) {
-        throw core::Error(std::string("physics::Collider::Collider(): def.") + field +
-                          " must be finite and >= 0, got " + std::to_string(value));
-    }
-}
-
-} // namespace
-
 Collider::Collider(PhysicsSystem& system, const ShapeGeometry& geometry, const ColliderDef& def)
     : system_(system), geometry_(geometry), def_(def) {
     validate(geometry, "physics::Collider::Collider()");
-    requireNonNegative(def.density, "density");
-    requireNonNegative(def.friction, "friction");
-    requireNonNegative(def.restitution, "restitution");
-    requireNonNegative(def.rollingResistance, "rollingResistance");
+    using detail::component_check::requireNonNegative;
+    constexpr const char* kConstructor = "Collider::Collider";
+    requireNonNegative(kConstructor, "density", def.density);
+    requireNonNegative(kConstructor, "friction", def.friction);
+    requireNonNegative(kConstructor, "restitution", def.restitution);
+    requireNonNegative(kConstructor, "rollingResistance", def.rollingResistance);
 }
 
 Collider::~Collider() = default;

@@ -6,6 +6,7 @@
 #include <e2d/physics/collider.hpp>
 #include <e2d/physics/physics_system.hpp>
 
+#include "component_check.hpp"
 #include "object_pose.hpp"
 
 #include <cmath>
@@ -15,14 +16,7 @@
 namespace e2d::physics {
 
 namespace {
-
-void requireNonNegative(float value, const char* field) {
-    if (!std::isfinite(value) || value < 0.0f) {
-        throw core::Error(std::string("physics::Rigidbody::Rigidbody(): def.") + field +
-                          " must be finite and >= 0, got " + std::to_string(value));
-    }
-}
-
+constexpr const char* kConstructor = "Rigidbody::Rigidbody";
 } // namespace
 
 Rigidbody::Rigidbody(PhysicsSystem& system, const RigidbodyDef& def) : system_(system), def_(def) {
@@ -30,16 +24,13 @@ Rigidbody::Rigidbody(PhysicsSystem& system, const RigidbodyDef& def) : system_(s
         throw core::Error("physics::Rigidbody::Rigidbody(): def.type must be dynamic or kinematic; "
                           "a Collider without a Rigidbody is static");
     }
-    if (!std::isfinite(def.gravityScale)) {
-        throw core::Error("physics::Rigidbody::Rigidbody(): def.gravityScale must be finite, got " +
-                          std::to_string(def.gravityScale));
-    }
-    requireNonNegative(def.linearDamping, "linearDamping");
-    requireNonNegative(def.angularDamping, "angularDamping");
-    if (!isFinite(def.linearVelocity) || !std::isfinite(def.angularVelocity)) {
-        throw core::Error("physics::Rigidbody::Rigidbody(): def.linearVelocity and "
-                          "def.angularVelocity must be finite");
-    }
+    using namespace detail::component_check;
+    requireFinite(kConstructor, "gravityScale", def.gravityScale);
+    requireNonNegative(kConstructor, "linearDamping", def.linearDamping);
+    requireNonNegative(kConstructor, "angularDamping", def.angularDamping);
+    requireFinite(kConstructor, "linearVelocity.x", def.linearVelocity.x);
+    requireFinite(kConstructor, "linearVelocity.y", def.linearVelocity.y);
+    requireFinite(kConstructor, "angularVelocity", def.angularVelocity);
 }
 
 Rigidbody::~Rigidbody() = default;

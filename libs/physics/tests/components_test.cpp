@@ -182,14 +182,36 @@ TEST_F(ComponentsTest, RigidbodyIsUniqueAndRejectsBadDefinitions) {
         Rigidbody rb(physics, bad);
         FAIL() << "negative damping accepted";
     } catch (const core::Error& e) {
-        EXPECT_NE(std::string(e.what()).find("def.linearDamping must be finite and >= 0, got -1"),
-                  std::string::npos)
-            << e.what();
+        EXPECT_STREQ(e.what(),
+                     "physics::Rigidbody::Rigidbody(): def.linearDamping must be finite and >= 0, got -1");
     }
     physics::RigidbodyDef staticDef;
     staticDef.type = physics::BodyType::Static;
     EXPECT_THROW(Rigidbody(physics, staticDef), core::Error);
     EXPECT_THROW(Collider(physics, physics::Circle{{0.0f, 0.0f}, -1.0f}), core::Error);
+}
+
+TEST_F(ComponentsTest, DefinitionErrorsNameTheFieldAndValue) {
+    const auto message = [](auto&& make) {
+        try {
+            make();
+        } catch (const core::Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    physics::ColliderDef def;
+    def.friction = -0.5f;
+    EXPECT_EQ(message([&] { Collider c(physics, box(0.5f), def); }),
+              "physics::Collider::Collider(): def.friction must be finite and >= 0, got -0.5");
+    def = {};
+    def.density = std::nanf("");
+    EXPECT_EQ(message([&] { Collider c(physics, box(0.5f), def); }),
+              "physics::Collider::Collider(): def.density must be finite and >= 0, got nan");
+    physics::RigidbodyDef rb;
+    rb.gravityScale = INFINITY;
+    EXPECT_EQ(message([&] { Rigidbody r(physics, rb); }),
+              "physics::Rigidbody::Rigidbody(): def.gravityScale must be finite, got inf");
 }
 
 TEST_F(ComponentsTest, ImpulseAndFreezeFlagsActThroughTheComponent) {
