@@ -2,12 +2,14 @@
 #pragma once
 
 #include <e2d/core/error.hpp>
+#include <e2d/physics/distance.hpp>
 #include <e2d/physics/manifold.hpp>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <random>
 #include <string>
 
 namespace e2d::physics::test {
@@ -26,6 +28,34 @@ std::string errorMessage(F&& f) {
 }
 
 inline Transform makeTransform(float x, float y, float angle) { return {{x, y}, Rot::fromAngle(angle)}; }
+inline Transform at(float x, float y, float angle = 0.0f) { return makeTransform(x, y, angle); }
+
+// A GJK/EPA query of two proxies at two transforms.
+inline DistanceInput pair(const ShapeProxy& a, const Transform& xfA, const ShapeProxy& b,
+                          const Transform& xfB, bool useRadii = true) {
+    DistanceInput input;
+    input.proxyA = a;
+    input.proxyB = b;
+    input.transformA = xfA;
+    input.transformB = xfB;
+    input.useRadii = useRadii;
+    return input;
+}
+
+// Fixed-seed random numbers for the property tests, mapped by hand so every standard library
+// draws the same values.
+class TestRandom {
+public:
+    explicit TestRandom(unsigned seed) : engine_(seed) {}
+    float uniform(float lo, float hi) {
+        return lo + (hi - lo) * static_cast<float>(engine_() - engine_.min()) /
+                        static_cast<float>(engine_.max() - engine_.min());
+    }
+    int index(int n) { return static_cast<int>(engine_() % static_cast<unsigned>(n)); }
+
+private:
+    std::mt19937 engine_;
+};
 
 #define E2D_EXPECT_VEC2_NEAR(actual, ex, ey, tol)                                                    \
     do {                                                                                           \

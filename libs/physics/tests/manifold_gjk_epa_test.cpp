@@ -9,12 +9,15 @@
 #include <random>
 #include <vector>
 
+#include "geometry_test_util.hpp"
+
 namespace e2d::physics {
 namespace {
 
+using test::at;
+
 constexpr float kPi = 3.14159265f;
 
-Transform at(float x, float y, float angle = 0.0f) { return {{x, y}, Rot::fromAngle(angle)}; }
 
 void expectFinite(const Manifold& m) {
     EXPECT_TRUE(isFinite(m.normal));

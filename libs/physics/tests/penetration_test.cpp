@@ -6,8 +6,13 @@
 #include <cmath>
 #include <vector>
 
+#include "geometry_test_util.hpp"
+
 namespace e2d::physics {
 namespace {
+
+using test::at;
+using test::pair;
 
 constexpr float kTol = 1.0e-5f;
 
@@ -16,18 +21,7 @@ ShapeProxy boxProxy(float hx, float hy, float radius = 0.0f) {
     return makeProxy(points, radius);
 }
 
-Transform at(float x, float y, float angle = 0.0f) { return {{x, y}, Rot::fromAngle(angle)}; }
 
-DistanceInput pair(const ShapeProxy& a, const Transform& xfA, const ShapeProxy& b,
-                   const Transform& xfB, bool useRadii = true) {
-    DistanceInput input;
-    input.proxyA = a;
-    input.proxyB = b;
-    input.transformA = xfA;
-    input.transformB = xfB;
-    input.useRadii = useRadii;
-    return input;
-}
 
 void expectFinite(const PenetrationOutput& out) {
     EXPECT_TRUE(isFinite(out.pointA));

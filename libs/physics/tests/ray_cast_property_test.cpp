@@ -12,18 +12,7 @@
 namespace e2d::physics {
 namespace {
 
-class Random {
-public:
-    explicit Random(unsigned seed) : engine_(seed) {}
-    float uniform(float lo, float hi) {
-        return lo + (hi - lo) * static_cast<float>(engine_() - engine_.min()) /
-                        static_cast<float>(engine_.max() - engine_.min());
-    }
-    int index(int n) { return static_cast<int>(engine_() % static_cast<unsigned>(n)); }
-
-private:
-    std::mt19937 engine_;
-};
+using Random = test::TestRandom;
 
 ShapeGeometry randomSolidShape(Random& rng) {
     switch (rng.index(3)) {

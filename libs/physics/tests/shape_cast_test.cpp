@@ -7,15 +7,18 @@
 #include <cmath>
 #include <vector>
 
+#include "geometry_test_util.hpp"
+
 namespace e2d::physics {
 namespace {
+
+using test::at;
 
 ShapeProxy boxProxy(float hx, float hy, float radius = 0.0f) {
     std::vector<Vec2> points{{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}};
     return makeProxy(points, radius);
 }
 
-Transform at(float x, float y, float angle = 0.0f) { return {{x, y}, Rot::fromAngle(angle)}; }
 
 ShapeCastPairInput castInput(const ShapeProxy& a, const Transform& xfA, const ShapeProxy& b,
                              const Transform& xfB, Vec2 translation) {
