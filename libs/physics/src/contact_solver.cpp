@@ -36,6 +36,32 @@ inline StatePair statesOf(const ContactConstraint& c, std::span<BodyState> state
     return {a, b};
 }
 
+// Coulomb friction at each point of `c`, each clamped by its own accumulated normal impulse.
+// Shared by the soft step and the classic solver; the velocities are updated in place.
+inline void solveFriction(ContactConstraint& c, Vec2 tangent, Vec2& vA, float& wA, Vec2& vB,
+                          float& wB) {
+    const Vec2 mA = c.invMassA;
+    const Vec2 mB = c.invMassB;
+    const float iA = c.invInertiaA;
+    const float iB = c.invInertiaB;
+    for (int i = 0; i < c.pointCount; ++i) {
+        ContactConstraintPoint& cp = c.points[i];
+        Vec2 rA = cp.anchorA;
+        Vec2 rB = cp.anchorB;
+        Vec2 dv = (vB + cross(wB, rB)) - (vA + cross(wA, rA));
+        float impulse = -cp.tangentMass * dot(dv, tangent);
+        float maxFriction = c.friction * cp.normalImpulse;
+        float newImpulse = std::clamp(cp.tangentImpulse + impulse, -maxFriction, maxFriction);
+        impulse = newImpulse - cp.tangentImpulse;
+        cp.tangentImpulse = newImpulse;
+        Vec2 p = impulse * tangent;
+        vA -= scale(mA, p);
+        wA -= iA * cross(rA, p);
+        vB += scale(mB, p);
+        wB += iB * cross(rB, p);
+    }
+}
+
 } // namespace
 
 void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyView& a,
@@ -174,23 +200,7 @@ void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState
             wB += iB * cross(rB, p);
         }
 
-        for (int i = 0; i < c.pointCount; ++i) {
-            ContactConstraintPoint& cp = c.points[i];
-            Vec2 rA = cp.anchorA;
-            Vec2 rB = cp.anchorB;
-            Vec2 dv = (vB + cross(wB, rB)) - (vA + cross(wA, rA));
-            float vt = dot(dv, tangent);
-            float impulse = -cp.tangentMass * vt;
-            float maxFriction = c.friction * cp.normalImpulse;
-            float newImpulse = std::clamp(cp.tangentImpulse + impulse, -maxFriction, maxFriction);
-            impulse = newImpulse - cp.tangentImpulse;
-            cp.tangentImpulse = newImpulse;
-            Vec2 p = impulse * tangent;
-            vA -= scale(mA, p);
-            wA -= iA * cross(rA, p);
-            vB += scale(mB, p);
-            wB += iB * cross(rB, p);
-        }
+        solveFriction(c, tangent, vA, wA, vB, wB);
 
         if (c.rollingResistance > 0.0f) {
             float maxLambda = c.rollingResistance * totalNormalImpulse;
@@ -304,22 +314,7 @@ void solveVelocitiesClassic(std::span<ContactConstraint> constraints, std::span<
         float iB = c.invInertiaB;
 
         // Friction first, as Box2D 2.4 does: the normal impulse then has the last word.
-        for (int i = 0; i < c.pointCount; ++i) {
-            ContactConstraintPoint& cp = c.points[i];
-            Vec2 rA = cp.anchorA;
-            Vec2 rB = cp.anchorB;
-            Vec2 dv = (vB + cross(wB, rB)) - (vA + cross(wA, rA));
-            float impulse = -cp.tangentMass * dot(dv, tangent);
-            float maxFriction = c.friction * cp.normalImpulse;
-            float newImpulse = std::clamp(cp.tangentImpulse + impulse, -maxFriction, maxFriction);
-            impulse = newImpulse - cp.tangentImpulse;
-            cp.tangentImpulse = newImpulse;
-            Vec2 p = impulse * tangent;
-            vA -= scale(mA, p);
-            wA -= iA * cross(rA, p);
-            vB += scale(mB, p);
-            wB += iB * cross(rB, p);
-        }
+        solveFriction(c, tangent, vA, wA, vB, wB);
 
         for (int i = 0; i < c.pointCount; ++i) {
             ContactConstraintPoint& cp = c.points[i];
