@@ -35,6 +35,18 @@ struct ContactConstraintPoint {
     bool impactSeen = false;
 };
 
+// A symmetric 2x2 matrix [a11 a12; a12 a22].
+struct BlockMatrix {
+    float a11 = 0.0f;
+    float a12 = 0.0f;
+    float a22 = 0.0f;
+};
+
+// Classic mode solves a 2-point manifold's normal impulses together only while K's condition
+// number (estimated as k11^2 / det K) stays below this; above it one point is kept (Box2D 2.4's
+// value).
+inline constexpr float kMaxBlockConditionNumber = 1000.0f;
+
 struct ContactConstraint {
     ContactConstraintPoint points[2];
     Vec2 normal{0.0f, 0.0f};
@@ -51,6 +63,11 @@ struct ContactConstraint {
     // pressing). Restitution uses it to bounce to the height the integrator would reach.
     float pressAcceleration = 0.0f;
     Softness softness{};
+    // Classic mode: the normal effective-mass matrix of a 2-point manifold and its inverse,
+    // set by prepareClassic() when blockSolve.
+    BlockMatrix blockK{};
+    BlockMatrix blockInvK{};
+    bool blockSolve = false;
     int indexA = -1; // BodyState index, -1 for a static body
     int indexB = -1;
     int pointCount = 0;
@@ -89,7 +106,10 @@ void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState
 void applyRestitution(std::span<ContactConstraint> constraints, std::span<BodyState> states,
                       float threshold, float h);
 
-// Classic. prepareClassic() sets the restitution targets from relativeVelocity.
+// Classic. prepareClassic() sets the restitution targets from relativeVelocity and, for
+// 2-point manifolds, the block matrix (or drops to one point when it is ill-conditioned).
+// solveVelocitiesClassic() then solves both normal impulses of such a manifold as one 2x2
+// linear complementarity problem (contact_solver_classic.cpp).
 void prepareClassic(std::span<ContactConstraint> constraints, float restitutionThreshold);
 void solveVelocitiesClassic(std::span<ContactConstraint> constraints, std::span<BodyState> states,
                             float invDt);

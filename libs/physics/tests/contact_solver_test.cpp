@@ -407,5 +407,127 @@ TEST(SoftStep, LockedAxisIsNotPushed) {
     EXPECT_NEAR(h.bodies[0].state.linearVelocity.y, 0.0f, 1e-6f);
 }
 
+// A unit-mass body (inverse inertia 1/2) on static ground, touching at rB = (-1, -1/2) and
+// (1, -1/2) from its centre, normal +y, no friction: the 2-point manifold of the block tests.
+// With rn = cross(r, n) = r.x = -1 and 1, K = [1 + 1/2, 1 - 1/2; 1 - 1/2, 1 + 1/2]
+// = [3/2, 1/2; 1/2, 3/2].
+ContactConstraint twoPointConstraint(Vec2 velocity, float angularVelocity, float invInertia) {
+    Manifold m;
+    m.normal = {0.0f, 1.0f};
+    m.pointCount = 2;
+    for (int i = 0; i < 2; ++i) {
+        ManifoldPoint& mp = m.points[i];
+        mp.point = {i == 0 ? -1.0f : 1.0f, 0.0f};
+        mp.anchorA = mp.point;                      // ground origin at (0, 0)
+        mp.anchorB = mp.point - Vec2{0.0f, 0.5f};  // body centre at (0, 0.5)
+        mp.separation = 0.0f;
+        mp.id = static_cast<std::uint16_t>(i);
+    }
+    ContactBodyView ground;
+    ContactBodyView body{{0.0f, 0.0f}, velocity, angularVelocity, {1.0f, 1.0f}, invInertia, 0};
+    ContactConstraint c;
+    prepareContact(c, m, ground, body, {0.0f, 0.0f, 0.0f}, {});
+    return c;
+}
+
+float normalVelocity(const ContactConstraint& c, const BodyState& s, int i) {
+    Vec2 v = s.linearVelocity + cross(s.angularVelocity, c.points[i].anchorB);
+    return dot(v, c.normal);
+}
+
+TEST(ClassicBlock, BothPointsPushSolvedExactlyInOneIteration) {
+    // v = (0, -1), w = 1/4: vn = -1 + w * rn = (-5/4, -3/4). Both push, K x = -vn:
+    // x = K^-1 (5/4, 3/4) = (1/2) [3/2 -1/2; -1/2 3/2] (5/4, 3/4) = (3/4, 1/4) (det K = 2).
+    // Point by point, one pass would give (5/6, 2/9) and leave vn1 = 1/9.
+    std::vector<ContactConstraint> cs{twoPointConstraint({0.0f, -1.0f}, 0.25f, 0.5f)};
+    std::vector<BodyState> states(1);
+    states[0].linearVelocity = {0.0f, -1.0f};
+    states[0].angularVelocity = 0.25f;
+    prepareClassic(cs, 1.0f);
+    ASSERT_EQ(cs[0].pointCount, 2);
+    EXPECT_TRUE(cs[0].blockSolve);
+    solveVelocitiesClassic(cs, states, 60.0f);
+    EXPECT_NEAR(cs[0].points[0].normalImpulse, 0.75f, 1e-6f);
+    EXPECT_NEAR(cs[0].points[1].normalImpulse, 0.25f, 1e-6f);
+    EXPECT_NEAR(normalVelocity(cs[0], states[0], 0), 0.0f, 1e-6f);
+    EXPECT_NEAR(normalVelocity(cs[0], states[0], 1), 0.0f, 1e-6f);
+    // v_y = -1 + (3/4 + 1/4), w = 1/4 + (1/2)(-1 * 3/4 + 1 * 1/4).
+    EXPECT_NEAR(states[0].linearVelocity.y, 0.0f, 1e-6f);
+    EXPECT_NEAR(states[0].angularVelocity, 0.0f, 1e-6f);
+}
+
+TEST(ClassicBlock, OnlyTheApproachingPointPushes) {
+    // v = (0, -1), w = 1: vn = (-2, 0). Both pushing needs x = K^-1 (2, 0) = (3/2, -1/2) < 0;
+    // the first alone: x1 = 2 / (3/2) = 4/3, then vn2 = (1/2)(4/3) = 2/3 >= 0: that case wins.
+    std::vector<ContactConstraint> cs{twoPointConstraint({0.0f, -1.0f}, 1.0f, 0.5f)};
+    std::vector<BodyState> states(1);
+    states[0].linearVelocity = {0.0f, -1.0f};
+    states[0].angularVelocity = 1.0f;
+    prepareClassic(cs, 1.0f);
+    solveVelocitiesClassic(cs, states, 60.0f);
+    EXPECT_NEAR(cs[0].points[0].normalImpulse, 4.0f / 3.0f, 1e-6f);
+    EXPECT_EQ(cs[0].points[1].normalImpulse, 0.0f);
+    EXPECT_NEAR(normalVelocity(cs[0], states[0], 0), 0.0f, 1e-6f);
+    EXPECT_NEAR(normalVelocity(cs[0], states[0], 1), 2.0f / 3.0f, 1e-6f);
+}
+
+TEST(ClassicBlock, SeparatingPointsReleaseTheirWarmStart) {
+    // Moving away at 1 m/s with a warm start of (1/4, 1/4) already applied: b = vn - K x_old
+    // = (1, 1) - (1/2, 1/2) >= 0, so the answer is x = 0 and vn = b = (1/2, 1/2).
+    std::vector<ContactConstraint> cs{twoPointConstraint({0.0f, 1.0f}, 0.0f, 0.5f)};
+    cs[0].points[0].normalImpulse = 0.25f;
+    cs[0].points[1].normalImpulse = 0.25f;
+    std::vector<BodyState> states(1);
+    states[0].linearVelocity = {0.0f, 1.0f};
+    prepareClassic(cs, 1.0f);
+    solveVelocitiesClassic(cs, states, 60.0f);
+    EXPECT_EQ(cs[0].points[0].normalImpulse, 0.0f);
+    EXPECT_EQ(cs[0].points[1].normalImpulse, 0.0f);
+    EXPECT_NEAR(states[0].linearVelocity.y, 0.5f, 1e-6f);
+}
+
+TEST(ClassicBlock, RedundantPointsFallBackToOne) {
+    // No rotation (inverse inertia 0): K = [1 1; 1 1] is singular, so one point carries the
+    // whole load, and it takes the second point's warm start with it.
+    std::vector<ContactConstraint> cs{twoPointConstraint({0.0f, -1.0f}, 0.0f, 0.0f)};
+    cs[0].points[0].normalImpulse = 0.125f;
+    cs[0].points[1].normalImpulse = 0.375f;
+    std::vector<BodyState> states(1);
+    states[0].linearVelocity = {0.0f, -1.0f};
+    prepareClassic(cs, 1.0f);
+    EXPECT_FALSE(cs[0].blockSolve);
+    ASSERT_EQ(cs[0].pointCount, 1);
+    EXPECT_EQ(cs[0].points[0].normalImpulse, 0.5f);
+    warmStartContacts(cs, states); // v_y = -1 + 1/8 + 3/8
+    EXPECT_NEAR(states[0].linearVelocity.y, -0.5f, 1e-6f);
+    solveVelocitiesClassic(cs, states, 60.0f);
+    EXPECT_NEAR(cs[0].points[0].normalImpulse, 1.0f, 1e-6f);
+    EXPECT_NEAR(states[0].linearVelocity.y, 0.0f, 1e-6f);
+}
+
+TEST(ClassicBlock, ConditionGuardAtTheThreshold) {
+    // Points d apart on a body of inverse inertia i: K = [1 + i d^2/4, 1 - i d^2/4; ...],
+    // det K = i d^2, k11^2 / det grows like 1 / (i d^2): close points are dropped to one.
+    auto blockFor = [](float halfGap) {
+        Manifold m;
+        m.normal = {0.0f, 1.0f};
+        m.pointCount = 2;
+        m.points[0].anchorA = {-halfGap, 0.0f};
+        m.points[0].anchorB = {-halfGap, -0.5f};
+        m.points[1].anchorA = {halfGap, 0.0f};
+        m.points[1].anchorB = {halfGap, -0.5f};
+        m.points[1].id = 1;
+        ContactBodyView body{{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f, {1.0f, 1.0f}, 1.0f, 0};
+        std::vector<ContactConstraint> cs(1);
+        prepareContact(cs[0], m, {}, body, {}, {});
+        prepareClassic(cs, 1.0f);
+        return cs[0].blockSolve;
+    };
+    // halfGap 0.1: k11 = 1.01, det = 0.04, ratio 25.5; halfGap 0.01: k11 ~ 1, det = 4e-4,
+    // ratio ~2500 > 1000.
+    EXPECT_TRUE(blockFor(0.1f));
+    EXPECT_FALSE(blockFor(0.01f));
+}
+
 } // namespace
 } // namespace e2d::physics::detail
