@@ -140,6 +140,7 @@ void World::Impl::updateContacts(float dt) {
         }
         bool wasTouching = c.touching;
         if (c.sensor) {
+            ++s.counters.manifoldUpdates;
             Manifold m = collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
                                  collisionAlgorithm, 0.0f);
             c.touching = m.pointCount > 0;
@@ -164,6 +165,7 @@ void World::Impl::updateContacts(float dt) {
                         std::abs(bb.angularVelocity) * bb.motion.maxExtent;
         float margin = std::min(speculativeDistance + dt * closing, 4.0f * kAabbMargin);
         Manifold old = c.manifold;
+        ++s.counters.manifoldUpdates;
         c.manifold = collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
                              collisionAlgorithm, margin);
         Manifold& m = c.manifold;

@@ -378,6 +378,8 @@ std::span<const SensorEndTouchEvent> World::sensorEndEvents() const {
 std::span<const ContactHitEvent> World::hitEvents() const { return impl_->sim.hitEvents; }
 std::span<const BodyId> World::nonFiniteBodies() const { return impl_->sim.nonFiniteBodies; }
 
+StepCounters World::stepCounters() const { return impl_->sim.counters; }
+
 int World::contactCount() const { return impl_->sim.contactCount; }
 
 void World::forEachTouchingContact(FunctionRef<void(const ContactData&)> callback) const {

@@ -37,12 +37,15 @@ void World::step(float timeStep) {
     s.sensorEndEvents.clear();
     s.hitEvents.clear();
     s.nonFiniteBodies.clear();
+    s.counters = {};
     s.endEvents.swap(s.pendingEndEvents);
     s.sensorEndEvents.swap(s.pendingSensorEndEvents);
     s.inStep = true;
     w.updateContacts(timeStep);
     if (timeStep > 0.0f) {
         w.solve(timeStep);
+        s.counters.solverBodies = static_cast<int>(s.sims.size());
+        s.counters.contactConstraints = static_cast<int>(s.constraints.size());
         w.updateSleep(timeStep);
     }
     s.inStep = false;

@@ -44,6 +44,18 @@ struct ContactHitEvent {
     float approachSpeed = 0.0f; ///< normal closing speed at impact, m/s, > threshold
 };
 
+/// The work the last World::step() did: what a profiler or a test counts (a sleeping pile
+/// should cost almost nothing). All zero before the first step and after step(0) solves
+/// nothing.
+struct StepCounters {
+    /// Awake dynamic and kinematic bodies the solver integrated.
+    int solverBodies = 0;
+    /// Touching contacts the solver ran (one per shape pair, any point count).
+    int contactConstraints = 0;
+    /// Contacts whose manifold the narrow phase recomputed (pairs with an awake body).
+    int manifoldUpdates = 0;
+};
+
 /// A touching contact as World::forEachContact() shows it.
 struct ContactData {
     ShapeId shapeA;

@@ -316,6 +316,9 @@ public:
     /// position or velocity); the rest of the world went on.
     [[nodiscard]] std::span<const BodyId> nonFiniteBodies() const;
 
+    /// What the last step computed (see StepCounters).
+    [[nodiscard]] StepCounters stepCounters() const;
+
     /// Number of contacts (pairs of shapes whose fat boxes overlap), touching or not.
     [[nodiscard]] int contactCount() const;
     /// Calls `callback` for each touching solid contact (manifold with points), in a fixed
