@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: MIT
+// Solver behaviour seen through the World: warm starting by feature id, the restitution
+// threshold, friction and restitution mixing rules, hit events (approach speed along the
+// normal, point, threshold), and several worlds stepping at once on different threads.
+#include "world_step_util.hpp"
+#include "world_test_util.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <thread>
+#include <vector>
+
+namespace e2d::physics::test {
+namespace {
+
+TEST(WorldSolver, RestingImpulsesPersistByFeatureId) {
+    World world;
+    addGround(world);
+    BodyId box = addBox(world, {0.0f, 0.5f}, 0.5f); // mass 1
+    for (int i = 0; i < 20; ++i) {
+        world.step(kStep);
+    }
+    std::uint16_t ids[2] = {0, 0};
+    float impulses[2] = {0.0f, 0.0f};
+    int contacts = 0;
+    world.forEachTouchingContact([&](const ContactData& c) {
+        ++contacts;
+        ASSERT_EQ(c.manifold->pointCount, 2);
+        for (int i = 0; i < 2; ++i) {
+            ids[i] = c.manifold->points[i].id;
+            impulses[i] = c.manifold->points[i].normalImpulse;
+            EXPECT_TRUE(c.manifold->points[i].persisted);
+        }
+    });
+    ASSERT_EQ(contacts, 1);
+    EXPECT_NE(ids[0], ids[1]);
+    // Warm-started sub-step impulses carry the weight: m g h in total, half at each corner.
+    float h = kStep / 4.0f;
+    EXPECT_NEAR(impulses[0] + impulses[1], 10.0f * h, 1e-3f * 10.0f * h * 10.0f);
+    EXPECT_NEAR(impulses[0], impulses[1], 0.05f * 10.0f * h);
+    // Next step, each id keeps its own impulse (matched by id, not by slot).
+    world.step(kStep);
+    world.forEachTouchingContact([&](const ContactData& c) {
+        for (int i = 0; i < c.manifold->pointCount; ++i) {
+            int j = c.manifold->points[i].id == ids[0] ? 0 : 1;
+            EXPECT_EQ(c.manifold->points[i].id, ids[j]);
+            EXPECT_NEAR(c.manifold->points[i].normalImpulse, impulses[j], 0.02f * 10.0f * h);
+        }
+    });
+    EXPECT_NEAR(world.transform(box).p.y, 0.5f, kLinearSlop);
+}
+
+// Highest point a ball reaches after hitting the ground once at `speed`.
+float reboundHeight(float speed, float threshold, float restitution) {
+    WorldDef def{.gravity = {0.0f, 0.0f}};
+    def.solver.restitutionThreshold = threshold;
+    World world{def};
+    addGround(world, 0.6f, restitution);
+    BodyId ball = addBall(world, {0.0f, 0.6f}, 0.5f, restitution);
+    world.setLinearVelocity(ball, {0.0f, -speed});
+    float highest = 0.0f;
+    for (int i = 0; i < 60; ++i) {
+        world.step(kStep);
+        highest = std::max(highest, world.linearVelocity(ball).y);
+    }
+    return highest; // no gravity: the rebound speed
+}
+
+TEST(WorldSolver, RestitutionOnlyAboveTheThresholdSpeed) {
+    // Elastic ball at 0.8 m/s: below the default 1 m/s threshold it stops, above a 0.5 m/s
+    // threshold it rebounds at 0.8 m/s.
+    EXPECT_LT(reboundHeight(0.8f, 1.0f, 1.0f), 0.01f);
+    EXPECT_NEAR(reboundHeight(0.8f, 0.5f, 1.0f), 0.8f, 0.8f * 0.02f);
+    // e = 0.5 at 4 m/s rebounds at 2 m/s.
+    EXPECT_NEAR(reboundHeight(4.0f, 1.0f, 0.5f), 2.0f, 2.0f * 0.02f);
+}
+
+TEST(WorldSolver, MixingRulesAreConfigurable) {
+    EXPECT_FLOAT_EQ(mix(MixingRule::GeometricMean, 0.25f, 1.0f), 0.5f);
+    EXPECT_FLOAT_EQ(mix(MixingRule::Average, 0.25f, 1.0f), 0.625f);
+    EXPECT_FLOAT_EQ(mix(MixingRule::Min, 0.25f, 1.0f), 0.25f);
+    EXPECT_FLOAT_EQ(mix(MixingRule::Max, 0.25f, 1.0f), 1.0f);
+    EXPECT_FLOAT_EQ(mix(MixingRule::Multiply, 0.25f, 1.0f), 0.25f);
+
+    // A box (mu 0.5) sliding at 3 m/s on ice (mu 0): the geometric mean gives no friction,
+    // Max gives mu = 0.5, so it decelerates at mu g = 5 m/s^2 (0.3 s: 1.5 m/s).
+    for (MixingRule rule : {MixingRule::GeometricMean, MixingRule::Max}) {
+        WorldDef def;
+        def.solver.frictionMixing = rule;
+        World world{def};
+        addGround(world, 0.0f);
+        BodyId box = addBox(world, {0.0f, 0.5f}, 0.5f, 0.5f);
+        for (int i = 0; i < 10; ++i) {
+            world.step(kStep); // settle onto the ground
+        }
+        world.setLinearVelocity(box, {3.0f, 0.0f});
+        for (int i = 0; i < 18; ++i) {
+            world.step(kStep);
+        }
+        float expected = rule == MixingRule::Max ? 3.0f - 5.0f * 0.3f : 3.0f;
+        EXPECT_NEAR(world.linearVelocity(box).x, expected, 0.02f) << static_cast<int>(rule);
+    }
+}
+
+TEST(WorldSolver, HitEventCarriesTheNormalApproachSpeedAndPoint) {
+    World world{WorldDef{.gravity = {0.0f, 0.0f}}};
+    addGround(world);
+    // 4 m/s along x, 3 m/s down: the approach speed is the normal part, 3, not 5.
+    BodyId ball = addBall(world, {2.0f, 1.0f}, 0.5f, 0.0f, 0.0f);
+    world.setLinearVelocity(ball, {4.0f, -3.0f});
+    // And one too slow to report (0.5 m/s < the 1 m/s threshold).
+    BodyId slow = addBall(world, {-5.0f, 0.51f}, 0.5f);
+    world.setLinearVelocity(slow, {0.0f, -0.5f});
+    int hits = 0;
+    for (int i = 0; i < 30; ++i) {
+        world.step(kStep);
+        for (const ContactHitEvent& e : world.hitEvents()) {
+            ++hits;
+            EXPECT_TRUE(e.shapeA == world.bodyShapes(ball)[0] ||
+                        e.shapeB == world.bodyShapes(ball)[0]);
+            EXPECT_NEAR(e.approachSpeed, 3.0f, 1e-3f);
+            EXPECT_NEAR(std::abs(e.normal.y), 1.0f, 1e-5f);
+            // Touches down after (1 - 0.5) / 3 s, 4 m/s * 1/6 s = 0.67 m further along x,
+            // within a step's travel (4/60 m).
+            EXPECT_NEAR(e.point.y, 0.0f, 0.02f);
+            EXPECT_NEAR(e.point.x, 2.0f + 4.0f / 6.0f, 4.0f / 60.0f + 0.02f);
+        }
+    }
+    EXPECT_EQ(hits, 1);
+}
+
+// A random pile stepped n times in a world of the given mode; a hash of the final transforms.
+std::uint64_t pileHash(SolverMode mode, int steps) {
+    WorldDef def;
+    def.solver.mode = mode;
+    World world{def};
+    addGround(world);
+    std::vector<BodyId> bodies;
+    Random random(11);
+    for (int i = 0; i < 24; ++i) {
+        Vec2 p{random.uniform(-2.0f, 2.0f), 1.0f + 0.8f * static_cast<float>(i)};
+        if (i % 2 == 0) {
+            bodies.push_back(addBox(world, p, random.uniform(0.2f, 0.5f), 0.6f, 1.0f,
+                                    random.uniform(-1.0f, 1.0f)));
+        } else {
+            bodies.push_back(addBall(world, p, random.uniform(0.2f, 0.5f), 0.3f));
+        }
+    }
+    for (int i = 0; i < steps; ++i) {
+        world.step(kStep);
+    }
+    std::uint64_t h = 1469598103934665603ull;
+    for (BodyId id : bodies) {
+        Transform xf = world.transform(id);
+        float values[4] = {xf.p.x, xf.p.y, xf.q.c, xf.q.s};
+        std::uint32_t bits[4];
+        std::memcpy(bits, values, sizeof(bits));
+        for (std::uint32_t b : bits) {
+            h = (h ^ b) * 1099511628211ull;
+        }
+    }
+    return h;
+}
+
+TEST(WorldSolver, WorldsOnSeveralThreadsMatchRunningAlone) {
+    constexpr int kSteps = 240;
+    const std::uint64_t soft = pileHash(SolverMode::SoftStep, kSteps);
+    const std::uint64_t classic = pileHash(SolverMode::Classic, kSteps);
+    EXPECT_NE(soft, classic);
+    // Four worlds at once, two of each mode, on their own threads.
+    std::uint64_t results[4] = {0, 0, 0, 0};
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t) {
+        threads.emplace_back([t, &results] {
+            results[t] = pileHash(t % 2 == 0 ? SolverMode::SoftStep : SolverMode::Classic, kSteps);
+        });
+    }
+    for (std::thread& th : threads) {
+        th.join();
+    }
+    EXPECT_EQ(results[0], soft);
+    EXPECT_EQ(results[1], classic);
+    EXPECT_EQ(results[2], soft);
+    EXPECT_EQ(results[3], classic);
+}
+
+} // namespace
+} // namespace e2d::physics::test
