@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Continuous collision: a fast body (or a bullet) is swept from where it started the step to
-// where the solver put it, against static shapes only, and stopped at the first time of
+// where the solver put it, against static shapes (bullets: also against kinematic and
+// non-bullet dynamic shapes at their end-of-step poses), and stopped at the first time of
 // impact. The next step's speculative contact then does the rest.
 #include <e2d/physics/time_of_impact.hpp>
 
@@ -46,8 +47,17 @@ void World::Impl::solveContinuous(int simIndex) {
     Sweep sweep{bs.localCenter, bs.center0, bs.center, bs.rotation0, bs.transform.q};
     Transform xf1 = sweepTransform(sweep, 0.0f);
     const Transform& xf2 = bs.transform;
-    const DynamicTree& staticTree = broadPhase.tree(BodyType::Static);
     float fraction = 1.0f;
+    // Where another body ends this step: a bullet meets moving bodies where the solver put
+    // them (Box2D v3 does the same: bullets go after everything else, against end poses).
+    auto endTransform = [&](const detail::Body& other) -> const Transform& {
+        int k = other.motion.solverIndex;
+        return k == kNullIndex ? other.transform : sim.sims[static_cast<std::size_t>(k)].transform;
+    };
+    // Everything is swept against static shapes; bullets also against kinematic and non-bullet
+    // dynamic ones (two bullets meet through their speculative contact).
+    const BodyType treeTypes[] = {BodyType::Static, BodyType::Kinematic, BodyType::Dynamic};
+    int treeCount = b.motion.isBullet ? 3 : 1;
     for (int si = b.headShape; si != kNullIndex; si = shape(si).nextShape) {
         const detail::Shape& s = shape(si);
         if (s.isSensor) {
@@ -55,25 +65,33 @@ void World::Impl::solveContinuous(int simIndex) {
         }
         Aabb box = unionOf(computeAabb(s.geometry, xf1), computeAabb(s.geometry, xf2));
         ShapeProxy proxyB = makeProxy(s.geometry);
-        staticTree.query(box, s.filter.maskBits, [&](int, std::uint64_t userData) {
-            auto otherIndex = static_cast<int>(userData);
-            const detail::Shape& other = shape(otherIndex);
-            if (other.isSensor || !shouldCollide(s.filter, other.filter)) {
-                return;
-            }
-            const Transform& xfStatic = body(other.body).transform;
-            TOIInput input;
-            input.proxyA = makeProxy(other.geometry);
-            input.proxyB = proxyB;
-            input.sweepA = Sweep{{0.0f, 0.0f}, xfStatic.p, xfStatic.p, xfStatic.q, xfStatic.q};
-            input.sweepB = sweep;
-            input.maxFraction = fraction;
-            TOIOutput out = timeOfImpact(input);
-            // Overlapping at the start is the contacts' business, not a time of impact.
-            if (out.state == TOIState::Hit && out.fraction > 0.0f && out.fraction < fraction) {
-                fraction = out.fraction;
-            }
-        });
+        for (int t = 0; t < treeCount; ++t) {
+            const DynamicTree& tree = broadPhase.tree(treeTypes[t]);
+            tree.query(box, s.filter.maskBits, [&](int, std::uint64_t userData) {
+                auto otherIndex = static_cast<int>(userData);
+                const detail::Shape& other = shape(otherIndex);
+                if (other.body == bs.bodyIndex || other.isSensor ||
+                    !shouldCollide(s.filter, other.filter)) {
+                    return;
+                }
+                const detail::Body& otherBody = body(other.body);
+                if (otherBody.type == BodyType::Dynamic && otherBody.motion.isBullet) {
+                    return;
+                }
+                const Transform& xfOther = endTransform(otherBody);
+                TOIInput input;
+                input.proxyA = makeProxy(other.geometry);
+                input.proxyB = proxyB;
+                input.sweepA = Sweep{{0.0f, 0.0f}, xfOther.p, xfOther.p, xfOther.q, xfOther.q};
+                input.sweepB = sweep;
+                input.maxFraction = fraction;
+                TOIOutput out = timeOfImpact(input);
+                // Overlapping at the start is the contacts' business, not a time of impact.
+                if (out.state == TOIState::Hit && out.fraction > 0.0f && out.fraction < fraction) {
+                    fraction = out.fraction;
+                }
+            });
+        }
     }
     if (fraction < 1.0f) {
         Rot q = nlerp(sweep.q1, sweep.q2, fraction);

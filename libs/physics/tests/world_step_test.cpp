@@ -354,6 +354,40 @@ TEST(WorldStep, BulletDoesNotTunnelThroughAThinWall) {
     EXPECT_GT(world.transform(bullet).p.x, 4.9f);
 }
 
+TEST(WorldStep, BulletStopsAtAThinMovingBodyAndAPlainFastBodyDoesNot) {
+    // A 1 cm plank, dynamic (heavy, drifting) or kinematic, and a ball fired at 500 m/s: only
+    // the bullet flag sweeps against moving bodies (a plain fast body sweeps against static
+    // shapes only and jumps 8.3 m per step, past the plank).
+    for (BodyType plankType : {BodyType::Dynamic, BodyType::Kinematic}) {
+        for (bool bullet : {true, false}) {
+            World world{WorldDef{.gravity = {0.0f, 0.0f}}};
+            BodyDef pd;
+            pd.type = plankType;
+            pd.position = {5.0f, 0.0f};
+            pd.linearVelocity = {0.0f, 0.1f};
+            BodyId plank = world.createBody(pd);
+            ShapeDef heavy;
+            heavy.density = 1000.0f;
+            world.createShape(plank, heavy, makeBox(0.005f, 2.0f));
+            BodyDef bd;
+            bd.type = BodyType::Dynamic;
+            bd.isBullet = bullet;
+            bd.linearVelocity = {500.0f, 0.0f};
+            BodyId ball = world.createBody(bd);
+            world.createShape(ball, {}, Circle{{0.0f, 0.0f}, 0.05f});
+            for (int i = 0; i < 10; ++i) {
+                world.step(kStep);
+            }
+            float x = world.transform(ball).p.x;
+            if (bullet) {
+                EXPECT_LT(x, world.transform(plank).p.x) << static_cast<int>(plankType);
+            } else {
+                EXPECT_GT(x, 10.0f) << static_cast<int>(plankType);
+            }
+        }
+    }
+}
+
 TEST(WorldStep, KinematicBodyMovesByVelocityOnly) {
     World world;
     BodyDef bd;

@@ -75,8 +75,9 @@ struct BodyDef {
     bool lockX = false;
     /// The centre of mass never moves along world y (the seed's freeze Y). Default false.
     bool lockY = false;
-    /// A fast dynamic body: continuous collision against static shapes every step, not only
-    /// when it moves far. Default false.
+    /// A fast dynamic body: continuous collision every step (not only when it moves far),
+    /// against static shapes and also against kinematic and non-bullet dynamic ones.
+    /// Default false.
     bool isBullet = false;
     /// Whether the body may sleep. Default true.
     bool enableSleep = true;
