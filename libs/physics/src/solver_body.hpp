@@ -16,6 +16,7 @@ enum BodyFlag : std::uint8_t {
     kLockRotation = 4, // fixed rotation
     kIsBullet = 8,
     kIsFast = 16,      // moved far enough this step to need time of impact
+    kNonFinite = 32,   // its velocity overflowed this step: held still, disabled afterwards
 };
 
 // What the sub-step loops touch, and nothing else, so many fit in a cache line. Static bodies

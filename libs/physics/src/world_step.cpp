@@ -18,7 +18,7 @@ namespace check = detail::world_check;
 namespace {
 
 bool isFiniteState(const detail::BodySim& s, const detail::BodyState& st) {
-    return isFinite(s.center) && isFinite(s.transform.p) && isFinite(s.transform.q.c) &&
+    return (st.flags & detail::kNonFinite) == 0 && isFinite(s.center) && isFinite(s.transform.p) && isFinite(s.transform.q.c) &&
            isFinite(s.transform.q.s) && isFinite(st.linearVelocity) &&
            isFinite(st.angularVelocity);
 }

@@ -205,6 +205,26 @@ TEST(IntegrateVelocities, AppliesGravityForceDampingAndSpeedCap) {
     EXPECT_NEAR(states[0].linearVelocity.x, 60.0f, 1e-3f);
 }
 
+TEST(IntegrateVelocities, CapsTheRotationPerStepAndFlagsOverflow) {
+    BodySim sim;
+    sim.invMass = {1.0f, 1.0f};
+    sim.invInertia = 1.0f;
+    BodySim absurd = sim;
+    absurd.gravityScale = 3.0e38f; // g s overflows to infinity
+    std::vector<BodySim> sims{sim, absurd};
+    std::vector<BodyState> states(2);
+    states[0].angularVelocity = -1000.0f;
+    states[1].linearVelocity = {1.0f, 2.0f};
+    integrateVelocities(sims, states, {0.0f, -10.0f}, 0.01f, 400.0f);
+    // A quarter turn per step at most: (pi / 2) / 0.01.
+    EXPECT_NEAR(states[0].angularVelocity, -0.5f * 3.14159265f / 0.01f, 1e-3f);
+    EXPECT_EQ(states[0].flags & kNonFinite, 0u);
+    // The overflowed body is held still for the solver and flagged for the world.
+    EXPECT_NE(states[1].flags & kNonFinite, 0u);
+    EXPECT_EQ(states[1].linearVelocity, Vec2(0.0f, 0.0f));
+    EXPECT_EQ(states[1].angularVelocity, 0.0f);
+}
+
 TEST(IntegrateVelocities, LockedAxisAndKinematicIgnoreGravity) {
     BodySim locked;
     locked.invMass = {0.0f, 1.0f};

@@ -133,6 +133,52 @@ TEST(WorldStep, NonFiniteBodyIsDisabledAndTheRestContinues) {
     EXPECT_NEAR(world.transform(good).p.y, 0.5f, 0.01f);
 }
 
+TEST(WorldStep, NonFiniteBodyDoesNotTakeItsNeighboursWithIt) {
+    for (SolverMode mode : {SolverMode::SoftStep, SolverMode::Classic}) {
+        WorldDef def;
+        def.solver.mode = mode;
+        World world{def};
+        addGround(world);
+        BodyId below = addBox(world, {0.0f, 0.5f}, 0.5f);
+        BodyId bad = addBox(world, {0.0f, 1.5f}, 0.5f);
+        for (int i = 0; i < 5; ++i) {
+            world.step(kStep);
+        }
+        // Its velocity overflows while it rests on `below`: only it is disabled and reported
+        // (it used to pass NaN through the contact to the box beneath).
+        world.setGravityScale(bad, 3.0e38f);
+        world.step(kStep);
+        ASSERT_EQ(world.nonFiniteBodies().size(), 1u) << static_cast<int>(mode);
+        EXPECT_EQ(world.nonFiniteBodies()[0], bad);
+        EXPECT_FALSE(world.isBodyEnabled(bad));
+        EXPECT_TRUE(world.isBodyEnabled(below));
+        EXPECT_NEAR(world.transform(below).p.y, 0.5f, 0.01f);
+        for (int i = 0; i < 30; ++i) {
+            world.step(kStep);
+        }
+        EXPECT_TRUE(world.isBodyEnabled(below));
+        EXPECT_NEAR(world.transform(below).p.y, 0.5f, 0.01f);
+    }
+}
+
+TEST(WorldStep, HugeSpinKeepsAUnitRotation) {
+    for (SolverMode mode : {SolverMode::SoftStep, SolverMode::Classic}) {
+        WorldDef def;
+        def.solver.mode = mode;
+        World world{def};
+        BodyId spinner = addBox(world, {0.0f, 5.0f}, 0.5f);
+        // Finite but absurd: the rotation integrator used to overflow into q = (0, 0), a
+        // finite transform that collapses the shapes, and nothing reported it.
+        world.setAngularVelocity(spinner, 3.0e38f);
+        world.step(kStep);
+        Rot q = world.transform(spinner).q;
+        EXPECT_NEAR(q.c * q.c + q.s * q.s, 1.0f, 1e-5f) << static_cast<int>(mode);
+        // Capped at a quarter turn per integration step: (pi / 2) / h.
+        float h = mode == SolverMode::SoftStep ? kStep / 4.0f : kStep;
+        EXPECT_NEAR(world.angularVelocity(spinner), 0.5f * 3.14159265f / h, 1e-2f);
+    }
+}
+
 TEST(WorldStep, IslandFallsAsleepAndWakesOnImpulse) {
     World world;
     addGround(world);
