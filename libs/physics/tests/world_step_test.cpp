@@ -161,6 +161,27 @@ TEST(WorldStep, NonFiniteBodyDoesNotTakeItsNeighboursWithIt) {
     }
 }
 
+TEST(WorldStep, NonFiniteBodyBouncingOffANeighbourLeavesItFinite) {
+    // A bouncy ball falls onto a box; at every step of the approach and the impact in turn,
+    // its gravity scale becomes absurd. Restitution used to turn the overflowed gravity into
+    // NaN impulses on the box too.
+    for (int absurdAt = 0; absurdAt < 16; ++absurdAt) {
+        World world;
+        addGround(world);
+        BodyId box = addBox(world, {0.0f, 0.5f}, 0.5f);
+        BodyId ball = addBall(world, {0.0f, 2.0f}, 0.25f, 0.8f);
+        world.setLinearVelocity(ball, {0.0f, -5.0f});
+        for (int i = 0; i < absurdAt; ++i) {
+            world.step(kStep);
+        }
+        world.setGravityScale(ball, 3.0e38f);
+        world.step(kStep);
+        ASSERT_EQ(world.nonFiniteBodies().size(), 1u) << "at step " << absurdAt;
+        EXPECT_EQ(world.nonFiniteBodies()[0], ball);
+        EXPECT_TRUE(world.isBodyEnabled(box)) << "at step " << absurdAt;
+    }
+}
+
 TEST(WorldStep, HugeSpinKeepsAUnitRotation) {
     for (SolverMode mode : {SolverMode::SoftStep, SolverMode::Classic}) {
         WorldDef def;
