@@ -131,6 +131,53 @@ TEST(WorldSolver, HitEventCarriesTheNormalApproachSpeedAndPoint) {
     EXPECT_EQ(hits, 1);
 }
 
+TEST(WorldSolver, BothCollisionAlgorithmsRestPolygonsOnTheGround) {
+    for (CollisionAlgorithm algorithm : {CollisionAlgorithm::Sat, CollisionAlgorithm::GjkEpa}) {
+        WorldDef def;
+        def.collisionAlgorithm = algorithm;
+        World world{def};
+        addGround(world);
+        BodyId box = addBox(world, {0.0f, 1.0f}, 0.5f, 0.6f, 1.0f, 0.2f);
+        // A regular hexagon of circumradius 0.5, resting on an edge: its centre ends
+        // 0.5 cos 30 deg above the ground.
+        std::vector<Vec2> hexagon;
+        for (int i = 0; i < 6; ++i) {
+            float a = 3.14159265f / 3.0f * static_cast<float>(i);
+            hexagon.push_back({0.5f * std::cos(a), 0.5f * std::sin(a)});
+        }
+        BodyDef bd;
+        bd.type = BodyType::Dynamic;
+        bd.position = {3.0f, 1.0f};
+        BodyId hex = world.createBody(bd);
+        world.createShape(hex, {}, makePolygon(hexagon));
+        for (int i = 0; i < 180; ++i) {
+            world.step(kStep);
+        }
+        const char* name = algorithm == CollisionAlgorithm::Sat ? "sat" : "gjk-epa";
+        EXPECT_NEAR(world.transform(box).p.y, 0.5f, 0.01f) << name;
+        EXPECT_NEAR(std::abs(world.transform(box).q.s), 0.0f, 1e-3f) << name << ": lands flat";
+        EXPECT_NEAR(world.transform(hex).p.y, 0.5f * std::sqrt(3.0f) / 2.0f, 0.01f) << name;
+        EXPECT_LT(maxPenetration(world), 0.01f) << name;
+    }
+}
+
+TEST(WorldSolver, SleepToleranceIsTheWorlds) {
+    // A puck gliding at 3 cm/s on ice sleeps under the default 5 cm/s tolerance, not under
+    // a 1 cm/s one.
+    for (float tolerance : {0.05f, 0.01f}) {
+        WorldDef def;
+        def.solver.linearSleepTolerance = tolerance;
+        World world{def};
+        addGround(world, 0.0f);
+        BodyId puck = addBall(world, {0.0f, 0.25f}, 0.25f, 0.0f, 0.0f);
+        world.setLinearVelocity(puck, {0.03f, 0.0f});
+        for (int i = 0; i < 60; ++i) {
+            world.step(kStep);
+        }
+        EXPECT_EQ(world.isAwake(puck), tolerance < 0.03f) << tolerance;
+    }
+}
+
 // A random pile stepped n times in a world of the given mode; a hash of the final transforms.
 std::uint64_t pileHash(SolverMode mode, int steps) {
     WorldDef def;
