@@ -110,6 +110,27 @@ TEST_F(ComponentsTest, FallingBoxComesToRestOnStaticGroundAndItsObjectFollows) {
     EXPECT_EQ(physics.world().bodyCount(), 2);
 }
 
+TEST_F(ComponentsTest, SpinningBodyWritesItsAngleBackEveryStep) {
+    core::GameObject* spinner = nullptr;
+    start([&](core::Scene& s) {
+        spinner = &s.createGameObject();
+        spinner->setPosition(glm::vec2{0.0f, 50.0f});
+        physics::RigidbodyDef def;
+        def.gravityScale = 0.0f;
+        def.angularVelocity = 1.5f;
+        def.linearVelocity = {2.0f, 0.0f};
+        spinner->addComponent<Rigidbody>(physics, def);
+        spinner->addComponent<Collider>(physics, box(0.5f));
+    });
+    for (int n = 1; n <= 30; ++n) {
+        frames(1);
+        // No damping, no contacts: angle w t and position v t after each fixed step.
+        auto t = static_cast<float>(n * kStep);
+        ASSERT_NEAR(spinner->orientation(), 1.5f * t, 1e-4f) << "frame " << n;
+        ASSERT_NEAR(spinner->position().x, 2.0f * t, 1e-4f) << "frame " << n;
+    }
+}
+
 TEST_F(ComponentsTest, CollisionEnterAndExitReachBothObjectsWithNormalsAwayFromEach) {
     core::GameObject* g = nullptr;
     core::GameObject* b = nullptr;
