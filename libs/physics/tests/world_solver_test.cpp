@@ -104,6 +104,36 @@ TEST(WorldSolver, MixingRulesAreConfigurable) {
     }
 }
 
+TEST(WorldSolver, RestitutionMixingDecidesWhoBounces) {
+    // An elastic ball (e = 1) on a dead ground (e = 0) at 3 m/s: Max (the default) bounces it
+    // back at 3 m/s, Min not at all.
+    for (MixingRule rule : {MixingRule::Max, MixingRule::Min}) {
+        WorldDef def{.gravity = {0.0f, 0.0f}};
+        def.solver.restitutionMixing = rule;
+        World world{def};
+        addGround(world, 0.6f, 0.0f);
+        BodyId ball = addBall(world, {0.0f, 0.6f}, 0.5f, 1.0f);
+        world.setLinearVelocity(ball, {0.0f, -3.0f});
+        for (int i = 0; i < 30; ++i) {
+            world.step(kStep);
+        }
+        float expected = rule == MixingRule::Max ? 3.0f : 0.0f;
+        EXPECT_NEAR(world.linearVelocity(ball).y, expected, 0.06f) << static_cast<int>(rule);
+    }
+}
+
+TEST(WorldSolver, LinearSpeedIsCappedByTheWorld) {
+    WorldDef def{.gravity = {0.0f, 0.0f}};
+    def.solver.maxLinearSpeed = 50.0f;
+    World world{def};
+    BodyId fast = addBall(world, {0.0f, 0.0f}, 0.5f);
+    world.setLinearVelocity(fast, {300.0f, 400.0f});
+    world.step(kStep);
+    // Same direction, 50 m/s: (30, 40).
+    EXPECT_NEAR(world.linearVelocity(fast).x, 30.0f, 1e-3f);
+    EXPECT_NEAR(world.linearVelocity(fast).y, 40.0f, 1e-3f);
+}
+
 TEST(WorldSolver, HitEventCarriesTheNormalApproachSpeedAndPoint) {
     World world{WorldDef{.gravity = {0.0f, 0.0f}}};
     addGround(world);
