@@ -345,7 +345,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
         createBody(data, world, bodies, extent);
     }
 
-    int steps = data.ConsumeIntegralInRange<int>(1, 40);
+    int steps = data.ConsumeIntegralInRange<int>(1, 30);
     for (int s = 0; s < steps && data.remaining_bytes() > 0; ++s) {
         int actions = data.ConsumeIntegralInRange<int>(0, 3);
         for (int a = 0; a < actions; ++a) {
