@@ -135,7 +135,8 @@ void warmStartContacts(std::span<ContactConstraint> constraints, std::span<BodyS
 }
 
 void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states,
-                   float invH, bool useBias, float pushMaxSpeed, bool backward) {
+                   float invH, bool useBias, float pushMaxSpeed, bool backward,
+                   bool reversePoints) {
     BodyState dummyA;
     BodyState dummyB;
     std::size_t n = constraints.size();
@@ -158,8 +159,8 @@ void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState
         float iB = c.invInertiaB;
         float totalNormalImpulse = 0.0f;
 
-        for (int i = 0; i < c.pointCount; ++i) {
-            ContactConstraintPoint& cp = c.points[i];
+        for (int j = 0; j < c.pointCount; ++j) {
+            ContactConstraintPoint& cp = c.points[reversePoints ? c.pointCount - 1 - j : j];
             Vec2 prA = rotate(qA, cp.anchorA);
             Vec2 prB = rotate(qB, cp.anchorB);
             float s = dot((dpB - dpA) + (prB - prA), normal) + cp.baseSeparation;
