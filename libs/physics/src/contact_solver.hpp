@@ -97,11 +97,13 @@ void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyVi
 // Soft step.
 void warmStartContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states);
 // useBias: push overlapping points apart with the soft bias (solve) or not (relax).
-// Speculative points (separation > 0) keep their bias either way. backward: visit the
-// constraints last to first (alternating directions cancels Gauss-Seidel's order bias, which
-// otherwise drifts piles sideways).
+// Speculative points (separation > 0) keep their bias either way. Gauss-Seidel favours
+// whatever it solves last, so the order alternates (see solveSoftStep()): backward visits the
+// constraints last to first; reversePoints solves each constraint's normal points last to
+// first.
 void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states,
-                   float invH, bool useBias, float pushMaxSpeed, bool backward = false);
+                   float invH, bool useBias, float pushMaxSpeed, bool backward = false,
+                   bool reversePoints = false);
 // h: the sub-step the positions were integrated with.
 void applyRestitution(std::span<ContactConstraint> constraints, std::span<BodyState> states,
                       float threshold, float h);

@@ -549,5 +549,49 @@ TEST(ClassicBlock, ConditionGuardAtTheThreshold) {
     EXPECT_FALSE(blockFor(0.01f));
 }
 
+TEST(SoftStep, ReversedPointOrderMirrorsTheOrderBias) {
+    // A unit box (mass 1, inverse inertia 6) sunk 0.2 m into the ground, frictionless, at
+    // rest: one biased solve pushes it out at the capped speed, 3 m/s. Gauss-Seidel solves the
+    // left point (x = -0.5) first, P0 = m_n s 3 with m_n = 1 / (1 + 6 * 0.25) = 0.4 and s the
+    // mass scale; that push tips the right point down by 0.5 P0, so it gets more,
+    // P1 = m_n s (3 + 0.5 P0), and the box spins at w = 6 * 0.5 * (P1 - P0). Solved right
+    // to left, the result is the mirror image: the solver alternates the two orders.
+    ContactSoftness softness = makeContactSoftness(SolverDef{}, kDt);
+    Manifold m;
+    m.normal = {0.0f, 1.0f};
+    m.pointCount = 2;
+    const Vec2 center{0.0f, 0.3f};
+    for (int i = 0; i < 2; ++i) {
+        ManifoldPoint& mp = m.points[i];
+        mp.point = {i == 0 ? -0.5f : 0.5f, -0.1f};
+        mp.anchorA = mp.point;
+        mp.anchorB = mp.point - center;
+        mp.separation = -0.2f;
+        mp.id = static_cast<std::uint16_t>(i);
+    }
+    ContactBodyView ground;
+    ContactBodyView box{{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f, {1.0f, 1.0f}, 6.0f, 0};
+    ContactConstraint c;
+    prepareContact(c, m, ground, box, {0.0f, 0.0f, 0.0f}, softness.vsStatic);
+    const float invH = 4.0f / kDt;
+
+    std::vector<ContactConstraint> forward{c};
+    std::vector<BodyState> forwardState(1);
+    solveContacts(forward, forwardState, invH, true, 3.0f, false, false);
+    std::vector<ContactConstraint> reversed{c};
+    std::vector<BodyState> reversedState(1);
+    solveContacts(reversed, reversedState, invH, true, 3.0f, false, true);
+
+    const float s = softness.vsStatic.massScale;
+    const float p0 = 0.4f * s * 3.0f;
+    const float p1 = 0.4f * s * (3.0f + 0.5f * p0);
+    EXPECT_NEAR(forwardState[0].angularVelocity, 3.0f * (p1 - p0), 1e-4f);
+    EXPECT_NEAR(forwardState[0].linearVelocity.y, p0 + p1, 1e-4f);
+    EXPECT_EQ(reversedState[0].angularVelocity, -forwardState[0].angularVelocity);
+    EXPECT_EQ(reversedState[0].linearVelocity.y, forwardState[0].linearVelocity.y);
+    EXPECT_EQ(reversed[0].points[0].normalImpulse, forward[0].points[1].normalImpulse);
+    EXPECT_EQ(reversed[0].points[1].normalImpulse, forward[0].points[0].normalImpulse);
+}
+
 } // namespace
 } // namespace e2d::physics::detail

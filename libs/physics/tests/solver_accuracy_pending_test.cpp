@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Accuracy targets the soft step does not meet yet: tall towers (see the measured
-// values in the lead's report). They hold the real targets and fail until the solver meets them.
+// Accuracy targets the soft step does not meet at its default (Box2D v3's) contact stiffness:
+// a 20-box tower. Under 19 boxes a 30 Hz soft contact compresses 13 mm at rest (see
+// SolverAccuracy.RestingColumnCompressesLikeItsSoftContacts), and such springs
+// let a column buckle beyond about 14 boxes. They hold the targets and fail until the
+// solver (or the target) changes.
 #include "world_step_util.hpp"
 
 #include <gtest/gtest.h>
@@ -61,26 +64,6 @@ TEST(SolverAccuracyPending, TallStackStandsForAMinuteWithoutSleeping) {
     EXPECT_LT(std::abs(world.transform(boxes.back()).p.x), 0.01f);
     EXPECT_GT(world.transform(boxes.back()).p.y, 19.5f - 0.2f);
     EXPECT_LT(deepest, 0.01f);
-}
-
-TEST(SolverAccuracyPending, OverlappedColumnSeparatesGently) {
-    World world;
-    addGround(world);
-    std::vector<BodyId> boxes;
-    for (int i = 0; i < 8; ++i) {
-        // 25 % overlap with the box below.
-        boxes.push_back(addBox(world, {0.0f, 0.5f + 0.75f * static_cast<float>(i)}, 0.5f));
-    }
-    float fastest = 0.0f;
-    for (int i = 0; i < 300; ++i) {
-        world.step(kStep);
-        for (BodyId b : boxes) {
-            fastest = std::max(fastest, length(world.linearVelocity(b)));
-        }
-    }
-    EXPECT_LT(fastest, 10.0f);
-    EXPECT_LT(maxPenetration(world), 0.01f);
-    EXPECT_NEAR(world.transform(boxes.back()).p.y, 7.5f, 0.1f);
 }
 
 } // namespace

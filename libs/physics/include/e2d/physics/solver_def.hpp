@@ -38,7 +38,10 @@ struct SolverDef {
     /// Classic: position iterations per step, in [0, 256]. Default 3.
     int positionIterations = 3;
     /// Soft step: stiffness of contacts, hertz, finite, > 0. Capped at a quarter of the
-    /// sub-step rate; contacts against static bodies use twice this. Default 30.
+    /// sub-step rate; contacts against static bodies use twice this. Default 30 (Box2D v3's).
+    /// A resting contact is a spring: each point overlaps its load / (m_n (2 pi hertz)^2), m_n
+    /// its normal mass, so at 30 Hz the contact under 19 unit boxes overlaps 13 mm, and a
+    /// column of unit boxes taller than about 14 buckles (height limit ~ hertz^(2/3)).
     float contactHertz = 30.0f;
     /// Soft step: damping ratio of contacts, finite, >= 0 (1 is critical). Default 10.
     float contactDampingRatio = 10.0f;
