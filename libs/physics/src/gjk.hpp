@@ -16,16 +16,16 @@ struct PointSet {
 };
 
 // Index of the point farthest along `direction` (the first one on ties, so that duplicated
-// points give a stable answer).
+// points give a stable answer). Written as selects, not a branch: which point wins is random
+// from call to call, and a mispredicted branch per call cost more than the loop itself.
 inline int supportIndex(PointSet set, Vec2 direction) {
     int best = 0;
     float bestValue = dot(set.points[0], direction);
     for (int i = 1; i < set.count; ++i) {
-        float value = dot(set.points[i], direction);
-        if (value > bestValue) {
-            best = i;
-            bestValue = value;
-        }
+        const float value = dot(set.points[i], direction);
+        const bool better = value > bestValue;
+        best = better ? i : best;
+        bestValue = better ? value : bestValue;
     }
     return best;
 }

@@ -80,11 +80,10 @@ LocalManifold collideInFrame(PolygonRef localA, PolygonRef localB, float margin,
     int incident = 0;
     float minDot = FLT_MAX;
     for (int j = 0; j < poly2.count; ++j) {
-        float d = dot(normal1, poly2.normals[j]);
-        if (d < minDot) {
-            minDot = d;
-            incident = j;
-        }
+        const float d = dot(normal1, poly2.normals[j]);
+        const bool better = d < minDot;
+        incident = better ? j : incident;
+        minDot = better ? d : minDot;
     }
 
     if (separation > kSeparatedCores) [[unlikely]] {

@@ -149,10 +149,11 @@ EpaResult runEpa(PointSet a, PointSet b, const Simplex& simplex) {
     result.converged = false;
     while (true) {
         closest = 0;
+        float closestDistance = poly.distance[0];
         for (int i = 1; i < poly.count; ++i) {
-            if (poly.distance[i] < poly.distance[closest]) {
-                closest = i;
-            }
+            const bool closer = poly.distance[i] < closestDistance;
+            closest = closer ? i : closest;
+            closestDistance = closer ? poly.distance[i] : closestDistance;
         }
         if (iteration == kMaxEpaIterations || poly.count == kMaxPolytope) {
             break;
