@@ -294,8 +294,10 @@ GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache, float limit, Vec2 
         float reach = dot(v.w, d);
         float dd = lengthSquared(d);
         if (reach < 0.0f && reach * reach > limit * limit * dd) {
+            // Only beyondLimit is meaningful then: skip the closest points and the cache.
             result.beyondLimit = true;
-            break;
+            result.iterations = iteration;
+            return result;
         }
         // Duplicated input points give new indices at old positions: stop when the new point
         // is no farther towards the origin than the simplex, up to rounding.

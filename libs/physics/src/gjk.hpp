@@ -56,7 +56,8 @@ struct GjkResult {
 inline constexpr float kGjkTouching = 1.0e-6f;
 
 // `limit` (metres): callers that only care about hulls closer than this let GJK stop as soon as
-// a support plane proves the distance is larger (then only beyondLimit is meaningful).
+// a support plane proves the distance is larger (then only beyondLimit is meaningful and the
+// cache is left as it was).
 // Without a cache the search starts along `direction` (from A towards B, e.g. between the
 // centroids; (0, 0) means "from the first points").
 GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache, float limit = FLT_MAX,

@@ -170,14 +170,14 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
 
     // The face that separates the centre the most; the closest feature is that face or one of
     // its two vertices.
+    // Kept by selects, not a branch: which face wins is random from pair to pair.
     int face = 0;
     float separation = -FLT_MAX;
     for (int i = 0; i < a.count; ++i) {
-        float s = dot(a.normals[i], c - a.vertices[i]);
-        if (s > separation) {
-            separation = s;
-            face = i;
-        }
+        const float s = dot(a.normals[i], c - a.vertices[i]);
+        const bool better = s > separation;
+        face = better ? i : face;
+        separation = better ? s : separation;
     }
     if (separation > limit) {
         return Manifold{};
