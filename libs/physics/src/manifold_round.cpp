@@ -185,18 +185,17 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
     const Vec2 v1 = a.vertices[face];
     const Vec2 v2 = a.vertices[face + 1 < a.count ? face + 1 : 0];
     detail::LocalManifold m;
-    if (separation > FLT_EPSILON && dot(c - v1, v2 - v1) < 0.0f) {
-        float dist = distance(v1, c);
-        if (dist > limit) {
+    if (separation > FLT_EPSILON &&
+        (dot(c - v1, v2 - v1) < 0.0f || dot(c - v2, v1 - v2) < 0.0f)) {
+        // Vertex region: the distance to the vertex, tested squared so that a pair beyond
+        // the margin costs no square root; one reciprocal instead of a division per axis.
+        const Vec2 v = dot(c - v1, v2 - v1) < 0.0f ? v1 : v2;
+        const float distSq = distanceSquared(v, c);
+        if (distSq > limit * limit) {
             return Manifold{};
         }
-        m = singlePoint(v1, c, (c - v1) / dist, dist, a.radius, b.radius, 0);
-    } else if (separation > FLT_EPSILON && dot(c - v2, v1 - v2) < 0.0f) {
-        float dist = distance(v2, c);
-        if (dist > limit) {
-            return Manifold{};
-        }
-        m = singlePoint(v2, c, (c - v2) / dist, dist, a.radius, b.radius, 0);
+        const float dist = std::sqrt(distSq);
+        m = singlePoint(v, c, (c - v) * (1.0f / dist), dist, a.radius, b.radius, 0);
     } else {
         // Face region, or the centre is inside the core: push out through the face.
         const Vec2 n = a.normals[face];
