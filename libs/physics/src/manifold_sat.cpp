@@ -25,16 +25,30 @@ struct EdgeSeparation {
 // is tested and the best one kept by selects, not branches: which edge wins (or first
 // separates a separated pair) is random from pair to pair, and stopping early at that edge
 // cost a mispredicted branch per call, more than the edges it skipped.
+//
+// min_j dot(n, w_j - v) is computed as min_j dot(n, w_j) - dot(n, v): subtracting one number
+// preserves the order of rounded values, so the same vertex is deepest, and the inner loop
+// does two products and a sum per vertex, two vertices at a time on independent minima.
 inline EdgeSeparation findMaxSeparation(PolygonRef poly1, PolygonRef poly2) {
     EdgeSeparation best;
+    const Vec2* w = poly2.vertices;
+    const int count2 = poly2.count;
     for (int i = 0; i < poly1.count; ++i) {
         const Vec2 n = poly1.normals[i];
-        const Vec2 v = poly1.vertices[i];
-        float si = FLT_MAX;
-        for (int j = 0; j < poly2.count; ++j) {
-            const float sij = dot(n, poly2.vertices[j] - v);
-            si = sij < si ? sij : si;
+        float min0 = FLT_MAX;
+        float min1 = FLT_MAX;
+        int j = 0;
+        for (; j + 1 < count2; j += 2) {
+            const float d0 = dot(n, w[j]);
+            const float d1 = dot(n, w[j + 1]);
+            min0 = d0 < min0 ? d0 : min0;
+            min1 = d1 < min1 ? d1 : min1;
         }
+        if (j < count2) {
+            const float d0 = dot(n, w[j]);
+            min0 = d0 < min0 ? d0 : min0;
+        }
+        const float si = (min1 < min0 ? min1 : min0) - dot(n, poly1.vertices[i]);
         const bool better = si > best.separation;
         best.edge = better ? i : best.edge;
         best.separation = better ? si : best.separation;
