@@ -160,18 +160,21 @@ Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& 
         }
     };
     const PolygonRef localB{movedB.vertices, movedB.normals, b.radius, b.count};
-    if (!shift) [[likely]] {
-        return detail::localToWorld(collideInFrame(detail::refOf(a), localB, margin, moveNormals),
-                                    xfA, xfB);
-    }
+    PolygonRef localA = detail::refOf(a);
     detail::PolygonScratch movedA;
-    for (int i = 0; i < a.count; ++i) {
-        movedA.vertices[i] = a.vertices[i] - origin;
+    if (shift) [[unlikely]] {
+        for (int i = 0; i < a.count; ++i) {
+            movedA.vertices[i] = a.vertices[i] - origin;
+        }
+        localA.vertices = movedA.vertices;
     }
-    const PolygonRef localA{movedA.vertices, a.normals.data(), a.radius, a.count};
+    // One call site, so the compiler inlines collideInFrame: a call passing the two
+    // PolygonRefs through the stack put a store and a reload on every pair's critical path.
     LocalManifold m = collideInFrame(localA, localB, margin, moveNormals);
-    for (int i = 0; i < m.count; ++i) {
-        m.points[i] += origin;
+    if (shift) [[unlikely]] {
+        for (int i = 0; i < m.count; ++i) {
+            m.points[i] += origin;
+        }
     }
     return detail::localToWorld(m, xfA, xfB);
 }
