@@ -248,7 +248,9 @@ Simplex readCache(PointSet a, PointSet b, const SimplexCache* cache, Vec2 direct
 
 GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache, float limit, Vec2 direction) {
     GjkResult result;
-    Simplex s = readCache(a, b, cache, direction);
+    // Built in place: copying the simplex into the result at the end showed in profiles.
+    Simplex& s = result.simplex;
+    s = readCache(a, b, cache, direction);
 
     // The support pairs of the simplex before each reduction, as one key per pair (indices are
     // below 256) and -1 for an empty slot: three compares, no loop, tell a repeated pair.
@@ -313,7 +315,6 @@ GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache, float limit, Vec2 
     if (s.count == 3) {
         pointB = pointA;
     }
-    result.simplex = s;
     result.pointA = pointA;
     result.pointB = pointB;
     result.distance = s.count == 3 ? 0.0f : distance(pointA, pointB);
