@@ -164,8 +164,8 @@ Manifold collideCapsules(const Capsule& a, const Transform& xfA, const Capsule& 
 
 Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const Circle& b,
                                  const Transform& xfB, float margin) {
-    const Transform xf = invMulTransforms(xfA, xfB);
-    const Vec2 c = transformPoint(xf, b.center);
+    // Only the centre moves to A's frame: cheaper than composing the two transforms first.
+    const Vec2 c = invRotate(xfA.q, rotate(xfB.q, b.center) + (xfB.p - xfA.p));
     const float limit = a.radius + b.radius + margin;
 
     // The face that separates the centre the most; the closest feature is that face or one of
