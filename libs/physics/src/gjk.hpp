@@ -80,11 +80,6 @@ struct EpaResult {
     float depth = 0.0f; // of the hulls, no radii; negative if in fact separated
     int iterations = 0;
     bool converged = true;
-    // The hull edge the closest polytope edge comes from, when the sets are polygons in
-    // counter-clockwise order: edge faceA of A (from point faceA to faceA + 1) or edge faceB of
-    // B; -1 when it is not one edge (a vertex pair, or the polytope degenerated).
-    int faceA = -1;
-    int faceB = -1;
 };
 
 // Expands GJK's final simplex into the Minkowski difference until the edge closest to the

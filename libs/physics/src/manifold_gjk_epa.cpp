@@ -15,7 +15,7 @@ namespace {
 using detail::PolygonRef;
 
 // Below this core distance (metres) GJK's normal is built from two nearly equal points and is
-// too inaccurate to pick a face; EPA from the touching simplex gives the face normal instead.
+// too inaccurate to pick a face; the polygon EPA (polygonEpa) gives the face instead.
 constexpr float kUseEpaBelow = 10.0f * kEpaTolerance;
 
 // Separation of `other` from edge `edge` of `poly`, both in one frame: how far the deepest

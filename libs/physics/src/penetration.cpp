@@ -198,17 +198,6 @@ EpaResult runEpa(PointSet a, PointSet b, const Simplex& simplex) {
     result.pointB = bI + t * (bJ - bI);
     result.depth = poly.distance[i];
     result.iterations = iteration;
-    // An edge of B - A joins two points that share A's point (an edge of B) or B's point (an
-    // edge of A, walked in the same counter-clockwise order since -A is A turned by pi).
-    int ia = poly.indexA[i];
-    int ja = poly.indexA[j];
-    int ib = poly.indexB[i];
-    int jb = poly.indexB[j];
-    if (ib == jb && ja == (ia + 1 == a.count ? 0 : ia + 1)) {
-        result.faceA = ia;
-    } else if (ia == ja && jb == (ib + 1 == b.count ? 0 : ib + 1)) {
-        result.faceB = ib;
-    }
     return result;
 }
 
