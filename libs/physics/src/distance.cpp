@@ -248,17 +248,18 @@ Simplex readCache(PointSet a, PointSet b, const SimplexCache* cache, Vec2 direct
 
 GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache, float limit, Vec2 direction) {
     GjkResult result;
-    Simplex s = readCache(a, b, cache, direction);
+    // Built in place: copying the simplex into the result at the end showed in profiles.
+    Simplex& s = result.simplex;
+    s = readCache(a, b, cache, direction);
 
-    int savedA[3];
-    int savedB[3];
+    // The support pairs of the simplex before each reduction, as one key per pair (indices are
+    // below 256) and -1 for an empty slot: three compares, no loop, tell a repeated pair.
+    auto key = [](const SimplexVertex& v) { return (v.indexA << 8) | v.indexB; };
     int iteration = 0;
     while (iteration < kMaxGjkIterations) {
-        int savedCount = s.count;
-        for (int i = 0; i < savedCount; ++i) {
-            savedA[i] = s.v[i].indexA;
-            savedB[i] = s.v[i].indexB;
-        }
+        const int saved0 = key(s.v[0]);
+        const int saved1 = s.count > 1 ? key(s.v[1]) : -1;
+        const int saved2 = s.count > 2 ? key(s.v[2]) : -1;
 
         if (s.count == 2) {
             solve2(s);
@@ -279,14 +280,8 @@ GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache, float limit, Vec2 
 
         // A repeated support pair means no progress is possible (this is what guarantees
         // termination on point sets).
-        bool repeated = false;
-        for (int i = 0; i < savedCount; ++i) {
-            if (v.indexA == savedA[i] && v.indexB == savedB[i]) {
-                repeated = true;
-                break;
-            }
-        }
-        if (repeated) {
+        const int newKey = key(v);
+        if ((newKey == saved0) | (newKey == saved1) | (newKey == saved2)) {
             break;
         }
         // Every point of the Minkowski difference is at most dot(v.w, d) along d, so when that
@@ -294,13 +289,18 @@ GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache, float limit, Vec2 
         float reach = dot(v.w, d);
         float dd = lengthSquared(d);
         if (reach < 0.0f && reach * reach > limit * limit * dd) {
+            // Only beyondLimit is meaningful then: skip the closest points and the cache.
             result.beyondLimit = true;
-            break;
+            result.iterations = iteration;
+            return result;
         }
         // Duplicated input points give new indices at old positions: stop when the new point
         // is no farther towards the origin than the simplex, up to rounding.
         float gain = reach - dot(s.v[0].w, d);
-        float scale2 = std::fmax(lengthSquared(v.w), lengthSquared(s.v[0].w));
+        // A select, not std::fmax: without -ffinite-math that is a libm call.
+        const float newSq = lengthSquared(v.w);
+        const float oldSq = lengthSquared(s.v[0].w);
+        float scale2 = newSq > oldSq ? newSq : oldSq;
         if (gain <= 0.0f ||
             gain * gain <= kGjkRelativeTolerance * kGjkRelativeTolerance * scale2 * dd) {
             break;
@@ -315,7 +315,6 @@ GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache, float limit, Vec2 
     if (s.count == 3) {
         pointB = pointA;
     }
-    result.simplex = s;
     result.pointA = pointA;
     result.pointB = pointB;
     result.distance = s.count == 3 ? 0.0f : distance(pointA, pointB);

@@ -16,16 +16,16 @@ struct PointSet {
 };
 
 // Index of the point farthest along `direction` (the first one on ties, so that duplicated
-// points give a stable answer).
+// points give a stable answer). Written as selects, not a branch: which point wins is random
+// from call to call, and a mispredicted branch per call cost more than the loop itself.
 inline int supportIndex(PointSet set, Vec2 direction) {
     int best = 0;
     float bestValue = dot(set.points[0], direction);
     for (int i = 1; i < set.count; ++i) {
-        float value = dot(set.points[i], direction);
-        if (value > bestValue) {
-            best = i;
-            bestValue = value;
-        }
+        const float value = dot(set.points[i], direction);
+        const bool better = value > bestValue;
+        best = better ? i : best;
+        bestValue = better ? value : bestValue;
     }
     return best;
 }
@@ -56,7 +56,8 @@ struct GjkResult {
 inline constexpr float kGjkTouching = 1.0e-6f;
 
 // `limit` (metres): callers that only care about hulls closer than this let GJK stop as soon as
-// a support plane proves the distance is larger (then only beyondLimit is meaningful).
+// a support plane proves the distance is larger (then only beyondLimit is meaningful and the
+// cache is left as it was).
 // Without a cache the search starts along `direction` (from A towards B, e.g. between the
 // centroids; (0, 0) means "from the first points").
 GjkResult runGjk(PointSet a, PointSet b, SimplexCache* cache, float limit = FLT_MAX,
@@ -79,11 +80,6 @@ struct EpaResult {
     float depth = 0.0f; // of the hulls, no radii; negative if in fact separated
     int iterations = 0;
     bool converged = true;
-    // The hull edge the closest polytope edge comes from, when the sets are polygons in
-    // counter-clockwise order: edge faceA of A (from point faceA to faceA + 1) or edge faceB of
-    // B; -1 when it is not one edge (a vertex pair, or the polytope degenerated).
-    int faceA = -1;
-    int faceB = -1;
 };
 
 // Expands GJK's final simplex into the Minkowski difference until the edge closest to the

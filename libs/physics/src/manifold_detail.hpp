@@ -42,11 +42,15 @@ inline ManifoldPoint toWorldPoint(Vec2 local, float separation, std::uint16_t id
 }
 
 inline Manifold localToWorld(const LocalManifold& m, const Transform& xfA, const Transform& xfB) {
+    if (m.count == 0) {
+        // The rest of `m` is unwritten: rotating its stale normal read garbage, sometimes
+        // denormal floats, which cost microcode assists.
+        return Manifold{};
+    }
     const Vec2 shift = xfA.p - xfB.p;
     return Manifold{
         rotate(xfA.q, m.normal),
-        {m.count > 0 ? toWorldPoint(m.points[0], m.separations[0], m.ids[0], xfA, shift)
-                     : ManifoldPoint{},
+        {toWorldPoint(m.points[0], m.separations[0], m.ids[0], xfA, shift),
          m.count > 1 ? toWorldPoint(m.points[1], m.separations[1], m.ids[1], xfA, shift)
                      : ManifoldPoint{}},
         m.count};

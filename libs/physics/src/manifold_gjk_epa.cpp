@@ -15,7 +15,7 @@ namespace {
 using detail::PolygonRef;
 
 // Below this core distance (metres) GJK's normal is built from two nearly equal points and is
-// too inaccurate to pick a face; EPA from the touching simplex gives the face normal instead.
+// too inaccurate to pick a face; the polygon EPA (polygonEpa) gives the face instead.
 constexpr float kUseEpaBelow = 10.0f * kEpaTolerance;
 
 // Separation of `other` from edge `edge` of `poly`, both in one frame: how far the deepest
@@ -37,19 +37,18 @@ struct FaceChoice {
 };
 
 // The axis of least penetration (or greatest separation) of two convex polygons is a face
-// normal of one of them. EPA's direction is that normal; GJK's closest-point direction lies
-// between the normals of the two faces at the closest vertex. So only the two faces whose
-// normals bracket `direction` (the faces at the support vertex in that direction) are tested
-// on each polygon, instead of all of them as the separating-axis search does.
+// normal of one of them. For separated cores, GJK's closest-point direction lies between the
+// normals of the two faces at the closest vertex. So only the two faces whose normals bracket
+// `direction` (the faces at the support vertex in that direction) are tested on each polygon,
+// instead of all of them as the separating-axis search does.
 FaceChoice bestBracketingFace(PolygonRef poly, PolygonRef other, Vec2 direction) {
     int best = 0;
     float bestDot = dot(poly.normals[0], direction);
     for (int i = 1; i < poly.count; ++i) {
-        float d = dot(poly.normals[i], direction);
-        if (d > bestDot) {
-            best = i;
-            bestDot = d;
-        }
+        const float d = dot(poly.normals[i], direction);
+        const bool better = d > bestDot;
+        best = better ? i : best;
+        bestDot = better ? d : bestDot;
     }
     int prev = best == 0 ? poly.count - 1 : best - 1;
     int next = best + 1 == poly.count ? 0 : best + 1;
@@ -69,10 +68,68 @@ int incidentEdge(PolygonRef poly, Vec2 referenceNormal) {
     int best = 0;
     float bestDot = FLT_MAX;
     for (int i = 0; i < poly.count; ++i) {
-        float d = dot(poly.normals[i], referenceNormal);
-        if (d < bestDot) {
-            best = i;
-            bestDot = d;
+        const float d = dot(poly.normals[i], referenceNormal);
+        const bool better = d < bestDot;
+        best = better ? i : best;
+        bestDot = better ? d : bestDot;
+    }
+    return best;
+}
+
+struct FacePair {
+    FaceChoice a; // A's face of greatest separation
+    FaceChoice b; // B's face of greatest separation
+};
+
+// EPA specialised to two convex polygons in one frame. General EPA grows a polytope inside the
+// Minkowski difference B - A one support point at a time until its edge nearest the origin is
+// on the boundary. For polygons that boundary is known in advance: its edges are the edges of
+// B (normal nB[j]) and the edges of A reversed (normal -nA[i]), in order of normal angle, so
+// it is walked whole, n + m edges, merging the two edge sequences as in a Minkowski sum. Each
+// edge's distance from the origin is minus the face separation of the other polygon's deepest
+// vertex, which the walk carries along (the vertex of the boundary it stands on). No support
+// search, no square root, exact up to rounding (the iterative version stops at kEpaTolerance).
+// Returns the best face of each polygon; ties go to the lower index, as in the SAT search.
+FacePair polygonEpa(PolygonRef a, PolygonRef b) {
+    const int n = a.count;
+    const int m = b.count;
+    // The boundary vertex for directions just before nB[0]: B's vertex 0 and A's vertex
+    // deepest along nB[0] (its support in -nB[0]).
+    int ia = 0;
+    float minDot = dot(b.normals[0], a.vertices[0]);
+    for (int i = 1; i < n; ++i) {
+        const float d = dot(b.normals[0], a.vertices[i]);
+        const bool better = d < minDot;
+        ia = better ? i : ia;
+        minDot = better ? d : minDot;
+    }
+    int jb = 0;
+    int doneA = 0;
+    int doneB = 0;
+    FacePair best{{0, -FLT_MAX}, {0, -FLT_MAX}};
+    for (int step = 0; step < n + m; ++step) {
+        const Vec2 nA = a.normals[ia];
+        const Vec2 nB = b.normals[jb];
+        const Vec2 vA = a.vertices[ia];
+        const Vec2 vB = b.vertices[jb];
+        // Both candidate normals lie less than pi counter-clockwise of the current direction,
+        // so the sign of their cross product orders them. On a tie (parallel faces) either
+        // order gives the same distances.
+        const bool takeB = doneA == n || (doneB < m && cross(nB, -nA) >= 0.0f);
+        if (takeB) {
+            const float sep = dot(nB, vA - vB);
+            if (sep > best.b.separation) {
+                best.b = {jb, sep};
+            }
+            ++doneB;
+            jb = jb + 1 == m ? 0 : jb + 1;
+        } else {
+            const float sep = dot(nA, vB - vA);
+            if (sep > best.a.separation || (sep == best.a.separation && ia < best.a.edge)) {
+                best.a = {ia, sep};
+            }
+            ++doneA;
+            ia = ia + 1 == n ? 0 : ia + 1;
         }
     }
     return best;
@@ -94,12 +151,12 @@ int closestVertex(const detail::Simplex& s, bool ofA) {
 
 Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Polygon& b,
                                const Transform& xfB, float margin) {
-    // Everything happens in A's frame: B's vertices and normals are moved once.
+    // Everything happens in A's frame: B's vertices are moved once, its normals once GJK has
+    // not ruled the pair out.
     Transform relative = invMulTransforms(xfA, xfB);
     detail::PolygonScratch movedB;
     for (int i = 0; i < b.count; ++i) {
         movedB.vertices[i] = transformPoint(relative, b.vertices[i]);
-        movedB.normals[i] = rotate(relative.q, b.normals[i]);
     }
     const PolygonRef localB{movedB.vertices, movedB.normals, b.radius, b.count};
     const PolygonRef refA = detail::refOf(a);
@@ -111,6 +168,9 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
     detail::GjkResult gjk = detail::runGjk(setA, setB, nullptr, limit);
     if (gjk.beyondLimit) {
         return Manifold{};
+    }
+    for (int i = 0; i < b.count; ++i) {
+        movedB.normals[i] = rotate(relative.q, b.normals[i]);
     }
 
     const bool separated = gjk.simplex.count < 3 && gjk.distance > kUseEpaBelow;
@@ -125,20 +185,9 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
         faceA = bestBracketingFace(refA, localB, direction);
         faceB = bestBracketingFace(localB, refA, -direction);
     } else {
-        detail::EpaResult epa = detail::runEpa(setA, setB, gjk.simplex);
-        direction = epa.normal;
-        if (epa.converged && epa.faceA >= 0) {
-            // A's face is the axis of least penetration: nothing of B's can beat it by the
-            // flip tolerance, so B's faces need no test.
-            faceA = {epa.faceA, -epa.depth};
-            faceB = {0, -FLT_MAX};
-        } else if (epa.converged && epa.faceB >= 0) {
-            faceB = {epa.faceB, -epa.depth};
-            faceA = bestBracketingFace(refA, localB, direction);
-        } else {
-            faceA = bestBracketingFace(refA, localB, direction);
-            faceB = bestBracketingFace(localB, refA, -direction);
-        }
+        const FacePair faces = polygonEpa(refA, localB);
+        faceA = faces.a;
+        faceB = faces.b;
     }
 
     // Reference face, corner contacts: decided as in the separating-axis routine (the shared

@@ -164,20 +164,20 @@ Manifold collideCapsules(const Capsule& a, const Transform& xfA, const Capsule& 
 
 Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const Circle& b,
                                  const Transform& xfB, float margin) {
-    const Transform xf = invMulTransforms(xfA, xfB);
-    const Vec2 c = transformPoint(xf, b.center);
+    // Only the centre moves to A's frame: cheaper than composing the two transforms first.
+    const Vec2 c = invRotate(xfA.q, rotate(xfB.q, b.center) + (xfB.p - xfA.p));
     const float limit = a.radius + b.radius + margin;
 
     // The face that separates the centre the most; the closest feature is that face or one of
     // its two vertices.
+    // Kept by selects, not a branch: which face wins is random from pair to pair.
     int face = 0;
     float separation = -FLT_MAX;
     for (int i = 0; i < a.count; ++i) {
-        float s = dot(a.normals[i], c - a.vertices[i]);
-        if (s > separation) {
-            separation = s;
-            face = i;
-        }
+        const float s = dot(a.normals[i], c - a.vertices[i]);
+        const bool better = s > separation;
+        face = better ? i : face;
+        separation = better ? s : separation;
     }
     if (separation > limit) {
         return Manifold{};
@@ -185,18 +185,17 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
     const Vec2 v1 = a.vertices[face];
     const Vec2 v2 = a.vertices[face + 1 < a.count ? face + 1 : 0];
     detail::LocalManifold m;
-    if (separation > FLT_EPSILON && dot(c - v1, v2 - v1) < 0.0f) {
-        float dist = distance(v1, c);
-        if (dist > limit) {
+    if (separation > FLT_EPSILON &&
+        (dot(c - v1, v2 - v1) < 0.0f || dot(c - v2, v1 - v2) < 0.0f)) {
+        // Vertex region: the distance to the vertex, tested squared so that a pair beyond
+        // the margin costs no square root; one reciprocal instead of a division per axis.
+        const Vec2 v = dot(c - v1, v2 - v1) < 0.0f ? v1 : v2;
+        const float distSq = distanceSquared(v, c);
+        if (distSq > limit * limit) {
             return Manifold{};
         }
-        m = singlePoint(v1, c, (c - v1) / dist, dist, a.radius, b.radius, 0);
-    } else if (separation > FLT_EPSILON && dot(c - v2, v1 - v2) < 0.0f) {
-        float dist = distance(v2, c);
-        if (dist > limit) {
-            return Manifold{};
-        }
-        m = singlePoint(v2, c, (c - v2) / dist, dist, a.radius, b.radius, 0);
+        const float dist = std::sqrt(distSq);
+        m = singlePoint(v, c, (c - v) * (1.0f / dist), dist, a.radius, b.radius, 0);
     } else {
         // Face region, or the centre is inside the core: push out through the face.
         const Vec2 n = a.normals[face];

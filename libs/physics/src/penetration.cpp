@@ -149,10 +149,11 @@ EpaResult runEpa(PointSet a, PointSet b, const Simplex& simplex) {
     result.converged = false;
     while (true) {
         closest = 0;
+        float closestDistance = poly.distance[0];
         for (int i = 1; i < poly.count; ++i) {
-            if (poly.distance[i] < poly.distance[closest]) {
-                closest = i;
-            }
+            const bool closer = poly.distance[i] < closestDistance;
+            closest = closer ? i : closest;
+            closestDistance = closer ? poly.distance[i] : closestDistance;
         }
         if (iteration == kMaxEpaIterations || poly.count == kMaxPolytope) {
             break;
@@ -197,17 +198,6 @@ EpaResult runEpa(PointSet a, PointSet b, const Simplex& simplex) {
     result.pointB = bI + t * (bJ - bI);
     result.depth = poly.distance[i];
     result.iterations = iteration;
-    // An edge of B - A joins two points that share A's point (an edge of B) or B's point (an
-    // edge of A, walked in the same counter-clockwise order since -A is A turned by pi).
-    int ia = poly.indexA[i];
-    int ja = poly.indexA[j];
-    int ib = poly.indexB[i];
-    int jb = poly.indexB[j];
-    if (ib == jb && ja == (ia + 1 == a.count ? 0 : ia + 1)) {
-        result.faceA = ia;
-    } else if (ia == ja && jb == (ib + 1 == b.count ? 0 : ib + 1)) {
-        result.faceB = ib;
-    }
     return result;
 }
 
