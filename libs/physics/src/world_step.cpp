@@ -88,7 +88,6 @@ void World::Impl::solve(float dt) {
     }
 
     // One constraint per touching solid contact with a moving side.
-    s.constraints.clear();
     detail::ContactSoftness softness = detail::makeContactSoftness(def, dt);
     auto viewOf = [&](int bodyIndex) {
         const detail::Body& b = body(bodyIndex);
@@ -106,6 +105,23 @@ void World::Impl::solve(float dt) {
         }
         return v;
     };
+    // One constraint per touching solid contact with a moving side, in contact order. Each
+    // also gets a level (see ConstraintLevels): solving level by level is the same sweep as
+    // solving in contact order, but the constraints of a level share no moving body, so the
+    // wide solver takes four at a time.
+    s.constraints.clear();
+    s.constraintLevel.clear();
+    s.levels.reset(static_cast<int>(s.sims.size()));
+    auto movingState = [&](int bodyIndex) {
+        int k = body(bodyIndex).motion.solverIndex;
+        if (k == kNullIndex) {
+            return kNullIndex;
+        }
+        const detail::BodySim& bs = s.sims[static_cast<std::size_t>(k)];
+        bool rigid = bs.invMass.x == 0.0f && bs.invMass.y == 0.0f && bs.invInertia == 0.0f;
+        return rigid ? kNullIndex : k;
+    };
+    bool rolling = false;
     for (std::size_t ci = 0; ci < s.contacts.size(); ++ci) {
         detail::Contact& c = s.contacts[ci];
         c.constraintIndex = kNullIndex;
@@ -116,12 +132,14 @@ void World::Impl::solve(float dt) {
             body(c.bodyB).motion.solverIndex == kNullIndex) {
             continue;
         }
+        rolling = rolling || c.rollingResistance > 0.0f;
+        s.constraintLevel.push_back(s.levels.assign(movingState(c.bodyA), movingState(c.bodyB)));
+        c.constraintIndex = static_cast<int>(s.constraints.size());
+        detail::ContactConstraint& cc = s.constraints.emplace_back();
         detail::ContactBodyView a = viewOf(c.bodyA);
         detail::ContactBodyView b = viewOf(c.bodyB);
         bool rigidSide = (a.invMass.x == 0.0f && a.invMass.y == 0.0f && a.invInertia == 0.0f) ||
                          (b.invMass.x == 0.0f && b.invMass.y == 0.0f && b.invInertia == 0.0f);
-        c.constraintIndex = static_cast<int>(s.constraints.size());
-        detail::ContactConstraint& cc = s.constraints.emplace_back();
         detail::prepareContact(cc, c.manifold, a, b,
                                {c.friction, c.restitution, c.rollingResistance},
                                rigidSide ? softness.vsStatic : softness.dynamic);
@@ -135,6 +153,26 @@ void World::Impl::solve(float dt) {
     }
 
     detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def};
+    if (def.mode == SolverMode::SoftStep && !rolling) {
+        // The constraints by level (a counting sort, so contact order within a level).
+        const int levelCount = s.levels.levelCount();
+        s.levelStart.assign(static_cast<std::size_t>(levelCount) + 1, 0);
+        for (int k = 0; k < levelCount; ++k) {
+            s.levelStart[static_cast<std::size_t>(k) + 1] =
+                s.levelStart[static_cast<std::size_t>(k)] +
+                s.levels.counts()[static_cast<std::size_t>(k)];
+        }
+        s.levelNext.assign(s.levelStart.begin(), s.levelStart.end() - 1);
+        s.levelOrder.resize(s.constraints.size());
+        for (std::size_t k = 0; k < s.constraintLevel.size(); ++k) {
+            int& next = s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])];
+            s.levelOrder[static_cast<std::size_t>(next++)] = static_cast<int>(k);
+        }
+        // Rolling resistance is scalar only (and solved in contact order, the same sweep).
+        step.wide = &s.wideContacts;
+        step.levelOrder = s.levelOrder;
+        step.levelStart = s.levelStart;
+    }
     if (def.mode == SolverMode::SoftStep) {
         detail::solveSoftStep(step);
     } else {
