@@ -136,9 +136,12 @@ void solveOne(WideConstraint& c, std::span<BodyState> states, float invH, bool u
         Float4 vn = dvx * nx + dvy * ny;
 
         Int4 impact = ~cp.impactSeen & (vn + maxOf(s, zero) * vInvH < zero);
-        cp.impactSeen |= impact;
-        cp.relativeVelocity = select(impact, vn, cp.relativeVelocity);
-        cp.impactGap = select(impact, useBias ? s + vn / vInvH : s, cp.impactGap);
+        // Rare once a pile has settled: skip the stores (and the division) when no lane hits.
+        if ((impact[0] | impact[1] | impact[2] | impact[3]) != 0) {
+            cp.impactSeen |= impact;
+            cp.relativeVelocity = select(impact, vn, cp.relativeVelocity);
+            cp.impactGap = select(impact, useBias ? s + vn / vInvH : s, cp.impactGap);
+        }
 
         Float4 impulse = (-cp.normalMass) * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
         Float4 newImpulse = maxOf(cp.normalImpulse + impulse, zero);
