@@ -3,6 +3,7 @@
 
 #include <bit>
 #include <cstddef>
+#include <cstring>
 
 namespace e2d::physics::detail {
 
@@ -21,7 +22,7 @@ inline Float4 splat(float x) { return Float4{x, x, x, x}; }
 const BodyState kStaticState{};
 
 struct WideBody {
-    Float4 vx, vy, w;
+    Float4 vx, vy, w, flags;
     Float4 dpx, dpy, qc, qs;
 };
 
@@ -32,35 +33,53 @@ inline void lanesOf(const int index[kLanes], std::span<BodyState> states,
     }
 }
 
+// BodyState is two 16-byte rows, {vx, vy, w, flags} and {dpx, dpy, qc, qs}: a lane's row is one
+// load, and four rows transpose into four lane vectors (and back) with shuffles only, which
+// move bits unchanged (flags included).
+static_assert(sizeof(BodyState) == 32, "BodyState must stay two 16-byte rows");
+static_assert(offsetof(BodyState, linearVelocity) == 0 && offsetof(BodyState, angularVelocity) == 8 &&
+                  offsetof(BodyState, deltaPosition) == 16 && offsetof(BodyState, deltaRotation) == 24,
+              "BodyState rows out of order");
+
+inline Float4 loadRow(const BodyState* s, std::size_t offset) {
+    Float4 row;
+    std::memcpy(&row, reinterpret_cast<const unsigned char*>(s) + offset, sizeof row);
+    return row;
+}
+
+inline void transpose(Float4 r0, Float4 r1, Float4 r2, Float4 r3, Float4& c0, Float4& c1,
+                      Float4& c2, Float4& c3) {
+    Float4 t0 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
+    Float4 t1 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
+    Float4 t2 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
+    Float4 t3 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
+    c0 = __builtin_shufflevector(t0, t1, 0, 1, 4, 5);
+    c1 = __builtin_shufflevector(t0, t1, 2, 3, 6, 7);
+    c2 = __builtin_shufflevector(t2, t3, 0, 1, 4, 5);
+    c3 = __builtin_shufflevector(t2, t3, 2, 3, 6, 7);
+}
+
 inline WideBody gatherVelocities(const BodyState* const (&s)[kLanes]) {
     WideBody b;
-    b.vx = Float4{s[0]->linearVelocity.x, s[1]->linearVelocity.x, s[2]->linearVelocity.x,
-                  s[3]->linearVelocity.x};
-    b.vy = Float4{s[0]->linearVelocity.y, s[1]->linearVelocity.y, s[2]->linearVelocity.y,
-                  s[3]->linearVelocity.y};
-    b.w = Float4{s[0]->angularVelocity, s[1]->angularVelocity, s[2]->angularVelocity,
-                 s[3]->angularVelocity};
+    transpose(loadRow(s[0], 0), loadRow(s[1], 0), loadRow(s[2], 0), loadRow(s[3], 0), b.vx, b.vy,
+              b.w, b.flags);
     return b;
 }
 
 inline void gatherDeltas(WideBody& b, const BodyState* const (&s)[kLanes]) {
-    b.dpx = Float4{s[0]->deltaPosition.x, s[1]->deltaPosition.x, s[2]->deltaPosition.x,
-                   s[3]->deltaPosition.x};
-    b.dpy = Float4{s[0]->deltaPosition.y, s[1]->deltaPosition.y, s[2]->deltaPosition.y,
-                   s[3]->deltaPosition.y};
-    b.qc = Float4{s[0]->deltaRotation.c, s[1]->deltaRotation.c, s[2]->deltaRotation.c,
-                  s[3]->deltaRotation.c};
-    b.qs = Float4{s[0]->deltaRotation.s, s[1]->deltaRotation.s, s[2]->deltaRotation.s,
-                  s[3]->deltaRotation.s};
+    transpose(loadRow(s[0], 16), loadRow(s[1], 16), loadRow(s[2], 16), loadRow(s[3], 16), b.dpx,
+              b.dpy, b.qc, b.qs);
 }
 
 inline void scatterVelocities(const WideBody& b, const int index[kLanes],
                               std::span<BodyState> states) {
+    Float4 rows[kLanes];
+    transpose(b.vx, b.vy, b.w, b.flags, rows[0], rows[1], rows[2], rows[3]);
     for (int i = 0; i < kLanes; ++i) {
         if (index[i] >= 0) {
-            BodyState& s = states[static_cast<std::size_t>(index[i])];
-            s.linearVelocity = {b.vx[i], b.vy[i]};
-            s.angularVelocity = b.w[i];
+            // BodyState is trivially copyable: its first row takes the lane whole.
+            std::memcpy(reinterpret_cast<unsigned char*>(&states[static_cast<std::size_t>(index[i])]),
+                        &rows[i], sizeof rows[i]);
         }
     }
 }
