@@ -203,6 +203,21 @@ void solveOne(WideConstraint& c, std::span<BodyState> states, float invH, bool u
     scatterVelocities(b, c.indexB, states);
 }
 
+// The constraints of a level lie scattered over the whole array (a level takes a few from
+// every island): fetch the ones a few lanes ahead while this one is copied.
+constexpr int kPrefetchAhead = 16;
+
+inline void prefetchConstraint(std::span<const ContactConstraint> constraints,
+                               std::span<const int> levelOrder, int slot) {
+    if (slot < static_cast<int>(levelOrder.size())) {
+        const auto* p = reinterpret_cast<const char*>(
+            &constraints[static_cast<std::size_t>(levelOrder[static_cast<std::size_t>(slot)])]);
+        for (std::size_t offset = 0; offset < sizeof(ContactConstraint); offset += 64) {
+            __builtin_prefetch(p + offset);
+        }
+    }
+}
+
 } // namespace
 
 void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constraints,
@@ -224,6 +239,7 @@ void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constrai
             WideConstraint& w = wide.constraints[static_cast<std::size_t>(g)];
             w = WideConstraint{};
             for (int lane = 0; lane < kLanes; ++lane) {
+                prefetchConstraint(constraints, levelOrder, first + lane + kPrefetchAhead);
                 if (first + lane >= end) {
                     // An empty lane: no bodies, no mass, so every impulse it computes is zero.
                     w.indexA[lane] = -1;
@@ -278,6 +294,7 @@ void storeWide(const WideContacts& wide, std::span<ContactConstraint> constraint
         for (int first = levelStart[k]; first < end; first += kLanes, ++g) {
             const WideConstraint& w = wide.constraints[static_cast<std::size_t>(g)];
             for (int lane = 0; lane < kLanes && first + lane < end; ++lane) {
+                prefetchConstraint(constraints, levelOrder, first + lane + kPrefetchAhead);
                 ContactConstraint& c =
                     constraints[static_cast<std::size_t>(levelOrder[static_cast<std::size_t>(first + lane)])];
                 for (int i = 0; i < c.pointCount; ++i) {
