@@ -87,7 +87,6 @@ void World::Impl::solve(float dt) {
                                  : b.angularVelocity;
     }
 
-    // One constraint per touching solid contact with a moving side.
     detail::ContactSoftness softness = detail::makeContactSoftness(def, dt);
     auto viewOf = [&](int bodyIndex) {
         const detail::Body& b = body(bodyIndex);
