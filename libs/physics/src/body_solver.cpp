@@ -52,7 +52,6 @@ void solveSoftStep(const SolverStep& step) {
     float invH = 1.0f / h;
     if (step.wide != nullptr) {
         WideContacts& wide = *step.wide;
-        prepareWide(wide, step.constraints, step.levelOrder, step.levelStart);
         // The same passes as below; a backward sweep is the levels in reverse.
         for (int i = 0; i < def.subSteps; ++i) {
             integrateVelocities(step.sims, step.states, step.gravity, h, def.maxLinearSpeed);

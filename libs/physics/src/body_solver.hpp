@@ -21,9 +21,9 @@ struct SolverStep {
     float dt = 0.0f;
     const SolverDef* def = nullptr;
     // Soft step only, optional: the constraints by level (ConstraintLevels), level k being
-    // levelOrder[levelStart[k] .. levelStart[k + 1]); the contact passes then run four
-    // constraints at a time, with `wide` as their scratch, and give what the sweep in
-    // constraint order gives.
+    // levelOrder[levelStart[k] .. levelStart[k + 1]), already packed into `wide`
+    // (prepareWide(), or layoutWide() and packWideLane()); the contact passes then run four
+    // constraints at a time and give what the sweep in constraint order gives.
     WideContacts* wide = nullptr;
     std::span<const int> levelOrder{};
     std::span<const int> levelStart{};

@@ -220,8 +220,7 @@ inline void prefetchConstraint(std::span<const ContactConstraint> constraints,
 
 } // namespace
 
-void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constraints,
-                 std::span<const int> levelOrder, std::span<const int> levelStart) {
+void layoutWide(WideContacts& wide, std::span<const int> levelStart) {
     const std::size_t levelCount = levelStart.empty() ? 0 : levelStart.size() - 1;
     wide.levelStart.assign(levelCount + 1, 0);
     int groups = 0;
@@ -231,56 +230,66 @@ void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constrai
     }
     wide.levelStart[levelCount] = groups;
     wide.constraints.resize(static_cast<std::size_t>(groups));
-
+    // The lanes past a level's last constraint stay empty: no bodies, no mass, so every impulse
+    // they compute is zero.
     for (std::size_t k = 0; k < levelCount; ++k) {
-        const int end = levelStart[k + 1];
-        int g = wide.levelStart[k];
-        for (int first = levelStart[k]; first < end; first += kLanes, ++g) {
-            WideConstraint& w = wide.constraints[static_cast<std::size_t>(g)];
-            w = WideConstraint{};
-            for (int lane = 0; lane < kLanes; ++lane) {
-                prefetchConstraint(constraints, levelOrder, first + lane + kPrefetchAhead);
-                if (first + lane >= end) {
-                    // An empty lane: no bodies, no mass, so every impulse it computes is zero.
-                    w.indexA[lane] = -1;
-                    w.indexB[lane] = -1;
-                    continue;
-                }
-                const ContactConstraint& c =
-                    constraints[static_cast<std::size_t>(levelOrder[static_cast<std::size_t>(first + lane)])];
-                w.indexA[lane] = c.indexA;
-                w.indexB[lane] = c.indexB;
-                w.normalX[lane] = c.normal.x;
-                w.normalY[lane] = c.normal.y;
-                w.invMassAx[lane] = c.invMassA.x;
-                w.invMassAy[lane] = c.invMassA.y;
-                w.invMassBx[lane] = c.invMassB.x;
-                w.invMassBy[lane] = c.invMassB.y;
-                w.invInertiaA[lane] = c.invInertiaA;
-                w.invInertiaB[lane] = c.invInertiaB;
-                w.friction[lane] = c.friction;
-                w.biasRate[lane] = c.softness.biasRate;
-                w.massScale[lane] = c.softness.massScale;
-                w.impulseScale[lane] = c.softness.impulseScale;
-                // A missing second point has no mass either: its impulses stay zero.
-                for (int i = 0; i < c.pointCount; ++i) {
-                    const ContactConstraintPoint& cp = c.points[i];
-                    WidePoint& wp = w.points[i];
-                    wp.anchorAx[lane] = cp.anchorA.x;
-                    wp.anchorAy[lane] = cp.anchorA.y;
-                    wp.anchorBx[lane] = cp.anchorB.x;
-                    wp.anchorBy[lane] = cp.anchorB.y;
-                    wp.baseSeparation[lane] = cp.baseSeparation;
-                    wp.relativeVelocity[lane] = cp.relativeVelocity;
-                    wp.normalImpulse[lane] = cp.normalImpulse;
-                    wp.tangentImpulse[lane] = cp.tangentImpulse;
-                    wp.maxNormalImpulse[lane] = cp.maxNormalImpulse;
-                    wp.normalMass[lane] = cp.normalMass;
-                    wp.tangentMass[lane] = cp.tangentMass;
-                    wp.impactGap[lane] = cp.impactGap;
-                    wp.impactSeen[lane] = cp.impactSeen ? -1 : 0;
-                }
-            }
+        const int count = levelStart[k + 1] - levelStart[k];
+        if (count % kLanes == 0) {
+            continue;
+        }
+        WideConstraint& w = wide.constraints[static_cast<std::size_t>(wide.levelStart[k + 1] - 1)];
+        for (int lane = count % kLanes; lane < kLanes; ++lane) {
+            packWideLane(w, lane, ContactConstraint{});
+        }
+    }
+}
+
+void packWideLane(WideConstraint& w, int lane, const ContactConstraint& c) {
+    w.indexA[lane] = c.indexA;
+    w.indexB[lane] = c.indexB;
+    w.normalX[lane] = c.normal.x;
+    w.normalY[lane] = c.normal.y;
+    w.invMassAx[lane] = c.invMassA.x;
+    w.invMassAy[lane] = c.invMassA.y;
+    w.invMassBx[lane] = c.invMassB.x;
+    w.invMassBy[lane] = c.invMassB.y;
+    w.invInertiaA[lane] = c.invInertiaA;
+    w.invInertiaB[lane] = c.invInertiaB;
+    w.friction[lane] = c.friction;
+    w.biasRate[lane] = c.softness.biasRate;
+    w.massScale[lane] = c.softness.massScale;
+    w.impulseScale[lane] = c.softness.impulseScale;
+    for (int i = 0; i < 2; ++i) {
+        // A missing second point has no mass: its impulses stay zero.
+        const ContactConstraintPoint cp = i < c.pointCount ? c.points[i] : ContactConstraintPoint{};
+        WidePoint& wp = w.points[i];
+        wp.anchorAx[lane] = cp.anchorA.x;
+        wp.anchorAy[lane] = cp.anchorA.y;
+        wp.anchorBx[lane] = cp.anchorB.x;
+        wp.anchorBy[lane] = cp.anchorB.y;
+        wp.baseSeparation[lane] = cp.baseSeparation;
+        wp.relativeVelocity[lane] = cp.relativeVelocity;
+        wp.normalImpulse[lane] = cp.normalImpulse;
+        wp.tangentImpulse[lane] = cp.tangentImpulse;
+        wp.maxNormalImpulse[lane] = cp.maxNormalImpulse;
+        wp.normalMass[lane] = cp.normalMass;
+        wp.tangentMass[lane] = cp.tangentMass;
+        wp.impactGap[lane] = cp.impactGap;
+        wp.impactSeen[lane] = cp.impactSeen ? -1 : 0;
+    }
+}
+
+void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constraints,
+                 std::span<const int> levelOrder, std::span<const int> levelStart) {
+    layoutWide(wide, levelStart);
+    const std::size_t levelCount = levelStart.empty() ? 0 : levelStart.size() - 1;
+    for (std::size_t k = 0; k < levelCount; ++k) {
+        for (int slot = levelStart[k]; slot < levelStart[k + 1]; ++slot) {
+            prefetchConstraint(constraints, levelOrder, slot + kPrefetchAhead);
+            const int at = slot - levelStart[k];
+            packWideLane(wide.constraints[static_cast<std::size_t>(wide.levelStart[k] + at / kLanes)],
+                         at % kLanes,
+                         constraints[static_cast<std::size_t>(levelOrder[static_cast<std::size_t>(slot)])]);
         }
     }
 }

@@ -52,6 +52,12 @@ struct WideContacts {
     std::vector<int> levelStart;
 };
 
+// Sizes `wide` for the levels (levelStart as below) and empties the lanes past each level's
+// last constraint; packWideLane() then fills the others.
+void layoutWide(WideContacts& wide, std::span<const int> levelStart);
+// Puts constraint `c` in lane `lane` of `w`.
+void packWideLane(WideConstraint& w, int lane, const ContactConstraint& c);
+
 // Packs the constraints of each level, constraints[levelOrder[levelStart[k] ..
 // levelStart[k + 1])], into groups of four (the last group of a level padded with empty lanes).
 void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constraints,

@@ -84,6 +84,7 @@ struct Simulation {
     ConstraintLevels levels;
     std::vector<int> constraintLevel;
     std::vector<int> levelOrder;
+    std::vector<int> constraintSlot; // each constraint's place in levelOrder
     std::vector<int> levelStart;
     std::vector<int> levelNext;
     WideContacts wideContacts;

@@ -108,7 +108,6 @@ void World::Impl::solve(float dt) {
     // also gets a level (see ConstraintLevels): solving level by level is the same sweep as
     // solving in contact order, but the constraints of a level share no moving body, so the
     // wide solver takes four at a time.
-    s.constraints.clear();
     s.constraintLevel.clear();
     s.levels.reset(static_cast<int>(s.sims.size()));
     auto movingState = [&](int bodyIndex) {
@@ -121,6 +120,7 @@ void World::Impl::solve(float dt) {
         return rigid ? kNullIndex : k;
     };
     bool rolling = false;
+    int constraintCount = 0;
     for (std::size_t ci = 0; ci < s.contacts.size(); ++ci) {
         detail::Contact& c = s.contacts[ci];
         c.constraintIndex = kNullIndex;
@@ -133,8 +133,39 @@ void World::Impl::solve(float dt) {
         }
         rolling = rolling || c.rollingResistance > 0.0f;
         s.constraintLevel.push_back(s.levels.assign(movingState(c.bodyA), movingState(c.bodyB)));
-        c.constraintIndex = static_cast<int>(s.constraints.size());
-        detail::ContactConstraint& cc = s.constraints.emplace_back();
+        c.constraintIndex = constraintCount++;
+    }
+
+    // Rolling resistance is scalar only (and solved in contact order, the same sweep).
+    const bool wide = def.mode == SolverMode::SoftStep && !rolling;
+    if (wide) {
+        // The constraints by level (a counting sort, so contact order within a level).
+        const int levelCount = s.levels.levelCount();
+        s.levelStart.assign(static_cast<std::size_t>(levelCount) + 1, 0);
+        for (int k = 0; k < levelCount; ++k) {
+            s.levelStart[static_cast<std::size_t>(k) + 1] =
+                s.levelStart[static_cast<std::size_t>(k)] +
+                s.levels.counts()[static_cast<std::size_t>(k)];
+        }
+        s.levelNext.assign(s.levelStart.begin(), s.levelStart.end() - 1);
+        s.levelOrder.resize(static_cast<std::size_t>(constraintCount));
+        s.constraintSlot.resize(static_cast<std::size_t>(constraintCount));
+        for (std::size_t k = 0; k < s.constraintLevel.size(); ++k) {
+            int slot = s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])]++;
+            s.levelOrder[static_cast<std::size_t>(slot)] = static_cast<int>(k);
+            s.constraintSlot[k] = slot;
+        }
+        detail::layoutWide(s.wideContacts, s.levelStart);
+    }
+
+    s.constraints.resize(static_cast<std::size_t>(constraintCount));
+    for (std::size_t ci = 0; ci < s.contacts.size(); ++ci) {
+        detail::Contact& c = s.contacts[ci];
+        if (c.constraintIndex == kNullIndex) {
+            continue;
+        }
+        const auto k = static_cast<std::size_t>(c.constraintIndex);
+        detail::ContactConstraint& cc = s.constraints[k];
         detail::ContactBodyView a = viewOf(c.bodyA);
         detail::ContactBodyView b = viewOf(c.bodyB);
         bool rigidSide = (a.invMass.x == 0.0f && a.invMass.y == 0.0f && a.invInertia == 0.0f) ||
@@ -149,25 +180,19 @@ void World::Impl::solve(float dt) {
                         v.invMass.y > 0.0f ? scale * gravity.y : 0.0f};
         };
         cc.pressAcceleration = -dot(gravityOf(b, c.bodyB) - gravityOf(a, c.bodyA), cc.normal);
+        if (wide) {
+            // Packed while it is in cache (gathering it later by level is a random read).
+            const auto level = static_cast<std::size_t>(s.constraintLevel[k]);
+            const int at = s.constraintSlot[k] - s.levelStart[level];
+            detail::packWideLane(
+                s.wideContacts.constraints[static_cast<std::size_t>(
+                    s.wideContacts.levelStart[level] + at / detail::kLanes)],
+                at % detail::kLanes, cc);
+        }
     }
 
     detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def};
-    if (def.mode == SolverMode::SoftStep && !rolling) {
-        // The constraints by level (a counting sort, so contact order within a level).
-        const int levelCount = s.levels.levelCount();
-        s.levelStart.assign(static_cast<std::size_t>(levelCount) + 1, 0);
-        for (int k = 0; k < levelCount; ++k) {
-            s.levelStart[static_cast<std::size_t>(k) + 1] =
-                s.levelStart[static_cast<std::size_t>(k)] +
-                s.levels.counts()[static_cast<std::size_t>(k)];
-        }
-        s.levelNext.assign(s.levelStart.begin(), s.levelStart.end() - 1);
-        s.levelOrder.resize(s.constraints.size());
-        for (std::size_t k = 0; k < s.constraintLevel.size(); ++k) {
-            int& next = s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])];
-            s.levelOrder[static_cast<std::size_t>(next++)] = static_cast<int>(k);
-        }
-        // Rolling resistance is scalar only (and solved in contact order, the same sweep).
+    if (wide) {
         step.wide = &s.wideContacts;
         step.levelOrder = s.levelOrder;
         step.levelStart = s.levelStart;
