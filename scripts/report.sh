@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job, from a fresh Debian 12 machine: build e2d optimised and produce its report.
 # The report (in report/, or $1) is the physics validation of e2d against Box2D 2.4
-# (report/validation/report.html), the headless smoke run of core and the collision benchmark.
+# (report/validation/report.html), the headless smoke run of core, the collision benchmark and
+# the solver benchmark (whole steps against Box2D 2.4).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 root="$PWD"
@@ -21,6 +22,13 @@ echo "=== collision benchmark: e2d SAT, e2d GJK/EPA and Box2D 2.4 in one binary"
   --benchmark_out="$out/bench_collision.json" --benchmark_out_format=json \
   --e2d_table="$out/bench_collision.md"
 
+echo "=== solver benchmark: whole steps, e2d (soft step, 4 sub-steps) and Box2D 2.4 (8/3), sleeping off"
+# Checks the large pyramid after 10 s, then settles each scene for 2 s and times steps; exit
+# status 1 when e2d's pyramid top drifted >= 0.1 m or sagged >= 0.75 m (the table is written).
+"$root/build/release/bench/e2d_bench_solver" --benchmark_min_time=0.5 \
+  --benchmark_out="$out/bench_solver.json" --benchmark_out_format=json \
+  --e2d_table="$out/bench_solver.md" || echo "e2d_bench_solver: exit status $? (see above)"
+
 echo "=== physics validation: e2d and Box2D 2.4 side by side (all scenarios, full sweep)"
 # Exit status 1 means some check failed: the report is still written and says which.
 set +e
@@ -32,4 +40,4 @@ if [ "$validation_status" -ge 2 ]; then
 fi
 echo
 echo "Report written to $out/: validation/report.html (open it), validation/report.json,"
-echo "bench_collision.md, bench_collision.json, smoke.txt"
+echo "bench_collision.md, bench_collision.json, bench_solver.md, bench_solver.json, smoke.txt"

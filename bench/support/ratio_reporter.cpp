@@ -48,7 +48,7 @@ void RatioReporter::ReportRuns(const std::vector<Run>& reports) {
     ConsoleReporter::ReportRuns(runs);
 }
 
-std::string RatioReporter::markdownTable(const std::string& unit) const {
+std::string RatioReporter::markdownTable(const std::string& unit, double nsPerUnit) const {
     std::ostringstream out;
     out << "| case |";
     for (const auto& e : engines_) {
@@ -73,7 +73,8 @@ std::string RatioReporter::markdownTable(const std::string& unit) const {
             if (it == byEngine.end()) {
                 out << " - |";
             } else {
-                std::snprintf(buf, sizeof buf, " %.1f |", it->second);
+                const double value = it->second / nsPerUnit;
+                std::snprintf(buf, sizeof buf, value < 10.0 ? " %.3f |" : " %.1f |", value);
                 out << buf;
             }
         }
@@ -111,7 +112,8 @@ std::string RatioReporter::takeTableFlag(int& argc, char** argv) {
 }
 
 int runWithRatios(int argc, char** argv, const std::string& baseline,
-                  const std::vector<std::string>& engineOrder, const std::string& unit) {
+                  const std::vector<std::string>& engineOrder, const std::string& unit,
+                  double nsPerUnit, const std::string& appendix) {
     const std::string tablePath = RatioReporter::takeTableFlag(argc, argv);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
@@ -120,7 +122,7 @@ int runWithRatios(int argc, char** argv, const std::string& baseline,
     RatioReporter reporter(baseline, engineOrder);
     benchmark::RunSpecifiedBenchmarks(&reporter);
     benchmark::Shutdown();
-    const std::string table = reporter.markdownTable(unit);
+    const std::string table = reporter.markdownTable(unit, nsPerUnit) + appendix;
     std::printf("\n%s", table.c_str());
     if (!tablePath.empty()) {
         std::ofstream(tablePath) << table;

@@ -19,8 +19,9 @@ public:
 
     void ReportRuns(const std::vector<Run>& reports) override;
 
-    /// The table: one row per case, one column per engine, then ratios to the baseline.
-    std::string markdownTable(const std::string& unit = "ns per pair") const;
+    /// The table: one row per case, one column per engine, then ratios to the baseline. Times
+    /// are ns per item divided by `nsPerUnit` (1e6 for ms).
+    std::string markdownTable(const std::string& unit = "ns per pair", double nsPerUnit = 1.0) const;
 
     /// Pulls `--e2d_table=PATH` out of argv (before benchmark::Initialize sees it).
     static std::string takeTableFlag(int& argc, char** argv);
@@ -33,8 +34,10 @@ private:
 };
 
 /// Runs the registered benchmarks with a RatioReporter and writes its table where
-/// `--e2d_table=PATH` says (if given). Returns main's exit status.
+/// `--e2d_table=PATH` says (if given), followed by `appendix` (more Markdown, may be empty).
+/// Times in the table are ns per item over `nsPerUnit`. Returns main's exit status.
 int runWithRatios(int argc, char** argv, const std::string& baseline,
-                  const std::vector<std::string>& engineOrder, const std::string& unit);
+                  const std::vector<std::string>& engineOrder, const std::string& unit,
+                  double nsPerUnit = 1.0, const std::string& appendix = {});
 
 } // namespace e2d::bench

@@ -70,6 +70,23 @@ void solveSoftStep(const SolverStep& step) {
     const SolverDef& def = *step.def;
     float h = step.dt / static_cast<float>(def.subSteps);
     float invH = 1.0f / h;
+    if (step.wide != nullptr) {
+        WideContacts& wide = *step.wide;
+        // The same passes as below; a backward sweep is the levels in reverse.
+        for (int i = 0; i < def.subSteps; ++i) {
+            integrateVelocities(step.sims, step.states, step.gravity, h, def.maxLinearSpeed);
+            bool backward = (i % 2) == 1;
+            warmStartWide(wide, step.states);
+            solveWide(wide, step.states, invH, true, def.contactPushMaxSpeed, backward);
+            integratePositions(step.states, h);
+            for (int r = 0; r <= def.relaxIterations; ++r) {
+                solveWide(wide, step.states, invH, false, def.contactPushMaxSpeed, backward);
+            }
+        }
+        storeWide(wide, step.constraints, step.levelOrder, step.levelStart);
+        applyRestitution(step.constraints, step.states, def.restitutionThreshold, h);
+        return;
+    }
     for (int i = 0; i < def.subSteps; ++i) {
         integrateVelocities(step.sims, step.states, step.gravity, h, def.maxLinearSpeed);
         // Gauss-Seidel's order biases the result, so every group of four sub-steps runs all

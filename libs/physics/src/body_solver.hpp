@@ -4,6 +4,7 @@
 #include <e2d/physics/solver_def.hpp>
 
 #include "contact_solver.hpp"
+#include "contact_solver_wide.hpp"
 #include "solver_body.hpp"
 
 #include <span>
@@ -19,6 +20,13 @@ struct SolverStep {
     Vec2 gravity{0.0f, 0.0f};
     float dt = 0.0f;
     const SolverDef* def = nullptr;
+    // Soft step only, optional: the constraints by level (ConstraintLevels), level k being
+    // levelOrder[levelStart[k] .. levelStart[k + 1]), already packed into `wide`
+    // (prepareWide(), or layoutWide() and packWideLane()); the contact passes then run four
+    // constraints at a time and give what the sweep in constraint order gives.
+    WideContacts* wide = nullptr;
+    std::span<const int> levelOrder{};
+    std::span<const int> levelStart{};
 };
 
 // Gravity, forces and damping over h seconds; speeds clamped to maxLinearSpeed.

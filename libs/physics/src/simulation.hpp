@@ -6,7 +6,9 @@
 #include <e2d/physics/manifold.hpp>
 #include <e2d/physics/solver_def.hpp>
 
+#include "constraint_graph.hpp"
 #include "contact_solver.hpp"
+#include "contact_solver_wide.hpp"
 #include "solver_body.hpp"
 
 #include <cstdint>
@@ -75,7 +77,17 @@ struct Simulation {
     // Per-step scratch, same order: the awake moving bodies and their world slots.
     std::vector<BodySim> sims;
     std::vector<BodyState> states;
-    std::vector<ContactConstraint> constraints;
+    std::vector<ContactConstraint> constraints; // in contact order
+    // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), the
+    // constraints sorted by level (levelOrder, level k in [levelStart[k], levelStart[k + 1]))
+    // and the packed constraints.
+    ConstraintLevels levels;
+    std::vector<int> constraintLevel;
+    std::vector<int> levelOrder;
+    std::vector<int> constraintSlot; // each constraint's place in levelOrder
+    std::vector<int> levelStart;
+    std::vector<int> levelNext;
+    WideContacts wideContacts;
     std::vector<int> islandParent; // union-find over the awake arrays
     std::vector<float> islandSleepTime;
     std::vector<int> wakeStack;

@@ -90,8 +90,6 @@ void World::Impl::solve(float dt) {
                                  : b.angularVelocity;
     }
 
-    // One constraint per touching solid contact with a moving side.
-    s.constraints.clear();
     detail::ContactSoftness softness = detail::makeContactSoftness(def, dt);
     auto viewOf = [&](int bodyIndex) {
         const detail::Body& b = body(bodyIndex);
@@ -109,6 +107,23 @@ void World::Impl::solve(float dt) {
         }
         return v;
     };
+    // One constraint per touching solid contact with a moving side, in contact order. Each
+    // also gets a level (see ConstraintLevels): solving level by level is the same sweep as
+    // solving in contact order, but the constraints of a level share no moving body, so the
+    // wide solver takes four at a time.
+    s.constraintLevel.clear();
+    s.levels.reset(static_cast<int>(s.sims.size()));
+    auto movingState = [&](int bodyIndex) {
+        int k = body(bodyIndex).motion.solverIndex;
+        if (k == kNullIndex) {
+            return kNullIndex;
+        }
+        const detail::BodySim& bs = s.sims[static_cast<std::size_t>(k)];
+        bool rigid = bs.invMass.x == 0.0f && bs.invMass.y == 0.0f && bs.invInertia == 0.0f;
+        return rigid ? kNullIndex : k;
+    };
+    bool rolling = false;
+    int constraintCount = 0;
     for (std::size_t ci = 0; ci < s.contacts.size(); ++ci) {
         detail::Contact& c = s.contacts[ci];
         c.constraintIndex = kNullIndex;
@@ -119,12 +134,45 @@ void World::Impl::solve(float dt) {
             body(c.bodyB).motion.solverIndex == kNullIndex) {
             continue;
         }
+        rolling = rolling || c.rollingResistance > 0.0f;
+        s.constraintLevel.push_back(s.levels.assign(movingState(c.bodyA), movingState(c.bodyB)));
+        c.constraintIndex = constraintCount++;
+    }
+
+    // Rolling resistance is scalar only (and solved in contact order, the same sweep).
+    const bool wide = def.mode == SolverMode::SoftStep && !rolling;
+    if (wide) {
+        // The constraints by level (a counting sort, so contact order within a level).
+        const int levelCount = s.levels.levelCount();
+        s.levelStart.assign(static_cast<std::size_t>(levelCount) + 1, 0);
+        for (int k = 0; k < levelCount; ++k) {
+            s.levelStart[static_cast<std::size_t>(k) + 1] =
+                s.levelStart[static_cast<std::size_t>(k)] +
+                s.levels.counts()[static_cast<std::size_t>(k)];
+        }
+        s.levelNext.assign(s.levelStart.begin(), s.levelStart.end() - 1);
+        s.levelOrder.resize(static_cast<std::size_t>(constraintCount));
+        s.constraintSlot.resize(static_cast<std::size_t>(constraintCount));
+        for (std::size_t k = 0; k < s.constraintLevel.size(); ++k) {
+            int slot = s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])]++;
+            s.levelOrder[static_cast<std::size_t>(slot)] = static_cast<int>(k);
+            s.constraintSlot[k] = slot;
+        }
+        detail::layoutWide(s.wideContacts, s.levelStart);
+    }
+
+    s.constraints.resize(static_cast<std::size_t>(constraintCount));
+    for (std::size_t ci = 0; ci < s.contacts.size(); ++ci) {
+        detail::Contact& c = s.contacts[ci];
+        if (c.constraintIndex == kNullIndex) {
+            continue;
+        }
+        const auto k = static_cast<std::size_t>(c.constraintIndex);
+        detail::ContactConstraint& cc = s.constraints[k];
         detail::ContactBodyView a = viewOf(c.bodyA);
         detail::ContactBodyView b = viewOf(c.bodyB);
         bool rigidSide = (a.invMass.x == 0.0f && a.invMass.y == 0.0f && a.invInertia == 0.0f) ||
                          (b.invMass.x == 0.0f && b.invMass.y == 0.0f && b.invInertia == 0.0f);
-        c.constraintIndex = static_cast<int>(s.constraints.size());
-        detail::ContactConstraint& cc = s.constraints.emplace_back();
         detail::prepareContact(cc, c.manifold, a, b,
                                {c.friction, c.restitution, c.rollingResistance},
                                rigidSide ? softness.vsStatic : softness.dynamic);
@@ -135,9 +183,23 @@ void World::Impl::solve(float dt) {
                         v.invMass.y > 0.0f ? scale * gravity.y : 0.0f};
         };
         cc.pressAcceleration = -dot(gravityOf(b, c.bodyB) - gravityOf(a, c.bodyA), cc.normal);
+        if (wide) {
+            // Packed while it is in cache (gathering it later by level is a random read).
+            const auto level = static_cast<std::size_t>(s.constraintLevel[k]);
+            const int at = s.constraintSlot[k] - s.levelStart[level];
+            detail::packWideLane(
+                s.wideContacts.constraints[static_cast<std::size_t>(
+                    s.wideContacts.levelStart[level] + at / detail::kLanes)],
+                at % detail::kLanes, cc);
+        }
     }
 
     detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def};
+    if (wide) {
+        step.wide = &s.wideContacts;
+        step.levelOrder = s.levelOrder;
+        step.levelStart = s.levelStart;
+    }
     if (def.mode == SolverMode::SoftStep) {
         detail::solveSoftStep(step);
     } else {

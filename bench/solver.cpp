@@ -1,0 +1,240 @@
+// SPDX-License-Identifier: MIT
+// Whole steps: e2d (soft step, 4 sub-steps) and Box2D 2.4 (8 velocity, 3 position iterations)
+// on the same scenes, built from one SceneDesc, in one binary. Sleeping is off in both, so a
+// settled pile costs what a moving one does. Each benchmark iteration is one 60 Hz step of a
+// world that was built and settled once before timing (and keeps running across Google
+// Benchmark's calibration runs). Reported: ms per step and the ratio e2d / Box2D; then, for the
+// large pyramid, how far its top box drifted sideways and sagged after standing for 10 s.
+//
+// Extra flags (taken out before Google Benchmark parses the rest):
+//   --e2d_settle=N  steps run before timing each scene (default 120, 2 s)
+//   --e2d_stand=N   steps of the standing check (default 600, 10 s)
+//   --e2d_table=F   the Markdown table goes to F as well
+#include "ratio_reporter.hpp"
+
+#include <e2d/physics/world.hpp>
+#include <e2d/scenes/box2d_builder.hpp>
+#include <e2d/scenes/e2d_builder.hpp>
+#include <e2d/scenes/scene.hpp>
+
+#include <box2d/box2d.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace ph = e2d::physics;
+namespace sc = e2d::scenes;
+
+struct Options {
+    int settleSteps = 120;
+    int standSteps = 600;
+};
+
+// Pulls `--name=N` out of argv; returns whether it was there.
+bool takeIntFlag(int& argc, char** argv, const char* name, int& value) {
+    const std::string prefix = std::string("--") + name + "=";
+    bool found = false;
+    int kept = 0;
+    for (int i = 0; i < argc; ++i) {
+        if (std::strncmp(argv[i], prefix.c_str(), prefix.size()) == 0) {
+            value = std::atoi(argv[i] + prefix.size());
+            found = true;
+        } else {
+            argv[kept++] = argv[i];
+        }
+    }
+    argc = kept;
+    return found;
+}
+
+ph::WorldDef e2dDef() {
+    ph::WorldDef def;
+    def.solver.mode = ph::SolverMode::SoftStep;
+    def.solver.subSteps = 4;
+    def.solver.enableSleep = false;
+    return def;
+}
+
+sc::Box2DSettings box2dSettings() {
+    sc::Box2DSettings settings;
+    settings.velocityIterations = 8;
+    settings.positionIterations = 3;
+    settings.allowSleeping = false;
+    return settings;
+}
+
+struct Case {
+    std::string name;
+    sc::SceneDesc scene;
+};
+
+std::vector<Case> makeCases() {
+    std::vector<Case> cases;
+    for (int base : {10, 20, 40, 80, 100}) {
+        cases.push_back({"pyramid_" + std::to_string(base), sc::pyramid(base)});
+    }
+    cases.push_back({"many_pyramids_20x20_10", sc::manyPyramids(20, 20, 10)});
+    cases.push_back({"vertical_stack_20", sc::verticalStack(20)});
+    cases.push_back({"falling_circles_1000", sc::fallingCircles(1000)});
+    return cases;
+}
+
+// Worlds are built and settled on first use and then kept: Google Benchmark calls a benchmark
+// several times while it calibrates the iteration count, and settling many_pyramids again each
+// time would cost more than the measurement.
+struct Worlds {
+    Options options;
+    std::map<std::string, std::unique_ptr<sc::E2dScene>> e2d;
+    std::map<std::string, std::unique_ptr<sc::Box2DScene>> box2d;
+};
+
+Worlds& worlds() {
+    static Worlds all;
+    return all;
+}
+
+void stepE2d(benchmark::State& state, const Case* c) {
+    Worlds& w = worlds();
+    auto& slot = w.e2d[c->name];
+    if (!slot) {
+        slot = std::make_unique<sc::E2dScene>(sc::buildE2d(c->scene, e2dDef()));
+        for (int i = 0; i < w.options.settleSteps; ++i) {
+            slot->step();
+        }
+    }
+    sc::E2dScene& scene = *slot;
+    for (auto _ : state) {
+        scene.step();
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["bodies"] = static_cast<double>(c->scene.bodies.size());
+    state.counters["contacts"] = static_cast<double>(scene.world.contactCount());
+}
+
+void stepBox2D(benchmark::State& state, const Case* c) {
+    Worlds& w = worlds();
+    auto& slot = w.box2d[c->name];
+    if (!slot) {
+        slot = std::make_unique<sc::Box2DScene>(sc::buildBox2D(c->scene, box2dSettings()));
+        for (int i = 0; i < w.options.settleSteps; ++i) {
+            slot->step(c->scene.timeStep);
+        }
+    }
+    sc::Box2DScene& scene = *slot;
+    for (auto _ : state) {
+        scene.step(c->scene.timeStep);
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["bodies"] = static_cast<double>(c->scene.bodies.size());
+    state.counters["contacts"] = static_cast<double>(scene.world->GetContactCount());
+}
+
+// Where the top box of a pyramid ends after standing: sideways drift and sag from where it
+// started, metres, and whether every body stayed finite.
+struct Standing {
+    float drift = 0.0f;
+    float sag = 0.0f;
+    bool finite = true;
+};
+
+std::size_t topIndex(const sc::SceneDesc& scene) {
+    for (std::size_t i = scene.bodies.size(); i-- > 0;) {
+        if (scene.bodies[i].tag == "top") {
+            return i;
+        }
+    }
+    return scene.bodies.size() - 1;
+}
+
+Standing standE2d(const sc::SceneDesc& desc, int steps) {
+    sc::E2dScene scene = sc::buildE2d(desc, e2dDef());
+    const std::size_t top = topIndex(desc);
+    const ph::Vec2 start = scene.world.transform(scene.bodies[top]).p;
+    for (int i = 0; i < steps; ++i) {
+        scene.step();
+    }
+    const ph::Vec2 end = scene.world.transform(scene.bodies[top]).p;
+    Standing out{std::abs(end.x - start.x), start.y - end.y, true};
+    for (ph::BodyId id : scene.bodies) {
+        const ph::Vec2 p = scene.world.transform(id).p;
+        out.finite = out.finite && std::isfinite(p.x) && std::isfinite(p.y);
+    }
+    return out;
+}
+
+Standing standBox2D(const sc::SceneDesc& desc, int steps) {
+    sc::Box2DScene scene = sc::buildBox2D(desc, box2dSettings());
+    const b2Body* top = scene.bodies[topIndex(desc)];
+    const b2Vec2 start = top->GetPosition();
+    for (int i = 0; i < steps; ++i) {
+        scene.step(desc.timeStep);
+    }
+    const b2Vec2 end = top->GetPosition();
+    Standing out{std::abs(end.x - start.x), start.y - end.y, true};
+    for (const b2Body* b : scene.bodies) {
+        out.finite = out.finite && b->GetPosition().IsValid();
+    }
+    return out;
+}
+
+// The bar for e2d: drift < 0.1 m and sag < 0.75 m after 10 s. Checked only for runs
+// that long: while the pile is still being compressed (the first second or so) the top box of
+// both engines sags further and then comes back.
+constexpr float kMaxDrift = 0.1f;
+constexpr float kMaxSag = 0.75f;
+constexpr int kStandCheckSteps = 600;
+
+std::string standingReport(int steps, bool& e2dStands) {
+    const sc::SceneDesc desc = sc::pyramid(100);
+    const Standing e2d = standE2d(desc, steps);
+    const Standing box2d = standBox2D(desc, steps);
+    e2dStands = e2d.finite && (steps < kStandCheckSteps || (e2d.drift < kMaxDrift && e2d.sag < kMaxSag));
+    char buf[512];
+    std::snprintf(buf, sizeof buf,
+                  "\nLarge pyramid (base 100) after %d steps (%.1f s), top box, metres:\n\n"
+                  "| engine | sideways drift | sag |\n|---|---:|---:|\n"
+                  "| e2d | %.4f | %.4f |\n| box2d | %.4f | %.4f |\n",
+                  steps, static_cast<double>(steps) * static_cast<double>(desc.timeStep),
+                  static_cast<double>(e2d.drift), static_cast<double>(e2d.sag),
+                  static_cast<double>(box2d.drift), static_cast<double>(box2d.sag));
+    return buf;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    Options& options = worlds().options;
+    takeIntFlag(argc, argv, "e2d_settle", options.settleSteps);
+    takeIntFlag(argc, argv, "e2d_stand", options.standSteps);
+
+    bool e2dStands = true;
+    const std::string appendix = standingReport(options.standSteps, e2dStands);
+    std::printf("%s\n", appendix.c_str());
+
+    static const std::vector<Case> cases = makeCases();
+    for (const Case& c : cases) {
+        benchmark::RegisterBenchmark(("step/" + c.name + "/box2d").c_str(), stepBox2D, &c)
+            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("step/" + c.name + "/e2d").c_str(), stepE2d, &c)
+            ->Unit(benchmark::kMillisecond);
+    }
+    const int status =
+        e2d::bench::runWithRatios(argc, argv, "box2d", {"e2d", "box2d"}, "ms per step", 1e6,
+                                  appendix);
+    if (status == 0 && !e2dStands) {
+        std::fprintf(stderr, "e2d's large pyramid did not stand: drift >= %.2f m or sag >= %.2f m\n",
+                     static_cast<double>(kMaxDrift), static_cast<double>(kMaxSag));
+        return 1;
+    }
+    return status;
+}
