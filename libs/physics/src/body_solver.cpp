@@ -72,15 +72,18 @@ void solveSoftStep(const SolverStep& step) {
     float invH = 1.0f / h;
     if (step.wide != nullptr) {
         WideContacts& wide = *step.wide;
-        // The same passes as below; a backward sweep is the levels in reverse.
+        // The same passes and orders as below; a backward sweep is the levels in reverse.
         for (int i = 0; i < def.subSteps; ++i) {
             integrateVelocities(step.sims, step.states, step.gravity, h, def.maxLinearSpeed);
             bool backward = (i % 2) == 1;
+            bool reversePoints = ((i / 2) % 2) == 1;
             warmStartWide(wide, step.states);
-            solveWide(wide, step.states, invH, true, def.contactPushMaxSpeed, backward);
+            solveWide(wide, step.states, invH, true, def.contactPushMaxSpeed, backward,
+                      reversePoints);
             integratePositions(step.states, h);
             for (int r = 0; r <= def.relaxIterations; ++r) {
-                solveWide(wide, step.states, invH, false, def.contactPushMaxSpeed, backward);
+                solveWide(wide, step.states, invH, false, def.contactPushMaxSpeed, backward,
+                          reversePoints);
             }
         }
         storeWide(wide, step.constraints, step.levelOrder, step.levelStart);

@@ -109,6 +109,7 @@ void warmStartOne(const WideConstraint& c, std::span<BodyState> states) {
     scatterVelocities(b, c.indexB, states);
 }
 
+template <bool kReversePoints>
 void solveOne(WideConstraint& c, std::span<BodyState> states, float invH, bool useBias,
               float pushMaxSpeed) {
     const BodyState* sa[kLanes];
@@ -127,7 +128,10 @@ void solveOne(WideConstraint& c, std::span<BodyState> states, float invH, bool u
     const Float4 one = splat(1.0f);
     const Float4 vInvH = splat(invH);
 
-    for (WidePoint& cp : c.points) {
+    // Reversed, a one-point lane meets its empty second point first: zero normal mass, no
+    // impulse, the same result as the scalar pass that skips it.
+    for (int j = 0; j < 2; ++j) {
+        WidePoint& cp = c.points[kReversePoints ? 1 - j : j];
         Float4 prAx = a.qc * cp.anchorAx - a.qs * cp.anchorAy;
         Float4 prAy = a.qs * cp.anchorAx + a.qc * cp.anchorAy;
         Float4 prBx = b.qc * cp.anchorBx - b.qs * cp.anchorBy;
@@ -327,11 +331,14 @@ void warmStartWide(const WideContacts& wide, std::span<BodyState> states) {
     }
 }
 
-void solveWide(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
-               float pushMaxSpeed, bool backward) {
+namespace {
+
+template <bool kReversePoints>
+void solveWideInOrder(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
+                      float pushMaxSpeed, bool backward) {
     if (!backward) {
         for (WideConstraint& c : wide.constraints) {
-            solveOne(c, states, invH, useBias, pushMaxSpeed);
+            solveOne<kReversePoints>(c, states, invH, useBias, pushMaxSpeed);
         }
         return;
     }
@@ -339,9 +346,20 @@ void solveWide(WideContacts& wide, std::span<BodyState> states, float invH, bool
     const std::size_t levelCount = wide.levelStart.empty() ? 0 : wide.levelStart.size() - 1;
     for (std::size_t k = levelCount; k-- > 0;) {
         for (int g = wide.levelStart[k]; g < wide.levelStart[k + 1]; ++g) {
-            solveOne(wide.constraints[static_cast<std::size_t>(g)], states, invH, useBias,
-                     pushMaxSpeed);
+            solveOne<kReversePoints>(wide.constraints[static_cast<std::size_t>(g)], states, invH,
+                                     useBias, pushMaxSpeed);
         }
+    }
+}
+
+} // namespace
+
+void solveWide(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
+               float pushMaxSpeed, bool backward, bool reversePoints) {
+    if (reversePoints) {
+        solveWideInOrder<true>(wide, states, invH, useBias, pushMaxSpeed, backward);
+    } else {
+        solveWideInOrder<false>(wide, states, invH, useBias, pushMaxSpeed, backward);
     }
 }
 

@@ -67,9 +67,9 @@ void storeWide(const WideContacts& wide, std::span<ContactConstraint> constraint
                std::span<const int> levelOrder, std::span<const int> levelStart);
 
 // warmStartContacts() and solveContacts() over every packed constraint, level after level
-// (backward: last level first).
+// (backward: last level first; reversePoints: each constraint's points last to first).
 void warmStartWide(const WideContacts& wide, std::span<BodyState> states);
 void solveWide(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
-               float pushMaxSpeed, bool backward);
+               float pushMaxSpeed, bool backward, bool reversePoints);
 
 } // namespace e2d::physics::detail

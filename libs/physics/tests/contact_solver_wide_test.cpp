@@ -126,11 +126,16 @@ TEST(WideContactSolver, MatchesTheScalarPassesBitForBit) {
         Problem scalar = randomProblem(seed, 40, 150, kH);
         Problem wide = scalar;
 
-        // Reference: warm start, a biased sweep forward and a relax sweep backward, twice.
-        for (int round = 0; round < 2; ++round) {
+        // Reference: warm start, a biased sweep forward and a relax sweep backward, four times,
+        // the last two with each constraint's points in reverse (all four orders the soft step
+        // uses).
+        for (int round = 0; round < 4; ++round) {
+            bool reversePoints = round >= 2;
             warmStartContacts(scalar.constraints, scalar.states);
-            solveContacts(scalar.constraints, scalar.states, 1.0f / kH, true, kPushMaxSpeed, false);
-            solveContacts(scalar.constraints, scalar.states, 1.0f / kH, false, kPushMaxSpeed, true);
+            solveContacts(scalar.constraints, scalar.states, 1.0f / kH, true, kPushMaxSpeed, false,
+                          reversePoints);
+            solveContacts(scalar.constraints, scalar.states, 1.0f / kH, false, kPushMaxSpeed, true,
+                          reversePoints);
         }
 
         // The same by level, four at a time.
@@ -156,10 +161,11 @@ TEST(WideContactSolver, MatchesTheScalarPassesBitForBit) {
         }
         WideContacts packed;
         prepareWide(packed, wide.constraints, order, levelStart);
-        for (int round = 0; round < 2; ++round) {
+        for (int round = 0; round < 4; ++round) {
+            bool reversePoints = round >= 2;
             warmStartWide(packed, wide.states);
-            solveWide(packed, wide.states, 1.0f / kH, true, kPushMaxSpeed, false);
-            solveWide(packed, wide.states, 1.0f / kH, false, kPushMaxSpeed, true);
+            solveWide(packed, wide.states, 1.0f / kH, true, kPushMaxSpeed, false, reversePoints);
+            solveWide(packed, wide.states, 1.0f / kH, false, kPushMaxSpeed, true, reversePoints);
         }
         storeWide(packed, wide.constraints, order, levelStart);
 
