@@ -182,6 +182,32 @@ TEST(WorldStep, NonFiniteBodyBouncingOffANeighbourLeavesItFinite) {
     }
 }
 
+TEST(WorldStep, AbsurdSpinSetOnABodyDoesNotReachItsNeighbour) {
+    // Finite but absurd velocities set by hand on a bouncy ball resting on a box: the contact's
+    // restitution target is computed from them before the integrator caps them; no overflowed
+    // impulse may reach the box underneath.
+    for (SolverMode mode : {SolverMode::SoftStep, SolverMode::Classic}) {
+        for (int which = 0; which < 2; ++which) {
+            WorldDef def;
+            def.solver.mode = mode;
+            World world{def};
+            addGround(world);
+            BodyId below = addBox(world, {0.0f, 0.5f}, 0.5f);
+            BodyId above = addBall(world, {0.0f, 1.25f}, 0.25f, 0.8f);
+            world.step(kStep); // touching, so the next step has a contact between them
+            if (which == 0) {
+                world.setAngularVelocity(above, 3.0e38f);
+            } else {
+                world.setLinearVelocity(above, {3.0e38f, -3.0e38f});
+            }
+            world.step(kStep);
+            EXPECT_TRUE(world.isBodyEnabled(below)) << static_cast<int>(mode) << "/" << which;
+            EXPECT_TRUE(isFinite(world.transform(below).p)) << static_cast<int>(mode) << "/" << which;
+            EXPECT_TRUE(isFinite(world.linearVelocity(below))) << static_cast<int>(mode) << "/" << which;
+        }
+    }
+}
+
 TEST(WorldStep, HugeSpinKeepsAUnitRotation) {
     for (SolverMode mode : {SolverMode::SoftStep, SolverMode::Classic}) {
         WorldDef def;
