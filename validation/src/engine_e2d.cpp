@@ -4,6 +4,7 @@
 #include <e2d/physics/events.hpp>
 #include <e2d/physics/geometry.hpp>
 #include <e2d/physics/world.hpp>
+#include <e2d/scenes/e2d_builder.hpp>
 
 #include <algorithm>
 #include <sstream>
@@ -13,37 +14,6 @@ namespace e2d::validation {
 namespace {
 
 namespace ph = e2d::physics;
-
-ph::ShapeGeometry toGeometry(const scenes::ShapeDesc& s) {
-    switch (s.kind) {
-    case scenes::ShapeKind::Box:
-        if (s.center == glm::vec2{0.0f} && s.angle == 0.0f) {
-            return ph::makeBox(s.halfExtents.x, s.halfExtents.y);
-        }
-        return ph::makeOffsetBox(s.halfExtents.x, s.halfExtents.y, s.center, s.angle);
-    case scenes::ShapeKind::Polygon:
-        return ph::makePolygon(std::span<const ph::Vec2>(s.points.data(), s.points.size()), s.radius);
-    case scenes::ShapeKind::Circle:
-        return ph::Circle{s.center, s.radius};
-    case scenes::ShapeKind::Capsule:
-        return ph::Capsule{s.point1, s.point2, s.radius};
-    case scenes::ShapeKind::Segment:
-        return ph::Segment{s.point1, s.point2};
-    }
-    return ph::Circle{s.center, s.radius};
-}
-
-ph::BodyType toType(scenes::BodyKind kind) {
-    switch (kind) {
-    case scenes::BodyKind::Static:
-        return ph::BodyType::Static;
-    case scenes::BodyKind::Kinematic:
-        return ph::BodyType::Kinematic;
-    case scenes::BodyKind::Dynamic:
-        return ph::BodyType::Dynamic;
-    }
-    return ph::BodyType::Static;
-}
 
 ph::WorldDef worldDef(const scenes::SceneDesc& scene, const EngineConfig& c) {
     ph::WorldDef def;
@@ -65,30 +35,10 @@ ph::WorldDef worldDef(const scenes::SceneDesc& scene, const EngineConfig& c) {
 class E2dEngine final : public Engine {
 public:
     E2dEngine(const scenes::SceneDesc& scene, const EngineConfig& config)
-        : timeStep_(scene.timeStep), world_(worldDef(scene, config)) {
-        bodies_.reserve(scene.bodies.size());
-        for (const scenes::BodyDesc& desc : scene.bodies) {
-            ph::BodyDef def;
-            def.type = toType(desc.kind);
-            def.position = desc.position;
-            def.angle = desc.angle;
-            def.linearVelocity = desc.linearVelocity;
-            def.angularVelocity = desc.angularVelocity;
-            def.fixedRotation = desc.fixedRotation;
-            def.isBullet = desc.bullet;
-            const ph::BodyId body = world_.createBody(def);
-            for (const scenes::ShapeDesc& shape : desc.shapes) {
-                ph::ShapeDef sd;
-                sd.density = shape.density;
-                sd.friction = shape.friction;
-                sd.restitution = shape.restitution;
-                world_.createShape(body, sd, toGeometry(shape));
-            }
-            bodies_.push_back(body);
-        }
-    }
+        : scene_(scenes::buildE2d(scene, worldDef(scene, config))), world_(scene_.world),
+          bodies_(scene_.bodies) {}
 
-    void step() override { world_.step(timeStep_); }
+    void step() override { scene_.step(); }
 
     [[nodiscard]] int bodyCount() const override { return static_cast<int>(bodies_.size()); }
 
@@ -126,9 +76,9 @@ public:
     }
 
 private:
-    float timeStep_;
-    ph::World world_;
-    std::vector<ph::BodyId> bodies_;
+    scenes::E2dScene scene_;
+    ph::World& world_;
+    const std::vector<ph::BodyId>& bodies_;
 };
 
 } // namespace
