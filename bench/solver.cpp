@@ -21,6 +21,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -40,14 +41,22 @@ struct Options {
     int standSteps = 600;
 };
 
-// Pulls `--name=N` out of argv; returns whether it was there.
+// Pulls `--name=N` out of argv; returns whether it was there. N must be a whole number >= 0:
+// anything else ends the program with a message naming the flag and the value.
 bool takeIntFlag(int& argc, char** argv, const char* name, int& value) {
     const std::string prefix = std::string("--") + name + "=";
     bool found = false;
     int kept = 0;
     for (int i = 0; i < argc; ++i) {
         if (std::strncmp(argv[i], prefix.c_str(), prefix.size()) == 0) {
-            value = std::atoi(argv[i] + prefix.size());
+            const char* text = argv[i] + prefix.size();
+            const char* end = text + std::strlen(text);
+            auto [last, error] = std::from_chars(text, end, value);
+            if (error != std::errc{} || last != end || value < 0 || text == end) {
+                std::fprintf(stderr, "e2d_bench_solver: --%s must be a whole number >= 0, got '%s'\n",
+                             name, text);
+                std::exit(2);
+            }
             found = true;
         } else {
             argv[kept++] = argv[i];
