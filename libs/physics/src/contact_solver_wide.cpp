@@ -15,7 +15,6 @@ inline Float4 select(Int4 mask, Float4 a, Float4 b) {
 }
 // std::max and std::min, lane by lane, with their exact semantics (first argument on ties).
 inline Float4 maxOf(Float4 a, Float4 b) { return select(a < b, b, a); }
-inline Float4 minOf(Float4 a, Float4 b) { return select(b < a, b, a); }
 inline Float4 splat(float x) { return Float4{x, x, x, x}; }
 
 // A static side (index -1) reads a resting state and writes nothing.
