@@ -19,8 +19,9 @@ struct ContactConstraintPoint {
     // Separation minus dot(anchorB - anchorA, normal): adding the current anchor offset gives
     // the current separation without running the narrow phase again.
     float baseSeparation = 0.0f;
-    // Normal velocity before the step, replaced by the one at the sub-step where the point
-    // starts to push (the moment of impact): what restitution reflects.
+    // Normal velocity before the step; for a point apart at the start of the step (further
+    // than the slop), replaced by the one at the sub-step where it starts to push (the moment
+    // of impact). What restitution reflects.
     float relativeVelocity = 0.0f;
     float normalImpulse = 0.0f;
     float tangentImpulse = 0.0f;
@@ -30,7 +31,8 @@ struct ContactConstraintPoint {
     float tangentMass = 0.0f;
     // Classic mode: target normal velocity from restitution.
     float velocityBias = 0.0f;
-    // Gap left when the impact was seen (the point still closes it in that sub-step), metres.
+    // Gap left when the impact was seen (the point still closes it in that sub-step), or the
+    // separation at the start of the step for a point touching then, metres.
     float impactGap = 0.0f;
     bool impactSeen = false;
 };
