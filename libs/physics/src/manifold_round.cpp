@@ -73,18 +73,27 @@ Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b, 
     const Vec2 cA = rotate(xfA.q, a.center);
     const Vec2 cB = rotate(xfB.q, b.center) + (xfB.p - xfA.p);
     const Vec2 d = cB - cA;
-    const float limit = a.radius + b.radius + margin;
+    const float radius = a.radius + b.radius;
+    const float limit = radius + margin;
     const float distSq = lengthSquared(d);
     if (distSq > limit * limit) {
         return Manifold{};
     }
     const float dist = std::sqrt(distSq);
-    // Concentric circles have no preferred direction; A's x axis is as good as any.
-    const Vec2 normal = dist > FLT_EPSILON ? d * (1.0f / dist) : rotate(xfA.q, Vec2{1.0f, 0.0f});
-    const Vec2 anchorA = 0.5f * ((cA + a.radius * normal) + (cB - b.radius * normal));
+    // Concentric circles have no preferred direction; A's x axis is as good as any. Spelled
+    // as the rotation's column: rotate(q, {1, 0}) costs multiplications by zero the compiler
+    // may not drop (they could make -0 or NaN).
+    Vec2 normal{xfA.q.c, xfA.q.s};
+    if (dist > FLT_EPSILON) {
+        normal = d * (1.0f / dist);
+    }
+    // Midway between the surfaces: half the separation beyond A's surface. One scale of the
+    // normal instead of moving both surface points.
+    const float separation = dist - radius;
+    const Vec2 anchorA = cA + (a.radius + 0.5f * separation) * normal;
     return Manifold{normal,
-                    {ManifoldPoint{anchorA + xfA.p, anchorA, anchorA + (xfA.p - xfB.p),
-                                   dist - a.radius - b.radius, 0.0f, 0.0f, 0, false},
+                    {ManifoldPoint{anchorA + xfA.p, anchorA, anchorA + (xfA.p - xfB.p), separation,
+                                   0.0f, 0.0f, 0, false},
                      ManifoldPoint{}},
                     1};
 }
