@@ -85,7 +85,9 @@ Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b, 
     // may not drop (they could make -0 or NaN).
     Vec2 normal{xfA.q.c, xfA.q.s};
     if (dist > FLT_EPSILON) {
-        normal = d * (1.0f / dist);
+        // Two divisions, not a reciprocal and two products: shorter, correctly rounded, and
+        // measured no slower (the divisions are independent).
+        normal = d / dist;
     }
     // Midway between the surfaces: half the separation beyond A's surface. One scale of the
     // normal instead of moving both surface points.
@@ -206,14 +208,14 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
         const float u2 = dot(v2 - c, e);
         if (u1 < 0.0f || u2 < 0.0f) {
             // Vertex region: the distance to the vertex, tested squared so that a pair beyond
-            // the margin costs no square root; one reciprocal instead of a division per axis.
+            // the margin costs no square root.
             const Vec2 w = c - (u1 < 0.0f ? v1 : v2);
             const float distSq = lengthSquared(w);
             if (distSq > limit * limit) {
                 return Manifold{};
             }
             dist = std::sqrt(distSq);
-            n = w * (1.0f / dist);
+            n = w / dist;
         }
     }
     // The closest core point is the centre moved back `dist` along n; midway between the
