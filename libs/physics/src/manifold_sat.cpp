@@ -47,7 +47,9 @@ constexpr float kShiftSquared = 100.0f * 100.0f;
 // The manifold once the axis is known: `edge1` of poly1 (B when `flip`) is the reference face,
 // `incident` the face of poly2 most anti-parallel to it, `separation` the reference face's.
 // Shared by both search paths, so that they can differ only in how they find the axis.
-inline LocalManifold contactOnAxis(const PolygonRef& localA, const PolygonRef& localB,
+// Forced inline: with four callers GCC kept it out of line, and the PolygonRefs and the result
+// went through memory on every touching pair's critical path.
+[[gnu::always_inline]] inline LocalManifold contactOnAxis(const PolygonRef& localA, const PolygonRef& localB,
                                    float margin, bool flip, int edge1, int incident,
                                    float separation) {
     const float radius = localA.radius + localB.radius;
@@ -234,9 +236,10 @@ inline int findIncidentEdge(Vec2 reference, const Lanes<G>& normals) {
     return firstEqual<G>(d, best);
 }
 
-// GA, GB: registers per coordinate for A and B (1 up to 4 vertices, 2 up to 8).
+// GA, GB: registers per coordinate for A and B (1 up to 4 vertices, 2 up to 8). Inlined into
+// collidePolygons so that choosing the instance costs two compares, not a second call.
 template <int GA, int GB>
-Manifold collideLanes(const Polygon& a, const Transform& xfA, const Polygon& b,
+[[gnu::always_inline]] inline Manifold collideLanes(const Polygon& a, const Transform& xfA, const Polygon& b,
                       const Transform& xfB, float margin) {
     const Vec2 origin = a.vertices[0];
     const bool shift = lengthSquared(origin) > kShiftSquared;
