@@ -5,6 +5,16 @@
 #include "shape_detail.hpp"
 
 #include <cfloat>
+#include <cstdint>
+
+// E2D_PHYSICS_SCALAR_ROUND forces the portable face search on SSE2 machines, so that the two
+// paths can be compared (they must return bit-identical manifolds).
+#if defined(__SSE2__) && !defined(E2D_PHYSICS_SCALAR_ROUND)
+#define E2D_ROUND_SSE2 1
+#include <emmintrin.h>
+#else
+#define E2D_ROUND_SSE2 0
+#endif
 
 namespace e2d::physics {
 namespace {
@@ -63,6 +73,73 @@ bool clipToReference(Vec2 p1, Vec2 u, float len, Vec2 normal, Vec2 q1, Vec2 q2, 
     }
     return true;
 }
+
+#if E2D_ROUND_SSE2
+
+struct FaceSeparation {
+    int face;
+    float separation;
+};
+
+// Lanes at or past the count repeat lane 0 of their register (a real face): it ties with that
+// face and loses the tie to its lower index, so the first best face still wins.
+alignas(16) constexpr std::uint32_t kLaneMasks[4][4] = {
+    {0, 0, 0, 0}, {~0u, 0, 0, 0}, {~0u, ~0u, 0, 0}, {~0u, ~0u, ~0u, 0}};
+
+inline __m128 padLanes(__m128 v, int used) {
+    const __m128 keep =
+        _mm_castsi128_ps(_mm_load_si128(reinterpret_cast<const __m128i*>(kLaneMasks[used])));
+    const __m128 first = _mm_castsi128_ps(_mm_shuffle_epi32(_mm_castps_si128(v), 0));
+    return _mm_or_ps(_mm_and_ps(keep, v), _mm_andnot_ps(keep, first));
+}
+
+inline __m128 maxAcrossLanes(__m128 v) {
+    v = _mm_max_ps(_mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1)), v);
+    return _mm_max_ps(_mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 0, 3, 2)), v);
+}
+
+// max_i dot(n_i, c - v_i) over the polygon's faces, four faces per register (G registers: 1 up
+// to 4 faces, 2 up to 8), and the first face reaching it. Each lane does the scalar loop's
+// subtractions, products and sum (no FMA), so the face and the value are bit-identical to it.
+template <int G>
+inline FaceSeparation maxFaceSeparation(const Polygon& a, Vec2 c) {
+    const __m128 cx = _mm_set1_ps(c.x);
+    const __m128 cy = _mm_set1_ps(c.y);
+    const float* v = &a.vertices[0].x;
+    const float* n = &a.normals[0].x;
+    __m128 s[G];
+    for (int g = 0; g < G; ++g) {
+        const __m128 vlo = _mm_loadu_ps(v + 8 * g);     // x0 y0 x1 y1
+        const __m128 vhi = _mm_loadu_ps(v + 8 * g + 4); // x2 y2 x3 y3
+        const __m128 nlo = _mm_loadu_ps(n + 8 * g);
+        const __m128 nhi = _mm_loadu_ps(n + 8 * g + 4);
+        const __m128 dx = _mm_sub_ps(cx, _mm_shuffle_ps(vlo, vhi, _MM_SHUFFLE(2, 0, 2, 0)));
+        const __m128 dy = _mm_sub_ps(cy, _mm_shuffle_ps(vlo, vhi, _MM_SHUFFLE(3, 1, 3, 1)));
+        const __m128 nx = _mm_shuffle_ps(nlo, nhi, _MM_SHUFFLE(2, 0, 2, 0));
+        const __m128 ny = _mm_shuffle_ps(nlo, nhi, _MM_SHUFFLE(3, 1, 3, 1));
+        s[g] = _mm_add_ps(_mm_mul_ps(nx, dx), _mm_mul_ps(ny, dy));
+    }
+    // Padding the separations, not the inputs: one register instead of four.
+    const int used = a.count - 4 * (G - 1);
+    if (used < 4) {
+        s[G - 1] = padLanes(s[G - 1], used);
+    }
+    // maxps returns its second operand on ties, so the lower faces go second: lane 0 ends with
+    // the value of the first best face (the scalar loop's, down to the sign of a zero), and
+    // every lane with the maximum.
+    __m128 best = maxAcrossLanes(s[0]);
+    if constexpr (G == 2) {
+        best = _mm_max_ps(maxAcrossLanes(s[1]), best);
+    }
+    int mask = _mm_movemask_ps(_mm_cmpeq_ps(s[0], best));
+    if constexpr (G == 2) {
+        mask |= _mm_movemask_ps(_mm_cmpeq_ps(s[1], best)) << 4;
+    }
+    // A NaN (invalid shapes only) matches no lane: face 0, as the scalar loop.
+    return {__builtin_ctz(static_cast<unsigned>(mask) | 0x100u) & 7, _mm_cvtss_f32(best)};
+}
+
+#endif
 
 } // namespace
 
@@ -186,6 +263,11 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
     // The face that separates the centre the most; the closest feature is that face or one of
     // its two vertices.
     // Kept by selects, not a branch: which face wins is random from pair to pair.
+#if E2D_ROUND_SSE2
+    const FaceSeparation best = a.count > 4 ? maxFaceSeparation<2>(a, c) : maxFaceSeparation<1>(a, c);
+    const int face = best.face;
+    const float separation = best.separation;
+#else
     int face = 0;
     float separation = -FLT_MAX;
     for (int i = 0; i < a.count; ++i) {
@@ -194,6 +276,7 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
         face = better ? i : face;
         separation = better ? s : separation;
     }
+#endif
     if (separation > limit) {
         return Manifold{};
     }
