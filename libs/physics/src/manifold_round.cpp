@@ -5,7 +5,9 @@
 #include "shape_detail.hpp"
 
 #include <cfloat>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 // E2D_PHYSICS_SCALAR_ROUND forces the portable face search on SSE2 machines, so that the two
 // paths can be compared (they must return bit-identical manifolds).
@@ -24,6 +26,24 @@ constexpr int kCapsuleSide = 2;
 // Closest points offset along a capsule's axis by no more than this (metres) make a side
 // contact with up to two points, for the reason given at detail::kFaceOffset.
 constexpr float kCapsuleFaceOffset = detail::kFaceOffset;
+
+// The one-point result of the circle routines, id 0. Everything after the first point's
+// separation is zero (impulses, id, flag, the whole second point); cleared as one block,
+// padding included, it is four stores instead of one per field.
+inline Manifold onePoint(Vec2 normal, Vec2 point, Vec2 anchorA, Vec2 anchorB, float separation) {
+    Manifold m;
+    constexpr std::size_t zeroFrom =
+        offsetof(Manifold, points) + offsetof(ManifoldPoint, normalImpulse);
+    std::memset(reinterpret_cast<unsigned char*>(&m) + zeroFrom, 0,
+                offsetof(Manifold, pointCount) - zeroFrom);
+    m.normal = normal;
+    m.points[0].point = point;
+    m.points[0].anchorA = anchorA;
+    m.points[0].anchorB = anchorB;
+    m.points[0].separation = separation;
+    m.pointCount = 1;
+    return m;
+}
 
 // One point between two round features: cores at pA and pB (A's frame) `distance` apart along
 // unit `normal`, radii rA and rB.
@@ -170,11 +190,7 @@ Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b, 
     // normal instead of moving both surface points.
     const float separation = dist - radius;
     const Vec2 anchorA = cA + (a.radius + 0.5f * separation) * normal;
-    return Manifold{normal,
-                    {ManifoldPoint{anchorA + xfA.p, anchorA, anchorA + (xfA.p - xfB.p), separation,
-                                   0.0f, 0.0f, 0, false},
-                     ManifoldPoint{}},
-                    1};
+    return onePoint(normal, anchorA + xfA.p, anchorA, anchorA + (xfA.p - xfB.p), separation);
 }
 
 Manifold collideCapsuleAndCircle(const Capsule& a, const Transform& xfA, const Circle& b,
@@ -306,11 +322,7 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
     const Vec2 normal = rotate(xfA.q, n);
     const float pointSeparation = dist - radius;
     const Vec2 anchorA = cW - (b.radius + 0.5f * pointSeparation) * normal;
-    return Manifold{normal,
-                    {ManifoldPoint{anchorA + xfA.p, anchorA, anchorA + (xfA.p - xfB.p),
-                                   pointSeparation, 0.0f, 0.0f, 0, false},
-                     ManifoldPoint{}},
-                    1};
+    return onePoint(normal, anchorA + xfA.p, anchorA, anchorA + (xfA.p - xfB.p), pointSeparation);
 }
 
 Manifold collidePolygonAndCapsule(const Polygon& a, const Transform& xfA, const Capsule& b,
