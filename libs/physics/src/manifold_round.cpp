@@ -122,9 +122,7 @@ inline __m128 maxAcrossLanes(__m128 v) {
 // to 4 faces, 2 up to 8), and the first face reaching it. Each lane does the scalar loop's
 // subtractions, products and sum (no FMA), so the face and the value are bit-identical to it.
 template <int G>
-inline FaceSeparation maxFaceSeparation(const Polygon& a, Vec2 c) {
-    const __m128 cx = _mm_set1_ps(c.x);
-    const __m128 cy = _mm_set1_ps(c.y);
+inline FaceSeparation maxFaceSeparation(const Polygon& a, __m128 cx, __m128 cy) {
     const float* v = &a.vertices[0].x;
     const float* n = &a.normals[0].x;
     __m128 s[G];
@@ -280,7 +278,10 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
     // its two vertices.
     // Kept by selects, not a branch: which face wins is random from pair to pair.
 #if E2D_ROUND_SSE2
-    const FaceSeparation best = a.count > 4 ? maxFaceSeparation<2>(a, c) : maxFaceSeparation<1>(a, c);
+    const __m128 cx = _mm_set1_ps(c.x);
+    const __m128 cy = _mm_set1_ps(c.y);
+    const FaceSeparation best =
+        a.count > 4 ? maxFaceSeparation<2>(a, cx, cy) : maxFaceSeparation<1>(a, cx, cy);
     const int face = best.face;
     const float separation = best.separation;
 #else
@@ -300,8 +301,30 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
     Vec2 n = a.normals[face];
     float dist = separation;
     if (separation > FLT_EPSILON) {
+        const int next = face + 1 < a.count ? face + 1 : 0;
+#if E2D_ROUND_SSE2
+        // Both vertices in one register: lanes c - v1 | c - v2, each dotted with e = v2 - v1
+        // (the scalar path's products and sum). dot(c - v2, e) is exactly -dot(v2 - c, e) (up
+        // to the sign of a zero, which no comparison with 0 sees), so the tests match it.
+        const __m128 v12 = _mm_loadh_pi(
+            _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&a.vertices[face].x))),
+            reinterpret_cast<const __m64*>(&a.vertices[next].x));
+        const __m128 d = _mm_sub_ps(_mm_unpacklo_ps(cx, cy), v12);
+        const __m128 e = _mm_sub_ps(_mm_movehl_ps(v12, v12), v12);
+        const __m128 p = _mm_mul_ps(d, _mm_movelh_ps(e, e));
+        const __m128 u = _mm_add_ps(p, _mm_shuffle_ps(p, p, _MM_SHUFFLE(2, 3, 0, 1)));
+        // Lane 2 negated: both lanes then read "< 0: beyond this vertex".
+        const int beyond = _mm_movemask_ps(_mm_cmplt_ps(
+                               _mm_xor_ps(u, _mm_setr_ps(0.0f, 0.0f, -0.0f, 0.0f)),
+                               _mm_setzero_ps())) & 5;
+        if (beyond != 0) {
+            // Vertex region: the distance to the vertex, tested squared so that a pair beyond
+            // the margin costs no square root.
+            const __m128 wv = (beyond & 1) != 0 ? d : _mm_movehl_ps(d, d);
+            const Vec2 w{_mm_cvtss_f32(wv), _mm_cvtss_f32(_mm_shuffle_ps(wv, wv, 1))};
+#else
         const Vec2 v1 = a.vertices[face];
-        const Vec2 v2 = a.vertices[face + 1 < a.count ? face + 1 : 0];
+        const Vec2 v2 = a.vertices[next];
         const Vec2 e = v2 - v1;
         const float u1 = dot(c - v1, e);
         const float u2 = dot(v2 - c, e);
@@ -309,6 +332,7 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
             // Vertex region: the distance to the vertex, tested squared so that a pair beyond
             // the margin costs no square root.
             const Vec2 w = c - (u1 < 0.0f ? v1 : v2);
+#endif
             const float distSq = lengthSquared(w);
             if (distSq > limit * limit) {
                 return Manifold{};
