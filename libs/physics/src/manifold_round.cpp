@@ -306,8 +306,10 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
         // Both vertices in one register: lanes c - v1 | c - v2, each dotted with e = v2 - v1
         // (the scalar path's products and sum). dot(c - v2, e) is exactly -dot(v2 - c, e) (up
         // to the sign of a zero, which no comparison with 0 sees), so the tests match it.
+        // Vec2 is only 4-byte aligned: _mm_loadl_epi64 reads through an unaligned type.
         const __m128 v12 = _mm_loadh_pi(
-            _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&a.vertices[face].x))),
+            _mm_castsi128_ps(
+                _mm_loadl_epi64(reinterpret_cast<const __m128i*>(&a.vertices[face].x))),
             reinterpret_cast<const __m64*>(&a.vertices[next].x));
         const __m128 d = _mm_sub_ps(_mm_unpacklo_ps(cx, cy), v12);
         const __m128 e = _mm_sub_ps(_mm_movehl_ps(v12, v12), v12);
