@@ -101,6 +101,11 @@ struct FaceSeparation {
     float separation;
 };
 
+template <int L>
+inline __m128 splatLane(__m128 v) {
+    return _mm_castsi128_ps(_mm_shuffle_epi32(_mm_castps_si128(v), L * 0x55));
+}
+
 // Lanes at or past the count repeat lane 0 of their register (a real face): it ties with that
 // face and loses the tie to its lower index, so the first best face still wins.
 alignas(16) constexpr std::uint32_t kLaneMasks[4][4] = {
@@ -109,8 +114,7 @@ alignas(16) constexpr std::uint32_t kLaneMasks[4][4] = {
 inline __m128 padLanes(__m128 v, int used) {
     const __m128 keep =
         _mm_castsi128_ps(_mm_load_si128(reinterpret_cast<const __m128i*>(kLaneMasks[used])));
-    const __m128 first = _mm_castsi128_ps(_mm_shuffle_epi32(_mm_castps_si128(v), 0));
-    return _mm_or_ps(_mm_and_ps(keep, v), _mm_andnot_ps(keep, first));
+    return _mm_or_ps(_mm_and_ps(keep, v), _mm_andnot_ps(keep, splatLane<0>(v)));
 }
 
 inline __m128 maxAcrossLanes(__m128 v) {
@@ -269,8 +273,30 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
     // Only the centre moves to A's frame: cheaper than composing the two transforms first.
     // Kept relative to A's origin along world axes too (cW): the contact point is found from it
     // in world axes directly, so no local point has to be rotated back.
+#if E2D_ROUND_SSE2
+    // rotate() and invRotate() two lanes at a time, with their products and sums (a - b as
+    // a + -b, which is exact), so cW and c are bit-identical to the scalar path's.
+    const __m128 tA = _mm_loadu_ps(&xfA.p.x); // pA.x pA.y cA sA
+    const __m128 tB = _mm_loadu_ps(&xfB.p.x);
+    const __m128 centre =
+        _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&b.center.x)));
+    const __m128 negX = _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f);
+    const __m128 negY = _mm_setr_ps(0.0f, -0.0f, 0.0f, -0.0f);
+    const __m128 cWv = _mm_add_ps(
+        _mm_add_ps(_mm_mul_ps(_mm_shuffle_ps(tB, tB, _MM_SHUFFLE(3, 2, 3, 2)), splatLane<0>(centre)),
+                   _mm_xor_ps(_mm_mul_ps(_mm_shuffle_ps(tB, tB, _MM_SHUFFLE(2, 3, 2, 3)),
+                                         splatLane<1>(centre)),
+                              negX)),
+        _mm_sub_ps(tB, tA));
+    const __m128 cv = _mm_add_ps(
+        _mm_xor_ps(_mm_mul_ps(_mm_shuffle_ps(tA, tA, _MM_SHUFFLE(3, 2, 3, 2)), splatLane<0>(cWv)),
+                   negY),
+        _mm_mul_ps(_mm_shuffle_ps(tA, tA, _MM_SHUFFLE(2, 3, 2, 3)), splatLane<1>(cWv)));
+    const Vec2 cW{_mm_cvtss_f32(cWv), _mm_cvtss_f32(splatLane<1>(cWv))};
+#else
     const Vec2 cW = rotate(xfB.q, b.center) + (xfB.p - xfA.p);
     const Vec2 c = invRotate(xfA.q, cW);
+#endif
     const float radius = a.radius + b.radius;
     const float limit = radius + margin;
 
@@ -278,8 +304,8 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
     // its two vertices.
     // Kept by selects, not a branch: which face wins is random from pair to pair.
 #if E2D_ROUND_SSE2
-    const __m128 cx = _mm_set1_ps(c.x);
-    const __m128 cy = _mm_set1_ps(c.y);
+    const __m128 cx = splatLane<0>(cv);
+    const __m128 cy = splatLane<1>(cv);
     const FaceSeparation best =
         a.count > 4 ? maxFaceSeparation<2>(a, cx, cy) : maxFaceSeparation<1>(a, cx, cy);
     const int face = best.face;
