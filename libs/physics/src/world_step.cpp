@@ -158,7 +158,7 @@ void World::Impl::solve(float dt) {
             s.levelOrder[static_cast<std::size_t>(slot)] = static_cast<int>(k);
             s.constraintSlot[k] = slot;
         }
-        detail::layoutWide(s.wideContacts, s.levelStart);
+        detail::layoutWide(s.wideContacts, s.levelStart, detail::bestWideLanes());
     }
 
     s.constraints.resize(static_cast<std::size_t>(constraintCount));
@@ -185,12 +185,9 @@ void World::Impl::solve(float dt) {
         cc.pressAcceleration = -dot(gravityOf(b, c.bodyB) - gravityOf(a, c.bodyA), cc.normal);
         if (wide) {
             // Packed while it is in cache (gathering it later by level is a random read).
-            const auto level = static_cast<std::size_t>(s.constraintLevel[k]);
-            const int at = s.constraintSlot[k] - s.levelStart[level];
-            detail::packWideLane(
-                s.wideContacts.constraints[static_cast<std::size_t>(
-                    s.wideContacts.levelStart[level] + at / detail::kLanes)],
-                at % detail::kLanes, cc);
+            const int level = s.constraintLevel[k];
+            detail::packWideLane(s.wideContacts, level,
+                                 s.constraintSlot[k] - s.levelStart[static_cast<std::size_t>(level)], cc);
         }
     }
 
