@@ -86,8 +86,7 @@ void solveSoftStep(const SolverStep& step) {
                           reversePoints);
             }
         }
-        storeWide(wide, step.constraints, step.levelOrder, step.levelStart);
-        applyRestitution(step.constraints, step.states, def.restitutionThreshold, h);
+        applyRestitutionWide(wide, step.restitution, step.states, def.restitutionThreshold, h);
         return;
     }
     for (int i = 0; i < def.subSteps; ++i) {

@@ -20,13 +20,13 @@ struct SolverStep {
     Vec2 gravity{0.0f, 0.0f};
     float dt = 0.0f;
     const SolverDef* def = nullptr;
-    // Soft step only, optional: the constraints by level (ConstraintLevels), level k being
-    // levelOrder[levelStart[k] .. levelStart[k + 1]), already packed into `wide`
-    // (prepareWide(), or layoutWide() and packWideLane()); the contact passes then run four
-    // constraints at a time and give what the sweep in constraint order gives.
+    // Soft step only, optional: the constraints by level (ConstraintLevels), already packed
+    // into `wide` (prepareWide(), or layoutWide() and packWideLane()); the contact passes then
+    // run several constraints at a time and give what the sweep in constraint order gives.
     WideContacts* wide = nullptr;
-    std::span<const int> levelOrder{};
-    std::span<const int> levelStart{};
+    // With `wide`: the constraints with restitution, in constraint order. The impulses stay in
+    // `wide` (constraints is not used).
+    std::span<const WideRestitution> restitution{};
 };
 
 // Gravity, forces and damping over h seconds; speeds clamped to maxLinearSpeed.

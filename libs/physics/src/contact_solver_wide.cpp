@@ -252,7 +252,64 @@ void storeLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const i
     }
 }
 
+template <int N>
+void unpackLane(const WideConstraintT<N>& w, int lane, ContactConstraint& c) {
+    c.indexA = w.indexA[lane];
+    c.indexB = w.indexB[lane];
+    c.normal = {w.normalX[lane], w.normalY[lane]};
+    c.invMassA = {w.invMassAx[lane], w.invMassAy[lane]};
+    c.invMassB = {w.invMassBx[lane], w.invMassBy[lane]};
+    c.invInertiaA = w.invInertiaA[lane];
+    c.invInertiaB = w.invInertiaB[lane];
+    for (int i = 0; i < 2; ++i) {
+        const WidePointT<N>& wp = w.points[i];
+        ContactConstraintPoint& cp = c.points[i];
+        cp.anchorA = {wp.anchorAx[lane], wp.anchorAy[lane]};
+        cp.anchorB = {wp.anchorBx[lane], wp.anchorBy[lane]};
+        cp.baseSeparation = wp.baseSeparation[lane];
+        cp.relativeVelocity = wp.relativeVelocity[lane];
+        cp.normalImpulse = wp.normalImpulse[lane];
+        cp.tangentImpulse = wp.tangentImpulse[lane];
+        cp.maxNormalImpulse = wp.maxNormalImpulse[lane];
+        cp.normalMass = wp.normalMass[lane];
+        cp.tangentMass = wp.tangentMass[lane];
+        cp.impactGap = wp.impactGap[lane];
+        cp.impactSeen = wp.impactSeen[lane] != 0;
+    }
+}
+
+template <int N>
+void restituteLanes(std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
+                    std::span<const WideRestitution> list, std::span<BodyState> states,
+                    float threshold, float h) {
+    for (const WideRestitution& r : list) {
+        WideConstraintT<N>& w =
+            groups[static_cast<std::size_t>(wideStart[static_cast<std::size_t>(r.level)] + r.at / N)];
+        const int lane = r.at % N;
+        // The scalar pass on a copy of the lane, so both paths run the same code.
+        ContactConstraint c;
+        unpackLane(w, lane, c);
+        c.pointCount = r.pointCount;
+        c.restitution = r.restitution;
+        c.pressAcceleration = r.pressAcceleration;
+        applyRestitution(std::span<ContactConstraint>(&c, 1), states, threshold, h);
+        for (int i = 0; i < r.pointCount; ++i) {
+            w.points[i].normalImpulse[lane] = c.points[i].normalImpulse;
+            w.points[i].maxNormalImpulse[lane] = c.points[i].maxNormalImpulse;
+        }
+    }
+}
+
 } // namespace
+
+void applyRestitutionWide(WideContacts& wide, std::span<const WideRestitution> list,
+                          std::span<BodyState> states, float threshold, float h) {
+    if (wide.lanes == 8) {
+        restituteLanes(wide.constraints8, wide.levelStart, list, states, threshold, h);
+    } else {
+        restituteLanes(wide.constraints4, wide.levelStart, list, states, threshold, h);
+    }
+}
 
 int bestWideLanes() {
 #if defined(E2D_HAS_WIDE8)

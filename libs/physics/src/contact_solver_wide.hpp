@@ -101,10 +101,75 @@ void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constrai
 void storeWide(const WideContacts& wide, std::span<ContactConstraint> constraints,
                std::span<const int> levelOrder, std::span<const int> levelStart);
 
+// A packed constraint with restitution, in the order applyRestitution() visits them (constraint
+// order): where it sits (the `at`-th of level `level`) and what the lanes do not keep.
+struct WideRestitution {
+    int level = 0;
+    int at = 0;
+    int pointCount = 0;
+    float restitution = 0.0f;
+    float pressAcceleration = 0.0f;
+};
+
+// applyRestitution() on the listed packed constraints, in list order.
+void applyRestitutionWide(WideContacts& wide, std::span<const WideRestitution> list,
+                          std::span<BodyState> states, float threshold, float h);
+
+// What the step leaves in one lane for the world: per point, impulses (for next step's warm
+// start) and the impact bookkeeping (hit events).
+struct WideLaneResult {
+    float normalImpulse[2];
+    float tangentImpulse[2];
+    float relativeVelocity[2];
+    float maxNormalImpulse[2];
+};
+
+// Calls visit(slot, result) for every packed constraint, slot being its place in level order
+// (level k holds slots [levelStart[k], levelStart[k + 1])), in slot order.
+template <class Visit>
+void visitWide(const WideContacts& wide, std::span<const int> levelStart, Visit&& visit);
+
 // warmStartContacts() and solveContacts() over every packed constraint, level after level
 // (backward: last level first; reversePoints: each constraint's points last to first).
 void warmStartWide(const WideContacts& wide, std::span<BodyState> states);
 void solveWide(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
                float pushMaxSpeed, bool backward, bool reversePoints);
+
+namespace wide_detail {
+
+template <int N, class Visit>
+void visitLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
+                std::span<const int> levelStart, Visit& visit) {
+    const std::size_t levelCount = levelStart.empty() ? 0 : levelStart.size() - 1;
+    WideLaneResult r;
+    for (std::size_t k = 0; k < levelCount; ++k) {
+        const int end = levelStart[k + 1];
+        int g = wideStart[k];
+        for (int first = levelStart[k]; first < end; first += N, ++g) {
+            const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
+            for (int lane = 0; lane < N && first + lane < end; ++lane) {
+                for (int i = 0; i < 2; ++i) {
+                    const WidePointT<N>& wp = w.points[i];
+                    r.normalImpulse[i] = wp.normalImpulse[lane];
+                    r.tangentImpulse[i] = wp.tangentImpulse[lane];
+                    r.relativeVelocity[i] = wp.relativeVelocity[lane];
+                    r.maxNormalImpulse[i] = wp.maxNormalImpulse[lane];
+                }
+                visit(first + lane, r);
+            }
+        }
+    }
+}
+
+} // namespace wide_detail
+
+template <class Visit>
+void visitWide(const WideContacts& wide, std::span<const int> levelStart, Visit&& visit) {
+    if (wide.lanes == 8) {
+        wide_detail::visitLanes(wide.constraints8, wide.levelStart, levelStart, visit);
+    } else {
+        wide_detail::visitLanes(wide.constraints4, wide.levelStart, levelStart, visit);
+    }
+}
 
 } // namespace e2d::physics::detail

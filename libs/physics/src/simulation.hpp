@@ -77,14 +77,32 @@ struct Simulation {
     // Per-step scratch, same order: the awake moving bodies and their world slots.
     std::vector<BodySim> sims;
     std::vector<BodyState> states;
+    // The solved contacts, in contact order: contact index and the sides' BodyState indices
+    // (-1: static or asleep).
+    struct ConstraintBodies {
+        int indexA = -1;
+        int indexB = -1;
+    };
+    std::vector<int> constraintContacts;
+    std::vector<ConstraintBodies> constraintBodies;
+    // Classic mode and rolling resistance only: the wide solver packs each constraint as it is
+    // built and keeps it nowhere else.
     std::vector<ContactConstraint> constraints; // in contact order
-    // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), the
-    // constraints sorted by level (levelOrder, level k in [levelStart[k], levelStart[k + 1]))
-    // and the packed constraints.
+    std::vector<int> slotContact;               // contact of each slot in level order
+    std::vector<WideRestitution> wideRestitution;
+    // A hit found while storing impulses by level: contact, point, approach speed.
+    struct HitCandidate {
+        int contact = -1;
+        int point = -1;
+        float speed = 0.0f;
+    };
+    std::vector<HitCandidate> hitCandidates;
+    // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), its
+    // slot in level order (level k holds slots [levelStart[k], levelStart[k + 1]), contact
+    // order within a level) and the packed constraints.
     ConstraintLevels levels;
     std::vector<int> constraintLevel;
-    std::vector<int> levelOrder;
-    std::vector<int> constraintSlot; // each constraint's place in levelOrder
+    std::vector<int> constraintSlot;
     std::vector<int> levelStart;
     std::vector<int> levelNext;
     WideContacts wideContacts;

@@ -45,7 +45,7 @@ void World::step(float timeStep) {
     if (timeStep > 0.0f) {
         w.solve(timeStep);
         s.counters.solverBodies = static_cast<int>(s.sims.size());
-        s.counters.contactConstraints = static_cast<int>(s.constraints.size());
+        s.counters.contactConstraints = static_cast<int>(s.constraintContacts.size());
         w.updateSleep(timeStep);
     }
     s.inStep = false;
@@ -124,18 +124,23 @@ void World::Impl::solve(float dt) {
     };
     bool rolling = false;
     int constraintCount = 0;
+    s.constraintContacts.clear();
+    s.constraintBodies.clear();
     for (std::size_t ci = 0; ci < s.contacts.size(); ++ci) {
         detail::Contact& c = s.contacts[ci];
         c.constraintIndex = kNullIndex;
         if (!c.alive || !c.touching || c.sensor) {
             continue;
         }
-        if (body(c.bodyA).motion.solverIndex == kNullIndex &&
-            body(c.bodyB).motion.solverIndex == kNullIndex) {
+        const int indexA = body(c.bodyA).motion.solverIndex;
+        const int indexB = body(c.bodyB).motion.solverIndex;
+        if (indexA == kNullIndex && indexB == kNullIndex) {
             continue;
         }
         rolling = rolling || c.rollingResistance > 0.0f;
         s.constraintLevel.push_back(s.levels.assign(movingState(c.bodyA), movingState(c.bodyB)));
+        s.constraintContacts.push_back(static_cast<int>(ci));
+        s.constraintBodies.push_back({indexA, indexB});
         c.constraintIndex = constraintCount++;
     }
 
@@ -151,24 +156,15 @@ void World::Impl::solve(float dt) {
                 s.levels.counts()[static_cast<std::size_t>(k)];
         }
         s.levelNext.assign(s.levelStart.begin(), s.levelStart.end() - 1);
-        s.levelOrder.resize(static_cast<std::size_t>(constraintCount));
         s.constraintSlot.resize(static_cast<std::size_t>(constraintCount));
         for (std::size_t k = 0; k < s.constraintLevel.size(); ++k) {
             int slot = s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])]++;
-            s.levelOrder[static_cast<std::size_t>(slot)] = static_cast<int>(k);
             s.constraintSlot[k] = slot;
         }
         detail::layoutWide(s.wideContacts, s.levelStart, detail::bestWideLanes());
     }
 
-    s.constraints.resize(static_cast<std::size_t>(constraintCount));
-    for (std::size_t ci = 0; ci < s.contacts.size(); ++ci) {
-        detail::Contact& c = s.contacts[ci];
-        if (c.constraintIndex == kNullIndex) {
-            continue;
-        }
-        const auto k = static_cast<std::size_t>(c.constraintIndex);
-        detail::ContactConstraint& cc = s.constraints[k];
+    auto build = [&](detail::ContactConstraint& cc, const detail::Contact& c) {
         detail::ContactBodyView a = viewOf(c.bodyA);
         detail::ContactBodyView b = viewOf(c.bodyB);
         bool rigidSide = (a.invMass.x == 0.0f && a.invMass.y == 0.0f && a.invInertia == 0.0f) ||
@@ -176,26 +172,48 @@ void World::Impl::solve(float dt) {
         detail::prepareContact(cc, c.manifold, a, b,
                                {c.friction, c.restitution, c.rollingResistance},
                                rigidSide ? softness.vsStatic : softness.dynamic);
-        cc.contactIndex = static_cast<int>(ci);
         auto gravityOf = [&](const detail::ContactBodyView& v, int bodyIndex) {
             float scale = body(bodyIndex).motion.gravityScale;
             return Vec2{v.invMass.x > 0.0f ? scale * gravity.x : 0.0f,
                         v.invMass.y > 0.0f ? scale * gravity.y : 0.0f};
         };
         cc.pressAcceleration = -dot(gravityOf(b, c.bodyB) - gravityOf(a, c.bodyA), cc.normal);
-        if (wide) {
-            // Packed while it is in cache (gathering it later by level is a random read).
+    };
+    if (wide) {
+        // Each constraint goes straight into its lane while its contact is in cache; the
+        // impulses come back from the lanes (no array of constraints in between).
+        s.constraints.clear();
+        s.slotContact.resize(static_cast<std::size_t>(constraintCount));
+        s.wideRestitution.clear();
+        detail::ContactConstraint cc;
+        for (std::size_t k = 0; k < s.constraintContacts.size(); ++k) {
+            const int ci = s.constraintContacts[k];
+            const detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
+            build(cc, c);
             const int level = s.constraintLevel[k];
-            detail::packWideLane(s.wideContacts, level,
-                                 s.constraintSlot[k] - s.levelStart[static_cast<std::size_t>(level)], cc);
+            const int slot = s.constraintSlot[k];
+            const int at = slot - s.levelStart[static_cast<std::size_t>(level)];
+            detail::packWideLane(s.wideContacts, level, at, cc);
+            s.slotContact[static_cast<std::size_t>(slot)] = ci;
+            if (cc.restitution != 0.0f) {
+                s.wideRestitution.push_back(
+                    {level, at, cc.pointCount, cc.restitution, cc.pressAcceleration});
+            }
+        }
+    } else {
+        s.constraints.resize(static_cast<std::size_t>(constraintCount));
+        for (std::size_t k = 0; k < s.constraintContacts.size(); ++k) {
+            const int ci = s.constraintContacts[k];
+            detail::ContactConstraint& cc = s.constraints[k];
+            build(cc, s.contacts[static_cast<std::size_t>(ci)]);
+            cc.contactIndex = ci;
         }
     }
 
     detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def};
     if (wide) {
         step.wide = &s.wideContacts;
-        step.levelOrder = s.levelOrder;
-        step.levelStart = s.levelStart;
+        step.restitution = s.wideRestitution;
     }
     if (def.mode == SolverMode::SoftStep) {
         detail::solveSoftStep(step);
@@ -246,30 +264,63 @@ void World::Impl::solve(float dt) {
         }
     }
 
-    // Impulses back to the manifolds for next step's warm start; hit events.
-    for (const detail::ContactConstraint& cc : s.constraints) {
-        detail::Contact& c = s.contacts[static_cast<std::size_t>(cc.contactIndex)];
+    // Impulses back to the manifolds for next step's warm start; hit events, in contact order.
+    s.hitCandidates.clear();
+    auto store = [&](int contactIndex, int pointCount, const float* normalImpulse,
+                     const float* tangentImpulse, const float* relativeVelocity,
+                     const float* maxNormalImpulse) {
+        detail::Contact& c = s.contacts[static_cast<std::size_t>(contactIndex)];
         if (!c.alive) {
-            continue; // ended with a non-finite body
+            return; // ended with a non-finite body
         }
         float fastest = def.hitEventThreshold;
         int fastestPoint = -1;
-        for (int j = 0; j < cc.pointCount; ++j) {
-            const detail::ContactConstraintPoint& cp = cc.points[j];
-            c.manifold.points[j].normalImpulse = cp.normalImpulse;
-            c.manifold.points[j].tangentImpulse = cp.tangentImpulse;
-            float approach = -cp.relativeVelocity;
-            if (cp.maxNormalImpulse > 0.0f && approach > fastest) {
+        for (int j = 0; j < pointCount; ++j) {
+            c.manifold.points[j].normalImpulse = normalImpulse[j];
+            c.manifold.points[j].tangentImpulse = tangentImpulse[j];
+            float approach = -relativeVelocity[j];
+            if (maxNormalImpulse[j] > 0.0f && approach > fastest) {
                 fastest = approach;
                 fastestPoint = j;
             }
         }
         if (fastestPoint >= 0) {
-            // A speculative point sits midway across the gap; the hit is on A's surface.
-            const ManifoldPoint& mp = c.manifold.points[fastestPoint];
-            s.hitEvents.push_back({c.idA, c.idB, mp.point - 0.5f * mp.separation * c.manifold.normal,
-                                   c.manifold.normal, fastest});
+            s.hitCandidates.push_back({contactIndex, fastestPoint, fastest});
         }
+    };
+    if (wide) {
+        // By level: the lanes are read in memory order, the manifolds written in contact order
+        // within each level.
+        detail::visitWide(s.wideContacts, s.levelStart, [&](int slot, const detail::WideLaneResult& r) {
+            const int ci = s.slotContact[static_cast<std::size_t>(slot)];
+            store(ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount, r.normalImpulse,
+                  r.tangentImpulse, r.relativeVelocity, r.maxNormalImpulse);
+        });
+        std::sort(s.hitCandidates.begin(), s.hitCandidates.end(),
+                  [](const detail::Simulation::HitCandidate& x,
+                     const detail::Simulation::HitCandidate& y) { return x.contact < y.contact; });
+    } else {
+        for (const detail::ContactConstraint& cc : s.constraints) {
+            float normalImpulse[2];
+            float tangentImpulse[2];
+            float relativeVelocity[2];
+            float maxNormalImpulse[2];
+            for (int j = 0; j < cc.pointCount; ++j) {
+                normalImpulse[j] = cc.points[j].normalImpulse;
+                tangentImpulse[j] = cc.points[j].tangentImpulse;
+                relativeVelocity[j] = cc.points[j].relativeVelocity;
+                maxNormalImpulse[j] = cc.points[j].maxNormalImpulse;
+            }
+            store(cc.contactIndex, cc.pointCount, normalImpulse, tangentImpulse, relativeVelocity,
+                  maxNormalImpulse);
+        }
+    }
+    for (const detail::Simulation::HitCandidate& h : s.hitCandidates) {
+        const detail::Contact& c = s.contacts[static_cast<std::size_t>(h.contact)];
+        // A speculative point sits midway across the gap; the hit is on A's surface.
+        const ManifoldPoint& mp = c.manifold.points[h.point];
+        s.hitEvents.push_back({c.idA, c.idB, mp.point - 0.5f * mp.separation * c.manifold.normal,
+                               c.manifold.normal, h.speed});
     }
 }
 
