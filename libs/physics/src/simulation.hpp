@@ -59,7 +59,6 @@ struct Contact {
     int bodyB = -1;
     int prev[2] = {-1, -1};
     int next[2] = {-1, -1};
-    int constraintIndex = -1; // this step's constraint, -1 if not solved
     ShapeId idA{};
     ShapeId idB{};
     bool touching = false;

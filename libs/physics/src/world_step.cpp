@@ -128,7 +128,6 @@ void World::Impl::solve(float dt) {
     s.constraintBodies.clear();
     for (std::size_t ci = 0; ci < s.contacts.size(); ++ci) {
         detail::Contact& c = s.contacts[ci];
-        c.constraintIndex = kNullIndex;
         if (!c.alive || !c.touching || c.sensor) {
             continue;
         }
@@ -141,7 +140,7 @@ void World::Impl::solve(float dt) {
         s.constraintLevel.push_back(s.levels.assign(movingState(c.bodyA), movingState(c.bodyB)));
         s.constraintContacts.push_back(static_cast<int>(ci));
         s.constraintBodies.push_back({indexA, indexB});
-        c.constraintIndex = constraintCount++;
+        ++constraintCount;
     }
 
     // Rolling resistance is scalar only (and solved in contact order, the same sweep).
@@ -291,7 +290,18 @@ void World::Impl::solve(float dt) {
     if (wide) {
         // By level: the lanes are read in memory order, the manifolds written in contact order
         // within each level.
+        // A level's contacts lie one island apart in the array, too far for the hardware
+        // prefetcher: fetch the ones a few slots ahead.
+        constexpr int kPrefetchAhead = 16;
         detail::visitWide(s.wideContacts, s.levelStart, [&](int slot, const detail::WideLaneResult& r) {
+            if (slot + kPrefetchAhead < constraintCount) {
+                const auto* ahead = reinterpret_cast<const char*>(&s.contacts[static_cast<std::size_t>(
+                    s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
+                for (std::size_t offset = 0; offset < sizeof(detail::Contact); offset += 64) {
+                    __builtin_prefetch(ahead + offset, 1);
+                }
+                __builtin_prefetch(ahead + sizeof(detail::Contact) - 1, 1);
+            }
             const int ci = s.slotContact[static_cast<std::size_t>(slot)];
             store(ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount, r.normalImpulse,
                   r.tangentImpulse, r.relativeVelocity, r.maxNormalImpulse);
