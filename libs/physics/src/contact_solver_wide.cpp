@@ -364,35 +364,60 @@ void storeWide(const WideContacts& wide, std::span<ContactConstraint> constraint
 }
 
 void warmStartWide(const WideContacts& wide, std::span<BodyState> states) {
-#if defined(E2D_HAS_WIDE8)
-    if (wide.lanes == 8) {
-        lanes8::warmStartAll(wide.constraints8, states);
-        return;
-    }
-#endif
-    lanes4::warmStartAll(wide.constraints4, states);
+    warmStartWide(wide, 0, static_cast<int>(wide.levelStart.size()) - 1, states);
 }
 
 void solveWide(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
                float pushMaxSpeed, bool backward, bool reversePoints) {
+    solveWide(wide, 0, static_cast<int>(wide.levelStart.size()) - 1, states, invH, useBias,
+              pushMaxSpeed, backward, reversePoints);
+}
+
+namespace {
+
+std::span<const int> levelRange(const WideContacts& wide, int firstLevel, int endLevel) {
+    if (endLevel <= firstLevel) {
+        return {};
+    }
+    return std::span<const int>(wide.levelStart)
+        .subspan(static_cast<std::size_t>(firstLevel), static_cast<std::size_t>(endLevel - firstLevel) + 1);
+}
+
+} // namespace
+
+void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
+                   std::span<BodyState> states) {
+    const std::span<const int> levels = levelRange(wide, firstLevel, endLevel);
+#if defined(E2D_HAS_WIDE8)
+    if (wide.lanes == 8) {
+        lanes8::warmStartAll(wide.constraints8, levels, states);
+        return;
+    }
+#endif
+    lanes4::warmStartAll(wide.constraints4, levels, states);
+}
+
+void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyState> states,
+               float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints) {
+    const std::span<const int> levels = levelRange(wide, firstLevel, endLevel);
 #if defined(E2D_HAS_WIDE8)
     if (wide.lanes == 8) {
         if (reversePoints) {
-            lanes8::solveAll<true>(wide.constraints8, wide.levelStart, states, invH, useBias,
-                                   pushMaxSpeed, backward);
+            lanes8::solveAll<true>(wide.constraints8, levels, states, invH, useBias, pushMaxSpeed,
+                                   backward);
         } else {
-            lanes8::solveAll<false>(wide.constraints8, wide.levelStart, states, invH, useBias,
-                                    pushMaxSpeed, backward);
+            lanes8::solveAll<false>(wide.constraints8, levels, states, invH, useBias, pushMaxSpeed,
+                                    backward);
         }
         return;
     }
 #endif
     if (reversePoints) {
-        lanes4::solveAll<true>(wide.constraints4, wide.levelStart, states, invH, useBias,
-                               pushMaxSpeed, backward);
+        lanes4::solveAll<true>(wide.constraints4, levels, states, invH, useBias, pushMaxSpeed,
+                               backward);
     } else {
-        lanes4::solveAll<false>(wide.constraints4, wide.levelStart, states, invH, useBias,
-                                pushMaxSpeed, backward);
+        lanes4::solveAll<false>(wide.constraints4, levels, states, invH, useBias, pushMaxSpeed,
+                                backward);
     }
 }
 

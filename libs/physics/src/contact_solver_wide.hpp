@@ -4,6 +4,7 @@
 #include "contact_solver.hpp"
 #include "solver_body.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -128,21 +129,30 @@ struct WideLaneResult {
 // (level k holds slots [levelStart[k], levelStart[k + 1])), in slot order.
 template <class Visit>
 void visitWide(const WideContacts& wide, std::span<const int> levelStart, Visit&& visit);
+// The same over levels [firstLevel, endLevel) only.
+template <class Visit>
+void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
+               int endLevel, Visit&& visit);
 
 // warmStartContacts() and solveContacts() over every packed constraint, level after level
 // (backward: last level first; reversePoints: each constraint's points last to first).
 void warmStartWide(const WideContacts& wide, std::span<BodyState> states);
 void solveWide(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
                float pushMaxSpeed, bool backward, bool reversePoints);
+// The same over levels [firstLevel, endLevel) only.
+void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
+                   std::span<BodyState> states);
+void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyState> states,
+               float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints);
 
 namespace wide_detail {
 
 template <int N, class Visit>
 void visitLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
-                std::span<const int> levelStart, Visit& visit) {
-    const std::size_t levelCount = levelStart.empty() ? 0 : levelStart.size() - 1;
+                std::span<const int> levelStart, std::size_t firstLevel, std::size_t endLevel,
+                Visit& visit) {
     WideLaneResult r;
-    for (std::size_t k = 0; k < levelCount; ++k) {
+    for (std::size_t k = firstLevel; k < endLevel; ++k) {
         const int end = levelStart[k + 1];
         int g = wideStart[k];
         for (int first = levelStart[k]; first < end; first += N, ++g) {
@@ -164,12 +174,21 @@ void visitLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const i
 } // namespace wide_detail
 
 template <class Visit>
-void visitWide(const WideContacts& wide, std::span<const int> levelStart, Visit&& visit) {
+void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
+               int endLevel, Visit&& visit) {
+    const auto first = static_cast<std::size_t>(firstLevel);
+    const auto end = static_cast<std::size_t>(std::max(endLevel, firstLevel));
     if (wide.lanes == 8) {
-        wide_detail::visitLanes(wide.constraints8, wide.levelStart, levelStart, visit);
+        wide_detail::visitLanes(wide.constraints8, wide.levelStart, levelStart, first, end, visit);
     } else {
-        wide_detail::visitLanes(wide.constraints4, wide.levelStart, levelStart, visit);
+        wide_detail::visitLanes(wide.constraints4, wide.levelStart, levelStart, first, end, visit);
     }
+}
+
+template <class Visit>
+void visitWide(const WideContacts& wide, std::span<const int> levelStart, Visit&& visit) {
+    visitWide(wide, levelStart, 0, levelStart.empty() ? 0 : static_cast<int>(levelStart.size()) - 1,
+              visit);
 }
 
 } // namespace e2d::physics::detail

@@ -152,9 +152,14 @@ E2D_WIDE_FN void solveOne(Constraint& c, std::span<BodyState> states, float invH
     scatterVelocities(b, c.indexB, states);
 }
 
-E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints, std::span<BodyState> states) {
-    for (const Constraint& c : constraints) {
-        warmStartOne(c, states);
+// levelStart: the group boundaries of the levels to run (absolute indices into constraints).
+E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints, std::span<const int> levelStart,
+                              std::span<BodyState> states) {
+    if (levelStart.size() < 2) {
+        return;
+    }
+    for (int g = levelStart.front(); g < levelStart.back(); ++g) {
+        warmStartOne(constraints[static_cast<std::size_t>(g)], states);
     }
 }
 
@@ -162,14 +167,18 @@ template <bool kReversePoints>
 E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<const int> levelStart,
                           std::span<BodyState> states, float invH, bool useBias,
                           float pushMaxSpeed, bool backward) {
+    if (levelStart.size() < 2) {
+        return;
+    }
     if (!backward) {
-        for (Constraint& c : constraints) {
-            solveOne<kReversePoints>(c, states, invH, useBias, pushMaxSpeed);
+        for (int g = levelStart.front(); g < levelStart.back(); ++g) {
+            solveOne<kReversePoints>(constraints[static_cast<std::size_t>(g)], states, invH, useBias,
+                                     pushMaxSpeed);
         }
         return;
     }
     // Within a level the order does not matter; backward only reverses the levels.
-    const std::size_t levelCount = levelStart.empty() ? 0 : levelStart.size() - 1;
+    const std::size_t levelCount = levelStart.size() - 1;
     for (std::size_t k = levelCount; k-- > 0;) {
         for (int g = levelStart[k]; g < levelStart[k + 1]; ++g) {
             solveOne<kReversePoints>(constraints[static_cast<std::size_t>(g)], states, invH,

@@ -105,6 +105,21 @@ struct Simulation {
     std::vector<int> levelStart;
     std::vector<int> levelNext;
     WideContacts wideContacts;
+    // Blocks of islands (World::Impl::scheduleWide()): per body a union-find parent and its
+    // block, per island root its constraint count and block, per constraint its island root;
+    // block b's levels [blockLevelStart[b], blockLevelStart[b + 1]) and bodies
+    // blockBodies[blockBodyStart[b] .. blockBodyStart[b + 1]).
+    std::vector<int> blockParent;
+    std::vector<int> bodyBlock;
+    std::vector<int> islandConstraints;
+    std::vector<int> islandBlock;
+    std::vector<int> constraintIsland;
+    std::vector<int> blockOrder; // the constraints block by block
+    std::vector<int> blockOrderStart;       // block b: blockOrder[start[b] .. start[b + 1])
+    std::vector<int> blockRestitutionStart; // block b's range of wideRestitution
+    std::vector<int> blockLevelStart;
+    std::vector<int> blockBodyStart;
+    std::vector<int> blockBodies;
     std::vector<int> islandParent; // union-find over the awake arrays
     std::vector<float> islandSleepTime;
     std::vector<int> wakeStack;
