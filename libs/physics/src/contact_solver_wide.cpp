@@ -82,13 +82,11 @@ inline void loadRows(const BodyState* const (&s)[N], std::size_t offset, F& c0, 
                   loadRow(s[3], offset), c0, c1, c2, c3);
 }
 
-inline void storeRows(F c0, F c1, F c2, F c3, const int (&index)[N], std::span<BodyState> states) {
+inline void storeRows(F c0, F c1, F c2, F c3, BodyState* const (&out)[N]) {
     F rows[N];
     transposeRows(c0, c1, c2, c3, rows[0], rows[1], rows[2], rows[3]);
     for (int i = 0; i < N; ++i) {
-        if (index[i] >= 0) {
-            storeRow(states[static_cast<std::size_t>(index[i])], rows[i]);
-        }
+        storeRow(*out[i], rows[i]);
     }
 }
 
@@ -139,19 +137,12 @@ E2D_WIDE_FN void loadRows(const BodyState* const (&s)[N], std::size_t offset, F&
                   joinRows(s[2], s[6], offset), joinRows(s[3], s[7], offset), c0, c1, c2, c3);
 }
 
-E2D_WIDE_FN void storeRows(F c0, F c1, F c2, F c3, const int (&index)[N],
-                           std::span<BodyState> states) {
+E2D_WIDE_FN void storeRows(F c0, F c1, F c2, F c3, BodyState* const (&out)[N]) {
     F rows[4];
     transposeRows(c0, c1, c2, c3, rows[0], rows[1], rows[2], rows[3]);
     for (int i = 0; i < 4; ++i) {
-        if (index[i] >= 0) {
-            storeRow(states[static_cast<std::size_t>(index[i])],
-                     __builtin_shufflevector(rows[i], rows[i], 0, 1, 2, 3));
-        }
-        if (index[i + 4] >= 0) {
-            storeRow(states[static_cast<std::size_t>(index[i + 4])],
-                     __builtin_shufflevector(rows[i], rows[i], 4, 5, 6, 7));
-        }
+        storeRow(*out[i], __builtin_shufflevector(rows[i], rows[i], 0, 1, 2, 3));
+        storeRow(*out[i + 4], __builtin_shufflevector(rows[i], rows[i], 4, 5, 6, 7));
     }
 }
 

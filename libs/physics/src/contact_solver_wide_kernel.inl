@@ -13,23 +13,30 @@ struct WideBody {
     F dpx, dpy, qc, qs;
 };
 
-E2D_WIDE_FN void lanesOf(const int (&index)[N], std::span<BodyState> states,
-                         const BodyState* (&out)[N]) {
+// Where each lane reads its body (a static side: a resting state) and writes it back (a
+// static side: `sink`, never read). Unconditional stores cost less than a branch per lane.
+E2D_WIDE_FN void lanesOf(const int (&index)[N], std::span<BodyState> states, BodyState& sink,
+                         const BodyState* (&in)[N], BodyState* (&out)[N]) {
     for (int i = 0; i < N; ++i) {
-        out[i] = index[i] >= 0 ? &states[static_cast<std::size_t>(index[i])] : &kStaticState;
+        const bool moving = index[i] >= 0;
+        BodyState* s = states.data() + (moving ? index[i] : 0);
+        in[i] = moving ? s : &kStaticState;
+        out[i] = moving ? s : &sink;
     }
 }
 
-E2D_WIDE_FN void scatterVelocities(const WideBody& b, const int (&index)[N],
-                                   std::span<BodyState> states) {
-    storeRows(b.vx, b.vy, b.w, b.flags, index, states);
+E2D_WIDE_FN void scatterVelocities(const WideBody& b, BodyState* const (&out)[N]) {
+    storeRows(b.vx, b.vy, b.w, b.flags, out);
 }
 
 E2D_WIDE_FN void warmStartOne(const Constraint& c, std::span<BodyState> states) {
+    BodyState sink;
     const BodyState* sa[N];
     const BodyState* sb[N];
-    lanesOf(c.indexA, states, sa);
-    lanesOf(c.indexB, states, sb);
+    BodyState* wa[N];
+    BodyState* wb[N];
+    lanesOf(c.indexA, states, sink, sa, wa);
+    lanesOf(c.indexB, states, sink, sb, wb);
     WideBody a;
     WideBody b;
     loadRows(sa, 0, a.vx, a.vy, a.w, a.flags);
@@ -48,17 +55,20 @@ E2D_WIDE_FN void warmStartOne(const Constraint& c, std::span<BodyState> states) 
         b.vx = b.vx + c.invMassBx * px;
         b.vy = b.vy + c.invMassBy * py;
     }
-    scatterVelocities(a, c.indexA, states);
-    scatterVelocities(b, c.indexB, states);
+    scatterVelocities(a, wa);
+    scatterVelocities(b, wb);
 }
 
 template <bool kReversePoints>
 E2D_WIDE_FN void solveOne(Constraint& c, std::span<BodyState> states, float invH, bool useBias,
                           float pushMaxSpeed) {
+    BodyState sink;
     const BodyState* sa[N];
     const BodyState* sb[N];
-    lanesOf(c.indexA, states, sa);
-    lanesOf(c.indexB, states, sb);
+    BodyState* wa[N];
+    BodyState* wb[N];
+    lanesOf(c.indexA, states, sink, sa, wa);
+    lanesOf(c.indexB, states, sink, sb, wb);
     WideBody a;
     WideBody b;
     loadRows(sa, 0, a.vx, a.vy, a.w, a.flags);
@@ -148,8 +158,8 @@ E2D_WIDE_FN void solveOne(Constraint& c, std::span<BodyState> states, float invH
         b.w = b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px);
     }
 
-    scatterVelocities(a, c.indexA, states);
-    scatterVelocities(b, c.indexB, states);
+    scatterVelocities(a, wa);
+    scatterVelocities(b, wb);
 }
 
 // levelStart: the group boundaries of the levels to run (absolute indices into constraints).
