@@ -88,7 +88,7 @@ struct Simulation {
     // built and keeps it nowhere else.
     std::vector<ContactConstraint> constraints; // in contact order
     std::vector<int> slotContact;               // contact of each slot in level order
-    std::vector<WideRestitution> wideRestitution;
+    std::vector<WideRestitution> wideRestitution; // the block being solved
     // A hit found while storing impulses by level: contact, point, approach speed.
     struct HitCandidate {
         int contact = -1;
@@ -116,7 +116,6 @@ struct Simulation {
     std::vector<int> constraintIsland;
     std::vector<int> blockOrder; // the constraints block by block
     std::vector<int> blockOrderStart;       // block b: blockOrder[start[b] .. start[b + 1])
-    std::vector<int> blockRestitutionStart; // block b's range of wideRestitution
     std::vector<int> blockLevelStart;
     std::vector<int> blockBodyStart;
     std::vector<int> blockBodies;

@@ -293,36 +293,9 @@ void World::Impl::solve(float dt) {
         cc.pressAcceleration = -dot(gravityOf(b, c.bodyB) - gravityOf(a, c.bodyA), cc.normal);
     };
     if (wide) {
-        // Each constraint goes straight into its lane while its contact is in cache; the
-        // impulses come back from the lanes (no array of constraints in between).
+        // Built block by block right before each block is solved (below).
         s.constraints.clear();
         s.slotContact.resize(static_cast<std::size_t>(constraintCount));
-        s.wideRestitution.clear();
-        // Block by block, so the lanes written stay within one block's groups (in cache); in
-        // constraint order within a block, so each block's restitution list is in the order
-        // applyRestitution() takes.
-        const std::size_t blockCount = s.blockOrderStart.size() - 1;
-        s.blockRestitutionStart.assign(blockCount + 2, 0);
-        detail::ContactConstraint cc;
-        for (std::size_t b = 0; b < blockCount; ++b) {
-            for (int i = s.blockOrderStart[b]; i < s.blockOrderStart[b + 1]; ++i) {
-                const auto k = static_cast<std::size_t>(s.blockOrder[static_cast<std::size_t>(i)]);
-                const int ci = s.constraintContacts[k];
-                build(cc, s.contacts[static_cast<std::size_t>(ci)]);
-                const int level = s.constraintLevel[k];
-                const int slot = s.constraintSlot[k];
-                const int at = slot - s.levelStart[static_cast<std::size_t>(level)];
-                detail::packWideLane(s.wideContacts, level, at, cc);
-                s.slotContact[static_cast<std::size_t>(slot)] = ci;
-                if (cc.restitution != 0.0f) {
-                    s.wideRestitution.push_back(
-                        {level, at, cc.pointCount, cc.restitution, cc.pressAcceleration});
-                }
-            }
-            s.blockRestitutionStart[b + 1] = static_cast<int>(s.wideRestitution.size());
-        }
-        // The last block (bodies no constraint touches) has none.
-        s.blockRestitutionStart[blockCount + 1] = static_cast<int>(s.wideRestitution.size());
     } else {
         s.constraints.resize(static_cast<std::size_t>(constraintCount));
         for (std::size_t k = 0; k < s.constraintContacts.size(); ++k) {
@@ -375,18 +348,38 @@ void World::Impl::solve(float dt) {
             store(ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount, r.normalImpulse,
                   r.tangentImpulse, r.relativeVelocity, r.maxNormalImpulse);
         };
+        // Each block goes through build, sub-steps and store while its contacts, lanes and
+        // bodies are in cache. Its constraints go straight into their lanes (no array of
+        // constraints in between), in constraint order, so the restitution list is in the
+        // order applyRestitution() takes.
         const std::span<const int> blockBodies = s.blockBodies;
-        const std::span<const detail::WideRestitution> restitution = s.wideRestitution;
+        const std::size_t constrainedBlocks = s.blockOrderStart.size() - 1;
+        detail::ContactConstraint cc;
         for (std::size_t b = 0; b + 1 < s.blockLevelStart.size(); ++b) {
+            s.wideRestitution.clear();
+            if (b < constrainedBlocks) {
+                for (int i = s.blockOrderStart[b]; i < s.blockOrderStart[b + 1]; ++i) {
+                    const auto k = static_cast<std::size_t>(s.blockOrder[static_cast<std::size_t>(i)]);
+                    const int ci = s.constraintContacts[k];
+                    build(cc, s.contacts[static_cast<std::size_t>(ci)]);
+                    const int level = s.constraintLevel[k];
+                    const int slot = s.constraintSlot[k];
+                    const int at = slot - s.levelStart[static_cast<std::size_t>(level)];
+                    detail::packWideLane(s.wideContacts, level, at, cc);
+                    s.slotContact[static_cast<std::size_t>(slot)] = ci;
+                    if (cc.restitution != 0.0f) {
+                        s.wideRestitution.push_back(
+                            {level, at, cc.pointCount, cc.restitution, cc.pressAcceleration});
+                    }
+                }
+            }
             const int firstLevel = s.blockLevelStart[b];
             const int endLevel = s.blockLevelStart[b + 1];
             detail::solveSoftStepBlock(
                 step, s.wideContacts, firstLevel, endLevel,
                 blockBodies.subspan(static_cast<std::size_t>(s.blockBodyStart[b]),
-                               static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b])),
-                restitution.subspan(
-                    static_cast<std::size_t>(s.blockRestitutionStart[b]),
-                    static_cast<std::size_t>(s.blockRestitutionStart[b + 1] - s.blockRestitutionStart[b])));
+                                    static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b])),
+                s.wideRestitution);
             detail::visitWide(s.wideContacts, s.levelStart, firstLevel, endLevel, storeLane);
         }
     } else if (def.mode == SolverMode::SoftStep) {
