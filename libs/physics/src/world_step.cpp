@@ -141,7 +141,13 @@ void World::Impl::scheduleWide(int constraintCount) {
     for (std::size_t k = 0; k < count; ++k) {
         s.constraintSlot[k] = s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])]++;
     }
-    detail::layoutWide(s.wideContacts, s.levelStart, detail::bestWideLanes());
+    // Eight lanes only pay when levels are wide enough to fill them: a small pile's levels
+    // hold a few constraints each, and half-empty groups of eight cost more than full fours.
+    int lanes = detail::bestWideLanes();
+    if (lanes > 4 && 2 * count < static_cast<std::size_t>(lanes * levelCount)) {
+        lanes = 4;
+    }
+    detail::layoutWide(s.wideContacts, s.levelStart, lanes);
 
     // The constraints by block, in constraint order within a block.
     s.levelNext.assign(static_cast<std::size_t>(blockCount) + 1, 0);
