@@ -64,6 +64,13 @@ inline bool anyLane(I mask) {
     return (mask[0] | mask[1] | mask[2] | mask[3]) != 0;
 #endif
 }
+inline bool allLanes(I mask) {
+#if defined(__x86_64__)
+    return _mm_movemask_ps(std::bit_cast<__m128>(mask)) == 0xF;
+#else
+    return (mask[0] & mask[1] & mask[2] & mask[3]) == -1;
+#endif
+}
 
 inline void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {
     F t0 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
@@ -113,6 +120,7 @@ E2D_WIDE_FN F select(I mask, F a, F b) {
 }
 E2D_WIDE_FN F maxOf(F a, F b) { return _mm256_max_ps(b, a); }
 E2D_WIDE_FN bool anyLane(I mask) { return _mm256_movemask_ps((__m256)mask) != 0; }
+E2D_WIDE_FN bool allLanes(I mask) { return _mm256_movemask_ps((__m256)mask) == 0xFF; }
 
 // Rows k and k + 4 share a vector (low and high half); the halves transpose independently.
 E2D_WIDE_FN void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {
@@ -169,6 +177,15 @@ void packLane(WideConstraintT<N>& w, int lane, const ContactConstraint& c) {
     w.biasRate[lane] = c.softness.biasRate;
     w.massScale[lane] = c.softness.massScale;
     w.impulseScale[lane] = c.softness.impulseScale;
+    const BlockMatrix k = c.blockSolve ? c.blockK : BlockMatrix{1.0f, 0.0f, 1.0f};
+    const BlockMatrix inv = c.blockSolve ? c.blockInvK : BlockMatrix{1.0f, 0.0f, 1.0f};
+    w.k11[lane] = k.a11;
+    w.k12[lane] = k.a12;
+    w.k22[lane] = k.a22;
+    w.inv11[lane] = inv.a11;
+    w.inv12[lane] = inv.a12;
+    w.inv22[lane] = inv.a22;
+    w.blockSolve[lane] = c.blockSolve ? -1 : 0;
     for (int i = 0; i < 2; ++i) {
         // A missing second point has no mass: its impulses stay zero.
         const ContactConstraintPoint cp = i < c.pointCount ? c.points[i] : ContactConstraintPoint{};
@@ -211,6 +228,7 @@ void layoutLanes(std::vector<WideConstraintT<N>>& groups, std::vector<int>& wide
         WideConstraintT<N>& w = groups[static_cast<std::size_t>(wideStart[k + 1] - 1)];
         for (int lane = inLevel % N; lane < N; ++lane) {
             packLane(w, lane, ContactConstraint{});
+            w.blockSolve[lane] = -1;
         }
     }
 }

@@ -60,6 +60,7 @@ struct alignas(4 * N) WidePointT {
 template <int N>
 struct alignas(4 * N) WideConstraintT {
     using F = typename WideLanes<N>::F;
+    using I = typename WideLanes<N>::I;
     int indexA[N]; // BodyState index, -1: static (or an empty lane)
     int indexB[N];
     F normalX, normalY;
@@ -67,6 +68,12 @@ struct alignas(4 * N) WideConstraintT {
     F invInertiaA, invInertiaB;
     F friction;
     F biasRate, massScale, impulseScale;
+    // The block matrix K of a 2-point manifold and its inverse (ContactConstraint's blockK and
+    // blockInvK); blockSolve lanes are all ones, empty lanes too (their block gives zero
+    // impulses, and a group of block constraints then never runs the point-by-point solve as
+    // well). Other lanes hold K = identity.
+    F k11, k12, k22, inv11, inv12, inv22;
+    I blockSolve;
     WidePointT<N> points[2];
 };
 
