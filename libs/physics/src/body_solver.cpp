@@ -14,48 +14,70 @@ namespace {
 // 377 rad/s with 4 sub-steps.
 constexpr float kMaxRotation = 0.5f * 3.14159265f;
 
+inline void integrateVelocity(const BodySim& sim, BodyState& state, Vec2 gravity, float h,
+                              float maxLinearSpeed, float maxSpeedSquared) {
+    // Implicit damping: stable for any damping coefficient and step.
+    float linearDamping = 1.0f / (1.0f + h * sim.linearDamping);
+    float angularDamping = 1.0f / (1.0f + h * sim.angularDamping);
+    // Gravity acts on each axis that can move (a kinematic body has none).
+    Vec2 g = sim.gravityScale * gravity;
+    Vec2 accel{sim.invMass.x > 0.0f ? g.x + sim.invMass.x * sim.force.x : 0.0f,
+               sim.invMass.y > 0.0f ? g.y + sim.invMass.y * sim.force.y : 0.0f};
+    Vec2 v = h * accel + linearDamping * state.linearVelocity;
+    float w = h * sim.invInertia * sim.torque + angularDamping * state.angularVelocity;
+    float speedSquared = dot(v, v);
+    if (speedSquared > maxSpeedSquared) {
+        v *= maxLinearSpeed / std::sqrt(speedSquared);
+    }
+    // The rotation integrator is only right for small angles, and a huge one overflows it
+    // into a zero (not unit) rotation that no finiteness check would catch.
+    float maxAngularSpeed = kMaxRotation / h;
+    w = std::clamp(w, -maxAngularSpeed, maxAngularSpeed);
+    if (!isFinite(v) || !isFinite(w) || (state.flags & kNonFinite) != 0) {
+        // Absurd input (a force or gravity scale near the float limit) overflowed: the
+        // body stays still for the rest of the step, so the contact solver spreads nothing
+        // to what it touches, and the world disables and reports it afterwards.
+        state.flags |= kNonFinite;
+        v = {0.0f, 0.0f};
+        w = 0.0f;
+    }
+    state.linearVelocity = v;
+    state.angularVelocity = w;
+}
+
+inline void integratePosition(BodyState& state, float h) {
+    state.deltaRotation = integrateRotation(state.deltaRotation, h * state.angularVelocity);
+    state.deltaPosition += h * state.linearVelocity;
+}
+
 } // namespace
 
 void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, Vec2 gravity,
                          float h, float maxLinearSpeed) {
     float maxSpeedSquared = maxLinearSpeed * maxLinearSpeed;
     for (std::size_t i = 0; i < sims.size(); ++i) {
-        const BodySim& sim = sims[i];
-        BodyState& state = states[i];
-        // Implicit damping: stable for any damping coefficient and step.
-        float linearDamping = 1.0f / (1.0f + h * sim.linearDamping);
-        float angularDamping = 1.0f / (1.0f + h * sim.angularDamping);
-        // Gravity acts on each axis that can move (a kinematic body has none).
-        Vec2 g = sim.gravityScale * gravity;
-        Vec2 accel{sim.invMass.x > 0.0f ? g.x + sim.invMass.x * sim.force.x : 0.0f,
-                   sim.invMass.y > 0.0f ? g.y + sim.invMass.y * sim.force.y : 0.0f};
-        Vec2 v = h * accel + linearDamping * state.linearVelocity;
-        float w = h * sim.invInertia * sim.torque + angularDamping * state.angularVelocity;
-        float speedSquared = dot(v, v);
-        if (speedSquared > maxSpeedSquared) {
-            v *= maxLinearSpeed / std::sqrt(speedSquared);
-        }
-        // The rotation integrator is only right for small angles, and a huge one overflows it
-        // into a zero (not unit) rotation that no finiteness check would catch.
-        float maxAngularSpeed = kMaxRotation / h;
-        w = std::clamp(w, -maxAngularSpeed, maxAngularSpeed);
-        if (!isFinite(v) || !isFinite(w) || (state.flags & kNonFinite) != 0) {
-            // Absurd input (a force or gravity scale near the float limit) overflowed: the
-            // body stays still for the rest of the step, so the contact solver spreads nothing
-            // to what it touches, and the world disables and reports it afterwards.
-            state.flags |= kNonFinite;
-            v = {0.0f, 0.0f};
-            w = 0.0f;
-        }
-        state.linearVelocity = v;
-        state.angularVelocity = w;
+        integrateVelocity(sims[i], states[i], gravity, h, maxLinearSpeed, maxSpeedSquared);
+    }
+}
+
+void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states,
+                         std::span<const int> indices, Vec2 gravity, float h, float maxLinearSpeed) {
+    float maxSpeedSquared = maxLinearSpeed * maxLinearSpeed;
+    for (int i : indices) {
+        const auto k = static_cast<std::size_t>(i);
+        integrateVelocity(sims[k], states[k], gravity, h, maxLinearSpeed, maxSpeedSquared);
     }
 }
 
 void integratePositions(std::span<BodyState> states, float h) {
     for (BodyState& state : states) {
-        state.deltaRotation = integrateRotation(state.deltaRotation, h * state.angularVelocity);
-        state.deltaPosition += h * state.linearVelocity;
+        integratePosition(state, h);
+    }
+}
+
+void integratePositions(std::span<BodyState> states, std::span<const int> indices, float h) {
+    for (int i : indices) {
+        integratePosition(states[static_cast<std::size_t>(i)], h);
     }
 }
 
@@ -70,26 +92,6 @@ void solveSoftStep(const SolverStep& step) {
     const SolverDef& def = *step.def;
     float h = step.dt / static_cast<float>(def.subSteps);
     float invH = 1.0f / h;
-    if (step.wide != nullptr) {
-        WideContacts& wide = *step.wide;
-        // The same passes and orders as below; a backward sweep is the levels in reverse.
-        for (int i = 0; i < def.subSteps; ++i) {
-            integrateVelocities(step.sims, step.states, step.gravity, h, def.maxLinearSpeed);
-            bool backward = (i % 2) == 1;
-            bool reversePoints = ((i / 2) % 2) == 1;
-            warmStartWide(wide, step.states);
-            solveWide(wide, step.states, invH, true, def.contactPushMaxSpeed, backward,
-                      reversePoints);
-            integratePositions(step.states, h);
-            for (int r = 0; r <= def.relaxIterations; ++r) {
-                solveWide(wide, step.states, invH, false, def.contactPushMaxSpeed, backward,
-                          reversePoints);
-            }
-        }
-        storeWide(wide, step.constraints, step.levelOrder, step.levelStart);
-        applyRestitution(step.constraints, step.states, def.restitutionThreshold, h);
-        return;
-    }
     for (int i = 0; i < def.subSteps; ++i) {
         integrateVelocities(step.sims, step.states, step.gravity, h, def.maxLinearSpeed);
         // Gauss-Seidel's order biases the result, so every group of four sub-steps runs all
@@ -112,6 +114,28 @@ void solveSoftStep(const SolverStep& step) {
         }
     }
     applyRestitution(step.constraints, step.states, def.restitutionThreshold, h);
+}
+
+void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLevel, int endLevel,
+                        std::span<const int> bodies, std::span<const WideRestitution> restitution) {
+    const SolverDef& def = *step.def;
+    float h = step.dt / static_cast<float>(def.subSteps);
+    float invH = 1.0f / h;
+    // The same passes and orders as solveSoftStep(); a backward sweep is the levels in reverse.
+    for (int i = 0; i < def.subSteps; ++i) {
+        integrateVelocities(step.sims, step.states, bodies, step.gravity, h, def.maxLinearSpeed);
+        bool backward = (i % 2) == 1;
+        bool reversePoints = ((i / 2) % 2) == 1;
+        warmStartWide(wide, firstLevel, endLevel, step.states);
+        solveWide(wide, firstLevel, endLevel, step.states, invH, true, def.contactPushMaxSpeed,
+                  backward, reversePoints);
+        integratePositions(step.states, bodies, h);
+        for (int r = 0; r <= def.relaxIterations; ++r) {
+            solveWide(wide, firstLevel, endLevel, step.states, invH, false,
+                      def.contactPushMaxSpeed, backward, reversePoints);
+        }
+    }
+    applyRestitutionWide(wide, restitution, step.states, def.restitutionThreshold, h);
 }
 
 void solveClassic(const SolverStep& step) {

@@ -20,13 +20,6 @@ struct SolverStep {
     Vec2 gravity{0.0f, 0.0f};
     float dt = 0.0f;
     const SolverDef* def = nullptr;
-    // Soft step only, optional: the constraints by level (ConstraintLevels), level k being
-    // levelOrder[levelStart[k] .. levelStart[k + 1]), already packed into `wide`
-    // (prepareWide(), or layoutWide() and packWideLane()); the contact passes then run four
-    // constraints at a time and give what the sweep in constraint order gives.
-    WideContacts* wide = nullptr;
-    std::span<const int> levelOrder{};
-    std::span<const int> levelStart{};
 };
 
 // Gravity, forces and damping over h seconds; speeds clamped to maxLinearSpeed.
@@ -34,9 +27,22 @@ void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> sta
                          float h, float maxLinearSpeed);
 // Accumulates each body's motion over h seconds into its deltaPosition/deltaRotation.
 void integratePositions(std::span<BodyState> states, float h);
+// The same for the bodies states[indices[i]] only.
+void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states,
+                         std::span<const int> indices, Vec2 gravity, float h, float maxLinearSpeed);
+void integratePositions(std::span<BodyState> states, std::span<const int> indices, float h);
 
 // Runs the velocity and position stages of one step; positions end in the states' deltas.
 void solveSoftStep(const SolverStep& step);
+// The soft step of one block of islands on the wide solver: levels [firstLevel, endLevel) of
+// `wide` (ConstraintLevels: the same sweep as constraint order, several constraints at a
+// time), the BodyState indices `bodies` (every body those constraints touch, and no body
+// another block's constraints touch), then restitution on `restitution` (the block's, in
+// constraint order). Blocks share no body, so running one through all sub-steps before the
+// next gives what running all of them sub-step by sub-step gives, and the block's
+// constraints and bodies stay in cache meanwhile. step.constraints is not used.
+void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLevel, int endLevel,
+                        std::span<const int> bodies, std::span<const WideRestitution> restitution);
 void solveClassic(const SolverStep& step);
 
 // Moves each sim by its state's deltas (centre, rotation, origin). A body that became

@@ -62,6 +62,7 @@ void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyVi
         cp.impactSeen = mp.separation <= kTouchingSeparation;
         cp.impactGap = cp.impactSeen ? mp.separation : 0.0f;
     }
+    prepareBlock(c);
 }
 
 void warmStartContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states) {
@@ -94,6 +95,45 @@ void warmStartContacts(std::span<ContactConstraint> constraints, std::span<BodyS
 
 namespace {
 
+// Where a point is now and the normal velocity it should have: a speculative point (apart)
+// closes its gap within this sub-step and no further; an overlapping one is pushed out softly
+// when useBias, not at all when relaxing.
+struct PointTarget {
+    float separation = 0.0f;
+    float bias = 0.0f;
+    float massScale = 1.0f;
+    float impulseScale = 0.0f;
+};
+
+inline PointTarget targetOf(const ContactConstraint& c, const ContactConstraintPoint& cp,
+                            const BodyState& a, const BodyState& b, float invH, bool useBias,
+                            float pushMaxSpeed) {
+    PointTarget t;
+    t.separation = currentSeparation(c, cp, a, b);
+    if (t.separation > 0.0f) {
+        t.bias = t.separation * invH;
+    } else if (useBias) {
+        t.bias = std::max(c.softness.biasRate * t.separation, -pushMaxSpeed);
+        t.massScale = c.softness.massScale;
+        t.impulseScale = c.softness.impulseScale;
+    }
+    return t;
+}
+
+// The first time a point approaches (vn: its normal velocity before this pass's impulse), its
+// approach speed at impact is this one, not the one at the start of the step (gravity kept
+// accelerating meanwhile).
+inline void noteImpact(ContactConstraintPoint& cp, float vn, float separation, float invH,
+                       bool useBias) {
+    if (!cp.impactSeen && vn + std::max(separation, 0.0f) * invH < 0.0f) {
+        cp.impactSeen = true;
+        cp.relativeVelocity = vn;
+        // The gap this velocity leads to at the end of the sub-step (positions move after the
+        // biased solve, before the relax), to pair it with its velocity.
+        cp.impactGap = useBias ? separation + vn / invH : separation;
+    }
+}
+
 // The point order is a template parameter: indexing the points through a run-time flag cost
 // 5 % more instructions per step (measured with callgrind on a base-40 pyramid).
 template <bool kReversePoints>
@@ -109,10 +149,6 @@ void solveContactsInOrder(std::span<ContactConstraint> constraints, std::span<Bo
         float wA = sa->angularVelocity;
         Vec2 vB = sb->linearVelocity;
         float wB = sb->angularVelocity;
-        Vec2 dpA = sa->deltaPosition;
-        Rot qA = sa->deltaRotation;
-        Vec2 dpB = sb->deltaPosition;
-        Rot qB = sb->deltaRotation;
         Vec2 normal = c.normal;
         Vec2 tangent = rightPerp(normal);
         Vec2 mA = c.invMassA;
@@ -121,36 +157,51 @@ void solveContactsInOrder(std::span<ContactConstraint> constraints, std::span<Bo
         float iB = c.invInertiaB;
         float totalNormalImpulse = 0.0f;
 
-        for (int j = 0; j < c.pointCount; ++j) {
+        if (c.blockSolve) {
+            ContactConstraintPoint& cp1 = c.points[0];
+            ContactConstraintPoint& cp2 = c.points[1];
+            PointTarget t1 = targetOf(c, cp1, *sa, *sb, invH, useBias, pushMaxSpeed);
+            PointTarget t2 = targetOf(c, cp2, *sa, *sb, invH, useBias, pushMaxSpeed);
+            Vec2 dv1 = (vB + cross(wB, cp1.anchorB)) - (vA + cross(wA, cp1.anchorA));
+            Vec2 dv2 = (vB + cross(wB, cp2.anchorB)) - (vA + cross(wA, cp2.anchorA));
+            Vec2 vn{dot(dv1, normal), dot(dv2, normal)};
+            noteImpact(cp1, vn.x, t1.separation, invH, useBias);
+            noteImpact(cp2, vn.y, t2.separation, invH, useBias);
+            // One point's soft update, k11 (x - lambda) = -massScale (vn + bias) -
+            // impulseScale k11 lambda, written for two: K (x - lambda) = -M (vn + bias) -
+            // I diag(K) lambda, with each point's own mass and impulse scales in the diagonal
+            // M and I (a speculative point's row is rigid). At rest each point then overlaps
+            // as it would alone (diag(K), not K, carries the load), and the block LCP solves it
+            // with vn + bias replaced by this right-hand side.
+            Vec2 old{cp1.normalImpulse, cp2.normalImpulse};
+            Vec2 rhs{t1.massScale * (vn.x + t1.bias) + t1.impulseScale * (c.blockK.a11 * old.x),
+                     t2.massScale * (vn.y + t2.bias) + t2.impulseScale * (c.blockK.a22 * old.y)};
+            Vec2 x = old;
+            solveBlock(c, old, rhs, x);
+            Vec2 d = x - old;
+            cp1.normalImpulse = x.x;
+            cp2.normalImpulse = x.y;
+            cp1.maxNormalImpulse = std::max(cp1.maxNormalImpulse, d.x);
+            cp2.maxNormalImpulse = std::max(cp2.maxNormalImpulse, d.y);
+            totalNormalImpulse = x.x + x.y;
+            Vec2 p1 = d.x * normal;
+            Vec2 p2 = d.y * normal;
+            vA -= scale(mA, p1 + p2);
+            wA -= iA * (cross(cp1.anchorA, p1) + cross(cp2.anchorA, p2));
+            vB += scale(mB, p1 + p2);
+            wB += iB * (cross(cp1.anchorB, p1) + cross(cp2.anchorB, p2));
+        }
+
+        for (int j = 0; j < (c.blockSolve ? 0 : c.pointCount); ++j) {
             ContactConstraintPoint& cp = c.points[kReversePoints ? c.pointCount - 1 - j : j];
-            Vec2 prA = rotate(qA, cp.anchorA);
-            Vec2 prB = rotate(qB, cp.anchorB);
-            float s = dot((dpB - dpA) + (prB - prA), normal) + cp.baseSeparation;
-            float bias = 0.0f;
-            float massScale = 1.0f;
-            float impulseScale = 0.0f;
-            if (s > 0.0f) {
-                // Speculative: let the gap close within this sub-step, no further.
-                bias = s * invH;
-            } else if (useBias) {
-                bias = std::max(c.softness.biasRate * s, -pushMaxSpeed);
-                massScale = c.softness.massScale;
-                impulseScale = c.softness.impulseScale;
-            }
+            PointTarget t = targetOf(c, cp, *sa, *sb, invH, useBias, pushMaxSpeed);
             Vec2 rA = cp.anchorA;
             Vec2 rB = cp.anchorB;
             Vec2 dv = (vB + cross(wB, rB)) - (vA + cross(wA, rA));
             float vn = dot(dv, normal);
-            if (!cp.impactSeen && vn + std::max(s, 0.0f) * invH < 0.0f) {
-                // The point starts to push now: the approach speed at impact is this one, not
-                // the one at the start of the step (gravity kept accelerating meanwhile).
-                cp.impactSeen = true;
-                cp.relativeVelocity = vn;
-                // The gap this velocity leads to at the end of the sub-step (positions move after
-                // the biased solve, before the relax), to pair it with its velocity.
-                cp.impactGap = useBias ? s + vn / invH : s;
-            }
-            float impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
+            noteImpact(cp, vn, t.separation, invH, useBias);
+            float impulse =
+                -cp.normalMass * t.massScale * (vn + t.bias) - t.impulseScale * cp.normalImpulse;
             float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
             impulse = newImpulse - cp.normalImpulse;
             cp.normalImpulse = newImpulse;

@@ -44,9 +44,9 @@ struct BlockMatrix {
     float a22 = 0.0f;
 };
 
-// Classic mode solves a 2-point manifold's normal impulses together only while K's condition
-// number (estimated as k11^2 / det K) stays below this; above it one point is kept (Box2D 2.4's
-// value).
+// A 2-point manifold's normal impulses are solved together only while K's condition number
+// (estimated as k11^2 / det K) stays below this (Box2D 2.4's value); above it the classic mode
+// keeps one point and the soft step solves the two one after the other.
 inline constexpr float kMaxBlockConditionNumber = 1000.0f;
 
 struct ContactConstraint {
@@ -65,8 +65,9 @@ struct ContactConstraint {
     // pressing). Restitution uses it to bounce to the height the integrator would reach.
     float pressAcceleration = 0.0f;
     Softness softness{};
-    // Classic mode: the normal effective-mass matrix of a 2-point manifold and its inverse,
-    // set by prepareClassic() when blockSolve.
+    // The normal effective-mass matrix of a 2-point manifold and its inverse, set by
+    // prepareContact() when blockSolve (well-conditioned): both modes then solve the two normal
+    // impulses together (solveBlock() in contact_solver_common.hpp).
     BlockMatrix blockK{};
     BlockMatrix blockInvK{};
     bool blockSolve = false;
@@ -92,17 +93,20 @@ struct ContactMaterial {
     float rollingResistance = 0.0f;
 };
 
-// Fills `c` from the manifold (impulses warm-start from the manifold's stored ones).
+// Fills `c` from the manifold (impulses warm-start from the manifold's stored ones), with the
+// block matrix of a 2-point manifold (prepareBlock()).
 void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyView& a,
                     const ContactBodyView& b, const ContactMaterial& material, Softness softness);
 
 // Soft step.
 void warmStartContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states);
 // useBias: push overlapping points apart with the soft bias (solve) or not (relax).
-// Speculative points (separation > 0) keep their bias either way. Gauss-Seidel favours
-// whatever it solves last, so the order alternates (see solveSoftStep()): backward visits the
-// constraints last to first; reversePoints solves each constraint's normal points last to
-// first.
+// Speculative points (separation > 0) keep their bias either way. A blockSolve manifold solves
+// its two normal impulses together (one point's soft update written for two, see
+// solveContactsInOrder()), so neither point is favoured. Other manifolds go point by point, and
+// Gauss-Seidel favours whatever it solves last, so the order alternates (see solveSoftStep()):
+// backward visits the constraints last to first; reversePoints solves each constraint's normal
+// points last to first.
 void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states,
                    float invH, bool useBias, float pushMaxSpeed, bool backward = false,
                    bool reversePoints = false);
@@ -110,10 +114,10 @@ void solveContacts(std::span<ContactConstraint> constraints, std::span<BodyState
 void applyRestitution(std::span<ContactConstraint> constraints, std::span<BodyState> states,
                       float threshold, float h);
 
-// Classic. prepareClassic() sets the restitution targets from relativeVelocity and, for
-// 2-point manifolds, the block matrix (or drops to one point when it is ill-conditioned).
-// solveVelocitiesClassic() then solves both normal impulses of such a manifold as one 2x2
-// linear complementarity problem (contact_solver_classic.cpp).
+// Classic. prepareClassic() sets the restitution targets from relativeVelocity and drops an
+// ill-conditioned 2-point manifold to one point. solveVelocitiesClassic() then solves both normal
+// impulses of a 2-point manifold as one 2x2 linear complementarity problem
+// (contact_solver_classic.cpp).
 void prepareClassic(std::span<ContactConstraint> constraints, float restitutionThreshold);
 void solveVelocitiesClassic(std::span<ContactConstraint> constraints, std::span<BodyState> states,
                             float invDt);

@@ -26,31 +26,10 @@ void prepareClassic(std::span<ContactConstraint> constraints, float restitutionT
                 cp.velocityBias = -c.restitution * cp.relativeVelocity;
             }
         }
-        c.blockSolve = false;
-        if (c.pointCount != 2) {
-            continue;
-        }
-        // K: how each point's normal impulse changes both points' normal velocities.
-        Vec2 n = c.normal;
-        Vec2 nn{n.x * n.x, n.y * n.y};
-        float linear = dot(c.invMassA + c.invMassB, nn);
-        float rn1A = cross(c.points[0].anchorA, n);
-        float rn1B = cross(c.points[0].anchorB, n);
-        float rn2A = cross(c.points[1].anchorA, n);
-        float rn2B = cross(c.points[1].anchorB, n);
-        float k11 = linear + c.invInertiaA * rn1A * rn1A + c.invInertiaB * rn1B * rn1B;
-        float k22 = linear + c.invInertiaA * rn2A * rn2A + c.invInertiaB * rn2B * rn2B;
-        float k12 = linear + c.invInertiaA * rn1A * rn2A + c.invInertiaB * rn1B * rn2B;
-        float det = k11 * k22 - k12 * k12;
-        if (k11 * k11 < kMaxBlockConditionNumber * det) {
-            c.blockSolve = true;
-            c.blockK = {k11, k12, k22};
-            float invDet = 1.0f / det;
-            c.blockInvK = {invDet * k22, -invDet * k12, invDet * k11};
-        } else {
-            // The two rows are (nearly) the same constraint, e.g. a body that cannot rotate:
-            // solving both would be ill-conditioned, one point carries the load. Its warm
-            // start takes the dropped point's impulse so the total stays.
+        if (c.pointCount == 2 && !c.blockSolve) {
+            // The two rows are (nearly) the same constraint, e.g. a body that cannot rotate
+            // (see prepareBlock()): one point carries the load. Its warm start takes the
+            // dropped point's impulse so the total stays.
             c.points[0].normalImpulse += c.points[1].normalImpulse;
             c.points[0].tangentImpulse += c.points[1].tangentImpulse;
             c.points[1].normalImpulse = 0.0f;
@@ -68,46 +47,6 @@ inline float normalTarget(const ContactConstraint& c, const ContactConstraintPoi
                           float invDt) {
     float s = dot(cp.anchorB - cp.anchorA, c.normal) + cp.baseSeparation;
     return s > 0.0f ? -s * invDt : cp.velocityBias;
-}
-
-// Both normal impulses of a 2-point manifold at once: the linear complementarity problem
-// vn = K x + b, x >= 0, vn >= 0, x . vn = 0 in terms of the accumulated impulses x (vn here is
-// the normal velocity above its target). With two points it has four cases (both, only the
-// first, only the second, or no point pushing); the first whose solution is feasible wins.
-// Returns the accumulated impulses; when no case is feasible (round-off) they stay as they are.
-inline Vec2 solveBlock(const ContactConstraint& c, Vec2 accumulated, Vec2 vn) {
-    const BlockMatrix& k = c.blockK;
-    // b: the velocities above target with no accumulated impulse at all.
-    Vec2 b{vn.x - (k.a11 * accumulated.x + k.a12 * accumulated.y),
-           vn.y - (k.a12 * accumulated.x + k.a22 * accumulated.y)};
-
-    // Both push: vn = 0.
-    const BlockMatrix& inv = c.blockInvK;
-    Vec2 x{-(inv.a11 * b.x + inv.a12 * b.y), -(inv.a12 * b.x + inv.a22 * b.y)};
-    if (x.x >= 0.0f && x.y >= 0.0f) {
-        return x;
-    }
-    // Only the first pushes: vn1 = 0, x2 = 0, vn2 >= 0.
-    if (k.a11 > 0.0f) {
-        float x1 = -b.x / k.a11;
-        float vn2 = k.a12 * x1 + b.y;
-        if (x1 >= 0.0f && vn2 >= 0.0f) {
-            return {x1, 0.0f};
-        }
-    }
-    // Only the second pushes.
-    if (k.a22 > 0.0f) {
-        float x2 = -b.y / k.a22;
-        float vn1 = k.a12 * x2 + b.x;
-        if (x2 >= 0.0f && vn1 >= 0.0f) {
-            return {0.0f, x2};
-        }
-    }
-    // Neither pushes: both separate on their own.
-    if (b.x >= 0.0f && b.y >= 0.0f) {
-        return {0.0f, 0.0f};
-    }
-    return accumulated;
 }
 
 } // namespace
@@ -140,7 +79,8 @@ void solveVelocitiesClassic(std::span<ContactConstraint> constraints, std::span<
             Vec2 vn{dot(dv1, normal) - normalTarget(c, cp1, invDt),
                     dot(dv2, normal) - normalTarget(c, cp2, invDt)};
             Vec2 old{cp1.normalImpulse, cp2.normalImpulse};
-            Vec2 x = solveBlock(c, old, vn);
+            Vec2 x = old;
+            solveBlock(c, old, vn, x);
             Vec2 d = x - old;
             cp1.normalImpulse = x.x;
             cp2.normalImpulse = x.y;

@@ -22,6 +22,74 @@ inline float effectiveMass(Vec2 axis, Vec2 rA, Vec2 rB, const ContactConstraint&
     return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
+// Sets blockK, blockInvK and blockSolve for a 2-point manifold (blockSolve false for any other).
+// K says how each point's normal impulse changes both points' normal velocities. Its condition
+// number, estimated as k11^2 / det K, must stay below kMaxBlockConditionNumber: above it the two
+// rows are (nearly) the same constraint, e.g. a body that cannot rotate, and the block would be
+// ill-conditioned.
+inline void prepareBlock(ContactConstraint& c) {
+    c.blockSolve = false;
+    if (c.pointCount != 2) {
+        return;
+    }
+    Vec2 n = c.normal;
+    Vec2 nn{n.x * n.x, n.y * n.y};
+    float linear = dot(c.invMassA + c.invMassB, nn);
+    float rn1A = cross(c.points[0].anchorA, n);
+    float rn1B = cross(c.points[0].anchorB, n);
+    float rn2A = cross(c.points[1].anchorA, n);
+    float rn2B = cross(c.points[1].anchorB, n);
+    float k11 = linear + c.invInertiaA * rn1A * rn1A + c.invInertiaB * rn1B * rn1B;
+    float k22 = linear + c.invInertiaA * rn2A * rn2A + c.invInertiaB * rn2B * rn2B;
+    float k12 = linear + c.invInertiaA * rn1A * rn2A + c.invInertiaB * rn1B * rn2B;
+    float det = k11 * k22 - k12 * k12;
+    if (k11 * k11 < kMaxBlockConditionNumber * det) {
+        c.blockSolve = true;
+        c.blockK = {k11, k12, k22};
+        float invDet = 1.0f / det;
+        c.blockInvK = {invDet * k22, -invDet * k12, invDet * k11};
+    }
+}
+
+// Both normal impulses of a 2-point manifold at once: the linear complementarity problem
+// vn = K x + b, x >= 0, vn >= 0, x . vn = 0 in terms of the accumulated impulses x (vn here is
+// the normal velocity above its target). With two points it has four cases (both, only the
+// first, only the second, or no point pushing); the first whose solution is feasible goes to
+// `x` and true is returned. When none is feasible (round-off), false, and `x` is left alone.
+inline bool solveBlock(const ContactConstraint& c, Vec2 accumulated, Vec2 vn, Vec2& x) {
+    // Both push: vn = 0, reached from the accumulated impulses by -K^-1 vn (the common case of a
+    // resting pile, so it comes first and alone).
+    const BlockMatrix& inv = c.blockInvK;
+    Vec2 both{accumulated.x - (inv.a11 * vn.x + inv.a12 * vn.y),
+              accumulated.y - (inv.a12 * vn.x + inv.a22 * vn.y)};
+    if (both.x >= 0.0f && both.y >= 0.0f) {
+        x = both;
+        return true;
+    }
+    // b: the velocities above target with no accumulated impulse at all.
+    const BlockMatrix& k = c.blockK;
+    Vec2 b{vn.x - (k.a11 * accumulated.x + k.a12 * accumulated.y),
+           vn.y - (k.a12 * accumulated.x + k.a22 * accumulated.y)};
+    // Only the first pushes: vn1 = 0, x2 = 0, vn2 >= 0 (normalMass = 1 / k11: no division).
+    float x1 = -b.x * c.points[0].normalMass;
+    if (x1 >= 0.0f && k.a12 * x1 + b.y >= 0.0f) {
+        x = {x1, 0.0f};
+        return true;
+    }
+    // Only the second pushes.
+    float x2 = -b.y * c.points[1].normalMass;
+    if (x2 >= 0.0f && k.a12 * x2 + b.x >= 0.0f) {
+        x = {0.0f, x2};
+        return true;
+    }
+    // Neither pushes: both separate on their own.
+    if (b.x >= 0.0f && b.y >= 0.0f) {
+        x = {0.0f, 0.0f};
+        return true;
+    }
+    return false;
+}
+
 // A static body has no state; its constraints read and write this zero one instead. Writes
 // are harmless: a static side has zero inverse mass, so nothing is ever added to it.
 struct StatePair {

@@ -5,36 +5,20 @@
 #include <cstddef>
 #include <cstring>
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 namespace e2d::physics::detail {
 
 namespace {
 
-// mask ? a : b, lane by lane (mask lanes are all ones or all zeros).
-inline Float4 select(Int4 mask, Float4 a, Float4 b) {
-    return std::bit_cast<Float4>((mask & std::bit_cast<Int4>(a)) | (~mask & std::bit_cast<Int4>(b)));
-}
-// std::max and std::min, lane by lane, with their exact semantics (first argument on ties).
-inline Float4 maxOf(Float4 a, Float4 b) { return select(a < b, b, a); }
-inline Float4 splat(float x) { return Float4{x, x, x, x}; }
-
 // A static side (index -1) reads a resting state and writes nothing.
 const BodyState kStaticState{};
 
-struct WideBody {
-    Float4 vx, vy, w, flags;
-    Float4 dpx, dpy, qc, qs;
-};
-
-inline void lanesOf(const int index[kLanes], std::span<BodyState> states,
-                    const BodyState* (&out)[kLanes]) {
-    for (int i = 0; i < kLanes; ++i) {
-        out[i] = index[i] >= 0 ? &states[static_cast<std::size_t>(index[i])] : &kStaticState;
-    }
-}
-
 // BodyState is two 16-byte rows, {vx, vy, w, flags} and {dpx, dpy, qc, qs}: a lane's row is one
-// load, and four rows transpose into four lane vectors (and back) with shuffles only, which
-// move bits unchanged (flags included).
+// load, and rows transpose into lane vectors (and back) with shuffles only, which move bits
+// unchanged (flags included).
 static_assert(sizeof(BodyState) == 32, "BodyState must stay two 16-byte rows");
 static_assert(offsetof(BodyState, linearVelocity) == 0 && offsetof(BodyState, angularVelocity) == 8 &&
                   offsetof(BodyState, deltaPosition) == 16 && offsetof(BodyState, deltaRotation) == 24,
@@ -46,208 +30,139 @@ inline Float4 loadRow(const BodyState* s, std::size_t offset) {
     return row;
 }
 
-inline void transpose(Float4 r0, Float4 r1, Float4 r2, Float4 r3, Float4& c0, Float4& c1,
-                      Float4& c2, Float4& c3) {
-    Float4 t0 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
-    Float4 t1 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
-    Float4 t2 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
-    Float4 t3 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
+inline void storeRow(BodyState& s, Float4 row) {
+    // BodyState is trivially copyable: its first row takes the lane whole.
+    std::memcpy(reinterpret_cast<unsigned char*>(&s), &row, sizeof row);
+}
+
+namespace lanes4 {
+
+#define E2D_WIDE_FN inline
+constexpr int N = 4;
+using F = Float4;
+using I = Int4;
+
+inline F splat(float x) { return F{x, x, x, x}; }
+// mask ? a : b, lane by lane (mask lanes are all ones or all zeros).
+inline F select(I mask, F a, F b) {
+    return std::bit_cast<F>((mask & std::bit_cast<I>(a)) | (~mask & std::bit_cast<I>(b)));
+}
+// std::max(a, b) lane by lane, with its exact semantics (a on ties and NaNs): MAXPS returns
+// its second operand unless the first is greater, which is the same rule with the operands
+// swapped.
+inline F maxOf(F a, F b) {
+#if defined(__x86_64__)
+    return _mm_max_ps(b, a);
+#else
+    return select(a < b, b, a);
+#endif
+}
+inline bool anyLane(I mask) {
+#if defined(__x86_64__)
+    return _mm_movemask_ps(std::bit_cast<__m128>(mask)) != 0;
+#else
+    return (mask[0] | mask[1] | mask[2] | mask[3]) != 0;
+#endif
+}
+inline bool allLanes(I mask) {
+#if defined(__x86_64__)
+    return _mm_movemask_ps(std::bit_cast<__m128>(mask)) == 0xF;
+#else
+    return (mask[0] & mask[1] & mask[2] & mask[3]) == -1;
+#endif
+}
+
+inline void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {
+    F t0 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
+    F t1 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
+    F t2 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
+    F t3 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
     c0 = __builtin_shufflevector(t0, t1, 0, 1, 4, 5);
     c1 = __builtin_shufflevector(t0, t1, 2, 3, 6, 7);
     c2 = __builtin_shufflevector(t2, t3, 0, 1, 4, 5);
     c3 = __builtin_shufflevector(t2, t3, 2, 3, 6, 7);
 }
 
-inline WideBody gatherVelocities(const BodyState* const (&s)[kLanes]) {
-    WideBody b;
-    transpose(loadRow(s[0], 0), loadRow(s[1], 0), loadRow(s[2], 0), loadRow(s[3], 0), b.vx, b.vy,
-              b.w, b.flags);
-    return b;
+inline void loadRows(const BodyState* const (&s)[N], std::size_t offset, F& c0, F& c1, F& c2,
+                     F& c3) {
+    transposeRows(loadRow(s[0], offset), loadRow(s[1], offset), loadRow(s[2], offset),
+                  loadRow(s[3], offset), c0, c1, c2, c3);
 }
 
-inline void gatherDeltas(WideBody& b, const BodyState* const (&s)[kLanes]) {
-    transpose(loadRow(s[0], 16), loadRow(s[1], 16), loadRow(s[2], 16), loadRow(s[3], 16), b.dpx,
-              b.dpy, b.qc, b.qs);
-}
-
-inline void scatterVelocities(const WideBody& b, const int index[kLanes],
-                              std::span<BodyState> states) {
-    Float4 rows[kLanes];
-    transpose(b.vx, b.vy, b.w, b.flags, rows[0], rows[1], rows[2], rows[3]);
-    for (int i = 0; i < kLanes; ++i) {
-        if (index[i] >= 0) {
-            // BodyState is trivially copyable: its first row takes the lane whole.
-            std::memcpy(reinterpret_cast<unsigned char*>(&states[static_cast<std::size_t>(index[i])]),
-                        &rows[i], sizeof rows[i]);
-        }
+inline void storeRows(F c0, F c1, F c2, F c3, BodyState* const (&out)[N]) {
+    F rows[N];
+    transposeRows(c0, c1, c2, c3, rows[0], rows[1], rows[2], rows[3]);
+    for (int i = 0; i < N; ++i) {
+        storeRow(*out[i], rows[i]);
     }
 }
 
-void warmStartOne(const WideConstraint& c, std::span<BodyState> states) {
-    const BodyState* sa[kLanes];
-    const BodyState* sb[kLanes];
-    lanesOf(c.indexA, states, sa);
-    lanesOf(c.indexB, states, sb);
-    WideBody a = gatherVelocities(sa);
-    WideBody b = gatherVelocities(sb);
-    const Float4 nx = c.normalX;
-    const Float4 ny = c.normalY;
-    const Float4 tx = ny;
-    const Float4 ty = -nx;
-    for (const WidePoint& cp : c.points) {
-        Float4 px = cp.normalImpulse * nx + cp.tangentImpulse * tx;
-        Float4 py = cp.normalImpulse * ny + cp.tangentImpulse * ty;
-        a.w = a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px);
-        a.vx = a.vx - c.invMassAx * px;
-        a.vy = a.vy - c.invMassAy * py;
-        b.w = b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px);
-        b.vx = b.vx + c.invMassBx * px;
-        b.vy = b.vy + c.invMassBy * py;
-    }
-    scatterVelocities(a, c.indexA, states);
-    scatterVelocities(b, c.indexB, states);
+#include "contact_solver_wide_kernel.inl"
+
+#undef E2D_WIDE_FN
+
+} // namespace lanes4
+
+#if defined(__x86_64__)
+#define E2D_HAS_WIDE8 1
+
+namespace lanes8 {
+
+// No "fma": a fused multiply-add rounds once where the scalar code rounds twice.
+#define E2D_WIDE_FN __attribute__((target("avx2"))) inline
+constexpr int N = 8;
+using F = Float8;
+using I = Int8;
+
+E2D_WIDE_FN F splat(float x) { return F{x, x, x, x, x, x, x, x}; }
+E2D_WIDE_FN F select(I mask, F a, F b) {
+    return _mm256_blendv_ps(b, a, (__m256)mask);
+}
+E2D_WIDE_FN F maxOf(F a, F b) { return _mm256_max_ps(b, a); }
+E2D_WIDE_FN bool anyLane(I mask) { return _mm256_movemask_ps((__m256)mask) != 0; }
+E2D_WIDE_FN bool allLanes(I mask) { return _mm256_movemask_ps((__m256)mask) == 0xFF; }
+
+// Rows k and k + 4 share a vector (low and high half); the halves transpose independently.
+E2D_WIDE_FN void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {
+    F t0 = __builtin_shufflevector(r0, r1, 0, 8, 1, 9, 4, 12, 5, 13);
+    F t1 = __builtin_shufflevector(r2, r3, 0, 8, 1, 9, 4, 12, 5, 13);
+    F t2 = __builtin_shufflevector(r0, r1, 2, 10, 3, 11, 6, 14, 7, 15);
+    F t3 = __builtin_shufflevector(r2, r3, 2, 10, 3, 11, 6, 14, 7, 15);
+    c0 = __builtin_shufflevector(t0, t1, 0, 1, 8, 9, 4, 5, 12, 13);
+    c1 = __builtin_shufflevector(t0, t1, 2, 3, 10, 11, 6, 7, 14, 15);
+    c2 = __builtin_shufflevector(t2, t3, 0, 1, 8, 9, 4, 5, 12, 13);
+    c3 = __builtin_shufflevector(t2, t3, 2, 3, 10, 11, 6, 7, 14, 15);
 }
 
-template <bool kReversePoints>
-void solveOne(WideConstraint& c, std::span<BodyState> states, float invH, bool useBias,
-              float pushMaxSpeed) {
-    const BodyState* sa[kLanes];
-    const BodyState* sb[kLanes];
-    lanesOf(c.indexA, states, sa);
-    lanesOf(c.indexB, states, sb);
-    WideBody a = gatherVelocities(sa);
-    WideBody b = gatherVelocities(sb);
-    gatherDeltas(a, sa);
-    gatherDeltas(b, sb);
-    const Float4 nx = c.normalX;
-    const Float4 ny = c.normalY;
-    const Float4 tx = ny;
-    const Float4 ty = -nx;
-    const Float4 zero = splat(0.0f);
-    const Float4 one = splat(1.0f);
-    const Float4 vInvH = splat(invH);
-
-    // Reversed, a one-point lane meets its empty second point first: zero normal mass, no
-    // impulse, the same result as the scalar pass that skips it.
-    for (int j = 0; j < 2; ++j) {
-        WidePoint& cp = c.points[kReversePoints ? 1 - j : j];
-        Float4 prAx = a.qc * cp.anchorAx - a.qs * cp.anchorAy;
-        Float4 prAy = a.qs * cp.anchorAx + a.qc * cp.anchorAy;
-        Float4 prBx = b.qc * cp.anchorBx - b.qs * cp.anchorBy;
-        Float4 prBy = b.qs * cp.anchorBx + b.qc * cp.anchorBy;
-        Float4 dx = (b.dpx - a.dpx) + (prBx - prAx);
-        Float4 dy = (b.dpy - a.dpy) + (prBy - prAy);
-        Float4 s = (dx * nx + dy * ny) + cp.baseSeparation;
-
-        Int4 speculative = s > zero;
-        Float4 bias;
-        Float4 massScale;
-        Float4 impulseScale;
-        if (useBias) {
-            bias = select(speculative, s * vInvH, maxOf(c.biasRate * s, splat(-pushMaxSpeed)));
-            massScale = select(speculative, one, c.massScale);
-            impulseScale = select(speculative, zero, c.impulseScale);
-        } else {
-            bias = select(speculative, s * vInvH, zero);
-            massScale = one;
-            impulseScale = zero;
-        }
-
-        Float4 dvx = (b.vx + (-b.w) * cp.anchorBy) - (a.vx + (-a.w) * cp.anchorAy);
-        Float4 dvy = (b.vy + b.w * cp.anchorBx) - (a.vy + a.w * cp.anchorAx);
-        Float4 vn = dvx * nx + dvy * ny;
-
-        Int4 impact = ~cp.impactSeen & (vn + maxOf(s, zero) * vInvH < zero);
-        // Rare once a pile has settled: skip the stores (and the division) when no lane hits.
-        if ((impact[0] | impact[1] | impact[2] | impact[3]) != 0) {
-            cp.impactSeen |= impact;
-            cp.relativeVelocity = select(impact, vn, cp.relativeVelocity);
-            cp.impactGap = select(impact, useBias ? s + vn / vInvH : s, cp.impactGap);
-        }
-
-        Float4 impulse = (-cp.normalMass) * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
-        Float4 newImpulse = maxOf(cp.normalImpulse + impulse, zero);
-        impulse = newImpulse - cp.normalImpulse;
-        cp.normalImpulse = newImpulse;
-        cp.maxNormalImpulse = maxOf(cp.maxNormalImpulse, impulse);
-        Float4 px = impulse * nx;
-        Float4 py = impulse * ny;
-        a.vx = a.vx - c.invMassAx * px;
-        a.vy = a.vy - c.invMassAy * py;
-        a.w = a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px);
-        b.vx = b.vx + c.invMassBx * px;
-        b.vy = b.vy + c.invMassBy * py;
-        b.w = b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px);
-    }
-
-    // Friction, as solveFriction() does it.
-    for (WidePoint& cp : c.points) {
-        Float4 dvx = (b.vx + (-b.w) * cp.anchorBy) - (a.vx + (-a.w) * cp.anchorAy);
-        Float4 dvy = (b.vy + b.w * cp.anchorBx) - (a.vy + a.w * cp.anchorAx);
-        Float4 impulse = -cp.tangentMass * (dvx * tx + dvy * ty);
-        Float4 maxFriction = c.friction * cp.normalImpulse;
-        // std::clamp(v, lo, hi): v < lo ? lo : (hi < v ? hi : v)
-        Float4 v = cp.tangentImpulse + impulse;
-        Float4 lo = -maxFriction;
-        Float4 newImpulse = select(v < lo, lo, select(maxFriction < v, maxFriction, v));
-        impulse = newImpulse - cp.tangentImpulse;
-        cp.tangentImpulse = newImpulse;
-        Float4 px = impulse * tx;
-        Float4 py = impulse * ty;
-        a.vx = a.vx - c.invMassAx * px;
-        a.vy = a.vy - c.invMassAy * py;
-        a.w = a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px);
-        b.vx = b.vx + c.invMassBx * px;
-        b.vy = b.vy + c.invMassBy * py;
-        b.w = b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px);
-    }
-
-    scatterVelocities(a, c.indexA, states);
-    scatterVelocities(b, c.indexB, states);
+E2D_WIDE_FN F joinRows(const BodyState* low, const BodyState* high, std::size_t offset) {
+    return __builtin_shufflevector(loadRow(low, offset), loadRow(high, offset), 0, 1, 2, 3, 4, 5,
+                                   6, 7);
 }
 
-// The constraints of a level lie scattered over the whole array (a level takes a few from
-// every island): fetch the ones a few lanes ahead while this one is copied.
-constexpr int kPrefetchAhead = 16;
+E2D_WIDE_FN void loadRows(const BodyState* const (&s)[N], std::size_t offset, F& c0, F& c1, F& c2,
+                          F& c3) {
+    transposeRows(joinRows(s[0], s[4], offset), joinRows(s[1], s[5], offset),
+                  joinRows(s[2], s[6], offset), joinRows(s[3], s[7], offset), c0, c1, c2, c3);
+}
 
-inline void prefetchConstraint(std::span<const ContactConstraint> constraints,
-                               std::span<const int> levelOrder, int slot) {
-    if (slot < static_cast<int>(levelOrder.size())) {
-        const auto* p = reinterpret_cast<const char*>(
-            &constraints[static_cast<std::size_t>(levelOrder[static_cast<std::size_t>(slot)])]);
-        for (std::size_t offset = 0; offset < sizeof(ContactConstraint); offset += 64) {
-            __builtin_prefetch(p + offset);
-        }
+E2D_WIDE_FN void storeRows(F c0, F c1, F c2, F c3, BodyState* const (&out)[N]) {
+    F rows[4];
+    transposeRows(c0, c1, c2, c3, rows[0], rows[1], rows[2], rows[3]);
+    for (int i = 0; i < 4; ++i) {
+        storeRow(*out[i], __builtin_shufflevector(rows[i], rows[i], 0, 1, 2, 3));
+        storeRow(*out[i + 4], __builtin_shufflevector(rows[i], rows[i], 4, 5, 6, 7));
     }
 }
 
-} // namespace
+#include "contact_solver_wide_kernel.inl"
 
-void layoutWide(WideContacts& wide, std::span<const int> levelStart) {
-    const std::size_t levelCount = levelStart.empty() ? 0 : levelStart.size() - 1;
-    wide.levelStart.assign(levelCount + 1, 0);
-    int groups = 0;
-    for (std::size_t k = 0; k < levelCount; ++k) {
-        wide.levelStart[k] = groups;
-        groups += (levelStart[k + 1] - levelStart[k] + kLanes - 1) / kLanes;
-    }
-    wide.levelStart[levelCount] = groups;
-    wide.constraints.resize(static_cast<std::size_t>(groups));
-    // The lanes past a level's last constraint stay empty: no bodies, no mass, so every impulse
-    // they compute is zero.
-    for (std::size_t k = 0; k < levelCount; ++k) {
-        const int count = levelStart[k + 1] - levelStart[k];
-        if (count % kLanes == 0) {
-            continue;
-        }
-        WideConstraint& w = wide.constraints[static_cast<std::size_t>(wide.levelStart[k + 1] - 1)];
-        for (int lane = count % kLanes; lane < kLanes; ++lane) {
-            packWideLane(w, lane, ContactConstraint{});
-        }
-    }
-}
+#undef E2D_WIDE_FN
 
-void packWideLane(WideConstraint& w, int lane, const ContactConstraint& c) {
+} // namespace lanes8
+#endif
+
+template <int N>
+void packLane(WideConstraintT<N>& w, int lane, const ContactConstraint& c) {
     w.indexA[lane] = c.indexA;
     w.indexB[lane] = c.indexB;
     w.normalX[lane] = c.normal.x;
@@ -262,10 +177,19 @@ void packWideLane(WideConstraint& w, int lane, const ContactConstraint& c) {
     w.biasRate[lane] = c.softness.biasRate;
     w.massScale[lane] = c.softness.massScale;
     w.impulseScale[lane] = c.softness.impulseScale;
+    const BlockMatrix k = c.blockSolve ? c.blockK : BlockMatrix{1.0f, 0.0f, 1.0f};
+    const BlockMatrix inv = c.blockSolve ? c.blockInvK : BlockMatrix{1.0f, 0.0f, 1.0f};
+    w.k11[lane] = k.a11;
+    w.k12[lane] = k.a12;
+    w.k22[lane] = k.a22;
+    w.inv11[lane] = inv.a11;
+    w.inv12[lane] = inv.a12;
+    w.inv22[lane] = inv.a22;
+    w.blockSolve[lane] = c.blockSolve ? -1 : 0;
     for (int i = 0; i < 2; ++i) {
         // A missing second point has no mass: its impulses stay zero.
         const ContactConstraintPoint cp = i < c.pointCount ? c.points[i] : ContactConstraintPoint{};
-        WidePoint& wp = w.points[i];
+        WidePointT<N>& wp = w.points[i];
         wp.anchorAx[lane] = cp.anchorA.x;
         wp.anchorAy[lane] = cp.anchorA.y;
         wp.anchorBx[lane] = cp.anchorB.x;
@@ -282,36 +206,49 @@ void packWideLane(WideConstraint& w, int lane, const ContactConstraint& c) {
     }
 }
 
-void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constraints,
-                 std::span<const int> levelOrder, std::span<const int> levelStart) {
-    layoutWide(wide, levelStart);
+template <int N>
+void layoutLanes(std::vector<WideConstraintT<N>>& groups, std::vector<int>& wideStart,
+                 std::span<const int> levelStart) {
     const std::size_t levelCount = levelStart.empty() ? 0 : levelStart.size() - 1;
+    wideStart.assign(levelCount + 1, 0);
+    int count = 0;
     for (std::size_t k = 0; k < levelCount; ++k) {
-        for (int slot = levelStart[k]; slot < levelStart[k + 1]; ++slot) {
-            prefetchConstraint(constraints, levelOrder, slot + kPrefetchAhead);
-            const int at = slot - levelStart[k];
-            packWideLane(wide.constraints[static_cast<std::size_t>(wide.levelStart[k] + at / kLanes)],
-                         at % kLanes,
-                         constraints[static_cast<std::size_t>(levelOrder[static_cast<std::size_t>(slot)])]);
+        wideStart[k] = count;
+        count += (levelStart[k + 1] - levelStart[k] + N - 1) / N;
+    }
+    wideStart[levelCount] = count;
+    groups.resize(static_cast<std::size_t>(count));
+    // The lanes past a level's last constraint stay empty: no bodies, no mass, so every impulse
+    // they compute is zero.
+    for (std::size_t k = 0; k < levelCount; ++k) {
+        const int inLevel = levelStart[k + 1] - levelStart[k];
+        if (inLevel % N == 0) {
+            continue;
+        }
+        WideConstraintT<N>& w = groups[static_cast<std::size_t>(wideStart[k + 1] - 1)];
+        for (int lane = inLevel % N; lane < N; ++lane) {
+            packLane(w, lane, ContactConstraint{});
+            w.blockSolve[lane] = -1;
         }
     }
 }
 
-void storeWide(const WideContacts& wide, std::span<ContactConstraint> constraints,
-               std::span<const int> levelOrder, std::span<const int> levelStart) {
+template <int N>
+void storeLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
+                std::span<ContactConstraint> constraints, std::span<const int> levelOrder,
+                std::span<const int> levelStart) {
     const std::size_t levelCount = levelStart.empty() ? 0 : levelStart.size() - 1;
     for (std::size_t k = 0; k < levelCount; ++k) {
         const int end = levelStart[k + 1];
-        int g = wide.levelStart[k];
-        for (int first = levelStart[k]; first < end; first += kLanes, ++g) {
-            const WideConstraint& w = wide.constraints[static_cast<std::size_t>(g)];
-            for (int lane = 0; lane < kLanes && first + lane < end; ++lane) {
-                prefetchConstraint(constraints, levelOrder, first + lane + kPrefetchAhead);
+        int g = wideStart[k];
+        for (int first = levelStart[k]; first < end; first += N, ++g) {
+            const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
+            for (int lane = 0; lane < N && first + lane < end; ++lane) {
                 ContactConstraint& c =
                     constraints[static_cast<std::size_t>(levelOrder[static_cast<std::size_t>(first + lane)])];
                 for (int i = 0; i < c.pointCount; ++i) {
                     ContactConstraintPoint& cp = c.points[i];
-                    const WidePoint& wp = w.points[i];
+                    const WidePointT<N>& wp = w.points[i];
                     cp.relativeVelocity = wp.relativeVelocity[lane];
                     cp.normalImpulse = wp.normalImpulse[lane];
                     cp.tangentImpulse = wp.tangentImpulse[lane];
@@ -324,41 +261,172 @@ void storeWide(const WideContacts& wide, std::span<ContactConstraint> constraint
     }
 }
 
-void warmStartWide(const WideContacts& wide, std::span<BodyState> states) {
-    for (const WideConstraint& c : wide.constraints) {
-        warmStartOne(c, states);
+template <int N>
+void unpackLane(const WideConstraintT<N>& w, int lane, ContactConstraint& c) {
+    c.indexA = w.indexA[lane];
+    c.indexB = w.indexB[lane];
+    c.normal = {w.normalX[lane], w.normalY[lane]};
+    c.invMassA = {w.invMassAx[lane], w.invMassAy[lane]};
+    c.invMassB = {w.invMassBx[lane], w.invMassBy[lane]};
+    c.invInertiaA = w.invInertiaA[lane];
+    c.invInertiaB = w.invInertiaB[lane];
+    for (int i = 0; i < 2; ++i) {
+        const WidePointT<N>& wp = w.points[i];
+        ContactConstraintPoint& cp = c.points[i];
+        cp.anchorA = {wp.anchorAx[lane], wp.anchorAy[lane]};
+        cp.anchorB = {wp.anchorBx[lane], wp.anchorBy[lane]};
+        cp.baseSeparation = wp.baseSeparation[lane];
+        cp.relativeVelocity = wp.relativeVelocity[lane];
+        cp.normalImpulse = wp.normalImpulse[lane];
+        cp.tangentImpulse = wp.tangentImpulse[lane];
+        cp.maxNormalImpulse = wp.maxNormalImpulse[lane];
+        cp.normalMass = wp.normalMass[lane];
+        cp.tangentMass = wp.tangentMass[lane];
+        cp.impactGap = wp.impactGap[lane];
+        cp.impactSeen = wp.impactSeen[lane] != 0;
     }
 }
 
-namespace {
-
-template <bool kReversePoints>
-void solveWideInOrder(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
-                      float pushMaxSpeed, bool backward) {
-    if (!backward) {
-        for (WideConstraint& c : wide.constraints) {
-            solveOne<kReversePoints>(c, states, invH, useBias, pushMaxSpeed);
-        }
-        return;
-    }
-    // Within a level the order does not matter; backward only reverses the levels.
-    const std::size_t levelCount = wide.levelStart.empty() ? 0 : wide.levelStart.size() - 1;
-    for (std::size_t k = levelCount; k-- > 0;) {
-        for (int g = wide.levelStart[k]; g < wide.levelStart[k + 1]; ++g) {
-            solveOne<kReversePoints>(wide.constraints[static_cast<std::size_t>(g)], states, invH,
-                                     useBias, pushMaxSpeed);
+template <int N>
+void restituteLanes(std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
+                    std::span<const WideRestitution> list, std::span<BodyState> states,
+                    float threshold, float h) {
+    for (const WideRestitution& r : list) {
+        WideConstraintT<N>& w =
+            groups[static_cast<std::size_t>(wideStart[static_cast<std::size_t>(r.level)] + r.at / N)];
+        const int lane = r.at % N;
+        // The scalar pass on a copy of the lane, so both paths run the same code.
+        ContactConstraint c;
+        unpackLane(w, lane, c);
+        c.pointCount = r.pointCount;
+        c.restitution = r.restitution;
+        c.pressAcceleration = r.pressAcceleration;
+        applyRestitution(std::span<ContactConstraint>(&c, 1), states, threshold, h);
+        for (int i = 0; i < r.pointCount; ++i) {
+            w.points[i].normalImpulse[lane] = c.points[i].normalImpulse;
+            w.points[i].maxNormalImpulse[lane] = c.points[i].maxNormalImpulse;
         }
     }
 }
 
 } // namespace
 
+void applyRestitutionWide(WideContacts& wide, std::span<const WideRestitution> list,
+                          std::span<BodyState> states, float threshold, float h) {
+    if (wide.lanes == 8) {
+        restituteLanes(wide.constraints8, wide.levelStart, list, states, threshold, h);
+    } else {
+        restituteLanes(wide.constraints4, wide.levelStart, list, states, threshold, h);
+    }
+}
+
+int bestWideLanes() {
+#if defined(E2D_HAS_WIDE8)
+    return __builtin_cpu_supports("avx2") ? 8 : 4;
+#else
+    return 4;
+#endif
+}
+
+void layoutWide(WideContacts& wide, std::span<const int> levelStart, int lanes) {
+#if defined(E2D_HAS_WIDE8)
+    wide.lanes = lanes == 8 ? 8 : 4;
+#else
+    (void)lanes;
+    wide.lanes = 4;
+#endif
+    if (wide.lanes == 8) {
+        layoutLanes(wide.constraints8, wide.levelStart, levelStart);
+    } else {
+        layoutLanes(wide.constraints4, wide.levelStart, levelStart);
+    }
+}
+
+void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint& c) {
+    const int first = wide.levelStart[static_cast<std::size_t>(level)];
+    if (wide.lanes == 8) {
+        packLane(wide.constraints8[static_cast<std::size_t>(first + at / 8)], at % 8, c);
+    } else {
+        packLane(wide.constraints4[static_cast<std::size_t>(first + at / 4)], at % 4, c);
+    }
+}
+
+void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constraints,
+                 std::span<const int> levelOrder, std::span<const int> levelStart, int lanes) {
+    layoutWide(wide, levelStart, lanes);
+    const std::size_t levelCount = levelStart.empty() ? 0 : levelStart.size() - 1;
+    for (std::size_t k = 0; k < levelCount; ++k) {
+        for (int slot = levelStart[k]; slot < levelStart[k + 1]; ++slot) {
+            packWideLane(wide, static_cast<int>(k), slot - levelStart[k],
+                         constraints[static_cast<std::size_t>(levelOrder[static_cast<std::size_t>(slot)])]);
+        }
+    }
+}
+
+void storeWide(const WideContacts& wide, std::span<ContactConstraint> constraints,
+               std::span<const int> levelOrder, std::span<const int> levelStart) {
+    if (wide.lanes == 8) {
+        storeLanes(wide.constraints8, wide.levelStart, constraints, levelOrder, levelStart);
+    } else {
+        storeLanes(wide.constraints4, wide.levelStart, constraints, levelOrder, levelStart);
+    }
+}
+
+void warmStartWide(const WideContacts& wide, std::span<BodyState> states) {
+    warmStartWide(wide, 0, static_cast<int>(wide.levelStart.size()) - 1, states);
+}
+
 void solveWide(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
                float pushMaxSpeed, bool backward, bool reversePoints) {
+    solveWide(wide, 0, static_cast<int>(wide.levelStart.size()) - 1, states, invH, useBias,
+              pushMaxSpeed, backward, reversePoints);
+}
+
+namespace {
+
+std::span<const int> levelRange(const WideContacts& wide, int firstLevel, int endLevel) {
+    if (endLevel <= firstLevel) {
+        return {};
+    }
+    return std::span<const int>(wide.levelStart)
+        .subspan(static_cast<std::size_t>(firstLevel), static_cast<std::size_t>(endLevel - firstLevel) + 1);
+}
+
+} // namespace
+
+void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
+                   std::span<BodyState> states) {
+    const std::span<const int> levels = levelRange(wide, firstLevel, endLevel);
+#if defined(E2D_HAS_WIDE8)
+    if (wide.lanes == 8) {
+        lanes8::warmStartAll(wide.constraints8, levels, states);
+        return;
+    }
+#endif
+    lanes4::warmStartAll(wide.constraints4, levels, states);
+}
+
+void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyState> states,
+               float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints) {
+    const std::span<const int> levels = levelRange(wide, firstLevel, endLevel);
+#if defined(E2D_HAS_WIDE8)
+    if (wide.lanes == 8) {
+        if (reversePoints) {
+            lanes8::solveAll<true>(wide.constraints8, levels, states, invH, useBias, pushMaxSpeed,
+                                   backward);
+        } else {
+            lanes8::solveAll<false>(wide.constraints8, levels, states, invH, useBias, pushMaxSpeed,
+                                    backward);
+        }
+        return;
+    }
+#endif
     if (reversePoints) {
-        solveWideInOrder<true>(wide, states, invH, useBias, pushMaxSpeed, backward);
+        lanes4::solveAll<true>(wide.constraints4, levels, states, invH, useBias, pushMaxSpeed,
+                               backward);
     } else {
-        solveWideInOrder<false>(wide, states, invH, useBias, pushMaxSpeed, backward);
+        lanes4::solveAll<false>(wide.constraints4, levels, states, invH, useBias, pushMaxSpeed,
+                                backward);
     }
 }
 

@@ -4,72 +4,198 @@
 #include "contact_solver.hpp"
 #include "solver_body.hpp"
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
 
-// The soft-step contact passes four constraints at a time. Mirrors warmStartContacts() and
+// The soft-step contact passes several constraints at a time. Mirrors warmStartContacts() and
 // solveContacts() in contact_solver.cpp operation for operation, over the constraints by level
-// (ConstraintLevels): a level's constraints share no moving body, so solving four of them at
+// (ConstraintLevels): a level's constraints share no moving body, so solving several of them at
 // once gives bit for bit what solving them one after another does, and level order is the
 // same sweep as constraint order. Rolling resistance is not handled here (the world uses the
 // scalar functions when a contact has it).
 //
-// The lanes are GCC/Clang vector extensions: SSE on x86-64, NEON on ARM64, and plain scalar
-// code (same operations, same results) wherever the target has no SIMD.
+// The lanes are GCC/Clang vector extensions. Four lanes everywhere (SSE2 on x86-64, NEON on
+// ARM64, plain scalar code where the target has no SIMD); eight on x86-64 CPUs with AVX2,
+// chosen at run time (the build sets no -march). Multiplies and adds stay separate
+// instructions (no FMA), so every lane width gives the scalar results.
 namespace e2d::physics::detail {
 
 using Float4 = float __attribute__((vector_size(16)));
 using Int4 = std::int32_t __attribute__((vector_size(16)));
+using Float8 = float __attribute__((vector_size(32)));
+using Int8 = std::int32_t __attribute__((vector_size(32)));
 
-inline constexpr int kLanes = 4;
-
-struct WidePoint {
-    Float4 anchorAx, anchorAy, anchorBx, anchorBy;
-    Float4 baseSeparation;
-    Float4 relativeVelocity;
-    Float4 normalImpulse, tangentImpulse, maxNormalImpulse;
-    Float4 normalMass, tangentMass;
-    Float4 impactGap;
-    Int4 impactSeen; // all bits set when seen
+template <int N>
+struct WideLanes;
+template <>
+struct WideLanes<4> {
+    using F = Float4;
+    using I = Int4;
+};
+template <>
+struct WideLanes<8> {
+    using F = Float8;
+    using I = Int8;
 };
 
-struct WideConstraint {
-    int indexA[kLanes]; // BodyState index, -1: static (or an empty lane)
-    int indexB[kLanes];
-    Float4 normalX, normalY;
-    Float4 invMassAx, invMassAy, invMassBx, invMassBy;
-    Float4 invInertiaA, invInertiaB;
-    Float4 friction;
-    Float4 biasRate, massScale, impulseScale;
-    WidePoint points[2];
+// Aligned to the vector size by hand: without AVX enabled GCC aligns a 32-byte vector to 16
+// only, while the AVX2 code assumes 32. Every member is a whole number of vectors, so the
+// layout is the same either way.
+template <int N>
+struct alignas(4 * N) WidePointT {
+    using F = typename WideLanes<N>::F;
+    using I = typename WideLanes<N>::I;
+    F anchorAx, anchorAy, anchorBx, anchorBy;
+    F baseSeparation;
+    F relativeVelocity;
+    F normalImpulse, tangentImpulse, maxNormalImpulse;
+    F normalMass, tangentMass;
+    F impactGap;
+    I impactSeen; // all bits set when seen
 };
 
-// The packed constraints of one step.
+template <int N>
+struct alignas(4 * N) WideConstraintT {
+    using F = typename WideLanes<N>::F;
+    using I = typename WideLanes<N>::I;
+    int indexA[N]; // BodyState index, -1: static (or an empty lane)
+    int indexB[N];
+    F normalX, normalY;
+    F invMassAx, invMassAy, invMassBx, invMassBy;
+    F invInertiaA, invInertiaB;
+    F friction;
+    F biasRate, massScale, impulseScale;
+    // The block matrix K of a 2-point manifold and its inverse (ContactConstraint's blockK and
+    // blockInvK); blockSolve lanes are all ones, empty lanes too (their block gives zero
+    // impulses, and a group of block constraints then never runs the point-by-point solve as
+    // well). Other lanes hold K = identity.
+    F k11, k12, k22, inv11, inv12, inv22;
+    I blockSolve;
+    WidePointT<N> points[2];
+};
+
+static_assert(sizeof(WidePointT<8>) % 32 == 0 && sizeof(WideConstraintT<8>) % 32 == 0 &&
+                  offsetof(WideConstraintT<8>, normalX) == 64,
+              "wide constraints must be whole vectors");
+
+// The packed constraints of one step, `lanes` constraints per group.
 struct WideContacts {
-    std::vector<WideConstraint> constraints;
-    // Packed constraints of level k: [levelStart[k], levelStart[k + 1]).
+    int lanes = 4;
+    std::vector<WideConstraintT<4>> constraints4; // lanes == 4
+    std::vector<WideConstraintT<8>> constraints8; // lanes == 8
+    // Packed groups of level k: [levelStart[k], levelStart[k + 1]).
     std::vector<int> levelStart;
 };
 
-// Sizes `wide` for the levels (levelStart as below) and empties the lanes past each level's
-// last constraint; packWideLane() then fills the others.
-void layoutWide(WideContacts& wide, std::span<const int> levelStart);
-// Puts constraint `c` in lane `lane` of `w`.
-void packWideLane(WideConstraint& w, int lane, const ContactConstraint& c);
+// The widest lane count this CPU runs: 8 with AVX2 (x86-64), else 4.
+int bestWideLanes();
+
+// Sizes `wide` for the levels (levelStart as below), `lanes` (4 or 8) constraints per group,
+// and empties the lanes past each level's last constraint; packWideLane() then fills the
+// others.
+void layoutWide(WideContacts& wide, std::span<const int> levelStart, int lanes);
+// Puts constraint `c`, the `at`-th of level `level`, in its lane.
+void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint& c);
 
 // Packs the constraints of each level, constraints[levelOrder[levelStart[k] ..
-// levelStart[k + 1])], into groups of four (the last group of a level padded with empty lanes).
+// levelStart[k + 1])], into groups of `lanes` (the last group of a level padded with empty
+// lanes).
 void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constraints,
-                 std::span<const int> levelOrder, std::span<const int> levelStart);
+                 std::span<const int> levelOrder, std::span<const int> levelStart, int lanes);
 // Copies impulses and the impact bookkeeping back to the constraints.
 void storeWide(const WideContacts& wide, std::span<ContactConstraint> constraints,
                std::span<const int> levelOrder, std::span<const int> levelStart);
+
+// A packed constraint with restitution, in the order applyRestitution() visits them (constraint
+// order): where it sits (the `at`-th of level `level`) and what the lanes do not keep.
+struct WideRestitution {
+    int level = 0;
+    int at = 0;
+    int pointCount = 0;
+    float restitution = 0.0f;
+    float pressAcceleration = 0.0f;
+};
+
+// applyRestitution() on the listed packed constraints, in list order.
+void applyRestitutionWide(WideContacts& wide, std::span<const WideRestitution> list,
+                          std::span<BodyState> states, float threshold, float h);
+
+// What the step leaves in one lane for the world: per point, impulses (for next step's warm
+// start) and the impact bookkeeping (hit events).
+struct WideLaneResult {
+    float normalImpulse[2];
+    float tangentImpulse[2];
+    float relativeVelocity[2];
+    float maxNormalImpulse[2];
+};
+
+// Calls visit(slot, result) for every packed constraint, slot being its place in level order
+// (level k holds slots [levelStart[k], levelStart[k + 1])), in slot order.
+template <class Visit>
+void visitWide(const WideContacts& wide, std::span<const int> levelStart, Visit&& visit);
+// The same over levels [firstLevel, endLevel) only.
+template <class Visit>
+void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
+               int endLevel, Visit&& visit);
 
 // warmStartContacts() and solveContacts() over every packed constraint, level after level
 // (backward: last level first; reversePoints: each constraint's points last to first).
 void warmStartWide(const WideContacts& wide, std::span<BodyState> states);
 void solveWide(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
                float pushMaxSpeed, bool backward, bool reversePoints);
+// The same over levels [firstLevel, endLevel) only.
+void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
+                   std::span<BodyState> states);
+void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyState> states,
+               float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints);
+
+namespace wide_detail {
+
+template <int N, class Visit>
+void visitLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
+                std::span<const int> levelStart, std::size_t firstLevel, std::size_t endLevel,
+                Visit& visit) {
+    WideLaneResult r;
+    for (std::size_t k = firstLevel; k < endLevel; ++k) {
+        const int end = levelStart[k + 1];
+        int g = wideStart[k];
+        for (int first = levelStart[k]; first < end; first += N, ++g) {
+            const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
+            for (int lane = 0; lane < N && first + lane < end; ++lane) {
+                for (int i = 0; i < 2; ++i) {
+                    const WidePointT<N>& wp = w.points[i];
+                    r.normalImpulse[i] = wp.normalImpulse[lane];
+                    r.tangentImpulse[i] = wp.tangentImpulse[lane];
+                    r.relativeVelocity[i] = wp.relativeVelocity[lane];
+                    r.maxNormalImpulse[i] = wp.maxNormalImpulse[lane];
+                }
+                visit(first + lane, r);
+            }
+        }
+    }
+}
+
+} // namespace wide_detail
+
+template <class Visit>
+void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
+               int endLevel, Visit&& visit) {
+    const auto first = static_cast<std::size_t>(firstLevel);
+    const auto end = static_cast<std::size_t>(std::max(endLevel, firstLevel));
+    if (wide.lanes == 8) {
+        wide_detail::visitLanes(wide.constraints8, wide.levelStart, levelStart, first, end, visit);
+    } else {
+        wide_detail::visitLanes(wide.constraints4, wide.levelStart, levelStart, first, end, visit);
+    }
+}
+
+template <class Visit>
+void visitWide(const WideContacts& wide, std::span<const int> levelStart, Visit&& visit) {
+    visitWide(wide, levelStart, 0, levelStart.empty() ? 0 : static_cast<int>(levelStart.size()) - 1,
+              visit);
+}
 
 } // namespace e2d::physics::detail

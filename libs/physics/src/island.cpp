@@ -67,7 +67,7 @@ void World::Impl::updateSleep(float dt) {
         s.islandParent[static_cast<std::size_t>(i)] = i;
         s.islandSleepTime[static_cast<std::size_t>(i)] = kHuge;
     }
-    for (const detail::ContactConstraint& c : s.constraints) {
+    for (const detail::Simulation::ConstraintBodies& c : s.constraintBodies) {
         if (c.indexA < 0 || c.indexB < 0) {
             continue;
         }

@@ -59,7 +59,6 @@ struct Contact {
     int bodyB = -1;
     int prev[2] = {-1, -1};
     int next[2] = {-1, -1};
-    int constraintIndex = -1; // this step's constraint, -1 if not solved
     ShapeId idA{};
     ShapeId idB{};
     bool touching = false;
@@ -77,17 +76,49 @@ struct Simulation {
     // Per-step scratch, same order: the awake moving bodies and their world slots.
     std::vector<BodySim> sims;
     std::vector<BodyState> states;
+    // The solved contacts, in contact order: contact index and the sides' BodyState indices
+    // (-1: static or asleep).
+    struct ConstraintBodies {
+        int indexA = -1;
+        int indexB = -1;
+    };
+    std::vector<int> constraintContacts;
+    std::vector<ConstraintBodies> constraintBodies;
+    // Classic mode and rolling resistance only: the wide solver packs each constraint as it is
+    // built and keeps it nowhere else.
     std::vector<ContactConstraint> constraints; // in contact order
-    // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), the
-    // constraints sorted by level (levelOrder, level k in [levelStart[k], levelStart[k + 1]))
-    // and the packed constraints.
+    std::vector<int> slotContact;               // contact of each slot in level order
+    std::vector<WideRestitution> wideRestitution; // the block being solved
+    // A hit found while storing impulses by level: contact, point, approach speed.
+    struct HitCandidate {
+        int contact = -1;
+        int point = -1;
+        float speed = 0.0f;
+    };
+    std::vector<HitCandidate> hitCandidates;
+    // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), its
+    // slot in level order (level k holds slots [levelStart[k], levelStart[k + 1]), contact
+    // order within a level) and the packed constraints.
     ConstraintLevels levels;
     std::vector<int> constraintLevel;
-    std::vector<int> levelOrder;
-    std::vector<int> constraintSlot; // each constraint's place in levelOrder
+    std::vector<int> constraintSlot;
     std::vector<int> levelStart;
     std::vector<int> levelNext;
     WideContacts wideContacts;
+    // Blocks of islands (World::Impl::scheduleWide()): per body a union-find parent and its
+    // block, per island root its constraint count and block, per constraint its island root;
+    // block b's levels [blockLevelStart[b], blockLevelStart[b + 1]) and bodies
+    // blockBodies[blockBodyStart[b] .. blockBodyStart[b + 1]).
+    std::vector<int> blockParent;
+    std::vector<int> bodyBlock;
+    std::vector<int> islandConstraints;
+    std::vector<int> islandBlock;
+    std::vector<int> constraintIsland;
+    std::vector<int> blockOrder; // the constraints block by block
+    std::vector<int> blockOrderStart;       // block b: blockOrder[start[b] .. start[b + 1])
+    std::vector<int> blockLevelStart;
+    std::vector<int> blockBodyStart;
+    std::vector<int> blockBodies;
     std::vector<int> islandParent; // union-find over the awake arrays
     std::vector<float> islandSleepTime;
     std::vector<int> wakeStack;

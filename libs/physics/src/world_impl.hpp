@@ -123,6 +123,7 @@ struct World::Impl {
     void createContact(int shapeA, int shapeB);
     void destroyContact(int contactIndex, bool reportEnd);
     void solve(float dt);
+    void scheduleWide(int constraintCount);
     void solveContinuous(int simIndex);
     void updateSleep(float dt);
 };

@@ -45,10 +45,144 @@ void World::step(float timeStep) {
     if (timeStep > 0.0f) {
         w.solve(timeStep);
         s.counters.solverBodies = static_cast<int>(s.sims.size());
-        s.counters.contactConstraints = static_cast<int>(s.constraints.size());
+        s.counters.contactConstraints = static_cast<int>(s.constraintContacts.size());
         w.updateSleep(timeStep);
     }
     s.inStep = false;
+}
+
+namespace {
+
+// Constraints per block of islands the wide solver runs through all sub-steps at once: about
+// 0.7 MB of packed constraints, well inside a core's L2 cache with its bodies.
+constexpr int kBlockConstraints = 4096;
+
+int findRoot(std::vector<int>& parent, int i) {
+    while (parent[static_cast<std::size_t>(i)] != i) {
+        int grand = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+        parent[static_cast<std::size_t>(i)] = grand; // path halving
+        i = grand;
+    }
+    return i;
+}
+
+} // namespace
+
+// The wide solver's schedule. Islands (bodies joined through constraints, any body with a
+// state joins) go whole into blocks of about kBlockConstraints constraints, in order of first
+// appearance; each block's constraints are sorted by level (a counting sort, so contact order
+// within a level), and the blocks' levels follow one another in one list. Streaming every
+// constraint from memory for each of the twelve passes of a step cost more than solving
+// them; a block stays in cache through its sub-steps.
+void World::Impl::scheduleWide(int constraintCount) {
+    detail::Simulation& s = sim;
+    const std::size_t n = s.sims.size();
+    const auto count = static_cast<std::size_t>(constraintCount);
+    std::vector<int>& parent = s.blockParent;
+    parent.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        parent[i] = static_cast<int>(i);
+    }
+    for (const detail::Simulation::ConstraintBodies& cb : s.constraintBodies) {
+        if (cb.indexA >= 0 && cb.indexB >= 0) {
+            int ra = findRoot(parent, cb.indexA);
+            int rb = findRoot(parent, cb.indexB);
+            if (ra != rb) {
+                parent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
+            }
+        }
+    }
+    s.islandConstraints.assign(n, 0);
+    s.constraintIsland.resize(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        const detail::Simulation::ConstraintBodies& cb = s.constraintBodies[k];
+        int root = findRoot(parent, cb.indexA >= 0 ? cb.indexA : cb.indexB);
+        s.constraintIsland[k] = root;
+        ++s.islandConstraints[static_cast<std::size_t>(root)];
+    }
+    s.islandBlock.assign(n, -1);
+    s.blockLevelStart.assign(1, 0); // level counts first, made starts below
+    int blockCount = 0;
+    int blockSize = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+        const auto root = static_cast<std::size_t>(s.constraintIsland[k]);
+        if (s.islandBlock[root] < 0) {
+            if (blockCount == 0 || blockSize + s.islandConstraints[root] > kBlockConstraints) {
+                ++blockCount;
+                blockSize = 0;
+                s.blockLevelStart.push_back(0);
+            }
+            s.islandBlock[root] = blockCount - 1;
+            blockSize += s.islandConstraints[root];
+        }
+        int& levels = s.blockLevelStart[static_cast<std::size_t>(s.islandBlock[root]) + 1];
+        levels = std::max(levels, s.constraintLevel[k] + 1);
+    }
+    // Block `blockCount` holds the bodies no constraint touches: no levels.
+    for (int b = 0; b < blockCount; ++b) {
+        s.blockLevelStart[static_cast<std::size_t>(b) + 1] += s.blockLevelStart[static_cast<std::size_t>(b)];
+    }
+    s.blockLevelStart.push_back(s.blockLevelStart.back());
+    const int levelCount = s.blockLevelStart[static_cast<std::size_t>(blockCount)];
+
+    // Each constraint's level becomes its place in the list of all blocks' levels.
+    s.levelStart.assign(static_cast<std::size_t>(levelCount) + 1, 0);
+    for (std::size_t k = 0; k < count; ++k) {
+        const int block = s.islandBlock[static_cast<std::size_t>(s.constraintIsland[k])];
+        int& level = s.constraintLevel[k];
+        level += s.blockLevelStart[static_cast<std::size_t>(block)];
+        ++s.levelStart[static_cast<std::size_t>(level) + 1];
+    }
+    for (int k = 0; k < levelCount; ++k) {
+        s.levelStart[static_cast<std::size_t>(k) + 1] += s.levelStart[static_cast<std::size_t>(k)];
+    }
+    s.levelNext.assign(s.levelStart.begin(), s.levelStart.end() - 1);
+    s.constraintSlot.resize(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        s.constraintSlot[k] = s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])]++;
+    }
+    // Eight lanes only pay when levels are wide enough to fill them: a small pile's levels
+    // hold a few constraints each, and half-empty groups of eight cost more than full fours.
+    int lanes = detail::bestWideLanes();
+    if (lanes > 4 && 2 * count < static_cast<std::size_t>(lanes * levelCount)) {
+        lanes = 4;
+    }
+    detail::layoutWide(s.wideContacts, s.levelStart, lanes);
+
+    // The constraints by block, in constraint order within a block.
+    s.levelNext.assign(static_cast<std::size_t>(blockCount) + 1, 0);
+    for (std::size_t k = 0; k < count; ++k) {
+        ++s.levelNext[static_cast<std::size_t>(s.islandBlock[static_cast<std::size_t>(s.constraintIsland[k])]) + 1];
+    }
+    for (int b = 0; b < blockCount; ++b) {
+        s.levelNext[static_cast<std::size_t>(b) + 1] += s.levelNext[static_cast<std::size_t>(b)];
+    }
+    s.blockOrderStart.assign(s.levelNext.begin(), s.levelNext.end());
+    s.blockOrder.resize(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        const int block = s.islandBlock[static_cast<std::size_t>(s.constraintIsland[k])];
+        s.blockOrder[static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(block)]++)] =
+            static_cast<int>(k);
+    }
+
+    // The bodies by block, in state order within a block.
+    s.blockBodyStart.assign(static_cast<std::size_t>(blockCount) + 2, 0);
+    s.bodyBlock.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        int block = s.islandBlock[static_cast<std::size_t>(findRoot(parent, static_cast<int>(i)))];
+        block = block < 0 ? blockCount : block;
+        s.bodyBlock[i] = block;
+        ++s.blockBodyStart[static_cast<std::size_t>(block) + 1];
+    }
+    for (int b = 0; b <= blockCount; ++b) {
+        s.blockBodyStart[static_cast<std::size_t>(b) + 1] += s.blockBodyStart[static_cast<std::size_t>(b)];
+    }
+    s.levelNext.assign(s.blockBodyStart.begin(), s.blockBodyStart.end() - 1);
+    s.blockBodies.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        s.blockBodies[static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(s.bodyBlock[i])]++)] =
+            static_cast<int>(i);
+    }
 }
 
 void World::Impl::solve(float dt) {
@@ -124,51 +258,32 @@ void World::Impl::solve(float dt) {
     };
     bool rolling = false;
     int constraintCount = 0;
+    s.constraintContacts.clear();
+    s.constraintBodies.clear();
     for (std::size_t ci = 0; ci < s.contacts.size(); ++ci) {
         detail::Contact& c = s.contacts[ci];
-        c.constraintIndex = kNullIndex;
         if (!c.alive || !c.touching || c.sensor) {
             continue;
         }
-        if (body(c.bodyA).motion.solverIndex == kNullIndex &&
-            body(c.bodyB).motion.solverIndex == kNullIndex) {
+        const int indexA = body(c.bodyA).motion.solverIndex;
+        const int indexB = body(c.bodyB).motion.solverIndex;
+        if (indexA == kNullIndex && indexB == kNullIndex) {
             continue;
         }
         rolling = rolling || c.rollingResistance > 0.0f;
         s.constraintLevel.push_back(s.levels.assign(movingState(c.bodyA), movingState(c.bodyB)));
-        c.constraintIndex = constraintCount++;
+        s.constraintContacts.push_back(static_cast<int>(ci));
+        s.constraintBodies.push_back({indexA, indexB});
+        ++constraintCount;
     }
 
     // Rolling resistance is scalar only (and solved in contact order, the same sweep).
     const bool wide = def.mode == SolverMode::SoftStep && !rolling;
     if (wide) {
-        // The constraints by level (a counting sort, so contact order within a level).
-        const int levelCount = s.levels.levelCount();
-        s.levelStart.assign(static_cast<std::size_t>(levelCount) + 1, 0);
-        for (int k = 0; k < levelCount; ++k) {
-            s.levelStart[static_cast<std::size_t>(k) + 1] =
-                s.levelStart[static_cast<std::size_t>(k)] +
-                s.levels.counts()[static_cast<std::size_t>(k)];
-        }
-        s.levelNext.assign(s.levelStart.begin(), s.levelStart.end() - 1);
-        s.levelOrder.resize(static_cast<std::size_t>(constraintCount));
-        s.constraintSlot.resize(static_cast<std::size_t>(constraintCount));
-        for (std::size_t k = 0; k < s.constraintLevel.size(); ++k) {
-            int slot = s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])]++;
-            s.levelOrder[static_cast<std::size_t>(slot)] = static_cast<int>(k);
-            s.constraintSlot[k] = slot;
-        }
-        detail::layoutWide(s.wideContacts, s.levelStart);
+        scheduleWide(constraintCount);
     }
 
-    s.constraints.resize(static_cast<std::size_t>(constraintCount));
-    for (std::size_t ci = 0; ci < s.contacts.size(); ++ci) {
-        detail::Contact& c = s.contacts[ci];
-        if (c.constraintIndex == kNullIndex) {
-            continue;
-        }
-        const auto k = static_cast<std::size_t>(c.constraintIndex);
-        detail::ContactConstraint& cc = s.constraints[k];
+    auto build = [&](detail::ContactConstraint& cc, const detail::Contact& c) {
         detail::ContactBodyView a = viewOf(c.bodyA);
         detail::ContactBodyView b = viewOf(c.bodyB);
         bool rigidSide = (a.invMass.x == 0.0f && a.invMass.y == 0.0f && a.invInertia == 0.0f) ||
@@ -176,31 +291,104 @@ void World::Impl::solve(float dt) {
         detail::prepareContact(cc, c.manifold, a, b,
                                {c.friction, c.restitution, c.rollingResistance},
                                rigidSide ? softness.vsStatic : softness.dynamic);
-        cc.contactIndex = static_cast<int>(ci);
         auto gravityOf = [&](const detail::ContactBodyView& v, int bodyIndex) {
             float scale = body(bodyIndex).motion.gravityScale;
             return Vec2{v.invMass.x > 0.0f ? scale * gravity.x : 0.0f,
                         v.invMass.y > 0.0f ? scale * gravity.y : 0.0f};
         };
         cc.pressAcceleration = -dot(gravityOf(b, c.bodyB) - gravityOf(a, c.bodyA), cc.normal);
-        if (wide) {
-            // Packed while it is in cache (gathering it later by level is a random read).
-            const auto level = static_cast<std::size_t>(s.constraintLevel[k]);
-            const int at = s.constraintSlot[k] - s.levelStart[level];
-            detail::packWideLane(
-                s.wideContacts.constraints[static_cast<std::size_t>(
-                    s.wideContacts.levelStart[level] + at / detail::kLanes)],
-                at % detail::kLanes, cc);
+    };
+    if (wide) {
+        // Built block by block right before each block is solved (below).
+        s.constraints.clear();
+        s.slotContact.resize(static_cast<std::size_t>(constraintCount));
+    } else {
+        s.constraints.resize(static_cast<std::size_t>(constraintCount));
+        for (std::size_t k = 0; k < s.constraintContacts.size(); ++k) {
+            const int ci = s.constraintContacts[k];
+            detail::ContactConstraint& cc = s.constraints[k];
+            build(cc, s.contacts[static_cast<std::size_t>(ci)]);
+            cc.contactIndex = ci;
         }
     }
 
+    // Impulses go back to the manifolds for next step's warm start; a hit event for the
+    // fastest approaching point of each, emitted in contact order at the end.
+    s.hitCandidates.clear();
+    auto store = [&](int contactIndex, int pointCount, const float* normalImpulse,
+                     const float* tangentImpulse, const float* relativeVelocity,
+                     const float* maxNormalImpulse) {
+        detail::Contact& c = s.contacts[static_cast<std::size_t>(contactIndex)];
+        float fastest = def.hitEventThreshold;
+        int fastestPoint = -1;
+        for (int j = 0; j < pointCount; ++j) {
+            c.manifold.points[j].normalImpulse = normalImpulse[j];
+            c.manifold.points[j].tangentImpulse = tangentImpulse[j];
+            float approach = -relativeVelocity[j];
+            if (maxNormalImpulse[j] > 0.0f && approach > fastest) {
+                fastest = approach;
+                fastestPoint = j;
+            }
+        }
+        if (fastestPoint >= 0) {
+            s.hitCandidates.push_back({contactIndex, fastestPoint, fastest});
+        }
+    };
+
     detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def};
     if (wide) {
-        step.wide = &s.wideContacts;
-        step.levelOrder = s.levelOrder;
-        step.levelStart = s.levelStart;
-    }
-    if (def.mode == SolverMode::SoftStep) {
+        // Each block's impulses are stored as soon as it is solved, while its lanes are in
+        // cache. A level's contacts lie one island apart in the array, too far for the
+        // hardware prefetcher: fetch the ones a few slots ahead.
+        constexpr int kPrefetchAhead = 16;
+        auto storeLane = [&](int slot, const detail::WideLaneResult& r) {
+            if (slot + kPrefetchAhead < constraintCount) {
+                const auto* ahead = reinterpret_cast<const char*>(&s.contacts[static_cast<std::size_t>(
+                    s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
+                for (std::size_t offset = 0; offset < sizeof(detail::Contact); offset += 64) {
+                    __builtin_prefetch(ahead + offset, 1);
+                }
+                __builtin_prefetch(ahead + sizeof(detail::Contact) - 1, 1);
+            }
+            const int ci = s.slotContact[static_cast<std::size_t>(slot)];
+            store(ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount, r.normalImpulse,
+                  r.tangentImpulse, r.relativeVelocity, r.maxNormalImpulse);
+        };
+        // Each block goes through build, sub-steps and store while its contacts, lanes and
+        // bodies are in cache. Its constraints go straight into their lanes (no array of
+        // constraints in between), in constraint order, so the restitution list is in the
+        // order applyRestitution() takes.
+        const std::span<const int> blockBodies = s.blockBodies;
+        const std::size_t constrainedBlocks = s.blockOrderStart.size() - 1;
+        detail::ContactConstraint cc;
+        for (std::size_t b = 0; b + 1 < s.blockLevelStart.size(); ++b) {
+            s.wideRestitution.clear();
+            if (b < constrainedBlocks) {
+                for (int i = s.blockOrderStart[b]; i < s.blockOrderStart[b + 1]; ++i) {
+                    const auto k = static_cast<std::size_t>(s.blockOrder[static_cast<std::size_t>(i)]);
+                    const int ci = s.constraintContacts[k];
+                    build(cc, s.contacts[static_cast<std::size_t>(ci)]);
+                    const int level = s.constraintLevel[k];
+                    const int slot = s.constraintSlot[k];
+                    const int at = slot - s.levelStart[static_cast<std::size_t>(level)];
+                    detail::packWideLane(s.wideContacts, level, at, cc);
+                    s.slotContact[static_cast<std::size_t>(slot)] = ci;
+                    if (cc.restitution != 0.0f) {
+                        s.wideRestitution.push_back(
+                            {level, at, cc.pointCount, cc.restitution, cc.pressAcceleration});
+                    }
+                }
+            }
+            const int firstLevel = s.blockLevelStart[b];
+            const int endLevel = s.blockLevelStart[b + 1];
+            detail::solveSoftStepBlock(
+                step, s.wideContacts, firstLevel, endLevel,
+                blockBodies.subspan(static_cast<std::size_t>(s.blockBodyStart[b]),
+                                    static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b])),
+                s.wideRestitution);
+            detail::visitWide(s.wideContacts, s.levelStart, firstLevel, endLevel, storeLane);
+        }
+    } else if (def.mode == SolverMode::SoftStep) {
         detail::solveSoftStep(step);
     } else {
         detail::solveClassic(step);
@@ -249,30 +437,38 @@ void World::Impl::solve(float dt) {
         }
     }
 
-    // Impulses back to the manifolds for next step's warm start; hit events.
-    for (const detail::ContactConstraint& cc : s.constraints) {
-        detail::Contact& c = s.contacts[static_cast<std::size_t>(cc.contactIndex)];
+    if (!wide) {
+        for (const detail::ContactConstraint& cc : s.constraints) {
+            if (!s.contacts[static_cast<std::size_t>(cc.contactIndex)].alive) {
+                continue; // ended with a non-finite body
+            }
+            float normalImpulse[2];
+            float tangentImpulse[2];
+            float relativeVelocity[2];
+            float maxNormalImpulse[2];
+            for (int j = 0; j < cc.pointCount; ++j) {
+                normalImpulse[j] = cc.points[j].normalImpulse;
+                tangentImpulse[j] = cc.points[j].tangentImpulse;
+                relativeVelocity[j] = cc.points[j].relativeVelocity;
+                maxNormalImpulse[j] = cc.points[j].maxNormalImpulse;
+            }
+            store(cc.contactIndex, cc.pointCount, normalImpulse, tangentImpulse, relativeVelocity,
+                  maxNormalImpulse);
+        }
+    } else {
+        std::sort(s.hitCandidates.begin(), s.hitCandidates.end(),
+                  [](const detail::Simulation::HitCandidate& x,
+                     const detail::Simulation::HitCandidate& y) { return x.contact < y.contact; });
+    }
+    for (const detail::Simulation::HitCandidate& h : s.hitCandidates) {
+        const detail::Contact& c = s.contacts[static_cast<std::size_t>(h.contact)];
         if (!c.alive) {
             continue; // ended with a non-finite body
         }
-        float fastest = def.hitEventThreshold;
-        int fastestPoint = -1;
-        for (int j = 0; j < cc.pointCount; ++j) {
-            const detail::ContactConstraintPoint& cp = cc.points[j];
-            c.manifold.points[j].normalImpulse = cp.normalImpulse;
-            c.manifold.points[j].tangentImpulse = cp.tangentImpulse;
-            float approach = -cp.relativeVelocity;
-            if (cp.maxNormalImpulse > 0.0f && approach > fastest) {
-                fastest = approach;
-                fastestPoint = j;
-            }
-        }
-        if (fastestPoint >= 0) {
-            // A speculative point sits midway across the gap; the hit is on A's surface.
-            const ManifoldPoint& mp = c.manifold.points[fastestPoint];
-            s.hitEvents.push_back({c.idA, c.idB, mp.point - 0.5f * mp.separation * c.manifold.normal,
-                                   c.manifold.normal, fastest});
-        }
+        // A speculative point sits midway across the gap; the hit is on A's surface.
+        const ManifoldPoint& mp = c.manifold.points[h.point];
+        s.hitEvents.push_back({c.idA, c.idB, mp.point - 0.5f * mp.separation * c.manifold.normal,
+                               c.manifold.normal, h.speed});
     }
 }
 

@@ -549,14 +549,9 @@ TEST(ClassicBlock, ConditionGuardAtTheThreshold) {
     EXPECT_FALSE(blockFor(0.01f));
 }
 
-TEST(SoftStep, ReversedPointOrderMirrorsTheOrderBias) {
-    // A unit box (mass 1, inverse inertia 6) sunk 0.2 m into the ground, frictionless, at
-    // rest: one biased solve pushes it out at the capped speed, 3 m/s. Gauss-Seidel solves the
-    // left point (x = -0.5) first, P0 = m_n s 3 with m_n = 1 / (1 + 6 * 0.25) = 0.4 and s the
-    // mass scale; that push tips the right point down by 0.5 P0, so it gets more,
-    // P1 = m_n s (3 + 0.5 P0), and the box spins at w = 6 * 0.5 * (P1 - P0). Solved right
-    // to left, the result is the mirror image: the solver alternates the two orders.
-    ContactSoftness softness = makeContactSoftness(SolverDef{}, kDt);
+// A unit box (mass 1, inverse inertia 6) sunk 0.2 m into the ground, frictionless, at rest,
+// touching at x = -0.5 and x = 0.5: one biased solve pushes it out at the capped speed, 3 m/s.
+ContactConstraint sunkenBox(const ContactSoftness& softness) {
     Manifold m;
     m.normal = {0.0f, 1.0f};
     m.pointCount = 2;
@@ -573,6 +568,56 @@ TEST(SoftStep, ReversedPointOrderMirrorsTheOrderBias) {
     ContactBodyView box{{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f, {1.0f, 1.0f}, 6.0f, 0};
     ContactConstraint c;
     prepareContact(c, m, ground, box, {0.0f, 0.0f, 0.0f}, softness.vsStatic);
+    return c;
+}
+
+TEST(SoftStep, TouchingPairIsSolvedAsABlockWithoutOrderBias) {
+    // K = [2.5 -0.5; -0.5 2.5] (1 + 6 r_i r_j with r = -0.5, 0.5); both points push:
+    // x = -K^-1 (-3, -3) = (1.5, 1.5), times the mass scale. The box rises straight, and the
+    // point order makes no difference at all.
+    ContactSoftness softness = makeContactSoftness(SolverDef{}, kDt);
+    ContactConstraint c = sunkenBox(softness);
+    ASSERT_TRUE(c.blockSolve);
+    EXPECT_FLOAT_EQ(c.blockK.a11, 2.5f);
+    EXPECT_FLOAT_EQ(c.blockK.a12, -0.5f);
+    const float invH = 4.0f / kDt;
+
+    std::vector<ContactConstraint> forward{c};
+    std::vector<BodyState> forwardState(1);
+    solveContacts(forward, forwardState, invH, true, 3.0f, false, false);
+    std::vector<ContactConstraint> reversed{c};
+    std::vector<BodyState> reversedState(1);
+    solveContacts(reversed, reversedState, invH, true, 3.0f, false, true);
+
+    const float s = softness.vsStatic.massScale;
+    EXPECT_FLOAT_EQ(forward[0].points[0].normalImpulse, 1.5f * s);
+    EXPECT_EQ(forward[0].points[0].normalImpulse, forward[0].points[1].normalImpulse);
+    EXPECT_EQ(forwardState[0].angularVelocity, 0.0f);
+    EXPECT_FLOAT_EQ(forwardState[0].linearVelocity.y, 3.0f * s);
+    EXPECT_EQ(reversedState[0].linearVelocity.y, forwardState[0].linearVelocity.y);
+    EXPECT_EQ(reversedState[0].angularVelocity, 0.0f);
+
+    // Relaxing (no bias): the rigid block solution, which stops both points exactly.
+    std::vector<BodyState> moving(1);
+    moving[0].linearVelocity = {0.0f, -1.0f};
+    moving[0].angularVelocity = 2.0f;
+    std::vector<ContactConstraint> relaxed{c};
+    solveContacts(relaxed, moving, invH, false, 3.0f, false, false);
+    for (const ContactConstraintPoint& cp : relaxed[0].points) {
+        Vec2 v = moving[0].linearVelocity + cross(moving[0].angularVelocity, cp.anchorB);
+        EXPECT_NEAR(v.y, 0.0f, 1e-5f);
+    }
+}
+
+TEST(SoftStep, PointByPointReversedOrderMirrorsTheOrderBias) {
+    // Without the block (an ill-conditioned K, e.g. a body that cannot rotate), Gauss-Seidel
+    // solves the left point first, P0 = m_n s 3 with m_n = 1 / (1 + 6 * 0.25) = 0.4 and s the
+    // mass scale; that push tips the right point down by 0.5 P0, so it gets more,
+    // P1 = m_n s (3 + 0.5 P0), and the box spins at w = 6 * 0.5 * (P1 - P0). Solved right
+    // to left, the result is the mirror image: the solver alternates the two orders.
+    ContactSoftness softness = makeContactSoftness(SolverDef{}, kDt);
+    ContactConstraint c = sunkenBox(softness);
+    c.blockSolve = false;
     const float invH = 4.0f / kDt;
 
     std::vector<ContactConstraint> forward{c};

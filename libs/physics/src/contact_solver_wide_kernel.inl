@@ -1,0 +1,307 @@
+// SPDX-License-Identifier: MIT
+// The wide contact passes for one lane width. Included by contact_solver_wide.cpp once per
+// width, inside a namespace that defines: N (lanes), F and I (float and mask vectors),
+// E2D_WIDE_FN (the function attributes: the instruction set of that width), splat, select,
+// maxOf, anyLane, allLanes, transposeRows, loadRows and storeRows. One text for every width, so they
+// cannot drift apart.
+
+using Constraint = WideConstraintT<N>;
+using Point = WidePointT<N>;
+
+struct WideBody {
+    F vx, vy, w, flags;
+    F dpx, dpy, qc, qs;
+};
+
+// Where each lane reads its body (a static side: a resting state) and writes it back (a
+// static side: `sink`, never read). Unconditional stores cost less than a branch per lane.
+E2D_WIDE_FN void lanesOf(const int (&index)[N], std::span<BodyState> states, BodyState& sink,
+                         const BodyState* (&in)[N], BodyState* (&out)[N]) {
+    for (int i = 0; i < N; ++i) {
+        const bool moving = index[i] >= 0;
+        BodyState* s = states.data() + (moving ? index[i] : 0);
+        in[i] = moving ? s : &kStaticState;
+        out[i] = moving ? s : &sink;
+    }
+}
+
+E2D_WIDE_FN void scatterVelocities(const WideBody& b, BodyState* const (&out)[N]) {
+    storeRows(b.vx, b.vy, b.w, b.flags, out);
+}
+
+E2D_WIDE_FN void warmStartOne(const Constraint& c, std::span<BodyState> states) {
+    BodyState sink;
+    const BodyState* sa[N];
+    const BodyState* sb[N];
+    BodyState* wa[N];
+    BodyState* wb[N];
+    lanesOf(c.indexA, states, sink, sa, wa);
+    lanesOf(c.indexB, states, sink, sb, wb);
+    WideBody a;
+    WideBody b;
+    loadRows(sa, 0, a.vx, a.vy, a.w, a.flags);
+    loadRows(sb, 0, b.vx, b.vy, b.w, b.flags);
+    const F nx = c.normalX;
+    const F ny = c.normalY;
+    const F tx = ny;
+    const F ty = -nx;
+    for (const Point& cp : c.points) {
+        F px = cp.normalImpulse * nx + cp.tangentImpulse * tx;
+        F py = cp.normalImpulse * ny + cp.tangentImpulse * ty;
+        a.w = a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px);
+        a.vx = a.vx - c.invMassAx * px;
+        a.vy = a.vy - c.invMassAy * py;
+        b.w = b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px);
+        b.vx = b.vx + c.invMassBx * px;
+        b.vy = b.vy + c.invMassBy * py;
+    }
+    scatterVelocities(a, wa);
+    scatterVelocities(b, wb);
+}
+
+// The separation of point `cp` now (currentSeparation()).
+E2D_WIDE_FN F separationOf(const Point& cp, const Constraint& c, const WideBody& a,
+                           const WideBody& b) {
+    F prAx = a.qc * cp.anchorAx - a.qs * cp.anchorAy;
+    F prAy = a.qs * cp.anchorAx + a.qc * cp.anchorAy;
+    F prBx = b.qc * cp.anchorBx - b.qs * cp.anchorBy;
+    F prBy = b.qs * cp.anchorBx + b.qc * cp.anchorBy;
+    F dx = (b.dpx - a.dpx) + (prBx - prAx);
+    F dy = (b.dpy - a.dpy) + (prBy - prAy);
+    return (dx * c.normalX + dy * c.normalY) + cp.baseSeparation;
+}
+
+E2D_WIDE_FN F normalVelocityOf(const Point& cp, const Constraint& c, const WideBody& a,
+                               const WideBody& b) {
+    F dvx = (b.vx + (-b.w) * cp.anchorBy) - (a.vx + (-a.w) * cp.anchorAy);
+    F dvy = (b.vy + b.w * cp.anchorBx) - (a.vy + a.w * cp.anchorAx);
+    return dvx * c.normalX + dvy * c.normalY;
+}
+
+// A point's bias, mass scale and impulse scale, as targetOf() in contact_solver.cpp picks them.
+struct Target {
+    F bias, massScale, impulseScale;
+};
+
+E2D_WIDE_FN Target targetOf(const Constraint& c, F s, F invH, bool useBias, float pushMaxSpeed) {
+    const F zero = splat(0.0f);
+    const F one = splat(1.0f);
+    I speculative = s > zero;
+    if (useBias) {
+        return {select(speculative, s * invH, maxOf(c.biasRate * s, splat(-pushMaxSpeed))),
+                select(speculative, one, c.massScale), select(speculative, zero, c.impulseScale)};
+    }
+    return {select(speculative, s * invH, zero), one, zero};
+}
+
+// noteImpact() on the lanes of `lanes`.
+E2D_WIDE_FN void noteImpact(Point& cp, I lanes, F vn, F s, F invH, bool useBias) {
+    I impact = lanes & ~cp.impactSeen & (vn + maxOf(s, splat(0.0f)) * invH < splat(0.0f));
+    // Rare once a pile has settled: skip the stores (and the division) when no lane hits.
+    if (anyLane(impact)) {
+        cp.impactSeen |= impact;
+        cp.relativeVelocity = select(impact, vn, cp.relativeVelocity);
+        cp.impactGap = select(impact, useBias ? s + vn / invH : s, cp.impactGap);
+    }
+}
+
+// `updated` on the lanes of `lanes`, `old` (bit for bit) on the others; kMasked false: every
+// lane is in `lanes`.
+template <bool kMasked>
+E2D_WIDE_FN F keep(I lanes, F updated, F old) {
+    if constexpr (kMasked) {
+        return select(lanes, updated, old);
+    } else {
+        (void)lanes;
+        (void)old;
+        return updated;
+    }
+}
+
+// The scalar pass's point-by-point normal solve, on the lanes of `lanes`.
+template <bool kReversePoints, bool kMasked>
+E2D_WIDE_FN void solvePoints(Constraint& c, WideBody& a, WideBody& b, I lanes, F invH,
+                             bool useBias, float pushMaxSpeed) {
+    const F nx = c.normalX;
+    const F ny = c.normalY;
+    const F zero = splat(0.0f);
+    // Reversed, a one-point lane meets its empty second point first: zero normal mass, no
+    // impulse, the same result as the scalar pass that skips it.
+    for (int j = 0; j < 2; ++j) {
+        Point& cp = c.points[kReversePoints ? 1 - j : j];
+        F s = separationOf(cp, c, a, b);
+        Target t = targetOf(c, s, invH, useBias, pushMaxSpeed);
+        F vn = normalVelocityOf(cp, c, a, b);
+        noteImpact(cp, lanes, vn, s, invH, useBias);
+        F impulse = (-cp.normalMass) * t.massScale * (vn + t.bias) - t.impulseScale * cp.normalImpulse;
+        F newImpulse = maxOf(cp.normalImpulse + impulse, zero);
+        impulse = newImpulse - cp.normalImpulse;
+        cp.normalImpulse = keep<kMasked>(lanes, newImpulse, cp.normalImpulse);
+        cp.maxNormalImpulse =
+            keep<kMasked>(lanes, maxOf(cp.maxNormalImpulse, impulse), cp.maxNormalImpulse);
+        F px = impulse * nx;
+        F py = impulse * ny;
+        a.vx = keep<kMasked>(lanes, a.vx - c.invMassAx * px, a.vx);
+        a.vy = keep<kMasked>(lanes, a.vy - c.invMassAy * py, a.vy);
+        a.w = keep<kMasked>(lanes, a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px), a.w);
+        b.vx = keep<kMasked>(lanes, b.vx + c.invMassBx * px, b.vx);
+        b.vy = keep<kMasked>(lanes, b.vy + c.invMassBy * py, b.vy);
+        b.w = keep<kMasked>(lanes, b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px), b.w);
+    }
+}
+
+// The scalar pass's block solve (solveBlock() on each point's soft right-hand side) on the
+// lanes of `lanes`.
+template <bool kMasked>
+E2D_WIDE_FN void solveBlock(Constraint& c, WideBody& a, WideBody& b, I lanes, F invH,
+                            bool useBias, float pushMaxSpeed) {
+    const F zero = splat(0.0f);
+    Point& cp1 = c.points[0];
+    Point& cp2 = c.points[1];
+    F s1 = separationOf(cp1, c, a, b);
+    F s2 = separationOf(cp2, c, a, b);
+    Target t1 = targetOf(c, s1, invH, useBias, pushMaxSpeed);
+    Target t2 = targetOf(c, s2, invH, useBias, pushMaxSpeed);
+    F vn1 = normalVelocityOf(cp1, c, a, b);
+    F vn2 = normalVelocityOf(cp2, c, a, b);
+    noteImpact(cp1, lanes, vn1, s1, invH, useBias);
+    noteImpact(cp2, lanes, vn2, s2, invH, useBias);
+    const F acc1 = cp1.normalImpulse;
+    const F acc2 = cp2.normalImpulse;
+    F r1 = t1.massScale * (vn1 + t1.bias) + t1.impulseScale * (c.k11 * acc1);
+    F r2 = t2.massScale * (vn2 + t2.bias) + t2.impulseScale * (c.k22 * acc2);
+    F x1 = acc1 - (c.inv11 * r1 + c.inv12 * r2);
+    F x2 = acc2 - (c.inv12 * r1 + c.inv22 * r2);
+    I okBoth = (x1 >= zero) & (x2 >= zero);
+    // A resting pile has both points pushing in every lane: the other cases are rare.
+    if (!allLanes(okBoth | ~lanes)) {
+        F b1 = r1 - (c.k11 * acc1 + c.k12 * acc2);
+        F b2 = r2 - (c.k12 * acc1 + c.k22 * acc2);
+        F first = -b1 * cp1.normalMass;
+        I okFirst = (first >= zero) & (c.k12 * first + b2 >= zero);
+        F second = -b2 * cp2.normalMass;
+        I okSecond = (second >= zero) & (c.k12 * second + b1 >= zero);
+        I okNone = (b1 >= zero) & (b2 >= zero);
+        // The first feasible case wins; none feasible keeps the impulses.
+        x1 = select(okBoth, x1, select(okFirst, first, select(okSecond | okNone, zero, acc1)));
+        x2 = select(okBoth, x2,
+                    select(okFirst, zero, select(okSecond, second, select(okNone, zero, acc2))));
+    }
+    F d1 = x1 - acc1;
+    F d2 = x2 - acc2;
+    cp1.normalImpulse = keep<kMasked>(lanes, x1, acc1);
+    cp2.normalImpulse = keep<kMasked>(lanes, x2, acc2);
+    cp1.maxNormalImpulse = keep<kMasked>(lanes, maxOf(cp1.maxNormalImpulse, d1), cp1.maxNormalImpulse);
+    cp2.maxNormalImpulse = keep<kMasked>(lanes, maxOf(cp2.maxNormalImpulse, d2), cp2.maxNormalImpulse);
+    F p1x = d1 * c.normalX;
+    F p1y = d1 * c.normalY;
+    F p2x = d2 * c.normalX;
+    F p2y = d2 * c.normalY;
+    a.vx = keep<kMasked>(lanes, a.vx - c.invMassAx * (p1x + p2x), a.vx);
+    a.vy = keep<kMasked>(lanes, a.vy - c.invMassAy * (p1y + p2y), a.vy);
+    a.w = keep<kMasked>(lanes,
+                        a.w - c.invInertiaA * ((cp1.anchorAx * p1y - cp1.anchorAy * p1x) +
+                                               (cp2.anchorAx * p2y - cp2.anchorAy * p2x)),
+                        a.w);
+    b.vx = keep<kMasked>(lanes, b.vx + c.invMassBx * (p1x + p2x), b.vx);
+    b.vy = keep<kMasked>(lanes, b.vy + c.invMassBy * (p1y + p2y), b.vy);
+    b.w = keep<kMasked>(lanes,
+                        b.w + c.invInertiaB * ((cp1.anchorBx * p1y - cp1.anchorBy * p1x) +
+                                               (cp2.anchorBx * p2y - cp2.anchorBy * p2x)),
+                        b.w);
+}
+
+template <bool kReversePoints>
+E2D_WIDE_FN void solveOne(Constraint& c, std::span<BodyState> states, float invH, bool useBias,
+                          float pushMaxSpeed) {
+    BodyState sink;
+    const BodyState* sa[N];
+    const BodyState* sb[N];
+    BodyState* wa[N];
+    BodyState* wb[N];
+    lanesOf(c.indexA, states, sink, sa, wa);
+    lanesOf(c.indexB, states, sink, sb, wb);
+    WideBody a;
+    WideBody b;
+    loadRows(sa, 0, a.vx, a.vy, a.w, a.flags);
+    loadRows(sb, 0, b.vx, b.vy, b.w, b.flags);
+    loadRows(sa, 16, a.dpx, a.dpy, a.qc, a.qs);
+    loadRows(sb, 16, b.dpx, b.dpy, b.qc, b.qs);
+    const F nx = c.normalX;
+    const F ny = c.normalY;
+    const F tx = ny;
+    const F ty = -nx;
+    const F vInvH = splat(invH);
+
+    // Lanes of well-conditioned 2-point manifolds take the block solve, the others go point by
+    // point; a group is usually all one kind (a pile of boxes, a bin of balls).
+    const I block = c.blockSolve;
+    if (allLanes(block)) {
+        solveBlock<false>(c, a, b, block, vInvH, useBias, pushMaxSpeed);
+    } else if (!anyLane(block)) {
+        solvePoints<kReversePoints, false>(c, a, b, ~block, vInvH, useBias, pushMaxSpeed);
+    } else {
+        solvePoints<kReversePoints, true>(c, a, b, ~block, vInvH, useBias, pushMaxSpeed);
+        solveBlock<true>(c, a, b, block, vInvH, useBias, pushMaxSpeed);
+    }
+
+    // Friction, as solveFriction() does it.
+    for (Point& cp : c.points) {
+        F dvx = (b.vx + (-b.w) * cp.anchorBy) - (a.vx + (-a.w) * cp.anchorAy);
+        F dvy = (b.vy + b.w * cp.anchorBx) - (a.vy + a.w * cp.anchorAx);
+        F impulse = -cp.tangentMass * (dvx * tx + dvy * ty);
+        F maxFriction = c.friction * cp.normalImpulse;
+        // std::clamp(v, lo, hi): v < lo ? lo : (hi < v ? hi : v)
+        F v = cp.tangentImpulse + impulse;
+        F lo = -maxFriction;
+        F newImpulse = select(v < lo, lo, select(maxFriction < v, maxFriction, v));
+        impulse = newImpulse - cp.tangentImpulse;
+        cp.tangentImpulse = newImpulse;
+        F px = impulse * tx;
+        F py = impulse * ty;
+        a.vx = a.vx - c.invMassAx * px;
+        a.vy = a.vy - c.invMassAy * py;
+        a.w = a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px);
+        b.vx = b.vx + c.invMassBx * px;
+        b.vy = b.vy + c.invMassBy * py;
+        b.w = b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px);
+    }
+
+    scatterVelocities(a, wa);
+    scatterVelocities(b, wb);
+}
+
+// levelStart: the group boundaries of the levels to run (absolute indices into constraints).
+E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints, std::span<const int> levelStart,
+                              std::span<BodyState> states) {
+    if (levelStart.size() < 2) {
+        return;
+    }
+    for (int g = levelStart.front(); g < levelStart.back(); ++g) {
+        warmStartOne(constraints[static_cast<std::size_t>(g)], states);
+    }
+}
+
+template <bool kReversePoints>
+E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<const int> levelStart,
+                          std::span<BodyState> states, float invH, bool useBias,
+                          float pushMaxSpeed, bool backward) {
+    if (levelStart.size() < 2) {
+        return;
+    }
+    if (!backward) {
+        for (int g = levelStart.front(); g < levelStart.back(); ++g) {
+            solveOne<kReversePoints>(constraints[static_cast<std::size_t>(g)], states, invH, useBias,
+                                     pushMaxSpeed);
+        }
+        return;
+    }
+    // Within a level the order does not matter; backward only reverses the levels.
+    const std::size_t levelCount = levelStart.size() - 1;
+    for (std::size_t k = levelCount; k-- > 0;) {
+        for (int g = levelStart[k]; g < levelStart[k + 1]; ++g) {
+            solveOne<kReversePoints>(constraints[static_cast<std::size_t>(g)], states, invH,
+                                     useBias, pushMaxSpeed);
+        }
+    }
+}
