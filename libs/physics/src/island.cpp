@@ -13,19 +13,6 @@ namespace e2d::physics {
 
 using detail::kNullIndex;
 
-namespace {
-
-int findRoot(std::vector<int>& parent, int i) {
-    while (parent[static_cast<std::size_t>(i)] != i) {
-        int grand = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
-        parent[static_cast<std::size_t>(i)] = grand; // path halving
-        i = grand;
-    }
-    return i;
-}
-
-} // namespace
-
 void World::Impl::wakeBody(int bodyIndex) {
     detail::Body& start = body(bodyIndex);
     if (!start.alive || start.type == BodyType::Static || start.motion.awake) {
@@ -76,8 +63,8 @@ void World::Impl::updateSleep(float dt) {
             body(s.sims[static_cast<std::size_t>(c.indexB)].bodyIndex).type != BodyType::Dynamic) {
             continue;
         }
-        int ra = findRoot(s.islandParent, c.indexA);
-        int rb = findRoot(s.islandParent, c.indexB);
+        int ra = detail::findRoot(s.islandParent, c.indexA);
+        int rb = detail::findRoot(s.islandParent, c.indexB);
         if (ra != rb) {
             // The lower index becomes the root, so the result does not depend on contact order.
             s.islandParent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
@@ -100,12 +87,12 @@ void World::Impl::updateSleep(float dt) {
         } else {
             m.sleepTime += dt;
         }
-        int root = findRoot(s.islandParent, i);
+        int root = detail::findRoot(s.islandParent, i);
         float& islandTime = s.islandSleepTime[static_cast<std::size_t>(root)];
         islandTime = std::min(islandTime, m.sleepTime);
     }
     for (int i = 0; i < n; ++i) {
-        int root = findRoot(s.islandParent, i);
+        int root = detail::findRoot(s.islandParent, i);
         if (s.islandSleepTime[static_cast<std::size_t>(root)] < def.timeToSleep) {
             continue;
         }

@@ -3,6 +3,7 @@
 
 #include "manifold_detail.hpp"
 #include "shape_detail.hpp"
+#include "sse_lanes.hpp"
 
 #include <cfloat>
 #include <cstddef>
@@ -101,21 +102,8 @@ struct FaceSeparation {
     float separation;
 };
 
-template <int L>
-inline __m128 splatLane(__m128 v) {
-    return _mm_castsi128_ps(_mm_shuffle_epi32(_mm_castps_si128(v), L * 0x55));
-}
-
-// Lanes at or past the count repeat lane 0 of their register (a real face): it ties with that
-// face and loses the tie to its lower index, so the first best face still wins.
-alignas(16) constexpr std::uint32_t kLaneMasks[4][4] = {
-    {0, 0, 0, 0}, {~0u, 0, 0, 0}, {~0u, ~0u, 0, 0}, {~0u, ~0u, ~0u, 0}};
-
-inline __m128 padLanes(__m128 v, int used) {
-    const __m128 keep =
-        _mm_castsi128_ps(_mm_load_si128(reinterpret_cast<const __m128i*>(kLaneMasks[used])));
-    return _mm_or_ps(_mm_and_ps(keep, v), _mm_andnot_ps(keep, splatLane<0>(v)));
-}
+using detail::sse::padLanes;
+using detail::sse::splat;
 
 inline __m128 maxAcrossLanes(__m128 v) {
     v = _mm_max_ps(_mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1)), v);
@@ -283,16 +271,16 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
     const __m128 negX = _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f);
     const __m128 negY = _mm_setr_ps(0.0f, -0.0f, 0.0f, -0.0f);
     const __m128 cWv = _mm_add_ps(
-        _mm_add_ps(_mm_mul_ps(_mm_shuffle_ps(tB, tB, _MM_SHUFFLE(3, 2, 3, 2)), splatLane<0>(centre)),
+        _mm_add_ps(_mm_mul_ps(_mm_shuffle_ps(tB, tB, _MM_SHUFFLE(3, 2, 3, 2)), splat<0>(centre)),
                    _mm_xor_ps(_mm_mul_ps(_mm_shuffle_ps(tB, tB, _MM_SHUFFLE(2, 3, 2, 3)),
-                                         splatLane<1>(centre)),
+                                         splat<1>(centre)),
                               negX)),
         _mm_sub_ps(tB, tA));
     const __m128 cv = _mm_add_ps(
-        _mm_xor_ps(_mm_mul_ps(_mm_shuffle_ps(tA, tA, _MM_SHUFFLE(3, 2, 3, 2)), splatLane<0>(cWv)),
+        _mm_xor_ps(_mm_mul_ps(_mm_shuffle_ps(tA, tA, _MM_SHUFFLE(3, 2, 3, 2)), splat<0>(cWv)),
                    negY),
-        _mm_mul_ps(_mm_shuffle_ps(tA, tA, _MM_SHUFFLE(2, 3, 2, 3)), splatLane<1>(cWv)));
-    const Vec2 cW{_mm_cvtss_f32(cWv), _mm_cvtss_f32(splatLane<1>(cWv))};
+        _mm_mul_ps(_mm_shuffle_ps(tA, tA, _MM_SHUFFLE(2, 3, 2, 3)), splat<1>(cWv)));
+    const Vec2 cW{_mm_cvtss_f32(cWv), _mm_cvtss_f32(splat<1>(cWv))};
 #else
     const Vec2 cW = rotate(xfB.q, b.center) + (xfB.p - xfA.p);
     const Vec2 c = invRotate(xfA.q, cW);
@@ -304,8 +292,8 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
     // its two vertices.
     // Kept by selects, not a branch: which face wins is random from pair to pair.
 #if E2D_ROUND_SSE2
-    const __m128 cx = splatLane<0>(cv);
-    const __m128 cy = splatLane<1>(cv);
+    const __m128 cx = splat<0>(cv);
+    const __m128 cy = splat<1>(cv);
     const FaceSeparation best =
         a.count > 4 ? maxFaceSeparation<2>(a, cx, cy) : maxFaceSeparation<1>(a, cx, cy);
     const int face = best.face;

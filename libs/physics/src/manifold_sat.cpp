@@ -4,6 +4,7 @@
 #include "manifold_detail.hpp"
 #include "polygon_clip.hpp"
 #include "shape_detail.hpp"
+#include "sse_lanes.hpp"
 
 #include <cfloat>
 #include <cmath>
@@ -105,22 +106,8 @@ struct Lanes {
     __m128 y[G];
 };
 
-template <int L>
-inline __m128 splat(__m128 v) {
-    // pshufd: one instruction, where shufps would need a copy first.
-    return _mm_castsi128_ps(_mm_shuffle_epi32(_mm_castps_si128(v), L * 0x55));
-}
-
-// Lanes at or past the count repeat the group's first item: a repeated vertex changes no
-// minimum, and a repeated face ties with the real one and loses the tie to its lower index.
-alignas(16) constexpr std::uint32_t kLaneMasks[4][4] = {
-    {0, 0, 0, 0}, {~0u, 0, 0, 0}, {~0u, ~0u, 0, 0}, {~0u, ~0u, ~0u, 0}};
-
-inline __m128 padLanes(__m128 v, int used) {
-    const __m128 keep =
-        _mm_castsi128_ps(_mm_load_si128(reinterpret_cast<const __m128i*>(kLaneMasks[used])));
-    return _mm_or_ps(_mm_and_ps(keep, v), _mm_andnot_ps(keep, splat<0>(v)));
-}
+using detail::sse::padLanes;
+using detail::sse::splat;
 
 template <int G>
 inline Lanes<G> loadLanes(const Vec2* items, int count) {

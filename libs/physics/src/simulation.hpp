@@ -48,6 +48,17 @@ struct BodyMotion {
 
 // A pair of shapes whose fat boxes overlap. Contacts live in one array with a free list;
 // each is linked into both bodies' lists (side 0: body A, side 1: body B).
+// The root of i's set in a union-find forest (parent[root] == root), halving the path on the
+// way. Islands (island.cpp) and the wide solver's blocks (world_step.cpp) use it.
+inline int findRoot(std::vector<int>& parent, int i) {
+    while (parent[static_cast<std::size_t>(i)] != i) {
+        int grand = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+        parent[static_cast<std::size_t>(i)] = grand;
+        i = grand;
+    }
+    return i;
+}
+
 struct Contact {
     Manifold manifold{};
     float friction = 0.0f;

@@ -57,15 +57,6 @@ namespace {
 // 0.7 MB of packed constraints, well inside a core's L2 cache with its bodies.
 constexpr int kBlockConstraints = 4096;
 
-int findRoot(std::vector<int>& parent, int i) {
-    while (parent[static_cast<std::size_t>(i)] != i) {
-        int grand = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
-        parent[static_cast<std::size_t>(i)] = grand; // path halving
-        i = grand;
-    }
-    return i;
-}
-
 } // namespace
 
 // The wide solver's schedule. Islands (bodies joined through constraints, any body with a
@@ -85,8 +76,8 @@ void World::Impl::scheduleWide(int constraintCount) {
     }
     for (const detail::Simulation::ConstraintBodies& cb : s.constraintBodies) {
         if (cb.indexA >= 0 && cb.indexB >= 0) {
-            int ra = findRoot(parent, cb.indexA);
-            int rb = findRoot(parent, cb.indexB);
+            int ra = detail::findRoot(parent, cb.indexA);
+            int rb = detail::findRoot(parent, cb.indexB);
             if (ra != rb) {
                 parent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
             }
@@ -96,7 +87,7 @@ void World::Impl::scheduleWide(int constraintCount) {
     s.constraintIsland.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
         const detail::Simulation::ConstraintBodies& cb = s.constraintBodies[k];
-        int root = findRoot(parent, cb.indexA >= 0 ? cb.indexA : cb.indexB);
+        int root = detail::findRoot(parent, cb.indexA >= 0 ? cb.indexA : cb.indexB);
         s.constraintIsland[k] = root;
         ++s.islandConstraints[static_cast<std::size_t>(root)];
     }
@@ -169,7 +160,7 @@ void World::Impl::scheduleWide(int constraintCount) {
     s.blockBodyStart.assign(static_cast<std::size_t>(blockCount) + 2, 0);
     s.bodyBlock.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        int block = s.islandBlock[static_cast<std::size_t>(findRoot(parent, static_cast<int>(i)))];
+        int block = s.islandBlock[static_cast<std::size_t>(detail::findRoot(parent, static_cast<int>(i)))];
         block = block < 0 ? blockCount : block;
         s.bodyBlock[i] = block;
         ++s.blockBodyStart[static_cast<std::size_t>(block) + 1];
