@@ -14,8 +14,23 @@ namespace {
 // 377 rad/s with 4 sub-steps.
 constexpr float kMaxRotation = 0.5f * 3.14159265f;
 
+} // namespace
+
+void clampVelocity(Vec2& v, float& w, float maxLinearSpeed, float h) {
+    float speedSquared = dot(v, v);
+    if (speedSquared > maxLinearSpeed * maxLinearSpeed) {
+        v *= maxLinearSpeed / std::sqrt(speedSquared);
+    }
+    // The rotation integrator is only right for small angles, and a huge one overflows it
+    // into a zero (not unit) rotation that no finiteness check would catch.
+    float maxAngularSpeed = kMaxRotation / h;
+    w = std::clamp(w, -maxAngularSpeed, maxAngularSpeed);
+}
+
+namespace {
+
 inline void integrateVelocity(const BodySim& sim, BodyState& state, Vec2 gravity, float h,
-                              float maxLinearSpeed, float maxSpeedSquared) {
+                              float maxLinearSpeed) {
     // Implicit damping: stable for any damping coefficient and step.
     float linearDamping = 1.0f / (1.0f + h * sim.linearDamping);
     float angularDamping = 1.0f / (1.0f + h * sim.angularDamping);
@@ -25,14 +40,7 @@ inline void integrateVelocity(const BodySim& sim, BodyState& state, Vec2 gravity
                sim.invMass.y > 0.0f ? g.y + sim.invMass.y * sim.force.y : 0.0f};
     Vec2 v = h * accel + linearDamping * state.linearVelocity;
     float w = h * sim.invInertia * sim.torque + angularDamping * state.angularVelocity;
-    float speedSquared = dot(v, v);
-    if (speedSquared > maxSpeedSquared) {
-        v *= maxLinearSpeed / std::sqrt(speedSquared);
-    }
-    // The rotation integrator is only right for small angles, and a huge one overflows it
-    // into a zero (not unit) rotation that no finiteness check would catch.
-    float maxAngularSpeed = kMaxRotation / h;
-    w = std::clamp(w, -maxAngularSpeed, maxAngularSpeed);
+    clampVelocity(v, w, maxLinearSpeed, h);
     if (!isFinite(v) || !isFinite(w) || (state.flags & kNonFinite) != 0) {
         // Absurd input (a force or gravity scale near the float limit) overflowed: the
         // body stays still for the rest of the step, so the contact solver spreads nothing
@@ -54,18 +62,16 @@ inline void integratePosition(BodyState& state, float h) {
 
 void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, Vec2 gravity,
                          float h, float maxLinearSpeed) {
-    float maxSpeedSquared = maxLinearSpeed * maxLinearSpeed;
     for (std::size_t i = 0; i < sims.size(); ++i) {
-        integrateVelocity(sims[i], states[i], gravity, h, maxLinearSpeed, maxSpeedSquared);
+        integrateVelocity(sims[i], states[i], gravity, h, maxLinearSpeed);
     }
 }
 
 void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states,
                          std::span<const int> indices, Vec2 gravity, float h, float maxLinearSpeed) {
-    float maxSpeedSquared = maxLinearSpeed * maxLinearSpeed;
     for (int i : indices) {
         const auto k = static_cast<std::size_t>(i);
-        integrateVelocity(sims[k], states[k], gravity, h, maxLinearSpeed, maxSpeedSquared);
+        integrateVelocity(sims[k], states[k], gravity, h, maxLinearSpeed);
     }
 }
 

@@ -22,7 +22,10 @@ struct SolverStep {
     const SolverDef* def = nullptr;
 };
 
-// Gravity, forces and damping over h seconds; speeds clamped to maxLinearSpeed.
+// Clamps a body's speed to maxLinearSpeed and its angular speed to what one integration step
+// of h seconds can turn (a quarter turn), as integrateVelocities() does.
+void clampVelocity(Vec2& v, float& w, float maxLinearSpeed, float h);
+// Gravity, forces and damping over h seconds; speeds clamped (clampVelocity()).
 void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, Vec2 gravity,
                          float h, float maxLinearSpeed);
 // Accumulates each body's motion over h seconds into its deltaPosition/deltaRotation.

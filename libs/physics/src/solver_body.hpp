@@ -57,7 +57,14 @@ inline Rot integrateRotation(Rot q, float da) {
     float c = q.c - da * q.s;
     float s = q.s + da * q.c;
     float mag = std::sqrt(c * c + s * s);
-    float inv = mag > 0.0f ? 1.0f / mag : 0.0f;
+    if (!(mag > 0.0f && mag < INFINITY)) [[unlikely]] {
+        // A huge angle (a classic position correction pushed by an absurd impulse) overflows
+        // the first-order step into a zero rotation, which is finite and so would pass for a
+        // valid state: turn by da exactly instead (NaN for a non-finite da, which the world
+        // then reports).
+        return mulRot(Rot{std::cos(da), std::sin(da)}, q);
+    }
+    float inv = 1.0f / mag;
     return {c * inv, s * inv};
 }
 

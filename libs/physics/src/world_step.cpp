@@ -181,6 +181,8 @@ void World::Impl::solve(float dt) {
     const SolverDef& def = s.def;
 
     // The awake moving bodies, in slot order.
+    const float integrationStep =
+        def.mode == SolverMode::SoftStep ? dt / static_cast<float>(def.subSteps) : dt;
     s.sims.clear();
     s.states.clear();
     for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
@@ -213,6 +215,10 @@ void World::Impl::solve(float dt) {
         st.angularVelocity = m.invInertia == 0.0f && b.type == BodyType::Dynamic
                                  ? 0.0f
                                  : b.angularVelocity;
+        // Velocities set beyond the caps (a finite 1e38 spin) are capped before the contacts
+        // read them: integration would cap them anyway, and a contact's approach speed taken
+        // from the raw value could overflow its restitution and hit event.
+        detail::clampVelocity(st.linearVelocity, st.angularVelocity, def.maxLinearSpeed, integrationStep);
     }
 
     detail::ContactSoftness softness = detail::makeContactSoftness(def, dt);

@@ -549,6 +549,23 @@ TEST(ClassicBlock, ConditionGuardAtTheThreshold) {
     EXPECT_FALSE(blockFor(0.01f));
 }
 
+TEST(IntegrateRotation, AHugeAngleTurnsExactlyInsteadOfCollapsing) {
+    // The first-order step q + da perp(q) overflows for a huge da; renormalising that used to
+    // give q = (0, 0), a finite rotation nothing reports.
+    for (float da : {1.0e20f, 3.0e38f, -1.0e30f}) {
+        Rot q = integrateRotation(Rot{1.0f, 0.0f}, da);
+        EXPECT_NEAR(q.c * q.c + q.s * q.s, 1.0f, 1e-5f) << da;
+        EXPECT_FLOAT_EQ(q.c, std::cos(da)) << da;
+        EXPECT_FLOAT_EQ(q.s, std::sin(da)) << da;
+    }
+    // A small one is the first-order step, renormalised, as before.
+    Rot small = integrateRotation(Rot{1.0f, 0.0f}, 0.01f);
+    EXPECT_FLOAT_EQ(small.s, 0.01f / std::sqrt(1.0f + 0.0001f));
+    // A non-finite angle gives a non-finite rotation, which the world's check catches.
+    Rot bad = integrateRotation(Rot{1.0f, 0.0f}, INFINITY);
+    EXPECT_FALSE(std::isfinite(bad.c) && std::isfinite(bad.s));
+}
+
 // A unit box (mass 1, inverse inertia 6) sunk 0.2 m into the ground, frictionless, at rest,
 // touching at x = -0.5 and x = 0.5: one biased solve pushes it out at the capped speed, 3 m/s.
 ContactConstraint sunkenBox(const ContactSoftness& softness) {

@@ -208,6 +208,38 @@ TEST(WorldStep, AbsurdSpinSetOnABodyDoesNotReachItsNeighbour) {
     }
 }
 
+TEST(WorldStep, AbsurdVelocityOfAKinematicBodyGivesFiniteHitEvents) {
+    // A kinematic box set moving at 3e38 m/s into a dynamic one: a contact that read the raw
+    // velocity took an infinite approach speed (the dot product overflows) into its hit event
+    // (the fuzzer found it). Velocities are capped before the contacts read them, as
+    // integration caps them.
+    for (SolverMode mode : {SolverMode::SoftStep, SolverMode::Classic}) {
+        WorldDef def;
+        def.gravity = {0.0f, 0.0f};
+        def.solver.mode = mode;
+        def.solver.hitEventThreshold = 0.0f;
+        World world{def};
+        BodyDef kd;
+        kd.type = BodyType::Kinematic;
+        BodyId mover = world.createBody(kd);
+        world.createShape(mover, ShapeDef{}, Circle{{0.0f, 0.0f}, 0.5f});
+        // Touching along the diagonal: dot(normal, v) of a 3e38 m/s velocity along it
+        // overflows.
+        BodyId target = addBall(world, {0.707f, 0.707f}, 0.5f);
+        world.step(kStep); // touching: the next step starts with their contact
+        world.setLinearVelocity(mover, {3.0e38f, 3.0e38f});
+        world.step(kStep);
+        for (const ContactHitEvent& e : world.hitEvents()) {
+            EXPECT_TRUE(isFinite(e.point) && isFinite(e.normal) && std::isfinite(e.approachSpeed))
+                << static_cast<int>(mode) << ": " << e.approachSpeed;
+        }
+        EXPECT_TRUE(world.isBodyEnabled(target)) << static_cast<int>(mode);
+        EXPECT_TRUE(isFinite(world.linearVelocity(target))) << static_cast<int>(mode);
+        // Capped like any body: at most maxLinearSpeed.
+        EXPECT_LE(length(world.linearVelocity(mover)), def.solver.maxLinearSpeed * 1.0001f);
+    }
+}
+
 TEST(WorldStep, HugeSpinKeepsAUnitRotation) {
     for (SolverMode mode : {SolverMode::SoftStep, SolverMode::Classic}) {
         WorldDef def;
