@@ -178,18 +178,8 @@ void solveContactsInOrder(std::span<ContactConstraint> constraints, std::span<Bo
                      t2.massScale * (vn.y + t2.bias) + t2.impulseScale * (c.blockK.a22 * old.y)};
             Vec2 x = old;
             solveBlock(c, old, rhs, x);
-            Vec2 d = x - old;
-            cp1.normalImpulse = x.x;
-            cp2.normalImpulse = x.y;
-            cp1.maxNormalImpulse = std::max(cp1.maxNormalImpulse, d.x);
-            cp2.maxNormalImpulse = std::max(cp2.maxNormalImpulse, d.y);
+            applyBlock(c, old, x, vA, wA, vB, wB);
             totalNormalImpulse = x.x + x.y;
-            Vec2 p1 = d.x * normal;
-            Vec2 p2 = d.y * normal;
-            vA -= scale(mA, p1 + p2);
-            wA -= iA * (cross(cp1.anchorA, p1) + cross(cp2.anchorA, p2));
-            vB += scale(mB, p1 + p2);
-            wB += iB * (cross(cp1.anchorB, p1) + cross(cp2.anchorB, p2));
         }
 
         for (int j = 0; j < (c.blockSolve ? 0 : c.pointCount); ++j) {

@@ -81,17 +81,7 @@ void solveVelocitiesClassic(std::span<ContactConstraint> constraints, std::span<
             Vec2 old{cp1.normalImpulse, cp2.normalImpulse};
             Vec2 x = old;
             solveBlock(c, old, vn, x);
-            Vec2 d = x - old;
-            cp1.normalImpulse = x.x;
-            cp2.normalImpulse = x.y;
-            cp1.maxNormalImpulse = std::max(cp1.maxNormalImpulse, d.x);
-            cp2.maxNormalImpulse = std::max(cp2.maxNormalImpulse, d.y);
-            Vec2 p1 = d.x * normal;
-            Vec2 p2 = d.y * normal;
-            vA -= scale(mA, p1 + p2);
-            wA -= iA * (cross(cp1.anchorA, p1) + cross(cp2.anchorA, p2));
-            vB += scale(mB, p1 + p2);
-            wB += iB * (cross(cp1.anchorB, p1) + cross(cp2.anchorB, p2));
+            applyBlock(c, old, x, vA, wA, vB, wB);
         } else {
             for (int i = 0; i < c.pointCount; ++i) {
                 ContactConstraintPoint& cp = c.points[i];

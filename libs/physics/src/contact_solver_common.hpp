@@ -90,6 +90,25 @@ inline bool solveBlock(const ContactConstraint& c, Vec2 accumulated, Vec2 vn, Ve
     return false;
 }
 
+// Stores a 2-point manifold's new accumulated normal impulses `x` (they were `old`) and applies
+// the change to the bodies' velocities. The order of the sums is the wide kernel's too.
+inline void applyBlock(ContactConstraint& c, Vec2 old, Vec2 x, Vec2& vA, float& wA, Vec2& vB,
+                       float& wB) {
+    ContactConstraintPoint& cp1 = c.points[0];
+    ContactConstraintPoint& cp2 = c.points[1];
+    Vec2 d = x - old;
+    cp1.normalImpulse = x.x;
+    cp2.normalImpulse = x.y;
+    cp1.maxNormalImpulse = std::max(cp1.maxNormalImpulse, d.x);
+    cp2.maxNormalImpulse = std::max(cp2.maxNormalImpulse, d.y);
+    Vec2 p1 = d.x * c.normal;
+    Vec2 p2 = d.y * c.normal;
+    vA -= scale(c.invMassA, p1 + p2);
+    wA -= c.invInertiaA * (cross(cp1.anchorA, p1) + cross(cp2.anchorA, p2));
+    vB += scale(c.invMassB, p1 + p2);
+    wB += c.invInertiaB * (cross(cp1.anchorB, p1) + cross(cp2.anchorB, p2));
+}
+
 // A static body has no state; its constraints read and write this zero one instead. Writes
 // are harmless: a static side has zero inverse mass, so nothing is ever added to it.
 struct StatePair {
