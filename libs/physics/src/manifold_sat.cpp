@@ -45,6 +45,22 @@ inline LocalManifold noContact() {
 // 8e-6 m at 100 m). Below it, copying A to shift it costs more than it gains.
 constexpr float kShiftSquared = 100.0f * 100.0f;
 
+// Where the work happens: A's frame, moved to A's first vertex when that is far from A's
+// origin (see kShiftSquared); `origin` is that vertex, to shift A and the results by.
+struct WorkFrame {
+    Transform frame;
+    Vec2 origin;
+    bool shift;
+};
+
+inline WorkFrame workFrameOf(const Polygon& a, const Transform& xfA) {
+    WorkFrame w{xfA, a.vertices[0], lengthSquared(a.vertices[0]) > kShiftSquared};
+    if (w.shift) [[unlikely]] {
+        w.frame.p = transformPoint(xfA, w.origin);
+    }
+    return w;
+}
+
 // The manifold once the axis is known: `edge1` of poly1 (B when `flip`) is the reference face,
 // `incident` the face of poly2 most anti-parallel to it, `separation` the reference face's.
 // Shared by both search paths, so that they can differ only in how they find the axis.
@@ -228,12 +244,7 @@ inline int findIncidentEdge(Vec2 reference, const Lanes<G>& normals) {
 template <int GA, int GB>
 [[gnu::always_inline]] inline Manifold collideLanes(const Polygon& a, const Transform& xfA, const Polygon& b,
                       const Transform& xfB, float margin) {
-    const Vec2 origin = a.vertices[0];
-    const bool shift = lengthSquared(origin) > kShiftSquared;
-    Transform frame = xfA;
-    if (shift) [[unlikely]] {
-        frame.p = transformPoint(xfA, origin);
-    }
+    const auto [frame, origin, shift] = workFrameOf(a, xfA);
     // Work in A's frame: B's vertices are moved there first, its normals only once A's faces
     // found no separating axis, so separated pairs skip that work.
     const Transform xf = invMulTransforms(frame, xfB);
@@ -385,12 +396,7 @@ Manifold collidePolygons(const Polygon& a, const Transform& xfA, const Polygon& 
                        : collideLanes<1, 1>(a, xfA, b, xfB, margin);
 #else
     // Work in A's frame: B is moved there once (its normals only when they are needed).
-    const Vec2 origin = a.vertices[0];
-    const bool shift = lengthSquared(origin) > kShiftSquared;
-    Transform frame = xfA;
-    if (shift) [[unlikely]] {
-        frame.p = transformPoint(xfA, origin);
-    }
+    const auto [frame, origin, shift] = workFrameOf(a, xfA);
     const Transform xf = invMulTransforms(frame, xfB);
     detail::PolygonScratch movedB;
     for (int i = 0; i < b.count; ++i) {
