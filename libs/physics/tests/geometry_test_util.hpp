@@ -8,6 +8,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdint>
 #include <numbers>
 #include <random>
 #include <string>
@@ -56,6 +58,28 @@ public:
 private:
     std::mt19937 engine_;
 };
+
+// Two manifolds equal bit for bit, the unused second point included (the SSE paths against
+// their scalar paths); `pair` names the case in the failure message.
+inline void expectSameManifoldBits(const Manifold& simd, const Manifold& scalar, int pair) {
+    ASSERT_EQ(simd.pointCount, scalar.pointCount) << "pair " << pair;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(simd.normal), std::bit_cast<std::uint64_t>(scalar.normal))
+        << "pair " << pair;
+    for (int i = 0; i < 2; ++i) {
+        const ManifoldPoint& p = simd.points[i];
+        const ManifoldPoint& q = scalar.points[i];
+        EXPECT_EQ(p.id, q.id) << "pair " << pair;
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(p.point), std::bit_cast<std::uint64_t>(q.point))
+            << "pair " << pair;
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(p.anchorA), std::bit_cast<std::uint64_t>(q.anchorA))
+            << "pair " << pair;
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(p.anchorB), std::bit_cast<std::uint64_t>(q.anchorB))
+            << "pair " << pair;
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(p.separation),
+                  std::bit_cast<std::uint32_t>(q.separation))
+            << "pair " << pair;
+    }
+}
 
 #define E2D_EXPECT_VEC2_NEAR(actual, ex, ey, tol)                                                    \
     do {                                                                                           \

@@ -9,10 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
-#include <cstdint>
-#include <random>
 #include <vector>
 
 #define E2D_PHYSICS_SCALAR_ROUND 1
@@ -39,14 +36,7 @@ namespace {
 
 using test::makeTransform;
 
-// Uniform float in [lo, hi) from the engine's raw bits, identical on every standard library.
-struct Rng {
-    std::mt19937 engine{2025u};
-    float operator()(float lo, float hi) {
-        return lo + (hi - lo) * static_cast<float>(engine() >> 8) * (1.0f / 16777216.0f);
-    }
-    int below(int n) { return static_cast<int>(engine() % static_cast<unsigned>(n)); }
-};
+using Rng = test::TestRandom;
 
 // Square boxes and an exactly symmetric octagon (faces on the axes tie exactly for a centre on
 // a diagonal), boxes, rounded and offset boxes, 2-vertex capsule polygons and 3- to 8-gons:
@@ -69,72 +59,56 @@ std::vector<Polygon> makeShapes(Rng& rng) {
                                                    {-1.0f, -0.5f},
                                                    {-0.5f, -1.0f}}));
     for (int i = 0; i < 16; ++i) {
-        shapes.push_back(makeBox(rng(0.05f, 2.0f), rng(0.05f, 2.0f)));
+        shapes.push_back(makeBox(rng.uniform(0.05f, 2.0f), rng.uniform(0.05f, 2.0f)));
     }
     for (int i = 0; i < 8; ++i) {
-        shapes.push_back(makeRoundedBox(rng(0.05f, 1.0f), rng(0.05f, 1.0f), rng(0.01f, 0.3f)));
-        shapes.push_back(makeOffsetBox(rng(0.1f, 1.0f), rng(0.1f, 1.0f), {rng(-1, 1), rng(-1, 1)},
-                                       rng(-3.0f, 3.0f)));
-        shapes.push_back(detail::makeCapsulePolygon({rng(-1, 1), rng(-1, 1)},
-                                                    {rng(-1, 1), rng(-1, 1)}, rng(0.0f, 0.3f)));
+        shapes.push_back(makeRoundedBox(rng.uniform(0.05f, 1.0f), rng.uniform(0.05f, 1.0f),
+                                        rng.uniform(0.01f, 0.3f)));
+        shapes.push_back(makeOffsetBox(rng.uniform(0.1f, 1.0f), rng.uniform(0.1f, 1.0f),
+                                       {rng.uniform(-1, 1), rng.uniform(-1, 1)},
+                                       rng.uniform(-3.0f, 3.0f)));
+        shapes.push_back(detail::makeCapsulePolygon({rng.uniform(-1, 1), rng.uniform(-1, 1)},
+                                                    {rng.uniform(-1, 1), rng.uniform(-1, 1)},
+                                                    rng.uniform(0.0f, 0.3f)));
     }
     for (int count = 3; count <= 8; ++count) {
         for (int i = 0; i < 8; ++i) {
-            const float radius = rng(0.2f, 1.5f);
+            const float radius = rng.uniform(0.2f, 1.5f);
             std::vector<Vec2> points;
             for (int k = 0; k < count; ++k) {
-                const float angle = (static_cast<float>(k) + rng(0.1f, 0.9f)) *
+                const float angle = (static_cast<float>(k) + rng.uniform(0.1f, 0.9f)) *
                                     (6.2831853f / static_cast<float>(count));
                 points.push_back({radius * std::cos(angle), radius * std::sin(angle)});
             }
-            shapes.push_back(makePolygon(points, i % 3 == 0 ? rng(0.0f, 0.2f) : 0.0f));
+            shapes.push_back(makePolygon(points, i % 3 == 0 ? rng.uniform(0.0f, 0.2f) : 0.0f));
         }
     }
     return shapes;
 }
 
-void expectBitIdentical(const Manifold& simd, const Manifold& scalar, int pair) {
-    ASSERT_EQ(simd.pointCount, scalar.pointCount) << "pair " << pair;
-    EXPECT_EQ(std::bit_cast<std::uint64_t>(simd.normal), std::bit_cast<std::uint64_t>(scalar.normal))
-        << "pair " << pair;
-    for (int i = 0; i < 2; ++i) {
-        const ManifoldPoint& p = simd.points[i];
-        const ManifoldPoint& q = scalar.points[i];
-        EXPECT_EQ(p.id, q.id) << "pair " << pair;
-        EXPECT_EQ(std::bit_cast<std::uint64_t>(p.point), std::bit_cast<std::uint64_t>(q.point))
-            << "pair " << pair;
-        EXPECT_EQ(std::bit_cast<std::uint64_t>(p.anchorA), std::bit_cast<std::uint64_t>(q.anchorA))
-            << "pair " << pair;
-        EXPECT_EQ(std::bit_cast<std::uint64_t>(p.anchorB), std::bit_cast<std::uint64_t>(q.anchorB))
-            << "pair " << pair;
-        EXPECT_EQ(std::bit_cast<std::uint32_t>(p.separation),
-                  std::bit_cast<std::uint32_t>(q.separation))
-            << "pair " << pair;
-    }
-}
-
 TEST(CollidePolygonAndCircleScalarPath, BitIdenticalToSimdPath) {
-    Rng rng;
+    Rng rng{2025u};
     const std::vector<Polygon> shapes = makeShapes(rng);
     const int shapeCount = static_cast<int>(shapes.size());
     int contacts = 0;
     int ties = 0;
     for (int pair = 0; pair < 40000; ++pair) {
-        const int mode = rng.below(4);
+        const int mode = rng.index(4);
         // Mode 1: one of the symmetric shapes, unrotated, the centre on a diagonal at a
         // quarter-metre step, so two faces tie exactly (inside: both are candidates for the
         // normal; outside: both lead to the same vertex or to different ones).
-        const Polygon& a = shapes[static_cast<std::size_t>(mode == 1 ? rng.below(4)
-                                                                     : rng.below(shapeCount))];
-        Circle b{{rng(-0.5f, 0.5f), rng(-0.5f, 0.5f)}, rng(0.01f, 1.0f)};
-        Transform xfA = makeTransform(rng(-2.0f, 2.0f), rng(-2.0f, 2.0f), rng(-3.2f, 3.2f));
-        Transform xfB{{0.0f, 0.0f}, Rot::fromAngle(rng(-3.2f, 3.2f))};
+        const Polygon& a = shapes[static_cast<std::size_t>(mode == 1 ? rng.index(4)
+                                                                     : rng.index(shapeCount))];
+        Circle b{{rng.uniform(-0.5f, 0.5f), rng.uniform(-0.5f, 0.5f)}, rng.uniform(0.01f, 1.0f)};
+        Transform xfA = makeTransform(rng.uniform(-2.0f, 2.0f), rng.uniform(-2.0f, 2.0f),
+                                      rng.uniform(-3.2f, 3.2f));
+        Transform xfB{{0.0f, 0.0f}, Rot::fromAngle(rng.uniform(-3.2f, 3.2f))};
         // The circle's centre in A's frame.
-        Vec2 local = a.centroid + Vec2{rng(-2.5f, 2.5f), rng(-2.5f, 2.5f)};
+        Vec2 local = a.centroid + Vec2{rng.uniform(-2.5f, 2.5f), rng.uniform(-2.5f, 2.5f)};
         if (mode == 1) {
             // Every step exact: centre at B's origin, A unrotated on a quarter-metre grid.
             const float t = std::round(local.x * 4.0f) / 4.0f;
-            local = {t, rng.below(2) == 0 ? t : -t};
+            local = {t, rng.index(2) == 0 ? t : -t};
             b.center = {0.0f, 0.0f};
             xfA = {{std::round(xfA.p.x * 4.0f) / 4.0f, std::round(xfA.p.y * 4.0f) / 4.0f},
                    Rot::fromAngle(0.0f)};
@@ -143,13 +117,13 @@ TEST(CollidePolygonAndCircleScalarPath, BitIdenticalToSimdPath) {
         }
         // Mode 3: the centre on one of A's vertices (up to rounding).
         if (mode == 3) {
-            local = a.vertices[static_cast<std::size_t>(rng.below(a.count))];
+            local = a.vertices[static_cast<std::size_t>(rng.index(a.count))];
         }
         xfB.p = transformPoint(xfA, local) - rotate(xfB.q, b.center);
-        const float margin = mode == 2 ? rng(0.0f, 0.5f) : kSpeculativeDistance;
+        const float margin = mode == 2 ? rng.uniform(0.0f, 0.5f) : kSpeculativeDistance;
         const Manifold simd = collidePolygonAndCircle(a, xfA, b, xfB, margin);
         const Manifold scalar = collidePolygonAndCircleScalar(a, xfA, b, xfB, margin);
-        expectBitIdentical(simd, scalar, pair);
+        test::expectSameManifoldBits(simd, scalar, pair);
         contacts += simd.pointCount > 0 ? 1 : 0;
     }
     // Both touching and separated pairs were compared.

@@ -9,10 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
-#include <cstdint>
-#include <random>
 #include <vector>
 
 #define E2D_PHYSICS_SCALAR_SAT 1
@@ -25,14 +22,7 @@ namespace {
 
 using test::makeTransform;
 
-// Uniform float in [lo, hi) from the engine's raw bits, identical on every standard library.
-struct Rng {
-    std::mt19937 engine{2024u};
-    float operator()(float lo, float hi) {
-        return lo + (hi - lo) * static_cast<float>(engine() >> 8) * (1.0f / 16777216.0f);
-    }
-    int below(int n) { return static_cast<int>(engine() % static_cast<unsigned>(n)); }
-};
+using Rng = test::TestRandom;
 
 // Boxes, rounded and offset boxes, 3- to 8-gons (some far from their origin, which moves the
 // work to a shifted frame), and 2-vertex capsule polygons: every lane padding and both
@@ -40,72 +30,54 @@ struct Rng {
 std::vector<Polygon> makeShapes(Rng& rng) {
     std::vector<Polygon> shapes;
     for (int i = 0; i < 48; ++i) {
-        shapes.push_back(makeBox(rng(0.05f, 2.0f), rng(0.05f, 2.0f)));
+        shapes.push_back(makeBox(rng.uniform(0.05f, 2.0f), rng.uniform(0.05f, 2.0f)));
     }
     for (int i = 0; i < 8; ++i) {
-        shapes.push_back(makeRoundedBox(rng(0.05f, 1.0f), rng(0.05f, 1.0f), rng(0.01f, 0.3f)));
-        shapes.push_back(makeOffsetBox(rng(0.1f, 1.0f), rng(0.1f, 1.0f), {rng(-1, 1), rng(-1, 1)},
-                                       rng(-3.0f, 3.0f)));
-        shapes.push_back(makeOffsetBox(rng(0.1f, 1.0f), rng(0.1f, 1.0f),
-                                       {rng(100.0f, 300.0f), rng(-300.0f, 300.0f)},
-                                       rng(-3.0f, 3.0f)));
-        shapes.push_back(detail::makeCapsulePolygon({rng(-1, 1), rng(-1, 1)},
-                                                    {rng(-1, 1), rng(-1, 1)}, rng(0.0f, 0.3f)));
+        shapes.push_back(makeRoundedBox(rng.uniform(0.05f, 1.0f), rng.uniform(0.05f, 1.0f),
+                                        rng.uniform(0.01f, 0.3f)));
+        shapes.push_back(makeOffsetBox(rng.uniform(0.1f, 1.0f), rng.uniform(0.1f, 1.0f),
+                                       {rng.uniform(-1, 1), rng.uniform(-1, 1)},
+                                       rng.uniform(-3.0f, 3.0f)));
+        shapes.push_back(makeOffsetBox(rng.uniform(0.1f, 1.0f), rng.uniform(0.1f, 1.0f),
+                                       {rng.uniform(100.0f, 300.0f), rng.uniform(-300.0f, 300.0f)},
+                                       rng.uniform(-3.0f, 3.0f)));
+        shapes.push_back(detail::makeCapsulePolygon({rng.uniform(-1, 1), rng.uniform(-1, 1)},
+                                                    {rng.uniform(-1, 1), rng.uniform(-1, 1)},
+                                                    rng.uniform(0.0f, 0.3f)));
     }
     for (int count = 3; count <= 8; ++count) {
         for (int i = 0; i < 8; ++i) {
-            const float radius = rng(0.2f, 1.5f);
-            const Vec2 offset = i == 7 ? Vec2{rng(-300.0f, -100.0f), rng(-300.0f, 300.0f)}
-                                       : Vec2{0.0f, 0.0f};
+            const float radius = rng.uniform(0.2f, 1.5f);
+            const Vec2 offset =
+                i == 7 ? Vec2{rng.uniform(-300.0f, -100.0f), rng.uniform(-300.0f, 300.0f)}
+                       : Vec2{0.0f, 0.0f};
             std::vector<Vec2> points;
             for (int k = 0; k < count; ++k) {
-                const float angle =
-                    (static_cast<float>(k) + rng(0.1f, 0.9f)) * (6.2831853f / static_cast<float>(count));
+                const float angle = (static_cast<float>(k) + rng.uniform(0.1f, 0.9f)) *
+                                    (6.2831853f / static_cast<float>(count));
                 points.push_back(offset + Vec2{radius * std::cos(angle), radius * std::sin(angle)});
             }
-            shapes.push_back(makePolygon(points, i % 3 == 0 ? rng(0.0f, 0.2f) : 0.0f));
+            shapes.push_back(makePolygon(points, i % 3 == 0 ? rng.uniform(0.0f, 0.2f) : 0.0f));
         }
     }
     return shapes;
 }
 
-void expectBitIdentical(const Manifold& simd, const Manifold& scalar, int pair) {
-    ASSERT_EQ(simd.pointCount, scalar.pointCount) << "pair " << pair;
-    if (simd.pointCount == 0) {
-        return;
-    }
-    EXPECT_EQ(std::bit_cast<std::uint64_t>(simd.normal), std::bit_cast<std::uint64_t>(scalar.normal))
-        << "pair " << pair;
-    for (int i = 0; i < simd.pointCount; ++i) {
-        const ManifoldPoint& p = simd.points[i];
-        const ManifoldPoint& q = scalar.points[i];
-        EXPECT_EQ(p.id, q.id) << "pair " << pair;
-        EXPECT_EQ(std::bit_cast<std::uint64_t>(p.point), std::bit_cast<std::uint64_t>(q.point))
-            << "pair " << pair;
-        EXPECT_EQ(std::bit_cast<std::uint64_t>(p.anchorA), std::bit_cast<std::uint64_t>(q.anchorA))
-            << "pair " << pair;
-        EXPECT_EQ(std::bit_cast<std::uint64_t>(p.anchorB), std::bit_cast<std::uint64_t>(q.anchorB))
-            << "pair " << pair;
-        EXPECT_EQ(std::bit_cast<std::uint32_t>(p.separation),
-                  std::bit_cast<std::uint32_t>(q.separation))
-            << "pair " << pair;
-    }
-}
-
 TEST(CollidePolygonsScalarPath, BitIdenticalToSimdPath) {
-    Rng rng;
+    Rng rng{2024u};
     const std::vector<Polygon> shapes = makeShapes(rng);
     const int shapeCount = static_cast<int>(shapes.size());
     int contacts = 0;
     for (int pair = 0; pair < 40000; ++pair) {
-        const Polygon& a = shapes[static_cast<std::size_t>(rng.below(shapeCount))];
-        const Polygon& b = shapes[static_cast<std::size_t>(rng.below(shapeCount))];
-        const int mode = rng.below(4);
+        const Polygon& a = shapes[static_cast<std::size_t>(rng.index(shapeCount))];
+        const Polygon& b = shapes[static_cast<std::size_t>(rng.index(shapeCount))];
+        const int mode = rng.index(4);
         // Mode 1: axis-aligned and on a quarter grid, so faces tie exactly.
-        const float angleA = mode == 1 ? 0.0f : rng(-3.2f, 3.2f);
-        const float angleB = mode == 1 ? 0.0f : rng(-3.2f, 3.2f);
-        const Transform xfA = makeTransform(rng(-2.0f, 2.0f), rng(-2.0f, 2.0f), angleA);
-        Vec2 offset{rng(-3.0f, 3.0f), rng(-3.0f, 3.0f)};
+        const float angleA = mode == 1 ? 0.0f : rng.uniform(-3.2f, 3.2f);
+        const float angleB = mode == 1 ? 0.0f : rng.uniform(-3.2f, 3.2f);
+        const Transform xfA =
+            makeTransform(rng.uniform(-2.0f, 2.0f), rng.uniform(-2.0f, 2.0f), angleA);
+        Vec2 offset{rng.uniform(-3.0f, 3.0f), rng.uniform(-3.0f, 3.0f)};
         if (mode == 1) {
             offset = {std::round(offset.x * 4.0f) / 4.0f, std::round(offset.y * 4.0f) / 4.0f};
         }
@@ -113,10 +85,10 @@ TEST(CollidePolygonsScalarPath, BitIdenticalToSimdPath) {
         const Rot qB = Rot::fromAngle(angleB);
         const Vec2 pB = transformPoint(xfA, a.centroid) + offset - rotate(qB, b.centroid);
         const Transform xfB{pB, qB};
-        const float margin = mode == 2 ? rng(0.0f, 0.5f) : kSpeculativeDistance;
+        const float margin = mode == 2 ? rng.uniform(0.0f, 0.5f) : kSpeculativeDistance;
         const Manifold simd = collidePolygons(a, xfA, b, xfB, margin);
         const Manifold scalar = collidePolygonsScalar(a, xfA, b, xfB, margin);
-        expectBitIdentical(simd, scalar, pair);
+        test::expectSameManifoldBits(simd, scalar, pair);
         contacts += simd.pointCount > 0 ? 1 : 0;
     }
     // Both touching and separated pairs were compared.
