@@ -588,6 +588,21 @@ ContactConstraint sunkenBox(const ContactSoftness& softness) {
     return c;
 }
 
+// One biased solve of `c` on a body at rest, points in order and reversed.
+struct SolvedBothOrders {
+    std::vector<ContactConstraint> forward;
+    std::vector<BodyState> forwardState;
+    std::vector<ContactConstraint> reversed;
+    std::vector<BodyState> reversedState;
+};
+
+SolvedBothOrders solveBothPointOrders(const ContactConstraint& c, float invH) {
+    SolvedBothOrders r{{c}, std::vector<BodyState>(1), {c}, std::vector<BodyState>(1)};
+    solveContacts(r.forward, r.forwardState, invH, true, 3.0f, false, false);
+    solveContacts(r.reversed, r.reversedState, invH, true, 3.0f, false, true);
+    return r;
+}
+
 TEST(SoftStep, TouchingPairIsSolvedAsABlockWithoutOrderBias) {
     // K = [2.5 -0.5; -0.5 2.5] (1 + 6 r_i r_j with r = -0.5, 0.5); both points push:
     // x = -K^-1 (-3, -3) = (1.5, 1.5), times the mass scale. The box rises straight, and the
@@ -599,12 +614,11 @@ TEST(SoftStep, TouchingPairIsSolvedAsABlockWithoutOrderBias) {
     EXPECT_FLOAT_EQ(c.blockK.a12, -0.5f);
     const float invH = 4.0f / kDt;
 
-    std::vector<ContactConstraint> forward{c};
-    std::vector<BodyState> forwardState(1);
-    solveContacts(forward, forwardState, invH, true, 3.0f, false, false);
-    std::vector<ContactConstraint> reversed{c};
-    std::vector<BodyState> reversedState(1);
-    solveContacts(reversed, reversedState, invH, true, 3.0f, false, true);
+    const SolvedBothOrders solved = solveBothPointOrders(c, invH);
+    const std::vector<ContactConstraint>& forward = solved.forward;
+    const std::vector<BodyState>& forwardState = solved.forwardState;
+    const std::vector<ContactConstraint>& reversed = solved.reversed;
+    const std::vector<BodyState>& reversedState = solved.reversedState;
 
     const float s = softness.vsStatic.massScale;
     EXPECT_FLOAT_EQ(forward[0].points[0].normalImpulse, 1.5f * s);
@@ -613,6 +627,8 @@ TEST(SoftStep, TouchingPairIsSolvedAsABlockWithoutOrderBias) {
     EXPECT_FLOAT_EQ(forwardState[0].linearVelocity.y, 3.0f * s);
     EXPECT_EQ(reversedState[0].linearVelocity.y, forwardState[0].linearVelocity.y);
     EXPECT_EQ(reversedState[0].angularVelocity, 0.0f);
+    EXPECT_EQ(reversed[0].points[0].normalImpulse, forward[0].points[0].normalImpulse);
+    EXPECT_EQ(reversed[0].points[1].normalImpulse, forward[0].points[1].normalImpulse);
 
     // Relaxing (no bias): the rigid block solution, which stops both points exactly.
     std::vector<BodyState> moving(1);
@@ -637,12 +653,11 @@ TEST(SoftStep, PointByPointReversedOrderMirrorsTheOrderBias) {
     c.blockSolve = false;
     const float invH = 4.0f / kDt;
 
-    std::vector<ContactConstraint> forward{c};
-    std::vector<BodyState> forwardState(1);
-    solveContacts(forward, forwardState, invH, true, 3.0f, false, false);
-    std::vector<ContactConstraint> reversed{c};
-    std::vector<BodyState> reversedState(1);
-    solveContacts(reversed, reversedState, invH, true, 3.0f, false, true);
+    const SolvedBothOrders solved = solveBothPointOrders(c, invH);
+    const std::vector<ContactConstraint>& forward = solved.forward;
+    const std::vector<BodyState>& forwardState = solved.forwardState;
+    const std::vector<ContactConstraint>& reversed = solved.reversed;
+    const std::vector<BodyState>& reversedState = solved.reversedState;
 
     const float s = softness.vsStatic.massScale;
     const float p0 = 0.4f * s * 3.0f;
