@@ -9,14 +9,6 @@
 
 namespace e2d::physics::detail {
 
-namespace {
-
-// Points closer than this at the start of the step count as touching (resting rows placed
-// touching, soft contacts' steady penetration), metres.
-constexpr float kTouchingSeparation = kLinearSlop;
-
-} // namespace
-
 void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyView& a,
                     const ContactBodyView& b, const ContactMaterial& material, Softness softness) {
     c.indexA = a.stateIndex;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <e2d/physics/constants.hpp>
 #include <e2d/physics/manifold.hpp>
 
 #include "solver_body.hpp"
@@ -36,6 +37,10 @@ struct ContactConstraintPoint {
     float impactGap = 0.0f;
     bool impactSeen = false;
 };
+
+// Points closer than this at the start of the step count as touching (resting rows placed
+// touching, soft contacts' steady penetration), metres.
+inline constexpr float kTouchingSeparation = kLinearSlop;
 
 // A symmetric 2x2 matrix [a11 a12; a12 a22].
 struct BlockMatrix {

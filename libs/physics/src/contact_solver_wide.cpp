@@ -351,6 +351,20 @@ void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint
     }
 }
 
+void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<4>& in) {
+    lanes4::prepareGroup(in, wide.constraints4[static_cast<std::size_t>(group)]);
+}
+
+void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<8>& in) {
+#if defined(E2D_HAS_WIDE8)
+    lanes8::prepareGroup(in, wide.constraints8[static_cast<std::size_t>(group)]);
+#else
+    (void)wide;
+    (void)group;
+    (void)in;
+#endif
+}
+
 void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constraints,
                  std::span<const int> levelOrder, std::span<const int> levelStart, int lanes) {
     layoutWide(wide, levelStart, lanes);

@@ -100,6 +100,82 @@ void layoutWide(WideContacts& wide, std::span<const int> levelStart, int lanes);
 // Puts constraint `c`, the `at`-th of level `level`, in its lane.
 void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint& c);
 
+// What prepareContact() reads for N constraints, one per lane: the manifold, both sides'
+// ContactBodyView and the material. The world gathers a group's lanes here (setLane(),
+// clearLane()) and prepareWideGroup() turns them into the group's packed constraints, all
+// lanes at once, bit for bit what prepareContact() and packWideLane() give one at a time.
+template <int N>
+struct alignas(32) WideManifoldT {
+    int indexA[N];
+    int indexB[N];
+    int pointCount[N]; // 0: an empty lane
+    float normalX[N], normalY[N];
+    float offsetAx[N], offsetAy[N], offsetBx[N], offsetBy[N]; // ContactBodyView::centerOffset
+    float velocityAx[N], velocityAy[N], angularVelocityA[N];
+    float velocityBx[N], velocityBy[N], angularVelocityB[N];
+    float invMassAx[N], invMassAy[N], invMassBx[N], invMassBy[N];
+    float invInertiaA[N], invInertiaB[N];
+    float friction[N];
+    float biasRate[N], massScale[N], impulseScale[N];
+    struct Point {
+        float anchorAx[N], anchorAy[N], anchorBx[N], anchorBy[N];
+        float separation[N];
+        float normalImpulse[N], tangentImpulse[N];
+    };
+    Point points[2];
+
+    void setLane(int lane, const Manifold& m, const ContactBodyView& a, const ContactBodyView& b,
+                 float frictionOf, Softness softness) {
+        indexA[lane] = a.stateIndex;
+        indexB[lane] = b.stateIndex;
+        pointCount[lane] = m.pointCount;
+        normalX[lane] = m.normal.x;
+        normalY[lane] = m.normal.y;
+        offsetAx[lane] = a.centerOffset.x;
+        offsetAy[lane] = a.centerOffset.y;
+        offsetBx[lane] = b.centerOffset.x;
+        offsetBy[lane] = b.centerOffset.y;
+        velocityAx[lane] = a.linearVelocity.x;
+        velocityAy[lane] = a.linearVelocity.y;
+        angularVelocityA[lane] = a.angularVelocity;
+        velocityBx[lane] = b.linearVelocity.x;
+        velocityBy[lane] = b.linearVelocity.y;
+        angularVelocityB[lane] = b.angularVelocity;
+        invMassAx[lane] = a.invMass.x;
+        invMassAy[lane] = a.invMass.y;
+        invMassBx[lane] = b.invMass.x;
+        invMassBy[lane] = b.invMass.y;
+        invInertiaA[lane] = a.invInertia;
+        invInertiaB[lane] = b.invInertia;
+        friction[lane] = frictionOf;
+        biasRate[lane] = softness.biasRate;
+        massScale[lane] = softness.massScale;
+        impulseScale[lane] = softness.impulseScale;
+        for (int i = 0; i < 2; ++i) {
+            // A missing point's inputs are zero; prepareWideGroup() zeroes its outputs anyway.
+            const ManifoldPoint mp = i < m.pointCount ? m.points[i] : ManifoldPoint{};
+            Point& p = points[i];
+            p.anchorAx[lane] = mp.anchorA.x;
+            p.anchorAy[lane] = mp.anchorA.y;
+            p.anchorBx[lane] = mp.anchorB.x;
+            p.anchorBy[lane] = mp.anchorB.y;
+            p.separation[lane] = mp.separation;
+            p.normalImpulse[lane] = mp.normalImpulse;
+            p.tangentImpulse[lane] = mp.tangentImpulse;
+        }
+    }
+
+    // An empty lane: no bodies, no points; it packs as ContactConstraint{} does.
+    void clearLane(int lane) {
+        setLane(lane, Manifold{}, ContactBodyView{}, ContactBodyView{}, 0.0f, Softness{});
+    }
+};
+
+// Prepares and packs the group of constraints `group` from `in` (see WideManifoldT);
+// The lane count must be wide.lanes.
+void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<4>& in);
+void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<8>& in);
+
 // Packs the constraints of each level, constraints[levelOrder[levelStart[k] ..
 // levelStart[k + 1])], into groups of `lanes` (the last group of a level padded with empty
 // lanes).
@@ -117,6 +193,7 @@ struct WideRestitution {
     int pointCount = 0;
     float restitution = 0.0f;
     float pressAcceleration = 0.0f;
+    int constraint = 0; // its place in constraint order
 };
 
 // applyRestitution() on the listed packed constraints, in list order.

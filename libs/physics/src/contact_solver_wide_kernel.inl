@@ -305,3 +305,117 @@ E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<const int
         }
     }
 }
+
+// --- Prepare: prepareContact(), prepareBlock() and packLane() on every lane at once ---
+
+using Manifolds = WideManifoldT<N>;
+
+E2D_WIDE_FN F vectorOf(const float (&x)[N]) {
+    F v;
+    std::memcpy(&v, x, sizeof v);
+    return v;
+}
+
+E2D_WIDE_FN I vectorOf(const int (&x)[N]) {
+    I v;
+    std::memcpy(&v, x, sizeof v);
+    return v;
+}
+
+// effectiveMass() along (ax, ay); 0 where the sum is not positive.
+E2D_WIDE_FN F effectiveMassOf(const Constraint& c, F ax, F ay, F rAx, F rAy, F rBx, F rBy) {
+    F rnA = rAx * ay - rAy * ax;
+    F rnB = rBx * ay - rBy * ax;
+    F k = c.invMassAx * ax * ax + c.invMassAy * ay * ay + c.invMassBx * ax * ax +
+          c.invMassBy * ay * ay + c.invInertiaA * rnA * rnA + c.invInertiaB * rnB * rnB;
+    const F zero = splat(0.0f);
+    I positive = k > zero;
+    // The divisor is 1 where it is not used: no division by zero, even in discarded lanes.
+    return select(positive, splat(1.0f) / select(positive, k, splat(1.0f)), zero);
+}
+
+E2D_WIDE_FN void prepareGroup(const Manifolds& in, Constraint& c) {
+    const F zero = splat(0.0f);
+    const F one = splat(1.0f);
+    std::memcpy(c.indexA, in.indexA, sizeof c.indexA);
+    std::memcpy(c.indexB, in.indexB, sizeof c.indexB);
+    const I count = vectorOf(in.pointCount);
+    const F nx = vectorOf(in.normalX);
+    const F ny = vectorOf(in.normalY);
+    c.normalX = nx;
+    c.normalY = ny;
+    c.invMassAx = vectorOf(in.invMassAx);
+    c.invMassAy = vectorOf(in.invMassAy);
+    c.invMassBx = vectorOf(in.invMassBx);
+    c.invMassBy = vectorOf(in.invMassBy);
+    c.invInertiaA = vectorOf(in.invInertiaA);
+    c.invInertiaB = vectorOf(in.invInertiaB);
+    c.friction = vectorOf(in.friction);
+    c.biasRate = vectorOf(in.biasRate);
+    c.massScale = vectorOf(in.massScale);
+    c.impulseScale = vectorOf(in.impulseScale);
+    const F oAx = vectorOf(in.offsetAx);
+    const F oAy = vectorOf(in.offsetAy);
+    const F oBx = vectorOf(in.offsetBx);
+    const F oBy = vectorOf(in.offsetBy);
+    const F vAx = vectorOf(in.velocityAx);
+    const F vAy = vectorOf(in.velocityAy);
+    const F wA = vectorOf(in.angularVelocityA);
+    const F vBx = vectorOf(in.velocityBx);
+    const F vBy = vectorOf(in.velocityBy);
+    const F wB = vectorOf(in.angularVelocityB);
+    const F tx = ny;
+    const F ty = -nx;
+    for (int i = 0; i < 2; ++i) {
+        const typename Manifolds::Point& mp = in.points[i];
+        Point& cp = c.points[i];
+        // A missing point (or an empty lane) packs as ContactConstraintPoint{}: all zero.
+        const I present = count > i;
+        F rAx = vectorOf(mp.anchorAx) - oAx;
+        F rAy = vectorOf(mp.anchorAy) - oAy;
+        F rBx = vectorOf(mp.anchorBx) - oBx;
+        F rBy = vectorOf(mp.anchorBy) - oBy;
+        const F separation = vectorOf(mp.separation);
+        cp.anchorAx = select(present, rAx, zero);
+        cp.anchorAy = select(present, rAy, zero);
+        cp.anchorBx = select(present, rBx, zero);
+        cp.anchorBy = select(present, rBy, zero);
+        cp.baseSeparation = select(present, separation - ((rBx - rAx) * nx + (rBy - rAy) * ny), zero);
+        cp.normalImpulse = select(present, vectorOf(mp.normalImpulse), zero);
+        cp.tangentImpulse = select(present, vectorOf(mp.tangentImpulse), zero);
+        cp.maxNormalImpulse = zero;
+        cp.normalMass = select(present, effectiveMassOf(c, nx, ny, rAx, rAy, rBx, rBy), zero);
+        cp.tangentMass = select(present, effectiveMassOf(c, tx, ty, rAx, rAy, rBx, rBy), zero);
+        F vrAx = vAx + (-wA) * rAy;
+        F vrAy = vAy + wA * rAx;
+        F vrBx = vBx + (-wB) * rBy;
+        F vrBy = vBy + wB * rBx;
+        cp.relativeVelocity = select(present, nx * (vrBx - vrAx) + ny * (vrBy - vrAy), zero);
+        const I seen = present & (separation <= splat(kTouchingSeparation));
+        cp.impactSeen = seen;
+        cp.impactGap = select(seen, separation, zero);
+    }
+
+    // prepareBlock(), on the anchors just packed.
+    const Point& p1 = c.points[0];
+    const Point& p2 = c.points[1];
+    F linear = (c.invMassAx + c.invMassBx) * (nx * nx) + (c.invMassAy + c.invMassBy) * (ny * ny);
+    F rn1A = p1.anchorAx * ny - p1.anchorAy * nx;
+    F rn1B = p1.anchorBx * ny - p1.anchorBy * nx;
+    F rn2A = p2.anchorAx * ny - p2.anchorAy * nx;
+    F rn2B = p2.anchorBx * ny - p2.anchorBy * nx;
+    F k11 = linear + c.invInertiaA * rn1A * rn1A + c.invInertiaB * rn1B * rn1B;
+    F k22 = linear + c.invInertiaA * rn2A * rn2A + c.invInertiaB * rn2B * rn2B;
+    F k12 = linear + c.invInertiaA * rn1A * rn2A + c.invInertiaB * rn1B * rn2B;
+    F det = k11 * k22 - k12 * k12;
+    const I block = (count == 2) & (k11 * k11 < splat(kMaxBlockConditionNumber) * det);
+    F invDet = one / select(block, det, one);
+    // Other lanes hold K = identity; empty lanes count as block lanes (see WideConstraintT).
+    c.k11 = select(block, k11, one);
+    c.k12 = select(block, k12, zero);
+    c.k22 = select(block, k22, one);
+    c.inv11 = select(block, invDet * k22, one);
+    c.inv12 = select(block, -invDet * k12, zero);
+    c.inv22 = select(block, invDet * k11, one);
+    c.blockSolve = block | (count == 0);
+}

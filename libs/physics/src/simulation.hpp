@@ -109,10 +109,11 @@ struct Simulation {
     std::vector<HitCandidate> hitCandidates;
     // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), its
     // slot in level order (level k holds slots [levelStart[k], levelStart[k + 1]), contact
-    // order within a level) and the packed constraints.
+    // order within a level), the constraint in each slot and the packed constraints.
     ConstraintLevels levels;
     std::vector<int> constraintLevel;
     std::vector<int> constraintSlot;
+    std::vector<int> slotConstraint;
     std::vector<int> levelStart;
     std::vector<int> levelNext;
     WideContacts wideContacts;
@@ -125,8 +126,6 @@ struct Simulation {
     std::vector<int> islandConstraints;
     std::vector<int> islandBlock;
     std::vector<int> constraintIsland;
-    std::vector<int> blockOrder; // the constraints block by block
-    std::vector<int> blockOrderStart;       // block b: blockOrder[start[b] .. start[b + 1])
     std::vector<int> blockLevelStart;
     std::vector<int> blockBodyStart;
     std::vector<int> blockBodies;

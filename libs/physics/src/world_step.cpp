@@ -129,8 +129,11 @@ void World::Impl::scheduleWide(int constraintCount) {
     }
     s.levelNext.assign(s.levelStart.begin(), s.levelStart.end() - 1);
     s.constraintSlot.resize(count);
+    s.slotConstraint.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
-        s.constraintSlot[k] = s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])]++;
+        const int slot = s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])]++;
+        s.constraintSlot[k] = slot;
+        s.slotConstraint[static_cast<std::size_t>(slot)] = static_cast<int>(k);
     }
     // Eight lanes only pay when levels are wide enough to fill them: a small pile's levels
     // hold a few constraints each, and half-empty groups of eight cost more than full fours.
@@ -139,22 +142,6 @@ void World::Impl::scheduleWide(int constraintCount) {
         lanes = 4;
     }
     detail::layoutWide(s.wideContacts, s.levelStart, lanes);
-
-    // The constraints by block, in constraint order within a block.
-    s.levelNext.assign(static_cast<std::size_t>(blockCount) + 1, 0);
-    for (std::size_t k = 0; k < count; ++k) {
-        ++s.levelNext[static_cast<std::size_t>(s.islandBlock[static_cast<std::size_t>(s.constraintIsland[k])]) + 1];
-    }
-    for (int b = 0; b < blockCount; ++b) {
-        s.levelNext[static_cast<std::size_t>(b) + 1] += s.levelNext[static_cast<std::size_t>(b)];
-    }
-    s.blockOrderStart.assign(s.levelNext.begin(), s.levelNext.end());
-    s.blockOrder.resize(count);
-    for (std::size_t k = 0; k < count; ++k) {
-        const int block = s.islandBlock[static_cast<std::size_t>(s.constraintIsland[k])];
-        s.blockOrder[static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(block)]++)] =
-            static_cast<int>(k);
-    }
 
     // The bodies by block, in state order within a block.
     s.blockBodyStart.assign(static_cast<std::size_t>(blockCount) + 2, 0);
@@ -222,21 +209,41 @@ void World::Impl::solve(float dt) {
     }
 
     detail::ContactSoftness softness = detail::makeContactSoftness(def, dt);
-    auto viewOf = [&](int bodyIndex) {
-        const detail::Body& b = body(bodyIndex);
-        const detail::BodyMotion& m = b.motion;
+    // A contact's side as prepareContact() sees it: body `bodyIndex`, `solverIndex` its place
+    // in this step's arrays (kNullIndex: static or asleep, read from the body itself).
+    auto viewOf = [&](int bodyIndex, int solverIndex) {
         detail::ContactBodyView v;
-        v.centerOffset = rotate(b.transform.q, m.localCenter);
-        if (m.solverIndex != kNullIndex) {
-            const detail::BodySim& bs = s.sims[static_cast<std::size_t>(m.solverIndex)];
-            const detail::BodyState& st = s.states[static_cast<std::size_t>(m.solverIndex)];
-            v.linearVelocity = st.linearVelocity;
-            v.angularVelocity = st.angularVelocity;
-            v.invMass = bs.invMass;
-            v.invInertia = bs.invInertia;
-            v.stateIndex = m.solverIndex;
+        if (solverIndex == kNullIndex) {
+            const detail::Body& b = body(bodyIndex);
+            v.centerOffset = rotate(b.transform.q, b.motion.localCenter);
+            return v;
         }
+        // The step's copy of the body's transform and centre: the same values, nearer.
+        const detail::BodySim& bs = s.sims[static_cast<std::size_t>(solverIndex)];
+        const detail::BodyState& st = s.states[static_cast<std::size_t>(solverIndex)];
+        v.centerOffset = rotate(bs.transform.q, bs.localCenter);
+        v.linearVelocity = st.linearVelocity;
+        v.angularVelocity = st.angularVelocity;
+        v.invMass = bs.invMass;
+        v.invInertia = bs.invInertia;
+        v.stateIndex = solverIndex;
         return v;
+    };
+    auto isRigid = [](const detail::ContactBodyView& v) {
+        return v.invMass.x == 0.0f && v.invMass.y == 0.0f && v.invInertia == 0.0f;
+    };
+    auto softnessOf = [&](const detail::ContactBodyView& a, const detail::ContactBodyView& b) {
+        return isRigid(a) || isRigid(b) ? softness.vsStatic : softness.dynamic;
+    };
+    // Relative acceleration from gravity pressing B onto A along the normal (restitution).
+    auto pressOf = [&](const detail::Contact& c, const detail::ContactBodyView& a,
+                       const detail::ContactBodyView& b) {
+        auto gravityOf = [&](const detail::ContactBodyView& v, int bodyIndex) {
+            float scale = body(bodyIndex).motion.gravityScale;
+            return Vec2{v.invMass.x > 0.0f ? scale * gravity.x : 0.0f,
+                        v.invMass.y > 0.0f ? scale * gravity.y : 0.0f};
+        };
+        return -dot(gravityOf(b, c.bodyB) - gravityOf(a, c.bodyA), c.manifold.normal);
     };
     // One constraint per touching solid contact with a moving side, in contact order. Each
     // also gets a level (see ConstraintLevels): solving level by level is the same sweep as
@@ -280,21 +287,6 @@ void World::Impl::solve(float dt) {
         scheduleWide(constraintCount);
     }
 
-    auto build = [&](detail::ContactConstraint& cc, const detail::Contact& c) {
-        detail::ContactBodyView a = viewOf(c.bodyA);
-        detail::ContactBodyView b = viewOf(c.bodyB);
-        bool rigidSide = (a.invMass.x == 0.0f && a.invMass.y == 0.0f && a.invInertia == 0.0f) ||
-                         (b.invMass.x == 0.0f && b.invMass.y == 0.0f && b.invInertia == 0.0f);
-        detail::prepareContact(cc, c.manifold, a, b,
-                               {c.friction, c.restitution, c.rollingResistance},
-                               rigidSide ? softness.vsStatic : softness.dynamic);
-        auto gravityOf = [&](const detail::ContactBodyView& v, int bodyIndex) {
-            float scale = body(bodyIndex).motion.gravityScale;
-            return Vec2{v.invMass.x > 0.0f ? scale * gravity.x : 0.0f,
-                        v.invMass.y > 0.0f ? scale * gravity.y : 0.0f};
-        };
-        cc.pressAcceleration = -dot(gravityOf(b, c.bodyB) - gravityOf(a, c.bodyA), cc.normal);
-    };
     if (wide) {
         // Built block by block right before each block is solved (below).
         s.constraints.clear();
@@ -303,8 +295,14 @@ void World::Impl::solve(float dt) {
         s.constraints.resize(static_cast<std::size_t>(constraintCount));
         for (std::size_t k = 0; k < s.constraintContacts.size(); ++k) {
             const int ci = s.constraintContacts[k];
+            const detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
+            const detail::ContactBodyView a = viewOf(c.bodyA, s.constraintBodies[k].indexA);
+            const detail::ContactBodyView b = viewOf(c.bodyB, s.constraintBodies[k].indexB);
             detail::ContactConstraint& cc = s.constraints[k];
-            build(cc, s.contacts[static_cast<std::size_t>(ci)]);
+            detail::prepareContact(cc, c.manifold, a, b,
+                                   {c.friction, c.restitution, c.rollingResistance},
+                                   softnessOf(a, b));
+            cc.pressAcceleration = pressOf(c, a, b);
             cc.contactIndex = ci;
         }
     }
@@ -334,50 +332,81 @@ void World::Impl::solve(float dt) {
 
     detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def};
     if (wide) {
-        // Each block's impulses are stored as soon as it is solved, while its lanes are in
-        // cache. A level's contacts lie one island apart in the array, too far for the
-        // hardware prefetcher: fetch the ones a few slots ahead.
+        // Contacts are visited in slot order, twice a block: gathered before it is solved and
+        // their impulses stored right after, while its lanes are in cache. A level's contacts
+        // lie one island apart in the array, too far for the hardware prefetcher: fetch the
+        // ones a few slots ahead (for writing: the store comes back to them).
         constexpr int kPrefetchAhead = 16;
+        auto prefetchContact = [&](int contactIndex) {
+            const auto* ahead = reinterpret_cast<const char*>(&s.contacts[static_cast<std::size_t>(contactIndex)]);
+            for (std::size_t offset = 0; offset < sizeof(detail::Contact); offset += 64) {
+                __builtin_prefetch(ahead + offset, 1);
+            }
+            __builtin_prefetch(ahead + sizeof(detail::Contact) - 1, 1);
+        };
         auto storeLane = [&](int slot, const detail::WideLaneResult& r) {
             if (slot + kPrefetchAhead < constraintCount) {
-                const auto* ahead = reinterpret_cast<const char*>(&s.contacts[static_cast<std::size_t>(
-                    s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
-                for (std::size_t offset = 0; offset < sizeof(detail::Contact); offset += 64) {
-                    __builtin_prefetch(ahead + offset, 1);
-                }
-                __builtin_prefetch(ahead + sizeof(detail::Contact) - 1, 1);
+                prefetchContact(s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)]);
             }
             const int ci = s.slotContact[static_cast<std::size_t>(slot)];
             store(ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount, r.normalImpulse,
                   r.tangentImpulse, r.relativeVelocity, r.maxNormalImpulse);
         };
-        // Each block goes through build, sub-steps and store while its contacts, lanes and
-        // bodies are in cache. Its constraints go straight into their lanes (no array of
-        // constraints in between), in constraint order, so the restitution list is in the
-        // order applyRestitution() takes.
-        const std::span<const int> blockBodies = s.blockBodies;
-        const std::size_t constrainedBlocks = s.blockOrderStart.size() - 1;
-        detail::ContactConstraint cc;
-        for (std::size_t b = 0; b + 1 < s.blockLevelStart.size(); ++b) {
+        // A block's constraints are gathered lane by lane and prepared a whole group at a time
+        // (prepareWideGroup()), right before the block is solved: no constraint array in
+        // between, and the block's contacts, lanes and bodies stay in cache through build,
+        // sub-steps and store.
+        auto buildBlock = [&](auto& in, int firstLevel, int endLevel) {
+            constexpr int N = static_cast<int>(sizeof(in.indexA) / sizeof(in.indexA[0]));
             s.wideRestitution.clear();
-            if (b < constrainedBlocks) {
-                for (int i = s.blockOrderStart[b]; i < s.blockOrderStart[b + 1]; ++i) {
-                    const auto k = static_cast<std::size_t>(s.blockOrder[static_cast<std::size_t>(i)]);
-                    const int ci = s.constraintContacts[k];
-                    build(cc, s.contacts[static_cast<std::size_t>(ci)]);
-                    const int level = s.constraintLevel[k];
-                    const int slot = s.constraintSlot[k];
-                    const int at = slot - s.levelStart[static_cast<std::size_t>(level)];
-                    detail::packWideLane(s.wideContacts, level, at, cc);
-                    s.slotContact[static_cast<std::size_t>(slot)] = ci;
-                    if (cc.restitution != 0.0f) {
-                        s.wideRestitution.push_back(
-                            {level, at, cc.pointCount, cc.restitution, cc.pressAcceleration});
+            for (int level = firstLevel; level < endLevel; ++level) {
+                const int levelFirst = s.levelStart[static_cast<std::size_t>(level)];
+                const int levelEnd = s.levelStart[static_cast<std::size_t>(level) + 1];
+                int group = s.wideContacts.levelStart[static_cast<std::size_t>(level)];
+                for (int first = levelFirst; first < levelEnd; first += N, ++group) {
+                    for (int lane = 0; lane < N; ++lane) {
+                        const int slot = first + lane;
+                        if (slot >= levelEnd) {
+                            in.clearLane(lane);
+                            continue;
+                        }
+                        if (slot + kPrefetchAhead < constraintCount) {
+                            const int ahead = s.slotConstraint[static_cast<std::size_t>(slot + kPrefetchAhead)];
+                            prefetchContact(s.constraintContacts[static_cast<std::size_t>(ahead)]);
+                        }
+                        const auto k = static_cast<std::size_t>(s.slotConstraint[static_cast<std::size_t>(slot)]);
+                        const int ci = s.constraintContacts[k];
+                        const detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
+                        const detail::ContactBodyView a = viewOf(c.bodyA, s.constraintBodies[k].indexA);
+                        const detail::ContactBodyView b = viewOf(c.bodyB, s.constraintBodies[k].indexB);
+                        in.setLane(lane, c.manifold, a, b, c.friction, softnessOf(a, b));
+                        s.slotContact[static_cast<std::size_t>(slot)] = ci;
+                        if (c.restitution != 0.0f) {
+                            s.wideRestitution.push_back({level, slot - levelFirst, c.manifold.pointCount,
+                                                         c.restitution, pressOf(c, a, b),
+                                                         static_cast<int>(k)});
+                        }
                     }
+                    detail::prepareWideGroup(s.wideContacts, group, in);
                 }
             }
+            // applyRestitution() goes in constraint order.
+            std::sort(s.wideRestitution.begin(), s.wideRestitution.end(),
+                      [](const detail::WideRestitution& x, const detail::WideRestitution& y) {
+                          return x.constraint < y.constraint;
+                      });
+        };
+        const std::span<const int> blockBodies = s.blockBodies;
+        detail::WideManifoldT<4> lanes4;
+        detail::WideManifoldT<8> lanes8;
+        for (std::size_t b = 0; b + 1 < s.blockLevelStart.size(); ++b) {
             const int firstLevel = s.blockLevelStart[b];
             const int endLevel = s.blockLevelStart[b + 1];
+            if (s.wideContacts.lanes == 8) {
+                buildBlock(lanes8, firstLevel, endLevel);
+            } else {
+                buildBlock(lanes4, firstLevel, endLevel);
+            }
             detail::solveSoftStepBlock(
                 step, s.wideContacts, firstLevel, endLevel,
                 blockBodies.subspan(static_cast<std::size_t>(s.blockBodyStart[b]),

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 namespace e2d::physics::detail {
@@ -33,9 +34,19 @@ TEST(ConstraintLevels, EachConstraintGoesOneAboveItsBodiesLastLevel) {
     EXPECT_EQ(levels.assign(1, 0), 0);
 }
 
+// What prepareContact() was given for one constraint.
+struct PrepareInput {
+    Manifold manifold;
+    ContactBodyView a;
+    ContactBodyView b;
+    float friction = 0.0f;
+    Softness softness;
+};
+
 struct Problem {
     std::vector<ContactConstraint> constraints;
     std::vector<BodyState> states;
+    std::vector<PrepareInput> inputs; // per constraint
 };
 
 // A random pile: bodies with random velocities and motion since the step began, contacts
@@ -92,10 +103,42 @@ Problem randomProblem(std::uint32_t seed, int bodyCount, int contactCount, float
         vb.angularVelocity = p.states[static_cast<std::size_t>(b)].angularVelocity;
         vb.stateIndex = b;
         ContactConstraint& c = p.constraints.emplace_back();
-        prepareContact(c, m, va, vb, {rng.uniform(0.1f, 1.0f), 0.0f, 0.0f},
-                       staticA ? vsStatic : dynamic);
+        const PrepareInput& in = p.inputs.emplace_back(
+            PrepareInput{m, va, vb, rng.uniform(0.1f, 1.0f), staticA ? vsStatic : dynamic});
+        prepareContact(c, in.manifold, in.a, in.b, {in.friction, 0.0f, 0.0f}, in.softness);
     }
     return p;
+}
+
+// The constraints by level: each one's level in constraint order and the slots of each level
+// (levelStart), level order within (order: the constraint of each slot).
+struct Schedule {
+    std::vector<int> levelStart;
+    std::vector<int> order;
+    int levelCount = 0;
+};
+
+Schedule scheduleOf(const Problem& p) {
+    ConstraintLevels levels;
+    levels.reset(static_cast<int>(p.states.size()));
+    std::vector<int> levelOf;
+    for (const ContactConstraint& c : p.constraints) {
+        levelOf.push_back(levels.assign(c.indexA, c.indexB));
+    }
+    Schedule s;
+    s.levelCount = levels.levelCount();
+    s.levelStart.assign(static_cast<std::size_t>(s.levelCount) + 1, 0);
+    for (int k = 0; k < s.levelCount; ++k) {
+        s.levelStart[static_cast<std::size_t>(k) + 1] =
+            s.levelStart[static_cast<std::size_t>(k)] + levels.counts()[static_cast<std::size_t>(k)];
+    }
+    std::vector<int> next(s.levelStart.begin(), s.levelStart.end() - 1);
+    s.order.resize(p.constraints.size());
+    for (std::size_t k = 0; k < levelOf.size(); ++k) {
+        s.order[static_cast<std::size_t>(next[static_cast<std::size_t>(levelOf[k])]++)] =
+            static_cast<int>(k);
+    }
+    return s;
 }
 
 void expectSame(const Problem& scalar, const Problem& wide) {
@@ -139,26 +182,12 @@ TEST(WideContactSolver, MatchesTheScalarPassesBitForBit) {
         }
 
         // The same by level, several at a time.
-        ConstraintLevels levels;
-        levels.reset(static_cast<int>(wide.states.size()));
-        std::vector<int> levelOf;
-        for (const ContactConstraint& c : wide.constraints) {
-            levelOf.push_back(levels.assign(c.indexA, c.indexB));
-        }
-        std::vector<int> levelStart(static_cast<std::size_t>(levels.levelCount()) + 1, 0);
-        for (int k = 0; k < levels.levelCount(); ++k) {
-            levelStart[static_cast<std::size_t>(k) + 1] =
-                levelStart[static_cast<std::size_t>(k)] + levels.counts()[static_cast<std::size_t>(k)];
-        }
+        const Schedule schedule = scheduleOf(wide);
+        const std::vector<int>& levelStart = schedule.levelStart;
+        const std::vector<int>& order = schedule.order;
         // A body in a random pile of 40 takes part in several contacts: several levels, and
         // levels that do not fill a multiple of four lanes.
-        EXPECT_GT(levels.levelCount(), 3);
-        std::vector<int> next(levelStart.begin(), levelStart.end() - 1);
-        std::vector<int> order(wide.constraints.size());
-        for (std::size_t k = 0; k < levelOf.size(); ++k) {
-            order[static_cast<std::size_t>(next[static_cast<std::size_t>(levelOf[k])]++)] =
-                static_cast<int>(k);
-        }
+        EXPECT_GT(schedule.levelCount, 3);
         const Problem unsolved = wide;
         // Four lanes everywhere; eight where the CPU has AVX2.
         for (int lanes : {4, 8}) {
@@ -191,6 +220,86 @@ TEST(WideContactSolver, MatchesTheScalarPassesBitForBit) {
                            : 0;
         }
         EXPECT_GT(changed, 100);
+    }
+}
+
+template <int N>
+const std::vector<WideConstraintT<N>>& groupsOf(const WideContacts& wide) {
+    if constexpr (N == 8) {
+        return wide.constraints8;
+    } else {
+        return wide.constraints4;
+    }
+}
+
+// The groups prepareWideGroup() makes from gathered lanes, byte for byte the ones
+// prepareContact() and packWideLane() make one constraint at a time.
+template <int N>
+void expectSameGroups(const Problem& p, const Schedule& schedule) {
+    WideContacts reference;
+    prepareWide(reference, p.constraints, schedule.order, schedule.levelStart, N);
+    WideContacts gathered;
+    layoutWide(gathered, schedule.levelStart, N);
+    ASSERT_EQ(reference.lanes, N);
+    ASSERT_EQ(gathered.lanes, N);
+    int groups = 0;
+    for (int level = 0; level < schedule.levelCount; ++level) {
+        const int first = schedule.levelStart[static_cast<std::size_t>(level)];
+        const int end = schedule.levelStart[static_cast<std::size_t>(level) + 1];
+        int g = gathered.levelStart[static_cast<std::size_t>(level)];
+        for (int slot = first; slot < end; slot += N, ++g) {
+            WideManifoldT<N> in;
+            for (int lane = 0; lane < N; ++lane) {
+                if (slot + lane < end) {
+                    const PrepareInput& pi = p.inputs[static_cast<std::size_t>(
+                        schedule.order[static_cast<std::size_t>(slot + lane)])];
+                    in.setLane(lane, pi.manifold, pi.a, pi.b, pi.friction, pi.softness);
+                } else {
+                    in.clearLane(lane);
+                }
+            }
+            prepareWideGroup(gathered, g, in);
+            ++groups;
+        }
+    }
+    const std::vector<WideConstraintT<N>>& expected = groupsOf<N>(reference);
+    const std::vector<WideConstraintT<N>>& actual = groupsOf<N>(gathered);
+    ASSERT_EQ(static_cast<int>(actual.size()), groups);
+    ASSERT_EQ(expected.size(), actual.size());
+    for (std::size_t g = 0; g < expected.size(); ++g) {
+        EXPECT_EQ(std::memcmp(&expected[g], &actual[g], sizeof(WideConstraintT<N>)), 0) << "group " << g;
+    }
+}
+
+TEST(WideContactSolver, PreparesGroupsAsPrepareContactDoes) {
+    constexpr float kH = 1.0f / 240.0f;
+    for (std::uint32_t seed : {4u, 5u, 6u}) {
+        Problem p = randomProblem(seed, 40, 150, kH);
+        // Cases the random pile rarely makes: a 2-point manifold with both points at one
+        // place (K singular: no block), a point exactly at the touching separation, a body that
+        // cannot move at all against a static side (no effective mass), a rigid side.
+        PrepareInput& twin = p.inputs[0];
+        twin.manifold.pointCount = 2;
+        twin.manifold.points[1] = twin.manifold.points[0];
+        p.inputs[1].manifold.points[0].separation = kTouchingSeparation;
+        PrepareInput& stuck = p.inputs[2];
+        stuck.a = ContactBodyView{};
+        stuck.b.invMass = {0.0f, 0.0f};
+        stuck.b.invInertia = 0.0f;
+        p.inputs[3].a.invInertia = 0.0f;
+        for (std::size_t k = 0; k < 4; ++k) {
+            const PrepareInput& in = p.inputs[k];
+            prepareContact(p.constraints[k], in.manifold, in.a, in.b, {in.friction, 0.0f, 0.0f},
+                           in.softness);
+        }
+        ASSERT_FALSE(p.constraints[0].blockSolve);
+        ASSERT_EQ(p.constraints[2].points[0].normalMass, 0.0f);
+        const Schedule schedule = scheduleOf(p);
+        SCOPED_TRACE(seed);
+        expectSameGroups<4>(p, schedule);
+        if (bestWideLanes() >= 8) {
+            expectSameGroups<8>(p, schedule);
+        }
     }
 }
 
