@@ -98,7 +98,6 @@ struct Simulation {
     // Classic mode and rolling resistance only: the wide solver packs each constraint as it is
     // built and keeps it nowhere else.
     std::vector<ContactConstraint> constraints; // in contact order
-    std::vector<int> slotContact;               // contact of each slot in level order
     std::vector<WideRestitution> wideRestitution; // the block being solved
     // A hit found while storing impulses by level: contact, point, approach speed.
     struct HitCandidate {
@@ -109,11 +108,14 @@ struct Simulation {
     std::vector<HitCandidate> hitCandidates;
     // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), its
     // slot in level order (level k holds slots [levelStart[k], levelStart[k + 1]), contact
-    // order within a level), the constraint in each slot and the packed constraints.
+    // order within a level), the constraint in each slot with its contact and bodies, and the
+    // packed constraints.
     ConstraintLevels levels;
     std::vector<int> constraintLevel;
     std::vector<int> constraintSlot;
     std::vector<int> slotConstraint;
+    std::vector<int> slotContact;
+    std::vector<ConstraintBodies> slotBodies;
     std::vector<int> levelStart;
     std::vector<int> levelNext;
     WideContacts wideContacts;

@@ -128,12 +128,18 @@ void World::Impl::scheduleWide(int constraintCount) {
         s.levelStart[static_cast<std::size_t>(k) + 1] += s.levelStart[static_cast<std::size_t>(k)];
     }
     s.levelNext.assign(s.levelStart.begin(), s.levelStart.end() - 1);
+    // Slot order is the order the solver builds and stores in: its contacts and bodies by
+    // slot, so those passes read them in order.
     s.constraintSlot.resize(count);
     s.slotConstraint.resize(count);
+    s.slotContact.resize(count);
+    s.slotBodies.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
-        const int slot = s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])]++;
-        s.constraintSlot[k] = slot;
-        s.slotConstraint[static_cast<std::size_t>(slot)] = static_cast<int>(k);
+        const auto slot = static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])]++);
+        s.constraintSlot[k] = static_cast<int>(slot);
+        s.slotConstraint[slot] = static_cast<int>(k);
+        s.slotContact[slot] = s.constraintContacts[k];
+        s.slotBodies[slot] = s.constraintBodies[k];
     }
     // Eight lanes only pay when levels are wide enough to fill them: a small pile's levels
     // hold a few constraints each, and half-empty groups of eight cost more than full fours.
@@ -290,7 +296,6 @@ void World::Impl::solve(float dt) {
     if (wide) {
         // Built block by block right before each block is solved (below).
         s.constraints.clear();
-        s.slotContact.resize(static_cast<std::size_t>(constraintCount));
     } else {
         s.constraints.resize(static_cast<std::size_t>(constraintCount));
         for (std::size_t k = 0; k < s.constraintContacts.size(); ++k) {
@@ -371,20 +376,17 @@ void World::Impl::solve(float dt) {
                             continue;
                         }
                         if (slot + kPrefetchAhead < constraintCount) {
-                            const int ahead = s.slotConstraint[static_cast<std::size_t>(slot + kPrefetchAhead)];
-                            prefetchContact(s.constraintContacts[static_cast<std::size_t>(ahead)]);
+                            prefetchContact(s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)]);
                         }
-                        const auto k = static_cast<std::size_t>(s.slotConstraint[static_cast<std::size_t>(slot)]);
-                        const int ci = s.constraintContacts[k];
-                        const detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
-                        const detail::ContactBodyView a = viewOf(c.bodyA, s.constraintBodies[k].indexA);
-                        const detail::ContactBodyView b = viewOf(c.bodyB, s.constraintBodies[k].indexB);
+                        const auto at = static_cast<std::size_t>(slot);
+                        const detail::Contact& c = s.contacts[static_cast<std::size_t>(s.slotContact[at])];
+                        const detail::ContactBodyView a = viewOf(c.bodyA, s.slotBodies[at].indexA);
+                        const detail::ContactBodyView b = viewOf(c.bodyB, s.slotBodies[at].indexB);
                         in.setLane(lane, c.manifold, a, b, c.friction, softnessOf(a, b));
-                        s.slotContact[static_cast<std::size_t>(slot)] = ci;
                         if (c.restitution != 0.0f) {
                             s.wideRestitution.push_back({level, slot - levelFirst, c.manifold.pointCount,
                                                          c.restitution, pressOf(c, a, b),
-                                                         static_cast<int>(k)});
+                                                         s.slotConstraint[at]});
                         }
                     }
                     detail::prepareWideGroup(s.wideContacts, group, in);
