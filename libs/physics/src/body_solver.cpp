@@ -14,33 +14,51 @@ namespace {
 // 377 rad/s with 4 sub-steps.
 constexpr float kMaxRotation = 0.5f * 3.14159265f;
 
+// The speeds integrateVelocities() and clampVelocity() allow for a step of h seconds.
+struct SpeedCaps {
+    float linear;
+    float angular;
+};
+
+inline SpeedCaps speedCaps(float maxLinearSpeed, float h) {
+    // The rotation integrator is only right for small angles, and a huge one overflows it
+    // into a zero (not unit) rotation that no finiteness check would catch.
+    return {maxLinearSpeed, kMaxRotation / h};
+}
+
+inline void clampVelocity(Vec2& v, float& w, SpeedCaps caps) {
+    float speedSquared = dot(v, v);
+    if (speedSquared > caps.linear * caps.linear) {
+        v *= caps.linear / std::sqrt(speedSquared);
+    }
+    w = std::clamp(w, -caps.angular, caps.angular);
+}
+
+// Implicit damping, 1 / (1 + h c): stable for any coefficient and step. Most bodies have
+// none, and skipping the division then gives the same 1.
+inline float dampingFactor(float h, float coefficient) {
+    return coefficient == 0.0f ? 1.0f : 1.0f / (1.0f + h * coefficient);
+}
+
 } // namespace
 
 void clampVelocity(Vec2& v, float& w, float maxLinearSpeed, float h) {
-    float speedSquared = dot(v, v);
-    if (speedSquared > maxLinearSpeed * maxLinearSpeed) {
-        v *= maxLinearSpeed / std::sqrt(speedSquared);
-    }
-    // The rotation integrator is only right for small angles, and a huge one overflows it
-    // into a zero (not unit) rotation that no finiteness check would catch.
-    float maxAngularSpeed = kMaxRotation / h;
-    w = std::clamp(w, -maxAngularSpeed, maxAngularSpeed);
+    clampVelocity(v, w, speedCaps(maxLinearSpeed, h));
 }
 
 namespace {
 
 inline void integrateVelocity(const BodySim& sim, BodyState& state, Vec2 gravity, float h,
-                              float maxLinearSpeed) {
-    // Implicit damping: stable for any damping coefficient and step.
-    float linearDamping = 1.0f / (1.0f + h * sim.linearDamping);
-    float angularDamping = 1.0f / (1.0f + h * sim.angularDamping);
+                              SpeedCaps caps) {
+    float linearDamping = dampingFactor(h, sim.linearDamping);
+    float angularDamping = dampingFactor(h, sim.angularDamping);
     // Gravity acts on each axis that can move (a kinematic body has none).
     Vec2 g = sim.gravityScale * gravity;
     Vec2 accel{sim.invMass.x > 0.0f ? g.x + sim.invMass.x * sim.force.x : 0.0f,
                sim.invMass.y > 0.0f ? g.y + sim.invMass.y * sim.force.y : 0.0f};
     Vec2 v = h * accel + linearDamping * state.linearVelocity;
     float w = h * sim.invInertia * sim.torque + angularDamping * state.angularVelocity;
-    clampVelocity(v, w, maxLinearSpeed, h);
+    clampVelocity(v, w, caps);
     if (!isFinite(v) || !isFinite(w) || (state.flags & kNonFinite) != 0) {
         // Absurd input (a force or gravity scale near the float limit) overflowed: the
         // body stays still for the rest of the step, so the contact solver spreads nothing
@@ -62,16 +80,18 @@ inline void integratePosition(BodyState& state, float h) {
 
 void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, Vec2 gravity,
                          float h, float maxLinearSpeed) {
+    const SpeedCaps caps = speedCaps(maxLinearSpeed, h);
     for (std::size_t i = 0; i < sims.size(); ++i) {
-        integrateVelocity(sims[i], states[i], gravity, h, maxLinearSpeed);
+        integrateVelocity(sims[i], states[i], gravity, h, caps);
     }
 }
 
 void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states,
                          std::span<const int> indices, Vec2 gravity, float h, float maxLinearSpeed) {
+    const SpeedCaps caps = speedCaps(maxLinearSpeed, h);
     for (int i : indices) {
         const auto k = static_cast<std::size_t>(i);
-        integrateVelocity(sims[k], states[k], gravity, h, maxLinearSpeed);
+        integrateVelocity(sims[k], states[k], gravity, h, caps);
     }
 }
 
