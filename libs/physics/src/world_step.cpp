@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace e2d::physics {
 
@@ -183,8 +184,13 @@ void World::Impl::solve(float dt) {
     // The awake moving bodies, in slot order.
     const float integrationStep =
         def.mode == SolverMode::SoftStep ? dt / static_cast<float>(def.subSteps) : dt;
+    // Last solve's constraint sides and rigid states: the wide schedule is kept while they stay
+    // the same (see below).
+    s.lastConstraintBodies.swap(s.constraintBodies);
+    s.lastStateRigid.swap(s.stateRigid);
     s.sims.clear();
     s.states.clear();
+    s.stateRigid.clear();
     for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
         detail::Body& b = bodies[bi];
         detail::BodyMotion& m = b.motion;
@@ -208,6 +214,7 @@ void World::Impl::solve(float dt) {
         bs.gravityScale = m.gravityScale;
         bs.maxExtent = m.maxExtent;
         bs.bodyIndex = static_cast<int>(bi);
+        s.stateRigid.push_back(bs.invMass.x == 0.0f && bs.invMass.y == 0.0f && bs.invInertia == 0.0f);
         detail::BodyState& st = s.states.emplace_back();
         // A kinematic body keeps its velocity; a locked axis has none.
         st.linearVelocity = {m.lockX && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.x,
@@ -238,21 +245,7 @@ void World::Impl::solve(float dt) {
         }
         return v;
     };
-    // One constraint per touching solid contact with a moving side, in contact order. Each
-    // also gets a level (see ConstraintLevels): solving level by level is the same sweep as
-    // solving in contact order, but the constraints of a level share no moving body, so the
-    // wide solver takes four at a time.
-    s.constraintLevel.clear();
-    s.levels.reset(static_cast<int>(s.sims.size()));
-    auto movingState = [&](int bodyIndex) {
-        int k = body(bodyIndex).motion.solverIndex;
-        if (k == kNullIndex) {
-            return kNullIndex;
-        }
-        const detail::BodySim& bs = s.sims[static_cast<std::size_t>(k)];
-        bool rigid = bs.invMass.x == 0.0f && bs.invMass.y == 0.0f && bs.invInertia == 0.0f;
-        return rigid ? kNullIndex : k;
-    };
+    // One constraint per touching solid contact with a moving side, in contact order.
     bool rolling = false;
     int constraintCount = 0;
     s.constraintContacts.clear();
@@ -268,7 +261,6 @@ void World::Impl::solve(float dt) {
             continue;
         }
         rolling = rolling || c.rollingResistance > 0.0f;
-        s.constraintLevel.push_back(s.levels.assign(movingState(c.bodyA), movingState(c.bodyB)));
         s.constraintContacts.push_back(static_cast<int>(ci));
         s.constraintBodies.push_back({indexA, indexB});
         ++constraintCount;
@@ -277,8 +269,35 @@ void World::Impl::solve(float dt) {
     // Rolling resistance is scalar only (and solved in contact order, the same sweep).
     const bool wide = def.mode == SolverMode::SoftStep && !rolling;
     if (wide) {
-        scheduleWide(constraintCount);
+        // A settled pile has the same constraints step after step: its schedule is last step's.
+        // layoutWide() again empties the lanes past each level's end, as a new schedule would
+        // (the passes leave them zero, but nothing else then depends on that).
+        static_assert(sizeof(detail::Simulation::ConstraintBodies) == 2 * sizeof(int));
+        const bool same =
+            s.wideScheduleValid && s.stateRigid == s.lastStateRigid &&
+            s.constraintBodies.size() == s.lastConstraintBodies.size() &&
+            (s.constraintBodies.empty() ||
+             std::memcmp(s.constraintBodies.data(), s.lastConstraintBodies.data(),
+                         s.constraintBodies.size() * sizeof(detail::Simulation::ConstraintBodies)) == 0);
+        if (same) {
+            detail::layoutWide(s.wideContacts, s.levelStart, s.wideContacts.lanes);
+        } else {
+            // Each constraint's level (see ConstraintLevels): solving level by level is the
+            // same sweep as solving in contact order, but the constraints of a level share no
+            // moving body, so the wide solver takes several at a time. A rigid side is not
+            // moving: the constraint never changes its velocity.
+            auto moving = [&](int k) {
+                return k == kNullIndex || s.stateRigid[static_cast<std::size_t>(k)] != 0 ? kNullIndex : k;
+            };
+            s.levels.reset(static_cast<int>(s.sims.size()));
+            s.constraintLevel.clear();
+            for (const detail::Simulation::ConstraintBodies& cb : s.constraintBodies) {
+                s.constraintLevel.push_back(s.levels.assign(moving(cb.indexA), moving(cb.indexB)));
+            }
+            scheduleWide(constraintCount);
+        }
     }
+    s.wideScheduleValid = wide;
 
     auto build = [&](detail::ContactConstraint& cc, const detail::Contact& c) {
         detail::ContactBodyView a = viewOf(c.bodyA);
