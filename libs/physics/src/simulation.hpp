@@ -95,6 +95,8 @@ struct Simulation {
     };
     std::vector<int> constraintContacts;
     std::vector<ConstraintBodies> constraintBodies;
+    // Per BodyState: zero inverse mass and inertia (no constraint changes its velocity).
+    std::vector<unsigned char> stateRigid;
     // Classic mode and rolling resistance only: the wide solver packs each constraint as it is
     // built and keeps it nowhere else.
     std::vector<ContactConstraint> constraints; // in contact order
@@ -131,6 +133,14 @@ struct Simulation {
     std::vector<int> blockLevelStart;
     std::vector<int> blockBodyStart;
     std::vector<int> blockBodies;
+    // The schedule above depends on nothing but the constraints (contacts and sides) and which
+    // states are rigid. wideScheduleValid: it was built from the last solve's
+    // constraintContacts, constraintBodies and stateRigid, which each solve keeps here
+    // (swapped, not copied) to compare with its own.
+    bool wideScheduleValid = false;
+    std::vector<int> lastConstraintContacts;
+    std::vector<ConstraintBodies> lastConstraintBodies;
+    std::vector<unsigned char> lastStateRigid;
     std::vector<int> islandParent; // union-find over the awake arrays
     std::vector<float> islandSleepTime;
     std::vector<int> wakeStack;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace e2d::physics {
 
@@ -176,8 +177,14 @@ void World::Impl::solve(float dt) {
     // The awake moving bodies, in slot order.
     const float integrationStep =
         def.mode == SolverMode::SoftStep ? dt / static_cast<float>(def.subSteps) : dt;
+    // Last solve's constraints and rigid states: the wide schedule is kept while they stay the
+    // same (see below).
+    s.lastConstraintContacts.swap(s.constraintContacts);
+    s.lastConstraintBodies.swap(s.constraintBodies);
+    s.lastStateRigid.swap(s.stateRigid);
     s.sims.clear();
     s.states.clear();
+    s.stateRigid.clear();
     for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
         detail::Body& b = bodies[bi];
         detail::BodyMotion& m = b.motion;
@@ -201,6 +208,7 @@ void World::Impl::solve(float dt) {
         bs.gravityScale = m.gravityScale;
         bs.maxExtent = m.maxExtent;
         bs.bodyIndex = static_cast<int>(bi);
+        s.stateRigid.push_back(bs.invMass.x == 0.0f && bs.invMass.y == 0.0f && bs.invInertia == 0.0f);
         detail::BodyState& st = s.states.emplace_back();
         // A kinematic body keeps its velocity; a locked axis has none.
         st.linearVelocity = {m.lockX && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.x,
@@ -251,21 +259,7 @@ void World::Impl::solve(float dt) {
         };
         return -dot(gravityOf(b, c.bodyB) - gravityOf(a, c.bodyA), c.manifold.normal);
     };
-    // One constraint per touching solid contact with a moving side, in contact order. Each
-    // also gets a level (see ConstraintLevels): solving level by level is the same sweep as
-    // solving in contact order, but the constraints of a level share no moving body, so the
-    // wide solver takes four at a time.
-    s.constraintLevel.clear();
-    s.levels.reset(static_cast<int>(s.sims.size()));
-    auto movingState = [&](int bodyIndex) {
-        int k = body(bodyIndex).motion.solverIndex;
-        if (k == kNullIndex) {
-            return kNullIndex;
-        }
-        const detail::BodySim& bs = s.sims[static_cast<std::size_t>(k)];
-        bool rigid = bs.invMass.x == 0.0f && bs.invMass.y == 0.0f && bs.invInertia == 0.0f;
-        return rigid ? kNullIndex : k;
-    };
+    // One constraint per touching solid contact with a moving side, in contact order.
     bool rolling = false;
     int constraintCount = 0;
     s.constraintContacts.clear();
@@ -281,7 +275,6 @@ void World::Impl::solve(float dt) {
             continue;
         }
         rolling = rolling || c.rollingResistance > 0.0f;
-        s.constraintLevel.push_back(s.levels.assign(movingState(c.bodyA), movingState(c.bodyB)));
         s.constraintContacts.push_back(static_cast<int>(ci));
         s.constraintBodies.push_back({indexA, indexB});
         ++constraintCount;
@@ -290,8 +283,33 @@ void World::Impl::solve(float dt) {
     // Rolling resistance is scalar only (and solved in contact order, the same sweep).
     const bool wide = def.mode == SolverMode::SoftStep && !rolling;
     if (wide) {
-        scheduleWide(constraintCount);
+        // A settled pile has the same constraints step after step: its schedule is last step's.
+        // (The build below rewrites every lane of every group, padding included.)
+        auto sameAsLast = [](const auto& now, const auto& last) {
+            return now.size() == last.size() &&
+                   (now.empty() || std::memcmp(now.data(), last.data(), now.size() * sizeof(now[0])) == 0);
+        };
+        static_assert(sizeof(detail::Simulation::ConstraintBodies) == 2 * sizeof(int));
+        const bool same = s.wideScheduleValid && s.stateRigid == s.lastStateRigid &&
+                          sameAsLast(s.constraintBodies, s.lastConstraintBodies) &&
+                          sameAsLast(s.constraintContacts, s.lastConstraintContacts);
+        if (!same) {
+            // Each constraint's level (see ConstraintLevels): solving level by level is the
+            // same sweep as solving in contact order, but the constraints of a level share no
+            // moving body, so the wide solver takes several at a time. A rigid side is not
+            // moving: the constraint never changes its velocity.
+            auto moving = [&](int k) {
+                return k == kNullIndex || s.stateRigid[static_cast<std::size_t>(k)] != 0 ? kNullIndex : k;
+            };
+            s.levels.reset(static_cast<int>(s.sims.size()));
+            s.constraintLevel.clear();
+            for (const detail::Simulation::ConstraintBodies& cb : s.constraintBodies) {
+                s.constraintLevel.push_back(s.levels.assign(moving(cb.indexA), moving(cb.indexB)));
+            }
+            scheduleWide(constraintCount);
+        }
     }
+    s.wideScheduleValid = wide;
 
     if (wide) {
         // Built block by block right before each block is solved (below).

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Solver behaviour seen through the World: warm starting by feature id, the restitution
 // threshold, friction and restitution mixing rules, hit events (approach speed along the
-// normal, point, threshold), and several worlds stepping at once on different threads.
+// normal, point, threshold), several worlds stepping at once on different threads, and the
+// wide solver's schedule kept from step to step.
 #include "world_step_util.hpp"
 #include "world_test_util.hpp"
 
@@ -208,6 +209,21 @@ TEST(WorldSolver, SleepToleranceIsTheWorlds) {
     }
 }
 
+// A hash of the bodies' transforms, bit for bit.
+std::uint64_t transformsHash(const World& world, const std::vector<BodyId>& bodies) {
+    std::uint64_t h = 1469598103934665603ull;
+    for (BodyId id : bodies) {
+        Transform xf = world.transform(id);
+        float values[4] = {xf.p.x, xf.p.y, xf.q.c, xf.q.s};
+        std::uint32_t bits[4];
+        std::memcpy(bits, values, sizeof(bits));
+        for (std::uint32_t b : bits) {
+            h = (h ^ b) * 1099511628211ull;
+        }
+    }
+    return h;
+}
+
 // A random pile stepped n times in a world of the given mode; a hash of the final transforms.
 std::uint64_t pileHash(SolverMode mode, int steps) {
     WorldDef def;
@@ -228,17 +244,7 @@ std::uint64_t pileHash(SolverMode mode, int steps) {
     for (int i = 0; i < steps; ++i) {
         world.step(kStep);
     }
-    std::uint64_t h = 1469598103934665603ull;
-    for (BodyId id : bodies) {
-        Transform xf = world.transform(id);
-        float values[4] = {xf.p.x, xf.p.y, xf.q.c, xf.q.s};
-        std::uint32_t bits[4];
-        std::memcpy(bits, values, sizeof(bits));
-        for (std::uint32_t b : bits) {
-            h = (h ^ b) * 1099511628211ull;
-        }
-    }
-    return h;
+    return transformsHash(world, bodies);
 }
 
 TEST(WorldSolver, WorldsOnSeveralThreadsMatchRunningAlone) {
@@ -261,6 +267,101 @@ TEST(WorldSolver, WorldsOnSeveralThreadsMatchRunningAlone) {
     EXPECT_EQ(results[1], classic);
     EXPECT_EQ(results[2], soft);
     EXPECT_EQ(results[3], classic);
+}
+
+// The soft step keeps last step's wide schedule while the constraints stay the same. Two
+// copies of a scene get the same changes, several of which keep the number of constraints: a
+// box moves from the ground onto another (a contact ends as another begins), the middle box of
+// a weightless row squeezed from both ends turns rigid and back, a box sleeps and wakes, another is disabled and
+// enabled, a rolling-resistance ball (scalar solve) comes and goes. The second copy also has a
+// far weightless box put to sleep and woken step after step, so it schedules every step anew: a
+// schedule kept when it should not have been (two constraints on one body in one level, or in
+// the wrong order) shows as a difference.
+TEST(WorldSolver, KeptWideScheduleMatchesANewOneEveryStep) {
+    struct Scene {
+        World world{WorldDef{.solver = {.enableSleep = false}}};
+        std::vector<BodyId> row;   // boxes on the ground, apart
+        std::vector<BodyId> chain; // weightless boxes in a row, touching
+        BodyId spare;
+        BodyId ball;
+        BodyId far;
+        std::vector<BodyId> all;
+    };
+    auto build = [](Scene& s) {
+        addGround(s.world);
+        for (int i = 0; i < 6; ++i) {
+            s.row.push_back(addBox(s.world, {-10.0f + 2.0f * static_cast<float>(i), 0.5f}, 0.5f));
+        }
+        BodyDef bd;
+        bd.type = BodyType::Dynamic;
+        bd.gravityScale = 0.0f;
+        for (int i = 0; i < 3; ++i) {
+            bd.position = {static_cast<float>(i), 10.0f};
+            s.chain.push_back(s.world.createBody(bd));
+            s.world.createShape(s.chain.back(), {}, makeBox(0.5f, 0.5f));
+        }
+        s.spare = addBox(s.world, {20.0f, 0.5f}, 0.5f);
+        bd.gravityScale = 1.0f;
+        bd.position = {8.0f, 0.5f};
+        bd.enabled = false;
+        s.ball = s.world.createBody(bd);
+        ShapeDef rolling;
+        rolling.rollingResistance = 0.1f;
+        s.world.createShape(s.ball, rolling, Circle{{0.0f, 0.0f}, 0.5f});
+        bd.gravityScale = 0.0f;
+        bd.position = {60.0f, 60.0f};
+        bd.enabled = true;
+        s.far = s.world.createBody(bd);
+        s.world.createShape(s.far, {}, makeBox(0.5f, 0.5f));
+        s.all = s.row;
+        s.all.insert(s.all.end(), s.chain.begin(), s.chain.end());
+        s.all.push_back(s.spare);
+        s.all.push_back(s.ball);
+    };
+    auto change = [](Scene& s, int step) {
+        World& w = s.world;
+        switch (step) {
+        case 30: w.setTransform(s.row[5], {-10.0f, 1.5f}, 0.0f); break; // onto row[0]
+        case 50: // rigid, scheduled so (the spare box's contact goes)
+            w.setFixedRotation(s.chain[1], true);
+            w.setPositionLocks(s.chain[1], true, true);
+            w.setBodyEnabled(s.spare, false);
+            break;
+        case 60: w.setBodyEnabled(s.spare, true); break;
+        case 70: // moving again, and pushed from both sides
+            w.setFixedRotation(s.chain[1], false);
+            w.setPositionLocks(s.chain[1], false, false);
+            w.setLinearVelocity(s.chain[0], {1.0f, 0.0f});
+            w.setLinearVelocity(s.chain[2], {-1.0f, 0.0f});
+            break;
+        case 90: w.setAwake(s.row[1], false); break;
+        case 100: w.setAwake(s.row[1], true); break;
+        case 110: w.setBodyEnabled(s.row[2], false); break;
+        case 120: w.setBodyEnabled(s.row[2], true); break;
+        case 130: w.setBodyEnabled(s.ball, true); break;
+        case 140: w.setBodyEnabled(s.ball, false); break;
+        default: break;
+        }
+    };
+    Scene kept;
+    Scene fresh;
+    build(kept);
+    build(fresh);
+    for (int i = 0; i < 180; ++i) {
+        for (Scene* s : {&kept, &fresh}) {
+            change(*s, i);
+            // The row squeezed from both ends: its contacts always push.
+            s->world.applyForceToCenter(s->chain[0], {5.0f, 0.0f});
+            s->world.applyForceToCenter(s->chain[2], {-5.0f, 0.0f});
+        }
+        fresh.world.setAwake(fresh.far, i % 2 != 0);
+        kept.world.step(kStep);
+        fresh.world.step(kStep);
+        ASSERT_EQ(transformsHash(kept.world, kept.all), transformsHash(fresh.world, fresh.all))
+            << "step " << i;
+    }
+    // The moved box rests on the other.
+    EXPECT_NEAR(kept.world.transform(kept.row[5]).p.y, 1.5f, 0.05f);
 }
 
 } // namespace
