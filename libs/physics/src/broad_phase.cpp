@@ -20,13 +20,9 @@ Aabb fatten(const Aabb& box, BodyType type) {
 
 } // namespace
 
-void BroadPhase::checkKey(int proxyKey, const char* function) const {
-    if (proxyKey < 0 || static_cast<std::size_t>(proxyKey) >= infos_.size() ||
-        (proxyKey & 3) >= kBodyTypeCount ||
-        !trees_[treeIndex(proxyKey)].isProxy(proxyIdOf(proxyKey))) {
-        throw core::Error(std::string("physics::BroadPhase::") + function +
-                          "(): no proxy with key " + std::to_string(proxyKey));
-    }
+void BroadPhase::throwBadKey(int proxyKey, const char* function) {
+    throw core::Error(std::string("physics::BroadPhase::") + function + "(): no proxy with key " +
+                      std::to_string(proxyKey));
 }
 
 int BroadPhase::createProxy(const Aabb& aabb, BodyType type, std::uint64_t categoryBits,

@@ -112,7 +112,15 @@ private:
     [[nodiscard]] bool isMoved(int proxyKey) const {
         return infos_[static_cast<std::size_t>(proxyKey)].moveIndex >= 0;
     }
-    void checkKey(int proxyKey, const char* function) const;
+    // Inline: moveProxy() checks every awake shape's key every step.
+    void checkKey(int proxyKey, const char* function) const {
+        if (proxyKey < 0 || static_cast<std::size_t>(proxyKey) >= infos_.size() ||
+            (proxyKey & 3) >= kBodyTypeCount ||
+            !trees_[treeIndex(proxyKey)].isProxy(proxyIdOf(proxyKey))) [[unlikely]] {
+            throwBadKey(proxyKey, function);
+        }
+    }
+    [[noreturn]] static void throwBadKey(int proxyKey, const char* function);
     void erasePair(std::uint64_t key);
 
     std::array<DynamicTree, kBodyTypeCount> trees_;
