@@ -129,6 +129,14 @@ void World::Impl::updateContacts(float dt) {
         createContact(static_cast<int>(p.userDataA), static_cast<int>(p.userDataB));
     }
 
+    // The touching solid contacts, in contact order, as they are after the narrow phase: what
+    // the solver makes constraints of (without streaming the whole contact array again).
+    s.touchingContacts.clear();
+    auto listTouching = [&](int ci, const detail::Contact& c) {
+        if (c.touching && !c.sensor) {
+            s.touchingContacts.push_back({ci, c.bodyA, c.bodyB, c.rollingResistance});
+        }
+    };
     int contactSlots = static_cast<int>(s.contacts.size());
     // Each contact reads two shapes and two bodies scattered over arrays far larger than the
     // cache: they are fetched a few contacts ahead.
@@ -161,6 +169,7 @@ void World::Impl::updateContacts(float dt) {
         bool awakeB = bb.motion.awake;
         if (!awakeA && !awakeB) {
             // Asleep (or asleep against static): nothing moved, the manifold still holds.
+            listTouching(ci, c);
             continue;
         }
         bool wasTouching = c.touching;
@@ -225,6 +234,7 @@ void World::Impl::updateContacts(float dt) {
             // Something awake touches a sleeping island: it wakes (static bodies never do).
             wakeBody(awakeA ? c.bodyB : c.bodyA);
         }
+        listTouching(ci, c);
     }
 }
 

@@ -84,6 +84,16 @@ struct Simulation {
     std::vector<int> freeContacts;
     int contactCount = 0;
 
+    // The touching non-sensor contacts after this step's narrow phase, in contact order, with
+    // what the solver's walk over them reads.
+    struct TouchingContact {
+        int contact = -1;
+        int bodyA = -1;
+        int bodyB = -1;
+        float rollingResistance = 0.0f;
+    };
+    std::vector<TouchingContact> touchingContacts;
+
     // Per-step scratch, same order: the awake moving bodies and their world slots.
     std::vector<BodySim> sims;
     std::vector<BodyState> states;

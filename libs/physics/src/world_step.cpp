@@ -264,18 +264,14 @@ void World::Impl::solve(float dt) {
     int constraintCount = 0;
     s.constraintContacts.clear();
     s.constraintBodies.clear();
-    for (std::size_t ci = 0; ci < s.contacts.size(); ++ci) {
-        detail::Contact& c = s.contacts[ci];
-        if (!c.alive || !c.touching || c.sensor) {
-            continue;
-        }
+    for (const detail::Simulation::TouchingContact& c : s.touchingContacts) {
         const int indexA = body(c.bodyA).motion.solverIndex;
         const int indexB = body(c.bodyB).motion.solverIndex;
         if (indexA == kNullIndex && indexB == kNullIndex) {
             continue;
         }
         rolling = rolling || c.rollingResistance > 0.0f;
-        s.constraintContacts.push_back(static_cast<int>(ci));
+        s.constraintContacts.push_back(c.contact);
         s.constraintBodies.push_back({indexA, indexB});
         ++constraintCount;
     }
