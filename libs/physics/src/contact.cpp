@@ -2,6 +2,7 @@
 // Contacts: created from new broad-phase pairs, destroyed when the fat boxes part or a shape
 // goes, updated by the narrow phase (carrying impulses by feature id) with begin/end and
 // sensor events.
+#include "prefetch.hpp"
 #include "world_impl.hpp"
 
 #include <algorithm>
@@ -16,16 +17,6 @@ using detail::kNullIndex;
 namespace {
 
 int sideOf(const detail::Contact& c, int bodyIndex) { return c.bodyA == bodyIndex ? 0 : 1; }
-
-// Asks for every cache line of *p.
-template <class T>
-inline void prefetchObject(const T* p) {
-    const auto* bytes = reinterpret_cast<const char*>(p);
-    for (std::size_t offset = 0; offset < sizeof(T); offset += 64) {
-        __builtin_prefetch(bytes + offset);
-    }
-    __builtin_prefetch(bytes + sizeof(T) - 1);
-}
 
 constexpr std::size_t kPolygonIndex = static_cast<std::size_t>(ShapeType::Polygon);
 
@@ -145,10 +136,10 @@ void World::Impl::updateContacts(float dt) {
         if (ci + kPrefetchAhead < contactSlots) {
             const detail::Contact& ahead = s.contacts[static_cast<std::size_t>(ci + kPrefetchAhead)];
             if (ahead.alive) {
-                prefetchObject(&shape(ahead.shapeA));
-                prefetchObject(&shape(ahead.shapeB));
-                prefetchObject(&body(ahead.bodyA));
-                prefetchObject(&body(ahead.bodyB));
+                detail::prefetchObject(&shape(ahead.shapeA));
+                detail::prefetchObject(&shape(ahead.shapeB));
+                detail::prefetchObject(&body(ahead.bodyA));
+                detail::prefetchObject(&body(ahead.bodyB));
             }
         }
         detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];

@@ -4,6 +4,7 @@
 #include <e2d/physics/world.hpp>
 
 #include "body_solver.hpp"
+#include "prefetch.hpp"
 #include "world_check.hpp"
 #include "world_impl.hpp"
 
@@ -354,18 +355,12 @@ void World::Impl::solve(float dt) {
         // Contacts are visited in slot order, twice a block: gathered before it is solved and
         // their impulses stored right after, while its lanes are in cache. A level's contacts
         // lie one island apart in the array, too far for the hardware prefetcher: fetch the
-        // ones a few slots ahead (for writing: the store comes back to them).
+        // ones a few slots ahead.
         constexpr int kPrefetchAhead = 16;
-        auto prefetchContact = [&](int contactIndex) {
-            const auto* ahead = reinterpret_cast<const char*>(&s.contacts[static_cast<std::size_t>(contactIndex)]);
-            for (std::size_t offset = 0; offset < sizeof(detail::Contact); offset += 64) {
-                __builtin_prefetch(ahead + offset, 1);
-            }
-            __builtin_prefetch(ahead + sizeof(detail::Contact) - 1, 1);
-        };
         auto storeLane = [&](int slot, const detail::WideLaneResult& r) {
             if (slot + kPrefetchAhead < constraintCount) {
-                prefetchContact(s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)]);
+                detail::prefetchObject(&s.contacts[static_cast<std::size_t>(
+                    s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
             }
             const int ci = s.slotContact[static_cast<std::size_t>(slot)];
             store(ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount, r.normalImpulse,
@@ -390,7 +385,8 @@ void World::Impl::solve(float dt) {
                             continue;
                         }
                         if (slot + kPrefetchAhead < constraintCount) {
-                            prefetchContact(s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)]);
+                            detail::prefetchObject(&s.contacts[static_cast<std::size_t>(
+                    s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
                         }
                         const auto at = static_cast<std::size_t>(slot);
                         const detail::Contact& c = s.contacts[static_cast<std::size_t>(s.slotContact[at])];
