@@ -54,6 +54,17 @@ struct BlockMatrix {
 // keeps one point and the soft step solves the two one after the other.
 inline constexpr float kMaxBlockConditionNumber = 1000.0f;
 
+// A lever arm r x n is only known to within a few float roundings of |r|: the solver reads and
+// applies it through cross(w, r) . n and cross(r, p), not through the r x n its effective mass
+// used, and the three differ by ~2^-23 |r|. An effective mass therefore counts each side's
+// rotation with a lever arm of at least 2^-21 |r| (it adds 2^-42 (iA |rA|^2 + iB |rB|^2) to
+// K). Otherwise a normal that passes (to the last bit) through a body's centre leaves that
+// body's rotation out of K, and when K is tiny for other reasons (a 2 mm circle whose position
+// is locked, pressed by a body 1e16 times heavier) the rounding in the applied torque spins it
+// by 1e18 rad/s and the state overflows within a sub-step. The term is below half an ulp of K,
+// so changes nothing, unless iA |rA|^2 exceeds about 1e5 times the rest of K.
+inline constexpr float kLeverRounding2 = 0x1p-42f;
+
 struct ContactConstraint {
     ContactConstraintPoint points[2];
     Vec2 normal{0.0f, 0.0f};
