@@ -53,6 +53,11 @@ struct BlockMatrix {
 // (estimated as k11^2 / det K) stays below this (Box2D 2.4's value); above it the classic mode
 // keeps one point and the soft step solves the two one after the other.
 inline constexpr float kMaxBlockConditionNumber = 1000.0f;
+// ... and while det K is a normal float. K of a body that cannot translate, against a static or
+// kinematic side, is its inverse inertia times lever arms squared: 1e-21 for a 2.7e15 kg m^2
+// body, whose det K then underflows into denormals, which the condition estimate reads as
+// garbage and 1 / det overflows to infinity (the fuzzer found it).
+inline constexpr float kMinBlockDeterminant = 0x1p-126f; // FLT_MIN
 
 // A lever arm r x n is only known to within a few float roundings of |r|: the solver reads and
 // applies it through cross(w, r) . n and cross(r, p), not through the r x n its effective mass

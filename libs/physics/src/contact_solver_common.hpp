@@ -32,7 +32,7 @@ inline float effectiveMass(Vec2 axis, Vec2 rA, Vec2 rB, const ContactConstraint&
 // K says how each point's normal impulse changes both points' normal velocities. Its condition
 // number, estimated as k11^2 / det K, must stay below kMaxBlockConditionNumber: above it the two
 // rows are (nearly) the same constraint, e.g. a body that cannot rotate, and the block would be
-// ill-conditioned.
+// ill-conditioned. det K must not underflow either (kMinBlockDeterminant).
 inline void prepareBlock(ContactConstraint& c) {
     c.blockSolve = false;
     if (c.pointCount != 2) {
@@ -51,7 +51,7 @@ inline void prepareBlock(ContactConstraint& c) {
     k22 += leverRounding(c.points[1].anchorA, c.points[1].anchorB, c);
     float k12 = linear + c.invInertiaA * rn1A * rn2A + c.invInertiaB * rn1B * rn2B;
     float det = k11 * k22 - k12 * k12;
-    if (k11 * k11 < kMaxBlockConditionNumber * det) {
+    if (k11 * k11 < kMaxBlockConditionNumber * det && det >= kMinBlockDeterminant) {
         c.blockSolve = true;
         c.blockK = {k11, k12, k22};
         float invDet = 1.0f / det;

@@ -417,7 +417,8 @@ E2D_WIDE_FN void prepareGroup(const Manifolds& in, Constraint& c) {
     k22 = k22 + leverRoundingOf(c, p2.anchorAx, p2.anchorAy, p2.anchorBx, p2.anchorBy);
     F k12 = linear + c.invInertiaA * rn1A * rn2A + c.invInertiaB * rn1B * rn2B;
     F det = k11 * k22 - k12 * k12;
-    const I block = (count == 2) & (k11 * k11 < splat(kMaxBlockConditionNumber) * det);
+    const I block = (count == 2) & (k11 * k11 < splat(kMaxBlockConditionNumber) * det) &
+                    (det >= splat(kMinBlockDeterminant));
     F invDet = one / select(block, det, one);
     // Other lanes hold K = identity; empty lanes count as block lanes (see WideConstraintT).
     c.k11 = select(block, k11, one);
