@@ -53,6 +53,22 @@ struct BlockMatrix {
 // (estimated as k11^2 / det K) stays below this (Box2D 2.4's value); above it the classic mode
 // keeps one point and the soft step solves the two one after the other.
 inline constexpr float kMaxBlockConditionNumber = 1000.0f;
+// ... and while det K is a normal float. K of a body that cannot translate, against a static or
+// kinematic side, is its inverse inertia times lever arms squared: 1e-21 for a 2.7e15 kg m^2
+// body, whose det K then underflows into denormals, which the condition estimate reads as
+// garbage and 1 / det overflows to infinity (the fuzzer found it).
+inline constexpr float kMinBlockDeterminant = 0x1p-126f; // FLT_MIN
+
+// A lever arm r x n is only known to within a few float roundings of |r|: the solver reads and
+// applies it through cross(w, r) . n and cross(r, p), not through the r x n its effective mass
+// used, and the three differ by ~2^-23 |r|. An effective mass therefore counts each side's
+// rotation with a lever arm of at least 2^-21 |r| (it adds 2^-42 (iA |rA|^2 + iB |rB|^2) to
+// K). Otherwise a normal that passes (to the last bit) through a body's centre leaves that
+// body's rotation out of K, and when K is tiny for other reasons (a 2 mm circle whose position
+// is locked, pressed by a body 1e16 times heavier) the rounding in the applied torque spins it
+// by 1e18 rad/s and the state overflows within a sub-step. The term is below half an ulp of K,
+// so changes nothing, unless iA |rA|^2 exceeds about 1e5 times the rest of K.
+inline constexpr float kLeverRounding2 = 0x1p-42f;
 
 struct ContactConstraint {
     ContactConstraintPoint points[2];

@@ -13,12 +13,18 @@ namespace e2d::physics::detail {
 // Component-wise product: per-axis inverse mass times an impulse.
 inline Vec2 scale(Vec2 invMass, Vec2 p) { return {invMass.x * p.x, invMass.y * p.y}; }
 
+// What the rounding of the lever arms adds to an effective mass (see kLeverRounding2).
+inline float leverRounding(Vec2 rA, Vec2 rB, const ContactConstraint& c) {
+    return kLeverRounding2 * (c.invInertiaA * dot(rA, rA) + c.invInertiaB * dot(rB, rB));
+}
+
 inline float effectiveMass(Vec2 axis, Vec2 rA, Vec2 rB, const ContactConstraint& c) {
     float rnA = cross(rA, axis);
     float rnB = cross(rB, axis);
     float k = c.invMassA.x * axis.x * axis.x + c.invMassA.y * axis.y * axis.y +
               c.invMassB.x * axis.x * axis.x + c.invMassB.y * axis.y * axis.y +
               c.invInertiaA * rnA * rnA + c.invInertiaB * rnB * rnB;
+    k += leverRounding(rA, rB, c);
     return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
@@ -26,7 +32,7 @@ inline float effectiveMass(Vec2 axis, Vec2 rA, Vec2 rB, const ContactConstraint&
 // K says how each point's normal impulse changes both points' normal velocities. Its condition
 // number, estimated as k11^2 / det K, must stay below kMaxBlockConditionNumber: above it the two
 // rows are (nearly) the same constraint, e.g. a body that cannot rotate, and the block would be
-// ill-conditioned.
+// ill-conditioned. det K must not underflow either (kMinBlockDeterminant).
 inline void prepareBlock(ContactConstraint& c) {
     c.blockSolve = false;
     if (c.pointCount != 2) {
@@ -41,9 +47,11 @@ inline void prepareBlock(ContactConstraint& c) {
     float rn2B = cross(c.points[1].anchorB, n);
     float k11 = linear + c.invInertiaA * rn1A * rn1A + c.invInertiaB * rn1B * rn1B;
     float k22 = linear + c.invInertiaA * rn2A * rn2A + c.invInertiaB * rn2B * rn2B;
+    k11 += leverRounding(c.points[0].anchorA, c.points[0].anchorB, c);
+    k22 += leverRounding(c.points[1].anchorA, c.points[1].anchorB, c);
     float k12 = linear + c.invInertiaA * rn1A * rn2A + c.invInertiaB * rn1B * rn2B;
     float det = k11 * k22 - k12 * k12;
-    if (k11 * k11 < kMaxBlockConditionNumber * det) {
+    if (k11 * k11 < kMaxBlockConditionNumber * det && det >= kMinBlockDeterminant) {
         c.blockSolve = true;
         c.blockK = {k11, k12, k22};
         float invDet = 1.0f / det;

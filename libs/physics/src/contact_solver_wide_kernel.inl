@@ -322,12 +322,19 @@ E2D_WIDE_FN I vectorOf(const int (&x)[N]) {
     return v;
 }
 
+// leverRounding().
+E2D_WIDE_FN F leverRoundingOf(const Constraint& c, F rAx, F rAy, F rBx, F rBy) {
+    return splat(kLeverRounding2) *
+           (c.invInertiaA * (rAx * rAx + rAy * rAy) + c.invInertiaB * (rBx * rBx + rBy * rBy));
+}
+
 // effectiveMass() along (ax, ay); 0 where the sum is not positive.
 E2D_WIDE_FN F effectiveMassOf(const Constraint& c, F ax, F ay, F rAx, F rAy, F rBx, F rBy) {
     F rnA = rAx * ay - rAy * ax;
     F rnB = rBx * ay - rBy * ax;
     F k = c.invMassAx * ax * ax + c.invMassAy * ay * ay + c.invMassBx * ax * ax +
           c.invMassBy * ay * ay + c.invInertiaA * rnA * rnA + c.invInertiaB * rnB * rnB;
+    k = k + leverRoundingOf(c, rAx, rAy, rBx, rBy);
     const F zero = splat(0.0f);
     I positive = k > zero;
     // The divisor is 1 where it is not used: no division by zero, even in discarded lanes.
@@ -406,9 +413,12 @@ E2D_WIDE_FN void prepareGroup(const Manifolds& in, Constraint& c) {
     F rn2B = p2.anchorBx * ny - p2.anchorBy * nx;
     F k11 = linear + c.invInertiaA * rn1A * rn1A + c.invInertiaB * rn1B * rn1B;
     F k22 = linear + c.invInertiaA * rn2A * rn2A + c.invInertiaB * rn2B * rn2B;
+    k11 = k11 + leverRoundingOf(c, p1.anchorAx, p1.anchorAy, p1.anchorBx, p1.anchorBy);
+    k22 = k22 + leverRoundingOf(c, p2.anchorAx, p2.anchorAy, p2.anchorBx, p2.anchorBy);
     F k12 = linear + c.invInertiaA * rn1A * rn2A + c.invInertiaB * rn1B * rn2B;
     F det = k11 * k22 - k12 * k12;
-    const I block = (count == 2) & (k11 * k11 < splat(kMaxBlockConditionNumber) * det);
+    const I block = (count == 2) & (k11 * k11 < splat(kMaxBlockConditionNumber) * det) &
+                    (det >= splat(kMinBlockDeterminant));
     F invDet = one / select(block, det, one);
     // Other lanes hold K = identity; empty lanes count as block lanes (see WideConstraintT).
     c.k11 = select(block, k11, one);

@@ -549,6 +549,50 @@ TEST(ClassicBlock, ConditionGuardAtTheThreshold) {
     EXPECT_FALSE(blockFor(0.01f));
 }
 
+TEST(ClassicBlock, UnderflowingDeterminantIsNotABlock) {
+    // A body that cannot translate (both axes locked) with 2.7e15 kg m^2 of inertia, on static
+    // ground at two points 445 m below its centre, 3.4 mm and 62 mm to either side (a 1000 m
+    // box of density 1000 the fuzzer locked): K = i [rn1^2, rn1 rn2; rn1 rn2, rn2^2], entries
+    // 1e-21 to 1e-18, rank one. det K underflowed into denormals, passed the condition guard
+    // as rounding garbage, and 1 / det made the inverse infinite: NaN velocities.
+    auto sunkenGiant = [] {
+        Manifold m;
+        m.normal = {0.0f, 1.0f};
+        m.pointCount = 2;
+        const float side[2] = {0.0034f, -0.062f};
+        for (int i = 0; i < 2; ++i) {
+            ManifoldPoint& mp = m.points[i];
+            mp.point = {side[i], 0.0f};
+            mp.anchorA = mp.point;
+            mp.anchorB = mp.point - Vec2{0.0f, 445.0f};
+            mp.separation = -1.0f;
+            mp.id = static_cast<std::uint16_t>(i);
+        }
+        // 1 m deep: the soft step pushes both points out; the spin brings the second one in.
+        ContactBodyView body{{0.0f, 0.0f}, {0.0f, 0.0f}, 10.0f, {0.0f, 0.0f}, 3.75e-16f, 0};
+        std::vector<ContactConstraint> cs(1);
+        prepareContact(cs[0], m, {}, body, {0.5f, 0.0f, 0.0f}, makeSoftness(30.0f, 10.0f, kDt));
+        return cs;
+    };
+    for (int classic = 0; classic < 2; ++classic) {
+        std::vector<ContactConstraint> cs = sunkenGiant();
+        EXPECT_FALSE(cs[0].blockSolve) << classic;
+        std::vector<BodyState> states(1);
+        states[0].angularVelocity = 10.0f;
+        if (classic != 0) {
+            prepareClassic(cs, 1.0f);
+            warmStartContacts(cs, states);
+            solveVelocitiesClassic(cs, states, 1.0f / kDt);
+        } else {
+            warmStartContacts(cs, states);
+            solveContacts(cs, states, 1.0f / kDt, true, 3.0f);
+        }
+        EXPECT_TRUE(std::isfinite(states[0].angularVelocity)) << classic;
+        EXPECT_EQ(states[0].linearVelocity, Vec2(0.0f, 0.0f)) << classic;
+        EXPECT_TRUE(std::isfinite(cs[0].points[0].normalImpulse)) << classic;
+    }
+}
+
 TEST(IntegrateRotation, AHugeAngleTurnsExactlyInsteadOfCollapsing) {
     // The first-order step q + da perp(q) overflows for a huge da; renormalising that used to
     // give q = (0, 0), a finite rotation nothing reports.

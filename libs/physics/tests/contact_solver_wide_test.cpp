@@ -287,13 +287,41 @@ TEST(WideContactSolver, PreparesGroupsAsPrepareContactDoes) {
         stuck.b.invMass = {0.0f, 0.0f};
         stuck.b.invInertia = 0.0f;
         p.inputs[3].a.invInertia = 0.0f;
-        for (std::size_t k = 0; k < 4; ++k) {
+        // A pinned speck (position locked, tiny inertia) deep inside a body 1e16 times
+        // heavier: the rounding term of the effective masses (kLeverRounding2) is what counts
+        // there, one point with its normal through the speck's centre, one beside it.
+        for (std::size_t k : {4u, 5u}) {
+            PrepareInput& speck = p.inputs[k];
+            speck.a.invMass = {0.0f, 0.0f};
+            speck.a.invInertia = 2.4e13f;
+            speck.b.invMass = {1.0e-9f, 1.0e-9f};
+            speck.b.invInertia = 2.3e-15f;
+            Manifold& m = speck.manifold;
+            m.pointCount = k == 4 ? 1 : 2;
+            m.points[0].anchorA = -180.0f * m.normal;
+            m.points[0].anchorB = -400.0f * m.normal;
+            m.points[1].anchorA = m.points[0].anchorA + 0.001f * rightPerp(m.normal);
+            m.points[1].anchorB = m.points[0].anchorB + 0.001f * rightPerp(m.normal);
+        }
+        // A body that cannot translate, 2.7e15 kg m^2 of inertia, against a static side at two
+        // points: K ~ 1e-21..1e-18 and det K underflows (kMinBlockDeterminant): no block.
+        PrepareInput& giant = p.inputs[6];
+        giant.a = ContactBodyView{};
+        giant.b.invMass = {0.0f, 0.0f};
+        giant.b.invInertia = 3.75e-16f;
+        giant.manifold.pointCount = 2;
+        giant.manifold.normal = {0.0f, 1.0f};
+        giant.manifold.points[0].anchorB = {0.0034f, -445.0f};
+        giant.manifold.points[1].anchorB = {-0.062f, -445.0f};
+        for (std::size_t k = 0; k < 7; ++k) {
             const PrepareInput& in = p.inputs[k];
             prepareContact(p.constraints[k], in.manifold, in.a, in.b, {in.friction, 0.0f, 0.0f},
                            in.softness);
         }
         ASSERT_FALSE(p.constraints[0].blockSolve);
         ASSERT_EQ(p.constraints[2].points[0].normalMass, 0.0f);
+        ASSERT_LT(p.constraints[4].points[0].normalMass, 1.0e-5f);
+        ASSERT_FALSE(p.constraints[6].blockSolve);
         const Schedule schedule = scheduleOf(p);
         SCOPED_TRACE(seed);
         expectSameGroups<4>(p, schedule);

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <limits>
 
 namespace e2d::physics::test {
@@ -255,6 +256,73 @@ TEST(WorldStep, HugeSpinKeepsAUnitRotation) {
         // Capped at a quarter turn per integration step: (pi / 2) / h.
         float h = mode == SolverMode::SoftStep ? kStep / 4.0f : kStep;
         EXPECT_NEAR(world.angularVelocity(spinner), 0.5f * 3.14159265f / h, 1e-2f);
+    }
+}
+
+TEST(WorldStep, PinnedSpeckInsideAHugeBodyStaysFinite) {
+    // A 2 mm circle, locked in x and y but free to spin, deep inside a spinning 960 m circle
+    // 1e16 times heavier: both in the fuzzer's ranges. Their contact normal passes through the
+    // speck's centre to the last bit, so its rotation was left out of the normal's effective
+    // mass, which the huge body alone set; the rounding in cross(rA, p) of that impulse (rA:
+    // the ~180 m from the speck to the middle of the overlap) then spun the speck by 1e18
+    // rad/s, and both bodies went non-finite (the fuzzer found it). Found by a random search of
+    // such scenes; each case failed within a few steps.
+    struct Case {
+        SolverMode mode;
+        Vec2 pin;         // the speck's body origin
+        Vec2 offset;      // its circle's centre, local
+        float spin;       // its angular velocity, rad/s
+        float depth;      // how deep it lies inside the huge circle, metres
+        float direction;  // from the speck to the huge circle's centre, radians
+        float speed;      // the huge body's speed towards the speck, m/s
+        float hugeSpin;   // the huge body's angular velocity, rad/s
+    };
+    const Case cases[] = {
+        {SolverMode::SoftStep, {5.95277691f, -9.36087608f}, {0.00075999659f, 0.000869744457f},
+         65.0879211f, 362.536804f, 3.25049019f, 469.255219f, -22.9791737f},
+        {SolverMode::SoftStep, {-5.13361883f, -3.16447449f}, {-0.000310487521f, 0.000338362763f},
+         -138.414307f, 304.808533f, 1.68463409f, 334.679077f, 32.7662354f},
+        {SolverMode::SoftStep, {-4.03797436f, -2.90747738f}, {-0.000679377583f, 0.000582433422f},
+         -53.1849213f, 350.797729f, 5.60484076f, 92.1571274f, -37.1915855f},
+        {SolverMode::Classic, {4.47270775f, 0.862781525f}, {0.000245522358f, 0.000161634642f},
+         -11.8714752f, 270.34433f, 0.401989043f, 56.6076355f, -26.0926952f},
+        {SolverMode::Classic, {-5.16437483f, 4.7872057f}, {-0.000201998278f, 0.000188973383f},
+         -148.506439f, 239.620209f, 0.781189263f, 482.195984f, -31.4690876f},
+    };
+    for (std::size_t k = 0; k < std::size(cases); ++k) {
+        const Case& c = cases[k];
+        WorldDef def;
+        def.gravity = {0.0f, 0.0f};
+        def.solver.mode = c.mode;
+        World world{def};
+        BodyDef pd;
+        pd.type = BodyType::Dynamic;
+        pd.position = c.pin;
+        pd.angularVelocity = c.spin;
+        pd.lockX = true;
+        pd.lockY = true;
+        BodyId speck = world.createBody(pd);
+        ShapeDef sd;
+        sd.density = 0.002f;
+        sd.friction = 0.9f;
+        world.createShape(speck, sd, Circle{c.offset, 0.002f});
+        Vec2 dir{std::cos(c.direction), std::sin(c.direction)};
+        BodyDef hd;
+        hd.type = BodyType::Dynamic;
+        hd.position = c.pin + (960.0f - c.depth) * dir;
+        hd.linearVelocity = -c.speed * dir;
+        hd.angularVelocity = c.hugeSpin;
+        BodyId huge = world.createBody(hd);
+        sd.density = 300.0f;
+        world.createShape(huge, sd, Circle{{0.0f, 0.0f}, 960.0f});
+        int nonFiniteAt = -1;
+        for (int i = 0; i < 30 && nonFiniteAt < 0; ++i) {
+            world.step(kStep);
+            nonFiniteAt = world.nonFiniteBodies().empty() ? -1 : i;
+        }
+        EXPECT_EQ(nonFiniteAt, -1) << "case " << k;
+        EXPECT_TRUE(world.isBodyEnabled(speck) && world.isBodyEnabled(huge)) << "case " << k;
+        EXPECT_EQ(world.linearVelocity(speck), Vec2(0.0f, 0.0f)) << "case " << k;
     }
 }
 
