@@ -209,21 +209,6 @@ TEST(WorldSolver, SleepToleranceIsTheWorlds) {
     }
 }
 
-// A hash of the bodies' transforms, bit for bit.
-std::uint64_t transformsHash(const World& world, const std::vector<BodyId>& bodies) {
-    std::uint64_t h = 1469598103934665603ull;
-    for (BodyId id : bodies) {
-        Transform xf = world.transform(id);
-        float values[4] = {xf.p.x, xf.p.y, xf.q.c, xf.q.s};
-        std::uint32_t bits[4];
-        std::memcpy(bits, values, sizeof(bits));
-        for (std::uint32_t b : bits) {
-            h = (h ^ b) * 1099511628211ull;
-        }
-    }
-    return h;
-}
-
 // A random pile stepped n times in a world of the given mode; a hash of the final transforms.
 std::uint64_t pileHash(SolverMode mode, int steps) {
     WorldDef def;

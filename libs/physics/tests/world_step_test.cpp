@@ -492,20 +492,6 @@ TEST(WorldStep, HitEventReportsApproachSpeed) {
     EXPECT_TRUE(hit);
 }
 
-std::uint64_t hashState(const World& world, const std::vector<BodyId>& bodies) {
-    std::uint64_t h = 1469598103934665603ull;
-    for (BodyId id : bodies) {
-        Transform xf = world.transform(id);
-        float values[4] = {xf.p.x, xf.p.y, xf.q.c, xf.q.s};
-        std::uint32_t bits[4];
-        std::memcpy(bits, values, sizeof(bits));
-        for (std::uint32_t b : bits) {
-            h = (h ^ b) * 1099511628211ull;
-        }
-    }
-    return h;
-}
-
 std::uint64_t runPile() {
     World world;
     addGround(world);
@@ -523,7 +509,7 @@ std::uint64_t runPile() {
     for (int i = 0; i < 1000; ++i) {
         world.step(kStep);
     }
-    return hashState(world, bodies);
+    return transformsHash(world, bodies);
 }
 
 TEST(WorldStep, DeterministicAcrossRuns) {

@@ -7,8 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstring>
 #include <random>
 #include <string>
+#include <vector>
 
 // Helpers shared by the world_*_test.cpp files.
 namespace e2d::physics::test {
@@ -44,5 +46,20 @@ public:
 private:
     std::mt19937 engine_;
 };
+
+/// A hash of the bodies' transforms, bit for bit (FNV-1a over the four floats' bits).
+inline std::uint64_t transformsHash(const World& world, const std::vector<BodyId>& bodies) {
+    std::uint64_t h = 1469598103934665603ull;
+    for (BodyId id : bodies) {
+        Transform xf = world.transform(id);
+        float values[4] = {xf.p.x, xf.p.y, xf.q.c, xf.q.s};
+        std::uint32_t bits[4];
+        std::memcpy(bits, values, sizeof(bits));
+        for (std::uint32_t b : bits) {
+            h = (h ^ b) * 1099511628211ull;
+        }
+    }
+    return h;
+}
 
 } // namespace e2d::physics::test
