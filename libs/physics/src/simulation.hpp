@@ -118,13 +118,12 @@ struct Simulation {
         float speed = 0.0f;
     };
     std::vector<HitCandidate> hitCandidates;
-    // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), its
-    // slot in level order (level k holds slots [levelStart[k], levelStart[k + 1]), contact
-    // order within a level), the constraint in each slot with its contact and bodies, and the
-    // packed constraints.
+    // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), the
+    // slots in level order (level k holds slots [levelStart[k], levelStart[k + 1]), contact
+    // order within a level) with each slot's constraint, contact and bodies, and the packed
+    // constraints.
     ConstraintLevels levels;
     std::vector<int> constraintLevel;
-    std::vector<int> constraintSlot;
     std::vector<int> slotConstraint;
     std::vector<int> slotContact;
     std::vector<ConstraintBodies> slotBodies;

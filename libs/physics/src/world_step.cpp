@@ -130,15 +130,14 @@ void World::Impl::scheduleWide(int constraintCount) {
         s.levelStart[static_cast<std::size_t>(k) + 1] += s.levelStart[static_cast<std::size_t>(k)];
     }
     s.levelNext.assign(s.levelStart.begin(), s.levelStart.end() - 1);
-    // Slot order is the order the solver builds and stores in: its contacts and bodies by
-    // slot, so those passes read them in order.
-    s.constraintSlot.resize(count);
+    // Each constraint's slot (level k holds slots [levelStart[k], levelStart[k + 1]), contact
+    // order within a level). Slot order is the order the solver builds and stores in: the
+    // constraint, contact and bodies of each slot, so those passes read them in order.
     s.slotConstraint.resize(count);
     s.slotContact.resize(count);
     s.slotBodies.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
         const auto slot = static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])]++);
-        s.constraintSlot[k] = static_cast<int>(slot);
         s.slotConstraint[slot] = static_cast<int>(k);
         s.slotContact[slot] = s.constraintContacts[k];
         s.slotBodies[slot] = s.constraintBodies[k];
