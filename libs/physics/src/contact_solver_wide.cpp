@@ -3,6 +3,7 @@
 
 #include <bit>
 #include <cstddef>
+#include <cstdlib>
 #include <cstring>
 
 #if defined(__x86_64__)
@@ -359,9 +360,11 @@ void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<8>& in)
 #if defined(E2D_HAS_WIDE8)
     lanes8::prepareGroup(in, wide.constraints8[static_cast<std::size_t>(group)]);
 #else
+    // Unreachable: without AVX2 kernels layoutWide() never makes eight-lane groups.
     (void)wide;
     (void)group;
     (void)in;
+    std::abort();
 #endif
 }
 
