@@ -658,11 +658,7 @@ TEST(SoftStep, TouchingPairIsSolvedAsABlockWithoutOrderBias) {
     EXPECT_FLOAT_EQ(c.blockK.a12, -0.5f);
     const float invH = 4.0f / kDt;
 
-    const SolvedBothOrders solved = solveBothPointOrders(c, invH);
-    const std::vector<ContactConstraint>& forward = solved.forward;
-    const std::vector<BodyState>& forwardState = solved.forwardState;
-    const std::vector<ContactConstraint>& reversed = solved.reversed;
-    const std::vector<BodyState>& reversedState = solved.reversedState;
+    const auto [forward, forwardState, reversed, reversedState] = solveBothPointOrders(c, invH);
 
     const float s = softness.vsStatic.massScale;
     EXPECT_FLOAT_EQ(forward[0].points[0].normalImpulse, 1.5f * s);
@@ -697,11 +693,7 @@ TEST(SoftStep, PointByPointReversedOrderMirrorsTheOrderBias) {
     c.blockSolve = false;
     const float invH = 4.0f / kDt;
 
-    const SolvedBothOrders solved = solveBothPointOrders(c, invH);
-    const std::vector<ContactConstraint>& forward = solved.forward;
-    const std::vector<BodyState>& forwardState = solved.forwardState;
-    const std::vector<ContactConstraint>& reversed = solved.reversed;
-    const std::vector<BodyState>& reversedState = solved.reversedState;
+    const auto [forward, forwardState, reversed, reversedState] = solveBothPointOrders(c, invH);
 
     const float s = softness.vsStatic.massScale;
     const float p0 = 0.4f * s * 3.0f;
