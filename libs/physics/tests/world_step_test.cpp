@@ -396,6 +396,30 @@ TEST(WorldStep, SleepingBodyWakesWhenHitOrWhenItsSupportGoes) {
     EXPECT_LT(world.linearVelocity(box).y, 0.0f);
 }
 
+TEST(WorldStep, AStackWokenByAHitIsSolvedWholeInThatStep) {
+    // The stack's own contacts come first in contact order, and the narrow phase passes them
+    // while both their bodies still sleep; the falling box's contact, later, wakes the stack.
+    // The solver must still get all three contacts in that step, not only the waking one.
+    World world;
+    addGround(world);
+    BodyId lower = addBox(world, {0.0f, 0.5f}, 0.5f);
+    BodyId upper = addBox(world, {0.0f, 1.5f}, 0.5f);
+    for (int i = 0; i < 120; ++i) {
+        world.step(kStep);
+    }
+    ASSERT_FALSE(world.isAwake(lower));
+    ASSERT_FALSE(world.isAwake(upper));
+    addBox(world, {0.0f, 4.0f}, 0.5f);
+    int step = 0;
+    while (!world.isAwake(lower) && step < 120) {
+        world.step(kStep);
+        ++step;
+    }
+    ASSERT_TRUE(world.isAwake(lower));
+    EXPECT_EQ(world.stepCounters().contactConstraints, 3);
+    EXPECT_GT(world.transform(lower).p.y, 0.49f); // held up by the ground in that step
+}
+
 TEST(WorldStep, SetTransformWakes) {
     World world;
     addGround(world);
