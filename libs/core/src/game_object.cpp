@@ -5,6 +5,8 @@
 #include <e2d/core/log.hpp>
 #include <e2d/core/scene.hpp>
 
+#include "format.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -153,7 +155,7 @@ void GameObject::detachFromParent() noexcept {
 void GameObject::warnRefusedUnique(const std::type_info& type) const {
     if (Logger* log = logger()) {
         log->warning(std::string("core::GameObject::addComponent(): object ") + std::to_string(id_.index) +
-                     " already has a unique component of type " + type.name() + ", the new one is refused");
+                     " already has a unique component of type " + detail::demangledName(type) + ", the new one is refused");
     }
 }
 

@@ -4,6 +4,8 @@
 #include <e2d/core/error.hpp>
 #include <e2d/core/scene_host.hpp>
 
+#include "format.hpp"
+
 #include <algorithm>
 #include <string>
 
@@ -95,6 +97,11 @@ SceneHost& Scene::requireHost(const char* function) const {
         throw Error(std::string("core::Scene::") + function + "(): the scene has no host attached");
     }
     return *host_;
+}
+
+void Scene::throwNoSystem(const std::type_info& type) {
+    throw Error(std::string("core::Scene::system(): no system of type ") + detail::demangledName(type) +
+                " is registered with the scene's host");
 }
 
 void Scene::changeToScene(std::string_view name) {

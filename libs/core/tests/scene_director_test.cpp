@@ -160,6 +160,28 @@ TEST_F(SceneDirectorTest, HostServices) {
 }
 
 TEST_F(SceneDirectorTest, SystemsAreRegisteredOnce) {
-    EXPECT_THAT(director.systems(), ElementsAre(&system));
+    EXPECT_THAT(std::vector<System*>(director.systems().begin(), director.systems().end()), ElementsAre(&system));
     EXPECT_THROW(director.addSystem(system), e2d::core::Error);
+}
+
+namespace {
+class OtherSystem : public System {};
+} // namespace
+
+TEST_F(SceneDirectorTest, ScenesFindTheirSystemsByType) {
+    director.start("Menu");
+    Scene& scene = *director.scene();
+    EXPECT_EQ(scene.findSystem<ClearCounter>(), &system);
+    EXPECT_EQ(&scene.system<ClearCounter>(), &system);
+    EXPECT_EQ(scene.findSystem<OtherSystem>(), nullptr);
+    try {
+        static_cast<void>(scene.system<OtherSystem>());
+        FAIL() << "system<OtherSystem>() did not throw";
+    } catch (const e2d::core::Error& error) {
+        EXPECT_THAT(error.what(), HasSubstr("core::Scene::system(): no system of type"));
+        EXPECT_THAT(error.what(), HasSubstr("OtherSystem"));
+    }
+    Scene hostless;
+    EXPECT_EQ(hostless.findSystem<ClearCounter>(), nullptr);
+    EXPECT_THROW(static_cast<void>(hostless.system<ClearCounter>()), e2d::core::Error);
 }

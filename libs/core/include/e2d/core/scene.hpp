@@ -3,6 +3,8 @@
 
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/game_object_id.hpp>
+#include <e2d/core/scene_host.hpp>
+#include <e2d/core/system.hpp>
 
 #include <glm/vec2.hpp>
 
@@ -10,12 +12,12 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <typeinfo>
 #include <vector>
 
 namespace e2d::core {
 
 class Logger;
-class SceneHost;
 
 /// A level, menu or screen: a set of game objects plus the scene's own event handlers.
 ///
@@ -64,6 +66,16 @@ public:
     [[nodiscard]] const std::string& name() const noexcept { return name_; }
     /// The host's logger, or nullptr without a host.
     [[nodiscard]] Logger* logger() const noexcept;
+
+    /// The first system of the host that is a T (for example `physics::PhysicsSystem`), or
+    /// nullptr when there is none or no host. This is how components reach their subsystem:
+    /// a component is created with its def alone and looks its system up when it starts.
+    template <class T>
+    [[nodiscard]] T* findSystem() const noexcept;
+    /// Same, but throws core::Error naming the type when there is no such system (or no
+    /// host): `"core::Scene::system(): no system of type X is registered with the scene's host"`.
+    template <class T>
+    [[nodiscard]] T& system() const;
 
     /// Asks the host to switch to the scene registered as `name` at the start of the next
     /// frame. This and the methods below throw core::Error when no host is attached.
@@ -142,6 +154,7 @@ private:
     template <class SceneHandler, class ComponentHandler>
     void broadcast(SceneHandler&& sceneHandler, ComponentHandler&& componentHandler);
     SceneHost& requireHost(const char* function) const;
+    [[noreturn]] static void throwNoSystem(const std::type_info& type);
     void destroyPending();
     void freeSlot(GameObject& object);
 
@@ -155,5 +168,27 @@ private:
     std::vector<GameObject*> componentChanges_; // objects with queued component changes
     int dispatchDepth_ = 0;
 };
+
+template <class T>
+T* Scene::findSystem() const noexcept {
+    static_assert(std::is_base_of_v<System, T>, "Scene::findSystem<T>: T must derive from core::System");
+    if (host_ == nullptr) {
+        return nullptr;
+    }
+    for (System* system : host_->systems()) {
+        if (auto* typed = dynamic_cast<T*>(system)) {
+            return typed;
+        }
+    }
+    return nullptr;
+}
+
+template <class T>
+T& Scene::system() const {
+    if (T* found = findSystem<T>()) {
+        return *found;
+    }
+    throwNoSystem(typeid(T));
+}
 
 } // namespace e2d::core

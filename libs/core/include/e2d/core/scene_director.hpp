@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,7 +41,7 @@ public:
     /// drives the registered systems in registration order. Throws core::Error if it is
     /// already registered.
     void addSystem(System& system);
-    [[nodiscard]] const std::vector<System*>& systems() const noexcept { return systems_; }
+    [[nodiscard]] std::span<System* const> systems() const override { return systems_; }
 
     /// Switches to `name` immediately (terminating the current scene, if any). Returns false
     /// and logs an error for an unknown name, keeping the current scene.

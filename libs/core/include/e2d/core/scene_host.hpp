@@ -3,11 +3,13 @@
 
 #include <glm/vec2.hpp>
 
+#include <span>
 #include <string_view>
 
 namespace e2d::core {
 
 class Logger;
+class System;
 
 /// What a Scene needs from whatever runs it (in place of the seed's global Game).
 /// Implemented by SceneDirector; tests can implement it directly.
@@ -26,6 +28,9 @@ public:
     [[nodiscard]] virtual glm::ivec2 referenceWindowSize() const = 0;
     /// The game's logger.
     [[nodiscard]] virtual Logger& logger() = 0;
+    /// The systems running the scene (physics, renderer, mixer, input, ...), which components
+    /// find through `Scene::system<T>()`. None by default.
+    [[nodiscard]] virtual std::span<System* const> systems() const { return {}; }
 
 protected:
     SceneHost() = default;
