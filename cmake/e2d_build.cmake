@@ -121,3 +121,24 @@ function(e2d_write_package_files)
   install(FILES "${PROJECT_BINARY_DIR}/package/e2dConfig.cmake"
     "${PROJECT_BINARY_DIR}/package/e2dConfigVersion.cmake" DESTINATION ${E2D_PACKAGE_DIR})
 endfunction()
+
+# e2d_add_fuzzers(<lib> <name>...): libFuzzer targets <name> from <name>.cpp in the calling
+# folder (libs/<lib>/fuzz/), linking e2d::<lib>. The library itself is instrumented for coverage
+# and checked by ASan + UBSan; only the fuzz executables link the fuzzer runtime. Called only
+# when E2D_BUILD_FUZZ is ON (the `fuzz` preset); scripts/test.sh runs every fuzz_* it finds
+# under build/fuzz/libs/<lib>/fuzz/ with seeds from libs/<lib>/fuzz/corpus/<name>/.
+function(e2d_add_fuzzers lib)
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    message(FATAL_ERROR "E2D_BUILD_FUZZ needs clang (libFuzzer), got ${CMAKE_CXX_COMPILER_ID}")
+  endif()
+  set(sanitizers address,undefined)
+  target_compile_options(e2d_${lib} PRIVATE
+    -fsanitize=fuzzer-no-link,${sanitizers} -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  foreach(name IN LISTS ARGN)
+    add_executable(${name} ${name}.cpp)
+    target_link_libraries(${name} PRIVATE e2d::${lib} e2d_warnings)
+    target_compile_options(${name} PRIVATE
+      -fsanitize=fuzzer,${sanitizers} -fno-sanitize-recover=all -fno-omit-frame-pointer)
+    target_link_options(${name} PRIVATE -fsanitize=fuzzer,${sanitizers})
+  endforeach()
+endfunction()

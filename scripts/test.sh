@@ -59,12 +59,15 @@ ctest_stage "asan+ubsan" asan
 
 echo "=== fuzz: libFuzzer targets, ${fuzz_seconds}s each"
 if cmake --preset fuzz >"$logs/fuzz-configure.log" 2>&1 && cmake --build --preset fuzz >"$logs/fuzz-build.log" 2>&1; then
-  for fuzzer in "$root"/build/fuzz/libs/physics/fuzz/fuzz_*; do
-    [ -x "$fuzzer" ] || continue
+  # Every library's fuzzers: build/fuzz/libs/<lib>/fuzz/fuzz_<name>, seeds in
+  # libs/<lib>/fuzz/corpus/fuzz_<name>/ (replayed every run).
+  for fuzzer in "$root"/build/fuzz/libs/*/fuzz/fuzz_*; do
+    [ -f "$fuzzer" ] && [ -x "$fuzzer" ] || continue
     target=$(basename "$fuzzer")
+    lib=$(basename "$(dirname "$(dirname "$fuzzer")")")
     corpus="$root/build/fuzz/corpus/$target"
     mkdir -p "$corpus"
-    seeds="$root/libs/physics/fuzz/corpus/$target"
+    seeds="$root/libs/$lib/fuzz/corpus/$target"
     [ -d "$seeds" ] || seeds=""
     if "$fuzzer" -max_total_time="$fuzz_seconds" -print_final_stats=1 \
          -artifact_prefix="$logs/$target-" "$corpus" $seeds >"$logs/$target.log" 2>&1; then
