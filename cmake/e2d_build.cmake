@@ -69,14 +69,16 @@ function(e2d_add_library name)
     FILE e2d_${name}_targets.cmake DESTINATION ${E2D_PACKAGE_DIR})
 endfunction()
 
-# e2d_add_tests(<lib> SOURCES ... [SUFFIX name] [LIBRARIES ...] [LABEL label])
+# e2d_add_tests(<lib> SOURCES ... [SUFFIX name] [LIBRARIES ...] [LABEL label] [NEEDS_DISPLAY])
 # One GoogleTest executable per library (e2d_<lib>_tests, or e2d_<lib>_<suffix>_tests), linking
 # only that library; every test is a CTest test labelled with the library's name (or LABEL).
+# NEEDS_DISPLAY: the tests open windows, so CTest runs them through scripts/with-display.sh
+# (a private Xvfb when DISPLAY is not set).
 function(e2d_add_tests lib)
   if(NOT E2D_BUILD_TESTS)
     return()
   endif()
-  cmake_parse_arguments(ARG "" "SUFFIX;LABEL" "SOURCES;LIBRARIES" ${ARGN})
+  cmake_parse_arguments(ARG "NEEDS_DISPLAY" "SUFFIX;LABEL" "SOURCES;LIBRARIES" ${ARGN})
   set(target e2d_${lib}_tests)
   if(ARG_SUFFIX)
     set(target e2d_${lib}_${ARG_SUFFIX}_tests)
@@ -90,6 +92,11 @@ function(e2d_add_tests lib)
   set(label ${lib})
   if(ARG_LABEL)
     set(label ${ARG_LABEL})
+  endif()
+  if(ARG_NEEDS_DISPLAY)
+    # gtest_discover_tests runs the listing and every test through the emulator.
+    set_target_properties(${target} PROPERTIES
+      CROSSCOMPILING_EMULATOR "${PROJECT_SOURCE_DIR}/scripts/with-display.sh")
   endif()
   gtest_discover_tests(${target}
     DISCOVERY_MODE PRE_TEST
