@@ -130,11 +130,16 @@ void solveSoftStep(const SolverStep& step) {
         // coupling with the sweep direction: base-70 pyramids then drift 5x more.
         bool backward = (i % 2) == 1;
         bool reversePoints = ((i / 2) % 2) == 1;
+        // Joints go before the contacts in each pass (Box2D v3's order): the contacts, solved
+        // last, win where the two disagree.
+        warmStartJoints(step.joints, step.jointOrder, step.states);
         warmStartContacts(step.constraints, step.states);
+        solveJoints(step.joints, step.jointOrder, step.states, step.jointStep, true);
         solveContacts(step.constraints, step.states, invH, true, def.contactPushMaxSpeed,
                       backward, reversePoints);
         integratePositions(step.states, h);
         for (int r = 0; r <= def.relaxIterations; ++r) {
+            solveJoints(step.joints, step.jointOrder, step.states, step.jointStep, false);
             solveContacts(step.constraints, step.states, invH, false, def.contactPushMaxSpeed,
                           backward, reversePoints);
         }
@@ -143,7 +148,8 @@ void solveSoftStep(const SolverStep& step) {
 }
 
 void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLevel, int endLevel,
-                        std::span<const int> bodies, std::span<const WideRestitution> restitution) {
+                        std::span<const int> bodies, std::span<const WideRestitution> restitution,
+                        std::span<const int> blockJoints) {
     const SolverDef& def = *step.def;
     float h = step.dt / static_cast<float>(def.subSteps);
     float invH = 1.0f / h;
@@ -152,11 +158,14 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
         integrateVelocities(step.sims, step.states, bodies, step.gravity, h, def.maxLinearSpeed);
         bool backward = (i % 2) == 1;
         bool reversePoints = ((i / 2) % 2) == 1;
+        warmStartJoints(step.joints, blockJoints, step.states);
         warmStartWide(wide, firstLevel, endLevel, step.states);
+        solveJoints(step.joints, blockJoints, step.states, step.jointStep, true);
         solveWide(wide, firstLevel, endLevel, step.states, invH, true, def.contactPushMaxSpeed,
                   backward, reversePoints);
         integratePositions(step.states, bodies, h);
         for (int r = 0; r <= def.relaxIterations; ++r) {
+            solveJoints(step.joints, blockJoints, step.states, step.jointStep, false);
             solveWide(wide, firstLevel, endLevel, step.states, invH, false,
                       def.contactPushMaxSpeed, backward, reversePoints);
         }
@@ -169,8 +178,12 @@ void solveClassic(const SolverStep& step) {
     float invDt = 1.0f / step.dt;
     integrateVelocities(step.sims, step.states, step.gravity, step.dt, def.maxLinearSpeed);
     prepareClassic(step.constraints, def.restitutionThreshold);
+    warmStartJoints(step.joints, step.jointOrder, step.states);
     warmStartContacts(step.constraints, step.states);
     for (int i = 0; i < def.velocityIterations; ++i) {
+        // Joints correct their position error through a soft velocity bias (Box2D v3's joint
+        // softness at the step rate) rather than position iterations.
+        solveJoints(step.joints, step.jointOrder, step.states, step.jointStep, true);
         solveVelocitiesClassic(step.constraints, step.states, invDt);
     }
     applyRestitution(step.constraints, step.states, def.restitutionThreshold, step.dt);

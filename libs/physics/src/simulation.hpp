@@ -150,6 +150,15 @@ struct Simulation {
     std::vector<int> lastConstraintContacts;
     std::vector<ConstraintBodies> lastConstraintBodies;
     std::vector<unsigned char> lastStateRigid;
+    // Joints this step (World::Impl::prepareJoints()): the world's joint slots with a moving
+    // side, in slot order, and their sides' BodyState indices (-1: static or asleep); last
+    // solve's, for the wide schedule's check; the wide solver's joints by block: block b's are
+    // blockJoints[blockJointStart[b] .. blockJointStart[b + 1]), slot order within a block.
+    std::vector<int> activeJoints;
+    std::vector<ConstraintBodies> jointBodies;
+    std::vector<ConstraintBodies> lastJointBodies;
+    std::vector<int> blockJointStart;
+    std::vector<int> blockJoints;
     std::vector<int> islandParent; // union-find over the awake arrays
     std::vector<float> islandSleepTime;
     std::vector<int> wakeStack;

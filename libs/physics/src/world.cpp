@@ -33,6 +33,9 @@ void validateWorldDef(const WorldDef& def) {
     if (def.bodyCapacity < 0) {
         check::fail(fn, "def.bodyCapacity must be >= 0, got " + std::to_string(def.bodyCapacity));
     }
+    if (def.jointCapacity < 0) {
+        check::fail(fn, "def.jointCapacity must be >= 0, got " + std::to_string(def.jointCapacity));
+    }
     if (def.shapeCapacity < 0) {
         check::fail(fn,
                     "def.shapeCapacity must be >= 0, got " + std::to_string(def.shapeCapacity));
@@ -141,7 +144,12 @@ bool World::Impl::shouldPair(int shapeA, int shapeB) const {
     if (body(a.body).type != BodyType::Dynamic && body(b.body).type != BodyType::Dynamic) {
         return false;
     }
-    return shouldCollide(a.filter, b.filter);
+    if (!shouldCollide(a.filter, b.filter)) {
+        return false;
+    }
+    const int jointsA = body(a.body).jointHead;
+    return jointsA == kNullIndex || body(b.body).jointHead == kNullIndex ||
+           !jointBlocksCollision(a.body, b.body);
 }
 
 // --- World ---
@@ -158,6 +166,8 @@ World::World(const WorldDef& def) {
     impl_->bodyIds.reserve(def.bodyCapacity);
     impl_->shapes.reserve(static_cast<std::size_t>(def.shapeCapacity));
     impl_->shapeIds.reserve(def.shapeCapacity);
+    impl_->joints.reserve(static_cast<std::size_t>(def.jointCapacity));
+    impl_->jointIds.reserve(def.jointCapacity);
 }
 
 World::~World() = default;
@@ -199,6 +209,9 @@ BodyId World::createBody(const BodyDef& def) {
 void World::destroyBody(BodyId id) {
     Impl& w = *impl_;
     int index = w.require(id, "destroyBody");
+    while (w.body(index).jointHead != kNullIndex) {
+        w.destroyJointAt(w.body(index).jointHead);
+    }
     while (w.body(index).headShape != kNullIndex) {
         w.destroyShapeAt(w.body(index).headShape);
     }

@@ -5,6 +5,7 @@
 
 #include "broad_phase.hpp"
 #include "id_pool.hpp"
+#include "joint_solver.hpp"
 #include "simulation.hpp"
 
 #include <cstdint>
@@ -25,6 +26,8 @@ struct Body {
     // owns no heap memory of its own.
     int headShape = kNullIndex;
     int shapeCount = 0;
+    // Intrusive list of the body's joints (detail::Joint::next[side]).
+    int jointHead = kNullIndex;
     std::uint16_t generation = 1;
     BodyType type = BodyType::Static;
     bool enabled = true;
@@ -126,6 +129,37 @@ struct World::Impl {
     void scheduleWide(int constraintCount);
     void solveContinuous(int simIndex);
     void updateSleep(float dt);
+
+    // --- joints (joint.cpp, joint_step.cpp) ---
+
+    std::vector<detail::Joint> joints;
+    detail::IdPool jointIds;
+
+    [[nodiscard]] int find(JointId id) const {
+        if (id.index1 == 0 || id.index1 > joints.size()) {
+            return detail::kNullIndex;
+        }
+        const detail::Joint& j = joints[id.index1 - 1];
+        return j.alive && j.generation == id.generation ? static_cast<int>(id.index1 - 1) : detail::kNullIndex;
+    }
+    int require(JointId id, const char* function) const;
+    [[nodiscard]] JointId jointId(int index) const {
+        return {static_cast<std::uint32_t>(index) + 1, joints[static_cast<std::size_t>(index)].generation};
+    }
+    detail::Joint& joint(int index) { return joints[static_cast<std::size_t>(index)]; }
+    const detail::Joint& joint(int index) const { return joints[static_cast<std::size_t>(index)]; }
+    void destroyJointAt(int jointIndex);
+    // Whether a joint between the two bodies turns their collisions off.
+    [[nodiscard]] bool jointBlocksCollision(int bodyA, int bodyB) const;
+    // Wakes the sleeping dynamic side of every joint whose other side is awake (before solve()).
+    void wakeJointedBodies();
+    // The step's joints: s.activeJoints (joints with a moving side, in slot order), prepared,
+    // and s.jointBodies (their BodyState indices).
+    void prepareJoints(float dt, float h);
+    // The wide solver's joints by block (s.blockJointStart, s.blockJoints), after scheduleWide().
+    void assignJointBlocks();
+    // Reactions of the active joints from their impulses (invH: 1 / the sub-step).
+    void storeJointReactions(float invH);
 };
 
 } // namespace e2d::physics

@@ -76,7 +76,7 @@ void World::Impl::scheduleWide(int constraintCount) {
     for (std::size_t i = 0; i < n; ++i) {
         parent[i] = static_cast<int>(i);
     }
-    for (const detail::Simulation::ConstraintBodies& cb : s.constraintBodies) {
+    auto join = [&](const detail::Simulation::ConstraintBodies& cb) {
         if (cb.indexA >= 0 && cb.indexB >= 0) {
             int ra = detail::findRoot(parent, cb.indexA);
             int rb = detail::findRoot(parent, cb.indexB);
@@ -84,6 +84,14 @@ void World::Impl::scheduleWide(int constraintCount) {
                 parent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
             }
         }
+    };
+    for (const detail::Simulation::ConstraintBodies& cb : s.constraintBodies) {
+        join(cb);
+    }
+    // Jointed bodies share a block: a block runs all its sub-steps before the next one, so
+    // none of its bodies may be moved by another block's joints.
+    for (const detail::Simulation::ConstraintBodies& jb : s.jointBodies) {
+        join(jb);
     }
     s.islandConstraints.assign(n, 0);
     s.constraintIsland.resize(count);
@@ -182,6 +190,10 @@ void World::Impl::solve(float dt) {
     s.lastConstraintContacts.swap(s.constraintContacts);
     s.lastConstraintBodies.swap(s.constraintBodies);
     s.lastStateRigid.swap(s.stateRigid);
+    s.lastJointBodies.swap(s.jointBodies);
+    if (!joints.empty()) {
+        wakeJointedBodies();
+    }
     s.sims.clear();
     s.states.clear();
     s.stateRigid.clear();
@@ -222,6 +234,7 @@ void World::Impl::solve(float dt) {
         detail::clampVelocity(st.linearVelocity, st.angularVelocity, def.maxLinearSpeed, integrationStep);
     }
 
+    prepareJoints(dt, integrationStep);
     detail::ContactSoftness softness = detail::makeContactSoftness(def, dt);
     // A contact's side as prepareContact() sees it: body `bodyIndex`, `solverIndex` its place
     // in this step's arrays (kNullIndex: static or asleep, read from the body itself).
@@ -288,7 +301,8 @@ void World::Impl::solve(float dt) {
         static_assert(sizeof(detail::Simulation::ConstraintBodies) == 2 * sizeof(int));
         const bool same = s.wideScheduleValid && s.stateRigid == s.lastStateRigid &&
                           sameAsLast(s.constraintBodies, s.lastConstraintBodies) &&
-                          sameAsLast(s.constraintContacts, s.lastConstraintContacts);
+                          sameAsLast(s.constraintContacts, s.lastConstraintContacts) &&
+                          sameAsLast(s.jointBodies, s.lastJointBodies);
         if (!same) {
             // Each constraint's level (see ConstraintLevels): solving level by level is the
             // same sweep as solving in contact order, but the constraints of a level share no
@@ -303,6 +317,9 @@ void World::Impl::solve(float dt) {
                 s.constraintLevel.push_back(s.levels.assign(moving(cb.indexA), moving(cb.indexB)));
             }
             scheduleWide(constraintCount);
+        }
+        if (!s.activeJoints.empty()) {
+            assignJointBlocks();
         }
     }
     s.wideScheduleValid = wide;
@@ -349,7 +366,10 @@ void World::Impl::solve(float dt) {
         }
     };
 
-    detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def};
+    const detail::JointStep jointStep{
+        integrationStep, 1.0f / integrationStep,
+        detail::makeSoftness(detail::kJointHertz, detail::kJointDampingRatio, integrationStep)};
+    detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def, joints, s.activeJoints, jointStep};
     if (wide) {
         // Contacts are visited in slot order, twice a block: gathered before it is solved and
         // their impulses stored right after, while its lanes are in cache. A level's contacts
@@ -422,13 +442,21 @@ void World::Impl::solve(float dt) {
                 step, s.wideContacts, firstLevel, endLevel,
                 blockBodies.subspan(static_cast<std::size_t>(s.blockBodyStart[b]),
                                     static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b])),
-                s.wideRestitution);
+                s.wideRestitution,
+                s.activeJoints.empty()
+                    ? std::span<const int>{}
+                    : std::span<const int>(s.blockJoints)
+                          .subspan(static_cast<std::size_t>(s.blockJointStart[b]),
+                                   static_cast<std::size_t>(s.blockJointStart[b + 1] - s.blockJointStart[b])));
             detail::visitWide(s.wideContacts, s.levelStart, firstLevel, endLevel, storeLane);
         }
     } else if (def.mode == SolverMode::SoftStep) {
         detail::solveSoftStep(step);
     } else {
         detail::solveClassic(step);
+    }
+    if (!s.activeJoints.empty()) {
+        storeJointReactions(1.0f / integrationStep);
     }
     detail::finalizePositions(s.sims, s.states);
 

@@ -27,8 +27,18 @@ struct ShapeId {
     friend constexpr bool operator==(ShapeId, ShapeId) = default;
 };
 
+/// A joint between two bodies. Default-constructed: null.
+struct JointId {
+    std::uint32_t index1 = 0;     ///< slot index + 1; 0 means null
+    std::uint16_t generation = 0; ///< the slot's generation when the id was handed out
+
+    [[nodiscard]] constexpr bool isNull() const { return index1 == 0; }
+    friend constexpr bool operator==(JointId, JointId) = default;
+};
+
 /// The null handles.
 inline constexpr BodyId kNullBodyId{};
 inline constexpr ShapeId kNullShapeId{};
+inline constexpr JointId kNullJointId{};
 
 } // namespace e2d::physics

@@ -6,6 +6,7 @@
 #include <e2d/physics/function_ref.hpp>
 #include <e2d/physics/geometry.hpp>
 #include <e2d/physics/id.hpp>
+#include <e2d/physics/joint.hpp>
 #include <e2d/physics/manifold.hpp>
 #include <e2d/physics/math.hpp>
 #include <e2d/physics/query.hpp>
@@ -33,6 +34,8 @@ struct WorldDef {
     float speculativeDistance = kSpeculativeDistance;
     /// Bodies to reserve room for, >= 0. Default 0 (grow on demand).
     int bodyCapacity = 0;
+    /// Joints to reserve room for, >= 0. Default 0 (grow on demand).
+    int jointCapacity = 0;
     /// Shapes to reserve room for, >= 0. Default 0 (grow on demand).
     int shapeCapacity = 0;
 
@@ -192,6 +195,62 @@ public:
     [[nodiscard]] float shapeRollingResistance(ShapeId id) const;
     [[nodiscard]] std::uint64_t shapeUserData(ShapeId id) const;
     void setShapeUserData(ShapeId id, std::uint64_t userData);
+
+    // --- joints (joint.hpp; joint.cpp) ---
+
+    /// A new joint between the def's two bodies (live, different, at least one dynamic), which
+    /// are woken. Unless def.collideConnected, their shapes stop colliding with each other (a
+    /// contact between them ends now). Throws core::Error naming the invalid field of `def`.
+    JointId createJoint(const JointDef& def);
+    /// Destroys the joint and wakes its bodies. destroyBody() destroys the body's joints.
+    void destroyJoint(JointId id);
+    /// Whether `id` names a live joint of this world.
+    [[nodiscard]] bool isValid(JointId id) const;
+    [[nodiscard]] JointType jointType(JointId id) const;
+    [[nodiscard]] BodyId jointBodyA(JointId id) const;
+    [[nodiscard]] BodyId jointBodyB(JointId id) const;
+    /// The body's joints, most recently created first.
+    [[nodiscard]] std::vector<JointId> bodyJoints(BodyId id) const;
+    [[nodiscard]] std::uint64_t jointUserData(JointId id) const;
+    void setJointUserData(JointId id, std::uint64_t userData);
+    /// The joint's anchors in world coordinates, metres (a mouse joint's A anchor is its
+    /// target).
+    [[nodiscard]] Vec2 jointAnchorA(JointId id) const;
+    [[nodiscard]] Vec2 jointAnchorB(JointId id) const;
+    /// The force the joint applied to body B during the last step, newtons, world axes (body A
+    /// got the opposite), averaged over the step's last sub-step; zero before the first step
+    /// and while a body is disabled; while the bodies sleep, the one they fell asleep with. A
+    /// game breaks a joint when this exceeds a threshold.
+    [[nodiscard]] Vec2 jointReactionForce(JointId id) const;
+    /// The torque the joint applied to body B about its anchor during the last step, N*m.
+    [[nodiscard]] float jointReactionTorque(JointId id) const;
+    /// Revolute: the joint angle (radians, B relative to A minus the reference angle, counted
+    /// through whole turns). Prismatic and wheel: the translation of B's anchor along the axis
+    /// from A's anchor, metres. Distance: the current length, metres. Throws for other types.
+    [[nodiscard]] float jointValue(JointId id) const;
+    /// Turns the motor of a distance, prismatic, revolute or wheel joint on or off. Throws for
+    /// other types. Wakes the bodies.
+    void enableJointMotor(JointId id, bool enable);
+    /// Motor speed (m/s or rad/s, finite) of a distance, prismatic, revolute or wheel joint.
+    void setJointMotorSpeed(JointId id, float speed);
+    /// Largest motor force (N) or torque (N*m), finite, >= 0, of a distance, prismatic,
+    /// revolute or wheel joint; the largest force of a mouse or motor joint.
+    void setJointMaxMotorForce(JointId id, float force);
+    /// Turns the limits of a distance, prismatic, revolute or wheel joint on or off.
+    void enableJointLimit(JointId id, bool enable);
+    /// Limits (finite, lower <= upper): lengths of a distance joint (lower >= 0), translations
+    /// of a prismatic or wheel joint, angles of a revolute joint.
+    void setJointLimits(JointId id, float lower, float upper);
+    /// Spring of a distance, prismatic, revolute or wheel joint (enabled when hertz > 0) or
+    /// the stiffness of a mouse joint (hertz > 0) or of both parts of a weld joint: hertz and
+    /// damping ratio finite, >= 0.
+    void setJointSpring(JointId id, float hertz, float dampingRatio);
+    /// A mouse joint's target, world metres, finite. Wakes body B.
+    void setMouseJointTarget(JointId id, Vec2 target);
+    /// A motor joint's target pose of B in A's frame (metres, radians, finite). Wakes the
+    /// bodies.
+    void setMotorJointOffsets(JointId id, Vec2 linearOffset, float angularOffset);
+    [[nodiscard]] int jointCount() const;
 
     // --- counts ---
 
