@@ -181,16 +181,18 @@ void solveClassic(const SolverStep& step) {
     warmStartJoints(step.joints, step.jointOrder, step.states);
     warmStartContacts(step.constraints, step.states);
     for (int i = 0; i < def.velocityIterations; ++i) {
-        // Joints correct their position error through a soft velocity bias (Box2D v3's joint
-        // softness at the step rate) rather than position iterations.
-        solveJoints(step.joints, step.jointOrder, step.states, step.jointStep, true);
+        // Box2D 2.4's recipe: velocities only here (a limit not reached yet still stops the
+        // bodies at it), position errors in the position iterations below.
+        solveJoints(step.joints, step.jointOrder, step.states, step.jointStep, false);
         solveVelocitiesClassic(step.constraints, step.states, invDt);
     }
     applyRestitution(step.constraints, step.states, def.restitutionThreshold, step.dt);
     integratePositions(step.states, step.dt);
     for (int i = 0; i < def.positionIterations; ++i) {
         // Box2D 2.4's stopping rule: done once nothing overlaps by more than 3 slops.
-        if (solvePositionsClassic(step.constraints, step.states) >= -3.0f * kLinearSlop) {
+        const bool contactsDone = solvePositionsClassic(step.constraints, step.states) >= -3.0f * kLinearSlop;
+        const bool jointsDone = solveJointPositions(step.joints, step.jointOrder, step.states);
+        if (contactsDone && jointsDone) {
             break;
         }
     }

@@ -126,6 +126,10 @@ void warmStartJoints(std::span<Joint> joints, std::span<const int> order, std::s
 void solveJoints(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
                  const JointStep& step, bool useBias);
 
+// Classic mode: one non-linear Gauss-Seidel pass over the rigid parts' position errors
+// (joint_position.cpp). True when every error was within the slops before the pass.
+bool solveJointPositions(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states);
+
 // Per-type passes (joint_<type>.cpp).
 void warmStartDistance(Joint& j, BodyState& a, BodyState& b);
 void solveDistance(Joint& j, BodyState& a, BodyState& b, const JointStep& step, bool useBias);

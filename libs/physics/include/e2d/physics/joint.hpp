@@ -13,8 +13,11 @@
 ///
 /// Every joint is solved with the contacts in both solver modes. Springs are given as a
 /// frequency (hertz) and a damping ratio, as in Box2D v3: a spring of `hertz` f acting on an
-/// effective mass m has stiffness k = m (2 pi f)^2 (for a body hanging from a static one, m is
-/// the body's mass, or its moment of inertia about the anchor for an angular spring).
+/// effective mass m has stiffness k = m (2 pi f)^2: for a body held by a static one at its
+/// centre of mass, m is the body's mass; an angular spring's m is the bodies' effective
+/// rotational inertia about their centres of mass (1 / (1 / I_A + 1 / I_B)), wherever the anchor.
+/// A motor or limit pushing a light body hard against a rigid part compresses that part's soft
+/// constraint (60 Hz at the sub-step rate) by force / (m (2 pi 60)^2).
 /// A zero hertz spring has no stiffness (with damping 0 it does nothing).
 ///
 /// Anchors are in each body's local frame (metres from the body origin). Angles are radians,
