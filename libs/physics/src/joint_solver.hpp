@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -23,8 +24,53 @@ namespace e2d::physics::detail {
 inline constexpr float kJointHertz = 60.0f;
 inline constexpr float kJointDampingRatio = 2.0f;
 
-struct Joint {
+// Laid out for the solver: what the per-sub-step passes read and write sits in the first two
+// cache lines (128 bytes), the definition and what prepareJoint() alone reads after them. A
+// big joint grid is bound by memory traffic, so this halves the lines each pass touches.
+struct alignas(64) Joint {
+    // --- hot: every pass (first cache line) ---
     JointType type = JointType::Distance;
+    bool enableSpring = false;
+    bool enableLimit = false;
+    bool enableMotor = false;
+    int indexA = -1; // BodyState index this step, -1: static or asleep
+    int indexB = -1;
+    float invInertiaA = 0.0f;
+    float invInertiaB = 0.0f;
+    float angle0 = 0.0f; // joint angle at the step start
+    Vec2 invMassA{0.0f, 0.0f};
+    Vec2 invMassB{0.0f, 0.0f};
+    Vec2 anchorA{0.0f, 0.0f}; // from A's centre of mass, world axes, at the step start
+    Vec2 anchorB{0.0f, 0.0f};
+    Vec2 deltaCenter{0.0f, 0.0f}; // B's centre minus A's (mouse: minus the target)
+    Vec2 axisA{0.0f, 0.0f};       // world axes at the step start
+    // Accumulated impulses of the last (sub-)step: warm start and reaction force.
+    Vec2 linearImpulse{0.0f, 0.0f}; // point (revolute, weld, mouse, motor) or (perp, angle)
+    // --- hot, second cache line (to maxMotorForce; the rest of the line is read when a
+    // spring, a weld or a distance joint needs it) ---
+    float angularImpulse = 0.0f; // weld, motor
+    float springImpulse = 0.0f;  // distance: its rigid or spring impulse
+    float motorImpulse = 0.0f;
+    float lowerImpulse = 0.0f;
+    float upperImpulse = 0.0f;
+    float perpImpulse = 0.0f; // wheel
+    float axialMass = 0.0f;
+    float angularMass = 0.0f;
+    float lower = 0.0f; // limits: translations or angles
+    float upper = 0.0f;
+    float motorSpeed = 0.0f;
+    float maxMotorForce = 0.0f; // force or torque (mouse, motor: maxForce)
+    float hertz = 0.0f;         // spring (mouse: its pull; weld: linear)
+    float angularHertz = 0.0f;  // weld
+    float length = 1.0f;
+    float minLength = 0.0f;
+
+    // --- cold: the step's prepare, the definition, the lists ---
+    float maxLength = 0.0f;
+    float maxTorque = 0.0f; // motor joint
+    float correctionFactor = 0.0f;
+    Softness springSoftness{};
+    Softness angularSoftness{};
     int bodyA = -1;
     int bodyB = -1;
     // Intrusive lists of each body's joints (side 0: through body A, side 1: through body B).
@@ -34,61 +80,19 @@ struct Joint {
     std::uint16_t generation = 1;
     bool alive = false;
     bool collideConnected = false;
-
-    // --- definition (the def's fields, per type) ---
     Vec2 localAnchorA{0.0f, 0.0f}; // from body A's origin, A's frame (motor: linearOffset)
     Vec2 localAnchorB{0.0f, 0.0f};
     Vec2 localAxisA{1.0f, 0.0f}; // unit
     Vec2 target{0.0f, 0.0f};     // mouse
     float referenceAngle = 0.0f; // motor: angularOffset
-    float length = 1.0f;
-    float minLength = 0.0f;
-    float maxLength = 0.0f;
-    float lower = 0.0f; // limits: lengths, translations or angles
-    float upper = 0.0f;
-    float hertz = 0.0f; // spring (mouse: its pull; weld: linear)
     float dampingRatio = 0.0f;
-    float angularHertz = 0.0f; // weld
     float angularDampingRatio = 0.0f;
-    float maxMotorForce = 0.0f; // force or torque (mouse, motor: maxForce)
-    float maxTorque = 0.0f;     // motor joint
-    float motorSpeed = 0.0f;
-    float correctionFactor = 0.0f;
-    bool enableSpring = false;
-    bool enableLimit = false;
-    bool enableMotor = false;
-
-    // --- state kept from step to step ---
     // The joint angle at the last prepare, followed through whole turns (revolute).
     float angle = 0.0f;
-    // Accumulated impulses of the last (sub-)step: warm start and reaction force.
-    Vec2 linearImpulse{0.0f, 0.0f}; // point (revolute, weld, mouse, motor) or (perp, angle)
-    float angularImpulse = 0.0f;    // weld, motor
-    float springImpulse = 0.0f;     // distance: its rigid or spring impulse
-    float motorImpulse = 0.0f;
-    float lowerImpulse = 0.0f;
-    float upperImpulse = 0.0f;
-    float perpImpulse = 0.0f; // wheel
     Vec2 reactionForce{0.0f, 0.0f};
     float reactionTorque = 0.0f;
-
-    // --- this step (prepareJoint()) ---
-    int indexA = -1; // BodyState index, -1: static or asleep
-    int indexB = -1;
-    Vec2 invMassA{0.0f, 0.0f};
-    Vec2 invMassB{0.0f, 0.0f};
-    float invInertiaA = 0.0f;
-    float invInertiaB = 0.0f;
-    Vec2 anchorA{0.0f, 0.0f};     // from A's centre of mass, world axes, at the step start
-    Vec2 anchorB{0.0f, 0.0f};
-    Vec2 deltaCenter{0.0f, 0.0f}; // B's centre minus A's (mouse: minus the target)
-    Vec2 axisA{0.0f, 0.0f};       // world axes at the step start
-    float angle0 = 0.0f;          // joint angle at the step start
-    float axialMass = 0.0f;
-    float angularMass = 0.0f;
-    Softness springSoftness{};
-    Softness angularSoftness{};
 };
+static_assert(offsetof(Joint, maxMotorForce) + sizeof(float) <= 128, "the solver's fields fit two cache lines");
 
 // What a pass needs besides the joint and the bodies' states.
 struct JointStep {
