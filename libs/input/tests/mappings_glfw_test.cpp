@@ -9,9 +9,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 
 namespace e2d::input {
 namespace {
@@ -26,7 +28,16 @@ const std::string kGood2 = "05000000de280000ff11000001000000,Test Pad 2,a:b1,b:b
 class Glfw : public ::testing::Test {
 protected:
     void SetUp() override {
-        ASSERT_EQ(glfwInit(), GLFW_TRUE) << "glfwInit failed (no display?)";
+        // Xvfb resets when its last client leaves (the previous test's glfwTerminate) and
+        // refuses connections for a moment while it does: retry for up to 2 s.
+        bool initialised = false;
+        for (int attempt = 0; attempt < 40 && !initialised; ++attempt) {
+            initialised = glfwInit() == GLFW_TRUE;
+            if (!initialised) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            }
+        }
+        ASSERT_TRUE(initialised) << "glfwInit failed (no display?)";
         static_cast<void>(glfwGetError(nullptr));
     }
     void TearDown() override { glfwTerminate(); }

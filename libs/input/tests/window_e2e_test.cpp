@@ -68,7 +68,18 @@ class WindowInput : public ::testing::Test {
 protected:
     void SetUp() override {
         ASSERT_EQ(std::system("command -v xdotool >/dev/null"), 0) << "xdotool is missing (Debian package xdotool)";
-        ASSERT_EQ(glfwInit(), GLFW_TRUE) << "glfwInit failed: no X display?";
+        // Xvfb resets when its last client leaves (the previous test's glfwTerminate) and
+        // refuses connections for a moment while it does: retry for up to 2 s.
+        bool initialised = false;
+        const char* why = nullptr;
+        for (int attempt = 0; attempt < 40 && !initialised; ++attempt) {
+            initialised = glfwInit() == GLFW_TRUE;
+            if (!initialised) {
+                glfwGetError(&why);
+                std::this_thread::sleep_for(50ms);
+            }
+        }
+        ASSERT_TRUE(initialised) << "glfwInit failed: " << (why != nullptr ? why : "?");
         glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
         glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
         // Unique per process, so parallel tests (ctest -j) never find each other's window.
@@ -170,15 +181,18 @@ TEST_F(WindowInput, KeysWithModifiersAndTheirTextArriveInOrder) {
 }
 
 TEST_F(WindowInput, TypedTextArrivesAsCodePoints) {
-    xdotool("type --delay 20 'Hi, e2d!'");
-    ASSERT_TRUE(pumpUntilSeen(EventType::Text, '!'));
+    xdotool("type --delay 20 'Hi, e2d! {~}'");
+    ASSERT_TRUE(pumpUntilSeen(EventType::Text, '}'));
     std::u32string text;
     for (const Event& e : events_) {
         if (e.type == EventType::Text) {
             text.push_back(static_cast<char32_t>(e.code));
         }
     }
-    EXPECT_EQ(text, U"Hi, e2d!");
+    // ASCII only: xdotool types a character outside the keymap by remapping a spare key code
+    // for a moment, and GLFW 3.3 looks the key up in the mapping it read at start (key -1, no
+    // text). Code points beyond ASCII are covered through handleChar() in the unit tests.
+    EXPECT_EQ(text, U"Hi, e2d! {~}");
 }
 
 TEST_F(WindowInput, AHeldKeyDoesNotRepeatAndIsDownUntilReleased) {
@@ -193,6 +207,27 @@ TEST_F(WindowInput, AHeldKeyDoesNotRepeatAndIsDownUntilReleased) {
     ASSERT_TRUE(pumpUntilSeen(EventType::KeyUp, GLFW_KEY_RIGHT));
     EXPECT_THAT(seen(kKeys), ElementsAre("KeyDown right mods=0", "KeyUp right mods=0"));
     EXPECT_FALSE(input_->isKeyDown(GLFW_KEY_RIGHT));
+}
+
+TEST_F(WindowInput, LosingFocusReleasesTheHeldKeysAndButtons) {
+    xdotool("mousemove --window " + windowId_ + " 50 60");
+    xdotool("keydown q");
+    xdotool("mousedown 1");
+    ASSERT_TRUE(pumpUntilSeen(EventType::MouseButtonDown, GLFW_MOUSE_BUTTON_LEFT));
+    ASSERT_TRUE(input_->isKeyDown(GLFW_KEY_Q));
+    events_.clear();
+    // A second window takes the focus when shown (no window manager needed).
+    GLFWwindow* other = glfwCreateWindow(100, 100, (title_ + "-other").c_str(), nullptr, nullptr);
+    ASSERT_NE(other, nullptr);
+    ASSERT_TRUE(pumpUntilSeen(EventType::FocusLost, 0));
+    EXPECT_THAT(seen({EventType::KeyUp, EventType::MouseButtonUp, EventType::FocusLost}),
+                ElementsAre("KeyUp q mods=0", "MouseButtonUp left @50,60", "FocusLost"));
+    EXPECT_FALSE(input_->isKeyDown(GLFW_KEY_Q));
+    EXPECT_FALSE(input_->isMouseButtonDown(GLFW_MOUSE_BUTTON_LEFT));
+    EXPECT_FALSE(input_->focused());
+    xdotool("keyup q");
+    xdotool("mouseup 1");
+    glfwDestroyWindow(other);
 }
 
 TEST_F(WindowInput, MouseMovesClicksAndScrollArriveWithPositions) {
