@@ -108,7 +108,9 @@ struct Rig {
 
     static MixerDef prepare(MixerDef def, core::Logger& logger) {
         useNullDriver();
-        def.output = def.output == Output::Device ? Output::Loopback : def.output;
+        if (def.output == Output::Device && def.deviceName.empty()) {
+            def.output = Output::Loopback;
+        }
         def.loopbackSampleRate = kRate;
         def.logger = &logger;
         return def;
