@@ -37,7 +37,7 @@ std::unique_ptr<Device> Device::openDevice(const std::string& name, int sources,
     return device;
 }
 
-std::unique_ptr<Device> Device::openLoopback(int sampleRate, int sources, std::string& error) {
+std::unique_ptr<Device> Device::openLoopback(int sampleRate, int sources, ALCdevice* given, std::string& error) {
     auto open = alcProc<LPALCLOOPBACKOPENDEVICESOFT>(nullptr, "alcLoopbackOpenDeviceSOFT");
     if (alcIsExtensionPresent(nullptr, "ALC_SOFT_loopback") == ALC_FALSE || open == nullptr) {
         error = "the OpenAL implementation has no loopback device (ALC_SOFT_loopback)";
@@ -45,8 +45,9 @@ std::unique_ptr<Device> Device::openLoopback(int sampleRate, int sources, std::s
     }
     std::unique_ptr<Device> device(new Device());
     device->loopback_ = true;
-    device->name_ = "loopback";
-    device->device_ = open(nullptr);
+    device->name_ = given != nullptr ? "caller's loopback" : "loopback";
+    device->ownsDevice_ = given == nullptr;
+    device->device_ = given != nullptr ? given : open(nullptr);
     if (device->device_ == nullptr) {
         error = "cannot open the loopback device";
         return nullptr;
@@ -103,7 +104,7 @@ Device::~Device() {
         }
         alcDestroyContext(context_);
     }
-    if (device_ != nullptr) {
+    if (device_ != nullptr && ownsDevice_) {
         alcCloseDevice(device_);
     }
 }

@@ -18,8 +18,9 @@ public:
     /// Opens the device `name` (empty: the default one) with room for `sources` mono sources.
     /// Null, and `error` says why, when there is no such device or no context.
     static std::unique_ptr<Device> openDevice(const std::string& name, int sources, std::string& error);
-    /// A loopback device mixing stereo floats at `sampleRate` Hz.
-    static std::unique_ptr<Device> openLoopback(int sampleRate, int sources, std::string& error);
+    /// A loopback device mixing stereo floats at `sampleRate` Hz: `given` (not owned: never
+    /// closed here) or, when null, one opened (and closed) here.
+    static std::unique_ptr<Device> openLoopback(int sampleRate, int sources, ALCdevice* given, std::string& error);
     ~Device();
     Device(const Device&) = delete;
     Device& operator=(const Device&) = delete;
@@ -45,6 +46,7 @@ private:
     ALCdevice* device_ = nullptr;
     ALCcontext* context_ = nullptr;
     bool loopback_ = false;
+    bool ownsDevice_ = true;
     bool hasDisconnect_ = false;
     int sampleRate_ = 0;
     std::string name_;

@@ -47,6 +47,9 @@ void checkDef(const MixerDef& def) {
     if (def.loopbackSampleRate < 8000 || def.loopbackSampleRate > 192000) {
         throwInvalid(kCtor, "loopbackSampleRate", "in 8000..192000", def.loopbackSampleRate);
     }
+    if (def.loopbackDevice != nullptr && def.output != Output::Loopback) {
+        throw core::Error(std::string(kCtor) + ": loopbackDevice is given but output is not Output::Loopback");
+    }
     if (def.voiceCount < 1 || def.voiceCount > 1024) {
         throwInvalid(kCtor, "voiceCount", "in 1..1024", def.voiceCount);
     }
@@ -94,7 +97,8 @@ bool Mixer::Impl::openOutput(bool reopening) {
     std::string error;
     const int sources = 2 * def.voiceCount;
     if (def.output == Output::Loopback) {
-        device = detail::Device::openLoopback(def.loopbackSampleRate, sources, error);
+        device = detail::Device::openLoopback(def.loopbackSampleRate, sources,
+                                              static_cast<ALCdevice*>(def.loopbackDevice), error);
     } else if (def.output == Output::None && !reopening) {
         error = "no output requested (Output::None)";
     } else {

@@ -60,6 +60,14 @@ struct MixerDef {
     std::string deviceName;
     /// Hz, for Output::Loopback; 8000..192000. Default 48000.
     int loopbackSampleRate = 48000;
+    /// For Output::Loopback: a loopback device the caller opened with OpenAL Soft's
+    /// `alcLoopbackOpenDeviceSOFT` (an `ALCdevice*`, typed void* so that this header needs no
+    /// OpenAL header). The mixer creates its context on it (stereo floats at
+    /// loopbackSampleRate) and destroys that context, but never closes the device: the caller
+    /// does, after the mixer is gone. The caller may render with `alcRenderSamplesSOFT` itself
+    /// or through render(). Null: the mixer opens and closes a loopback device of its own.
+    /// Default null.
+    void* loopbackDevice = nullptr;
     /// Voices that can sound at once (each uses two OpenAL sources); 1..1024. Default 32.
     int voiceCount = 32;
     /// Multiplies every voice; >= 0. Default 1.
