@@ -6,6 +6,7 @@ e2d_add_tests(render SUFFIX text SOURCES
   tests/sprite_sheet_test.cpp
   tests/animation_test.cpp
   tests/text_layout_test.cpp
+  tests/drawer_test.cpp
   LABEL render)
 
 if(E2D_BUILD_FUZZ AND EXISTS "${CMAKE_CURRENT_SOURCE_DIR}/fuzz/CMakeLists.txt")
