@@ -139,9 +139,8 @@ struct Font::Impl {
             return false;
         }
         for (int row = 0; row < h; ++row) {
-            // FreeType's rows go top-down; the atlas is bottom-up.
             const unsigned char* source = bitmap.buffer + static_cast<std::ptrdiff_t>(row) * bitmap.pitch;
-            std::uint8_t* target = pixels.data() + (static_cast<std::size_t>(y + h - 1 - row) * static_cast<std::size_t>(size.x) +
+            std::uint8_t* target = pixels.data() + (static_cast<std::size_t>(y + row) * static_cast<std::size_t>(size.x) +
                                                     static_cast<std::size_t>(x)) * 4u;
             for (int col = 0; col < w; ++col) {
                 const std::uint8_t coverage = bitmap.pixel_mode == FT_PIXEL_MODE_GRAY

@@ -37,8 +37,8 @@ struct FontDef {
 struct Glyph {
     /// FreeType glyph index (0 is the font's .notdef).
     unsigned index = 0;
-    /// Where the coverage lies in the atlas, pixels; row `y` is the glyph's bottom row (the
-    /// atlas is stored bottom-up, as OpenGL reads it). Zero size for blank glyphs (space).
+    /// Where the coverage lies in the atlas, pixels, top-left origin (row `y` is the glyph's
+    /// top row). Zero size for blank glyphs (space).
     PixelRect atlasRect;
     /// From the pen position on the baseline to the bitmap's left edge and top edge, pixels,
     /// x right, y up (FreeType's bitmap_left / bitmap_top).
@@ -89,11 +89,11 @@ public:
 
     /// Atlas size, pixels. The height grows; positions of glyphs already in it never move.
     [[nodiscard]] glm::ivec2 atlasSize() const noexcept;
-    /// Atlas pixels, RGBA8, bottom row first, atlasSize().x * atlasSize().y * 4 bytes.
+    /// Atlas pixels, RGBA8, top row first (as Image), atlasSize().x * atlasSize().y * 4 bytes.
     [[nodiscard]] std::span<const std::uint8_t> atlasPixels() const noexcept;
     /// Changes whenever atlasSize() changes (the texture must be recreated).
     [[nodiscard]] std::uint64_t atlasGeneration() const noexcept;
-    /// The part of the atlas written since the last clearDirty() (pixels, rows bottom-up);
+    /// The part of the atlas written since the last clearDirty() (pixels, top-left origin);
     /// zero size when nothing changed.
     [[nodiscard]] PixelRect dirtyRect() const noexcept;
     void clearDirty() noexcept;

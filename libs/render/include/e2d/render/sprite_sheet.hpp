@@ -42,9 +42,10 @@ struct SpriteFrame {
     glm::ivec2 sourceSize{0, 0};
     /// Pivot as a fraction of the source size, origin top-left (`pivot`). Default (0.5, 0.5).
     glm::vec2 pivot{0.5f, 0.5f};
-    /// The region as texture coordinates: (u0, v0, u1, v1) with (0, 0) the image's bottom-left
-    /// corner and v up (OpenGL's convention), u0 < u1 and v0 < v1, in display orientation only
-    /// when the frame is not rotated.
+    /// The region as texture coordinates, fractions of the image, top-left origin (the
+    /// library's image convention, see Image): (u0, v0) the region's top-left corner, (u1, v1)
+    /// its bottom-right, u0 < u1 and v0 < v1. For a rotated frame this is the stored
+    /// (rotated) region.
     glm::vec4 uv{0.0f, 0.0f, 0.0f, 0.0f};
 
     /// Display size of the stored pixels (the trimmed size), pixels: `region` un-swapped.

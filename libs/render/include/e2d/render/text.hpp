@@ -48,7 +48,8 @@ struct GlyphQuad {
     /// Quad corners, pixels relative to the anchor, x right, y up; whole numbers, so glyphs at
     /// a whole-pixel anchor land on pixel centres.
     TextRect rect;
-    /// Atlas texture coordinates (u0, v0, u1, v1), v up: (u0, v0) goes with rect.min.
+    /// Atlas texture coordinates, fractions, top-left origin (as Image): (u0, v0) is the
+    /// glyph's top-left corner, (u1, v1) its bottom-right.
     glm::vec4 uv{0.0f, 0.0f, 0.0f, 0.0f};
     /// The code point drawn (U+FFFD for an ill-formed UTF-8 sequence).
     char32_t codePoint = 0;

@@ -77,7 +77,8 @@ Canvas paint(const Font& font, const TextLayout& layout, int margin) {
         const int h = static_cast<int>(q.rect.max.y - q.rect.min.y);
         for (int y = 0; y < h; ++y) {
             for (int x = 0; x < w; ++x) {
-                const int a = pixels[static_cast<std::size_t>(((ay + y) * atlas.x + ax + x) * 4 + 3)];
+                // Canvas rows go up, atlas rows go down.
+                const int a = pixels[static_cast<std::size_t>(((ay + h - 1 - y) * atlas.x + ax + x) * 4 + 3)];
                 int& dst = c.alpha[static_cast<std::size_t>((y0 + y) * c.width + x0 + x)];
                 dst = std::max(dst, a);
             }
@@ -150,7 +151,7 @@ TEST(Font, GlyphsAreRasterisedIntoTheAtlasOnDemand) {
         }
     }
     EXPECT_GT(ink, 30);
-    // An 'A' is wide at the bottom and narrow at the top: the atlas is bottom-up.
+    // An 'A' is wide at the bottom and narrow at the top: the atlas is top-down.
     const auto rowInk = [&](int y) {
         int n = 0;
         for (int x = a.atlasRect.x; x < a.atlasRect.x + a.atlasRect.w; ++x) {
@@ -161,13 +162,13 @@ TEST(Font, GlyphsAreRasterisedIntoTheAtlasOnDemand) {
     int first = -1;
     int last = -1;
     for (int x = a.atlasRect.x; x < a.atlasRect.x + a.atlasRect.w; ++x) {
-        if (pixels[static_cast<std::size_t>((a.atlasRect.y * font.atlasSize().x + x) * 4 + 3)] > 0) {
+        if (pixels[static_cast<std::size_t>(((a.atlasRect.y + a.atlasRect.h - 1) * font.atlasSize().x + x) * 4 + 3)] > 0) {
             last = x;
             first = first < 0 ? x : first;
         }
     }
     EXPECT_GT(last - first, a.atlasRect.w / 2);
-    EXPECT_LT(rowInk(a.atlasRect.y + a.atlasRect.h - 1), a.atlasRect.w / 2);
+    EXPECT_LT(rowInk(a.atlasRect.y), a.atlasRect.w / 2);
     // Asking again rasterises nothing.
     const int count = font.glyphCount();
     font.clearDirty();
