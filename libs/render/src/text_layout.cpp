@@ -114,7 +114,6 @@ TextLayout layoutText(Font& font, std::string_view utf8, const TextStyle& style)
     }
     layout.bounds = layout.box;
 
-    const glm::vec2 atlas = font.atlasSize();
     layout.quads.reserve(pending.size());
     for (const Pending& p : pending) {
         const Glyph& g = *p.glyph;
@@ -126,9 +125,7 @@ TextLayout layoutText(Font& font, std::string_view utf8, const TextStyle& style)
         q.rect.min = {lineStart[static_cast<std::size_t>(p.line)] + std::round(p.penX) + static_cast<float>(g.bearing.x),
                       baseline + static_cast<float>(g.bearing.y - g.atlasRect.h)};
         q.rect.max = q.rect.min + glm::vec2(static_cast<float>(g.atlasRect.w), static_cast<float>(g.atlasRect.h));
-        q.uv = {static_cast<float>(g.atlasRect.x) / atlas.x, static_cast<float>(g.atlasRect.y) / atlas.y,
-                static_cast<float>(g.atlasRect.x + g.atlasRect.w) / atlas.x,
-                static_cast<float>(g.atlasRect.y + g.atlasRect.h) / atlas.y};
+        q.atlasRect = g.atlasRect;
         q.codePoint = p.codePoint;
         q.missing = g.missing;
         join(layout.bounds, q.rect);

@@ -71,8 +71,8 @@ Canvas paint(const Font& font, const TextLayout& layout, int margin) {
     for (const auto& q : layout.quads) {
         const int x0 = static_cast<int>(q.rect.min.x - c.origin.x);
         const int y0 = static_cast<int>(q.rect.min.y - c.origin.y);
-        const int ax = static_cast<int>(std::lround(q.uv.x * static_cast<float>(atlas.x)));
-        const int ay = static_cast<int>(std::lround(q.uv.y * static_cast<float>(atlas.y)));
+        const int ax = q.atlasRect.x;
+        const int ay = q.atlasRect.y;
         const int w = static_cast<int>(q.rect.max.x - q.rect.min.x);
         const int h = static_cast<int>(q.rect.max.y - q.rect.min.y);
         for (int y = 0; y < h; ++y) {

@@ -4,7 +4,6 @@
 #include <e2d/render/font.hpp>
 
 #include <glm/vec2.hpp>
-#include <glm/vec4.hpp>
 
 #include <string_view>
 #include <vector>
@@ -48,9 +47,10 @@ struct GlyphQuad {
     /// Quad corners, pixels relative to the anchor, x right, y up; whole numbers, so glyphs at
     /// a whole-pixel anchor land on pixel centres.
     TextRect rect;
-    /// Atlas texture coordinates, fractions, top-left origin (as Image): (u0, v0) is the
-    /// glyph's top-left corner, (u1, v1) its bottom-right.
-    glm::vec4 uv{0.0f, 0.0f, 0.0f, 0.0f};
+    /// Where the glyph's pixels are in the font's atlas, pixels, top-left origin (the glyph's
+    /// top-left corner goes with the quad's top-left). Pixels rather than texture coordinates,
+    /// because the atlas may grow after the layout was made.
+    PixelRect atlasRect;
     /// The code point drawn (U+FFFD for an ill-formed UTF-8 sequence).
     char32_t codePoint = 0;
     /// The font lacks it: the quad shows the font's .notdef glyph.
