@@ -30,8 +30,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             const auto& r = frame.region;
             check(r.x >= 0 && r.y >= 0 && r.w >= 1 && r.h >= 1);
             check(r.x + r.w <= image.x && r.y + r.h <= image.y);
-            check(frame.uv.x >= 0.0f && frame.uv.z <= 1.0f && frame.uv.x < frame.uv.z);
-            check(frame.uv.y >= 0.0f && frame.uv.w <= 1.0f && frame.uv.y < frame.uv.w);
+            check(frame.uv.min.x >= 0.0f && frame.uv.max().x <= 1.0f && frame.uv.size.x > 0.0f);
+            check(frame.uv.min.y >= 0.0f && frame.uv.max().y <= 1.0f && frame.uv.size.y > 0.0f);
             check(sheet.find(frame.name) != nullptr);
             // Every prefix of a name is a plausible animation base name.
             const std::string_view name = frame.name;

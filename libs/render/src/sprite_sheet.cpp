@@ -289,9 +289,9 @@ SpriteSheet SpriteSheet::fromString(std::string_view json, std::string_view name
         reader.checkInside(f, path + ".frame", sheet.imageSize_, " (meta.size)");
         const auto& size = sheet.imageSize_;
         const auto& r = f.region;
-        f.uv = {static_cast<float>(r.x) / static_cast<float>(size.x), static_cast<float>(r.y) / static_cast<float>(size.y),
-                static_cast<float>(r.x + r.w) / static_cast<float>(size.x),
-                static_cast<float>(r.y + r.h) / static_cast<float>(size.y)};
+        const glm::vec2 pixels(size);
+        f.uv = Rect{glm::vec2(static_cast<float>(r.x), static_cast<float>(r.y)) / pixels,
+                    glm::vec2(static_cast<float>(r.w), static_cast<float>(r.h)) / pixels};
         if (!sheet.byName_.emplace(f.name, static_cast<int>(sheet.frames_.size())).second) {
             reader.fail(path, "duplicate frame name \"" + f.name + "\"");
         }

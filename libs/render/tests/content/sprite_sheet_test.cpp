@@ -62,10 +62,10 @@ void expectHeroFrames(const SpriteSheet& sheet) {
     EXPECT_EQ(idle.trimOffset(), glm::vec2(0.0f, 0.0f));
     EXPECT_EQ(idle.pivot, glm::vec2(0.5f, 0.5f));
     // Top-left 32x16 of a 128x64 image, top-left origin.
-    EXPECT_FLOAT_EQ(idle.uv.x, 0.0f);
-    EXPECT_FLOAT_EQ(idle.uv.y, 0.0f);
-    EXPECT_FLOAT_EQ(idle.uv.z, 32.0f / 128.0f);
-    EXPECT_FLOAT_EQ(idle.uv.w, 16.0f / 64.0f);
+    EXPECT_FLOAT_EQ(idle.uv.min.x, 0.0f);
+    EXPECT_FLOAT_EQ(idle.uv.min.y, 0.0f);
+    EXPECT_FLOAT_EQ(idle.uv.max().x, 32.0f / 128.0f);
+    EXPECT_FLOAT_EQ(idle.uv.max().y, 16.0f / 64.0f);
 
     const SpriteFrame& jump = sheet.frame("jump.png");
     EXPECT_TRUE(jump.trimmed);
@@ -75,10 +75,10 @@ void expectHeroFrames(const SpriteSheet& sheet) {
     EXPECT_EQ(jump.pivot, glm::vec2(0.25f, 1.0f));
     // Trimmed centre (6 + 10, 1 + 15) = (16, 16) from the top-left; source centre (16, 16).
     EXPECT_EQ(jump.trimOffset(), glm::vec2(0.0f, 0.0f));
-    EXPECT_FLOAT_EQ(jump.uv.x, 32.0f / 128.0f);
-    EXPECT_FLOAT_EQ(jump.uv.y, 8.0f / 64.0f);
-    EXPECT_FLOAT_EQ(jump.uv.z, 52.0f / 128.0f);
-    EXPECT_FLOAT_EQ(jump.uv.w, 38.0f / 64.0f);
+    EXPECT_FLOAT_EQ(jump.uv.min.x, 32.0f / 128.0f);
+    EXPECT_FLOAT_EQ(jump.uv.min.y, 8.0f / 64.0f);
+    EXPECT_FLOAT_EQ(jump.uv.max().x, 52.0f / 128.0f);
+    EXPECT_FLOAT_EQ(jump.uv.max().y, 38.0f / 64.0f);
 
     const SpriteFrame& fall = sheet.frame("fall.png");
     EXPECT_TRUE(fall.rotated);
@@ -87,10 +87,10 @@ void expectHeroFrames(const SpriteSheet& sheet) {
     EXPECT_EQ(fall.size(), glm::ivec2(40, 10));
     // Trimmed centre (2 + 20, 3 + 5) = (22, 8); source centre (24, 8): 2 px left, same height.
     EXPECT_EQ(fall.trimOffset(), glm::vec2(-2.0f, 0.0f));
-    EXPECT_FLOAT_EQ(fall.uv.x, 64.0f / 128.0f);
-    EXPECT_FLOAT_EQ(fall.uv.y, 0.0f);
-    EXPECT_FLOAT_EQ(fall.uv.z, 74.0f / 128.0f);
-    EXPECT_FLOAT_EQ(fall.uv.w, 40.0f / 64.0f);
+    EXPECT_FLOAT_EQ(fall.uv.min.x, 64.0f / 128.0f);
+    EXPECT_FLOAT_EQ(fall.uv.min.y, 0.0f);
+    EXPECT_FLOAT_EQ(fall.uv.max().x, 74.0f / 128.0f);
+    EXPECT_FLOAT_EQ(fall.uv.max().y, 40.0f / 64.0f);
 }
 
 std::string errorOf(const std::string& json, const std::string& name = "bad.json") {

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <e2d/render/types.hpp>
+
 #include <glm/vec2.hpp>
-#include <glm/vec4.hpp>
 
 #include <filesystem>
 #include <span>
@@ -42,11 +43,9 @@ struct SpriteFrame {
     glm::ivec2 sourceSize{0, 0};
     /// Pivot as a fraction of the source size, origin top-left (`pivot`). Default (0.5, 0.5).
     glm::vec2 pivot{0.5f, 0.5f};
-    /// The region as texture coordinates, fractions of the image, top-left origin (the
-    /// library's image convention, see Image): (u0, v0) the region's top-left corner, (u1, v1)
-    /// its bottom-right, u0 < u1 and v0 < v1. For a rotated frame this is the stored
-    /// (rotated) region.
-    glm::vec4 uv{0.0f, 0.0f, 0.0f, 0.0f};
+    /// The region as a UV rectangle (fractions of the image, top-left origin, as SpriteDef::uv).
+    /// For a rotated frame this is the stored (rotated) region.
+    Rect uv{};
 
     /// Display size of the stored pixels (the trimmed size), pixels: `region` un-swapped.
     [[nodiscard]] glm::ivec2 size() const noexcept {
