@@ -3,13 +3,25 @@
 
 #include <e2d/render/renderer.hpp>
 #include <e2d/render/sprite_renderer.hpp>
+#include <e2d/render/text_renderer.hpp>
 #include <e2d/render/window.hpp>
 
 #include <algorithm>
 
 namespace e2d::render {
 
-RenderSystem::RenderSystem(Renderer& renderer, Window* window) : renderer_(renderer), window_(window) {}
+RenderSystem::RenderSystem(Renderer& renderer, Window* window, core::Logger* logger)
+    : renderer_(renderer), window_(window), logger_(logger) {}
+
+TextRenderer& RenderSystem::text() {
+    if (!text_) {
+        text_ = std::make_unique<TextRenderer>(renderer_, logger_);
+    }
+    return *text_;
+}
+
+void RenderSystem::addHook(RenderHook& hook) { hooks_.push_back(&hook); }
+void RenderSystem::removeHook(RenderHook& hook) noexcept { std::erase(hooks_, &hook); }
 
 RenderSystem::~RenderSystem() = default;
 
@@ -34,6 +46,9 @@ void RenderSystem::syncTransforms() {
 void RenderSystem::render(double alpha) {
     static_cast<void>(alpha);
     syncTransforms();
+    for (RenderHook* hook : hooks_) {
+        hook->beforeRender(renderer_);
+    }
     renderer_.render(activeCamera());
     if (window_ != nullptr) {
         window_->swapBuffers();
@@ -45,6 +60,7 @@ void RenderSystem::clear() {
     // else the scene created directly goes too.
     sprites_.clear();
     cameras_.clear();
+    hooks_.clear();
     renderer_.destroyAllSprites();
 }
 

@@ -4,6 +4,7 @@
 #include <e2d/render/renderer.hpp>
 #include <e2d/render/window.hpp>
 
+#include "debug_draw.hpp"
 #include "error_format.hpp"
 #include "instance_buffer.hpp"
 #include "shaders.hpp"
@@ -118,6 +119,9 @@ struct RendererImpl {
     std::vector<Batch> batches;
     std::size_t lastBase = 0;
     FrameStats stats;
+    // Debug shapes of the frame; their pipeline is made on first use.
+    Drawer drawer;
+    std::unique_ptr<DebugDraw> debugDraw;
 };
 
 } // namespace detail
@@ -302,10 +306,19 @@ void Renderer::render(Camera& camera) {
         ++r.stats.batches;
         ++(b.translucent ? r.stats.translucentBatches : r.stats.opaqueBatches);
     }
+    if (!r.drawer.empty()) {
+        if (!r.debugDraw) {
+            r.debugDraw = std::make_unique<detail::DebugDraw>();
+        }
+        r.stats.debugDrawCalls = r.debugDraw->draw(r.drawer, camera.worldToClip(), size);
+        r.drawer.clear();
+    }
     glDisable(GL_SCISSOR_TEST);
     glDepthMask(GL_TRUE);
     glBindVertexArray(0);
 }
+
+Drawer& Renderer::drawer() noexcept { return impl_->drawer; }
 
 const FrameStats& Renderer::stats() const noexcept { return impl_->stats; }
 glm::ivec2 Renderer::targetSize() const noexcept { return impl_->targetSize(); }

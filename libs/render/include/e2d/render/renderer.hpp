@@ -3,6 +3,7 @@
 
 #include <e2d/core/log.hpp>
 #include <e2d/render/camera.hpp>
+#include <e2d/render/drawer.hpp>
 #include <e2d/render/image.hpp>
 #include <e2d/render/texture.hpp>
 #include <e2d/render/types.hpp>
@@ -143,6 +144,7 @@ struct FrameStats {
     int opaqueBatches = 0;
     int translucentBatches = 0;
     bool persistentMapping = false; ///< the 4.4 ring was used
+    int debugDrawCalls = 0; ///< glDraw* calls of the Drawer's shapes (0, 1 or 2; not in drawCalls)
 };
 
 namespace detail {
@@ -226,6 +228,12 @@ public:
     /// Draws `quad` in the next render() only, sorted and batched with the sprites. Throws
     /// core::Error for a non-finite or negative size or a stale texture id.
     void submit(const Quad& quad);
+
+    // Debug drawing -----------------------------------------------------------------------
+
+    /// Debug lines and shapes for the next render(), drawn after (on top of) the sprites,
+    /// clipped to the camera's region, in at most two draw calls; render() clears it.
+    [[nodiscard]] Drawer& drawer() noexcept;
 
     // Frames ------------------------------------------------------------------------------
 
