@@ -14,3 +14,7 @@ e2d_add_tests(render SUFFIX content LABEL render SOURCES
 if(E2D_BUILD_FUZZ AND EXISTS "${CMAKE_CURRENT_SOURCE_DIR}/fuzz/CMakeLists.txt")
   add_subdirectory(fuzz)
 endif()
+
+# With a real OpenGL context (Mesa llvmpipe under Xvfb when there is no display).
+e2d_add_tests(render SUFFIX content_gl LABEL render NEEDS_DISPLAY SOURCES
+  tests/content/content_gl_test.cpp)
