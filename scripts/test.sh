@@ -3,7 +3,7 @@
 #   1. the release build: every library's GoogleTest suite, the benchmarks (short runs);
 #   2. the same suites under AddressSanitizer + UndefinedBehaviorSanitizer;
 #   3. the libFuzzer targets, each for E2D_FUZZ_SECONDS (default 30);
-#   4. the consumer project, built against an install of e2d, linking only e2d::physics.
+#   4. the consumer project, built against an install of e2d once per library, linking only it.
 # Ends with one line "e2d tests: N passed, M failed". Exit status 0 only if all passed.
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -85,7 +85,7 @@ else
   failed=$((failed + 1))
 fi
 
-echo "=== consumer: find_package(e2d COMPONENTS physics) against an install"
+echo "=== consumer: find_package(e2d COMPONENTS <each library>) against an install"
 if "$root/scripts/check-consumer.sh" "$root/build/release" 2>&1 | tee "$logs/consumer.log"; then
   passed=$((passed + 1))
 else
