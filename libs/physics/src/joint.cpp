@@ -3,6 +3,7 @@
 // collideConnected, getters and setters.
 #include <e2d/physics/world.hpp>
 
+#include "joint_def_check.hpp"
 #include "world_check.hpp"
 #include "world_impl.hpp"
 
@@ -197,6 +198,8 @@ std::pair<BodyId, BodyId> bodiesOf(const JointDef& def) {
 }
 
 } // namespace
+
+void detail::validateJointDef(const JointDef& def) { (void)jointFrom(def); }
 
 JointType jointTypeOf(const JointDef& def) { return static_cast<JointType>(def.index()); }
 

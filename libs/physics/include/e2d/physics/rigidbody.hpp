@@ -77,6 +77,7 @@ public:
 
 private:
     friend class Collider;
+    friend class JointComponent;
     friend class PhysicsSystem;
 
     /// Creates the body now if the object is in the scene and it does not exist yet.
