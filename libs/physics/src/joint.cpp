@@ -517,4 +517,35 @@ void World::setMotorJointOffsets(JointId id, Vec2 linearOffset, float angularOff
 
 int World::jointCount() const { return impl_->jointIds.count(); }
 
+std::vector<JointDebugData> World::jointDebugData() const {
+    const Impl& w = *impl_;
+    std::vector<JointDebugData> out;
+    out.reserve(static_cast<std::size_t>(w.jointIds.count()));
+    for (std::size_t i = 0; i < w.joints.size(); ++i) {
+        const detail::Joint& j = w.joints[i];
+        if (!j.alive) {
+            continue;
+        }
+        const Transform& ta = w.body(j.bodyA).transform;
+        const Transform& tb = w.body(j.bodyB).transform;
+        JointDebugData d;
+        d.id = w.jointId(static_cast<int>(i));
+        d.type = j.type;
+        d.originA = ta.p;
+        d.originB = tb.p;
+        d.anchorA = j.type == JointType::Mouse ? j.target : transformPoint(ta, j.localAnchorA);
+        d.anchorB = transformPoint(tb, j.localAnchorB);
+        if (j.type == JointType::Prismatic || j.type == JointType::Wheel) {
+            d.axis = rotate(ta.q, j.localAxisA);
+        }
+        if (j.enableLimit) {
+            d.limitEnabled = true;
+            d.lower = j.type == JointType::Distance ? j.minLength : j.lower;
+            d.upper = j.type == JointType::Distance ? j.maxLength : j.upper;
+        }
+        out.push_back(d);
+    }
+    return out;
+}
+
 } // namespace e2d::physics

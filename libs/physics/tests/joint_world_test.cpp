@@ -243,3 +243,75 @@ E2D_JOINT_MODES(JointScene);
 
 } // namespace
 } // namespace e2d::physics::test
+
+namespace e2d::physics::test {
+namespace {
+
+// What a debug renderer gets: the bodies' origins, the anchors, a slider's axis and limits.
+TEST(JointWorld, DebugDataDescribesEveryJointForDrawing) {
+    World world(WorldDef{.gravity = {0.0f, 0.0f}});
+    BodyId ground = addStatic(world, {1.0f, 2.0f});
+    BodyId a = addDisc(world, {3.0f, 2.0f}, 0.2f, 1.0f, kPi / 2.0f);
+    BodyId b = addDisc(world, {5.0f, 2.0f}, 0.2f);
+    RevoluteJointDef r = hinge(ground, a, {1.0f, 0.0f}, {0.0f, 1.0f});
+    r.enableLimit = true;
+    r.lowerAngle = -0.5f;
+    r.upperAngle = 0.5f;
+    JointId hingeId = world.createJoint(r);
+    PrismaticJointDef p{.bodyA = a, .bodyB = b, .localAnchorA = {0.0f, -1.0f}};
+    p.localAxisA = {2.0f, 0.0f};
+    p.enableLimit = true;
+    p.lowerTranslation = -0.25f;
+    p.upperTranslation = 0.75f;
+    JointId sliderId = world.createJoint(p);
+    JointId mouseId = world.createJoint(MouseJointDef{.bodyA = ground, .bodyB = b, .target = {6.0f, 7.0f}});
+    world.destroyJoint(hingeId); // a hole in the slots is skipped
+    hingeId = world.createJoint(r);
+
+    const std::vector<JointDebugData> all = world.jointDebugData();
+    ASSERT_EQ(all.size(), 3u);
+    auto find = [&](JointId id) {
+        for (const JointDebugData& d : all) {
+            if (d.id == id) {
+                return d;
+            }
+        }
+        ADD_FAILURE() << "joint missing";
+        return JointDebugData{};
+    };
+    auto near = [](Vec2 x, Vec2 y) { return length(x - y) < 1e-5f; };
+    const JointDebugData h = find(hingeId);
+    EXPECT_EQ(h.type, JointType::Revolute);
+    EXPECT_TRUE(near(h.originA, {1.0f, 2.0f}));
+    EXPECT_TRUE(near(h.originB, {3.0f, 2.0f}));
+    EXPECT_TRUE(near(h.anchorA, {2.0f, 2.0f}));
+    // B is turned a quarter turn: its local (0, 1) points along world -x.
+    EXPECT_TRUE(near(h.anchorB, {2.0f, 2.0f}));
+    EXPECT_TRUE(h.limitEnabled);
+    EXPECT_EQ(h.lower, -0.5f);
+    EXPECT_EQ(h.upper, 0.5f);
+    EXPECT_EQ(h.axis, Vec2(0.0f, 0.0f));
+    const JointDebugData s = find(sliderId);
+    EXPECT_EQ(s.type, JointType::Prismatic);
+    // A's local (0, -1) and axis (1, 0) turned a quarter turn: world (1, 0) and (0, 1).
+    EXPECT_TRUE(near(s.anchorA, {4.0f, 2.0f}));
+    EXPECT_TRUE(near(s.axis, {0.0f, 1.0f}));
+    EXPECT_TRUE(near(s.anchorB, {5.0f, 2.0f}));
+    EXPECT_EQ(s.lower, -0.25f);
+    EXPECT_EQ(s.upper, 0.75f);
+    const JointDebugData m = find(mouseId);
+    EXPECT_TRUE(near(m.anchorA, {6.0f, 7.0f}));
+    EXPECT_TRUE(near(m.anchorB, {5.0f, 2.0f}));
+    EXPECT_FALSE(m.limitEnabled);
+    // The picture follows the bodies.
+    world.setTransform(b, {5.0f, 3.0f}, 0.0f);
+    for (const JointDebugData& d : world.jointDebugData()) {
+        if (d.id == mouseId) {
+            EXPECT_TRUE(near(d.anchorB, {5.0f, 3.0f}));
+            EXPECT_TRUE(near(d.originB, {5.0f, 3.0f}));
+        }
+    }
+}
+
+} // namespace
+} // namespace e2d::physics::test

@@ -219,6 +219,27 @@ struct WheelJointDef {
 using JointDef = std::variant<DistanceJointDef, MotorJointDef, MouseJointDef, PrismaticJointDef,
                               RevoluteJointDef, WeldJointDef, WheelJointDef>;
 
+/// What a debug renderer draws for one joint (World::jointDebugData()), world metres: the
+/// lines originA - anchorA - anchorB - originB (Box2D's picture of a joint), and for a
+/// prismatic or wheel joint its axis through anchorA, from lower to upper when limited.
+struct JointDebugData {
+    JointId id{};
+    JointType type = JointType::Distance;
+    /// The bodies' origins.
+    Vec2 originA{0.0f, 0.0f};
+    Vec2 originB{0.0f, 0.0f};
+    /// World::jointAnchorA() and jointAnchorB() (a mouse joint's A anchor is its target).
+    Vec2 anchorA{0.0f, 0.0f};
+    Vec2 anchorB{0.0f, 0.0f};
+    /// Prismatic and wheel: the unit axis in world axes; (0, 0) for other types.
+    Vec2 axis{0.0f, 0.0f};
+    /// Whether limits are on, and them: lengths (distance), translations along `axis` from
+    /// anchorA (prismatic, wheel), angles (revolute). 0 when off.
+    bool limitEnabled = false;
+    float lower = 0.0f;
+    float upper = 0.0f;
+};
+
 /// The type a def creates.
 JointType jointTypeOf(const JointDef& def);
 

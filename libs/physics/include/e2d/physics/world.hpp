@@ -214,7 +214,7 @@ public:
     [[nodiscard]] std::uint64_t jointUserData(JointId id) const;
     void setJointUserData(JointId id, std::uint64_t userData);
     /// The joint's anchors in world coordinates, metres (a mouse joint's A anchor is its
-    /// target).
+    /// target; a motor joint's is where it drives B's origin, its B anchor B's origin).
     [[nodiscard]] Vec2 jointAnchorA(JointId id) const;
     [[nodiscard]] Vec2 jointAnchorB(JointId id) const;
     /// The force the joint applied to body B during the last step, newtons, world axes (body A
@@ -251,6 +251,8 @@ public:
     /// bodies.
     void setMotorJointOffsets(JointId id, Vec2 linearOffset, float angularOffset);
     [[nodiscard]] int jointCount() const;
+    /// Every live joint's debug picture (JointDebugData), in slot order.
+    [[nodiscard]] std::vector<JointDebugData> jointDebugData() const;
 
     // --- counts ---
 
