@@ -281,6 +281,10 @@ JointId World::createJoint(const JointDef& def) {
     if (bodyA == bodyB) {
         check::fail(kCreate, field(jointTypeOf(def), "bodyA") + " and def.bodyB must differ, got the same body");
     }
+    if (w.body(bodyA).type != BodyType::Dynamic && w.body(bodyB).type != BodyType::Dynamic) {
+        check::fail(kCreate, field(jointTypeOf(def), "bodyA") +
+                                 " or def.bodyB must be dynamic, got two bodies that no force moves");
+    }
     detail::Joint made = jointFrom(def);
     made.bodyA = bodyA;
     made.bodyB = bodyB;
