@@ -4,6 +4,7 @@
 #include "world_check.hpp"
 #include "world_impl.hpp"
 
+#include <cstdint>
 #include <string>
 
 namespace e2d::physics {
@@ -63,6 +64,36 @@ void validateShapeDef(const ShapeDef& def) {
     check::requireNonNegative(fn, "def.rollingResistance", def.rollingResistance);
 }
 
+// A world's tag when WorldDef::tag is 0: the address of its heap-allocated state (which moves
+// with the World, so ids survive a move) mixed by the splitmix64 finaliser, folded to 16 bits,
+// never 0. No counter: a process-wide counter would be global mutable state.
+std::uint16_t tagFromAddress(const void* address) {
+    auto x = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(address));
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ull;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebull;
+    x ^= x >> 31;
+    auto tag = static_cast<std::uint16_t>(x ^ (x >> 16) ^ (x >> 32) ^ (x >> 48));
+    return tag == 0 ? std::uint16_t{1} : tag;
+}
+
+// "BodyId (index1 3, generation 1, world 4021)"
+template <class Id>
+std::string describe(const char* type, Id id) {
+    return std::string(type) + " (index1 " + std::to_string(id.index1) + ", generation " +
+           std::to_string(id.generation) + ", world " + std::to_string(id.world) + ")";
+}
+
+template <class Id>
+[[noreturn]] void failHandle(const char* function, const char* type, Id id, std::uint16_t tag) {
+    if (!id.isNull() && id.world != tag) {
+        check::fail(function, describe(type, id) + " belongs to another world (this world's tag is " +
+                                  std::to_string(tag) + ")");
+    }
+    check::fail(function, "stale or null " + describe(type, id));
+}
+
 std::uint16_t nextGeneration(std::uint16_t generation) {
     // Skip 0 on wrap-around so a zero generation is never live.
     ++generation;
@@ -76,8 +107,7 @@ std::uint16_t nextGeneration(std::uint16_t generation) {
 int World::Impl::require(BodyId id, const char* function) const {
     int index = find(id);
     if (index == kNullIndex) {
-        check::fail(function, "stale or null BodyId (index1 " + std::to_string(id.index1) +
-                                  ", generation " + std::to_string(id.generation) + ")");
+        failHandle(function, "BodyId", id, tag);
     }
     return index;
 }
@@ -85,8 +115,7 @@ int World::Impl::require(BodyId id, const char* function) const {
 int World::Impl::require(ShapeId id, const char* function) const {
     int index = find(id);
     if (index == kNullIndex) {
-        check::fail(function, "stale or null ShapeId (index1 " + std::to_string(id.index1) +
-                                  ", generation " + std::to_string(id.generation) + ")");
+        failHandle(function, "ShapeId", id, tag);
     }
     return index;
 }
@@ -154,6 +183,7 @@ World::World(const WorldDef& def) {
     impl_->gravity = def.gravity;
     impl_->collisionAlgorithm = def.collisionAlgorithm;
     impl_->speculativeDistance = def.speculativeDistance;
+    impl_->tag = def.tag != 0 ? def.tag : tagFromAddress(impl_.get());
     impl_->bodies.reserve(static_cast<std::size_t>(def.bodyCapacity));
     impl_->bodyIds.reserve(def.bodyCapacity);
     impl_->shapes.reserve(static_cast<std::size_t>(def.shapeCapacity));
@@ -173,6 +203,7 @@ void World::setGravity(Vec2 gravity) {
 
 CollisionAlgorithm World::collisionAlgorithm() const { return impl_->collisionAlgorithm; }
 float World::speculativeDistance() const { return impl_->speculativeDistance; }
+std::uint16_t World::tag() const { return impl_->tag; }
 
 BodyId World::createBody(const BodyDef& def) {
     validateBodyDef(def);

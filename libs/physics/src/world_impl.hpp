@@ -61,6 +61,8 @@ struct World::Impl {
     Vec2 gravity{0.0f, -10.0f};
     CollisionAlgorithm collisionAlgorithm = CollisionAlgorithm::Sat;
     float speculativeDistance = kSpeculativeDistance;
+    // Written into every id handed out and checked on every use (WorldDef::tag); never 0.
+    std::uint16_t tag = 1;
 
     std::vector<detail::Body> bodies;
     std::vector<detail::Shape> shapes;
@@ -70,7 +72,7 @@ struct World::Impl {
 
     // Index of a live body named by `id`, or kNullIndex.
     [[nodiscard]] int find(BodyId id) const {
-        if (id.index1 == 0 || id.index1 > bodies.size()) {
+        if (id.index1 == 0 || id.index1 > bodies.size() || id.world != tag) {
             return detail::kNullIndex;
         }
         const detail::Body& body = bodies[id.index1 - 1];
@@ -78,7 +80,7 @@ struct World::Impl {
                                                               : detail::kNullIndex;
     }
     [[nodiscard]] int find(ShapeId id) const {
-        if (id.index1 == 0 || id.index1 > shapes.size()) {
+        if (id.index1 == 0 || id.index1 > shapes.size() || id.world != tag) {
             return detail::kNullIndex;
         }
         const detail::Shape& shape = shapes[id.index1 - 1];
@@ -90,10 +92,12 @@ struct World::Impl {
     int require(ShapeId id, const char* function) const;
 
     [[nodiscard]] BodyId bodyId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1, bodies[static_cast<std::size_t>(index)].generation};
+        return {static_cast<std::uint32_t>(index) + 1,
+                bodies[static_cast<std::size_t>(index)].generation, tag};
     }
     [[nodiscard]] ShapeId shapeId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1, shapes[static_cast<std::size_t>(index)].generation};
+        return {static_cast<std::uint32_t>(index) + 1,
+                shapes[static_cast<std::size_t>(index)].generation, tag};
     }
     detail::Body& body(int index) { return bodies[static_cast<std::size_t>(index)]; }
     const detail::Body& body(int index) const { return bodies[static_cast<std::size_t>(index)]; }

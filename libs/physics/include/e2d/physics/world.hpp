@@ -35,6 +35,14 @@ struct WorldDef {
     int bodyCapacity = 0;
     /// Shapes to reserve room for, >= 0. Default 0 (grow on demand).
     int shapeCapacity = 0;
+    /// The tag this world writes into every id it hands out (BodyId::world, ShapeId::world);
+    /// an id whose tag is not this world's is rejected like a stale one. 1..65535: used as
+    /// given (choose distinct tags to make ids of live worlds never mix up, or the same tag
+    /// on every run so id values repeat exactly). Default 0: derived from the address of the
+    /// world's internal state, never 0 (no counter or other global state); two live worlds then
+    /// share a tag with probability 1/65535, and id values differ from run to run (the
+    /// simulation itself does not depend on them).
+    std::uint16_t tag = 0;
 
     // --- dynamics (World::step) ---
 
@@ -106,11 +114,9 @@ struct ShapeDef {
 
 /// A physics world. Owns its bodies and shapes, hands out BodyId and ShapeId handles, and
 /// checks every handle on use: a stale or null handle throws core::Error (isValid() tells
-/// beforehand). Functions that throw leave the world unchanged. Worlds are independent: any
+/// beforehand), and so does a handle from another world (each id carries its world's tag, see
+/// WorldDef::tag). Functions that throw leave the world unchanged. Worlds are independent: any
 /// number may live in one process, each used from one thread at a time.
-///
-/// Handles are not tagged with their world: a handle from another world is only caught when
-/// its slot or generation does not exist here.
 class World {
 public:
     /// Throws core::Error naming the first invalid field of `def`.
@@ -129,6 +135,8 @@ public:
     void setGravity(Vec2 gravity);
     [[nodiscard]] CollisionAlgorithm collisionAlgorithm() const;
     [[nodiscard]] float speculativeDistance() const;
+    /// The tag in every id this world hands out (WorldDef::tag, or the one derived), never 0.
+    [[nodiscard]] std::uint16_t tag() const;
 
     // --- bodies ---
 
