@@ -120,6 +120,14 @@ int World::Impl::require(ShapeId id, const char* function) const {
     return index;
 }
 
+void World::Impl::requireUnlocked(const char* function) const {
+    if (lockedBy != nullptr) {
+        check::fail(function, std::string("cannot run inside the callback of ") + lockedBy +
+                                  "() (it would change what the callback is walking); collect "
+                                  "the ids and call it after " + lockedBy + "() returns");
+    }
+}
+
 void World::Impl::createProxy(int shapeIndex) {
     detail::Shape& s = shape(shapeIndex);
     s.proxyKey = broadPhase.createProxy(s.aabb, body(s.body).type, s.filter.categoryBits,
@@ -206,6 +214,7 @@ float World::speculativeDistance() const { return impl_->speculativeDistance; }
 std::uint16_t World::tag() const { return impl_->tag; }
 
 BodyId World::createBody(const BodyDef& def) {
+    impl_->requireUnlocked("createBody");
     validateBodyDef(def);
     Impl& w = *impl_;
     int index = w.bodyIds.allocate();
@@ -228,6 +237,7 @@ BodyId World::createBody(const BodyDef& def) {
 }
 
 void World::destroyBody(BodyId id) {
+    impl_->requireUnlocked("destroyBody");
     Impl& w = *impl_;
     int index = w.require(id, "destroyBody");
     while (w.body(index).headShape != kNullIndex) {
@@ -250,6 +260,7 @@ Transform World::transform(BodyId id) const {
 }
 
 void World::setTransform(BodyId id, Vec2 position, float angle) {
+    impl_->requireUnlocked("setTransform");
     Impl& w = *impl_;
     int index = w.require(id, "setTransform");
     check::requirePosition("setTransform", "position", position);
@@ -305,6 +316,7 @@ bool World::isBodyEnabled(BodyId id) const {
 }
 
 void World::setBodyEnabled(BodyId id, bool enabled) {
+    impl_->requireUnlocked("setBodyEnabled");
     Impl& w = *impl_;
     int index = w.require(id, "setBodyEnabled");
     if (w.body(index).enabled == enabled) {
@@ -335,6 +347,7 @@ std::vector<ShapeId> World::bodyShapes(BodyId id) const {
 }
 
 ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ShapeGeometry& geometry) {
+    impl_->requireUnlocked("createShape");
     Impl& w = *impl_;
     int bodyIndex = w.require(bodyId, "createShape");
     validateShapeDef(def);
@@ -375,6 +388,7 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ShapeGeomet
 }
 
 void World::destroyShape(ShapeId id) {
+    impl_->requireUnlocked("destroyShape");
     impl_->destroyShapeAt(impl_->require(id, "destroyShape"));
 }
 
@@ -406,6 +420,7 @@ Filter World::shapeFilter(ShapeId id) const {
 }
 
 void World::setShapeFilter(ShapeId id, const Filter& filter) {
+    impl_->requireUnlocked("setShapeFilter");
     Impl& w = *impl_;
     int index = w.require(id, "setShapeFilter");
     detail::Shape& s = w.shape(index);

@@ -383,6 +383,7 @@ StepCounters World::stepCounters() const { return impl_->sim.counters; }
 int World::contactCount() const { return impl_->sim.contactCount; }
 
 void World::forEachTouchingContact(FunctionRef<void(const ContactData&)> callback) const {
+    Impl::CallbackLock lock(*impl_, "forEachTouchingContact");
     for (const detail::Contact& c : impl_->sim.contacts) {
         if (c.alive && c.touching && !c.sensor) {
             callback(ContactData{c.idA, c.idB, &c.manifold});

@@ -87,6 +87,28 @@ struct World::Impl {
         return shape.alive && shape.generation == id.generation ? static_cast<int>(id.index1 - 1)
                                                                 : detail::kNullIndex;
     }
+    // The function whose callback is running (overlapAabb, forEachCandidatePair,
+    // forEachTouchingContact), or nullptr. Meanwhile, functions that would change what the
+    // callback walks (the broad phase, the contacts, the object arrays) refuse to run.
+    mutable const char* lockedBy = nullptr;
+    // Throws core::Error naming `function` and the running callback's function, if any.
+    void requireUnlocked(const char* function) const;
+    // Locks the world while a query's callback runs; nests.
+    class CallbackLock {
+    public:
+        CallbackLock(const Impl& world, const char* function)
+            : world_(world), previous_(world.lockedBy) {
+            world_.lockedBy = function;
+        }
+        ~CallbackLock() { world_.lockedBy = previous_; }
+        CallbackLock(const CallbackLock&) = delete;
+        CallbackLock& operator=(const CallbackLock&) = delete;
+
+    private:
+        const Impl& world_;
+        const char* previous_;
+    };
+
     // Like find(), but throws core::Error naming `function` for a stale or null handle.
     int require(BodyId id, const char* function) const;
     int require(ShapeId id, const char* function) const;

@@ -28,6 +28,7 @@ bool isFiniteState(const detail::BodySim& s, const detail::BodyState& st) {
 } // namespace
 
 void World::step(float timeStep) {
+    impl_->requireUnlocked("step");
     if (!(isFinite(timeStep) && timeStep >= 0.0f)) {
         check::fail("step", "timeStep must be finite and >= 0, got " + check::text(timeStep));
     }

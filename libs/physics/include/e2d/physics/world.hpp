@@ -117,6 +117,15 @@ struct ShapeDef {
 /// beforehand), and so does a handle from another world (each id carries its world's tag, see
 /// WorldDef::tag). Functions that throw leave the world unchanged. Worlds are independent: any
 /// number may live in one process, each used from one thread at a time.
+///
+/// Callbacks (overlapAabb(), forEachCandidatePair(), forEachTouchingContact()) run while the
+/// world walks its shapes, pairs or contacts. Inside them, reading anything, queries, velocities,
+/// forces, impulses, sleep and user data are allowed; createBody(), destroyBody(),
+/// createShape(), destroyShape(), setTransform(), setBodyEnabled(), setShapeFilter(),
+/// updatePairs() and step() throw core::Error naming themselves and the running query (collect
+/// the ids, act after it returns). The event arrays are read after step() returns: anything but
+/// step() may be called while going through them (events of what is destroyed then are
+/// reported by the next step()).
 class World {
 public:
     /// Throws core::Error naming the first invalid field of `def`.
@@ -220,6 +229,7 @@ public:
     [[nodiscard]] int candidatePairCount() const;
     /// Calls `callback(a, b)` once per current pair, a's slot before b's, in the broad phase's
     /// table order: not sorted, but the same operations give the same order (determinism).
+    /// The world is locked during the callback (see World).
     void forEachCandidatePair(FunctionRef<void(ShapeId, ShapeId)> callback) const;
 
     // --- queries (world space; they read the broad phase, so updatePairs() is not needed) ---
@@ -236,7 +246,9 @@ public:
     [[nodiscard]] std::optional<RayResult> rayCastShape(ShapeId id, Vec2 origin, Vec2 translation,
                                                         bool ignoreBackFaces = true) const;
     /// Calls `callback(shape)` for each shape whose tight world box overlaps `box`; the callback
-    /// returns false to stop. `box` must be finite with lower <= upper.
+    /// returns false to stop. `box` must be finite with lower <= upper. The world is locked
+    /// during the callback (no creating, destroying or moving; see World): to destroy what it
+    /// finds, collect the ids (or use the overload returning them) and destroy them after.
     void overlapAabb(const Aabb& box, const QueryFilter& filter,
                      FunctionRef<bool(ShapeId)> callback) const;
     /// The shapes whose tight world box overlaps `box`, in slot order.
@@ -331,7 +343,7 @@ public:
     /// Number of contacts (pairs of shapes whose fat boxes overlap), touching or not.
     [[nodiscard]] int contactCount() const;
     /// Calls `callback` for each touching solid contact (manifold with points), in a fixed
-    /// order.
+    /// order. The world is locked during the callback (see World).
     void forEachTouchingContact(FunctionRef<void(const ContactData&)> callback) const;
 
 private:
