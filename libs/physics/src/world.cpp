@@ -60,7 +60,10 @@ void validateShapeDef(const ShapeDef& def) {
     const char* fn = "createShape";
     check::requireNonNegative(fn, "def.density", def.density);
     check::requireNonNegative(fn, "def.friction", def.friction);
-    check::requireNonNegative(fn, "def.restitution", def.restitution);
+    if (!(isFinite(def.restitution) && def.restitution >= 0.0f && def.restitution <= 1.0f)) {
+        check::fail(fn, "def.restitution must be finite and in [0, 1], got " +
+                            check::text(def.restitution));
+    }
     check::requireNonNegative(fn, "def.rollingResistance", def.rollingResistance);
 }
 

@@ -377,6 +377,7 @@ std::span<const SensorEndTouchEvent> World::sensorEndEvents() const {
 }
 std::span<const ContactHitEvent> World::hitEvents() const { return impl_->sim.hitEvents; }
 std::span<const BodyId> World::nonFiniteBodies() const { return impl_->sim.nonFiniteBodies; }
+std::span<const BodyId> World::outOfRangeBodies() const { return impl_->sim.outOfRangeBodies; }
 
 StepCounters World::stepCounters() const { return impl_->sim.counters; }
 

@@ -229,6 +229,11 @@ TEST_F(ComponentsTest, DefinitionErrorsNameTheFieldAndValue) {
     def.density = std::nanf("");
     EXPECT_EQ(message([&] { Collider c(physics, box(0.5f), def); }),
               "physics::Collider::Collider(): def.density must be finite and >= 0, got nan");
+    def = {};
+    def.restitution = 1.25f;
+    EXPECT_EQ(message([&] { Collider c(physics, box(0.5f), def); }),
+              "physics::Collider::Collider(): def.restitution must be finite and in [0, 1], got "
+              "1.25");
     physics::RigidbodyDef rb;
     rb.gravityScale = INFINITY;
     EXPECT_EQ(message([&] { Rigidbody r(physics, rb); }),

@@ -95,11 +95,15 @@ struct BodyDef {
 
 /// How a shape is created. World::createShape() validates every field.
 struct ShapeDef {
-    /// kg/m^2, finite, >= 0. Default 1.
+    /// kg/m^2, finite, >= 0. Default 1. A dynamic body's mass, centre and rotational inertia
+    /// come from its shapes' densities and areas. When they give no mass (every shape of
+    /// density 0, or only segments, which have no area) the body gets 1 kg at its origin and
+    /// no rotational inertia, as in Box2D 2.4: it falls and is pushed but never turns. Give it
+    /// a density, a shape with area, or World::setMassData().
     float density = 1.0f;
     /// Coulomb friction coefficient, finite, >= 0. Default 0.6.
     float friction = 0.6f;
-    /// Bounciness, finite, >= 0 (1 is elastic). Default 0.
+    /// Bounciness, finite, in [0, 1] (0 does not bounce, 1 is elastic). Default 0.
     float restitution = 0.0f;
     /// Rolling resistance (torque per normal force), metres, finite, >= 0. Default 0.
     float rollingResistance = 0.0f;
@@ -270,8 +274,8 @@ public:
 
     // --- dynamics (world_step.cpp, world_dynamics.cpp) ---
 
-    /// Advances the world by `timeStep` seconds (finite, >= 0; 0 updates contacts and events
-    /// only): pairs, contacts, narrow phase, solver, continuous collision, sleeping, events.
+    /// Advances the world by `timeStep` seconds (finite, in [0, kMaxTimeStep (0.25 s)]; 0
+    /// updates contacts and events only): pairs, contacts, narrow phase, solver, continuous collision, sleeping, events.
     /// Call it at a fixed rate (e.g. 1/60 s) for stable results.
     void step(float timeStep);
     [[nodiscard]] const SolverDef& solverDef() const;
@@ -336,6 +340,10 @@ public:
     /// Bodies the last step disabled because their state became non-finite (NaN or infinite
     /// position or velocity); the rest of the world went on.
     [[nodiscard]] std::span<const BodyId> nonFiniteBodies() const;
+    /// Bodies the last step disabled because their origin left the coordinate range (|x| or
+    /// |y| beyond kHuge); each keeps its last transform inside the range and its velocity is
+    /// zeroed, so it can be moved back (setTransform()) and enabled again.
+    [[nodiscard]] std::span<const BodyId> outOfRangeBodies() const;
 
     /// What the last step computed (see StepCounters).
     [[nodiscard]] StepCounters stepCounters() const;
