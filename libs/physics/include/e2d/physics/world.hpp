@@ -79,9 +79,9 @@ struct BodyDef {
     float gravityScale = 1.0f;
     /// The body never rotates (infinite rotational inertia). Default false.
     bool fixedRotation = false;
-    /// The centre of mass never moves along world x (the seed's freeze X). Default false.
+    /// The centre of mass never moves along world x. Default false.
     bool lockX = false;
-    /// The centre of mass never moves along world y (the seed's freeze Y). Default false.
+    /// The centre of mass never moves along world y. Default false.
     bool lockY = false;
     /// A fast dynamic body: continuous collision every step (not only when it moves far),
     /// against static shapes and also against kinematic and non-bullet dynamic ones.
@@ -272,7 +272,7 @@ public:
                                                      const Transform& transform, Vec2 translation,
                                                      const QueryFilter& filter = {}) const;
 
-    // --- dynamics (world_step.cpp, world_dynamics.cpp) ---
+    // --- dynamics ---
 
     /// Advances the world by `timeStep` seconds (finite, in [0, kMaxTimeStep (0.25 s)]; 0
     /// updates contacts and events only): pairs, contacts, narrow phase, solver, continuous collision, sleeping, events.
@@ -331,7 +331,8 @@ public:
     /// Number of awake dynamic and kinematic bodies.
     [[nodiscard]] int awakeBodyCount() const;
 
-    /// Events of the last step (see events.hpp), valid until the next step.
+    /// Events of the last step (ContactBeginTouchEvent and the others), valid until the next
+    /// step.
     [[nodiscard]] std::span<const ContactBeginTouchEvent> contactBeginEvents() const;
     [[nodiscard]] std::span<const ContactEndTouchEvent> contactEndEvents() const;
     [[nodiscard]] std::span<const SensorBeginTouchEvent> sensorBeginEvents() const;
