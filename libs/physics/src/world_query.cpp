@@ -93,7 +93,8 @@ std::optional<RayResult> entryHit(const detail::Shape& shape, const Transform& x
 // inside, so its one hit is its entry.
 std::optional<RayResult> exitHit(const detail::Shape& shape, const Transform& xf,
                                  const RayCastInput& input) {
-    if (typeOf(shape.geometry) == ShapeType::Segment) {
+    if (typeOf(shape.geometry) == ShapeType::Segment ||
+        typeOf(shape.geometry) == ShapeType::ChainSegment) {
         return std::nullopt;
     }
     Vec2 end = input.origin + input.maxFraction * input.translation;
