@@ -163,7 +163,7 @@ Manifold collideChainSegment(const ChainSegment& a, const Transform& xfA, const 
     }
     const Vec2 n = invRotate(xfA.q, m.normal);
     const float lean = dot(n, d1);
-    bool snap = dot(n, normal) <= 0.0f; // pointing behind the face (deep overlap)
+    bool snap = dot(n, normal) < 0.0f; // pointing behind the face (deep overlap)
     if (!snap && std::fabs(lean) <= kFaceSine) {
         return m;
     }

@@ -354,7 +354,9 @@ public:
     /// and moved by `translation` (metres, finite, non-zero), would touch. `point` is on the
     /// surface of the shape hit, `normal` points out of it towards the moving shape and
     /// `fraction` is how far along `translation` they meet. A shape the geometry already
-    /// overlaps at the start is hit at fraction 0 with a zero normal. Back faces play no part.
+    /// overlaps at the start is hit at fraction 0 with a zero normal. Back faces play no part:
+    /// a chain segment is seen only from its front (the moving shape's box centre in front of
+    /// it, moving against its normal).
     /// Throws core::Error for an invalid geometry or non-finite input.
     [[nodiscard]] std::optional<RayResult> castShape(const ShapeGeometry& geometry,
                                                      const Transform& transform, Vec2 translation,
