@@ -125,7 +125,9 @@ int World::Impl::require(ShapeId id, const char* function) const {
 
 void World::Impl::requireUnlocked(const char* function) const {
     if (lockedBy != nullptr) {
-        check::fail(function, std::string("cannot run inside the callback of ") + lockedBy +
+        const std::string callback =
+            lockedHook != nullptr ? std::string("the ") + lockedHook + " callback" : "the callback";
+        check::fail(function, "cannot run inside " + callback + " of " + lockedBy +
                                   "() (it would change what the callback is walking); collect "
                                   "the ids and call it after " + lockedBy + "() returns");
     }
@@ -181,7 +183,14 @@ bool World::Impl::shouldPair(int shapeA, int shapeB) const {
     if (body(a.body).type != BodyType::Dynamic && body(b.body).type != BodyType::Dynamic) {
         return false;
     }
-    return shouldCollide(a.filter, b.filter);
+    if (!shouldCollide(a.filter, b.filter)) {
+        return false;
+    }
+    if (!hooks.pairFilter) {
+        return true;
+    }
+    CallbackLock lock(*this, sim.inStep ? "step" : "updatePairs", "pair filter");
+    return hooks.pairFilter(shapeId(shapeA), shapeId(shapeB));
 }
 
 // --- World ---
@@ -372,6 +381,9 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ShapeGeomet
     s.restitution = def.restitution;
     s.rollingResistance = def.rollingResistance;
     s.isSensor = def.isSensor;
+    s.contactEvents = def.enableContactEvents;
+    s.sensorEvents = def.enableSensorEvents;
+    s.hitEvents = def.enableHitEvents;
     s.body = bodyIndex;
 
     detail::Body& b = w.body(bodyIndex);

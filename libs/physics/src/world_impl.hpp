@@ -6,6 +6,7 @@
 #include "broad_phase.hpp"
 #include "id_pool.hpp"
 #include "simulation.hpp"
+#include "world_hooks.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -51,6 +52,10 @@ struct Shape {
     std::uint16_t generation = 1;
     bool isSensor = false;
     bool alive = false;
+    // Event switches (ShapeDef::enable*Events).
+    bool contactEvents = true;
+    bool sensorEvents = true;
+    bool hitEvents = true;
 };
 
 } // namespace e2d::physics::detail
@@ -88,25 +93,32 @@ struct World::Impl {
                                                                 : detail::kNullIndex;
     }
     // The function whose callback is running (overlapAabb, forEachCandidatePair,
-    // forEachTouchingContact), or nullptr. Meanwhile, functions that would change what the
+    // forEachTouchingContact, or step/updatePairs for the hooks), or nullptr, and for a hook
+    // its name ("pre-solve", "pair filter"). Meanwhile, functions that would change what the
     // callback walks (the broad phase, the contacts, the object arrays) refuse to run.
     mutable const char* lockedBy = nullptr;
+    mutable const char* lockedHook = nullptr;
     // Throws core::Error naming `function` and the running callback's function, if any.
     void requireUnlocked(const char* function) const;
     // Locks the world while a query's callback runs; nests.
     class CallbackLock {
     public:
-        CallbackLock(const Impl& world, const char* function)
-            : world_(world), previous_(world.lockedBy) {
+        CallbackLock(const Impl& world, const char* function, const char* hook = nullptr)
+            : world_(world), previous_(world.lockedBy), previousHook_(world.lockedHook) {
             world_.lockedBy = function;
+            world_.lockedHook = hook;
         }
-        ~CallbackLock() { world_.lockedBy = previous_; }
+        ~CallbackLock() {
+            world_.lockedBy = previous_;
+            world_.lockedHook = previousHook_;
+        }
         CallbackLock(const CallbackLock&) = delete;
         CallbackLock& operator=(const CallbackLock&) = delete;
 
     private:
         const Impl& world_;
         const char* previous_;
+        const char* previousHook_;
     };
 
     // Like find(), but throws core::Error naming `function` for a stale or null handle.
@@ -135,6 +147,8 @@ struct World::Impl {
     // --- dynamics (world_step.cpp, contact.cpp, island.cpp, world_dynamics.cpp) ---
 
     detail::Simulation sim;
+    // Pre-solve and pair filter callbacks, move events (world_hooks.cpp).
+    detail::Hooks hooks;
 
     // Sets the body's motion fields from the def (createBody()).
     void initMotion(int bodyIndex, const BodyDef& def);
@@ -152,6 +166,15 @@ struct World::Impl {
     void scheduleWide(int constraintCount);
     void solveContinuous(int simIndex);
     void updateSleep(float dt);
+    // Fills hooks.moveEvents from this step's solver bodies (world_hooks.cpp).
+    void collectMoveEvents(float dt);
+    // Re-mixes the materials and event switches of the shape's contacts after a setter.
+    void refreshContactMaterials(int shapeIndex);
+    // Continuous collision's extra rules: a chain segment is one-sided, and the pair filter
+    // callback may refuse the pair (world_hooks.cpp).
+    [[nodiscard]] bool passesChainAndFilter(int movingShape, int otherShape,
+                                            const Transform& xfMoving,
+                                            const Transform& xfOther) const;
 };
 
 } // namespace e2d::physics

@@ -51,6 +51,12 @@ void World::step(float timeStep) {
     s.endEvents.swap(s.pendingEndEvents);
     s.sensorEndEvents.swap(s.pendingSensorEndEvents);
     s.inStep = true;
+    // A callback (pre-solve, pair filter) that throws leaves the step where it was, and the
+    // world out of it.
+    struct InStep {
+        detail::Simulation& sim;
+        ~InStep() { sim.inStep = false; }
+    } inStep{s};
     w.updateContacts(timeStep);
     if (timeStep > 0.0f) {
         w.solve(timeStep);
@@ -58,7 +64,7 @@ void World::step(float timeStep) {
         s.counters.contactConstraints = static_cast<int>(s.constraintContacts.size());
         w.updateSleep(timeStep);
     }
-    s.inStep = false;
+    w.collectMoveEvents(timeStep);
 }
 
 namespace {
@@ -510,8 +516,8 @@ void World::Impl::solve(float dt) {
     }
     for (const detail::Simulation::HitCandidate& h : s.hitCandidates) {
         const detail::Contact& c = s.contacts[static_cast<std::size_t>(h.contact)];
-        if (!c.alive) {
-            continue; // ended with a non-finite body
+        if (!c.alive || !c.hitEvents) {
+            continue; // ended with a non-finite body, or a shape's hit events are off
         }
         // A speculative point sits midway across the gap; the hit is on A's surface.
         const ManifoldPoint& mp = c.manifold.points[h.point];
