@@ -216,15 +216,6 @@ const char* jointTypeName(JointType type) {
     return "unknown";
 }
 
-int World::Impl::require(JointId id, const char* function) const {
-    int index = find(id);
-    if (index == kNullIndex) {
-        check::fail(function, "stale or null JointId (index1 " + std::to_string(id.index1) + ", generation " +
-                                  std::to_string(id.generation) + ")");
-    }
-    return index;
-}
-
 bool World::Impl::jointBlocksCollision(int bodyA, int bodyB) const {
     // Walk the shorter-looking list: the one of the body with fewer joints is unknown, so A's.
     for (int ji = body(bodyA).jointHead; ji != kNullIndex;) {
@@ -274,6 +265,7 @@ void World::Impl::destroyJointAt(int jointIndex) {
 }
 
 JointId World::createJoint(const JointDef& def) {
+    impl_->requireUnlocked(kCreate);
     Impl& w = *impl_;
     const auto [idA, idB] = bodiesOf(def);
     const int bodyA = w.require(idA, kCreate);
@@ -333,7 +325,10 @@ JointId World::createJoint(const JointDef& def) {
     return w.jointId(index);
 }
 
-void World::destroyJoint(JointId id) { impl_->destroyJointAt(impl_->require(id, "destroyJoint")); }
+void World::destroyJoint(JointId id) {
+    impl_->requireUnlocked("destroyJoint");
+    impl_->destroyJointAt(impl_->require(id, "destroyJoint"));
+}
 
 bool World::isValid(JointId id) const { return impl_->find(id) != kNullIndex; }
 
