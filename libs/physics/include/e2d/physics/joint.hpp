@@ -8,16 +8,55 @@
 #include <cstdint>
 #include <variant>
 
-/// Joints: constraints between two bodies of a World, created from def structs
-/// (World::createJoint()) and named by JointIds. A joint is destroyed with either of its bodies.
+/// Joints: constraints between two bodies of a World.
 ///
-/// Every joint is solved with the contacts in both solver modes. Springs are given as a
-/// frequency (hertz) and a damping ratio, as in Box2D v3: a spring of `hertz` f acting on an
-/// effective mass m has stiffness k = m (2 pi f)^2: for a body held by a static one at its
-/// centre of mass, m is the body's mass; an angular spring's m is the bodies' effective
+/// Making and naming one. Fill one of the def structs below (each field's unit, default and
+/// valid range are documented at the field) and pass it to World::createJoint(), which checks
+/// every field and throws core::Error naming the type, the field and the value
+/// ("physics::World::createJoint(): revolute def.lowerAngle must be <= def.upperAngle, got 1 >
+/// -1"). Its two bodies must be live bodies of that world, different, at least one dynamic. The
+/// JointId it returns is generation-checked and carries its world's tag like BodyId and ShapeId:
+/// a stale id, or one from another world, throws on use (World::isValid() tells beforehand).
+/// World::joint(id) gives a Joint view (views.hpp) with the functions below as members;
+/// Body::createJoint() and Body::joints() do the same from a body.
+///
+/// Lifetime. A joint lives until World::destroyJoint() or until either of its bodies is
+/// destroyed (World::destroyBody() destroys the body's joints first). Making or destroying a
+/// joint wakes both bodies. Neither may be called inside a query's or hook's callback (see
+/// World); reading joints and changing motors, limits and springs there is allowed.
+///
+/// Collisions. Unless the def's collideConnected is true, the two bodies' shapes do not collide
+/// with each other while the joint lives (a contact between them ends when it is made).
+///
+/// Reading it. World::jointReactionForce() and jointReactionTorque(): what the joint applied
+/// to body B during the last step (N, N*m; a game breaks a joint above a threshold).
+/// World::jointValue(): a revolute joint's angle, a prismatic or wheel joint's translation, a
+/// distance joint's length. World::jointAnchorA()/jointAnchorB(), jointBodyA()/jointBodyB(),
+/// jointType(), jointUserData(), bodyJoints(). World::jointDebugData(): every joint's picture
+/// for a debug renderer.
+///
+/// Changing it. World::enableJointMotor(), setJointMotorSpeed(), setJointMaxMotorForce(),
+/// enableJointLimit(), setJointLimits(), setJointSpring(), setMouseJointTarget(),
+/// setMotorJointOffsets() (each says which types it takes and throws for the others); each
+/// wakes the bodies.
+///
+/// Game objects. JointComponent (joint_component.hpp) makes a joint between its object's
+/// Rigidbody and another object's (or the world) from any of these defs.
+///
+/// Solving. Every joint is solved with the contacts in both solver modes: in the soft step,
+/// sub-stepped, warm started and relaxed like the contacts (before them in each pass), per
+/// block on the wide solver, bit-identical from run to run; in classic mode, in the velocity
+/// iterations and then the position iterations (Box2D 2.4's recipe). Jointed bodies are one
+/// island: they sleep and wake together (a mouse joint does not keep its body awake).
+///
+/// Springs are given as a frequency (hertz) and a damping ratio, as in Box2D v3: a spring of
+/// `hertz` f acting on an effective mass m has stiffness k = m (2 pi f)^2: for a body held by a
+/// static one at its centre of mass, m is the body's mass; an angular spring's m is the bodies' effective
 /// rotational inertia about their centres of mass (1 / (1 / I_A + 1 / I_B)), wherever the anchor.
-/// A motor or limit pushing a light body hard against a rigid part compresses that part's soft
-/// constraint (60 Hz at the sub-step rate) by force / (m (2 pi 60)^2).
+/// The rigid parts of a joint (a revolute's shared point, a limit reached) are themselves stiff
+/// springs in the soft step, of 60 Hz at the sub-step rate: a joint carrying force F between
+/// effective masses m stretches by F / (m (2 pi 60)^2) (0.07 mm for F / m = 10 m/s^2), so a
+/// long heavy chain stretches a little; classic mode's position iterations stretch it less.
 /// A zero hertz spring has no stiffness (with damping 0 it does nothing).
 ///
 /// Anchors are in each body's local frame (metres from the body origin). Angles are radians,
