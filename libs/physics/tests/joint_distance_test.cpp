@@ -107,6 +107,40 @@ TEST_P(DistanceJoint, MotorDrivesTheLength) {
     EXPECT_NEAR(world.jointValue(joint), 3.0f, 0.01f);
 }
 
+// A body thrown towards its anchor stops at minLength (the limit is inelastic), and the limits
+// changed later hold too.
+TEST_P(DistanceJoint, MinLengthStopsABodyComingCloser) {
+    World world(worldDef({0.0f, 0.0f}));
+    BodyId anchor = addStatic(world);
+    BodyId ball = addDisc(world, {2.0f, 0.0f}, 0.1f);
+    DistanceJointDef def;
+    def.bodyA = anchor;
+    def.bodyB = ball;
+    def.length = 2.0f;
+    def.enableLimit = true;
+    def.minLength = 1.0f;
+    def.maxLength = 3.0f;
+    JointId joint = world.createJoint(def);
+    world.setLinearVelocity(ball, {-3.0f, 0.0f});
+    float shortest = 2.0f;
+    for (int i = 0; i < 60; ++i) {
+        world.step(kJointStep);
+        shortest = std::min(shortest, world.jointValue(joint));
+    }
+    EXPECT_GT(shortest, 1.0f - 0.01f);
+    EXPECT_NEAR(world.jointValue(joint), 1.0f, 0.01f);
+    EXPECT_NEAR(world.linearVelocity(ball).x, 0.0f, 0.05f);
+    // Narrower limits: thrown outwards, it now stops at 1.5 m.
+    world.setJointLimits(joint, 0.5f, 1.5f);
+    world.setLinearVelocity(ball, {2.0f, 0.0f});
+    run(world, 1.0f);
+    EXPECT_NEAR(world.jointValue(joint), 1.5f, 0.01f);
+    // Limits off, no spring: a rigid rod of def.length (2 m) again.
+    world.enableJointLimit(joint, false);
+    run(world, 1.0f);
+    EXPECT_NEAR(world.jointValue(joint), 2.0f, 0.01f);
+}
+
 E2D_JOINT_MODES(DistanceJoint);
 
 } // namespace
