@@ -161,6 +161,45 @@ TEST_F(JointComponentTest, JointGoesWithEitherRigidbodyOrTheComponent) {
     EXPECT_EQ(physics.world().jointCount(), 0);
 }
 
+// Breaks its object's joint when something hits the object.
+class BreakOnHit : public core::Component {
+public:
+    void onCollisionEnter(const core::ContactInfo&) override {
+        if (JointComponent* joint = gameObject()->getComponent<JointComponent>()) {
+            joint->disconnect();
+            ++breaks;
+        }
+    }
+    int breaks = 0;
+};
+
+// A game breaks a joint from an event callback: a box dropped on a hanging ball breaks its
+// cord, and the ball falls.
+TEST_F(JointComponentTest, AJointBrokenInACollisionCallbackLetsGo) {
+    core::GameObject* bob = nullptr;
+    JointComponent* cord = nullptr;
+    BreakOnHit* breaker = nullptr;
+    start([&](core::Scene& s) {
+        bob = &ball(s, {0.0f, 4.0f});
+        physics::DistanceJointDef d;
+        d.localAnchorA = {0.0f, 5.0f};
+        d.length = 1.0f;
+        cord = bob->addComponent<JointComponent>(physics, JointComponentDef{d, {}});
+        breaker = bob->addComponent<BreakOnHit>();
+        core::GameObject& box = s.createGameObject();
+        box.setPosition(glm::vec2{0.0f, 4.6f});
+        box.addComponent<Rigidbody>(physics);
+        box.addComponent<Collider>(physics, physics::makeBox(0.2f, 0.2f));
+    });
+    frames(3);
+    ASSERT_TRUE(cord->isConnected());
+    frames(45);
+    EXPECT_EQ(breaker->breaks, 1);
+    EXPECT_FALSE(cord->isConnected());
+    EXPECT_EQ(physics.world().jointCount(), 0);
+    EXPECT_LT(bob->position().y, 3.5f) << "the ball fell once its cord broke";
+}
+
 TEST_F(JointComponentTest, BadDefsAndMissingRigidbodiesAreClearErrors) {
     physics::RevoluteJointDef r;
     r.lowerAngle = 1.0f;
