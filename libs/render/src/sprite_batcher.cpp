@@ -180,6 +180,7 @@ SpriteId SpriteBatcher::create(const SpriteDef& def) {
         slots_.emplace_back();
         packed_.emplace_back();
         bounds_.emplace_back();
+        orderPosition_.push_back(kNotDrawn);
     }
     Slot& s = slots_[index];
     s.def = def;
@@ -453,6 +454,10 @@ void SpriteBatcher::repack(std::uint32_t index, const CameraState& camera) {
     out.z = d.z;
     bounds_[index] = boundsOf(p.origin, p.ex, p.ey);
     s.dirty = 0;
+    if (const std::uint32_t at = orderPosition_[index]; at != kNotDrawn) {
+        orderPacked_[at] = out;
+        orderBounds_[at] = bounds_[index];
+    }
 }
 
 void SpriteBatcher::sortOrder() {
@@ -478,9 +483,18 @@ void SpriteBatcher::sortOrder() {
               [&](std::uint32_t a, std::uint32_t b) { return keys[a] != keys[b] ? keys[a] < keys[b] : a < b; });
     orderKeys_.resize(order_.size());
     orderTranslucent_.resize(order_.size());
+    orderPacked_.resize(order_.size());
+    orderBounds_.resize(order_.size());
+    orderTexture_.resize(order_.size());
+    std::fill(orderPosition_.begin(), orderPosition_.end(), kNotDrawn);
     for (std::size_t k = 0; k < order_.size(); ++k) {
-        orderKeys_[k] = keys[order_[k]];
+        const std::uint32_t i = order_[k];
+        orderKeys_[k] = keys[i];
         orderTranslucent_[k] = static_cast<std::uint8_t>(orderKeys_[k] >> 63);
+        orderPacked_[k] = packed_[i];
+        orderBounds_[k] = bounds_[i];
+        orderTexture_[k] = slots_[i].texture;
+        orderPosition_[i] = static_cast<std::uint32_t>(k);
     }
     orderDirty_ = false;
 }
@@ -571,18 +585,22 @@ std::size_t SpriteBatcher::emit(Instance* dst, std::vector<Batch>& batches, Buil
     };
     const std::size_t sprites = order_.size();
     if (quads_.empty()) {
+        // Sequential reads of the draw-order copies: bounds, texture, pass, instance.
+        const glm::vec4* bounds = orderBounds_.data();
+        const Instance* packed = orderPacked_.data();
+        const std::uint32_t* textureOf = orderTexture_.data();
+        const std::uint8_t* translucentOf = orderTranslucent_.data();
         for (std::size_t k = 0; k < sprites; ++k) {
-            std::uint32_t i = order_[k];
-            if (outside(bounds_[i], view)) {
+            if (outside(bounds[k], view)) {
                 ++culled;
                 continue;
             }
-            std::uint32_t texture = slots_[i].texture;
-            bool translucent = orderTranslucent_[k] != 0;
+            const std::uint32_t texture = textureOf[k];
+            const bool translucent = translucentOf[k] != 0;
             if (texture != currentTexture || translucent != currentTranslucent) [[unlikely]] {
                 open(texture, translucent);
             }
-            dst[n++] = packed_[i];
+            dst[n++] = packed[k];
         }
     } else {
         std::size_t k = 0;
@@ -591,15 +609,13 @@ std::size_t SpriteBatcher::emit(Instance* dst, std::vector<Batch>& batches, Buil
             bool takeSprite = q == quadOrder_.size() ||
                               (k < sprites && orderKeys_[k] <= quads_[quadOrder_[q]].key);
             if (takeSprite) {
-                std::uint32_t i = order_[k];
-                bool translucent = orderTranslucent_[k] != 0;
-                ++k;
-                if (outside(bounds_[i], view)) {
+                const std::size_t at = k++;
+                if (outside(orderBounds_[at], view)) {
                     ++culled;
                     continue;
                 }
-                open(slots_[i].texture, translucent);
-                dst[n++] = packed_[i];
+                open(orderTexture_[at], orderTranslucent_[at] != 0);
+                dst[n++] = orderPacked_[at];
             } else {
                 const Transient& t = quads_[quadOrder_[q++]];
                 if (outside(t.bounds, view)) {

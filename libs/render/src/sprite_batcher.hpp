@@ -45,7 +45,7 @@ struct BuildCounts {
 // so the benchmark can time the CPU side alone.
 //
 // Each sprite keeps its packed Instance and world bounds between frames; a setter marks it
-// dirty and only dirty sprites are repacked. The draw order (opaque by texture then front to
+// dirty and only dirty sprites are repacked (into the slot's copy and the draw-order copy). The draw order (opaque by texture then front to
 // back, translucent back to front) is re-sorted only when something that decides it changed
 // (z, texture, opacity, visibility, HUD/parallax, creation, destruction). A frame copies the
 // packed instances of the sorted, unculled sprites into the destination, merging in the
@@ -132,6 +132,13 @@ private:
     std::vector<std::uint32_t> order_;           // visible sprites in draw order
     std::vector<std::uint64_t> orderKeys_;
     std::vector<std::uint8_t> orderTranslucent_;
+    // The same in draw order, kept up to date by repack(), so a frame's emit() reads them
+    // front to back (a streaming copy) instead of gathering per slot.
+    std::vector<Instance> orderPacked_;
+    std::vector<glm::vec4> orderBounds_;
+    std::vector<std::uint32_t> orderTexture_;
+    std::vector<std::uint32_t> orderPosition_; // per slot: its index in order_, or kNotDrawn
+    static constexpr std::uint32_t kNotDrawn = 0xffffffffu;
     int alive_ = 0;
     bool orderDirty_ = true;
     bool allDirty_ = false;
