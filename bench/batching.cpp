@@ -351,14 +351,10 @@ void finishSfml(benchmark::State& state, Targets& targets) {
     const sf::Image image = targets.sfml.getTexture().copyToImage();
     const sf::Vector2u size = image.getSize();
     state.counters["lit"] = litFraction(image.getPixelsPtr(), static_cast<std::size_t>(size.x) * size.y);
-    // The render texture's image is bottom-up (OpenGL's rows); Image rows run from the top.
-    Image top{static_cast<int>(size.x), static_cast<int>(size.y), {}};
-    const std::size_t row = static_cast<std::size_t>(size.x) * 4;
-    top.pixels.resize(row * size.y);
-    for (std::size_t y = 0; y < size.y; ++y) {
-        std::copy_n(image.getPixelsPtr() + (size.y - 1 - y) * row, row, top.pixels.data() + y * row);
-    }
-    targets.shot(state, std::move(top));
+    // copyToImage() gives rows from the top, as Image has them.
+    const std::size_t bytes = static_cast<std::size_t>(size.x) * size.y * 4;
+    targets.shot(state, Image{static_cast<int>(size.x), static_cast<int>(size.y),
+                              std::vector<std::uint8_t>(image.getPixelsPtr(), image.getPixelsPtr() + bytes)});
     state.SetItemsProcessed(state.iterations());
 }
 

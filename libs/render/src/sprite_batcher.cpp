@@ -178,8 +178,6 @@ SpriteId SpriteBatcher::create(const SpriteDef& def) {
     } else {
         index = static_cast<std::uint32_t>(slots_.size());
         slots_.emplace_back();
-        packed_.emplace_back();
-        bounds_.emplace_back();
         orderPosition_.push_back(kNotDrawn);
     }
     Slot& s = slots_[index];
@@ -425,7 +423,13 @@ void SpriteBatcher::clearTransient() noexcept { quads_.clear(); }
 
 void SpriteBatcher::repack(std::uint32_t index, const CameraState& camera) {
     Slot& s = slots_[index];
-    Instance& out = packed_[index];
+    const std::uint32_t at = orderPosition_[index];
+    if (at == kNotDrawn) {
+        // Hidden (or destroyed): sortOrder() marks it dirty again when it is drawn again.
+        s.dirty = 0;
+        return;
+    }
+    Instance& out = orderPacked_[at];
     const SpriteDef& d = s.def;
     if ((s.dirty & kShape) != 0) {
         glm::vec2 size = d.size;
@@ -452,12 +456,8 @@ void SpriteBatcher::repack(std::uint32_t index, const CameraState& camera) {
     out.x = p.origin.x;
     out.y = p.origin.y;
     out.z = d.z;
-    bounds_[index] = boundsOf(p.origin, p.ex, p.ey);
+    orderBounds_[at] = boundsOf(p.origin, p.ex, p.ey);
     s.dirty = 0;
-    if (const std::uint32_t at = orderPosition_[index]; at != kNotDrawn) {
-        orderPacked_[at] = out;
-        orderBounds_[at] = bounds_[index];
-    }
 }
 
 void SpriteBatcher::sortOrder() {
@@ -481,20 +481,29 @@ void SpriteBatcher::sortOrder() {
     // Ties keep creation (slot) order, so equal keys draw the same way every frame.
     std::sort(order_.begin(), order_.end(),
               [&](std::uint32_t a, std::uint32_t b) { return keys[a] != keys[b] ? keys[a] < keys[b] : a < b; });
+    // The packed instances live only in draw order: sprites drawn last frame move to their new
+    // place; the others (new, shown again) are packed from scratch by prepare().
+    std::vector<Instance> oldPacked = std::move(orderPacked_);
+    std::vector<glm::vec4> oldBounds = std::move(orderBounds_);
+    std::vector<std::uint32_t> oldPosition = orderPosition_;
+    orderPacked_.assign(order_.size(), Instance{});
+    orderBounds_.assign(order_.size(), glm::vec4(0.0f));
     orderKeys_.resize(order_.size());
     orderTranslucent_.resize(order_.size());
-    orderPacked_.resize(order_.size());
-    orderBounds_.resize(order_.size());
     orderTexture_.resize(order_.size());
     std::fill(orderPosition_.begin(), orderPosition_.end(), kNotDrawn);
     for (std::size_t k = 0; k < order_.size(); ++k) {
         const std::uint32_t i = order_[k];
         orderKeys_[k] = keys[i];
         orderTranslucent_[k] = static_cast<std::uint8_t>(orderKeys_[k] >> 63);
-        orderPacked_[k] = packed_[i];
-        orderBounds_[k] = bounds_[i];
         orderTexture_[k] = slots_[i].texture;
         orderPosition_[i] = static_cast<std::uint32_t>(k);
+        if (const std::uint32_t was = oldPosition[i]; was != kNotDrawn && was < oldPacked.size()) {
+            orderPacked_[k] = oldPacked[was];
+            orderBounds_[k] = oldBounds[was];
+        } else {
+            markDirty(i, kMoved | kShape | kLook);
+        }
     }
     orderDirty_ = false;
 }
