@@ -74,10 +74,10 @@ void packEdges(Instance& out, glm::vec2 ex, glm::vec2 ey) {
 }
 
 // Bounds of the parallelogram origin + [0,1] ex + [0,1] ey.
-glm::vec4 boundsOf(glm::vec2 o, glm::vec2 ex, glm::vec2 ey) {
-    glm::vec2 lo = o + glm::min(ex, glm::vec2(0.0f)) + glm::min(ey, glm::vec2(0.0f));
-    glm::vec2 hi = o + glm::max(ex, glm::vec2(0.0f)) + glm::max(ey, glm::vec2(0.0f));
-    return {lo.x, lo.y, hi.x, hi.y};
+// Scalar std::min/max: these run for every moved sprite and must inline.
+inline glm::vec4 boundsOf(glm::vec2 o, glm::vec2 ex, glm::vec2 ey) {
+    return {o.x + std::min(ex.x, 0.0f) + std::min(ey.x, 0.0f), o.y + std::min(ex.y, 0.0f) + std::min(ey.y, 0.0f),
+            o.x + std::max(ex.x, 0.0f) + std::max(ey.x, 0.0f), o.y + std::max(ex.y, 0.0f) + std::max(ey.y, 0.0f)};
 }
 
 bool outside(const glm::vec4& b, const ViewBounds& view) {
@@ -91,7 +91,7 @@ struct Placement {
     glm::vec2 ey;
 };
 
-Placement place(glm::vec2 position, glm::vec2 pivotOffset, glm::vec2 ex, glm::vec2 ey, float parallax, bool hud,
+inline Placement place(glm::vec2 position, glm::vec2 pivotOffset, glm::vec2 ex, glm::vec2 ey, float parallax, bool hud,
                 const CameraState& camera) {
     if (hud) {
         // camera -> world: position + R(rotation) * v / zoom, applied to the whole quad.
@@ -116,13 +116,24 @@ SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function) {
     return const_cast<Slot&>(static_cast<const SpriteBatcher&>(*this).slot(id, function));
 }
 
+namespace {
+[[noreturn, gnu::cold, gnu::noinline]] void failBadId(SpriteId id, const char* function) {
+    fail(function, id.isNull() ? std::string("null sprite id")
+                               : "stale sprite id (index " + std::to_string(id.index1 - 1) + ", generation " +
+                                     std::to_string(id.generation) + ")");
+}
+} // namespace
+
 const SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function) const {
-    if (!isValid(id)) {
-        fail(function, id.isNull() ? std::string("null sprite id")
-                                   : "stale sprite id (index " + std::to_string(id.index1 - 1) + ", generation " +
-                                         std::to_string(id.generation) + ")");
+    // Every setter starts here: the check inlines, the message is built out of line.
+    if (id.index1 == 0 || id.index1 > slots_.size()) [[unlikely]] {
+        failBadId(id, function);
     }
-    return slots_[id.index1 - 1];
+    const Slot& s = slots_[id.index1 - 1];
+    if (!s.alive || s.generation != id.generation) [[unlikely]] {
+        failBadId(id, function);
+    }
+    return s;
 }
 
 bool SpriteBatcher::isValid(SpriteId id) const noexcept {
@@ -154,15 +165,6 @@ std::uint64_t SpriteBatcher::key(float z, std::uint32_t texture, bool isOpaque) 
     }
     // Pass 1, back to front (smaller z first), then texture so equal z shares batches.
     return (1ull << 63) | (zBits << 31) | (texture & 0x7fffffffu);
-}
-
-void SpriteBatcher::markDirty(std::uint32_t index, std::uint8_t bits) {
-    Slot& s = slots_[index];
-    if ((s.dirty & kQueued) == 0) {
-        dirtyList_.push_back(index);
-        s.dirty |= kQueued;
-    }
-    s.dirty |= bits;
 }
 
 SpriteId SpriteBatcher::create(const SpriteDef& def) {

@@ -114,7 +114,14 @@ private:
 
     Slot& slot(SpriteId id, const char* function);
     const Slot& slot(SpriteId id, const char* function) const;
-    void markDirty(std::uint32_t index, std::uint8_t bits);
+    void markDirty(std::uint32_t index, std::uint8_t bits) {
+        Slot& s = slots_[index];
+        if ((s.dirty & kQueued) == 0) {
+            dirtyList_.push_back(index);
+            s.dirty |= kQueued;
+        }
+        s.dirty |= bits;
+    }
     void resolveTexture(Slot& s) const;
     void repack(std::uint32_t index, const CameraState& camera);
     void sortOrder();
