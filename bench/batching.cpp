@@ -15,7 +15,10 @@
 //                                variant, so each frame lays it out anew) laid out, batched and
 //                                drawn: e2d's TextRenderer vs sf::Text; ns per glyph.
 // Every frame case ends with a read-back of its last frame and reports `lit` (the fraction of
-// pixels not the clear colour) so the engines can be seen to draw the same scene.
+// pixels not the clear colour); the run fails (exit status 1) when a case reports an error or
+// the engines of a case disagree on `lit` by more than 1 % of the pixels.
+// Flags besides Google Benchmark's: --e2d_table=PATH (the Markdown tables), --e2d_shots=DIR (each
+// frame case's last frame as a PNG), --e2d_warmup=N (frames drawn before timing, default 3).
 #include <e2d/render/camera.hpp>
 #include <e2d/render/renderer.hpp>
 #include <e2d/render/text_renderer.hpp>
@@ -36,6 +39,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <memory>
 #include <random>
 #include <regex>
@@ -244,6 +248,7 @@ struct Targets {
     std::string error;
     std::string shots;   // --e2d_shots=DIR: each frame case's last frame as DIR/<case>.png
     std::string running; // the case being run
+    int warmup = 3;      // frames drawn before timing
 
     void shot(const benchmark::State&, Image image) const {
         if (shots.empty()) {
@@ -269,7 +274,7 @@ struct Targets {
 
 // Frames drawn before timing: llvmpipe compiles each shader variant at its first draw and the
 // glyph atlases fill at the first text frame; neither is what a frame costs.
-constexpr int kWarmupFrames = 3;
+// (Targets::warmup, --e2d_warmup=N; the short CTest run uses 1.)
 
 // e2d's Renderer into an offscreen framebuffer of the hidden window.
 void frameE2d(benchmark::State& state, Targets& targets, Scene scene, const RendererDef& base) {
@@ -309,7 +314,7 @@ void frameE2d(benchmark::State& state, Targets& targets, Scene scene, const Rend
         glFinish();
         ++frameNumber;
     };
-    for (int i = 0; i < kWarmupFrames; ++i) {
+    for (int i = 0; i < targets.warmup; ++i) {
         frame();
     }
     for (auto _ : state) {
@@ -394,7 +399,7 @@ void frameSfmlSprites(benchmark::State& state, Targets& targets, Scene scene) {
         glFinish();
         ++frameNumber;
     };
-    for (int i = 0; i < kWarmupFrames; ++i) {
+    for (int i = 0; i < targets.warmup; ++i) {
         frame();
     }
     for (auto _ : state) {
@@ -452,7 +457,7 @@ void frameSfmlVertexArrays(benchmark::State& state, Targets& targets, Scene scen
         glFinish();
         ++frameNumber;
     };
-    for (int i = 0; i < kWarmupFrames; ++i) {
+    for (int i = 0; i < targets.warmup; ++i) {
         frame();
     }
     for (auto _ : state) {
@@ -553,7 +558,7 @@ void main() { colour = texture(image, uv); })";
         glFinish();
         ++frameNumber;
     };
-    for (int i = 0; i < kWarmupFrames; ++i) {
+    for (int i = 0; i < targets.warmup; ++i) {
         frame();
     }
     for (auto _ : state) {
@@ -631,7 +636,7 @@ void textE2d(benchmark::State& state, Targets& targets) {
         glFinish();
         ++frameNumber;
     };
-    for (int i = 0; i < kWarmupFrames; ++i) {
+    for (int i = 0; i < targets.warmup; ++i) {
         frame();
     }
     for (auto _ : state) {
@@ -667,7 +672,7 @@ void textSfml(benchmark::State& state, Targets& targets) {
         glFinish();
         ++frameNumber;
     };
-    for (int i = 0; i < kWarmupFrames; ++i) {
+    for (int i = 0; i < targets.warmup; ++i) {
         frame();
     }
     for (auto _ : state) {
@@ -685,11 +690,43 @@ public:
     explicit GroupReporter(std::function<void(const std::vector<Run>&)> forward) : forward_(std::move(forward)) {}
     void ReportRuns(const std::vector<Run>& reports) override {
         ConsoleReporter::ReportRuns(reports);
+        for (const Run& run : reports) {
+            failed_ = failed_ || run.error_occurred;
+            const auto lit = run.counters.find("lit");
+            const std::string& name = run.run_name.function_name;
+            const auto last = name.rfind('/');
+            if (lit != run.counters.end() && last != std::string::npos) {
+                lit_[name.substr(0, last)][name.substr(last + 1)] = lit->second.value;
+            }
+        }
         forward_(reports);
+    }
+
+    // Every case ran, and every engine of a case covered the same share of the target (within
+    // 1 % of the pixels; the engines may differ in which of two equal-z sprites is on top but
+    // not in what is covered). Prints what is wrong.
+    [[nodiscard]] bool consistent() const {
+        bool ok = !failed_;
+        if (failed_) {
+            std::fprintf(stderr, "batching: a case reported an error\n");
+        }
+        for (const auto& [name, byEngine] : lit_) {
+            for (const auto& [engine, value] : byEngine) {
+                const double reference = byEngine.begin()->second;
+                if (std::abs(value - reference) > 0.01) {
+                    std::fprintf(stderr, "batching: %s: %s covers %.4f of the target, %s %.4f\n", name.c_str(),
+                                 engine.c_str(), value, byEngine.begin()->first.c_str(), reference);
+                    ok = false;
+                }
+            }
+        }
+        return ok;
     }
 
 private:
     std::function<void(const std::vector<Run>&)> forward_;
+    bool failed_ = false;
+    std::map<std::string, std::map<std::string, double>> lit_;
 };
 
 } // namespace
@@ -697,12 +734,15 @@ private:
 int main(int argc, char** argv) {
     const std::string tablePath = e2d::bench::RatioReporter::takeTableFlag(argc, argv);
     std::string shots;
+    int warmup = 3;
     {
         int kept = 0;
         for (int i = 0; i < argc; ++i) {
             const std::string arg = argv[i];
             if (arg.rfind("--e2d_shots=", 0) == 0) {
                 shots = arg.substr(12);
+            } else if (arg.rfind("--e2d_warmup=", 0) == 0) {
+                warmup = std::stoi(arg.substr(13));
             } else {
                 argv[kept++] = argv[i];
             }
@@ -715,6 +755,7 @@ int main(int argc, char** argv) {
     }
     Targets targets;
     targets.shots = shots;
+    targets.warmup = warmup;
 
     // The user's --benchmark_filter picks cases by name; each group then runs with its own
     // reporter and filter.
@@ -855,5 +896,5 @@ int main(int argc, char** argv) {
     if (!tablePath.empty()) {
         std::ofstream(tablePath) << tables;
     }
-    return 0;
+    return reporter.consistent() ? 0 : 1;
 }
