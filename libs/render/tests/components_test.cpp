@@ -21,6 +21,7 @@
 #include <functional>
 #include <numbers>
 #include <string>
+#include <vector>
 
 namespace e2d::render::test {
 namespace {
@@ -160,6 +161,56 @@ TEST_F(RenderComponents, AnimatedSpriteBadFieldsAreErrors) {
     } catch (const core::Error& error) {
         EXPECT_THAT(error.what(), HasSubstr("frames[1] must lie in [0, 1], got min (0.75, 0) size (0.5, 1)"));
     }
+}
+
+// A camera component views from its object: the sprite at the camera object's world position
+// lands at the screen's centre; with the component disabled the system's own camera is used.
+TEST_F(RenderComponents, CameraComponentViewsFromItsObject) {
+    CameraComponent* camera = nullptr;
+    start([&](core::Scene& s) {
+        core::GameObject& target = s.createGameObject();
+        target.setPosition(glm::vec2(20.0f, 10.0f));
+        target.addComponent<SpriteRenderer>(SpriteRendererDef{.size = {6.0f, 6.0f}, .tint = kGreen});
+        core::GameObject& rig = s.createGameObject();
+        core::GameObject& eye = s.createGameObject();
+        rig.addChild(eye);
+        rig.setPosition(glm::vec2(15.0f, 10.0f));
+        eye.setPosition(glm::vec2(5.0f, 0.0f));
+        camera = eye.addComponent<CameraComponent>(CameraComponentDef{.referenceSize = {64.0f, 64.0f}});
+    });
+    Image viewed = frame(0.0, "component");
+    ASSERT_NE(camera, nullptr);
+    EXPECT_EQ(camera->camera().position(), glm::vec2(20.0f, 10.0f));
+    EXPECT_TRUE(near(pixel(viewed, 32, 32), kGreen, 0)) << str(pixel(viewed, 32, 32));
+    camera->setEnabled(false);
+    Image own = frame(0.0, "system-camera");
+    // The system's camera at (0, 0): the sprite at screen (52, 42).
+    EXPECT_TRUE(near(pixel(own, 52, 42), kGreen, 0)) << str(pixel(own, 52, 42));
+    EXPECT_TRUE(near(pixel(own, 32, 32), kBlack, 0));
+}
+
+// Frames of a sheet's animation in natural order; a rotated frame is refused by name.
+TEST(AnimationUvs, NaturalOrderAndRotatedFramesRefused) {
+    const SpriteSheet sheet = SpriteSheet::fromString(R"({"frames": {
+      "run10.png": {"frame": {"x": 32, "y": 0, "w": 16, "h": 16}, "rotated": false},
+      "run2.png": {"frame": {"x": 16, "y": 0, "w": 16, "h": 16}, "rotated": false},
+      "run1.png": {"frame": {"x": 0, "y": 0, "w": 16, "h": 16}, "rotated": false},
+      "spin1.png": {"frame": {"x": 0, "y": 16, "w": 16, "h": 8}, "rotated": true}},
+      "meta": {"image": "a.png", "size": {"w": 64, "h": 32}}})",
+                                                      "anim.json");
+    const std::vector<Rect> uvs = animationUvs(sheet, "run");
+    ASSERT_EQ(uvs.size(), 3u);
+    EXPECT_FLOAT_EQ(uvs[0].min.x, 0.0f);
+    EXPECT_FLOAT_EQ(uvs[1].min.x, 16.0f / 64.0f);
+    EXPECT_FLOAT_EQ(uvs[2].min.x, 32.0f / 64.0f);
+    EXPECT_FLOAT_EQ(uvs[2].size.x, 16.0f / 64.0f);
+    try {
+        static_cast<void>(animationUvs(sheet, "spin"));
+        FAIL() << "expected an error";
+    } catch (const core::Error& error) {
+        EXPECT_THAT(error.what(), HasSubstr("frame 'spin1.png' is stored rotated"));
+    }
+    EXPECT_THROW(static_cast<void>(animationUvs(sheet, "walk")), core::Error);
 }
 
 TEST_F(RenderComponents, TextLabelDrawsAtItsObjectAndMovesWithIt) {
