@@ -42,7 +42,6 @@
 #include <map>
 #include <memory>
 #include <random>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -757,15 +756,8 @@ int main(int argc, char** argv) {
     targets.shots = shots;
     targets.warmup = warmup;
 
-    // The user's --benchmark_filter picks cases by name; each group then runs with its own
-    // reporter and filter.
-    const std::string userSpec = benchmark::GetBenchmarkFilter();
-    const bool everything = userSpec.empty() || userSpec == "." || userSpec == "all";
-    const std::regex userFilter(everything ? std::string(".") : userSpec);
+    // Every case is registered; --benchmark_filter picks among them as usual.
     auto add = [&](const std::string& name, auto&& function) -> benchmark::internal::Benchmark* {
-        if (!std::regex_search(name, userFilter)) {
-            return nullptr;
-        }
         return benchmark::RegisterBenchmark(name.c_str(), [&targets, name, function](benchmark::State& state) {
             targets.running = name;
             function(state);
