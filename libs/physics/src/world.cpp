@@ -135,7 +135,11 @@ void World::Impl::requireUnlocked(const char* function) const {
 
 void World::Impl::createProxy(int shapeIndex) {
     detail::Shape& s = shape(shapeIndex);
-    s.proxyKey = broadPhase.createProxy(s.aabb, body(s.body).type, s.filter.categoryBits,
+    // A sensor that sees non-dynamic bodies lives in the dynamic tree whatever its body: moving
+    // kinematic shapes look it up there, and its own moves look through every tree.
+    const BodyType treeType = s.isSensor && s.sensorSeesNonDynamic ? BodyType::Dynamic
+                                                                   : body(s.body).type;
+    s.proxyKey = broadPhase.createProxy(s.aabb, treeType, s.filter.categoryBits,
                                         static_cast<std::uint64_t>(shapeIndex));
 }
 
@@ -180,8 +184,15 @@ bool World::Impl::shouldPair(int shapeA, int shapeB) const {
     }
     // The broad phase already skips these (one tree per body type); this keeps the rule true
     // whatever it looks up.
-    if (body(a.body).type != BodyType::Dynamic && body(b.body).type != BodyType::Dynamic) {
-        return false;
+    const BodyType typeA = body(a.body).type;
+    const BodyType typeB = body(b.body).type;
+    if (typeA != BodyType::Dynamic && typeB != BodyType::Dynamic) {
+        // Only a sensor that sees non-dynamic bodies pairs without a dynamic body, and never
+        // static with static.
+        const bool wide = (a.isSensor && a.sensorSeesNonDynamic) || (b.isSensor && b.sensorSeesNonDynamic);
+        if (!wide || (typeA == BodyType::Static && typeB == BodyType::Static)) {
+            return false;
+        }
     }
     if (!shouldCollide(a.filter, b.filter)) {
         return false;
@@ -381,6 +392,7 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ShapeGeomet
     s.restitution = def.restitution;
     s.rollingResistance = def.rollingResistance;
     s.isSensor = def.isSensor;
+    s.sensorSeesNonDynamic = def.sensorSeesNonDynamic;
     s.contactEvents = def.enableContactEvents;
     s.sensorEvents = def.enableSensorEvents;
     s.hitEvents = def.enableHitEvents;

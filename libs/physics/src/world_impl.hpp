@@ -56,6 +56,8 @@ struct Shape {
     bool contactEvents = true;
     bool sensorEvents = true;
     bool hitEvents = true;
+    // ShapeDef::sensorSeesNonDynamic (only acts while isSensor).
+    bool sensorSeesNonDynamic = false;
 };
 
 } // namespace e2d::physics::detail

@@ -170,8 +170,6 @@ private:
     ShapeId id_;
 };
 
-// A Joint view (World::joint()) joins these with the joints.
-
 inline Shape Body::createShape(const ShapeDef& def, const ShapeGeometry& geometry) {
     return Shape(*world_, world_->createShape(id_, def, geometry));
 }

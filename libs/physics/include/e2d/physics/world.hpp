@@ -116,10 +116,15 @@ struct ShapeDef {
     /// Which pairs a sensor sees follows the broad phase's rule (World::updatePairs()): one of
     /// the two bodies must be dynamic. So a sensor on a static or kinematic body (a trigger
     /// zone, a moving detector) sees dynamic bodies only, and a sensor on a dynamic body sees
-    /// static, kinematic and dynamic shapes alike. A zone that must also see kinematic bodies
-    /// goes on a dynamic body with gravityScale 0 (a sensor has no say in the body's motion,
-    /// and nothing solid touches it).
+    /// static, kinematic and dynamic shapes alike. `sensorSeesNonDynamic` widens that.
     bool isSensor = false;
+    /// Sensors only: a sensor on a static or kinematic body also sees the shapes of kinematic
+    /// bodies, and one on a kinematic body also those of static bodies (a trigger zone that
+    /// must notice a kinematic platform or character, a kinematic detector sweeping over
+    /// static scenery). Two static bodies never pair. Such a sensor costs a little more in the
+    /// broad phase (it is looked up by every moving kinematic shape). Fixed at creation
+    /// (World::setShapeSensor() keeps it). Default false.
+    bool sensorSeesNonDynamic = false;
     /// Anything the application wants to find the shape's owner by. Default 0.
     std::uint64_t userData = 0;
     /// Whether the shape's contacts report ContactBeginTouchEvent and ContactEndTouchEvent. A
