@@ -188,6 +188,13 @@ public:
     [[nodiscard]] const TextureInfo& textureInfo(TextureId id) const;
     /// The 1 x 1 white texture used for a null texture id.
     [[nodiscard]] TextureId whiteTexture() const noexcept;
+    /// Textures alive (loaded, created, or placeholders of failed loads), not counting the
+    /// renderer's own white and checker textures.
+    [[nodiscard]] int textureCount() const noexcept;
+    /// Destroys every texture that no sprite uses, except those in `keep` (and the renderer's
+    /// own); a later loadTexture() of the same file loads it again. Returns how many went.
+    /// For a scene change: the new scene's textures are loaded as it asks for them.
+    int destroyUnusedTextures(std::span<const TextureId> keep = {});
 
     // Sprites -----------------------------------------------------------------------------
 
