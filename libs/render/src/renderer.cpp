@@ -177,6 +177,11 @@ Renderer::~Renderer() {
 }
 
 TextureId Renderer::loadTexture(const std::filesystem::path& path, const TextureDef& def) {
+    if (impl_->def.fileTextureFilter) {
+        TextureDef forced = def;
+        forced.filter = *impl_->def.fileTextureFilter;
+        return impl_->textures.load(path, forced);
+    }
     return impl_->textures.load(path, def);
 }
 

@@ -260,6 +260,22 @@ TEST_P(TextureRender, DestroyedTextureDrawsThePlaceholder) {
     EXPECT_TRUE(near(pixel(after, 1, 14), Color{255, 0, 255, 255}, 0)) << str(pixel(after, 1, 14));
 }
 
+// RendererDef::fileTextureFilter overrides the filter of file textures only.
+TEST(TextureFilterOverride, AppliesToFileTexturesOnly) {
+    Window window(WindowDef{.title = "e2d render test", .size = {16, 16}, .vsync = false, .visible = false});
+    RendererDef def;
+    def.fileTextureFilter = TextureFilter::Nearest;
+    Renderer renderer(window, def);
+    const TextureId file = renderer.loadTexture(kData / "quadrant.png", TextureDef{.filter = TextureFilter::Linear});
+    EXPECT_EQ(renderer.textureInfo(file).def.filter, TextureFilter::Nearest);
+    Image image;
+    image.width = 1;
+    image.height = 1;
+    image.pixels = {1, 2, 3, 255};
+    const TextureId memory = renderer.createTexture(image, TextureDef{.filter = TextureFilter::Linear});
+    EXPECT_EQ(renderer.textureInfo(memory).def.filter, TextureFilter::Linear);
+}
+
 // A scene change: textures no sprite uses go (except those kept), used ones and the sprites
 // drawing them stay, and a released file loads again on the next request.
 TEST_P(TextureRender, DestroyUnusedTexturesKeepsWhatSpritesUse) {
