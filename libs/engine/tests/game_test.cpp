@@ -567,6 +567,81 @@ TEST(Game, PhysicsDebugDrawIsToggledByFlagConfigAndKey) {
     EXPECT_EQ(debugGreenPixels({"--input-script", tab.string()}, "debugDrawKey = tab\n"), flag);
 }
 
+// --- Game objects: name, tag, active; mouse positions in world units ---------------------------
+
+TEST(Game, InactiveObjectsAreNeitherUpdatedNorDrawnAndObjectsAreFoundByNameAndTag) {
+    struct Counter : core::Component {
+        explicit Counter(int& n) : count(n) {}
+        void update(double) override { ++count; }
+        int& count;
+    };
+    int activeUpdates = 0;
+    int inactiveUpdates = 0;
+    Game game;
+    addScene(
+        game, "A",
+        [&](core::Scene& s) {
+            const auto square = [&](const char* name, glm::vec2 at, render::Color colour, int& counter) {
+                core::GameObject& o = s.createGameObject();
+                o.setName(name);
+                o.setTag("square");
+                o.setPosition(at);
+                render::SpriteRendererDef def;
+                def.size = {20.0f, 20.0f};
+                def.tint = colour;
+                o.addComponent<render::SpriteRenderer>(def);
+                o.addComponent<Counter>(counter);
+            };
+            square("green", {-40.0f, 0.0f}, {0, 255, 0, 255}, activeUpdates);
+            square("blue", {40.0f, 0.0f}, {0, 0, 255, 255}, inactiveUpdates);
+            EXPECT_EQ(s.findByTag("square").size(), 2u);
+            s.findByName("blue")->setActive(false);
+        },
+        [&](core::Scene& s) { EXPECT_EQ(s.findFirstByTag("square"), s.findByName("green")); });
+    const std::filesystem::path shot = tempDir() / "active.png";
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "5", "--screenshot", shot.string()});
+    ASSERT_EQ(r.code, 0) << r.all();
+    EXPECT_EQ(activeUpdates, 5);
+    EXPECT_EQ(inactiveUpdates, 0);
+    const render::Image image = render::loadImage(shot);
+    EXPECT_EQ(countColour(image, 0, 255, 0, 0), 400);
+    EXPECT_EQ(countColour(image, 0, 0, 255, 0), 0);
+}
+
+TEST(Game, MouseEventsCarryWorldPositionsThroughTheActiveCamera) {
+    std::vector<glm::vec2> world;
+    struct Mouse : core::Component {
+        explicit Mouse(std::vector<glm::vec2>& w) : seen(w) {}
+        void onMouseMove(glm::vec2, glm::vec2 at) override { seen.push_back(at); }
+        std::vector<glm::vec2>& seen;
+    };
+    Game game;
+    addScene(
+        game, "A",
+        [&](core::Scene& s) {
+            s.createGameObject().addComponent<Mouse>(world);
+            gameOf(s).renderSystem().camera().setPosition({100.0f, 50.0f});
+        },
+        [](core::Scene& s) {
+            // As GLFW's cursor callback would: window pixels from the top-left corner.
+            if (gameOf(s).frame() == 1) {
+                gameOf(s).input().handleCursorPos(0.0, 0.0);
+            }
+            if (gameOf(s).frame() == 2) {
+                gameOf(s).input().handleCursorPos(120.0, 90.0);
+            }
+        });
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "4"});
+    ASSERT_EQ(r.code, 0) << r.all();
+    // 160 x 120 window showing the 160 x 120 reference around (100, 50): the top-left corner
+    // is (20, 110); (120, 90) from the top-left is (40, -30) from the centre, y up.
+    ASSERT_EQ(world.size(), 2u);
+    EXPECT_NEAR(world[0].x, 20.0f, 1e-3f);
+    EXPECT_NEAR(world[0].y, 110.0f, 1e-3f);
+    EXPECT_NEAR(world[1].x, 140.0f, 1e-3f);
+    EXPECT_NEAR(world[1].y, 20.0f, 1e-3f);
+}
+
 // --- What scenes reach -----------------------------------------------------------------------
 
 TEST(Game, GameSystemGivesTheConfigAssetsAndEverySubsystem) {
