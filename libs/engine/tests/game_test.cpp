@@ -184,6 +184,8 @@ TEST(Game, HeadlessRunsExactlyNFramesOfOneStepEachAndSavesTheLastFrame) {
     EXPECT_EQ(game.profile().spikes, 0);
     EXPECT_EQ(game.profile().droppedSeconds, 0.0);
     EXPECT_EQ(r.count("frame profile: 120 frames, 120 fixed steps"), 1) << r.all();
+    // Without a sound card (Xvfb machines), one message and the game runs silent.
+    EXPECT_LE(r.count("audio::Mixer"), 1) << r.all();
 
     const render::Image image = render::loadImage(shot);
     ASSERT_EQ(image.width, 160);

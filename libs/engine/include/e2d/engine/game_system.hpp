@@ -51,7 +51,11 @@ public:
     [[nodiscard]] audio::Mixer& mixer() noexcept;
     [[nodiscard]] physics::World& world() noexcept;
     [[nodiscard]] core::Logger& logger() noexcept;
-    /// World units per physics metre (config unitsPerMetre, default 1).
+    /// World units per physics metre (config unitsPerMetre, default 1). The config's PHYSICS
+    /// lengths are divided by it for the world, and the debug draw multiplies the world's
+    /// metres by it. Rigidbody and Collider components place bodies at their objects'
+    /// positions as they are (one world unit = one metre): a game that draws in pixels and
+    /// uses them either keeps unitsPerMetre 1 and zooms its camera, or converts itself.
     [[nodiscard]] double unitsPerMetre() const noexcept;
     /// The game's random numbers, seeded by `--seed` or the config's randomSeed.
     [[nodiscard]] core::Random& random() noexcept;
