@@ -73,6 +73,8 @@ int drawPhysics(const physics::World& world, const render::Camera& camera, doubl
                     }
                 } else if constexpr (std::is_same_v<T, physics::Segment>) {
                     drawer.line(point(g.point1), point(g.point2), c, 2.0f);
+                } else if constexpr (std::is_same_v<T, physics::ChainSegment>) {
+                    drawer.line(point(g.segment.point1), point(g.segment.point2), c, 2.0f);
                 } else {
                     std::array<glm::vec2, physics::kMaxPolygonVertices> points{};
                     for (int i = 0; i < g.count; ++i) {

@@ -33,6 +33,9 @@
 /// 2. translucent pass: the rest, blended, depth-tested against the opaque pass, sorted back
 ///    to front by z, a batch broken only where the texture changes in that order.
 /// Each batch is one instanced draw call (FrameStats::drawCalls == FrameStats::batches).
+/// Quads of one texture at equal z overlap in the order of their ids' slots (creation order
+/// while no sprite was destroyed; submitted quads after sprites, in submission order), the
+/// later on top, in both passes; at equal z across textures the order is the texture's.
 /// Larger z is nearer the viewer; z is mapped to depth over [-RendererDef::depthRange,
 /// +depthRange] (clamped beyond).
 ///
@@ -129,7 +132,7 @@ struct RendererDef {
     /// When set, every texture loaded from a file (loadTexture()) is sampled with this filter,
     /// whatever its TextureDef says (a game-wide setting such as the seed's
     /// textureFilteringMode); textures made from memory keep their own. Default unset.
-    std::optional<TextureFilter> fileTextureFilter;
+    std::optional<TextureFilter> fileTextureFilter{};
     /// Screen colour inside the camera's region. Default opaque black.
     Color clearColor{0, 0, 0, 255};
     /// Screen colour of the letterbox bars. Default opaque black.

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/render/animated_sprite_renderer.hpp>
+
+#include "error_format.hpp"
+
+#include <string>
+
+namespace e2d::render {
+
+namespace {
+
+constexpr const char* kCtor = "render::AnimatedSpriteRenderer";
+
+const std::vector<Rect>& checkedFrames(const AnimatedSpriteRendererDef& def) {
+    if (def.frames.empty()) {
+        detail::fail(kCtor, "frames must not be empty");
+    }
+    for (std::size_t i = 0; i < def.frames.size(); ++i) {
+        const Rect& r = def.frames[i];
+        if (!detail::isFinite(r.min) || !detail::isFinite(r.size) || r.min.x < 0.0f || r.min.y < 0.0f ||
+            r.size.x < 0.0f || r.size.y < 0.0f || r.max().x > 1.0f || r.max().y > 1.0f) {
+            detail::fail(kCtor, "frames[" + std::to_string(i) + "] must lie in [0, 1], got min " +
+                                    detail::formatVec(r.min) + " size " + detail::formatVec(r.size));
+        }
+    }
+    return def.frames;
+}
+
+AnimationDef timing(const AnimatedSpriteRendererDef& def) {
+    AnimationDef a = def.animation;
+    a.frameCount = static_cast<int>(checkedFrames(def).size());
+    return a;
+}
+
+SpriteRendererDef firstLook(const AnimatedSpriteRendererDef& def) {
+    SpriteRendererDef s = def.sprite;
+    const int start = def.animation.startFrame;
+    if (start >= 0 && static_cast<std::size_t>(start) < def.frames.size()) {
+        s.uv = def.frames[static_cast<std::size_t>(start)];
+    }
+    return s;
+}
+
+} // namespace
+
+std::vector<Rect> animationUvs(const SpriteSheet& sheet, std::string_view baseName) {
+    const std::vector<int> indices = sheet.animationFrames(baseName);
+    if (indices.empty()) {
+        detail::fail("render::animationUvs()",
+                     "sheet '" + sheet.name() + "' has no frames named '" + std::string(baseName) + "<number>'");
+    }
+    std::vector<Rect> uvs;
+    uvs.reserve(indices.size());
+    for (int index : indices) {
+        const SpriteFrame& frame = sheet.frames()[static_cast<std::size_t>(index)];
+        if (frame.rotated) {
+            detail::fail("render::animationUvs()", "sheet '" + sheet.name() + "': frame '" + frame.name +
+                                                       "' is stored rotated, which a sprite's UV rectangle "
+                                                       "cannot show upright");
+        }
+        uvs.push_back(frame.uv);
+    }
+    return uvs;
+}
+
+AnimatedSpriteRenderer::AnimatedSpriteRenderer(const AnimatedSpriteRendererDef& def)
+    : SpriteRenderer(firstLook(def)), frames_(checkedFrames(def)), animation_(timing(def)) {
+    shown_ = animation_.frame();
+}
+
+void AnimatedSpriteRenderer::update(double dt) {
+    animation_.update(dt);
+    if (animation_.frame() != shown_) {
+        shown_ = animation_.frame();
+        setUv(frames_[static_cast<std::size_t>(shown_)]);
+    }
+}
+
+} // namespace e2d::render

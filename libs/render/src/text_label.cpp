@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/render/text_label.hpp>
+
+#include <e2d/core/game_object.hpp>
+#include <e2d/core/scene.hpp>
+
+#include "error_format.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace e2d::render {
+
+namespace {
+constexpr const char* kCtor = "render::TextLabel";
+}
+
+TextLabel::TextLabel(const TextLabelDef& def) : def_(def) {
+    if (def.pixelSize < 1 || def.pixelSize > 1024) {
+        detail::fail(kCtor, "pixelSize must be in [1, 1024], got " + std::to_string(def.pixelSize));
+    }
+    if (!detail::isFinite(def.scale) || def.scale.x <= 0.0f || def.scale.y <= 0.0f) {
+        detail::fail(kCtor, "scale must be > 0 and finite, got " + detail::formatVec(def.scale));
+    }
+    detail::requireFinite(kCtor, "zOffset", def.zOffset);
+    if (!std::isfinite(def.style.lineSpacing) || def.style.lineSpacing <= 0.0f) {
+        detail::fail(kCtor, "style.lineSpacing must be > 0 and finite, got " + detail::formatFloat(def.style.lineSpacing));
+    }
+}
+
+TextLabel::~TextLabel() { detach(); }
+
+void TextLabel::onInitialize() {
+    system_ = &scene()->system<RenderSystem>();
+    font_ = system_->text().font(def_.fontPath, def_.pixelSize);
+    system_->addHook(*this);
+}
+
+void TextLabel::onTerminate() { detach(); }
+
+void TextLabel::detach() noexcept {
+    if (system_ != nullptr) {
+        system_->removeHook(*this);
+    }
+    system_ = nullptr;
+    font_ = nullptr;
+}
+
+void TextLabel::beforeRender(Renderer&) {
+    if (system_ == nullptr || font_ == nullptr || !def_.visible || def_.text.empty()) {
+        return;
+    }
+    const glm::mat4& m = gameObject()->worldTransform();
+    const glm::vec2 xAxis(m[0][0], m[0][1]);
+    const glm::vec2 yAxis(m[1][0], m[1][1]);
+    TextDraw where;
+    where.position = {m[3][0], m[3][1]};
+    where.z = m[3][2] + def_.zOffset;
+    where.rotation = gameObject()->worldOrientation();
+    // Text is never mirrored: the object's scale magnitudes multiply the label's.
+    where.scale = def_.scale * glm::vec2(glm::length(xAxis), glm::length(yAxis));
+    where.color = def_.color;
+    where.hud = def_.hud;
+    if (where.scale.x <= 0.0f || where.scale.y <= 0.0f) {
+        return; // an object scaled to nothing shows no text
+    }
+    layout_ = system_->text().draw(*font_, def_.text, def_.style, where);
+}
+
+} // namespace e2d::render
