@@ -44,8 +44,8 @@ void drawDistances(render::Drawer& draw, const audio::SpatialDef& spatial, glm::
     for (float side : {-1.0f, 1.0f}) {
         const float minX = listener.x + side * spatial.minPanningDistance;
         const float maxX = listener.x + side * spatial.maxPanningDistance;
-        draw.line({minX, listener.y - h}, {minX, listener.y + h}, kYellow, 2.0f);
-        draw.line({maxX, listener.y - h}, {maxX, listener.y + h}, kOrange, 2.0f);
+        draw.line({minX, listener.y - h / 2}, {minX, listener.y + h / 2 - 70}, kYellow, 2.0f);
+        draw.line({maxX, listener.y - h / 2}, {maxX, listener.y + h / 2 - 70}, kOrange, 2.0f);
     }
     draw.circle(listener, 8.0f, kGrey, 2.0f);
 }
@@ -105,7 +105,9 @@ protected:
 
         render::Drawer& draw = game.renderer().drawer();
         drawDistances(draw, spatial, listener);
-        draw.line(listener, at, kGrey, 1.0f);
+        if (glm::distance(at, listener) > kSourceRadius) {
+            draw.line(listener, at - kSourceRadius * glm::normalize(at - listener), kGrey, 1.0f);
+        }
         draw.fillCircle(at, kSourceRadius, kBlue);
 
         // What the spatial model makes of it (the mixer applies the same functions).

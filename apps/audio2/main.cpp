@@ -48,9 +48,6 @@ class Audio2Scene : public core::Scene {
 protected:
     void onInitialize() override {
         auto& game = system<engine::GameSystem>();
-        game.actions().loadFromString("move_x = keys:left/right, keys:a/d\n"
-                                      "move_y = keys:down/up, keys:s/w\n",
-                                      "audio2 demo");
 
         // The listener rides on the camera, so what is heard is what is in the middle.
         camera_ = &createGameObject();
@@ -86,15 +83,17 @@ protected:
         for (float side : {-1.0f, 1.0f}) {
             const float minX = listener.x + side * spatial.minPanningDistance;
             const float maxX = listener.x + side * spatial.maxPanningDistance;
-            draw.line({minX, listener.y - kHeight}, {minX, listener.y + kHeight}, kYellow, 2.0f);
-            draw.line({maxX, listener.y - kHeight}, {maxX, listener.y + kHeight}, kOrange * 0.8f, 2.0f);
+            draw.line({minX, listener.y - kHeight / 2}, {minX, listener.y + kHeight / 2 - 90}, kYellow, 2.0f);
+            draw.line({maxX, listener.y - kHeight / 2}, {maxX, listener.y + kHeight / 2 - 90}, kOrange * 0.8f, 2.0f);
         }
         draw.circle(listener, 8.0f, kGrey, 2.0f);
 
         std::string text = "Arrows / WASD move the listener.";
         for (const Source& s : sources_) {
             const glm::vec2 at{s.object->position()};
-            draw.line(listener, at, kGrey, 1.0f);
+            if (glm::distance(at, listener) > kSourceRadius) {
+            draw.line(listener, at - kSourceRadius * glm::normalize(at - listener), kGrey, 1.0f);
+        }
             draw.fillCircle(at, kSourceRadius, s.colour);
             const float gain = audio::attenuationGain(spatial, glm::distance(at, listener), 1.0f);
             const audio::StereoGains pan = audio::panGains(spatial, at.x - listener.x);

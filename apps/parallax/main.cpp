@@ -4,6 +4,7 @@
 // drift slowly behind the near ones; every circle is half transparent, so the layers show
 // through each other. The camera glides on its own; the arrow keys push it too.
 #include <e2d/core/game_object.hpp>
+#include <e2d/core/random.hpp>
 #include <e2d/core/scene.hpp>
 #include <e2d/engine/game.hpp>
 #include <e2d/engine/game_system.hpp>
@@ -42,10 +43,6 @@ constexpr Layer kLayers[] = {
 // camera_y (the arrow keys, in [-1, 1]).
 class CameraMover : public core::Component {
 public:
-    void onInitialize() override {
-        scene()->system<engine::GameSystem>().actions().loadFromString(
-            "camera_x = keys:left/right\ncamera_y = keys:down/up\n", "parallax demo");
-    }
     void update(double dt) override {
         const input::ActionMap& actions = scene()->system<engine::GameSystem>().actions();
         const glm::vec2 push{actions.value("camera_x"), actions.value("camera_y")};

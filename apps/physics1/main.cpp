@@ -49,13 +49,6 @@ constexpr Mass kMasses[] = {
 class Physics1Scene : public core::Scene {
 protected:
     void onInitialize() override {
-        auto& game = system<engine::GameSystem>();
-        game.actions().loadFromString("more_sides = key:up, key:equal\n"
-                                      "fewer_sides = key:down, key:minus\n"
-                                      "mass = key:m\n"
-                                      "push = mouse:right, key:p\n"
-                                      "fire = key:space\n",
-                                      "physics1 demo");
 
         auto& camera = createGameObject();
         camera.setPosition(glm::vec2{0.0f, kViewHeight / 2 - 1.0f});
@@ -83,7 +76,10 @@ protected:
         }
 
         auto& info = createGameObject();
-        info.setPosition(glm::vec3{-1024.0f / 2 + 12, 720.0f / 2 - 10, 10.0f});
+        // HUD positions are camera units, metres here, from the view's centre; the scale makes
+        // one font pixel one screen pixel (40 px per metre).
+        info.setPosition(glm::vec3{-kViewWidth / 2 + 0.3f, kViewHeight / 2 - 0.25f, 10.0f});
+        info.setScale(1.0f / 40.0f);
         render::TextLabelDef label;
         label.pixelSize = 18;
         label.hud = true;
@@ -139,7 +135,7 @@ private:
     void addStatic(glm::vec2 centre, float hx, float hy) {
         auto& object = createGameObject();
         object.setPosition(centre);
-        object.addComponent<physics::Collider>(physics::makeBox(hx, hy));
+        object.addComponent<physics::Collider>(system<physics::PhysicsSystem>(), physics::makeBox(hx, hy));
         object.addComponent<apps::ShapeView>(glm::vec4{0.35f, 0.35f, 0.4f, 1.0f});
     }
 
@@ -147,11 +143,11 @@ private:
         auto& object = createGameObject();
         object.setPosition(at);
         object.setOrientation(angle);
-        object.addComponent<physics::Rigidbody>();
+        object.addComponent<physics::Rigidbody>(system<physics::PhysicsSystem>());
         physics::ColliderDef material;
         material.density = mass.density;
         material.friction = 0.5f;
-        object.addComponent<physics::Collider>(apps::regularPolygon(sides, radius), material);
+        object.addComponent<physics::Collider>(system<physics::PhysicsSystem>(), apps::regularPolygon(sides, radius), material);
         object.addComponent<apps::ShapeView>(mass.colour);
         ++bodies_;
         return object;
@@ -163,11 +159,11 @@ private:
         physics::RigidbodyDef body;
         body.bullet = true;
         body.linearVelocity = aimDirection() * kProjectileSpeed;
-        object.addComponent<physics::Rigidbody>(body);
+        object.addComponent<physics::Rigidbody>(system<physics::PhysicsSystem>(), body);
         physics::ColliderDef material;
         material.density = 8.0f;
         material.restitution = 0.3f;
-        object.addComponent<physics::Collider>(physics::Circle{{0.0f, 0.0f}, 0.2f}, material);
+        object.addComponent<physics::Collider>(system<physics::PhysicsSystem>(), physics::Circle{{0.0f, 0.0f}, 0.2f}, material);
         object.addComponent<apps::ShapeView>(glm::vec4{1.0f, 0.4f, 0.2f, 1.0f});
         ++bodies_;
     }

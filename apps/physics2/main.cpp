@@ -14,6 +14,7 @@
 #include <e2d/engine/game_system.hpp>
 #include <e2d/input/actions.hpp>
 #include <e2d/physics/collider.hpp>
+#include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 #include <e2d/render/sprite_renderer.hpp>
 #include <e2d/render/text_label.hpp>
@@ -45,9 +46,6 @@ constexpr Material kMaterials[] = {
 class Physics2Scene : public core::Scene {
 protected:
     void onInitialize() override {
-        auto& game = system<engine::GameSystem>();
-        game.actions().loadFromString("bouncy = key:1\nicy = key:2\nrough = key:3\ndebug = key:g\n",
-                                      "physics2 demo");
 
         auto& camera = createGameObject();
         camera.setPosition(glm::vec2{0.0f, kViewHeight / 2 - 1.0f});
@@ -95,7 +93,10 @@ protected:
         }
 
         auto& info = createGameObject();
-        info.setPosition(glm::vec3{-1024.0f / 2 + 12, 720.0f / 2 - 10, 10.0f});
+        // HUD positions are camera units, metres here, from the view's centre; the scale makes
+        // one font pixel one screen pixel (40 px per metre).
+        info.setPosition(glm::vec3{-kViewWidth / 2 + 0.3f, kViewHeight / 2 - 0.25f, 10.0f});
+        info.setScale(1.0f / 40.0f);
         render::TextLabelDef label;
         label.pixelSize = 18;
         label.hud = true;
@@ -134,7 +135,7 @@ private:
         physics::ColliderDef def;
         def.friction = material.friction;
         def.restitution = material.restitution;
-        object.addComponent<physics::Collider>(physics::makeBox(hx, hy), def);
+        object.addComponent<physics::Collider>(system<physics::PhysicsSystem>(), physics::makeBox(hx, hy), def);
         object.addComponent<apps::ShapeView>(colour);
     }
 
@@ -142,14 +143,14 @@ private:
         auto& object = createGameObject();
         object.setPosition(at);
         object.setOrientation(angle);
-        object.addComponent<physics::Rigidbody>();
+        object.addComponent<physics::Rigidbody>(system<physics::PhysicsSystem>());
         physics::ColliderDef def;
         def.friction = material.friction;
         def.restitution = material.restitution;
         if (material.ball) {
-            object.addComponent<physics::Collider>(physics::Circle{{0.0f, 0.0f}, 0.5f}, def);
+            object.addComponent<physics::Collider>(system<physics::PhysicsSystem>(), physics::Circle{{0.0f, 0.0f}, 0.5f}, def);
         } else {
-            object.addComponent<physics::Collider>(physics::makeBox(0.5f, 0.5f), def);
+            object.addComponent<physics::Collider>(system<physics::PhysicsSystem>(), physics::makeBox(0.5f, 0.5f), def);
         }
         object.addComponent<apps::ShapeView>(material.colour);
     }

@@ -33,13 +33,6 @@ constexpr std::array kVerticalNames = {"top", "center", "bottom"};
 class TextScene : public core::Scene {
 protected:
     void onInitialize() override {
-        system<engine::GameSystem>().actions().loadFromString(
-            "horizontal = key:h, key:right\n"
-            "horizontal_back = key:left\n"
-            "vertical = key:v, key:down\n"
-            "vertical_back = key:up\n",
-            "text demo");
-
         auto& camera = createGameObject();
         render::CameraComponentDef view;
         view.referenceSize = {kWidth, kHeight};
@@ -48,7 +41,7 @@ protected:
         auto& text = createGameObject();
         render::TextLabelDef def;
         def.text = "e2d draws text\nwith FreeType, kerned,\naligned as you like";
-        def.pixelSize = 56;
+        def.pixelSize = 44;
         def.color = {255, 230, 140, 255};
         label_ = text.addComponent<render::TextLabel>(def);
 
@@ -93,8 +86,8 @@ private:
 
     render::TextLabel* label_ = nullptr;
     render::TextLabel* help_ = nullptr;
-    int horizontal_ = 0;
-    int vertical_ = 0;
+    int horizontal_ = 1; // center
+    int vertical_ = 1;   // center
 };
 
 } // namespace
