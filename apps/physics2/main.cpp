@@ -95,7 +95,7 @@ protected:
         auto& info = createGameObject();
         // HUD positions are camera units, metres here, from the view's centre; the scale makes
         // one font pixel one screen pixel (40 px per metre).
-        info.setPosition(glm::vec3{-kViewWidth / 2 + 0.3f, kViewHeight / 2 - 0.25f, 10.0f});
+        info.setPosition(glm::vec3{-kViewWidth / 2 + 0.7f, kViewHeight / 2 - 0.2f, 10.0f});
         info.setScale(1.0f / 40.0f);
         render::TextLabelDef label;
         label.pixelSize = 18;
