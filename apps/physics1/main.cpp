@@ -132,7 +132,7 @@ private:
     void addStatic(glm::vec2 centre, float hx, float hy) {
         auto& object = createGameObject();
         object.setPosition(centre);
-        object.addComponent<physics::Collider>(system<physics::PhysicsSystem>(), physics::makeBox(hx, hy));
+        object.addComponent<physics::Collider>(physics::makeBox(hx, hy));
         object.addComponent<apps::ShapeView>(glm::vec4{0.35f, 0.35f, 0.4f, 1.0f});
     }
 
@@ -140,11 +140,11 @@ private:
         auto& object = createGameObject();
         object.setPosition(at);
         object.setOrientation(angle);
-        object.addComponent<physics::Rigidbody>(system<physics::PhysicsSystem>());
+        object.addComponent<physics::Rigidbody>();
         physics::ColliderDef material;
         material.density = mass.density;
         material.friction = 0.5f;
-        object.addComponent<physics::Collider>(system<physics::PhysicsSystem>(), apps::regularPolygon(sides, radius), material);
+        object.addComponent<physics::Collider>(apps::regularPolygon(sides, radius), material);
         object.addComponent<apps::ShapeView>(mass.colour);
         ++bodies_;
         return object;
@@ -156,11 +156,11 @@ private:
         physics::RigidbodyDef body;
         body.bullet = true;
         body.linearVelocity = aimDirection() * kProjectileSpeed;
-        object.addComponent<physics::Rigidbody>(system<physics::PhysicsSystem>(), body);
+        object.addComponent<physics::Rigidbody>(body);
         physics::ColliderDef material;
         material.density = 8.0f;
         material.restitution = 0.3f;
-        object.addComponent<physics::Collider>(system<physics::PhysicsSystem>(), physics::Circle{{0.0f, 0.0f}, 0.2f}, material);
+        object.addComponent<physics::Collider>(physics::Circle{{0.0f, 0.0f}, 0.2f}, material);
         object.addComponent<apps::ShapeView>(glm::vec4{1.0f, 0.4f, 0.2f, 1.0f});
         ++bodies_;
     }

@@ -14,7 +14,6 @@
 #include <e2d/engine/game_system.hpp>
 #include <e2d/input/actions.hpp>
 #include <e2d/physics/collider.hpp>
-#include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 #include <e2d/render/sprite_renderer.hpp>
 #include <e2d/render/text_label.hpp>
@@ -135,7 +134,7 @@ private:
         physics::ColliderDef def;
         def.friction = material.friction;
         def.restitution = material.restitution;
-        object.addComponent<physics::Collider>(system<physics::PhysicsSystem>(), physics::makeBox(hx, hy), def);
+        object.addComponent<physics::Collider>(physics::makeBox(hx, hy), def);
         object.addComponent<apps::ShapeView>(colour);
     }
 
@@ -143,14 +142,14 @@ private:
         auto& object = createGameObject();
         object.setPosition(at);
         object.setOrientation(angle);
-        object.addComponent<physics::Rigidbody>(system<physics::PhysicsSystem>());
+        object.addComponent<physics::Rigidbody>();
         physics::ColliderDef def;
         def.friction = material.friction;
         def.restitution = material.restitution;
         if (material.ball) {
-            object.addComponent<physics::Collider>(system<physics::PhysicsSystem>(), physics::Circle{{0.0f, 0.0f}, 0.5f}, def);
+            object.addComponent<physics::Collider>(physics::Circle{{0.0f, 0.0f}, 0.5f}, def);
         } else {
-            object.addComponent<physics::Collider>(system<physics::PhysicsSystem>(), physics::makeBox(0.5f, 0.5f), def);
+            object.addComponent<physics::Collider>(physics::makeBox(0.5f, 0.5f), def);
         }
         object.addComponent<apps::ShapeView>(material.colour);
     }
