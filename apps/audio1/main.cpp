@@ -73,7 +73,7 @@ protected:
         auto& info = createGameObject();
         info.setPosition(glm::vec3{-kWidth / 2 + 12, kHeight / 2 - 10, 10.0f});
         render::TextLabelDef label;
-        label.pixelSize = 20;
+        label.pixelSize = 18;
         label.hud = true;
         info_ = info.addComponent<render::TextLabel>(label);
     }
@@ -113,11 +113,16 @@ protected:
         // What the spatial model makes of it (the mixer applies the same functions).
         const float gain = audio::attenuationGain(spatial, glm::distance(at, listener), 1.0f);
         const audio::StereoGains pan = audio::panGains(spatial, at.x - listener.x);
-        char text[160];
+        // And what the mixer says of the voice playing it (gain * bus * master * attenuation).
+        const audio::Mixer& mixer = game.mixer();
+        const audio::VoiceId voice = source_->getComponent<audio::AudioSource>()->voice();
+        const bool playing = mixer.state(voice) == audio::VoiceState::Playing;
+        char text[224];
         std::snprintf(text, sizeof text,
                       "Drag the blue source with the mouse.\ndistance %.0f   attenuation %.2f   "
-                      "left %.2f   right %.2f",
-                      glm::distance(at, listener), gain, gain * pan.left, gain * pan.right);
+                      "left %.2f   right %.2f\nmixer: voice %s, heard at %.2f",
+                      glm::distance(at, listener), gain, gain * pan.left, gain * pan.right,
+                      playing ? "playing" : "silent", mixer.effectiveGain(voice));
         info_->setText(text);
     }
 

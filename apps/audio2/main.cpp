@@ -56,9 +56,9 @@ protected:
         camera_->addComponent<render::CameraComponent>(view);
         camera_->addComponent<audio::AudioListener>();
 
-        sources_[0] = {addSource(glm::vec2{-260.0f, 120.0f}, game.asset("assets/beeps.wav").string()),
+        sources_[0] = {addSource(glm::vec2{-230.0f, 100.0f}, game.asset("assets/beeps.wav").string()),
                        kBlue, "blue"};
-        sources_[1] = {addSource(glm::vec2{280.0f, -110.0f}, game.asset("assets/tune.ogg").string()),
+        sources_[1] = {addSource(glm::vec2{250.0f, -90.0f}, game.asset("assets/tune.ogg").string()),
                        kOrange, "orange"};
 
         auto& info = createGameObject();
@@ -97,9 +97,10 @@ protected:
             draw.fillCircle(at, kSourceRadius, s.colour);
             const float gain = audio::attenuationGain(spatial, glm::distance(at, listener), 1.0f);
             const audio::StereoGains pan = audio::panGains(spatial, at.x - listener.x);
-            char line[96];
-            std::snprintf(line, sizeof line, "\n%s source: left %.2f, right %.2f", s.name, gain * pan.left,
-                          gain * pan.right);
+            const audio::VoiceId voice = s.object->getComponent<audio::AudioSource>()->voice();
+            char line[128];
+            std::snprintf(line, sizeof line, "\n%s source: left %.2f, right %.2f (mixer: heard at %.2f)", s.name,
+                          gain * pan.left, gain * pan.right, game.mixer().effectiveGain(voice));
             text += line;
         }
         info_->setText(text);
