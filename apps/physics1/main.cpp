@@ -49,7 +49,6 @@ constexpr Mass kMasses[] = {
 class Physics1Scene : public core::Scene {
 protected:
     void onInitialize() override {
-
         auto& camera = createGameObject();
         camera.setPosition(glm::vec2{0.0f, kViewHeight / 2 - 1.0f});
         render::CameraComponentDef view;

@@ -45,7 +45,6 @@ constexpr Material kMaterials[] = {
 class Physics2Scene : public core::Scene {
 protected:
     void onInitialize() override {
-
         auto& camera = createGameObject();
         camera.setPosition(glm::vec2{0.0f, kViewHeight / 2 - 1.0f});
         render::CameraComponentDef view;
