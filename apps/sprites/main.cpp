@@ -9,7 +9,9 @@
 #include <e2d/engine/game.hpp>
 #include <e2d/engine/game_system.hpp>
 #include <e2d/render/animated_sprite_renderer.hpp>
+#include <e2d/render/render_system.hpp>
 #include <e2d/render/renderer.hpp>
+#include <e2d/render/sprite_sheet.hpp>
 #include <e2d/render/sprite_renderer.hpp>
 #include <e2d/render/text_label.hpp>
 
@@ -67,18 +69,31 @@ protected:
         view.referenceSize = {kWidth, kHeight};
         camera.addComponent<render::CameraComponent>(view);
 
+        // One parse of the sheet for every sprite; its frames' UV rectangles per animation.
+        const render::SpriteSheet* sheet = game.renderSystem().sheet(game.asset("assets/creatures.json"));
+        render::AnimatedSpriteRendererDef coin;
+        render::AnimatedSpriteRendererDef slime;
+        if (sheet != nullptr) {
+            coin.sprite.texturePath = slime.sprite.texturePath = sheet->imagePath().string();
+            coin.frames = render::animationUvs(*sheet, "coin");
+            slime.frames = render::animationUvs(*sheet, "slime");
+        } else {
+            // The error is logged; the image path draws the checker placeholder.
+            coin.sprite.texturePath = slime.sprite.texturePath = game.asset("assets/creatures.png").string();
+            coin.frames = slime.frames = {render::kFullUv};
+            coin.sprite.size = slime.sprite.size = {32.0f, 32.0f};
+        }
+        coin.animation.frameDuration = slime.animation.frameDuration = 0.08;
+
         core::Random& random = game.random();
-        render::AnimatedSpriteRendererDef def;
-        def.sheetPath = game.asset("assets/creatures.json");
-        def.frameDuration = 0.08;
         for (int i = 0; i < kSprites; ++i) {
-            const bool coin = i % 2 == 0;
+            const bool isCoin = i % 2 == 0;
+            render::AnimatedSpriteRendererDef& def = isCoin ? coin : slime;
             auto& sprite = createGameObject();
             // Centres 16 px (half a sprite) inside each half, so a 32 px lane stays clear.
-            const float x = coin ? random.range(16.0f, kWidth / 2 - 32) : random.range(kWidth / 2 + 32, kWidth - 16);
+            const float x = isCoin ? random.range(16.0f, kWidth / 2 - 32) : random.range(kWidth / 2 + 32, kWidth - 16);
             sprite.setPosition(glm::vec3{x, random.range(16.0f, kHeight - 56), 0.0f});
-            def.animation = coin ? "coin" : "slime";
-            def.startFrame = random.range(0, 7);
+            def.animation.startFrame = random.range(0, static_cast<int>(def.frames.size()) - 1);
             sprite.addComponent<render::AnimatedSpriteRenderer>(def);
         }
 

@@ -28,7 +28,7 @@ Collider::Collider(const ShapeGeometry& geometry, const ColliderDef& def) : geom
     constexpr const char* kConstructor = "Collider::Collider";
     requireNonNegative(kConstructor, "density", def.density);
     requireNonNegative(kConstructor, "friction", def.friction);
-    requireNonNegative(kConstructor, "restitution", def.restitution);
+    detail::component_check::requireUnitInterval(kConstructor, "restitution", def.restitution);
     requireNonNegative(kConstructor, "rollingResistance", def.rollingResistance);
 }
 

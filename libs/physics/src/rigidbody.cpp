@@ -78,7 +78,8 @@ void Rigidbody::onInitialize() {
     ensureBody();
     // Colliders that attached to a static body before this component existed move onto it.
     for (Collider* c : gameObject()->getComponents<Collider>()) {
-        if (!c->shape_.isNull() && sys().world().shapeBody(c->shape_) != body_) {
+        if (!c->shape_.isNull() && (!sys().world().isValid(c->shape_) ||
+                                    sys().world().shapeBody(c->shape_) != body_)) {
             c->attach();
         }
     }
@@ -89,11 +90,17 @@ void Rigidbody::onTerminate() {
     if (body_.isNull()) {
         return;
     }
+    if (!sys().world().isValid(body_)) {
+        // Destroyed through the World since the last fixed step: its shapes went with it.
+        sys().forgetDestroyedBodies();
+        return;
+    }
     // While it goes, colliders looking for a Rigidbody must not find this one.
     leaving_ = true;
     std::vector<Collider*> riders;
     for (Collider* c : gameObject()->getComponents<Collider>()) {
-        if (!c->shape_.isNull() && sys().world().shapeBody(c->shape_) == body_) {
+        if (!c->shape_.isNull() && sys().world().isValid(c->shape_) &&
+            sys().world().shapeBody(c->shape_) == body_) {
             c->detach();
             riders.push_back(c);
         }
@@ -113,7 +120,8 @@ void Rigidbody::onTerminate() {
 BodyId Rigidbody::requireBody(const char* function) const {
     if (body_.isNull()) {
         throw core::Error(std::string("physics::Rigidbody::") + function +
-                          "(): the Rigidbody has no body (its object is not in a scene yet)");
+                          "(): the Rigidbody has no body (its object is not in a scene yet, or "
+                          "its body was destroyed through the World)");
     }
     return body_;
 }

@@ -75,6 +75,11 @@ struct Contact {
     bool touching = false;
     bool sensor = false; // one shape is a sensor: overlap only, no constraint
     bool alive = false;
+    // The pre-solve callback's answer this step: false leaves the contact out of the solver.
+    bool enabled = true;
+    // Both shapes' event switches (contact or sensor begin/end, hits).
+    bool touchEvents = true;
+    bool hitEvents = true;
 };
 
 struct Simulation {
@@ -160,6 +165,7 @@ struct Simulation {
     std::vector<SensorEndTouchEvent> sensorEndEvents;
     std::vector<ContactHitEvent> hitEvents;
     std::vector<BodyId> nonFiniteBodies;
+    std::vector<BodyId> outOfRangeBodies;
     StepCounters counters{};
     // End events of contacts destroyed between steps (a shape destroyed, a body disabled):
     // handed out with the next step's events, so the current arrays stay valid meanwhile.

@@ -6,6 +6,7 @@
 #include "broad_phase.hpp"
 #include "id_pool.hpp"
 #include "simulation.hpp"
+#include "world_hooks.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -51,6 +52,10 @@ struct Shape {
     std::uint16_t generation = 1;
     bool isSensor = false;
     bool alive = false;
+    // Event switches (ShapeDef::enable*Events).
+    bool contactEvents = true;
+    bool sensorEvents = true;
+    bool hitEvents = true;
 };
 
 } // namespace e2d::physics::detail
@@ -61,6 +66,8 @@ struct World::Impl {
     Vec2 gravity{0.0f, -10.0f};
     CollisionAlgorithm collisionAlgorithm = CollisionAlgorithm::Sat;
     float speculativeDistance = kSpeculativeDistance;
+    // Written into every id handed out and checked on every use (WorldDef::tag); never 0.
+    std::uint16_t tag = 1;
 
     std::vector<detail::Body> bodies;
     std::vector<detail::Shape> shapes;
@@ -70,7 +77,7 @@ struct World::Impl {
 
     // Index of a live body named by `id`, or kNullIndex.
     [[nodiscard]] int find(BodyId id) const {
-        if (id.index1 == 0 || id.index1 > bodies.size()) {
+        if (id.index1 == 0 || id.index1 > bodies.size() || id.world != tag) {
             return detail::kNullIndex;
         }
         const detail::Body& body = bodies[id.index1 - 1];
@@ -78,22 +85,53 @@ struct World::Impl {
                                                               : detail::kNullIndex;
     }
     [[nodiscard]] int find(ShapeId id) const {
-        if (id.index1 == 0 || id.index1 > shapes.size()) {
+        if (id.index1 == 0 || id.index1 > shapes.size() || id.world != tag) {
             return detail::kNullIndex;
         }
         const detail::Shape& shape = shapes[id.index1 - 1];
         return shape.alive && shape.generation == id.generation ? static_cast<int>(id.index1 - 1)
                                                                 : detail::kNullIndex;
     }
+    // The function whose callback is running (overlapAabb, forEachCandidatePair,
+    // forEachTouchingContact, or step/updatePairs for the hooks), or nullptr, and for a hook
+    // its name ("pre-solve", "pair filter"). Meanwhile, functions that would change what the
+    // callback walks (the broad phase, the contacts, the object arrays) refuse to run.
+    mutable const char* lockedBy = nullptr;
+    mutable const char* lockedHook = nullptr;
+    // Throws core::Error naming `function` and the running callback's function, if any.
+    void requireUnlocked(const char* function) const;
+    // Locks the world while a query's callback runs; nests.
+    class CallbackLock {
+    public:
+        CallbackLock(const Impl& world, const char* function, const char* hook = nullptr)
+            : world_(world), previous_(world.lockedBy), previousHook_(world.lockedHook) {
+            world_.lockedBy = function;
+            world_.lockedHook = hook;
+        }
+        ~CallbackLock() {
+            world_.lockedBy = previous_;
+            world_.lockedHook = previousHook_;
+        }
+        CallbackLock(const CallbackLock&) = delete;
+        CallbackLock& operator=(const CallbackLock&) = delete;
+
+    private:
+        const Impl& world_;
+        const char* previous_;
+        const char* previousHook_;
+    };
+
     // Like find(), but throws core::Error naming `function` for a stale or null handle.
     int require(BodyId id, const char* function) const;
     int require(ShapeId id, const char* function) const;
 
     [[nodiscard]] BodyId bodyId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1, bodies[static_cast<std::size_t>(index)].generation};
+        return {static_cast<std::uint32_t>(index) + 1,
+                bodies[static_cast<std::size_t>(index)].generation, tag};
     }
     [[nodiscard]] ShapeId shapeId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1, shapes[static_cast<std::size_t>(index)].generation};
+        return {static_cast<std::uint32_t>(index) + 1,
+                shapes[static_cast<std::size_t>(index)].generation, tag};
     }
     detail::Body& body(int index) { return bodies[static_cast<std::size_t>(index)]; }
     const detail::Body& body(int index) const { return bodies[static_cast<std::size_t>(index)]; }
@@ -109,6 +147,8 @@ struct World::Impl {
     // --- dynamics (world_step.cpp, contact.cpp, island.cpp, world_dynamics.cpp) ---
 
     detail::Simulation sim;
+    // Pre-solve and pair filter callbacks, move events (world_hooks.cpp).
+    detail::Hooks hooks;
 
     // Sets the body's motion fields from the def (createBody()).
     void initMotion(int bodyIndex, const BodyDef& def);
@@ -126,6 +166,15 @@ struct World::Impl {
     void scheduleWide(int constraintCount);
     void solveContinuous(int simIndex);
     void updateSleep(float dt);
+    // Fills hooks.moveEvents from this step's solver bodies (world_hooks.cpp).
+    void collectMoveEvents(float dt);
+    // Re-mixes the materials and event switches of the shape's contacts after a setter.
+    void refreshContactMaterials(int shapeIndex);
+    // Continuous collision's extra rules: a chain segment is one-sided, and the pair filter
+    // callback may refuse the pair (world_hooks.cpp).
+    [[nodiscard]] bool passesChainAndFilter(int movingShape, int otherShape,
+                                            const Transform& xfMoving,
+                                            const Transform& xfOther) const;
 };
 
 } // namespace e2d::physics

@@ -28,8 +28,15 @@ bool isFiniteState(const detail::BodySim& s, const detail::BodyState& st) {
 } // namespace
 
 void World::step(float timeStep) {
+    impl_->requireUnlocked("step");
     if (!(isFinite(timeStep) && timeStep >= 0.0f)) {
         check::fail("step", "timeStep must be finite and >= 0, got " + check::text(timeStep));
+    }
+    if (timeStep > kMaxTimeStep) {
+        check::fail("step", "timeStep must be <= kMaxTimeStep (" + check::text(kMaxTimeStep) +
+                                " s), got " + check::text(timeStep) +
+                                ": longer steps sink bodies into what they rest on; call step() "
+                                "several times");
     }
     Impl& w = *impl_;
     detail::Simulation& s = w.sim;
@@ -39,10 +46,17 @@ void World::step(float timeStep) {
     s.sensorEndEvents.clear();
     s.hitEvents.clear();
     s.nonFiniteBodies.clear();
+    s.outOfRangeBodies.clear();
     s.counters = {};
     s.endEvents.swap(s.pendingEndEvents);
     s.sensorEndEvents.swap(s.pendingSensorEndEvents);
     s.inStep = true;
+    // A callback (pre-solve, pair filter) that throws leaves the step where it was, and the
+    // world out of it.
+    struct InStep {
+        detail::Simulation& sim;
+        ~InStep() { sim.inStep = false; }
+    } inStep{s};
     w.updateContacts(timeStep);
     if (timeStep > 0.0f) {
         w.solve(timeStep);
@@ -50,7 +64,7 @@ void World::step(float timeStep) {
         s.counters.contactConstraints = static_cast<int>(s.constraintContacts.size());
         w.updateSleep(timeStep);
     }
-    s.inStep = false;
+    w.collectMoveEvents(timeStep);
 }
 
 namespace {
@@ -438,15 +452,18 @@ void World::Impl::solve(float dt) {
         }
     }
 
-    // Write back, move the proxies; a body whose state went non-finite is disabled instead.
+    // Write back, move the proxies; a body whose state went non-finite or whose origin left
+    // the coordinate range (kHuge) is disabled instead.
     for (std::size_t k = 0; k < s.sims.size(); ++k) {
         const detail::BodySim& bs = s.sims[k];
         const detail::BodyState& st = s.states[k];
         detail::Body& b = body(bs.bodyIndex);
         b.motion.force = {0.0f, 0.0f};
         b.motion.torque = 0.0f;
-        if (!isFiniteState(bs, st)) {
-            s.nonFiniteBodies.push_back(bodyId(bs.bodyIndex));
+        const bool finite = isFiniteState(bs, st);
+        if (!finite || !check::isWithinHuge(bs.transform.p)) {
+            // Its last transform (finite, within kHuge) stays, so calls from where it is work.
+            (finite ? s.outOfRangeBodies : s.nonFiniteBodies).push_back(bodyId(bs.bodyIndex));
             b.linearVelocity = {0.0f, 0.0f};
             b.angularVelocity = 0.0f;
             b.enabled = false;
@@ -499,8 +516,8 @@ void World::Impl::solve(float dt) {
     }
     for (const detail::Simulation::HitCandidate& h : s.hitCandidates) {
         const detail::Contact& c = s.contacts[static_cast<std::size_t>(h.contact)];
-        if (!c.alive) {
-            continue; // ended with a non-finite body
+        if (!c.alive || !c.hitEvents) {
+            continue; // ended with a non-finite body, or a shape's hit events are off
         }
         // A speculative point sits midway across the gap; the hit is on A's surface.
         const ManifoldPoint& mp = c.manifold.points[h.point];

@@ -1,104 +1,79 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/render/animated_sprite_renderer.hpp>
 
-#include <e2d/core/log.hpp>
-#include <e2d/core/scene.hpp>
-#include <e2d/render/render_system.hpp>
-
 #include "error_format.hpp"
 
-#include <algorithm>
-#include <cmath>
+#include <string>
 
 namespace e2d::render {
+
 namespace {
 
 constexpr const char* kCtor = "render::AnimatedSpriteRenderer";
 
+const std::vector<Rect>& checkedFrames(const AnimatedSpriteRendererDef& def) {
+    if (def.frames.empty()) {
+        detail::fail(kCtor, "frames must not be empty");
+    }
+    for (std::size_t i = 0; i < def.frames.size(); ++i) {
+        const Rect& r = def.frames[i];
+        if (!detail::isFinite(r.min) || !detail::isFinite(r.size) || r.min.x < 0.0f || r.min.y < 0.0f ||
+            r.size.x < 0.0f || r.size.y < 0.0f || r.max().x > 1.0f || r.max().y > 1.0f) {
+            detail::fail(kCtor, "frames[" + std::to_string(i) + "] must lie in [0, 1], got min " +
+                                    detail::formatVec(r.min) + " size " + detail::formatVec(r.size));
+        }
+    }
+    return def.frames;
+}
+
+AnimationDef timing(const AnimatedSpriteRendererDef& def) {
+    AnimationDef a = def.animation;
+    a.frameCount = static_cast<int>(checkedFrames(def).size());
+    return a;
+}
+
+SpriteRendererDef firstLook(const AnimatedSpriteRendererDef& def) {
+    SpriteRendererDef s = def.sprite;
+    const int start = def.animation.startFrame;
+    if (start >= 0 && static_cast<std::size_t>(start) < def.frames.size()) {
+        s.uv = def.frames[static_cast<std::size_t>(start)];
+    }
+    return s;
+}
+
 } // namespace
 
+std::vector<Rect> animationUvs(const SpriteSheet& sheet, std::string_view baseName) {
+    const std::vector<int> indices = sheet.animationFrames(baseName);
+    if (indices.empty()) {
+        detail::fail("render::animationUvs()",
+                     "sheet '" + sheet.name() + "' has no frames named '" + std::string(baseName) + "<number>'");
+    }
+    std::vector<Rect> uvs;
+    uvs.reserve(indices.size());
+    for (int index : indices) {
+        const SpriteFrame& frame = sheet.frames()[static_cast<std::size_t>(index)];
+        if (frame.rotated) {
+            detail::fail("render::animationUvs()", "sheet '" + sheet.name() + "': frame '" + frame.name +
+                                                       "' is stored rotated, which a sprite's UV rectangle "
+                                                       "cannot show upright");
+        }
+        uvs.push_back(frame.uv);
+    }
+    return uvs;
+}
+
 AnimatedSpriteRenderer::AnimatedSpriteRenderer(const AnimatedSpriteRendererDef& def)
-    : SpriteRenderer(def.sprite), animDef_(def), name_(def.animation) {
-    if (!std::isfinite(def.frameDuration) || def.frameDuration <= 0.0) {
-        detail::fail(kCtor, "frameDuration must be > 0 and finite, got " +
-                                detail::formatFloat(static_cast<float>(def.frameDuration)));
-    }
-    if (!std::isfinite(def.speed) || def.speed < 0.0) {
-        detail::fail(kCtor, "speed must be >= 0 and finite, got " +
-                                detail::formatFloat(static_cast<float>(def.speed)));
-    }
-}
-
-void AnimatedSpriteRenderer::onInitialize() {
-    RenderSystem& system = scene()->system<RenderSystem>();
-    sheet_ = system.sheet(animDef_.sheetPath);
-    SpriteRendererDef& sprite = mutableDef();
-    sprite.texture = {};
-    if (sheet_ == nullptr) {
-        // The placeholder: the renderer draws its checker for a path it cannot load.
-        sprite.texturePath = animDef_.sheetPath.string();
-        sprite.uv = kFullUv;
-    } else {
-        sprite.texturePath = sheet_->imagePath().string();
-        play(name_, true);
-    }
-    SpriteRenderer::onInitialize();
-}
-
-void AnimatedSpriteRenderer::play(const std::string& name, bool restart) {
-    if (sheet_ == nullptr || (name == name_ && animation_ && !restart)) {
-        return;
-    }
-    std::vector<int> frames = sheet_->animationFrames(name);
-    if (frames.empty()) {
-        if (core::Logger* log = scene() != nullptr ? scene()->logger() : nullptr) {
-            log->error(std::string(kCtor) + ": sheet '" + sheet_->name() + "' has no frames named '" +
-                       name + "<n>'");
-        }
-        if (!animation_) {
-            // Nothing to play at all: show the whole sheet rather than nothing.
-            setUv(kFullUv);
-        }
-        return;
-    }
-    name_ = name;
-    frames_ = std::move(frames);
-    AnimationDef def;
-    def.frameCount = static_cast<int>(frames_.size());
-    def.frameDuration = animDef_.frameDuration;
-    def.mode = animDef_.mode;
-    def.startFrame = std::clamp(animDef_.startFrame, 0, def.frameCount - 1);
-    def.speed = animation_ ? animation_->def().speed : animDef_.speed;
-    animation_.emplace(def);
-    shown_ = -1;
-    showFrame();
-}
-
-void AnimatedSpriteRenderer::setSpeed(double speed) {
-    if (!std::isfinite(speed) || speed < 0.0) {
-        detail::fail("render::AnimatedSpriteRenderer::setSpeed()",
-                     "speed must be >= 0 and finite, got " + detail::formatFloat(static_cast<float>(speed)));
-    }
-    animDef_.speed = speed;
-    if (animation_) {
-        animation_->setSpeed(speed);
-    }
+    : SpriteRenderer(firstLook(def)), frames_(checkedFrames(def)), animation_(timing(def)) {
+    shown_ = animation_.frame();
 }
 
 void AnimatedSpriteRenderer::update(double dt) {
-    if (animation_) {
-        animation_->update(dt);
-        showFrame();
+    animation_.update(dt);
+    if (animation_.frame() != shown_) {
+        shown_ = animation_.frame();
+        setUv(frames_[static_cast<std::size_t>(shown_)]);
     }
-}
-
-void AnimatedSpriteRenderer::showFrame() {
-    const int frame = animation_->frame();
-    if (frame == shown_) {
-        return;
-    }
-    shown_ = frame;
-    setUv(sheet_->frames()[static_cast<std::size_t>(frames_[static_cast<std::size_t>(frame)])].uv);
 }
 
 } // namespace e2d::render

@@ -40,15 +40,26 @@ inline std::string formatVec(glm::ivec2 v) {
 
 inline bool isFinite(glm::vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 
+// The throwing halves are out of line (cold), so the checks inline into hot setters.
+[[noreturn, gnu::cold, gnu::noinline]] inline void failNotFinite(std::string_view function, std::string_view field,
+                                                               float value) {
+    fail(function, std::string(field) + " must be finite, got " + formatFloat(value));
+}
+
+[[noreturn, gnu::cold, gnu::noinline]] inline void failNotFinite(std::string_view function, std::string_view field,
+                                                               glm::vec2 value) {
+    fail(function, std::string(field) + " must be finite, got " + formatVec(value));
+}
+
 inline void requireFinite(std::string_view function, std::string_view field, float value) {
-    if (!std::isfinite(value)) {
-        fail(function, std::string(field) + " must be finite, got " + formatFloat(value));
+    if (!std::isfinite(value)) [[unlikely]] {
+        failNotFinite(function, field, value);
     }
 }
 
 inline void requireFinite(std::string_view function, std::string_view field, glm::vec2 value) {
-    if (!isFinite(value)) {
-        fail(function, std::string(field) + " must be finite, got " + formatVec(value));
+    if (!isFinite(value)) [[unlikely]] {
+        failNotFinite(function, field, value);
     }
 }
 

@@ -325,7 +325,8 @@ void Renderer::render(Camera& camera) {
     glUniform1f(r.depthScaleLocation, 1.0f / r.def.depthRange);
     glActiveTexture(GL_TEXTURE0);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    // LEQUAL: at equal z the later-drawn quad wins, as in the translucent pass (painter's order).
+    glDepthFunc(GL_LEQUAL);
     glEnable(GL_DEPTH_CLAMP);
     glDisable(GL_CULL_FACE);
     r.beginPass(false);

@@ -74,10 +74,10 @@ void packEdges(Instance& out, glm::vec2 ex, glm::vec2 ey) {
 }
 
 // Bounds of the parallelogram origin + [0,1] ex + [0,1] ey.
-glm::vec4 boundsOf(glm::vec2 o, glm::vec2 ex, glm::vec2 ey) {
-    glm::vec2 lo = o + glm::min(ex, glm::vec2(0.0f)) + glm::min(ey, glm::vec2(0.0f));
-    glm::vec2 hi = o + glm::max(ex, glm::vec2(0.0f)) + glm::max(ey, glm::vec2(0.0f));
-    return {lo.x, lo.y, hi.x, hi.y};
+// Scalar std::min/max: these run for every moved sprite and must inline.
+inline glm::vec4 boundsOf(glm::vec2 o, glm::vec2 ex, glm::vec2 ey) {
+    return {o.x + std::min(ex.x, 0.0f) + std::min(ey.x, 0.0f), o.y + std::min(ex.y, 0.0f) + std::min(ey.y, 0.0f),
+            o.x + std::max(ex.x, 0.0f) + std::max(ey.x, 0.0f), o.y + std::max(ex.y, 0.0f) + std::max(ey.y, 0.0f)};
 }
 
 bool outside(const glm::vec4& b, const ViewBounds& view) {
@@ -91,7 +91,7 @@ struct Placement {
     glm::vec2 ey;
 };
 
-Placement place(glm::vec2 position, glm::vec2 pivotOffset, glm::vec2 ex, glm::vec2 ey, float parallax, bool hud,
+inline Placement place(glm::vec2 position, glm::vec2 pivotOffset, glm::vec2 ex, glm::vec2 ey, float parallax, bool hud,
                 const CameraState& camera) {
     if (hud) {
         // camera -> world: position + R(rotation) * v / zoom, applied to the whole quad.
@@ -116,13 +116,24 @@ SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function) {
     return const_cast<Slot&>(static_cast<const SpriteBatcher&>(*this).slot(id, function));
 }
 
+namespace {
+[[noreturn, gnu::cold, gnu::noinline]] void failBadId(SpriteId id, const char* function) {
+    fail(function, id.isNull() ? std::string("null sprite id")
+                               : "stale sprite id (index " + std::to_string(id.index1 - 1) + ", generation " +
+                                     std::to_string(id.generation) + ")");
+}
+} // namespace
+
 const SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function) const {
-    if (!isValid(id)) {
-        fail(function, id.isNull() ? std::string("null sprite id")
-                                   : "stale sprite id (index " + std::to_string(id.index1 - 1) + ", generation " +
-                                         std::to_string(id.generation) + ")");
+    // Every setter starts here: the check inlines, the message is built out of line.
+    if (id.index1 == 0 || id.index1 > slots_.size()) [[unlikely]] {
+        failBadId(id, function);
     }
-    return slots_[id.index1 - 1];
+    const Slot& s = slots_[id.index1 - 1];
+    if (!s.alive || s.generation != id.generation) [[unlikely]] {
+        failBadId(id, function);
+    }
+    return s;
 }
 
 bool SpriteBatcher::isValid(SpriteId id) const noexcept {
@@ -156,15 +167,6 @@ std::uint64_t SpriteBatcher::key(float z, std::uint32_t texture, bool isOpaque) 
     return (1ull << 63) | (zBits << 31) | (texture & 0x7fffffffu);
 }
 
-void SpriteBatcher::markDirty(std::uint32_t index, std::uint8_t bits) {
-    Slot& s = slots_[index];
-    if ((s.dirty & kQueued) == 0) {
-        dirtyList_.push_back(index);
-        s.dirty |= kQueued;
-    }
-    s.dirty |= bits;
-}
-
 SpriteId SpriteBatcher::create(const SpriteDef& def) {
     validate(kCreate, def);
     if (!def.texture.isNull() && !(def.texture.index1 <= textures_.size() &&
@@ -178,8 +180,7 @@ SpriteId SpriteBatcher::create(const SpriteDef& def) {
     } else {
         index = static_cast<std::uint32_t>(slots_.size());
         slots_.emplace_back();
-        packed_.emplace_back();
-        bounds_.emplace_back();
+        orderPosition_.push_back(kNotDrawn);
     }
     Slot& s = slots_[index];
     s.def = def;
@@ -424,7 +425,13 @@ void SpriteBatcher::clearTransient() noexcept { quads_.clear(); }
 
 void SpriteBatcher::repack(std::uint32_t index, const CameraState& camera) {
     Slot& s = slots_[index];
-    Instance& out = packed_[index];
+    const std::uint32_t at = orderPosition_[index];
+    if (at == kNotDrawn) {
+        // Hidden (or destroyed): sortOrder() marks it dirty again when it is drawn again.
+        s.dirty = 0;
+        return;
+    }
+    Instance& out = orderPacked_[at];
     const SpriteDef& d = s.def;
     if ((s.dirty & kShape) != 0) {
         glm::vec2 size = d.size;
@@ -451,7 +458,7 @@ void SpriteBatcher::repack(std::uint32_t index, const CameraState& camera) {
     out.x = p.origin.x;
     out.y = p.origin.y;
     out.z = d.z;
-    bounds_[index] = boundsOf(p.origin, p.ex, p.ey);
+    orderBounds_[at] = boundsOf(p.origin, p.ex, p.ey);
     s.dirty = 0;
 }
 
@@ -476,11 +483,29 @@ void SpriteBatcher::sortOrder() {
     // Ties keep creation (slot) order, so equal keys draw the same way every frame.
     std::sort(order_.begin(), order_.end(),
               [&](std::uint32_t a, std::uint32_t b) { return keys[a] != keys[b] ? keys[a] < keys[b] : a < b; });
+    // The packed instances live only in draw order: sprites drawn last frame move to their new
+    // place; the others (new, shown again) are packed from scratch by prepare().
+    std::vector<Instance> oldPacked = std::move(orderPacked_);
+    std::vector<glm::vec4> oldBounds = std::move(orderBounds_);
+    std::vector<std::uint32_t> oldPosition = orderPosition_;
+    orderPacked_.assign(order_.size(), Instance{});
+    orderBounds_.assign(order_.size(), glm::vec4(0.0f));
     orderKeys_.resize(order_.size());
     orderTranslucent_.resize(order_.size());
+    orderTexture_.resize(order_.size());
+    std::fill(orderPosition_.begin(), orderPosition_.end(), kNotDrawn);
     for (std::size_t k = 0; k < order_.size(); ++k) {
-        orderKeys_[k] = keys[order_[k]];
+        const std::uint32_t i = order_[k];
+        orderKeys_[k] = keys[i];
         orderTranslucent_[k] = static_cast<std::uint8_t>(orderKeys_[k] >> 63);
+        orderTexture_[k] = slots_[i].texture;
+        orderPosition_[i] = static_cast<std::uint32_t>(k);
+        if (const std::uint32_t was = oldPosition[i]; was != kNotDrawn && was < oldPacked.size()) {
+            orderPacked_[k] = oldPacked[was];
+            orderBounds_[k] = oldBounds[was];
+        } else {
+            markDirty(i, kMoved | kShape | kLook);
+        }
     }
     orderDirty_ = false;
 }
@@ -571,18 +596,22 @@ std::size_t SpriteBatcher::emit(Instance* dst, std::vector<Batch>& batches, Buil
     };
     const std::size_t sprites = order_.size();
     if (quads_.empty()) {
+        // Sequential reads of the draw-order copies: bounds, texture, pass, instance.
+        const glm::vec4* bounds = orderBounds_.data();
+        const Instance* packed = orderPacked_.data();
+        const std::uint32_t* textureOf = orderTexture_.data();
+        const std::uint8_t* translucentOf = orderTranslucent_.data();
         for (std::size_t k = 0; k < sprites; ++k) {
-            std::uint32_t i = order_[k];
-            if (outside(bounds_[i], view)) {
+            if (outside(bounds[k], view)) {
                 ++culled;
                 continue;
             }
-            std::uint32_t texture = slots_[i].texture;
-            bool translucent = orderTranslucent_[k] != 0;
+            const std::uint32_t texture = textureOf[k];
+            const bool translucent = translucentOf[k] != 0;
             if (texture != currentTexture || translucent != currentTranslucent) [[unlikely]] {
                 open(texture, translucent);
             }
-            dst[n++] = packed_[i];
+            dst[n++] = packed[k];
         }
     } else {
         std::size_t k = 0;
@@ -591,15 +620,13 @@ std::size_t SpriteBatcher::emit(Instance* dst, std::vector<Batch>& batches, Buil
             bool takeSprite = q == quadOrder_.size() ||
                               (k < sprites && orderKeys_[k] <= quads_[quadOrder_[q]].key);
             if (takeSprite) {
-                std::uint32_t i = order_[k];
-                bool translucent = orderTranslucent_[k] != 0;
-                ++k;
-                if (outside(bounds_[i], view)) {
+                const std::size_t at = k++;
+                if (outside(orderBounds_[at], view)) {
                     ++culled;
                     continue;
                 }
-                open(slots_[i].texture, translucent);
-                dst[n++] = packed_[i];
+                open(orderTexture_[at], orderTranslucent_[at] != 0);
+                dst[n++] = orderPacked_[at];
             } else {
                 const Transient& t = quads_[quadOrder_[q++]];
                 if (outside(t.bounds, view)) {

@@ -45,7 +45,7 @@ struct BuildCounts {
 // so the benchmark can time the CPU side alone.
 //
 // Each sprite keeps its packed Instance and world bounds between frames; a setter marks it
-// dirty and only dirty sprites are repacked. The draw order (opaque by texture then front to
+// dirty and only dirty sprites are repacked (into the slot's copy and the draw-order copy). The draw order (opaque by texture then front to
 // back, translucent back to front) is re-sorted only when something that decides it changed
 // (z, texture, opacity, visibility, HUD/parallax, creation, destruction). A frame copies the
 // packed instances of the sorted, unculled sprites into the destination, merging in the
@@ -108,20 +108,29 @@ private:
         kQueued = 8, // in dirtyList_
     };
 
-    struct Slot {
-        SpriteDef def;
+    // What a moving sprite's setter and repack touch comes first (one cache line with the
+    // definition's texture, position and z).
+    struct alignas(64) Slot {
         std::uint16_t generation = 1;
         bool alive = false;
         std::uint8_t dirty = 0;
-        glm::vec2 edgeX{0.0f, 0.0f}; // local (world or camera) units, before HUD transform
-        glm::vec2 edgeY{0.0f, 0.0f};
-        glm::vec2 pivotOffset{0.0f, 0.0f}; // origin - position, local units
         std::uint32_t texture = 0;         // resolved texture slot
+        glm::vec2 pivotOffset{0.0f, 0.0f}; // origin - position, local units
+        glm::vec2 edgeX{0.0f, 0.0f};       // local (world or camera) units, before HUD transform
+        glm::vec2 edgeY{0.0f, 0.0f};
+        SpriteDef def;
     };
 
     Slot& slot(SpriteId id, const char* function);
     const Slot& slot(SpriteId id, const char* function) const;
-    void markDirty(std::uint32_t index, std::uint8_t bits);
+    void markDirty(std::uint32_t index, std::uint8_t bits) {
+        Slot& s = slots_[index];
+        if ((s.dirty & kQueued) == 0) {
+            dirtyList_.push_back(index);
+            s.dirty |= kQueued;
+        }
+        s.dirty |= bits;
+    }
     void resolveTexture(Slot& s) const;
     void repack(std::uint32_t index, const CameraState& camera);
     void sortOrder();
@@ -133,14 +142,20 @@ private:
     std::uint32_t placeholderSlot_;
 
     std::vector<Slot> slots_;
-    std::vector<Instance> packed_;   // per slot, ready to copy
-    std::vector<glm::vec4> bounds_;  // per slot, world min x, min y, max x, max y
     std::vector<std::uint32_t> free_;
     std::vector<std::uint32_t> dirtyList_;
     std::vector<std::uint32_t> cameraDependent_; // visible HUD or parallax != 1 sprites
     std::vector<std::uint32_t> order_;           // visible sprites in draw order
     std::vector<std::uint64_t> orderKeys_;
     std::vector<std::uint8_t> orderTranslucent_;
+    // Per drawn sprite in draw order, kept up to date by repack(), so a frame's emit() reads
+    // them front to back (a streaming copy): the packed instance, its world bounds (min x,
+    // min y, max x, max y) and texture slot.
+    std::vector<Instance> orderPacked_;
+    std::vector<glm::vec4> orderBounds_;
+    std::vector<std::uint32_t> orderTexture_;
+    std::vector<std::uint32_t> orderPosition_; // per slot: its index in order_, or kNotDrawn
+    static constexpr std::uint32_t kNotDrawn = 0xffffffffu;
     int alive_ = 0;
     bool orderDirty_ = true;
     bool allDirty_ = false;

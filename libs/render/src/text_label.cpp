@@ -1,68 +1,55 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/render/text_label.hpp>
 
+#include <e2d/core/game_object.hpp>
 #include <e2d/core/scene.hpp>
-#include <e2d/render/text_renderer.hpp>
 
 #include "error_format.hpp"
-#include "world_pose.hpp"
+
+#include <glm/geometric.hpp>
 
 #include <cmath>
+#include <string>
 
 namespace e2d::render {
-namespace {
 
+namespace {
 constexpr const char* kCtor = "render::TextLabel";
 
-void checkStyle(std::string_view function, const TextStyle& style) {
+void checkStyle(const char* function, const TextStyle& style) {
     if (!std::isfinite(style.lineSpacing) || style.lineSpacing <= 0.0f) {
-        detail::fail(function, "lineSpacing must be > 0 and finite, got " +
-                                   detail::formatFloat(style.lineSpacing));
+        detail::fail(function, "style.lineSpacing must be > 0 and finite, got " + detail::formatFloat(style.lineSpacing));
     }
 }
-
 } // namespace
 
 TextLabel::TextLabel(const TextLabelDef& def) : def_(def) {
     if (def.pixelSize < 1 || def.pixelSize > 1024) {
         detail::fail(kCtor, "pixelSize must be in [1, 1024], got " + std::to_string(def.pixelSize));
     }
-    checkStyle(kCtor, def.style);
+    if (!detail::isFinite(def.scale) || def.scale.x <= 0.0f || def.scale.y <= 0.0f) {
+        detail::fail(kCtor, "scale must be > 0 and finite, got " + detail::formatVec(def.scale));
+    }
     detail::requireFinite(kCtor, "zOffset", def.zOffset);
-}
-
-TextLabel::~TextLabel() {
-    if (system_ != nullptr) {
-        system_->removeHook(*this);
-    }
-}
-
-void TextLabel::setText(std::string text) {
-    if (text != def_.text) {
-        def_.text = std::move(text);
-        dirty_ = true;
-    }
+    checkStyle(kCtor, def.style);
 }
 
 void TextLabel::setStyle(const TextStyle& style) {
     checkStyle("render::TextLabel::setStyle()", style);
     def_.style = style;
-    dirty_ = true;
 }
 
-void TextLabel::setAlignment(HorizontalAlign horizontal, VerticalAlign vertical) {
-    def_.style.horizontal = horizontal;
-    def_.style.vertical = vertical;
-    dirty_ = true;
-}
+TextLabel::~TextLabel() { detach(); }
 
 void TextLabel::onInitialize() {
     system_ = &scene()->system<RenderSystem>();
+    font_ = system_->text().font(def_.fontPath, def_.pixelSize);
     system_->addHook(*this);
-    dirty_ = true;
 }
 
-void TextLabel::onTerminate() {
+void TextLabel::onTerminate() { detach(); }
+
+void TextLabel::detach() noexcept {
     if (system_ != nullptr) {
         system_->removeHook(*this);
     }
@@ -70,31 +57,25 @@ void TextLabel::onTerminate() {
     font_ = nullptr;
 }
 
-void TextLabel::beforeRender(Renderer& renderer) {
-    static_cast<void>(renderer);
-    if (system_ == nullptr || !visible_) {
+void TextLabel::beforeRender(Renderer&) {
+    if (system_ == nullptr || font_ == nullptr || !def_.visible || def_.text.empty()) {
         return;
     }
-    TextRenderer& text = system_->text();
-    Font* font = text.font(def_.fontPath, def_.pixelSize);
-    if (font == nullptr) {
-        layout_ = {};
-        return;
-    }
-    if (font != font_ || dirty_) {
-        font_ = font;
-        layout_ = layoutText(*font, def_.text, def_.style);
-        dirty_ = false;
-    }
-    const detail::WorldPose pose = detail::worldPose(*gameObject());
+    const glm::mat4& m = gameObject()->worldTransform();
+    const glm::vec2 xAxis(m[0][0], m[0][1]);
+    const glm::vec2 yAxis(m[1][0], m[1][1]);
     TextDraw where;
-    where.position = pose.position;
-    where.z = pose.z + def_.zOffset;
-    where.rotation = pose.rotation;
-    where.scale = pose.scale;
+    where.position = {m[3][0], m[3][1]};
+    where.z = m[3][2] + def_.zOffset;
+    where.rotation = gameObject()->worldOrientation();
+    // Text is never mirrored: the object's scale magnitudes multiply the label's.
+    where.scale = def_.scale * glm::vec2(glm::length(xAxis), glm::length(yAxis));
     where.color = def_.color;
     where.hud = def_.hud;
-    text.submit(*font, layout_, where);
+    if (where.scale.x <= 0.0f || where.scale.y <= 0.0f) {
+        return; // an object scaled to nothing shows no text
+    }
+    layout_ = system_->text().draw(*font_, def_.text, def_.style, where);
 }
 
 } // namespace e2d::render

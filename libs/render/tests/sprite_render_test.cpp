@@ -63,6 +63,26 @@ TEST_P(SpriteRender, RedSpriteCoversExactlyItsPixels) {
     EXPECT_EQ(stats.opaqueBatches, 1);
 }
 
+// Equal z, one texture: the later sprite is on top, opaque or translucent alike (painter's order).
+TEST_P(SpriteRender, EqualZDrawsInCreationOrderInBothPasses) {
+    Scene scene(GetParam(), {32, 32});
+    Camera camera = pixelCamera({32, 32});
+    // Opaque: red, then green over its right half.
+    scene.renderer.createSprite(SpriteDef{.position = {-8.0f, 8.0f}, .size = {12.0f, 8.0f}, .tint = kRed});
+    scene.renderer.createSprite(SpriteDef{.position = {-2.0f, 8.0f}, .size = {12.0f, 8.0f}, .tint = kGreen});
+    // Translucent (alpha 254): blue, then red over its right half.
+    scene.renderer.createSprite(SpriteDef{.position = {-8.0f, -8.0f}, .size = {12.0f, 8.0f}, .tint = {0, 0, 255, 254}});
+    scene.renderer.createSprite(SpriteDef{.position = {-2.0f, -8.0f}, .size = {12.0f, 8.0f}, .tint = {255, 0, 0, 254}});
+    Image image = scene.frame(camera);
+    // Overlap of the top pair is x in [-8, -4] world, i.e. screen x 10..11 at y 24.
+    EXPECT_TRUE(near(pixel(image, 11, 24), kGreen, 0)) << str(pixel(image, 11, 24));
+    EXPECT_TRUE(near(pixel(image, 6, 24), kRed, 0)) << str(pixel(image, 6, 24));
+    EXPECT_TRUE(near(pixel(image, 11, 8), kRed, 2)) << str(pixel(image, 11, 8));
+    EXPECT_TRUE(near(pixel(image, 6, 8), kBlue, 2)) << str(pixel(image, 6, 8));
+    EXPECT_EQ(scene.renderer.stats().opaqueBatches, 1);
+    EXPECT_EQ(scene.renderer.stats().translucentBatches, 1);
+}
+
 TEST_P(SpriteRender, HalfAlphaOverBlueBlends) {
     Scene scene(GetParam(), {32, 32});
     Camera camera = pixelCamera({32, 32});

@@ -134,6 +134,70 @@ TEST(Window, EveryFitModeLetterboxesAfterAResize) {
     }
 }
 
+// Borderless covers the primary monitor at its current mode (Xvfb's screen); fullscreen takes the
+// monitor at the requested size; both draw a frame that reads back; the hints they set do not
+// leak into the next windowed window.
+TEST(Window, BorderlessAndFullscreenCoverTheMonitor) {
+    auto glfw = std::make_shared<GlfwInstance>();
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    ASSERT_NE(monitor, nullptr);
+    const GLFWvidmode* video = glfwGetVideoMode(monitor);
+    const glm::ivec2 screen{video->width, video->height};
+    for (WindowMode mode : {WindowMode::Borderless, WindowMode::Fullscreen}) {
+        const char* name = mode == WindowMode::Borderless ? "borderless" : "fullscreen";
+        Window window(WindowDef{.size = screen, .mode = mode, .vsync = false, .glfw = glfw});
+        EXPECT_EQ(window.mode(), mode) << name;
+        EXPECT_EQ(glfwGetWindowMonitor(window.handle()), monitor) << name;
+        EXPECT_EQ(window.size(), screen) << name;
+        EXPECT_EQ(window.framebufferSize(), screen) << name;
+        if (mode == WindowMode::Borderless) {
+            EXPECT_EQ(glfwGetWindowAttrib(window.handle(), GLFW_DECORATED), GLFW_FALSE);
+        }
+        Renderer renderer(window);
+        Camera camera = pixelCamera(screen);
+        renderer.createSprite(SpriteDef{.size = {20.0f, 20.0f}, .tint = kRed});
+        renderer.render(camera);
+        Image frame = renderer.readPixels();
+        ASSERT_EQ(frame.width, screen.x) << name;
+        EXPECT_TRUE(near(pixel(frame, screen.x / 2, screen.y / 2), kRed, 0)) << name;
+        EXPECT_TRUE(near(pixel(frame, screen.x / 2 + 15, screen.y / 2), kBlack, 0)) << name;
+    }
+    Window windowed(WindowDef{.size = {32, 24}, .vsync = false, .visible = false, .glfw = glfw});
+    EXPECT_EQ(glfwGetWindowMonitor(windowed.handle()), nullptr);
+    EXPECT_EQ(glfwGetWindowAttrib(windowed.handle(), GLFW_DECORATED), GLFW_TRUE);
+    EXPECT_EQ(windowed.size(), glm::ivec2(32, 24));
+}
+
+// MSAA: the default framebuffer has the samples asked for (llvmpipe offers 4) or none; vsync
+// follows setVsync(); the content scale is the framebuffer's pixels per screen coordinate.
+TEST(Window, SamplesVsyncAndContentScale) {
+    Window plain(WindowDef{.size = {32, 32}, .samples = 0, .vsync = true, .visible = false});
+    EXPECT_EQ(plain.samples(), 0);
+    EXPECT_TRUE(plain.vsync());
+    plain.setVsync(false);
+    EXPECT_FALSE(plain.vsync());
+    Window msaa(WindowDef{.size = {32, 32}, .samples = 4, .vsync = false, .visible = false, .glfw = plain.glfw()});
+    EXPECT_EQ(msaa.samples(), 4);
+    int width = 0;
+    int height = 0;
+    glfwGetWindowSize(msaa.handle(), &width, &height);
+    EXPECT_FLOAT_EQ(msaa.contentScale().x, static_cast<float>(msaa.framebufferSize().x) / static_cast<float>(width));
+    // A multisampled window still draws: a sprite reads back (resolved) in the middle.
+    Renderer renderer(msaa);
+    Camera camera = pixelCamera({32, 32});
+    renderer.createSprite(SpriteDef{.size = {10.0f, 10.0f}, .tint = kGreen});
+    renderer.render(camera);
+    Image frame = renderer.readPixels();
+    EXPECT_TRUE(near(pixel(frame, 16, 16), kGreen, 0));
+    EXPECT_TRUE(near(pixel(frame, 2, 2), kBlack, 0));
+    try {
+        Window bad(WindowDef{.samples = -1, .glfw = plain.glfw()});
+        FAIL() << "expected an error";
+    } catch (const core::Error& error) {
+        EXPECT_THAT(error.what(), HasSubstr("render::Window: samples must be in [0, 16], got -1"));
+    }
+}
+
 // The library alone: a window, a few sprites, a screenshot on disk that reads back right.
 TEST(Standalone, OpenDrawScreenshotClose) {
     std::filesystem::path file = outputDir() / "standalone.png";

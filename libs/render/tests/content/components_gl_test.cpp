@@ -10,6 +10,7 @@
 #include <e2d/render/animated_sprite_renderer.hpp>
 #include <e2d/render/image.hpp>
 #include <e2d/render/renderer.hpp>
+#include <e2d/render/sprite_sheet.hpp>
 #include <e2d/render/text_label.hpp>
 #include <e2d/render/window.hpp>
 
@@ -145,6 +146,13 @@ TEST_F(Components, TextLabelDrawsAtItsObjectWithItsAlignment) {
     EXPECT_EQ(count(right, 162, 0, 320, 200, {255, 255, 255, 255}, 100), 0);
     EXPECT_EQ(count(right, 0, 0, 320, 98, {255, 255, 255, 255}, 100), 0);
 
+    // A style with a bad line spacing is refused and changes nothing.
+    TextStyle badStyle;
+    badStyle.lineSpacing = 0.0f;
+    EXPECT_THAT([&] { label->setStyle(badStyle); },
+                testing::ThrowsMessage<core::Error>(HasSubstr("render::TextLabel::setStyle(): style.lineSpacing")));
+    EXPECT_EQ(label->def().style.horizontal, HorizontalAlign::Right);
+
     // Moving the object moves the text; an emptied label draws nothing.
     object.setPosition(glm::vec2{60.0f, 40.0f});
     label->setText("");
@@ -157,13 +165,17 @@ TEST_F(Components, TextLabelDrawsAtItsObjectWithItsAlignment) {
 }
 
 TEST_F(Components, AnimatedSpritePlaysTheSheetFramesInOrder) {
-    const auto sheet = writeSheet();
+    const auto path = writeSheet();
+    const SpriteSheet* sheet = system_->sheet(path);
+    ASSERT_NE(sheet, nullptr);
+    // Thousands of sprites of one sheet share one parse.
+    EXPECT_EQ(system_->sheet(path), sheet);
     core::GameObject& object = scene_.createGameObject();
     object.setPosition(glm::vec2{100.0f, 100.0f});
     AnimatedSpriteRendererDef def;
-    def.sheetPath = sheet;
-    def.animation = "spin";
-    def.frameDuration = 0.25;
+    def.sprite.texturePath = sheet->imagePath().string();
+    def.frames = animationUvs(*sheet, "spin");
+    def.animation.frameDuration = 0.25;
     auto* sprite = object.addComponent<AnimatedSpriteRenderer>(def);
     const Color colours[] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}};
     for (int step = 0; step < 5; ++step) {
@@ -172,31 +184,26 @@ TEST_F(Components, AnimatedSpritePlaysTheSheetFramesInOrder) {
         // The 10 x 10 frame centred on (100, 100), in the frame's colour, nothing elsewhere.
         EXPECT_EQ(count(image, 95, 95, 105, 105, want, 10), 100) << "step " << step;
         EXPECT_EQ(count(image, 0, 0, 320, 200, {0, 0, 0, 255}, 10), 320 * 200 - 100);
-        ASSERT_TRUE(sprite->animation().has_value());
-        EXPECT_EQ(sprite->animation()->frame(), step % 3);
+        EXPECT_EQ(sprite->animation().frame(), step % 3);
         scene_.dispatchUpdate(0.25);
     }
-    // Two sprites of the same sheet share one parsed sheet and one texture.
-    EXPECT_EQ(system_->sheet(sheet), system_->sheet(sheet));
 }
 
-TEST_F(Components, AMissingSheetIsReportedOnceAndDrawsThePlaceholder) {
-    AnimatedSpriteRendererDef def;
-    def.sheetPath = folder_ / "missing.json";
-    def.animation = "run";
-    def.sprite.size = {20, 20};
-    core::GameObject& a = scene_.createGameObject();
-    a.setPosition(glm::vec2{50.0f, 50.0f});
-    a.addComponent<AnimatedSpriteRenderer>(def);
-    core::GameObject& b = scene_.createGameObject();
-    b.addComponent<AnimatedSpriteRenderer>(def);
-    Image image = frame("missing_sheet");
-    EXPECT_THAT(system_->sheetError(folder_ / "missing.json"), HasSubstr("missing.json"));
-    // Something (the checker) is drawn where the sprite is.
-    EXPECT_LT(count(image, 40, 40, 60, 60, {0, 0, 0, 255}, 10), 400);
-    def.frameDuration = 0;
-    EXPECT_THAT([&] { AnimatedSpriteRenderer bad(def); },
-                testing::ThrowsMessage<core::Error>(HasSubstr("frameDuration must be > 0")));
+TEST_F(Components, ABrokenSheetIsReportedOnceAndGivesNull) {
+    std::vector<std::string> messages;
+    core::Logger logger(core::LogLevel::Trace,
+                        [&](core::LogLevel, std::string_view m) { messages.emplace_back(m); });
+    RenderSystem system(*renderer_, nullptr, &logger);
+    EXPECT_EQ(system.sheet(folder_ / "missing.json"), nullptr);
+    EXPECT_EQ(system.sheet(folder_ / "missing.json"), nullptr);
+    ASSERT_EQ(messages.size(), 1u);
+    EXPECT_THAT(messages[0], HasSubstr("missing.json"));
+    EXPECT_EQ(system.sheetError(folder_ / "missing.json"), messages[0]);
+    std::ofstream(folder_ / "bad.json") << R"({"frames": {}, "meta": {"image": "x.png"}})";
+    EXPECT_EQ(system.sheet(folder_ / "bad.json"), nullptr);
+    EXPECT_THAT(system.sheetError(folder_ / "bad.json"), HasSubstr("missing key \"size\""));
+    EXPECT_EQ(messages.size(), 2u);
+    EXPECT_EQ(system.sheetError(writeSheet()), "");
 }
 
 } // namespace

@@ -5,65 +5,46 @@
 #include <e2d/render/sprite_renderer.hpp>
 #include <e2d/render/sprite_sheet.hpp>
 
-#include <filesystem>
-#include <optional>
-#include <string>
+#include <string_view>
 #include <vector>
 
 namespace e2d::render {
 
-/// How an AnimatedSpriteRenderer starts.
+/// How an AnimatedSpriteRenderer starts (seed 2.4.2.8).
 struct AnimatedSpriteRendererDef {
-    /// TexturePacker JSON sheet (hash or array), read once per RenderSystem
-    /// (RenderSystem::sheet()); its image is loaded through the Renderer's texture cache.
-    /// A missing or broken sheet is logged once and the sprite shows the checker placeholder.
-    std::filesystem::path sheetPath;
-    /// The frames played: those named `animation` + a number (+ an extension), in numeric
-    /// order (SpriteSheet::animationFrames), e.g. "run" plays run1.png, run2.png, ...
-    std::string animation;
-    /// Seconds per frame at speed 1, finite, > 0. Default 0.1.
-    double frameDuration = 0.1;
-    /// Default Loop.
-    AnimationMode mode = AnimationMode::Loop;
-    /// Frame shown first (clamped to the animation's frames). Default 0.
-    int startFrame = 0;
-    /// Playback speed, finite, >= 0. Default 1.
-    double speed = 1.0;
-    /// Everything else about the sprite (size (0, 0): the frame's size in pixels, pivot, tint,
-    /// flips, parallax, HUD, z offset). Its texture, texturePath and uv are ignored: they come
-    /// from the sheet. Frames are drawn at their stored size (trimming offsets are not applied).
+    /// The sprite (texture, size, pivot, tint, ...); its `uv` is replaced by the current frame's.
     SpriteRendererDef sprite{};
+    /// The frames' UV rectangles in the texture, in playing order, at least one (each as
+    /// SpriteDef::uv: fractions, top-left origin, inside [0, 1]). Default none.
+    std::vector<Rect> frames;
+    /// Timing; its `frameCount` is ignored (the number of `frames` is used). Default: 0.1 s per
+    /// frame, from frame 0, looping, speed 1.
+    AnimationDef animation{};
 };
 
-/// A SpriteRenderer that plays a frame-by-frame animation from a sprite sheet: each update(dt)
-/// advances a render::Animation and shows its frame.
+/// The UV rectangles of the animation `baseName` of `sheet` (SpriteSheet::animationFrames(),
+/// natural numeric order), for AnimatedSpriteRendererDef::frames. Throws core::Error naming the
+/// sheet and base name when there is no such frame, and naming the frame when one is stored
+/// rotated (a rotated frame needs a rotated quad, which a sprite's UV rectangle cannot express).
+[[nodiscard]] std::vector<Rect> animationUvs(const SpriteSheet& sheet, std::string_view baseName);
+
+/// A SpriteRenderer whose UV rectangle plays a frame-by-frame Animation: every update(dt) of the
+/// scene advances the animation by dt and shows its frame.
 class AnimatedSpriteRenderer : public SpriteRenderer {
 public:
-    /// Throws core::Error naming an invalid field (frameDuration, speed, or the sprite's).
+    /// Throws core::Error naming an invalid field: no frames, a frame outside [0, 1], or an
+    /// invalid animation ("render::AnimatedSpriteRenderer: frames must not be empty").
     explicit AnimatedSpriteRenderer(const AnimatedSpriteRendererDef& def);
 
-    /// The playing animation; nullopt until the component starts, or when the sheet could not
-    /// be read or has no such frames.
-    [[nodiscard]] const std::optional<Animation>& animation() const noexcept { return animation_; }
-    /// Name of the animation playing.
-    [[nodiscard]] const std::string& animationName() const noexcept { return name_; }
-    /// Switches to the frames named `name` from its first frame (no change if it already plays
-    /// them, unless `restart`). Unknown names are logged once and keep the current animation.
-    void play(const std::string& name, bool restart = false);
-    /// Changes the playback speed (finite, >= 0; core::Error otherwise).
-    void setSpeed(double speed);
+    [[nodiscard]] Animation& animation() noexcept { return animation_; }
+    [[nodiscard]] const Animation& animation() const noexcept { return animation_; }
+    [[nodiscard]] const std::vector<Rect>& frames() const noexcept { return frames_; }
 
-    void onInitialize() override;
     void update(double dt) override;
 
 private:
-    void showFrame();
-
-    AnimatedSpriteRendererDef animDef_;
-    const SpriteSheet* sheet_ = nullptr;
-    std::string name_;
-    std::vector<int> frames_;
-    std::optional<Animation> animation_;
+    std::vector<Rect> frames_;
+    Animation animation_;
     int shown_ = -1;
 };
 

@@ -33,6 +33,9 @@
 /// 2. translucent pass: the rest, blended, depth-tested against the opaque pass, sorted back
 ///    to front by z, a batch broken only where the texture changes in that order.
 /// Each batch is one instanced draw call (FrameStats::drawCalls == FrameStats::batches).
+/// Quads of one texture at equal z overlap in the order of their ids' slots (creation order
+/// while no sprite was destroyed; submitted quads after sprites, in submission order), the
+/// later on top, in both passes; at equal z across textures the order is the texture's.
 /// Larger z is nearer the viewer; z is mapped to depth over [-RendererDef::depthRange,
 /// +depthRange] (clamped beyond).
 ///

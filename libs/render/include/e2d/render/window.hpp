@@ -22,7 +22,8 @@ class GlfwInstance {
 public:
     /// Throws core::Error carrying GLFW's message when initialisation fails (no display:
     /// "render::GlfwInstance: glfwInit() failed: X11: The DISPLAY environment variable is
-    /// missing").
+    /// missing"). A display that is set but refuses the connection (an X server under load
+    /// may reset it) is tried up to 4 times, about 0.2 s in all, before that is an error.
     GlfwInstance();
     ~GlfwInstance();
     GlfwInstance(const GlfwInstance&) = delete;
