@@ -15,7 +15,13 @@ namespace e2d::render {
 
 namespace {
 constexpr const char* kCtor = "render::TextLabel";
+
+void checkStyle(const char* function, const TextStyle& style) {
+    if (!std::isfinite(style.lineSpacing) || style.lineSpacing <= 0.0f) {
+        detail::fail(function, "style.lineSpacing must be > 0 and finite, got " + detail::formatFloat(style.lineSpacing));
+    }
 }
+} // namespace
 
 TextLabel::TextLabel(const TextLabelDef& def) : def_(def) {
     if (def.pixelSize < 1 || def.pixelSize > 1024) {
@@ -25,9 +31,12 @@ TextLabel::TextLabel(const TextLabelDef& def) : def_(def) {
         detail::fail(kCtor, "scale must be > 0 and finite, got " + detail::formatVec(def.scale));
     }
     detail::requireFinite(kCtor, "zOffset", def.zOffset);
-    if (!std::isfinite(def.style.lineSpacing) || def.style.lineSpacing <= 0.0f) {
-        detail::fail(kCtor, "style.lineSpacing must be > 0 and finite, got " + detail::formatFloat(def.style.lineSpacing));
-    }
+    checkStyle(kCtor, def.style);
+}
+
+void TextLabel::setStyle(const TextStyle& style) {
+    checkStyle("render::TextLabel::setStyle()", style);
+    def_.style = style;
 }
 
 TextLabel::~TextLabel() { detach(); }

@@ -47,6 +47,14 @@ public:
     void setText(std::string text) { def_.text = std::move(text); }
     [[nodiscard]] const std::string& text() const noexcept { return def_.text; }
     void setColor(Color color) noexcept { def_.color = color; }
+    /// Alignment, kerning and line spacing from the next frame on. Throws core::Error for a
+    /// lineSpacing that is not > 0 and finite ("render::TextLabel::setStyle(): ...").
+    void setStyle(const TextStyle& style);
+    /// Only the alignment (the text demo switches it with the keyboard).
+    void setAlignment(HorizontalAlign horizontal, VerticalAlign vertical) noexcept {
+        def_.style.horizontal = horizontal;
+        def_.style.vertical = vertical;
+    }
     void setVisible(bool visible) noexcept { def_.visible = visible; }
     [[nodiscard]] const TextLabelDef& def() const noexcept { return def_; }
     /// The font in use; null before onInitialize or when no font could be read.
