@@ -75,6 +75,11 @@ struct Contact {
     bool touching = false;
     bool sensor = false; // one shape is a sensor: overlap only, no constraint
     bool alive = false;
+    // The pre-solve callback's answer this step: false leaves the contact out of the solver.
+    bool enabled = true;
+    // Both shapes' event switches (contact or sensor begin/end, hits).
+    bool touchEvents = true;
+    bool hitEvents = true;
 };
 
 struct Simulation {

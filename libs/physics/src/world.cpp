@@ -141,7 +141,10 @@ bool World::Impl::shouldPair(int shapeA, int shapeB) const {
     if (body(a.body).type != BodyType::Dynamic && body(b.body).type != BodyType::Dynamic) {
         return false;
     }
-    return shouldCollide(a.filter, b.filter);
+    if (!shouldCollide(a.filter, b.filter)) {
+        return false;
+    }
+    return !hooks.pairFilter || hooks.pairFilter(shapeId(shapeA), shapeId(shapeB));
 }
 
 // --- World ---
@@ -325,6 +328,9 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ShapeGeomet
     s.restitution = def.restitution;
     s.rollingResistance = def.rollingResistance;
     s.isSensor = def.isSensor;
+    s.contactEvents = def.enableContactEvents;
+    s.sensorEvents = def.enableSensorEvents;
+    s.hitEvents = def.enableHitEvents;
     s.body = bodyIndex;
 
     detail::Body& b = w.body(bodyIndex);

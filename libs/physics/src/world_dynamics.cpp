@@ -37,6 +37,9 @@ Extents extentsOf(const ShapeGeometry& geometry, Vec2 center) {
             } else if constexpr (std::is_same_v<T, Segment>) {
                 return {kLinearSlop,
                         std::max(length(g.point1 - center), length(g.point2 - center))};
+            } else if constexpr (std::is_same_v<T, ChainSegment>) {
+                return {kLinearSlop, std::max(length(g.segment.point1 - center),
+                                              length(g.segment.point2 - center))};
             } else {
                 float minExtent = kHuge;
                 float maxExtent = 0.0f;

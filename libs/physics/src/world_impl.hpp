@@ -6,6 +6,7 @@
 #include "broad_phase.hpp"
 #include "id_pool.hpp"
 #include "simulation.hpp"
+#include "world_hooks.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -51,6 +52,10 @@ struct Shape {
     std::uint16_t generation = 1;
     bool isSensor = false;
     bool alive = false;
+    // Event switches (ShapeDef::enable*Events).
+    bool contactEvents = true;
+    bool sensorEvents = true;
+    bool hitEvents = true;
 };
 
 } // namespace e2d::physics::detail
@@ -109,6 +114,8 @@ struct World::Impl {
     // --- dynamics (world_step.cpp, contact.cpp, island.cpp, world_dynamics.cpp) ---
 
     detail::Simulation sim;
+    // Pre-solve and pair filter callbacks, move events (world_hooks.cpp).
+    detail::Hooks hooks;
 
     // Sets the body's motion fields from the def (createBody()).
     void initMotion(int bodyIndex, const BodyDef& def);
@@ -126,6 +133,15 @@ struct World::Impl {
     void scheduleWide(int constraintCount);
     void solveContinuous(int simIndex);
     void updateSleep(float dt);
+    // Fills hooks.moveEvents from this step's solver bodies (world_hooks.cpp).
+    void collectMoveEvents(float dt);
+    // Re-mixes the materials and event switches of the shape's contacts after a setter.
+    void refreshContactMaterials(int shapeIndex);
+    // Continuous collision's extra rules: a chain segment is one-sided, and the pair filter
+    // callback may refuse the pair (world_hooks.cpp).
+    [[nodiscard]] bool passesChainAndFilter(int movingShape, int otherShape,
+                                            const Transform& xfMoving,
+                                            const Transform& xfOther) const;
 };
 
 } // namespace e2d::physics

@@ -93,7 +93,8 @@ std::optional<RayResult> entryHit(const detail::Shape& shape, const Transform& x
 // inside, so its one hit is its entry.
 std::optional<RayResult> exitHit(const detail::Shape& shape, const Transform& xf,
                                  const RayCastInput& input) {
-    if (typeOf(shape.geometry) == ShapeType::Segment) {
+    if (typeOf(shape.geometry) == ShapeType::Segment ||
+        typeOf(shape.geometry) == ShapeType::ChainSegment) {
         return std::nullopt;
     }
     Vec2 end = input.origin + input.maxFraction * input.translation;
@@ -304,6 +305,15 @@ std::optional<RayResult> World::castShape(const ShapeGeometry& geometry, const T
             }
             input.proxyA = makeProxy(shape.geometry);
             input.transformA = w.body(shape.body).transform;
+            if (const auto* chain = std::get_if<ChainSegment>(&shape.geometry)) {
+                // One-sided: seen only by a shape in front of it moving against its normal.
+                const Segment& seg = chain->segment;
+                const Vec2 normal = rotate(input.transformA.q, rightPerp(seg.point2 - seg.point1));
+                const Vec2 p1 = transformPoint(input.transformA, seg.point1);
+                if (dot(center - p1, normal) < 0.0f || dot(translation, normal) >= 0.0f) {
+                    return true;
+                }
+            }
             CastOutput out = shapeCast(input);
             if (out.hit && (!best || out.fraction < best->fraction)) {
                 best = RayResult{w.shapeId(index), out.point, out.normal, out.fraction, false};

@@ -50,6 +50,7 @@ void World::step(float timeStep) {
         s.counters.contactConstraints = static_cast<int>(s.constraintContacts.size());
         w.updateSleep(timeStep);
     }
+    w.collectMoveEvents(timeStep);
     s.inStep = false;
 }
 
@@ -499,8 +500,8 @@ void World::Impl::solve(float dt) {
     }
     for (const detail::Simulation::HitCandidate& h : s.hitCandidates) {
         const detail::Contact& c = s.contacts[static_cast<std::size_t>(h.contact)];
-        if (!c.alive) {
-            continue; // ended with a non-finite body
+        if (!c.alive || !c.hitEvents) {
+            continue; // ended with a non-finite body, or a shape's hit events are off
         }
         // A speculative point sits midway across the gap; the hit is on A's surface.
         const ManifoldPoint& mp = c.manifold.points[h.point];

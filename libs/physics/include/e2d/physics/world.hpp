@@ -13,6 +13,7 @@
 #include <e2d/physics/types.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -99,10 +100,105 @@ struct ShapeDef {
     Filter filter{};
     /// A sensor detects overlap but is not solid. Sensors pair only with non-sensor shapes and
     /// are skipped by queries unless QueryFilter::includeSensors. Default false.
+    ///
+    /// Which pairs a sensor sees follows the broad phase's rule (World::updatePairs()): one of
+    /// the two bodies must be dynamic. So a sensor on a static or kinematic body (a trigger
+    /// zone, a moving detector) sees dynamic bodies only, and a sensor on a dynamic body sees
+    /// static, kinematic and dynamic shapes alike. A zone that must also see kinematic bodies
+    /// goes on a dynamic body with gravityScale 0 (a sensor has no say in the body's motion,
+    /// and nothing solid touches it).
     bool isSensor = false;
     /// Anything the application wants to find the shape's owner by. Default 0.
     std::uint64_t userData = 0;
+    /// Whether the shape's contacts report ContactBeginTouchEvent and ContactEndTouchEvent. A
+    /// pair reports them only when both shapes have this on. Default true.
+    bool enableContactEvents = true;
+    /// Whether the shape's sensor overlaps report SensorBeginTouchEvent and SensorEndTouchEvent
+    /// (as the sensor or as the visitor). A pair reports them only when both shapes have this
+    /// on. Default true.
+    bool enableSensorEvents = true;
+    /// Whether the shape's contacts report ContactHitEvent. A pair reports hits only when both
+    /// shapes have this on. Default true.
+    bool enableHitEvents = true;
 };
+
+/// Friction, restitution and rolling resistance of one chain segment (ChainDef::materials).
+struct SurfaceMaterial {
+    /// Coulomb friction coefficient, finite, >= 0. Default 0.6.
+    float friction = 0.6f;
+    /// Bounciness, finite, >= 0. Default 0.
+    float restitution = 0.0f;
+    /// Rolling resistance, metres, finite, >= 0. Default 0.
+    float rollingResistance = 0.0f;
+    /// The segment's ShapeDef::userData. Default 0.
+    std::uint64_t userData = 0;
+};
+
+/// A chain of one-sided segments through `points` (World::createChain()): smooth terrain that
+/// shapes slide over without catching on the joints. Each segment is hit from its right-hand
+/// side walking from one point to the next (see ChainSegment): list a floor's points from right
+/// to left, and a loop counter-clockwise to make it solid inside.
+struct ChainDef {
+    /// Chain points in the body's frame, metres, finite, within kHuge; at least 2 (3 for a
+    /// loop); consecutive points (and for a loop the last and the first) at least kLinearSlop
+    /// apart. No default.
+    std::vector<Vec2> points;
+    /// Joins the last point back to the first: every segment then has neighbours on both
+    /// sides. Default false.
+    bool isLoop = false;
+    /// Open chains only: the point before points[0] and the point after the last one (ghost
+    /// points: never collided, they only smooth the end segments' joints with whatever the
+    /// chain continues into). Without one, that end is free and round like a Segment's.
+    /// Default none.
+    std::optional<Vec2> ghostBefore;
+    std::optional<Vec2> ghostAfter;
+    /// Per-segment materials: empty (every segment takes `shape`'s), one (every segment takes
+    /// it) or one per segment (points.size() - 1, or points.size() for a loop). Default empty.
+    std::vector<SurfaceMaterial> materials;
+    /// What every segment shape is made with: filter, events, friction, restitution and
+    /// userData unless `materials` says otherwise. density is ignored (segments have no mass).
+    /// Default ShapeDef{}.
+    ShapeDef shape{};
+};
+
+/// A body moved by the last step: its transform after the step (World::bodyMoveEvents()).
+struct BodyMoveEvent {
+    BodyId body;
+    Transform transform{};
+    /// The body fell asleep at the end of this step (it sends no more move events until
+    /// something wakes it).
+    bool fellAsleep = false;
+};
+
+/// An explosion (World::explode()): an impulse pushing every dynamic body whose shapes come
+/// within `radius + falloff` of `position`, nothing in between blocking it.
+struct ExplosionDef {
+    /// Centre, metres, finite, within kHuge. Default (0, 0).
+    Vec2 position{0.0f, 0.0f};
+    /// Full strength out to this distance, metres, finite, >= 0. Default 1.
+    float radius = 1.0f;
+    /// Beyond `radius` the strength falls linearly to zero over this distance, metres,
+    /// finite, >= 0. Default 1.
+    float falloff = 1.0f;
+    /// Impulse per metre of the shape's outline facing the explosion at full strength,
+    /// N*s/m, finite. Default 1. (A shape's impulse is impulsePerLength times the width it
+    /// presents to the centre times the strength at its closest point, pushing along the line
+    /// from the centre to that point, applied at its closest point.)
+    float impulsePerLength = 1.0f;
+    /// Which shapes it reaches (QueryFilter rules; sensors never). Default everything.
+    std::uint64_t maskBits = ~std::uint64_t{0};
+};
+
+/// Called during World::step() for each touching solid contact after the narrow phase
+/// computed its manifold (see World::setPreSolveCallback()). Returns false to leave the contact
+/// out of this step's solver.
+using PreSolveCallback = std::function<bool(ShapeId shapeA, ShapeId shapeB, const Manifold& manifold)>;
+/// Called when two shapes could start a pair (see World::setPairFilterCallback()). Returns
+/// false to keep them apart.
+using PairFilterCallback = std::function<bool(ShapeId shapeA, ShapeId shapeB)>;
+
+class Body;
+class Shape;
 
 /// A physics world. Owns its bodies and shapes, hands out BodyId and ShapeId handles, and
 /// checks every handle on use: a stale or null handle throws core::Error (isValid() tells
@@ -111,6 +207,14 @@ struct ShapeDef {
 ///
 /// Handles are not tagged with their world: a handle from another world is only caught when
 /// its slot or generation does not exist here.
+///
+/// Finding your way: every function takes the id of what it acts on, grouped below as world
+/// settings, bodies, shapes, chains, pairs, queries, dynamics, hooks and events. The same
+/// functions are reachable through small handle views that hold the world and an id and cost
+/// nothing (see views.hpp): `Body b = world.body(id); b.position(); b.applyLinearImpulse(...);
+/// b.shapes();` and `Shape s = world.shape(id); s.setFriction(0.2f);`. A view checks its id on
+/// every call like the world does; it never outlives the world it came from. (A Joint view
+/// joins them with the joints.)
 class World {
 public:
     /// Throws core::Error naming the first invalid field of `def`.
@@ -193,6 +297,14 @@ public:
     [[nodiscard]] std::uint64_t shapeUserData(ShapeId id) const;
     void setShapeUserData(ShapeId id, std::uint64_t userData);
 
+    // --- chains (world_chain.cpp) ---
+
+    /// Attaches a chain of ChainSegment shapes to a body, one per pair of consecutive points
+    /// (ChainDef). Returns the segments' ids in chain order; each is an ordinary shape
+    /// (destroyShape(), setShapeFriction(), queries...). Throws core::Error naming the invalid
+    /// field of `def` before creating anything.
+    std::vector<ShapeId> createChain(BodyId body, const ChainDef& def);
+
     // --- counts ---
 
     [[nodiscard]] int bodyCount() const;
@@ -242,7 +354,9 @@ public:
     /// and moved by `translation` (metres, finite, non-zero), would touch. `point` is on the
     /// surface of the shape hit, `normal` points out of it towards the moving shape and
     /// `fraction` is how far along `translation` they meet. A shape the geometry already
-    /// overlaps at the start is hit at fraction 0 with a zero normal. Back faces play no part.
+    /// overlaps at the start is hit at fraction 0 with a zero normal. Back faces play no part:
+    /// a chain segment is seen only from its front (the moving shape's box centre in front of
+    /// it, moving against its normal).
     /// Throws core::Error for an invalid geometry or non-finite input.
     [[nodiscard]] std::optional<RayResult> castShape(const ShapeGeometry& geometry,
                                                      const Transform& transform, Vec2 translation,
@@ -317,6 +431,11 @@ public:
     /// position or velocity); the rest of the world went on.
     [[nodiscard]] std::span<const BodyId> nonFiniteBodies() const;
 
+    /// Bodies the last step moved: every awake dynamic and kinematic body the solver
+    /// integrated, with its transform after the step, in a fixed order. For syncing game
+    /// objects (or render transforms) with only the bodies that moved.
+    [[nodiscard]] std::span<const BodyMoveEvent> bodyMoveEvents() const;
+
     /// What the last step computed (see StepCounters).
     [[nodiscard]] StepCounters stepCounters() const;
 
@@ -326,9 +445,87 @@ public:
     /// order.
     void forEachTouchingContact(FunctionRef<void(const ContactData&)> callback) const;
 
+    // --- hooks (world_hooks.cpp) ---
+    //
+    // Both callbacks run inside step() (the pair filter also inside updatePairs()), on the
+    // thread that called it: e2d steps on one thread, so they are never called concurrently.
+    // They may read the world (transforms, velocities, userData) but must not change it (no
+    // creating, destroying or setting anything): that is undefined.
+
+    /// Called in step() after the narrow phase computed a contact's manifold and before the
+    /// solver, once per step for each touching solid contact with an awake body (shapes in the
+    /// pair's order; the manifold's normal points from shapeA to shapeB). Returning false
+    /// leaves the contact out of this step's solver (a one-way platform: return false while
+    /// the body comes from below); its begin/end touch events are reported all the same, and
+    /// a contact between sleeping bodies keeps the last answer. Continuous collision does not
+    /// ask it (a chain segment is one-sided for that too). An empty function removes it.
+    void setPreSolveCallback(PreSolveCallback callback);
+    /// Called when two shapes whose boxes begin to overlap pass the built-in rules (different
+    /// bodies, one dynamic, filters, not both sensors: updatePairs()); returning false keeps
+    /// them from pairing (no contact, no events) until their boxes part and meet again.
+    /// Continuous collision asks it too. An empty function removes it.
+    void setPairFilterCallback(PairFilterCallback callback);
+
+    // --- more queries (world_hooks.cpp) ---
+
+    /// The shapes that `geometry` (a circle, capsule or polygon) placed at `transform` overlaps
+    /// (touching counts; distance <= 0), in slot order. Throws core::Error for a segment or
+    /// chain segment, an invalid geometry or a non-finite transform.
+    [[nodiscard]] std::vector<ShapeId> overlapShape(const ShapeGeometry& geometry,
+                                                    const Transform& transform,
+                                                    const QueryFilter& filter = {}) const;
+    /// Pushes dynamic bodies away from a point (see ExplosionDef), waking them. Returns how
+    /// many shapes it pushed. Throws core::Error naming the invalid field.
+    int explode(const ExplosionDef& def);
+
+    // --- points and setters (world_hooks.cpp) ---
+
+    /// A point in the body's frame (metres) in world coordinates.
+    [[nodiscard]] Vec2 worldPoint(BodyId id, Vec2 localPoint) const;
+    /// A world point (metres) in the body's frame.
+    [[nodiscard]] Vec2 localPoint(BodyId id, Vec2 worldPoint) const;
+    /// A direction in the body's frame rotated to world axes.
+    [[nodiscard]] Vec2 worldVector(BodyId id, Vec2 localVector) const;
+    /// A world direction in the body's frame.
+    [[nodiscard]] Vec2 localVector(BodyId id, Vec2 worldVector) const;
+    /// Velocity (m/s) of the body's material point at a world point (metres).
+    [[nodiscard]] Vec2 linearVelocityAtWorldPoint(BodyId id, Vec2 worldPoint) const;
+    /// Velocity (m/s) of the body's material point at a point in its frame (metres).
+    [[nodiscard]] Vec2 linearVelocityAtLocalPoint(BodyId id, Vec2 localPoint) const;
+
+    /// Changes the body's type. Its mass is recomputed (static and kinematic bodies have
+    /// none), its contacts end (pairs are found again under the new type's rules at the next
+    /// step) and it wakes unless it became static; a static body stops.
+    void setBodyType(BodyId id, BodyType type);
+    /// Finite, >= 0. Contacts take it from the next step.
+    void setShapeFriction(ShapeId id, float friction);
+    /// Finite, >= 0. Contacts take it from the next step.
+    void setShapeRestitution(ShapeId id, float restitution);
+    /// Finite, >= 0. Contacts take it from the next step.
+    void setShapeRollingResistance(ShapeId id, float rollingResistance);
+    /// kg/m^2, finite, >= 0. The body's mass is recomputed from its shapes' densities.
+    void setShapeDensity(ShapeId id, float density);
+    /// Makes the shape a sensor or a solid one. Its contacts end (touching ones report end
+    /// events) and pairs are found again at the next step.
+    void setShapeSensor(ShapeId id, bool isSensor);
+    /// Replaces the shape's geometry (same rules as createShape()): its contacts end, its box
+    /// moves, the body's mass is recomputed.
+    void setShapeGeometry(ShapeId id, const ShapeGeometry& geometry);
+    /// Per-shape event switches (see ShapeDef). Contacts take them from the next step.
+    void setShapeEventFlags(ShapeId id, bool contactEvents, bool sensorEvents, bool hitEvents);
+
+    // --- handle views (views.hpp) ---
+
+    /// A view of the body: World plus id, forwarding to the functions above.
+    [[nodiscard]] Body body(BodyId id);
+    /// A view of the shape: World plus id, forwarding to the functions above.
+    [[nodiscard]] Shape shape(ShapeId id);
+
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
 
 } // namespace e2d::physics
+
+#include <e2d/physics/views.hpp>
