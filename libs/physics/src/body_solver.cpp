@@ -29,6 +29,12 @@ inline SpeedCaps speedCaps(float maxLinearSpeed, float h) {
 inline void clampVelocity(Vec2& v, float& w, SpeedCaps caps) {
     float speedSquared = dot(v, v);
     if (speedSquared > caps.linear * caps.linear) {
+        if (std::isinf(speedSquared)) {
+            // Past about 1.8e19 m/s the square overflows, and scaling by cap / inf would stop
+            // the body dead: bring the components to at most 1 first (still the same direction).
+            v *= 1.0f / std::max(std::fabs(v.x), std::fabs(v.y));
+            speedSquared = dot(v, v);
+        }
         v *= caps.linear / std::sqrt(speedSquared);
     }
     w = std::clamp(w, -caps.angular, caps.angular);

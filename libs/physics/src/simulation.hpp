@@ -165,6 +165,7 @@ struct Simulation {
     std::vector<SensorEndTouchEvent> sensorEndEvents;
     std::vector<ContactHitEvent> hitEvents;
     std::vector<BodyId> nonFiniteBodies;
+    std::vector<BodyId> outOfRangeBodies;
     StepCounters counters{};
     // End events of contacts destroyed between steps (a shape destroyed, a body disabled):
     // handed out with the next step's events, so the current arrays stay valid meanwhile.

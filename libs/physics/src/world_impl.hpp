@@ -66,6 +66,8 @@ struct World::Impl {
     Vec2 gravity{0.0f, -10.0f};
     CollisionAlgorithm collisionAlgorithm = CollisionAlgorithm::Sat;
     float speculativeDistance = kSpeculativeDistance;
+    // Written into every id handed out and checked on every use (WorldDef::tag); never 0.
+    std::uint16_t tag = 1;
 
     std::vector<detail::Body> bodies;
     std::vector<detail::Shape> shapes;
@@ -75,7 +77,7 @@ struct World::Impl {
 
     // Index of a live body named by `id`, or kNullIndex.
     [[nodiscard]] int find(BodyId id) const {
-        if (id.index1 == 0 || id.index1 > bodies.size()) {
+        if (id.index1 == 0 || id.index1 > bodies.size() || id.world != tag) {
             return detail::kNullIndex;
         }
         const detail::Body& body = bodies[id.index1 - 1];
@@ -83,22 +85,46 @@ struct World::Impl {
                                                               : detail::kNullIndex;
     }
     [[nodiscard]] int find(ShapeId id) const {
-        if (id.index1 == 0 || id.index1 > shapes.size()) {
+        if (id.index1 == 0 || id.index1 > shapes.size() || id.world != tag) {
             return detail::kNullIndex;
         }
         const detail::Shape& shape = shapes[id.index1 - 1];
         return shape.alive && shape.generation == id.generation ? static_cast<int>(id.index1 - 1)
                                                                 : detail::kNullIndex;
     }
+    // The function whose callback is running (overlapAabb, forEachCandidatePair,
+    // forEachTouchingContact), or nullptr. Meanwhile, functions that would change what the
+    // callback walks (the broad phase, the contacts, the object arrays) refuse to run.
+    mutable const char* lockedBy = nullptr;
+    // Throws core::Error naming `function` and the running callback's function, if any.
+    void requireUnlocked(const char* function) const;
+    // Locks the world while a query's callback runs; nests.
+    class CallbackLock {
+    public:
+        CallbackLock(const Impl& world, const char* function)
+            : world_(world), previous_(world.lockedBy) {
+            world_.lockedBy = function;
+        }
+        ~CallbackLock() { world_.lockedBy = previous_; }
+        CallbackLock(const CallbackLock&) = delete;
+        CallbackLock& operator=(const CallbackLock&) = delete;
+
+    private:
+        const Impl& world_;
+        const char* previous_;
+    };
+
     // Like find(), but throws core::Error naming `function` for a stale or null handle.
     int require(BodyId id, const char* function) const;
     int require(ShapeId id, const char* function) const;
 
     [[nodiscard]] BodyId bodyId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1, bodies[static_cast<std::size_t>(index)].generation};
+        return {static_cast<std::uint32_t>(index) + 1,
+                bodies[static_cast<std::size_t>(index)].generation, tag};
     }
     [[nodiscard]] ShapeId shapeId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1, shapes[static_cast<std::size_t>(index)].generation};
+        return {static_cast<std::uint32_t>(index) + 1,
+                shapes[static_cast<std::size_t>(index)].generation, tag};
     }
     detail::Body& body(int index) { return bodies[static_cast<std::size_t>(index)]; }
     const detail::Body& body(int index) const { return bodies[static_cast<std::size_t>(index)]; }

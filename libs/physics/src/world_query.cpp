@@ -211,6 +211,7 @@ void World::overlapAabb(const Aabb& box, const QueryFilter& filter,
                         FunctionRef<bool(ShapeId)> callback) const {
     checkBox("overlapAabb", box);
     const Impl& w = *impl_;
+    Impl::CallbackLock lock(w, "overlapAabb");
     bool go = true;
     for (BodyType type : kAllTypes) {
         w.broadPhase.tree(type).query(box, filter.maskBits, [&](int, std::uint64_t userData) {

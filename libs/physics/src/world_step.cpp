@@ -28,8 +28,15 @@ bool isFiniteState(const detail::BodySim& s, const detail::BodyState& st) {
 } // namespace
 
 void World::step(float timeStep) {
+    impl_->requireUnlocked("step");
     if (!(isFinite(timeStep) && timeStep >= 0.0f)) {
         check::fail("step", "timeStep must be finite and >= 0, got " + check::text(timeStep));
+    }
+    if (timeStep > kMaxTimeStep) {
+        check::fail("step", "timeStep must be <= kMaxTimeStep (" + check::text(kMaxTimeStep) +
+                                " s), got " + check::text(timeStep) +
+                                ": longer steps sink bodies into what they rest on; call step() "
+                                "several times");
     }
     Impl& w = *impl_;
     detail::Simulation& s = w.sim;
@@ -39,6 +46,7 @@ void World::step(float timeStep) {
     s.sensorEndEvents.clear();
     s.hitEvents.clear();
     s.nonFiniteBodies.clear();
+    s.outOfRangeBodies.clear();
     s.counters = {};
     s.endEvents.swap(s.pendingEndEvents);
     s.sensorEndEvents.swap(s.pendingSensorEndEvents);
@@ -439,15 +447,18 @@ void World::Impl::solve(float dt) {
         }
     }
 
-    // Write back, move the proxies; a body whose state went non-finite is disabled instead.
+    // Write back, move the proxies; a body whose state went non-finite or whose origin left
+    // the coordinate range (kHuge) is disabled instead.
     for (std::size_t k = 0; k < s.sims.size(); ++k) {
         const detail::BodySim& bs = s.sims[k];
         const detail::BodyState& st = s.states[k];
         detail::Body& b = body(bs.bodyIndex);
         b.motion.force = {0.0f, 0.0f};
         b.motion.torque = 0.0f;
-        if (!isFiniteState(bs, st)) {
-            s.nonFiniteBodies.push_back(bodyId(bs.bodyIndex));
+        const bool finite = isFiniteState(bs, st);
+        if (!finite || !check::isWithinHuge(bs.transform.p)) {
+            // Its last transform (finite, within kHuge) stays, so calls from where it is work.
+            (finite ? s.outOfRangeBodies : s.nonFiniteBodies).push_back(bodyId(bs.bodyIndex));
             b.linearVelocity = {0.0f, 0.0f};
             b.angularVelocity = 0.0f;
             b.enabled = false;

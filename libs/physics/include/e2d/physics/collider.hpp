@@ -40,7 +40,8 @@ public:
     Collider(PhysicsSystem& system, const ShapeGeometry& geometry, const ColliderDef& def = {});
     ~Collider() override;
 
-    /// The shape, null while not attached.
+    /// The shape, null while not attached or once its body was destroyed through the World
+    /// (see PhysicsSystem). A shape destroyed alone through the World leaves a stale id here.
     [[nodiscard]] ShapeId shape() const noexcept { return shape_; }
     [[nodiscard]] const ShapeGeometry& geometry() const noexcept { return geometry_; }
     [[nodiscard]] bool isTrigger() const noexcept { return def_.isTrigger; }

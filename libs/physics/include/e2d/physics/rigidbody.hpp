@@ -47,7 +47,8 @@ public:
     Rigidbody(PhysicsSystem& system, const RigidbodyDef& def = {});
     ~Rigidbody() override;
 
-    /// The body, null before the object entered the scene or after the component went.
+    /// The body, null before the object entered the scene, after the component went, or once
+    /// the PhysicsSystem noticed the body was destroyed through the World.
     [[nodiscard]] BodyId body() const noexcept { return body_; }
     [[nodiscard]] PhysicsSystem& system() const noexcept { return system_; }
 

@@ -36,6 +36,14 @@ struct WorldDef {
     int bodyCapacity = 0;
     /// Shapes to reserve room for, >= 0. Default 0 (grow on demand).
     int shapeCapacity = 0;
+    /// The tag this world writes into every id it hands out (BodyId::world, ShapeId::world);
+    /// an id whose tag is not this world's is rejected like a stale one. 1..65535: used as
+    /// given (choose distinct tags to make ids of live worlds never mix up, or the same tag
+    /// on every run so id values repeat exactly). Default 0: derived from the address of the
+    /// world's internal state, never 0 (no counter or other global state); two live worlds then
+    /// share a tag with probability 1/65535, and id values differ from run to run (the
+    /// simulation itself does not depend on them).
+    std::uint16_t tag = 0;
 
     // --- dynamics (World::step) ---
 
@@ -88,11 +96,15 @@ struct BodyDef {
 
 /// How a shape is created. World::createShape() validates every field.
 struct ShapeDef {
-    /// kg/m^2, finite, >= 0. Default 1.
+    /// kg/m^2, finite, >= 0. Default 1. A dynamic body's mass, centre and rotational inertia
+    /// come from its shapes' densities and areas. When they give no mass (every shape of
+    /// density 0, or only segments, which have no area) the body gets 1 kg at its origin and
+    /// no rotational inertia, as in Box2D 2.4: it falls and is pushed but never turns. Give it
+    /// a density, a shape with area, or World::setMassData().
     float density = 1.0f;
     /// Coulomb friction coefficient, finite, >= 0. Default 0.6.
     float friction = 0.6f;
-    /// Bounciness, finite, >= 0 (1 is elastic). Default 0.
+    /// Bounciness, finite, in [0, 1] (0 does not bounce, 1 is elastic). Default 0.
     float restitution = 0.0f;
     /// Rolling resistance (torque per normal force), metres, finite, >= 0. Default 0.
     float rollingResistance = 0.0f;
@@ -202,11 +214,9 @@ class Shape;
 
 /// A physics world. Owns its bodies and shapes, hands out BodyId and ShapeId handles, and
 /// checks every handle on use: a stale or null handle throws core::Error (isValid() tells
-/// beforehand). Functions that throw leave the world unchanged. Worlds are independent: any
+/// beforehand), and so does a handle from another world (each id carries its world's tag, see
+/// WorldDef::tag). Functions that throw leave the world unchanged. Worlds are independent: any
 /// number may live in one process, each used from one thread at a time.
-///
-/// Handles are not tagged with their world: a handle from another world is only caught when
-/// its slot or generation does not exist here.
 ///
 /// Finding your way: every function takes the id of what it acts on, grouped below as world
 /// settings, bodies, shapes, chains, pairs, queries, dynamics, hooks and events. The same
@@ -215,6 +225,15 @@ class Shape;
 /// b.shapes();` and `Shape s = world.shape(id); s.setFriction(0.2f);`. A view checks its id on
 /// every call like the world does; it never outlives the world it came from. (A Joint view
 /// joins them with the joints.)
+///
+/// Callbacks (overlapAabb(), forEachCandidatePair(), forEachTouchingContact()) run while the
+/// world walks its shapes, pairs or contacts. Inside them, reading anything, queries, velocities,
+/// forces, impulses, sleep and user data are allowed; createBody(), destroyBody(),
+/// createShape(), destroyShape(), setTransform(), setBodyEnabled(), setShapeFilter(),
+/// updatePairs() and step() throw core::Error naming themselves and the running query (collect
+/// the ids, act after it returns). The event arrays are read after step() returns: anything but
+/// step() may be called while going through them (events of what is destroyed then are
+/// reported by the next step()).
 class World {
 public:
     /// Throws core::Error naming the first invalid field of `def`.
@@ -233,6 +252,8 @@ public:
     void setGravity(Vec2 gravity);
     [[nodiscard]] CollisionAlgorithm collisionAlgorithm() const;
     [[nodiscard]] float speculativeDistance() const;
+    /// The tag in every id this world hands out (WorldDef::tag, or the one derived), never 0.
+    [[nodiscard]] std::uint16_t tag() const;
 
     // --- bodies ---
 
@@ -324,6 +345,7 @@ public:
     [[nodiscard]] int candidatePairCount() const;
     /// Calls `callback(a, b)` once per current pair, a's slot before b's, in the broad phase's
     /// table order: not sorted, but the same operations give the same order (determinism).
+    /// The world is locked during the callback (see World).
     void forEachCandidatePair(FunctionRef<void(ShapeId, ShapeId)> callback) const;
 
     // --- queries (world space; they read the broad phase, so updatePairs() is not needed) ---
@@ -340,7 +362,9 @@ public:
     [[nodiscard]] std::optional<RayResult> rayCastShape(ShapeId id, Vec2 origin, Vec2 translation,
                                                         bool ignoreBackFaces = true) const;
     /// Calls `callback(shape)` for each shape whose tight world box overlaps `box`; the callback
-    /// returns false to stop. `box` must be finite with lower <= upper.
+    /// returns false to stop. `box` must be finite with lower <= upper. The world is locked
+    /// during the callback (no creating, destroying or moving; see World): to destroy what it
+    /// finds, collect the ids (or use the overload returning them) and destroy them after.
     void overlapAabb(const Aabb& box, const QueryFilter& filter,
                      FunctionRef<bool(ShapeId)> callback) const;
     /// The shapes whose tight world box overlaps `box`, in slot order.
@@ -364,8 +388,8 @@ public:
 
     // --- dynamics (world_step.cpp, world_dynamics.cpp) ---
 
-    /// Advances the world by `timeStep` seconds (finite, >= 0; 0 updates contacts and events
-    /// only): pairs, contacts, narrow phase, solver, continuous collision, sleeping, events.
+    /// Advances the world by `timeStep` seconds (finite, in [0, kMaxTimeStep (0.25 s)]; 0
+    /// updates contacts and events only): pairs, contacts, narrow phase, solver, continuous collision, sleeping, events.
     /// Call it at a fixed rate (e.g. 1/60 s) for stable results.
     void step(float timeStep);
     [[nodiscard]] const SolverDef& solverDef() const;
@@ -430,6 +454,10 @@ public:
     /// Bodies the last step disabled because their state became non-finite (NaN or infinite
     /// position or velocity); the rest of the world went on.
     [[nodiscard]] std::span<const BodyId> nonFiniteBodies() const;
+    /// Bodies the last step disabled because their origin left the coordinate range (|x| or
+    /// |y| beyond kHuge); each keeps its last transform inside the range and its velocity is
+    /// zeroed, so it can be moved back (setTransform()) and enabled again.
+    [[nodiscard]] std::span<const BodyId> outOfRangeBodies() const;
 
     /// Bodies the last step moved: every awake dynamic and kinematic body the solver
     /// integrated, with its transform after the step, in a fixed order. For syncing game
@@ -442,7 +470,7 @@ public:
     /// Number of contacts (pairs of shapes whose fat boxes overlap), touching or not.
     [[nodiscard]] int contactCount() const;
     /// Calls `callback` for each touching solid contact (manifold with points), in a fixed
-    /// order.
+    /// order. The world is locked during the callback (see World).
     void forEachTouchingContact(FunctionRef<void(const ContactData&)> callback) const;
 
     // --- hooks (world_hooks.cpp) ---
