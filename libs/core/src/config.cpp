@@ -130,6 +130,16 @@ Setter real(Float Config::*field, Bounds bounds = {}) {
     return [field, bounds](Config& c, std::string_view v) { return parseFloat(v, c.*field, bounds); };
 }
 
+Setter boolean(bool Config::*field) {
+    return [field](Config& c, std::string_view v) -> ParseError {
+        if (v == "true" || v == "false") {
+            c.*field = v == "true";
+            return std::nullopt;
+        }
+        return "expected true or false, got " + detail::quoted(v);
+    };
+}
+
 Setter text(std::string Config::*field) {
     return [field](Config& c, std::string_view v) -> ParseError {
         c.*field = std::string(v);
@@ -157,6 +167,8 @@ const std::map<std::string_view, Setter>& fields() {
         {"windowTitle", text(&Config::windowTitle)},
         {"textureFilteringMode", enumeration(&Config::textureFilteringMode, kFilteringNames)},
         {"maxCameraDepth", real(&Config::maxCameraDepth, kPositive)},
+        {"vsync", boolean(&Config::vsync)},
+        {"msaaSamples", integer(&Config::msaaSamples, Bounds{0.0, 16.0, false})},
         {"fontSize", integer(&Config::fontSize, kAtLeastOne)},
         {"gravityX", real(&Config::gravityX)},
         {"gravityY", real(&Config::gravityY)},
@@ -165,13 +177,21 @@ const std::map<std::string_view, Setter>& fields() {
         {"allowedPenetration", real(&Config::allowedPenetration, kNonNegative)},
         {"penetrationBiasFactor", real(&Config::penetrationBiasFactor, Bounds{0.0, 1.0, false})},
         {"minRigidbodySpeed", real(&Config::minRigidbodySpeed, kNonNegative)},
+        {"unitsPerMetre", real(&Config::unitsPerMetre, kPositive)},
         {"minAttenuationDistance", real(&Config::minAttenuationDistance, kNonNegative)},
         {"maxAttenuationDistance", real(&Config::maxAttenuationDistance, kNonNegative)},
         {"minPanningDistance", real(&Config::minPanningDistance, kNonNegative)},
         {"maxPanningDistance", real(&Config::maxPanningDistance, kNonNegative)},
         {"masterGain", real(&Config::masterGain, kNonNegative)},
+        {"voiceCount", integer(&Config::voiceCount, Bounds{1.0, 1024.0, false})},
+        {"bindingsFile", text(&Config::bindingsFile)},
+        {"keyRepeat", boolean(&Config::keyRepeat)},
         {"maxStepsPerFrame", integer(&Config::maxStepsPerFrame, kAtLeastOne)},
         {"randomSeed", integer(&Config::randomSeed)},
+        {"maxFrameTime", real(&Config::maxFrameTime, Bounds{0.0, 10.0, true})},
+        {"debugDraw", boolean(&Config::debugDraw)},
+        {"debugDrawKey", text(&Config::debugDrawKey)},
+        {"printProfile", boolean(&Config::printProfile)},
     };
     return kFields;
 }

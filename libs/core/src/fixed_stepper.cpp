@@ -5,6 +5,7 @@
 
 #include "format.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -27,15 +28,23 @@ int FixedStepper::advance(double frameDt) {
                     detail::formatNumber(frameDt));
     }
     accumulator_ += frameDt;
+    // A step is due when the accumulator is within a millionth of a step of it: frames of
+    // exactly one step (1/60 s at 60 Hz) then run exactly one step each, although 1/60 is not
+    // representable and the sums drift by rounding. Time within the tolerance is not carried
+    // over (at most step / 10^6 per step).
+    const double due = step_ * (1.0 - kTolerance);
     int steps = 0;
-    while (accumulator_ >= step_ && steps < maxSteps_) {
-        accumulator_ -= step_;
+    while (accumulator_ >= due && steps < maxSteps_) {
+        accumulator_ = std::max(0.0, accumulator_ - step_);
         ++steps;
     }
     dropped_ = 0.0;
-    if (accumulator_ >= step_) {
+    if (accumulator_ >= due) {
         // Keep the sub-step remainder so alpha() stays continuous; drop whole steps only.
-        const double kept = std::fmod(accumulator_, step_);
+        double kept = std::fmod(accumulator_, step_);
+        if (kept >= due) {
+            kept = 0.0;
+        }
         dropped_ = accumulator_ - kept;
         accumulator_ = kept;
         totalDropped_ += dropped_;

@@ -267,3 +267,48 @@ TEST(Config, DirectoryIsNotAConfigFile) {
     ASSERT_EQ(r.diagnostics.size(), 1u);
     EXPECT_EQ(r.diagnostics[0].severity, Severity::Warning);
 }
+
+TEST(Config, E2dKeysDefaultsAndValues) {
+    const Config d;
+    EXPECT_TRUE(d.vsync);
+    EXPECT_EQ(d.msaaSamples, 0);
+    EXPECT_EQ(d.unitsPerMetre, 1.0);
+    EXPECT_EQ(d.voiceCount, 32);
+    EXPECT_EQ(d.bindingsFile, "");
+    EXPECT_TRUE(d.keyRepeat);
+    EXPECT_EQ(d.maxFrameTime, 0.25);
+    EXPECT_FALSE(d.debugDraw);
+    EXPECT_EQ(d.debugDrawKey, "f1");
+    EXPECT_TRUE(d.printProfile);
+
+    const ConfigResult r = parseConfig("vsync = false\nmsaaSamples = 4\nunitsPerMetre = 100\nvoiceCount = 64\n"
+                                       "bindingsFile = keys/bindings.txt\nkeyRepeat = false\nmaxFrameTime = 0.1\n"
+                                       "debugDraw = true\ndebugDrawKey = tab\nprintProfile = false\n");
+    EXPECT_THAT(texts(r), IsEmpty());
+    EXPECT_FALSE(r.config.vsync);
+    EXPECT_EQ(r.config.msaaSamples, 4);
+    EXPECT_EQ(r.config.unitsPerMetre, 100.0);
+    EXPECT_EQ(r.config.voiceCount, 64);
+    EXPECT_EQ(r.config.bindingsFile, "keys/bindings.txt");
+    EXPECT_FALSE(r.config.keyRepeat);
+    EXPECT_EQ(r.config.maxFrameTime, 0.1);
+    EXPECT_TRUE(r.config.debugDraw);
+    EXPECT_EQ(r.config.debugDrawKey, "tab");
+    EXPECT_FALSE(r.config.printProfile);
+}
+
+TEST(Config, E2dKeysBadValuesNameLineAndKey) {
+    const ConfigResult r = parseConfig("vsync = yes\nmsaaSamples = 17\nunitsPerMetre = 0\nvoiceCount = 0\n"
+                                       "keyRepeat = 1\nmaxFrameTime = 11\n",
+                                       "g.cfg");
+    EXPECT_THAT(texts(r), ElementsAre("g.cfg:1: vsync: expected true or false, got 'yes'",
+                                      "g.cfg:2: msaaSamples: must be in [0, 16], got 17",
+                                      "g.cfg:3: unitsPerMetre: must be > 0, got 0",
+                                      "g.cfg:4: voiceCount: must be in [1, 1024], got 0",
+                                      "g.cfg:5: keyRepeat: expected true or false, got '1'",
+                                      "g.cfg:6: maxFrameTime: must be in (0, 10], got 11"));
+    const Config d;
+    EXPECT_EQ(r.config.vsync, d.vsync);
+    EXPECT_EQ(r.config.msaaSamples, d.msaaSamples);
+    EXPECT_EQ(r.config.unitsPerMetre, d.unitsPerMetre);
+}

@@ -64,12 +64,47 @@ TEST(FixedStepper, SixtyHertzOverOneSecondRunsSixtySteps) {
     for (int frame = 0; frame < 60; ++frame) {
         total += stepper.advance(1.0 / 60.0);
     }
-    // Rounding may leave the 60th step a hair short; it must not run more than 60 or fewer
-    // than 59, and alpha must stay in [0, 1).
-    EXPECT_GE(total, 59);
-    EXPECT_LE(total, 60);
+    EXPECT_EQ(total, 60);
     EXPECT_GE(stepper.alpha(), 0.0);
     EXPECT_LT(stepper.alpha(), 1.0);
+}
+
+TEST(FixedStepper, ExactSixtyHertzFramesRunOneStepEachForAnHour) {
+    // 1/60 is not exact in binary: without the tolerance some frames ran none and some two.
+    for (const double step : {1.0 / 60.0, 1.0 / 120.0 * 2.0, 0.1}) {
+        FixedStepper stepper(step, 5);
+        int frames = 0;
+        for (int frame = 0; frame < 60 * 3600; ++frame) {
+            frames += stepper.advance(step) == 1 ? 1 : 0;
+        }
+        EXPECT_EQ(frames, 60 * 3600) << step;
+        EXPECT_LT(stepper.accumulated(), step * 1e-6);
+    }
+}
+
+TEST(FixedStepper, FramesOfAClockReadingGiveOneStepEach) {
+    // The loop's dt is a difference of clock readings: (n + 1) / 60 - n / 60 rounds
+    // differently every frame, and grows less exact as the time grows.
+    FixedStepper stepper(1.0 / 60.0, 5);
+    double previous = 0.0;
+    int wrong = 0;
+    for (int frame = 1; frame <= 60 * 600; ++frame) {
+        const double now = 1000.0 + frame / 60.0;
+        wrong += stepper.advance(frame == 1 ? 1.0 / 60.0 : now - previous) == 1 ? 0 : 1;
+        previous = now;
+    }
+    EXPECT_EQ(wrong, 0);
+}
+
+TEST(FixedStepper, HalfStepFramesAlternate) {
+    FixedStepper stepper(1.0 / 60.0, 5);
+    int total = 0;
+    for (int frame = 0; frame < 1200; ++frame) {
+        const int steps = stepper.advance(1.0 / 120.0);
+        EXPECT_EQ(steps, frame % 2) << frame;
+        total += steps;
+    }
+    EXPECT_EQ(total, 600);
 }
 
 TEST(FixedStepper, ResetForgetsLeftoverAndDroppedTime) {

@@ -20,7 +20,8 @@ enum class TextureFilteringMode { Nearest, Linear };
 [[nodiscard]] std::string_view toString(WindowMode mode) noexcept;
 [[nodiscard]] std::string_view toString(TextureFilteringMode mode) noexcept;
 
-/// Everything the game configuration file sets (seed Figure 107, plus two e2d keys).
+/// Everything the game configuration file sets (seed Figure 107, plus e2d's own keys: the
+/// LOOP, INPUT and DEBUG sections and the DISPLAY, PHYSICS and SOUND additions below).
 ///
 /// Defaults are the figure's values except where noted: PHYSICS is in metres and seconds
 /// (the seed used pixels), `firstScene` is empty (a game-specific name is no library default)
@@ -47,6 +48,10 @@ struct Config {
     TextureFilteringMode textureFilteringMode = TextureFilteringMode::Nearest;
     /// Draw-order (z) range of the camera, > 0. Default 1000.
     float maxCameraDepth = 1000.0f;
+    /// Swap buffers at the monitor's refresh rate (`true` / `false`). Default true.
+    bool vsync = true;
+    /// Multisample anti-aliasing samples, 0 (off) to 16. Default 0.
+    int msaaSamples = 0;
 
     // TEXT
     /// Base font size in pixels (>= 1). Default 100.
@@ -66,6 +71,10 @@ struct Config {
     float penetrationBiasFactor = 0.2f;
     /// Speed below which a body may rest, m/s (>= 0). Default 0.05.
     float minRigidbodySpeed = 0.05f;
+    /// World units per physics metre (> 0): the PHYSICS lengths above (gravity, penetration,
+    /// speed) are in world units and are divided by it before reaching the physics world,
+    /// which runs in metres. The seed's pixel configs (gravity -1000) say e.g. 100. Default 1.
+    double unitsPerMetre = 1.0;
 
     // SOUND (world units, >= 0)
     /// Default 256.
@@ -78,12 +87,34 @@ struct Config {
     float maxPanningDistance = 512.0f;
     /// Overall gain (>= 0). Default 0.2.
     float masterGain = 0.2f;
+    /// Voices that can sound at once, 1..1024. Default 32.
+    int voiceCount = 32;
+
+    // INPUT (e2d additions)
+    /// Action bindings file (`action = binding, ...`), relative to the config file's folder;
+    /// empty: none. Default "".
+    std::string bindingsFile;
+    /// Deliver the system's key auto-repeat to scenes as onKeyRepeat (`true` / `false`).
+    /// Default true.
+    bool keyRepeat = true;
 
     // LOOP (e2d additions)
     /// Fixed steps run at most per frame before time is dropped (>= 1). Default 5.
     int maxStepsPerFrame = 5;
     /// Seed for the game's Random. Default 0.
     std::uint64_t randomSeed = 0;
+    /// Longest frame time the loop accepts, seconds, > 0 and <= 10: a longer frame (a stall,
+    /// a debugger stop) counts as this long and is counted as a spike. Default 0.25.
+    double maxFrameTime = 0.25;
+
+    // DEBUG (e2d additions)
+    /// Start with the physics debug draw on (`true` / `false`). Default false.
+    bool debugDraw = false;
+    /// Key name (as in bindings files, e.g. `f1`, `tab`) that toggles the debug draw at run
+    /// time; empty: no key. Default "f1".
+    std::string debugDrawKey = "f1";
+    /// Print the frame profile (mean milliseconds per phase) when the game ends. Default true.
+    bool printProfile = true;
 };
 
 /// One problem found while reading a configuration.
@@ -120,7 +151,7 @@ struct ConfigResult {
 /// Format: one `key = value` per line; blank lines and lines starting with `#` are ignored;
 /// whitespace around key and value is trimmed and a value may contain spaces
 /// (`windowTitle = My Game`); there are no inline comments. Keys and enum values are
-/// case-sensitive. Numbers are read locale-independently; an integer must be a whole
+/// case-sensitive. Booleans are `true` or `false`. Numbers are read locale-independently; an integer must be a whole
 /// integer ("12px" and "1.5" are errors).
 ///
 /// Errors: bad or out-of-range number, unknown enum value (the accepted ones are listed),

@@ -10,8 +10,15 @@ namespace e2d::core {
 /// game slows down instead of falling into a "spiral of death" where each frame has more
 /// steps to catch up than the last). `alpha()` is the fraction of a step left over, for
 /// interpolating rendered positions between the last two physics states.
+///
+/// A step is due once the accumulated time is within `kTolerance` steps of a whole step, so
+/// frames exactly one step long (1/60 s frames with a 1/60 s step, which are not exact in
+/// binary) give exactly one step each, forever.
 class FixedStepper {
 public:
+    /// Fraction of a step by which the accumulator may fall short and still run it.
+    static constexpr double kTolerance = 1e-6;
+
     /// `step` seconds per fixed step (finite, > 0), `maxStepsPerFrame` >= 1.
     /// Throws core::Error naming the bad argument.
     FixedStepper(double step, int maxStepsPerFrame);
