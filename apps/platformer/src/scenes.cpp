@@ -33,14 +33,9 @@ using e2d::engine::GameSystem;
 
 namespace {
 
-// World units (render) per metre (physics): one metre is 48 reference pixels, so the
-// 1280 x 720 view shows about 27 x 15 m of the level.
-constexpr float kPixelsPerMetre = 48.0f;
 constexpr glm::vec2 kReference{1280.0f, 720.0f};
 // Seconds the level keeps showing after the player won or died, before the next scene.
 constexpr double kOutroTime = 1.0;
-
-glm::vec2 px(glm::vec2 metres) { return metres * kPixelsPerMetre; }
 
 // Depth order (SpriteRenderer's object z).
 constexpr float kZSky = -10.0f;
@@ -60,7 +55,7 @@ GameObject& makeSprite(e2d::core::Scene& scene, const render::SpriteRendererDef&
 
 render::SpriteRendererDef textured(const GameSystem& game, std::string_view file, glm::vec2 size) {
     render::SpriteRendererDef def;
-    def.texturePath = game.asset(file).string();
+    def.texturePath = game.asset(std::string("assets/") + std::string(file)).string();
     def.size = size;
     return def;
 }
@@ -104,7 +99,7 @@ void hudText(GameSystem& game, std::string_view text, glm::vec2 at, int size,
     }
     render::TextStyle style;
     style.horizontal = horizontal;
-    style.vertical = render::VerticalAlign::Middle;
+    style.vertical = render::VerticalAlign::Center;
     render::TextDraw where;
     where.position = at;
     where.z = 50.0f;
@@ -113,23 +108,17 @@ void hudText(GameSystem& game, std::string_view text, glm::vec2 at, int size,
     game.text().draw(*font, text, style, where);
 }
 
-// Loads the bindings file beside the config (once per scene: loading replaces the listed
-// actions' bindings, so doing it again is harmless). A broken file is reported and the
-// built-in bindings below are kept.
-void loadBindings(GameSystem& game, e2d::core::Logger* logger) {
+// The engine loads the config's bindingsFile (bindings.txt) into the game's actions; when an
+// action is missing from it (no file, or a file without it), these bindings stand in.
+void ensureBindings(GameSystem& game) {
     e2d::input::ActionMap& actions = game.actions();
-    if (actions.find("jump").isNull()) {
-        actions.loadFromString("move = keys:left/right, keys:a/d, axis:leftx\n"
-                               "jump = key:space, key:up, key:w, button:a\n"
-                               "start = key:enter, key:space, button:start, button:a\n"
-                               "quit = key:escape, button:back\n",
-                               "<platformer defaults>");
-    }
-    try {
-        actions.load(game.asset("bindings.txt"));
-    } catch (const e2d::core::Error& error) {
-        if (logger != nullptr) {
-            logger->warning(error.what());
+    const char* defaults[][2] = {{"move", "move = keys:left/right, keys:a/d, axis:leftx"},
+                                 {"jump", "jump = key:space, key:up, key:w, button:a"},
+                                 {"start", "start = key:enter, key:space, button:start, button:a"},
+                                 {"quit", "quit = key:escape, button:back"}};
+    for (const auto& [name, line] : defaults) {
+        if (actions.find(name).isNull()) {
+            actions.loadFromString(line, "<platformer defaults>");
         }
     }
 }
@@ -142,7 +131,7 @@ protected:
 
     void onInitialize() override {
         GameSystem& game = system<GameSystem>();
-        loadBindings(game, logger());
+        ensureBindings(game);
         GameObject& camera = createGameObject();
         render::CameraComponentDef cameraDef;
         cameraDef.referenceSize = kReference;
@@ -226,7 +215,9 @@ public:
 private:
     void onInitialize() override {
         GameSystem& game = system<GameSystem>();
-        loadBindings(game, logger());
+        ensureBindings(game);
+        // The config's unitsPerMetre: world units (reference pixels) per metre, 48 for this game.
+        ppm_ = static_cast<float>(game.unitsPerMetre());
         level_ = std::make_unique<Level>(game.world());
         session_.lastScene = name();
         session_.runs += 1;
@@ -313,7 +304,7 @@ private:
         def.size = px(2.0f * Level::playerHalfSize()) * glm::vec2(1.4f, 1.1f);
         def.pivot = {0.5f, 0.45f};
         try {
-            sheet_ = render::SpriteSheet::fromFile(game.asset("player.json"));
+            sheet_ = render::SpriteSheet::fromFile(game.asset("assets/player.json"));
             def.texturePath = sheet_->imagePath().string();
             for (const char* name : {"idle", "run", "jump", "fall"}) {
                 frames_.push_back(sheet_->animationFrames(name));
@@ -333,11 +324,11 @@ private:
 
     void loadSounds(GameSystem& game) {
         audio::Mixer& mixer = game.mixer();
-        coinSound_ = mixer.load(game.asset("coin.wav"));
-        jumpSound_ = mixer.load(game.asset("jump.wav"));
-        hurtSound_ = mixer.load(game.asset("hurt.wav"));
-        winSound_ = mixer.load(game.asset("win.wav"));
-        const audio::SoundId music = mixer.load(game.asset("music.ogg"), audio::LoadMode::Stream);
+        coinSound_ = mixer.load(game.asset("assets/coin.wav"));
+        jumpSound_ = mixer.load(game.asset("assets/jump.wav"));
+        hurtSound_ = mixer.load(game.asset("assets/hurt.wav"));
+        winSound_ = mixer.load(game.asset("assets/win.wav"));
+        const audio::SoundId music = mixer.load(game.asset("assets/music.ogg"), audio::LoadMode::Stream);
         audio::PlayDef def;
         def.loop = true;
         def.gain = 0.5f;
@@ -480,7 +471,10 @@ private:
         camera_->setPosition(at);
     }
 
+    [[nodiscard]] glm::vec2 px(glm::vec2 metres) const { return metres * ppm_; }
+
     Session& session_;
+    float ppm_ = 48.0f;
     std::unique_ptr<Level> level_;
     GameObject* camera_ = nullptr;
     GameObject* player_ = nullptr;

@@ -1,0 +1,43 @@
+# The game itself (included by CMakeLists.txt once e2d::engine and e2d_add_app exist).
+e2d_add_app(platformer
+  SOURCES src/main.cpp src/scenes.cpp
+  DATA data/config.txt data/bindings.txt)
+target_link_libraries(e2d_platformer PRIVATE e2d_platformer_rules)
+e2d_app_assets(e2d_platformer SET platformer FILES
+  player.png player.json grass.png spikes.png plank.png platform.png coin.png flag.png
+  sky.png hills.png trees.png coin.wav jump.wav hurt.wav win.wav music.ogg)
+
+if(E2D_BUILD_TESTS)
+  set(scripts ${CMAKE_CURRENT_SOURCE_DIR}/tests)
+  # Screenshots, checked by e2d_image_check: the title's heading (yellow ink) over the sky.
+  e2d_add_app_test(platformer title ARGS --frames 30
+    CHECK region 340 150 600 120 ink
+          region 0 0 1280 100 colour 100 170 240 40 30)
+  # The scripted run at 5 s: the player stands on the lift at the top of the cliff; the coin
+  # counter is drawn top left, the grass of the ledge and the lift's stripes below the player.
+  e2d_add_app_test(platformer level ARGS --frames 300 --input-script ${scripts}/win.script
+    CHECK region 20 10 220 50 ink
+          region 0 0 1280 100 colour 100 170 240 40 30)
+  e2d_add_app_test(platformer win ARGS --frames 600 --input-script ${scripts}/win.script
+    CHECK region 340 150 600 120 ink)
+  e2d_add_app_test(platformer game_over ARGS --frames 240 --input-script ${scripts}/spikes.script
+    CHECK region 340 150 600 120 ink)
+
+  # The state line the game prints at exit: the scripted run collects the three coins (each
+  # starting a coin sound on a voice), rides the lift, lands on the one-way platform, wins.
+  add_test(NAME platformer_state_win
+    COMMAND ${CMAKE_COMMAND} -DAPP=$<TARGET_FILE:e2d_platformer>
+      -DWRAPPER=${PROJECT_SOURCE_DIR}/scripts/with-display.sh
+      "-DARGS=--frames 600 --input-script ${scripts}/win.script"
+      "-DEXPECT=scene=WinScene score=3/3 coin_voices=3 jumps=3 runs=1 deaths=0 wins=1 steps_on_moving_platform=[1-9][0-9]+ steps_on_one_way=[1-9][0-9]* music_streaming=1"
+      -P ${scripts}/run_and_check.cmake)
+  # Running right without jumping: the spikes, game over, one coin.
+  add_test(NAME platformer_state_game_over
+    COMMAND ${CMAKE_COMMAND} -DAPP=$<TARGET_FILE:e2d_platformer>
+      -DWRAPPER=${PROJECT_SOURCE_DIR}/scripts/with-display.sh
+      "-DARGS=--frames 240 --input-script ${scripts}/spikes.script"
+      "-DEXPECT=scene=GameOverScene score=1/3 coin_voices=1 jumps=0 runs=1 deaths=1 wins=0"
+      -P ${scripts}/run_and_check.cmake)
+  set_tests_properties(platformer_state_win platformer_state_game_over PROPERTIES
+    LABELS apps ENVIRONMENT "ALSOFT_DRIVERS=null;MESA_SHADER_CACHE_DISABLE=true")
+endif()
