@@ -232,12 +232,10 @@ void Level::readSensorEvents() {
 }
 
 void Level::movePlatforms(float dt) {
-    // A kinematic body goes where its velocity takes it: aim each step at the timetable's
-    // position at the end of the step, so the platform never drifts from it.
+    // Velocities that reach the timetable's position at the end of the step: the platform
+    // never drifts from it, and pushes and carries the player like any moving body.
     for (const MovingPlatform& platform : platforms_) {
-        const glm::vec2 now = world_.transform(platform.body).p;
-        const glm::vec2 next = platform.positionAt(time_ + dt);
-        world_.setLinearVelocity(platform.body, (next - now) / dt);
+        world_.setTargetTransform(platform.body, platform.positionAt(time_ + dt), 0.0f, dt);
     }
 }
 
