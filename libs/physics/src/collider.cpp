@@ -3,6 +3,7 @@
 
 #include <e2d/core/error.hpp>
 #include <e2d/core/game_object.hpp>
+#include <e2d/core/scene.hpp>
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
@@ -17,7 +18,11 @@
 namespace e2d::physics {
 
 Collider::Collider(PhysicsSystem& system, const ShapeGeometry& geometry, const ColliderDef& def)
-    : system_(system), geometry_(geometry), def_(def) {
+    : Collider(geometry, def) {
+    system_ = &system;
+}
+
+Collider::Collider(const ShapeGeometry& geometry, const ColliderDef& def) : geometry_(geometry), def_(def) {
     validate(geometry, "physics::Collider::Collider()");
     using detail::component_check::requireNonNegative;
     constexpr const char* kConstructor = "Collider::Collider";
@@ -28,6 +33,17 @@ Collider::Collider(PhysicsSystem& system, const ShapeGeometry& geometry, const C
 }
 
 Collider::~Collider() = default;
+
+PhysicsSystem& Collider::sys() const {
+    if (system_ == nullptr) {
+        if (scene() == nullptr) {
+            throw core::Error("physics::Collider::system(): the Collider has no PhysicsSystem (it was made "
+                              "without one and its object is not in a scene)");
+        }
+        system_ = &scene()->system<PhysicsSystem>();
+    }
+    return *system_;
+}
 
 void Collider::onInitialize() { attach(); }
 
@@ -49,11 +65,11 @@ void Collider::attach() {
         def.type = BodyType::Static;
         def.position = pose.position;
         def.angle = pose.angle;
-        ownBody_ = system_.world().createBody(def);
+        ownBody_ = sys().world().createBody(def);
         writtenPosition_ = pose.position;
         writtenAngle_ = pose.angle;
         body = ownBody_;
-        system_.registerStaticCollider(*this);
+        sys().registerStaticCollider(*this);
     }
     ShapeDef def;
     def.density = def_.density;
@@ -63,22 +79,22 @@ void Collider::attach() {
     def.isSensor = def_.isTrigger;
     def.filter.categoryBits = def_.category.bits();
     def.filter.maskBits = def_.mask.bits();
-    shape_ = system_.world().createShape(body, def, scaled);
-    system_.registerCollider(shape_, *this);
+    shape_ = sys().world().createShape(body, def, scaled);
+    sys().registerCollider(shape_, *this);
 }
 
 void Collider::detach() noexcept {
     if (!shape_.isNull()) {
-        system_.unregisterCollider(shape_);
-        if (system_.world().isValid(shape_)) {
-            system_.world().destroyShape(shape_);
+        sys().unregisterCollider(shape_);
+        if (sys().world().isValid(shape_)) {
+            sys().world().destroyShape(shape_);
         }
         shape_ = {};
     }
     if (!ownBody_.isNull()) {
-        system_.unregisterStaticCollider(*this);
-        if (system_.world().isValid(ownBody_)) {
-            system_.world().destroyBody(ownBody_);
+        sys().unregisterStaticCollider(*this);
+        if (sys().world().isValid(ownBody_)) {
+            sys().world().destroyBody(ownBody_);
         }
         ownBody_ = {};
     }

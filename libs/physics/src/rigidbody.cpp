@@ -3,6 +3,7 @@
 
 #include <e2d/core/error.hpp>
 #include <e2d/core/game_object.hpp>
+#include <e2d/core/scene.hpp>
 #include <e2d/physics/collider.hpp>
 #include <e2d/physics/physics_system.hpp>
 
@@ -19,7 +20,9 @@ namespace {
 constexpr const char* kConstructor = "Rigidbody::Rigidbody";
 } // namespace
 
-Rigidbody::Rigidbody(PhysicsSystem& system, const RigidbodyDef& def) : system_(system), def_(def) {
+Rigidbody::Rigidbody(PhysicsSystem& system, const RigidbodyDef& def) : Rigidbody(def) { system_ = &system; }
+
+Rigidbody::Rigidbody(const RigidbodyDef& def) : def_(def) {
     if (def.type == BodyType::Static) {
         throw core::Error("physics::Rigidbody::Rigidbody(): def.type must be dynamic or kinematic; "
                           "a Collider without a Rigidbody is static");
@@ -34,6 +37,17 @@ Rigidbody::Rigidbody(PhysicsSystem& system, const RigidbodyDef& def) : system_(s
 }
 
 Rigidbody::~Rigidbody() = default;
+
+PhysicsSystem& Rigidbody::sys() const {
+    if (system_ == nullptr) {
+        if (scene() == nullptr) {
+            throw core::Error("physics::Rigidbody::system(): the Rigidbody has no PhysicsSystem (it was made "
+                              "without one and its object is not in a scene)");
+        }
+        system_ = &scene()->system<PhysicsSystem>();
+    }
+    return *system_;
+}
 
 BodyId Rigidbody::ensureBody() {
     if (!body_.isNull()) {
@@ -53,10 +67,10 @@ BodyId Rigidbody::ensureBody() {
     def.lockX = def_.freezePositionX;
     def.lockY = def_.freezePositionY;
     def.isBullet = def_.bullet;
-    body_ = system_.world().createBody(def);
+    body_ = sys().world().createBody(def);
     writtenPosition_ = pose.position;
     writtenAngle_ = pose.angle;
-    system_.registerRigidbody(*this);
+    sys().registerRigidbody(*this);
     return body_;
 }
 
@@ -64,8 +78,8 @@ void Rigidbody::onInitialize() {
     ensureBody();
     // Colliders that attached to a static body before this component existed move onto it.
     for (Collider* c : gameObject()->getComponents<Collider>()) {
-        if (!c->shape_.isNull() && (!system_.world().isValid(c->shape_) ||
-                                    system_.world().shapeBody(c->shape_) != body_)) {
+        if (!c->shape_.isNull() && (!sys().world().isValid(c->shape_) ||
+                                    sys().world().shapeBody(c->shape_) != body_)) {
             c->attach();
         }
     }
@@ -85,14 +99,14 @@ void Rigidbody::onTerminate() {
     leaving_ = true;
     std::vector<Collider*> riders;
     for (Collider* c : gameObject()->getComponents<Collider>()) {
-        if (!c->shape_.isNull() && system_.world().isValid(c->shape_) &&
-            system_.world().shapeBody(c->shape_) == body_) {
+        if (!c->shape_.isNull() && sys().world().isValid(c->shape_) &&
+            sys().world().shapeBody(c->shape_) == body_) {
             c->detach();
             riders.push_back(c);
         }
     }
-    system_.unregisterRigidbody(*this);
-    system_.world().destroyBody(body_);
+    sys().unregisterRigidbody(*this);
+    sys().world().destroyBody(body_);
     body_ = {};
     // Colliders that stay on a living object become static again.
     if (!gameObject()->isPendingDestroy()) {
@@ -113,47 +127,47 @@ BodyId Rigidbody::requireBody(const char* function) const {
 }
 
 Vec2 Rigidbody::linearVelocity() const {
-    return system_.world().linearVelocity(requireBody("linearVelocity"));
+    return sys().world().linearVelocity(requireBody("linearVelocity"));
 }
 void Rigidbody::setLinearVelocity(Vec2 velocity) {
-    system_.world().setLinearVelocity(requireBody("setLinearVelocity"), velocity);
+    sys().world().setLinearVelocity(requireBody("setLinearVelocity"), velocity);
 }
 float Rigidbody::angularVelocity() const {
-    return system_.world().angularVelocity(requireBody("angularVelocity"));
+    return sys().world().angularVelocity(requireBody("angularVelocity"));
 }
 void Rigidbody::setAngularVelocity(float velocity) {
-    system_.world().setAngularVelocity(requireBody("setAngularVelocity"), velocity);
+    sys().world().setAngularVelocity(requireBody("setAngularVelocity"), velocity);
 }
-float Rigidbody::mass() const { return system_.world().massData(requireBody("mass")).mass; }
+float Rigidbody::mass() const { return sys().world().massData(requireBody("mass")).mass; }
 float Rigidbody::gravityScale() const {
-    return system_.world().gravityScale(requireBody("gravityScale"));
+    return sys().world().gravityScale(requireBody("gravityScale"));
 }
 void Rigidbody::setGravityScale(float scale) {
-    system_.world().setGravityScale(requireBody("setGravityScale"), scale);
+    sys().world().setGravityScale(requireBody("setGravityScale"), scale);
 }
 void Rigidbody::setFreezeRotation(bool freeze) {
-    system_.world().setFixedRotation(requireBody("setFreezeRotation"), freeze);
+    sys().world().setFixedRotation(requireBody("setFreezeRotation"), freeze);
 }
 void Rigidbody::setFreezePosition(bool x, bool y) {
-    system_.world().setPositionLocks(requireBody("setFreezePosition"), x, y);
+    sys().world().setPositionLocks(requireBody("setFreezePosition"), x, y);
 }
 void Rigidbody::applyForce(Vec2 force) {
-    system_.world().applyForceToCenter(requireBody("applyForce"), force);
+    sys().world().applyForceToCenter(requireBody("applyForce"), force);
 }
 void Rigidbody::applyForceAtPoint(Vec2 force, Vec2 point) {
-    system_.world().applyForce(requireBody("applyForceAtPoint"), force, point);
+    sys().world().applyForce(requireBody("applyForceAtPoint"), force, point);
 }
 void Rigidbody::applyTorque(float torque) {
-    system_.world().applyTorque(requireBody("applyTorque"), torque);
+    sys().world().applyTorque(requireBody("applyTorque"), torque);
 }
 void Rigidbody::applyLinearImpulse(Vec2 impulse) {
-    system_.world().applyLinearImpulseToCenter(requireBody("applyLinearImpulse"), impulse);
+    sys().world().applyLinearImpulseToCenter(requireBody("applyLinearImpulse"), impulse);
 }
 void Rigidbody::applyImpulseAtPoint(Vec2 impulse, Vec2 point) {
-    system_.world().applyLinearImpulse(requireBody("applyImpulseAtPoint"), impulse, point);
+    sys().world().applyLinearImpulse(requireBody("applyImpulseAtPoint"), impulse, point);
 }
 void Rigidbody::applyAngularImpulse(float impulse) {
-    system_.world().applyAngularImpulse(requireBody("applyAngularImpulse"), impulse);
+    sys().world().applyAngularImpulse(requireBody("applyAngularImpulse"), impulse);
 }
 
 } // namespace e2d::physics

@@ -427,3 +427,45 @@ TEST_F(ComponentsTest, BodyDestroyedThroughTheWorldInsideACollisionEventLeavesIt
 }
 
 } // namespace
+
+TEST_F(ComponentsTest, ComponentsMadeFromTheirDefAloneFindTheSystemThroughTheScene) {
+    core::GameObjectId boxId;
+    start([&](core::Scene& scene) {
+        core::GameObject& g = scene.createGameObject();
+        g.setPosition(glm::vec2{0.0f, -1.0f});
+        g.addComponent<Collider>(physics::ShapeGeometry{physics::makeBox(10.0f, 1.0f)});
+        core::GameObject& b = scene.createGameObject();
+        b.setPosition(glm::vec2{0.0f, 3.0f});
+        // The collider first: it makes the Rigidbody's body, which must find the system too.
+        b.addComponent<Collider>(physics::ShapeGeometry{box(0.5f)});
+        b.addComponent<Rigidbody>(physics::RigidbodyDef{});
+        boxId = b.id();
+    });
+    core::GameObject* b = director.scene()->find(boxId);
+    ASSERT_NE(b, nullptr);
+    EXPECT_EQ(&b->getComponent<Rigidbody>()->system(), &physics);
+    EXPECT_EQ(physics.world().bodyCount(), 2);
+    frames(180);
+    // At rest on the ground: its bottom (y - 0.5) on the ground's top (0), within the contact
+    // overlap tolerated.
+    EXPECT_NEAR(b->worldPosition().y, 0.5f, 0.02f);
+}
+
+TEST(ComponentsWithoutSystem, DefOnlyComponentsInASceneWithoutPhysicsNameTheMissingSystem) {
+    core::Logger logger{core::LogLevel::Off};
+    core::SceneRegistry registry;
+    registry.add("Test", [] {
+        return std::make_unique<SetupScene>([](core::Scene& scene) {
+            scene.createGameObject().addComponent<Rigidbody>(physics::RigidbodyDef{});
+        });
+    });
+    core::SceneDirector director{registry, logger};
+    try {
+        director.start("Test");
+        FAIL() << "expected core::Error";
+    } catch (const core::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("PhysicsSystem"), std::string::npos) << e.what();
+    }
+    const Rigidbody loose{physics::RigidbodyDef{}};
+    EXPECT_THROW(static_cast<void>(loose.system()), core::Error);
+}

@@ -35,8 +35,12 @@ struct ColliderDef {
 /// collider at the next fixed step. Several colliders may share an object.
 class Collider : public core::Component {
 public:
-    /// `system` must outlive the component. Throws core::Error for an invalid geometry
-    /// (see physics::validate) or an invalid field of `def`.
+    /// The PhysicsSystem is found through the scene when the object enters it
+    /// (`scene()->system<PhysicsSystem>()`, core::Error naming the type when there is none).
+    /// Throws core::Error for an invalid geometry (see physics::validate) or an invalid field
+    /// of `def`.
+    explicit Collider(const ShapeGeometry& geometry, const ColliderDef& def = {});
+    /// With an explicit system, which must outlive the component.
     Collider(PhysicsSystem& system, const ShapeGeometry& geometry, const ColliderDef& def = {});
     ~Collider() override;
 
@@ -58,7 +62,9 @@ private:
     void attach();
     void detach() noexcept;
 
-    PhysicsSystem& system_;
+    PhysicsSystem& sys() const;
+
+    mutable PhysicsSystem* system_ = nullptr; // found through the scene when not given
     ShapeGeometry geometry_;
     ColliderDef def_;
     ShapeId shape_{};

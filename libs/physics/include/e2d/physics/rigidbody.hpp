@@ -42,15 +42,20 @@ class Rigidbody : public core::Component {
 public:
     static constexpr bool kUnique = true;
 
-    /// `system` must outlive the component. Throws core::Error for a non-finite or negative
-    /// field of `def`, or a static type.
+    /// The PhysicsSystem is found through the scene when the object enters it
+    /// (`scene()->system<PhysicsSystem>()`, core::Error naming the type when there is none).
+    /// Throws core::Error for a non-finite or negative field of `def`, or a static type.
+    explicit Rigidbody(const RigidbodyDef& def = {});
+    /// With an explicit system, which must outlive the component.
     Rigidbody(PhysicsSystem& system, const RigidbodyDef& def = {});
     ~Rigidbody() override;
 
     /// The body, null before the object entered the scene, after the component went, or once
     /// the PhysicsSystem noticed the body was destroyed through the World.
     [[nodiscard]] BodyId body() const noexcept { return body_; }
-    [[nodiscard]] PhysicsSystem& system() const noexcept { return system_; }
+    /// The system given or found through the scene; core::Error when there is none (a
+    /// def-only component whose object is not in a scene with a PhysicsSystem).
+    [[nodiscard]] PhysicsSystem& system() const { return sys(); }
 
     [[nodiscard]] Vec2 linearVelocity() const;
     void setLinearVelocity(Vec2 velocity);
@@ -84,7 +89,9 @@ private:
     BodyId ensureBody();
     BodyId requireBody(const char* function) const;
 
-    PhysicsSystem& system_;
+    PhysicsSystem& sys() const;
+
+    mutable PhysicsSystem* system_ = nullptr; // found through the scene when not given
     RigidbodyDef def_;
     BodyId body_{};
     // What the last fixed step wrote to the object, to tell a hand-made move from our own.

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/core/system.hpp>
+#include <e2d/engine/engine_config.hpp>
+#include <e2d/engine/frame_profile.hpp>
+
+#include <filesystem>
+#include <string_view>
+
+namespace e2d::audio {
+class Mixer;
+}
+namespace e2d::core {
+class Logger;
+class Random;
+} // namespace e2d::core
+namespace e2d::input {
+class ActionMap;
+class Input;
+} // namespace e2d::input
+namespace e2d::physics {
+class World;
+}
+namespace e2d::render {
+class Renderer;
+class RenderSystem;
+class TextRenderer;
+class Window;
+} // namespace e2d::render
+
+namespace e2d::engine {
+
+namespace detail {
+struct GameState;
+}
+
+/// What a running Game offers its scenes and components: `scene()->system<GameSystem>()`.
+/// Owned by the Game; valid while the game runs.
+///
+/// On a scene change (clear(), after the other systems' clear(): sprites destroyed, voices
+/// stopped, bodies gone) it destroys every texture no sprite uses any more (the fonts and their
+/// atlases are dropped too and reopened when next asked for).
+class GameSystem final : public core::System {
+public:
+    explicit GameSystem(detail::GameState& state) noexcept : state_(state) {}
+
+    /// The configuration the game runs with.
+    [[nodiscard]] const EngineConfig& config() const noexcept;
+    /// `relative` resolved against the config file's folder (apps keep their assets beside
+    /// it); an absolute path is returned as is.
+    [[nodiscard]] std::filesystem::path asset(std::string_view relative) const;
+
+    [[nodiscard]] render::Window& window() noexcept;
+    [[nodiscard]] render::Renderer& renderer() noexcept;
+    [[nodiscard]] render::RenderSystem& renderSystem() noexcept;
+    [[nodiscard]] render::TextRenderer& text();
+    [[nodiscard]] input::Input& input() noexcept;
+    /// The game's actions, loaded from the config's bindingsFile (if any).
+    [[nodiscard]] input::ActionMap& actions() noexcept;
+    [[nodiscard]] audio::Mixer& mixer() noexcept;
+    [[nodiscard]] physics::World& world() noexcept;
+    [[nodiscard]] core::Logger& logger() noexcept;
+    /// World units per physics metre (config unitsPerMetre, default 1).
+    [[nodiscard]] double unitsPerMetre() const noexcept;
+    /// The game's random numbers, seeded by `--seed` or the config's randomSeed.
+    [[nodiscard]] core::Random& random() noexcept;
+
+    /// Switches to the scene registered as `name` at the start of the next frame.
+    void changeScene(std::string_view name);
+    /// Ends the game after this frame.
+    void terminateGame();
+
+    /// Whether the physics debug draw (shapes, AABBs, contacts and normals) is on.
+    [[nodiscard]] bool debugDraw() const noexcept;
+    void setDebugDraw(bool on) noexcept;
+
+    /// Frames run so far (0 during the first frame).
+    [[nodiscard]] std::int64_t frame() const noexcept;
+    /// True for a `--frames N` run (fixed 1/60 s frames, hidden window).
+    [[nodiscard]] bool headless() const noexcept;
+    [[nodiscard]] const FrameProfile& profile() const noexcept;
+
+    void clear() override;
+
+private:
+    detail::GameState& state_;
+};
+
+} // namespace e2d::engine

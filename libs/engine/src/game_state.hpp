@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/engine/engine_config.hpp>
+#include <e2d/engine/frame_profile.hpp>
+
+#include <cstdint>
+
+namespace e2d::audio {
+class AudioSystem;
+}
+namespace e2d::core {
+class Logger;
+class Random;
+class SceneDirector;
+} // namespace e2d::core
+namespace e2d::input {
+class ActionMap;
+class Input;
+} // namespace e2d::input
+namespace e2d::physics {
+class PhysicsSystem;
+}
+namespace e2d::render {
+class Renderer;
+class RenderSystem;
+class Window;
+} // namespace e2d::render
+
+namespace e2d::engine::detail {
+
+/// Everything a running Game owns, as GameSystem reaches it. Filled in by Game::run() (which
+/// owns the objects) before the first scene starts.
+struct GameState {
+    EngineConfig config;
+    core::Logger* logger = nullptr;
+    render::Window* window = nullptr;
+    render::Renderer* renderer = nullptr;
+    render::RenderSystem* renderSystem = nullptr;
+    input::Input* input = nullptr;
+    input::ActionMap* actions = nullptr;
+    audio::AudioSystem* audio = nullptr;
+    physics::PhysicsSystem* physics = nullptr;
+    core::Random* random = nullptr;
+    core::SceneDirector* director = nullptr;
+    FrameProfile* profile = nullptr;
+    bool debugDraw = false;
+    bool headless = false;
+    std::int64_t frame = 0;
+};
+
+} // namespace e2d::engine::detail

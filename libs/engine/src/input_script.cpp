@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/engine/input_script.hpp>
+
+#include <e2d/core/error.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <sstream>
+
+namespace e2d::engine {
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+    const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    while (!s.empty() && space(s.front())) {
+        s.remove_prefix(1);
+    }
+    while (!s.empty() && space(s.back())) {
+        s.remove_suffix(1);
+    }
+    return s;
+}
+
+// Splits on runs of blanks.
+std::vector<std::string_view> words(std::string_view line) {
+    std::vector<std::string_view> out;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) {
+            ++i;
+        }
+        const std::size_t start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t') {
+            ++i;
+        }
+        if (i > start) {
+            out.push_back(line.substr(start, i - start));
+        }
+    }
+    return out;
+}
+
+[[noreturn]] void fail(std::string_view source, int line, const std::string& message) {
+    throw core::Error(std::string(source) + ":" + std::to_string(line) + ": " + message);
+}
+
+} // namespace
+
+InputScript parseInputScript(std::string_view text, std::string_view source) {
+    InputScript script;
+    script.source = std::string(source);
+    int lineNumber = 0;
+    while (!text.empty()) {
+        ++lineNumber;
+        const std::size_t end = text.find('\n');
+        const std::string_view line = trim(text.substr(0, end));
+        text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
+        if (line.empty() || line.front() == '#') {
+            continue;
+        }
+        const std::vector<std::string_view> w = words(line);
+        if (w.size() != 3) {
+            fail(source, lineNumber,
+                 "expected '<frame> <press|release|tap> <target>', got '" + std::string(line) + "'");
+        }
+        std::int64_t frame = 0;
+        const auto [ptr, ec] = std::from_chars(w[0].data(), w[0].data() + w[0].size(), frame);
+        if (ec != std::errc() || ptr != w[0].data() + w[0].size() || frame < 0) {
+            fail(source, lineNumber, "frame must be a whole number >= 0, got '" + std::string(w[0]) + "'");
+        }
+        const std::string target(w[2]);
+        if (w[1] == "press" || w[1] == "release") {
+            script.events.push_back(
+                {frame, w[1] == "press" ? ScriptEvent::Kind::Press : ScriptEvent::Kind::Release, target, lineNumber});
+        } else if (w[1] == "tap") {
+            script.events.push_back({frame, ScriptEvent::Kind::Press, target, lineNumber});
+            script.events.push_back({frame + 1, ScriptEvent::Kind::Release, target, lineNumber});
+        } else {
+            fail(source, lineNumber, "expected press, release or tap, got '" + std::string(w[1]) + "'");
+        }
+    }
+    std::stable_sort(script.events.begin(), script.events.end(),
+                     [](const ScriptEvent& a, const ScriptEvent& b) { return a.frame < b.frame; });
+    return script;
+}
+
+InputScript loadInputScript(const std::filesystem::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::error_code ec;
+    if (!file.is_open() || std::filesystem::is_directory(path, ec)) {
+        throw core::Error(path.string() + ": cannot read the input script");
+    }
+    std::ostringstream contents;
+    contents << file.rdbuf();
+    return parseInputScript(contents.str(), path.string());
+}
+
+} // namespace e2d::engine
