@@ -90,9 +90,9 @@ void Rigidbody::onTerminate() {
     if (body_.isNull()) {
         return;
     }
-    if (!system_.world().isValid(body_)) {
+    if (!sys().world().isValid(body_)) {
         // Destroyed through the World since the last fixed step: its shapes went with it.
-        system_.forgetDestroyedBodies();
+        sys().forgetDestroyedBodies();
         return;
     }
     // While it goes, colliders looking for a Rigidbody must not find this one.
