@@ -9,19 +9,22 @@ e2d_app_assets(e2d_platformer SET platformer FILES
 
 if(E2D_BUILD_TESTS)
   set(scripts ${CMAKE_CURRENT_SOURCE_DIR}/tests)
-  # Screenshots, checked by e2d_image_check: the title's heading (yellow ink) over the sky.
+  # Screenshots (1280 x 720), checked by e2d_image_check. The sky's blue fills the top rows of
+  # every scene; the headings are ink in the centre; the level's coin counter is yellow ink at
+  # the top left.
   e2d_add_app_test(platformer title ARGS --frames 30
-    CHECK region 340 150 600 120 ink
-          region 0 0 1280 100 colour 100 170 240 40 30)
-  # The scripted run at 5 s: the player stands on the lift at the top of the cliff; the coin
-  # counter is drawn top left, the grass of the ledge and the lift's stripes below the player.
+    CHECK size:1280,720
+          colour:0,0,1280,60:90,160,235:40:90
+          ink:340,140,600,110:3)
+  # The scripted run at 5 s: the player on the lift at the top of the cliff.
   e2d_add_app_test(platformer level ARGS --frames 300 --input-script ${scripts}/win.script
-    CHECK region 20 10 220 50 ink
-          region 0 0 1280 100 colour 100 170 240 40 30)
+    CHECK size:1280,720
+          colour:0,0,1280,60:90,160,235:40:60
+          colour:10,10,200,40:255,230,90:60:3)
   e2d_add_app_test(platformer win ARGS --frames 600 --input-script ${scripts}/win.script
-    CHECK region 340 150 600 120 ink)
+    CHECK colour:340,140,600,110:120,240,120:40:3)
   e2d_add_app_test(platformer game_over ARGS --frames 240 --input-script ${scripts}/spikes.script
-    CHECK region 340 150 600 120 ink)
+    CHECK colour:340,140,600,110:255,90,80:40:3)
 
   # The state line the game prints at exit: the scripted run collects the three coins (each
   # starting a coin sound on a voice), rides the lift, lands on the one-way platform, wins.

@@ -73,6 +73,18 @@ int drawPhysics(const physics::World& world, const render::Camera& camera, doubl
                     }
                 } else if constexpr (std::is_same_v<T, physics::Segment>) {
                     drawer.line(point(g.point1), point(g.point2), c, 2.0f);
+                } else if constexpr (std::is_same_v<T, physics::ChainSegment>) {
+                    // A one-sided segment: a tick from its middle towards the solid side's
+                    // outside (the right-hand side walking from point1 to point2).
+                    const glm::vec2 a = point(g.segment.point1);
+                    const glm::vec2 b = point(g.segment.point2);
+                    drawer.line(a, b, c, 2.0f);
+                    const glm::vec2 d = b - a;
+                    const float length = std::sqrt(d.x * d.x + d.y * d.y);
+                    if (length > 0.0f) {
+                        const glm::vec2 mid = 0.5f * (a + b);
+                        drawer.line(mid, mid + glm::vec2{d.y, -d.x} / length * 8.0f, c, 1.0f);
+                    }
                 } else {
                     std::array<glm::vec2, physics::kMaxPolygonVertices> points{};
                     for (int i = 0; i < g.count; ++i) {
