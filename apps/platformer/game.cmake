@@ -16,31 +16,34 @@ if(E2D_BUILD_TESTS)
     CHECK size:1280,720
           colour:0,0,1280,60:90,160,235:40:90
           ink:340,140,600,110:3)
-  # The scripted run at 5 s: the player on the lift at the top of the cliff.
-  e2d_add_app_test(platformer level ARGS --frames 300 --input-script ${scripts}/win.script
+  # The scripted run at 2 s: the player jumping onto the lift, the spike pit, the cliff, coins.
+  e2d_add_app_test(platformer level ARGS --frames 120 --input-script ${scripts}/win.script
     CHECK size:1280,720
           colour:0,0,1280,60:90,160,235:40:60
           colour:10,10,200,40:255,230,90:60:3)
-  e2d_add_app_test(platformer win ARGS --frames 600 --input-script ${scripts}/win.script
-    CHECK colour:340,140,600,110:120,240,120:40:3)
-  e2d_add_app_test(platformer game_over ARGS --frames 240 --input-script ${scripts}/spikes.script
-    CHECK colour:340,140,600,110:255,90,80:40:3)
 
-  # The state line the game prints at exit: the scripted run collects the three coins (each
-  # starting a coin sound on a voice), rides the lift, lands on the one-way platform, wins.
-  add_test(NAME platformer_state_win
-    COMMAND ${CMAKE_COMMAND} -DAPP=$<TARGET_FILE:e2d_platformer>
-      -DWRAPPER=${PROJECT_SOURCE_DIR}/scripts/with-display.sh
-      "-DARGS=--frames 600 --input-script ${scripts}/win.script"
-      "-DEXPECT=scene=WinScene score=3/3 coin_voices=3 jumps=3 runs=1 deaths=0 wins=1 steps_on_moving_platform=[1-9][0-9]+ steps_on_one_way=[1-9][0-9]* music_streaming=1"
-      -P ${scripts}/run_and_check.cmake)
-  # Running right without jumping: the spikes, game over, one coin.
-  add_test(NAME platformer_state_game_over
-    COMMAND ${CMAKE_COMMAND} -DAPP=$<TARGET_FILE:e2d_platformer>
-      -DWRAPPER=${PROJECT_SOURCE_DIR}/scripts/with-display.sh
-      "-DARGS=--frames 240 --input-script ${scripts}/spikes.script"
-      "-DEXPECT=scene=GameOverScene score=1/3 coin_voices=1 jumps=0 runs=1 deaths=1 wins=0"
-      -P ${scripts}/run_and_check.cmake)
-  set_tests_properties(platformer_state_win platformer_state_game_over PROPERTIES
-    LABELS apps ENVIRONMENT "ALSOFT_DRIVERS=null;MESA_SHADER_CACHE_DISABLE=true")
+  # The scripted runs, each checked twice: the state line the game prints at exit, and the
+  # screenshot of the scene it ends on. The winning run collects the three coins (each starting
+  # a coin sound on a voice), rides the lift, lands on the one-way platform and reaches the flag
+  # (about frame 445; the win scene follows a second later). Running right without jumping ends
+  # on the spikes: game over, one coin.
+  function(platformer_run test frames script expect)
+    add_test(NAME app_platformer_${test}
+      COMMAND ${CMAKE_COMMAND} -DAPP=$<TARGET_FILE:e2d_platformer>
+        -DWRAPPER=${PROJECT_SOURCE_DIR}/scripts/with-display.sh
+        "-DARGS=--frames ${frames} --input-script ${scripts}/${script}"
+        "-DEXPECT=${expect}"
+        -DSCREENSHOT=${PROJECT_BINARY_DIR}/screenshots/platformer_${test}.png
+        -DCHECKER=$<TARGET_FILE:e2d_image_check>
+        "-DCHECK=${ARGN}"
+        -P ${scripts}/run_and_check.cmake)
+    set_tests_properties(app_platformer_${test} PROPERTIES LABELS apps TIMEOUT 300
+      ENVIRONMENT "ALSOFT_DRIVERS=null;MESA_SHADER_CACHE_DISABLE=true")
+  endfunction()
+  platformer_run(win 540 win.script
+    "scene=WinScene score=3/3 coin_voices=3 jumps=3 runs=1 deaths=0 wins=1 steps_on_moving_platform=[1-9][0-9]+ steps_on_one_way=[1-9][0-9]* music_streaming=1"
+    "colour:340,140,600,110:120,240,120:40:3|ink:200,260,880,120:1")
+  platformer_run(game_over 180 spikes.script
+    "scene=GameOverScene score=1/3 coin_voices=1 jumps=0 runs=1 deaths=1 wins=0"
+    "colour:340,140,600,110:255,90,80:40:3|ink:200,260,880,120:1")
 endif()

@@ -68,24 +68,43 @@ render::SpriteRendererDef tinted(render::TextureId white, glm::vec2 size, render
     return def;
 }
 
-// The sky, far hills and near trees: the sky stays put, the others scroll slower than the
-// level (parallax 0.25 and 0.55), repeated along the level's width.
-void addBackground(e2d::core::Scene& scene, const GameSystem& game, bool scrolling) {
+// The sky, far hills and near trees. On the menus they are HUD sprites (fixed on screen). In
+// the level the sky stays put (parallax 0) and the others scroll slower than the level
+// (parallax 0.25 and 0.55). A parallax sprite appears at `camera + k * (position - camera)`
+// while its size stays the same, so copies that touch on screen are W / k apart in the world,
+// and a layer sits `offset / k` below the camera height it is designed for; a block of the
+// layer's bottom colour under it keeps the screen covered when the camera climbs.
+void addBackground(e2d::core::Scene& scene, const GameSystem& game, render::TextureId white,
+                   std::optional<float> designCameraY) {
     render::SpriteRendererDef sky = textured(game, "sky.png", kReference);
     sky.parallax = 0.0f;
+    sky.hud = !designCameraY;
     makeSprite(scene, sky, {0.0f, 0.0f}, kZSky);
     struct Layer {
         const char* file;
         float parallax;
         float z;
-        float y;
+        float offset; // layer centre below the view's centre, reference pixels
+        render::Color bottom;
     };
-    for (const Layer& layer : {Layer{"hills.png", 0.25f, kZHills, -120.0f},
-                               Layer{"trees.png", 0.55f, kZTrees, -200.0f}}) {
-        render::SpriteRendererDef def = textured(game, layer.file, {1280.0f, 360.0f});
-        def.parallax = scrolling ? layer.parallax : 0.0f;
-        for (int i = -1; i <= (scrolling ? 2 : 0); ++i) {
-            makeSprite(scene, def, {static_cast<float>(i) * 1280.0f, layer.y}, layer.z);
+    const glm::vec2 size{1280.0f, 360.0f};
+    for (const Layer& layer : {Layer{"hills.png", 0.25f, kZHills, -120.0f, {120, 170, 200, 255}},
+                               Layer{"trees.png", 0.55f, kZTrees, -200.0f, {60, 130, 90, 255}}}) {
+        render::SpriteRendererDef def = textured(game, layer.file, size);
+        if (!designCameraY) {
+            def.hud = true;
+            makeSprite(scene, def, {0.0f, layer.offset}, layer.z);
+            continue;
+        }
+        const float k = layer.parallax;
+        def.parallax = k;
+        render::SpriteRendererDef below = tinted(white, {size.x, 720.0f}, layer.bottom);
+        below.parallax = k;
+        const float y = *designCameraY + layer.offset / k;
+        for (int i = -1; i <= 2; ++i) {
+            const float x = static_cast<float>(i) * size.x / k;
+            makeSprite(scene, def, {x, y}, layer.z);
+            makeSprite(scene, below, {x, y - (0.5f * size.y + 360.0f) / k}, layer.z);
         }
     }
 }
@@ -101,9 +120,14 @@ void hudText(GameSystem& game, std::string_view text, glm::vec2 at, int size,
     style.horizontal = horizontal;
     style.vertical = render::VerticalAlign::Center;
     render::TextDraw where;
+    where.hud = true;
+    // A dark shadow a little down and right keeps light text readable over the sky.
+    where.position = at + glm::vec2(0.06f, -0.06f) * static_cast<float>(size);
+    where.z = 49.0f;
+    where.color = {20, 30, 60, 160};
+    game.text().draw(*font, text, style, where);
     where.position = at;
     where.z = 50.0f;
-    where.hud = true;
     where.color = color;
     game.text().draw(*font, text, style, where);
 }
@@ -136,7 +160,7 @@ protected:
         render::CameraComponentDef cameraDef;
         cameraDef.referenceSize = kReference;
         camera.addComponent<render::CameraComponent>(cameraDef);
-        addBackground(*this, game, false);
+        addBackground(*this, game, game.renderer().whiteTexture(), std::nullopt);
         session_.lastScene = name();
     }
 
@@ -231,7 +255,8 @@ private:
         camera.addComponent<render::CameraComponent>(cameraDef);
         camera_ = &camera;
 
-        addBackground(*this, game, true);
+        // Designed for the camera's height at the start (player on the ground).
+        addBackground(*this, game, game.renderer().whiteTexture(), px({0.0f, 2.1f}).y);
         buildTerrain(game);
         buildProps(game);
         buildPlayer(game);
