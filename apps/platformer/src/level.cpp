@@ -73,8 +73,10 @@ Level::Level(ph::World& world, const PlayerTuning& tuning) : world_(world), cont
             ground, sensor, ph::makeOffsetBox(hazard.half.x, hazard.half.y, hazard.center, 0.0f)));
     }
 
-    // Coins: on the start ground, in the lift's shaft, on the one-way platform.
-    for (glm::vec2 at : {glm::vec2{3.0f, 0.8f}, glm::vec2{13.3f, 3.5f}, glm::vec2{23.0f, 8.7f}}) {
+    // Coins: on the start ground, in the lift's shaft, on the one-way platform, and a bonus
+    // high above the goal that only the shuttle reaches.
+    for (glm::vec2 at : {glm::vec2{3.0f, 0.8f}, glm::vec2{13.3f, 3.5f}, glm::vec2{23.0f, 8.7f},
+                         glm::vec2{32.2f, 11.0f}}) {
         Coin coin;
         coin.position = at;
         ph::Circle circle;
@@ -96,6 +98,7 @@ Level::Level(ph::World& world, const PlayerTuning& tuning) : world_(world), cont
     solid.filter.categoryBits = kWorldBit;
     oneWayShape_ = world_.createShape(
         ground, solid, ph::makeOffsetBox(oneWay_.half.x, oneWay_.half.y, oneWay_.center, 0.0f));
+    oneWayShapes_.push_back(oneWayShape_);
 
     // The lift in front of the cliff: waits at the bottom, rises above the ledge, waits, returns.
     MovingPlatform lift;
@@ -105,13 +108,27 @@ Level::Level(ph::World& world, const PlayerTuning& tuning) : world_(world), cont
     lift.dwell = 2.5f;
     lift.travel = 2.65f;
     platforms_.push_back(lift);
+    // The shuttle above the end of the one-way platform, one-way itself: jump up through it
+    // from the platform while it waits there, ride it to the bonus coin above the goal.
+    MovingPlatform shuttle;
+    shuttle.half = {1.5f, 0.2f};
+    shuttle.from = {26.5f, 9.8f};
+    shuttle.to = {32.5f, 9.8f};
+    shuttle.dwell = 1.5f;
+    shuttle.travel = 2.0f;
+    shuttle.oneWay = true;
+    platforms_.push_back(shuttle);
     for (MovingPlatform& platform : platforms_) {
         ph::BodyDef def;
         def.type = ph::BodyType::Kinematic;
         def.position = platform.positionAt(0.0);
         platform.body = world_.createBody(def);
         bodies_.push_back(platform.body);
-        world_.createShape(platform.body, solid, ph::makeBox(platform.half.x, platform.half.y));
+        const ph::ShapeId shape =
+            world_.createShape(platform.body, solid, ph::makeBox(platform.half.x, platform.half.y));
+        if (platform.oneWay) {
+            oneWayShapes_.push_back(shape);
+        }
     }
 
     // The player: a rounded box that never turns, frictionless so it does not stick to walls
@@ -134,12 +151,17 @@ Level::Level(ph::World& world, const PlayerTuning& tuning) : world_(world), cont
         ph::makeRoundedBox(playerHalfSize().x - radius, playerHalfSize().y - radius, radius));
 
     world_.setPreSolveCallback([this](ph::ShapeId a, ph::ShapeId b, const ph::Manifold& m) {
-        if (a != oneWayShape_ && b != oneWayShape_) {
+        const auto isOneWay = [this](ph::ShapeId shape) {
+            return std::find(oneWayShapes_.begin(), oneWayShapes_.end(), shape) !=
+                   oneWayShapes_.end();
+        };
+        const bool aOneWay = isOneWay(a);
+        if (!aOneWay && !isOneWay(b)) {
             return true;
         }
         // Solid only for something above it coming down: the normal from the platform to the
         // other shape points up, and the other shape has not sunk into it from below.
-        const float up = a == oneWayShape_ ? m.normal.y : -m.normal.y;
+        const float up = aOneWay ? m.normal.y : -m.normal.y;
         if (up < 0.7f) {
             return false;
         }

@@ -15,8 +15,9 @@
 ///
 /// Layout, left to right: the start ground with a coin, a spike pit to jump over, a lift (a
 /// kinematic platform going up and down) in front of a cliff too high to jump, a coin in the
-/// lift's shaft, the upper ledge with a one-way platform (jump up through it, land on it), a
-/// second coin on it, a platform sliding left and right, and the goal flag before the end wall.
+/// lift's shaft, the upper ledge with a one-way platform (jump up through it, land on it) and a
+/// coin on it, a shuttle sliding left and right above the end of the ledge to a bonus coin, and
+/// the goal flag before the end wall.
 namespace platformer {
 
 /// An axis-aligned rectangle, metres.
@@ -41,6 +42,8 @@ struct MovingPlatform {
     float dwell = 2.0f;
     float travel = 2.5f;
     float phase = 0.0f;
+    /// Solid from above only, like the one-way platform. Default false.
+    bool oneWay = false;
     e2d::physics::BodyId body{};
     /// Where the timetable puts the platform's centre at level time `t`.
     [[nodiscard]] glm::vec2 positionAt(double t) const;
@@ -115,6 +118,7 @@ private:
     Box oneWay_;
     Box goal_;
     e2d::physics::ShapeId oneWayShape_{};
+    std::vector<e2d::physics::ShapeId> oneWayShapes_; // the platform and the shuttle
     e2d::physics::ShapeId goalShape_{};
     e2d::physics::BodyId player_{};
     e2d::physics::ShapeId playerShape_{};

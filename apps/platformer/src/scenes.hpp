@@ -27,7 +27,7 @@ struct Session {
 };
 
 /// The line main() prints at exit, for tests and curious players:
-/// `platformer: scene=WinScene score=3/3 coin_voices=3 jumps=3 runs=1 deaths=0 wins=1 ...`.
+/// `platformer: scene=WinScene score=3/4 coin_voices=3 jumps=3 runs=1 deaths=0 wins=1 ...`.
 [[nodiscard]] std::string stateLine(const Session& session);
 
 /// Registers TitleScene, LevelScene, GameOverScene and WinScene, each using `session`.

@@ -68,6 +68,7 @@ Outcome play(const std::vector<Hold>& script, double limit, double timeOffset = 
                         level.playerPosition().x, level.playerPosition().y,
                         level.playerVelocity().x, level.playerVelocity().y, level.grounded(),
                         level.platformPosition(0).y, level.score());
+            std::printf("   shuttle x=%.2f\n", level.platformPosition(1).x);
         }
     }
     run.won = level.won();
@@ -82,6 +83,15 @@ Outcome play(const std::vector<Hold>& script, double limit, double timeOffset = 
 }
 
 // Hold right; jump over the spike pit, onto the lift, and under the one-way platform.
+// The winning run, then the bonus: stop on the one-way platform under the shuttle, jump up
+// through it while it waits, ride it to the bonus coin and back, run off it onto the goal.
+std::vector<Hold> bonusScript(double shift = 0.0) {
+    return {{0.0, 1.0f, false},          {0.55, 1.0f, true},          {0.95, 1.0f, false},
+            {1.6, 1.0f, true},           {2.0, 1.0f, false},          {5.75, 1.0f, true},
+            {6.25, 1.0f, false},         {6.55 + shift, 0.0f, false}, {7.2 + shift, 0.0f, true},
+            {7.6 + shift, 0.0f, false}, {14.4 + shift, 1.0f, false}};
+}
+
 std::vector<Hold> winningScript(double shift = 0.0) {
     return {{0.0, 1.0f, false},         {0.55 + shift, 1.0f, true}, {0.95 + shift, 1.0f, false},
             {1.6 + shift, 1.0f, true},  {2.0 + shift, 1.0f, false}, {5.75 + shift, 1.0f, true},
@@ -98,6 +108,17 @@ TEST(PlatformerLevel, ScriptedRunCollectsEveryCoinRidesTheLiftAndReachesTheGoal)
     EXPECT_GT(run.stepsOnOneWay, 5);  // jumped up through the one-way platform and landed on it
     EXPECT_GT(run.maxY, 8.0f + Level::playerHalfSize().y - 0.05f);
     EXPECT_EQ(run.jumps, 3);
+}
+
+TEST(PlatformerLevel, TheShuttleCarriesThePlayerToTheBonusCoin) {
+    for (double shift : {-0.05, 0.0, 0.05}) {
+        Outcome run = play(bonusScript(shift), 20.0);
+        EXPECT_TRUE(run.won) << "shift " << shift;
+        EXPECT_EQ(run.score, 4) << "shift " << shift;
+        EXPECT_EQ(run.jumps, 4) << "shift " << shift;
+        // Stood on the shuttle (top at 10 m).
+        EXPECT_GT(run.maxY, 10.0f + Level::playerHalfSize().y - 0.05f) << "shift " << shift;
+    }
 }
 
 TEST(PlatformerLevel, TheWinningScriptToleratesItsJumpsComingAFewFramesEarlyOrLate) {
