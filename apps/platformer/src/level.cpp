@@ -52,8 +52,8 @@ Level::Level(ph::World& world, const PlayerTuning& tuning) : world_(world), cont
 
     // Terrain: one chain along the level's surface, listed right to left so that every segment
     // faces into the level (a chain is solid from its right-hand side).
-    terrain_ = {{36.0f, 16.0f}, {36.0f, 6.0f}, {14.0f, 6.0f}, {14.0f, 0.0f}, {9.0f, 0.0f},
-                {9.0f, -3.0f},  {6.0f, -3.0f}, {6.0f, 0.0f},  {-4.0f, 0.0f}, {-4.0f, 16.0f}};
+    terrain_ = {{36.0f, 24.0f}, {36.0f, 6.0f}, {14.0f, 6.0f}, {14.0f, 0.0f}, {9.0f, 0.0f},
+                {9.0f, -3.0f},  {6.0f, -3.0f}, {6.0f, 0.0f},  {-4.0f, 0.0f}, {-4.0f, 24.0f}};
     ph::BodyId ground = world_.createBody({});
     bodies_.push_back(ground);
     ph::ChainDef chain;
