@@ -224,7 +224,12 @@ void World::Impl::updateContacts(float dt) {
             s.endEvents.push_back({c.idA, c.idB});
         }
         if (hooks.preSolve) {
-            c.enabled = !c.touching || hooks.preSolve(c.idA, c.idB, c.manifold);
+            if (c.touching) {
+                CallbackLock lock(*this, "step", "pre-solve");
+                c.enabled = hooks.preSolve(c.idA, c.idB, c.manifold);
+            } else {
+                c.enabled = true;
+            }
             if (!c.enabled) {
                 // Nothing was solved: no impulse to warm start the next step with.
                 for (int i = 0; i < c.manifold.pointCount; ++i) {

@@ -125,7 +125,9 @@ int World::Impl::require(ShapeId id, const char* function) const {
 
 void World::Impl::requireUnlocked(const char* function) const {
     if (lockedBy != nullptr) {
-        check::fail(function, std::string("cannot run inside the callback of ") + lockedBy +
+        const std::string callback =
+            lockedHook != nullptr ? std::string("the ") + lockedHook + " callback" : "the callback";
+        check::fail(function, "cannot run inside " + callback + " of " + lockedBy +
                                   "() (it would change what the callback is walking); collect "
                                   "the ids and call it after " + lockedBy + "() returns");
     }
@@ -184,7 +186,11 @@ bool World::Impl::shouldPair(int shapeA, int shapeB) const {
     if (!shouldCollide(a.filter, b.filter)) {
         return false;
     }
-    return !hooks.pairFilter || hooks.pairFilter(shapeId(shapeA), shapeId(shapeB));
+    if (!hooks.pairFilter) {
+        return true;
+    }
+    CallbackLock lock(*this, sim.inStep ? "step" : "updatePairs", "pair filter");
+    return hooks.pairFilter(shapeId(shapeA), shapeId(shapeB));
 }
 
 // --- World ---

@@ -4,6 +4,7 @@
 #include <e2d/physics/world.hpp>
 
 #include "world_check.hpp"
+#include "world_impl.hpp"
 
 #include <cstddef>
 #include <string>
@@ -15,6 +16,13 @@ namespace check = detail::world_check;
 namespace {
 
 constexpr const char* kFunction = "createChain";
+
+void requireRestitution(const char* name, float value) {
+    if (!(isFinite(value) && value >= 0.0f && value <= 1.0f)) {
+        check::fail(kFunction, std::string(name) + " must be finite and in [0, 1], got " +
+                                   check::text(value));
+    }
+}
 
 void validateChainDef(const ChainDef& def) {
     const std::size_t n = def.points.size();
@@ -57,22 +65,20 @@ void validateChainDef(const ChainDef& def) {
         const SurfaceMaterial& m = def.materials[i];
         const std::string prefix = "def.materials[" + std::to_string(i) + "].";
         check::requireNonNegative(kFunction, (prefix + "friction").c_str(), m.friction);
-        check::requireNonNegative(kFunction, (prefix + "restitution").c_str(), m.restitution);
+        requireRestitution((prefix + "restitution").c_str(), m.restitution);
         check::requireNonNegative(kFunction, (prefix + "rollingResistance").c_str(),
                                   m.rollingResistance);
     }
     check::requireNonNegative(kFunction, "def.shape.friction", def.shape.friction);
-    check::requireNonNegative(kFunction, "def.shape.restitution", def.shape.restitution);
+    requireRestitution("def.shape.restitution", def.shape.restitution);
     check::requireNonNegative(kFunction, "def.shape.rollingResistance", def.shape.rollingResistance);
 }
 
 } // namespace
 
 std::vector<ShapeId> World::createChain(BodyId body, const ChainDef& def) {
-    if (!isValid(body)) {
-        check::fail(kFunction, "stale or null BodyId (index1 " + std::to_string(body.index1) +
-                                   ", generation " + std::to_string(body.generation) + ")");
-    }
+    impl_->requireUnlocked(kFunction);
+    impl_->require(body, kFunction);
     validateChainDef(def);
     const std::vector<Vec2>& p = def.points;
     const std::size_t n = p.size();

@@ -28,7 +28,7 @@ void World::Impl::collectMoveEvents(float dt) {
     for (const detail::BodySim& bs : sim.sims) {
         const detail::Body& b = body(bs.bodyIndex);
         if (!b.alive || !b.enabled) {
-            continue; // disabled for a non-finite state: reported in nonFiniteBodies()
+            continue; // disabled: reported in nonFiniteBodies() or outOfRangeBodies()
         }
         events.push_back({bodyId(bs.bodyIndex), b.transform, !b.motion.awake});
     }
@@ -46,16 +46,22 @@ bool World::Impl::passesChainAndFilter(int movingShape, int otherShape, const Tr
             return false;
         }
     }
-    return !hooks.pairFilter || hooks.pairFilter(shapeId(movingShape), shapeId(otherShape));
+    if (!hooks.pairFilter) {
+        return true;
+    }
+    CallbackLock lock(*this, "step", "pair filter");
+    return hooks.pairFilter(shapeId(movingShape), shapeId(otherShape));
 }
 
 // --- hooks ---
 
 void World::setPreSolveCallback(PreSolveCallback callback) {
+    impl_->requireUnlocked("setPreSolveCallback");
     impl_->hooks.preSolve = std::move(callback);
 }
 
 void World::setPairFilterCallback(PairFilterCallback callback) {
+    impl_->requireUnlocked("setPairFilterCallback");
     impl_->hooks.pairFilter = std::move(callback);
 }
 
@@ -202,6 +208,7 @@ Vec2 World::linearVelocityAtLocalPoint(BodyId id, Vec2 localPoint) const {
 // --- setters ---
 
 void World::setBodyType(BodyId id, BodyType type) {
+    impl_->requireUnlocked("setBodyType");
     Impl& w = *impl_;
     const int index = w.require(id, "setBodyType");
     const int typeIndex = static_cast<int>(type);
@@ -258,7 +265,10 @@ void World::setShapeFriction(ShapeId id, float friction) {
 void World::setShapeRestitution(ShapeId id, float restitution) {
     Impl& w = *impl_;
     const int index = w.require(id, "setShapeRestitution");
-    requireMaterial("setShapeRestitution", "restitution", restitution);
+    if (!(isFinite(restitution) && restitution >= 0.0f && restitution <= 1.0f)) {
+        check::fail("setShapeRestitution", "restitution must be finite and in [0, 1], got " +
+                                               check::text(restitution));
+    }
     w.shape(index).restitution = restitution;
     w.refreshContactMaterials(index);
 }
@@ -280,6 +290,7 @@ void World::setShapeDensity(ShapeId id, float density) {
 }
 
 void World::setShapeSensor(ShapeId id, bool isSensor) {
+    impl_->requireUnlocked("setShapeSensor");
     Impl& w = *impl_;
     const int index = w.require(id, "setShapeSensor");
     detail::Shape& s = w.shape(index);
@@ -294,6 +305,7 @@ void World::setShapeSensor(ShapeId id, bool isSensor) {
 }
 
 void World::setShapeGeometry(ShapeId id, const ShapeGeometry& geometry) {
+    impl_->requireUnlocked("setShapeGeometry");
     Impl& w = *impl_;
     const int index = w.require(id, "setShapeGeometry");
     validate(geometry, "physics::World::setShapeGeometry()");

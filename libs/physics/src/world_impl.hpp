@@ -93,25 +93,32 @@ struct World::Impl {
                                                                 : detail::kNullIndex;
     }
     // The function whose callback is running (overlapAabb, forEachCandidatePair,
-    // forEachTouchingContact), or nullptr. Meanwhile, functions that would change what the
+    // forEachTouchingContact, or step/updatePairs for the hooks), or nullptr, and for a hook
+    // its name ("pre-solve", "pair filter"). Meanwhile, functions that would change what the
     // callback walks (the broad phase, the contacts, the object arrays) refuse to run.
     mutable const char* lockedBy = nullptr;
+    mutable const char* lockedHook = nullptr;
     // Throws core::Error naming `function` and the running callback's function, if any.
     void requireUnlocked(const char* function) const;
     // Locks the world while a query's callback runs; nests.
     class CallbackLock {
     public:
-        CallbackLock(const Impl& world, const char* function)
-            : world_(world), previous_(world.lockedBy) {
+        CallbackLock(const Impl& world, const char* function, const char* hook = nullptr)
+            : world_(world), previous_(world.lockedBy), previousHook_(world.lockedHook) {
             world_.lockedBy = function;
+            world_.lockedHook = hook;
         }
-        ~CallbackLock() { world_.lockedBy = previous_; }
+        ~CallbackLock() {
+            world_.lockedBy = previous_;
+            world_.lockedHook = previousHook_;
+        }
         CallbackLock(const CallbackLock&) = delete;
         CallbackLock& operator=(const CallbackLock&) = delete;
 
     private:
         const Impl& world_;
         const char* previous_;
+        const char* previousHook_;
     };
 
     // Like find(), but throws core::Error naming `function` for a stale or null handle.

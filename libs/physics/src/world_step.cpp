@@ -51,6 +51,12 @@ void World::step(float timeStep) {
     s.endEvents.swap(s.pendingEndEvents);
     s.sensorEndEvents.swap(s.pendingSensorEndEvents);
     s.inStep = true;
+    // A callback (pre-solve, pair filter) that throws leaves the step where it was, and the
+    // world out of it.
+    struct InStep {
+        detail::Simulation& sim;
+        ~InStep() { sim.inStep = false; }
+    } inStep{s};
     w.updateContacts(timeStep);
     if (timeStep > 0.0f) {
         w.solve(timeStep);
@@ -59,7 +65,6 @@ void World::step(float timeStep) {
         w.updateSleep(timeStep);
     }
     w.collectMoveEvents(timeStep);
-    s.inStep = false;
 }
 
 namespace {

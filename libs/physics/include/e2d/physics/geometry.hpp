@@ -11,8 +11,8 @@
 
 /// Convex shapes in their local frame, how to build them, and what they weigh.
 ///
-/// Polygons are counter-clockwise (y up, normals point out). The seed engine used clockwise
-/// winding; e2d normalises whatever the user gives to counter-clockwise.
+/// Polygons are counter-clockwise (y up, normals point out); points given in either winding
+/// are normalised to counter-clockwise.
 namespace e2d::physics {
 
 /// A solid disc.

@@ -80,9 +80,9 @@ struct BodyDef {
     float gravityScale = 1.0f;
     /// The body never rotates (infinite rotational inertia). Default false.
     bool fixedRotation = false;
-    /// The centre of mass never moves along world x (the seed's freeze X). Default false.
+    /// The centre of mass never moves along world x. Default false.
     bool lockX = false;
-    /// The centre of mass never moves along world y (the seed's freeze Y). Default false.
+    /// The centre of mass never moves along world y. Default false.
     bool lockY = false;
     /// A fast dynamic body: continuous collision every step (not only when it moves far),
     /// against static shapes and also against kinematic and non-bullet dynamic ones.
@@ -138,7 +138,7 @@ struct ShapeDef {
 struct SurfaceMaterial {
     /// Coulomb friction coefficient, finite, >= 0. Default 0.6.
     float friction = 0.6f;
-    /// Bounciness, finite, >= 0. Default 0.
+    /// Bounciness, finite, in [0, 1]. Default 0.
     float restitution = 0.0f;
     /// Rolling resistance, metres, finite, >= 0. Default 0.
     float rollingResistance = 0.0f;
@@ -154,7 +154,7 @@ struct ChainDef {
     /// Chain points in the body's frame, metres, finite, within kHuge; at least 2 (3 for a
     /// loop); consecutive points (and for a loop the last and the first) at least kLinearSlop
     /// apart. No default.
-    std::vector<Vec2> points;
+    std::vector<Vec2> points{};
     /// Joins the last point back to the first: every segment then has neighbours on both
     /// sides. Default false.
     bool isLoop = false;
@@ -162,11 +162,11 @@ struct ChainDef {
     /// points: never collided, they only smooth the end segments' joints with whatever the
     /// chain continues into). Without one, that end is free and round like a Segment's.
     /// Default none.
-    std::optional<Vec2> ghostBefore;
-    std::optional<Vec2> ghostAfter;
+    std::optional<Vec2> ghostBefore{};
+    std::optional<Vec2> ghostAfter{};
     /// Per-segment materials: empty (every segment takes `shape`'s), one (every segment takes
     /// it) or one per segment (points.size() - 1, or points.size() for a loop). Default empty.
-    std::vector<SurfaceMaterial> materials;
+    std::vector<SurfaceMaterial> materials{};
     /// What every segment shape is made with: filter, events, friction, restitution and
     /// userData unless `materials` says otherwise. density is ignored (segments have no mass).
     /// Default ShapeDef{}.
@@ -218,22 +218,24 @@ class Shape;
 /// WorldDef::tag). Functions that throw leave the world unchanged. Worlds are independent: any
 /// number may live in one process, each used from one thread at a time.
 ///
+/// Callbacks run while the world walks its shapes, pairs or contacts: those of the queries
+/// (overlapAabb(), forEachCandidatePair(), forEachTouchingContact()) and the hooks called inside
+/// step() and updatePairs() (the pre-solve and pair filter callbacks). Inside them, reading
+/// anything, queries, velocities, forces, impulses, explode(), sleep, materials, event switches
+/// and user data are allowed; createBody(), destroyBody(), createShape(), createChain(),
+/// destroyShape(), setTransform(), setBodyEnabled(), setBodyType(), setMassData(),
+/// setShapeFilter(), setShapeSensor(), setShapeDensity(), setShapeGeometry(),
+/// setPreSolveCallback(), setPairFilterCallback(), updatePairs() and step() throw core::Error
+/// naming themselves and the running callback (collect the ids, act after it returns). The
+/// event arrays are read after step() returns: anything but step() may be called while going
+/// through them (events of what is destroyed then are reported by the next step()).
+///
 /// Finding your way: every function takes the id of what it acts on, grouped below as world
 /// settings, bodies, shapes, chains, pairs, queries, dynamics, hooks and events. The same
 /// functions are reachable through small handle views that hold the world and an id and cost
 /// nothing (see views.hpp): `Body b = world.body(id); b.position(); b.applyLinearImpulse(...);
 /// b.shapes();` and `Shape s = world.shape(id); s.setFriction(0.2f);`. A view checks its id on
-/// every call like the world does; it never outlives the world it came from. (A Joint view
-/// joins them with the joints.)
-///
-/// Callbacks (overlapAabb(), forEachCandidatePair(), forEachTouchingContact()) run while the
-/// world walks its shapes, pairs or contacts. Inside them, reading anything, queries, velocities,
-/// forces, impulses, sleep and user data are allowed; createBody(), destroyBody(),
-/// createShape(), destroyShape(), setTransform(), setBodyEnabled(), setShapeFilter(),
-/// updatePairs() and step() throw core::Error naming themselves and the running query (collect
-/// the ids, act after it returns). The event arrays are read after step() returns: anything but
-/// step() may be called while going through them (events of what is destroyed then are
-/// reported by the next step()).
+/// every call like the world does; it never outlives the world it came from.
 class World {
 public:
     /// Throws core::Error naming the first invalid field of `def`.
@@ -325,7 +327,7 @@ public:
     [[nodiscard]] std::uint64_t shapeUserData(ShapeId id) const;
     void setShapeUserData(ShapeId id, std::uint64_t userData);
 
-    // --- chains (world_chain.cpp) ---
+    // --- chains ---
 
     /// Attaches a chain of ChainSegment shapes to a body, one per pair of consecutive points
     /// (ChainDef). Returns the segments' ids in chain order; each is an ordinary shape
@@ -393,7 +395,7 @@ public:
                                                      const Transform& transform, Vec2 translation,
                                                      const QueryFilter& filter = {}) const;
 
-    // --- dynamics (world_step.cpp, world_dynamics.cpp) ---
+    // --- dynamics ---
 
     /// Advances the world by `timeStep` seconds (finite, in [0, kMaxTimeStep (0.25 s)]; 0
     /// updates contacts and events only): pairs, contacts, narrow phase, solver, continuous collision, sleeping, events.
@@ -452,7 +454,8 @@ public:
     /// Number of awake dynamic and kinematic bodies.
     [[nodiscard]] int awakeBodyCount() const;
 
-    /// Events of the last step (see events.hpp), valid until the next step.
+    /// Events of the last step (ContactBeginTouchEvent and the others), valid until the next
+    /// step.
     [[nodiscard]] std::span<const ContactBeginTouchEvent> contactBeginEvents() const;
     [[nodiscard]] std::span<const ContactEndTouchEvent> contactEndEvents() const;
     [[nodiscard]] std::span<const SensorBeginTouchEvent> sensorBeginEvents() const;
@@ -480,12 +483,15 @@ public:
     /// order. The world is locked during the callback (see World).
     void forEachTouchingContact(FunctionRef<void(const ContactData&)> callback) const;
 
-    // --- hooks (world_hooks.cpp) ---
+    // --- hooks ---
     //
     // Both callbacks run inside step() (the pair filter also inside updatePairs()), on the
     // thread that called it: e2d steps on one thread, so they are never called concurrently.
-    // They may read the world (transforms, velocities, userData) but must not change it (no
-    // creating, destroying or setting anything): that is undefined.
+    // The world is locked while they run (see World): reading, queries, velocities, impulses,
+    // sleep, materials and user data are allowed; creating, destroying, moving, re-filtering,
+    // changing a body's type or a shape's geometry or sensor flag, replacing a callback and
+    // stepping throw core::Error naming the call and the callback. An exception thrown by a
+    // callback leaves step() at that point (the world stays valid; the step is partial).
 
     /// Called in step() after the narrow phase computed a contact's manifold and before the
     /// solver, once per step for each touching solid contact with an awake body (shapes in the
@@ -501,7 +507,7 @@ public:
     /// Continuous collision asks it too. An empty function removes it.
     void setPairFilterCallback(PairFilterCallback callback);
 
-    // --- more queries (world_hooks.cpp) ---
+    // --- more queries ---
 
     /// The shapes that `geometry` (a circle, capsule or polygon) placed at `transform` overlaps
     /// (touching counts; distance <= 0), in slot order. Throws core::Error for a segment or
@@ -513,7 +519,7 @@ public:
     /// many shapes it pushed. Throws core::Error naming the invalid field.
     int explode(const ExplosionDef& def);
 
-    // --- points and setters (world_hooks.cpp) ---
+    // --- points and setters ---
 
     /// A point in the body's frame (metres) in world coordinates.
     [[nodiscard]] Vec2 worldPoint(BodyId id, Vec2 localPoint) const;
@@ -534,7 +540,7 @@ public:
     void setBodyType(BodyId id, BodyType type);
     /// Finite, >= 0. Contacts take it from the next step.
     void setShapeFriction(ShapeId id, float friction);
-    /// Finite, >= 0. Contacts take it from the next step.
+    /// Finite, in [0, 1]. Contacts take it from the next step.
     void setShapeRestitution(ShapeId id, float restitution);
     /// Finite, >= 0. Contacts take it from the next step.
     void setShapeRollingResistance(ShapeId id, float rollingResistance);
