@@ -30,6 +30,9 @@ void InputSystem::beginFrame() {
         return;
     }
     for (const Event& event : input_.events()) {
+        if (event.type == EventType::KeyRepeat && !def_.keyRepeat) {
+            continue;
+        }
         dispatch(event, *scene);
     }
 }

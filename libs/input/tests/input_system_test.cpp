@@ -18,6 +18,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -122,6 +124,31 @@ TEST(InputSystem, EventsReachComponentsInOrderThroughCoreEvents) {
     loop.frame();
     EXPECT_THAT(log, ElementsAre("mouseUp 1", "focus out", "padUp 5 1", "padDisconnected 5"));
     loop.shutdown();
+}
+
+TEST(InputSystem, KeyRepeatCanBeKeptFromTheScene) {
+    std::vector<std::string> log;
+    core::Logger logger(core::LogLevel::Off);
+    core::SceneRegistry registry;
+    registry.add("main", [&log] { return std::unique_ptr<core::Scene>(std::make_unique<ListenerScene>(log)); });
+    core::SceneDirector director(registry, logger);
+    Input input;
+    InputSystemDef def;
+    def.keyRepeat = false;
+    InputSystem system(input, director, nullptr, def);
+    director.addSystem(system);
+    ASSERT_TRUE(director.start("main"));
+    input.handleKey(GLFW_KEY_A, 38, GLFW_PRESS, 0);
+    input.handleKey(GLFW_KEY_A, 38, GLFW_REPEAT, 0);
+    input.handleKey(GLFW_KEY_A, 38, GLFW_REPEAT, 0);
+    input.handleKey(GLFW_KEY_A, 38, GLFW_RELEASE, 0);
+    system.beginFrame();
+    EXPECT_THAT(log, ElementsAre("buttonDown 65", "keyDown 65 0", "buttonUp 65", "keyUp 65"));
+    // Polling still sees the repeats.
+    EXPECT_EQ(std::count_if(input.events().begin(), input.events().end(),
+                            [](const Event& e) { return e.type == EventType::KeyRepeat; }),
+              2);
+    director.stop();
 }
 
 TEST(InputSystem, WithoutASceneEventsAreStillDeliveredToPolling) {

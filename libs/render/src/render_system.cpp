@@ -64,6 +64,11 @@ void RenderSystem::clear() {
     renderer_.destroyAllSprites();
 }
 
+int RenderSystem::releaseUnusedTextures() {
+    text_.reset();
+    return renderer_.destroyUnusedTextures();
+}
+
 void RenderSystem::add(SpriteRenderer& sprite) { sprites_.push_back(&sprite); }
 void RenderSystem::remove(SpriteRenderer& sprite) noexcept { std::erase(sprites_, &sprite); }
 void RenderSystem::add(CameraComponent& camera) { cameras_.push_back(&camera); }

@@ -177,6 +177,11 @@ Renderer::~Renderer() {
 }
 
 TextureId Renderer::loadTexture(const std::filesystem::path& path, const TextureDef& def) {
+    if (impl_->def.fileTextureFilter) {
+        TextureDef forced = def;
+        forced.filter = *impl_->def.fileTextureFilter;
+        return impl_->textures.load(path, forced);
+    }
     return impl_->textures.load(path, def);
 }
 
@@ -208,6 +213,37 @@ TextureId Renderer::whiteTexture() const noexcept { return impl_->textures.idOf(
 
 SpriteId Renderer::createSprite(const SpriteDef& def) { return impl_->batcher.create(def); }
 bool Renderer::destroySprite(SpriteId id) { return impl_->batcher.destroy(id); }
+int Renderer::textureCount() const noexcept {
+    int count = 0;
+    for (std::uint32_t slot = 2; slot < impl_->textures.slotCount(); ++slot) {
+        count += impl_->textures.slotAlive(slot) ? 1 : 0;
+    }
+    return count;
+}
+
+int Renderer::destroyUnusedTextures(std::span<const TextureId> keep) {
+    std::vector<bool> used(impl_->textures.slotCount(), false);
+    const auto mark = [&](TextureId id) {
+        if (impl_->textures.isValid(id)) {
+            used[id.index1 - 1] = true;
+        }
+    };
+    impl_->batcher.forEachTexture(mark);
+    for (const TextureId id : keep) {
+        mark(id);
+    }
+    int destroyed = 0;
+    for (std::uint32_t slot = 2; slot < impl_->textures.slotCount(); ++slot) {
+        if (impl_->textures.slotAlive(slot) && !used[slot]) {
+            destroyed += impl_->textures.destroy(impl_->textures.idOf(slot)) ? 1 : 0;
+        }
+    }
+    if (destroyed > 0) {
+        impl_->batcher.texturesChanged();
+    }
+    return destroyed;
+}
+
 void Renderer::destroyAllSprites() { impl_->batcher.destroyAll(); }
 bool Renderer::isValid(SpriteId id) const noexcept { return impl_->batcher.isValid(id); }
 int Renderer::spriteCount() const noexcept { return impl_->batcher.count(); }

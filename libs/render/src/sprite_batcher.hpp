@@ -60,6 +60,15 @@ public:
     void destroyAll();
     [[nodiscard]] bool isValid(SpriteId id) const noexcept;
     [[nodiscard]] int count() const noexcept { return alive_; }
+    /// Calls `f(texture)` with the texture of every live sprite.
+    template <class F>
+    void forEachTexture(F&& f) const {
+        for (const Slot& s : slots_) {
+            if (s.alive) {
+                f(s.def.texture);
+            }
+        }
+    }
     [[nodiscard]] const SpriteDef& def(SpriteId id, const char* function) const;
     void set(SpriteId id, const SpriteDef& def, const char* function);
 

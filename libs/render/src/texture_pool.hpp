@@ -40,6 +40,9 @@ public:
     [[nodiscard]] bool isValid(TextureId id) const noexcept;
     [[nodiscard]] const TextureInfo& info(TextureId id, const char* function) const;
     [[nodiscard]] TextureId idOf(std::uint32_t slot) const noexcept;
+    /// Slots in use, the white and placeholder slots included.
+    [[nodiscard]] std::uint32_t slotCount() const noexcept { return static_cast<std::uint32_t>(slots_.size()); }
+    [[nodiscard]] bool slotAlive(std::uint32_t slot) const noexcept { return slots_[slot].texture != 0; }
     [[nodiscard]] GLuint glTexture(std::uint32_t slot) const noexcept { return slots_[slot].texture; }
 
 private:

@@ -260,6 +260,61 @@ TEST_P(TextureRender, DestroyedTextureDrawsThePlaceholder) {
     EXPECT_TRUE(near(pixel(after, 1, 14), Color{255, 0, 255, 255}, 0)) << str(pixel(after, 1, 14));
 }
 
+// RendererDef::fileTextureFilter overrides the filter of file textures only.
+TEST(TextureFilterOverride, AppliesToFileTexturesOnly) {
+    Window window(WindowDef{.title = "e2d render test", .size = {16, 16}, .vsync = false, .visible = false});
+    RendererDef def;
+    def.fileTextureFilter = TextureFilter::Nearest;
+    Renderer renderer(window, def);
+    const TextureId file = renderer.loadTexture(kData / "quadrant.png", TextureDef{.filter = TextureFilter::Linear});
+    EXPECT_EQ(renderer.textureInfo(file).def.filter, TextureFilter::Nearest);
+    Image image;
+    image.width = 1;
+    image.height = 1;
+    image.pixels = {1, 2, 3, 255};
+    const TextureId memory = renderer.createTexture(image, TextureDef{.filter = TextureFilter::Linear});
+    EXPECT_EQ(renderer.textureInfo(memory).def.filter, TextureFilter::Linear);
+}
+
+// A scene change: textures no sprite uses go (except those kept), used ones and the sprites
+// drawing them stay, and a released file loads again on the next request.
+TEST_P(TextureRender, DestroyUnusedTexturesKeepsWhatSpritesUse) {
+    Scene scene(GetParam(), {16, 16});
+    Camera camera = pixelCamera({16, 16});
+    Image green;
+    green.width = 1;
+    green.height = 1;
+    green.pixels = {0, 255, 0, 255};
+    EXPECT_EQ(scene.renderer.textureCount(), 0);
+    const TextureId used = scene.renderer.createTexture(green);
+    const TextureId kept = scene.renderer.createTexture(green);
+    const TextureId unused = scene.renderer.createTexture(green);
+    const TextureId file = scene.renderer.loadTexture(kData / "quadrant.png");
+    const TextureId missing = scene.renderer.loadTexture(kData / "no-such-file.png");
+    EXPECT_EQ(scene.renderer.textureCount(), 5);
+    scene.renderer.createSprite(SpriteDef{.texture = used, .size = {16.0f, 16.0f}});
+
+    const TextureId keep[] = {kept};
+    EXPECT_EQ(scene.renderer.destroyUnusedTextures(keep), 3);
+    EXPECT_EQ(scene.renderer.textureCount(), 2);
+    EXPECT_TRUE(scene.renderer.isValid(used));
+    EXPECT_TRUE(scene.renderer.isValid(kept));
+    EXPECT_FALSE(scene.renderer.isValid(unused));
+    EXPECT_FALSE(scene.renderer.isValid(file));
+    EXPECT_FALSE(scene.renderer.isValid(missing));
+    EXPECT_TRUE(near(pixel(scene.frame(camera), 8, 8), kGreen, 0));
+
+    const TextureId again = scene.renderer.loadTexture(kData / "quadrant.png");
+    EXPECT_TRUE(scene.renderer.isValid(again));
+    EXPECT_EQ(scene.renderer.textureInfo(again).size, glm::ivec2(16, 16));
+    EXPECT_EQ(scene.renderer.textureCount(), 3);
+
+    scene.renderer.destroyAllSprites();
+    EXPECT_EQ(scene.renderer.destroyUnusedTextures(), 3);
+    EXPECT_EQ(scene.renderer.textureCount(), 0);
+    EXPECT_EQ(scene.renderer.destroyUnusedTextures(), 0);
+}
+
 INSTANTIATE_TEST_SUITE_P(BothPaths, TextureRender, testing::Values(Path::Gl33, Path::Gl44), pathName);
 
 } // namespace

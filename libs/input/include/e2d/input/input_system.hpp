@@ -21,6 +21,10 @@ struct InputSystemDef {
     /// Call glfwPollEvents() at the start of beginFrame() (when the Input is attached to a
     /// window). Turn off when something else (the window owner) already polls. Default true.
     bool pollWindowEvents = true;
+    /// Send KeyRepeat events (the system's auto-repeat of a held key) to the scene as
+    /// onKeyRepeat. Off: they still reach polling and `Input::events()`, not the scene.
+    /// Default true.
+    bool keyRepeat = true;
 };
 
 /// Plugs an Input (and optionally an ActionMap) into the core loop: `beginFrame()` polls

@@ -69,6 +69,11 @@ public:
 
     void render(double alpha) override;
     void clear() override;
+    /// Closes every font (their atlas textures go; TextRenderer references handed out by
+    /// text() become invalid) and destroys every texture no sprite uses
+    /// (Renderer::destroyUnusedTextures()). Returns the number of textures destroyed. For a
+    /// scene change, after clear(): the next scene loads what it uses.
+    int releaseUnusedTextures();
 
     /// Copies every component's object transform to the renderer (render() does this first;
     /// exposed for tests that read state without drawing).

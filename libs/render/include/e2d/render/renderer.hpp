@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -125,6 +126,10 @@ struct RendererDef {
     /// z in [-depthRange, depthRange] maps to the depth buffer's range, > 0 and finite.
     /// Default 1000.
     float depthRange = 1000.0f;
+    /// When set, every texture loaded from a file (loadTexture()) is sampled with this filter,
+    /// whatever its TextureDef says (a game-wide setting such as the seed's
+    /// textureFilteringMode); textures made from memory keep their own. Default unset.
+    std::optional<TextureFilter> fileTextureFilter;
     /// Screen colour inside the camera's region. Default opaque black.
     Color clearColor{0, 0, 0, 255};
     /// Screen colour of the letterbox bars. Default opaque black.
@@ -188,6 +193,13 @@ public:
     [[nodiscard]] const TextureInfo& textureInfo(TextureId id) const;
     /// The 1 x 1 white texture used for a null texture id.
     [[nodiscard]] TextureId whiteTexture() const noexcept;
+    /// Textures alive (loaded, created, or placeholders of failed loads), not counting the
+    /// renderer's own white and checker textures.
+    [[nodiscard]] int textureCount() const noexcept;
+    /// Destroys every texture that no sprite uses, except those in `keep` (and the renderer's
+    /// own); a later loadTexture() of the same file loads it again. Returns how many went.
+    /// For a scene change: the new scene's textures are loaded as it asks for them.
+    int destroyUnusedTextures(std::span<const TextureId> keep = {});
 
     // Sprites -----------------------------------------------------------------------------
 
