@@ -17,4 +17,5 @@ endif()
 
 # With a real OpenGL context (Mesa llvmpipe under Xvfb when there is no display).
 e2d_add_tests(render SUFFIX content_gl LABEL render NEEDS_DISPLAY SOURCES
-  tests/content/content_gl_test.cpp)
+  tests/content/content_gl_test.cpp
+  tests/content/components_gl_test.cpp)

@@ -2,7 +2,10 @@
 #include <e2d/render/render_system.hpp>
 
 #include <e2d/render/renderer.hpp>
+#include <e2d/core/error.hpp>
+#include <e2d/core/log.hpp>
 #include <e2d/render/sprite_renderer.hpp>
+#include <e2d/render/sprite_sheet.hpp>
 #include <e2d/render/text_renderer.hpp>
 #include <e2d/render/window.hpp>
 
@@ -18,6 +21,28 @@ TextRenderer& RenderSystem::text() {
         text_ = std::make_unique<TextRenderer>(renderer_, logger_);
     }
     return *text_;
+}
+
+const SpriteSheet* RenderSystem::sheet(const std::filesystem::path& path) {
+    const std::string key = path.string();
+    if (auto it = sheets_.find(key); it != sheets_.end()) {
+        return it->second.get();
+    }
+    std::unique_ptr<SpriteSheet> loaded;
+    try {
+        loaded = std::make_unique<SpriteSheet>(SpriteSheet::fromFile(path));
+    } catch (const core::Error& e) {
+        sheetErrors_[key] = e.what();
+        if (logger_ != nullptr) {
+            logger_->error(e.what());
+        }
+    }
+    return sheets_.emplace(key, std::move(loaded)).first->second.get();
+}
+
+std::string RenderSystem::sheetError(const std::filesystem::path& path) const {
+    auto it = sheetErrors_.find(path.string());
+    return it == sheetErrors_.end() ? std::string{} : it->second;
 }
 
 void RenderSystem::addHook(RenderHook& hook) { hooks_.push_back(&hook); }

@@ -6,8 +6,7 @@
 #include <e2d/render/render_system.hpp>
 
 #include "error_format.hpp"
-
-#include <glm/geometric.hpp>
+#include "world_pose.hpp"
 
 #include <cmath>
 
@@ -30,27 +29,6 @@ SpriteDef toSpriteDef(const SpriteRendererDef& def, TextureId texture) {
     s.hud = def.hud;
     s.visible = def.visible;
     return s;
-}
-
-// Position, z, rotation and scale of the object's world transform (parent chain included).
-struct WorldPose {
-    glm::vec2 position;
-    float z;
-    float rotation;
-    glm::vec2 scale;
-};
-
-WorldPose worldPose(const core::GameObject& object) {
-    const glm::mat4& m = object.worldTransform();
-    glm::vec2 xAxis(m[0][0], m[0][1]);
-    glm::vec2 yAxis(m[1][0], m[1][1]);
-    float sx = glm::length(xAxis);
-    float sy = glm::length(yAxis);
-    // A mirrored transform keeps its x axis' direction (worldOrientation()) and flips y.
-    if (xAxis.x * yAxis.y - xAxis.y * yAxis.x < 0.0f) {
-        sy = -sy;
-    }
-    return {glm::vec2(m[3][0], m[3][1]), m[3][2], object.worldOrientation(), {sx, sy}};
 }
 
 } // namespace
@@ -81,7 +59,7 @@ void SpriteRenderer::onInitialize() {
     if (!def_.texturePath.empty()) {
         texture = renderer.loadTexture(def_.texturePath, def_.textureDef);
     }
-    WorldPose pose = worldPose(*gameObject());
+    detail::WorldPose pose = detail::worldPose(*gameObject());
     SpriteDef sprite = toSpriteDef(def_, texture);
     sprite.position = pose.position;
     sprite.z = pose.z + def_.zOffset;
@@ -104,7 +82,7 @@ void SpriteRenderer::syncTransform() {
     if (system_ == nullptr) {
         return;
     }
-    WorldPose pose = worldPose(*gameObject());
+    detail::WorldPose pose = detail::worldPose(*gameObject());
     system_->renderer().setTransform(sprite_, pose.position, pose.z + def_.zOffset, pose.rotation, pose.scale);
 }
 

@@ -4,7 +4,10 @@
 #include <e2d/core/system.hpp>
 #include <e2d/render/camera.hpp>
 
+#include <filesystem>
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace e2d::core {
@@ -19,6 +22,7 @@ namespace e2d::render {
 class CameraComponent;
 class Renderer;
 class SpriteRenderer;
+class SpriteSheet;
 class TextRenderer;
 class Window;
 
@@ -62,6 +66,14 @@ public:
     /// Registers / unregisters a hook called every frame before drawing, in registration order.
     void addHook(RenderHook& hook);
     void removeHook(RenderHook& hook) noexcept;
+    /// The sprite sheet (TexturePacker JSON) at `path`, read on the first call for that path
+    /// and kept for the system's lifetime, so thousands of animated sprites share one parse.
+    /// A file that cannot be read or parsed is logged once (file and reason) and gives
+    /// nullptr, now and on later calls; sheetError(path) keeps the reason. Never throws.
+    [[nodiscard]] const SpriteSheet* sheet(const std::filesystem::path& path);
+    /// Why the sheet at `path` could not be used; empty if it could (or was never asked).
+    [[nodiscard]] std::string sheetError(const std::filesystem::path& path) const;
+
     /// The camera used when no CameraComponent is active.
     [[nodiscard]] Camera& camera() noexcept { return camera_; }
     /// The camera of the last (or next) frame: the active component's, else camera().
@@ -96,6 +108,8 @@ private:
     std::vector<RenderHook*> hooks_;
     std::vector<SpriteRenderer*> sprites_;
     std::vector<CameraComponent*> cameras_;
+    std::map<std::string, std::unique_ptr<SpriteSheet>, std::less<>> sheets_;
+    std::map<std::string, std::string, std::less<>> sheetErrors_;
 };
 
 } // namespace e2d::render

@@ -69,6 +69,10 @@ public:
     /// Copies the object's world transform to the sprite (RenderSystem calls it each frame).
     void syncTransform();
 
+protected:
+    /// The def, for a derived component to fill in (texture, uv) before its sprite exists.
+    [[nodiscard]] SpriteRendererDef& mutableDef() noexcept { return def_; }
+
 private:
     SpriteRendererDef def_;
     RenderSystem* system_ = nullptr;
