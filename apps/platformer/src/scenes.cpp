@@ -20,6 +20,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -243,6 +244,7 @@ private:
         // The config's unitsPerMetre: world units (reference pixels) per metre, 48 for this game.
         ppm_ = static_cast<float>(game.unitsPerMetre());
         level_ = std::make_unique<Level>(game.world());
+        session_.levelBodies = game.world().bodyCount();
         session_.lastScene = name();
         session_.runs += 1;
         session_.score = 0;
@@ -371,17 +373,16 @@ private:
             return;
         }
         pose_ = pose;
-        const auto& frames = framesOf(pose);
+        const std::span<const int> frames = framesOf(pose);
         render::AnimationDef def;
         def.frameCount = std::max<int>(1, static_cast<int>(frames.size()));
         def.frameDuration = pose == Pose::Run ? 0.08 : 0.2;
         animation_.emplace(def);
     }
 
-    [[nodiscard]] const std::vector<int>& framesOf(Pose pose) const {
-        static const std::vector<int> kNone;
+    [[nodiscard]] std::span<const int> framesOf(Pose pose) const {
         const auto index = static_cast<std::size_t>(pose);
-        return index < frames_.size() ? frames_[index] : kNone;
+        return index < frames_.size() ? std::span<const int>(frames_[index]) : std::span<const int>();
     }
 
     void update(double dt) override {
@@ -476,7 +477,7 @@ private:
         player_->setPosition(px(level_->playerPosition()));
         auto* sprite = player_->getComponent<render::SpriteRenderer>();
         sprite->setFlip(level_->facing() < 0, false);
-        const auto& frames = framesOf(pose_);
+        const std::span<const int> frames = framesOf(pose_);
         if (sheet_ && !frames.empty()) {
             const int frame = frames[static_cast<std::size_t>(animation_->frame()) % frames.size()];
             sprite->setUv(sheet_->frames()[static_cast<std::size_t>(frame)].uv);
@@ -528,7 +529,7 @@ std::string stateLine(const Session& s) {
         << " deaths=" << s.deaths << " wins=" << s.wins
         << " steps_on_moving_platform=" << s.stepsOnMovingPlatform
         << " steps_on_one_way=" << s.stepsOnOneWay
-        << " music_streaming=" << (s.musicStreaming ? 1 : 0);
+        << " music_streaming=" << (s.musicStreaming ? 1 : 0) << " level_bodies=" << s.levelBodies;
     out.precision(2);
     out << std::fixed << " level_time=" << s.levelTime;
     return out.str();
