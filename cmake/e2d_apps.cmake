@@ -34,7 +34,7 @@ endfunction()
 # e2d_add_app_test(<name> <test> [ARGS <app arguments>...] [CHECK <image rules>...]
 #                  [LABELS ...] [TIMEOUT seconds])
 # CTest test app_<name>_<test>: runs e2d_<name> through scripts/with-display.sh (a private
-# Xvfb when DISPLAY is unset) with ARGS plus `--screenshot <build>/screenshots/<name>_<test>.png`
+# Xvfb when DISPLAY is unset; OpenAL's silent null device) with ARGS plus `--screenshot <build>/screenshots/<name>_<test>.png`
 # (and `--frames 120` unless ARGS has --frames); the app must exit 0. Then, when CHECK is
 # given, e2d_image_check (apps/tools) checks the screenshot against the rules, one argument
 # each (see apps/tools/image_check.cpp):
@@ -78,5 +78,8 @@ function(e2d_add_app_test name test)
   if(ARG_TIMEOUT)
     set(timeout ${ARG_TIMEOUT})
   endif()
-  set_tests_properties(app_${name}_${test} PROPERTIES LABELS "${labels}" TIMEOUT ${timeout})
+  # OpenAL Soft's null backend: a silent real-time device, so the mixer runs as with a sound
+  # card (and ALSA does not complain on machines without one).
+  set_tests_properties(app_${name}_${test} PROPERTIES LABELS "${labels}" TIMEOUT ${timeout}
+    ENVIRONMENT "ALSOFT_DRIVERS=null")
 endfunction()

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the build in $1 to a fresh prefix, then for each library component that was built
-# (physics, render, audio, input) builds tests/consumer against the install asking for that
+# (physics, render, audio, input, engine) builds tests/consumer against the install asking for that
 # component alone, runs it (under scripts/with-display.sh, so render and input get an X display)
 # and checks that it links none of the third-party libraries of the components it did not ask for.
 set -euo pipefail
@@ -16,10 +16,11 @@ declare -A allowed=(
   [render]="libGL libGLEW libglfw libfreeimage libfreetype"
   [audio]="libopenal libsndfile"
   [input]="libglfw"
+  [engine]="libGL libGLEW libglfw libfreeimage libfreetype libopenal libsndfile"
 )
 all="libGL libGLEW libglfw libopenal libfreeimage libfreetype libsndfile libbox2d libsfml"
 checked=0
-for component in physics render audio input; do
+for component in physics render audio input engine; do
   [ -f "$prefix/lib/cmake/e2d/e2d_${component}_targets.cmake" ] || continue
   [ -f "tests/consumer/$component.cpp" ] || { echo "consumer: no tests/consumer/$component.cpp" >&2; exit 1; }
   out="$PWD/build/consumer-$component"

@@ -21,6 +21,8 @@ namespace {
 
 constexpr float kWidth = 1024.0f;
 constexpr float kHeight = 720.0f;
+constexpr float kCameraSpeed = 120.0f; // world units per second, along x
+constexpr float kMarkerY = -310.0f; // world y of the layer markers (the view spans -360..360)
 
 struct Layer {
     float parallax;     // how much of the camera's movement the layer follows
@@ -46,7 +48,7 @@ public:
     void update(double dt) override {
         const input::ActionMap& actions = scene()->system<engine::GameSystem>().actions();
         const glm::vec2 push{actions.value("camera_x"), actions.value("camera_y")};
-        const float speed = 120.0f; // world units per second
+        const float speed = kCameraSpeed;
         gameObject()->translate((glm::vec2{1.0f, 0.0f} + 3.0f * push) * speed * static_cast<float>(dt));
     }
 };
@@ -68,13 +70,13 @@ protected:
         for (const Layer& layer : kLayers) {
             // Spread each layer over a strip much wider than the view, so the glide lasts.
             for (int i = 0; i < layer.count; ++i) {
+                // The bottom band (below y -280) is kept for the markers.
+                const float size = random.range(layer.minSize, layer.maxSize);
                 auto& object = createGameObject();
                 object.setPosition(glm::vec3{random.range(-kWidth, 4 * kWidth),
-                                             random.range(-kHeight / 2, kHeight / 2), layer.z});
+                                             random.range(-280.0f + size / 2, kHeight / 2), layer.z});
                 render::SpriteRendererDef def;
                 def.texturePath = circle;
-                def.textureDef.filter = render::TextureFilter::Linear;
-                const float size = random.range(layer.minSize, layer.maxSize);
                 def.size = {size, size};
                 def.tint = layer.tint;
                 def.parallax = layer.parallax;
@@ -82,10 +84,26 @@ protected:
             }
         }
 
+        // One marker per layer along the bottom, all at x = 0: lined up when the camera starts,
+        // they drift apart as it moves, each by its layer's share of the camera's movement.
+        // Parallax scales the offset from the camera on both axes, so a layer's marker sits at
+        // kMarkerY / parallax to be drawn at kMarkerY while the camera is at y 0.
+        for (const Layer& layer : kLayers) {
+            auto& marker = createGameObject();
+            marker.setPosition(glm::vec3{0.0f, kMarkerY / layer.parallax, layer.z});
+            render::SpriteRendererDef def;
+            def.texturePath = circle;
+            def.size = {36.0f, 36.0f};
+            def.tint = layer.tint;
+            def.parallax = layer.parallax;
+            marker.addComponent<render::SpriteRenderer>(def);
+        }
+
         auto& help = createGameObject();
         help.setPosition(glm::vec3{-kWidth / 2 + 12, kHeight / 2 - 10, 10.0f});
         render::TextLabelDef label;
-        label.text = "Parallax: four layers of translucent circles. Arrow keys move the camera.";
+        label.text = "Parallax: four layers of translucent circles. Arrow keys move the camera.\n"
+                     "The four circles at the bottom were lined up when the camera started.";
         label.pixelSize = 20;
         label.hud = true;
         help.addComponent<render::TextLabel>(label);

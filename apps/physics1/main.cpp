@@ -86,12 +86,7 @@ protected:
         info_ = info.addComponent<render::TextLabel>(label);
     }
 
-    void onMouseButtonDown(int button, glm::vec2 screen, glm::vec2 world) override {
-        static_cast<void>(screen);
-        if (button == 0) {
-            addPolygon(world, sides_, 0.6f, kMasses[mass_], 0.0f);
-        }
-    }
+    // The mouse's world position: where new polygons go and where the cannon aims.
     void onMouseMove(glm::vec2 screen, glm::vec2 world) override {
         static_cast<void>(screen);
         aim_ = world;
@@ -103,6 +98,8 @@ protected:
         if (actions.pressed("more_sides") && sides_ < 8) ++sides_;
         if (actions.pressed("fewer_sides") && sides_ > 3) --sides_;
         if (actions.pressed("mass")) mass_ = (mass_ + 1) % 3;
+        // After the choices above, so a key and a click in one frame apply in that order.
+        if (actions.pressed("create")) addPolygon(aim_, sides_, 0.6f, kMasses[mass_], 0.0f);
         if (actions.pressed("fire")) fire();
         if (actions.pressed("push")) push();
 

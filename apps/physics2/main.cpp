@@ -103,11 +103,9 @@ protected:
         info_ = info.addComponent<render::TextLabel>(label);
     }
 
-    void onMouseButtonDown(int button, glm::vec2 screen, glm::vec2 world) override {
+    void onMouseMove(glm::vec2 screen, glm::vec2 world) override {
         static_cast<void>(screen);
-        if (button == 0) {
-            addBody(world, kMaterials[selected_]);
-        }
+        mouse_ = world;
     }
 
     void update(double dt) override {
@@ -118,6 +116,8 @@ protected:
         if (actions.pressed("icy")) selected_ = 1;
         if (actions.pressed("rough")) selected_ = 2;
         if (actions.pressed("debug")) game.setDebugDraw(!game.debugDraw());
+        // After the material keys, so a key and a click in one frame apply in that order.
+        if (actions.pressed("drop")) addBody(mouse_, kMaterials[selected_]);
 
         char text[160];
         std::snprintf(text, sizeof text,
@@ -157,6 +157,7 @@ private:
 
     render::TextLabel* info_ = nullptr;
     int selected_ = 0;
+    glm::vec2 mouse_{0.0f, 12.0f};
 };
 
 } // namespace

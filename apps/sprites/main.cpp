@@ -74,7 +74,8 @@ protected:
         for (int i = 0; i < kSprites; ++i) {
             const bool coin = i % 2 == 0;
             auto& sprite = createGameObject();
-            const float x = coin ? random.range(16.0f, kWidth / 2 - 16) : random.range(kWidth / 2 + 16, kWidth - 16);
+            // Centres 16 px (half a sprite) inside each half, so a 32 px lane stays clear.
+            const float x = coin ? random.range(16.0f, kWidth / 2 - 32) : random.range(kWidth / 2 + 32, kWidth - 16);
             sprite.setPosition(glm::vec3{x, random.range(16.0f, kHeight - 56), 0.0f});
             def.animation = coin ? "coin" : "slime";
             def.startFrame = random.range(0, 7);

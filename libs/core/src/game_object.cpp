@@ -254,4 +254,13 @@ void GameObject::dispatchTriggerExit(const ContactInfo& contact) {
     forEachComponent([&contact](Component& c) { c.onTriggerExit(contact); });
 }
 
+bool GameObject::isActiveInHierarchy() const noexcept {
+    for (const GameObject* o = this; o != nullptr; o = o->parent_) {
+        if (!o->active_) {
+            return false;
+        }
+    }
+    return true;
+}
+
 } // namespace e2d::core

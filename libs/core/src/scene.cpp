@@ -73,6 +73,57 @@ GameObject* Scene::find(GameObjectId id) const noexcept {
     return slot.generation == id.generation ? slot.object.get() : nullptr;
 }
 
+namespace {
+
+// Joined objects, then those waiting to join, skipping those waiting to be destroyed.
+template <class F>
+void forEachLive(const std::vector<GameObject*>& joined, const std::vector<GameObject*>& pending, F&& f) {
+    for (const auto* list : {&joined, &pending}) {
+        for (GameObject* o : *list) {
+            if (!o->isPendingDestroy() && !f(*o)) {
+                return;
+            }
+        }
+    }
+}
+
+} // namespace
+
+GameObject* Scene::findByName(std::string_view name) const noexcept {
+    GameObject* found = nullptr;
+    forEachLive(objects_, pendingAdd_, [&](GameObject& o) {
+        if (o.name() == name) {
+            found = &o;
+            return false;
+        }
+        return true;
+    });
+    return found;
+}
+
+std::vector<GameObject*> Scene::findByTag(std::string_view tag) const {
+    std::vector<GameObject*> found;
+    forEachLive(objects_, pendingAdd_, [&](GameObject& o) {
+        if (o.tag() == tag) {
+            found.push_back(&o);
+        }
+        return true;
+    });
+    return found;
+}
+
+GameObject* Scene::findFirstByTag(std::string_view tag) const noexcept {
+    GameObject* found = nullptr;
+    forEachLive(objects_, pendingAdd_, [&](GameObject& o) {
+        if (o.tag() == tag) {
+            found = &o;
+            return false;
+        }
+        return true;
+    });
+    return found;
+}
+
 void Scene::freeSlot(GameObject& object) {
     Slot& slot = slots_[object.id().index];
     // Generation 0 is reserved for the null id.
@@ -226,7 +277,9 @@ void Scene::broadcast(SceneHandler&& sceneHandler, ComponentHandler&& componentH
     DispatchGuard guard(*this);
     sceneHandler();
     for (GameObject* object : objects_) {
-        object->forEachComponent(componentHandler);
+        if (object->isActiveInHierarchy()) {
+            object->forEachComponent(componentHandler);
+        }
     }
 }
 

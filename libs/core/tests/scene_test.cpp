@@ -425,3 +425,61 @@ TEST(Scene, ComponentAddedToAJoiningObjectDuringInitialisationIsInitialisedWithI
     EXPECT_THAT(log.events, ElementsAre("gift:added", "gift:init"));
     EXPECT_TRUE(receiver.isInitialized());
 }
+
+TEST(Scene, InactiveObjectsAndTheirDescendantsGetNoFrameOrInputEvents) {
+    EventLog log;
+    RecordingScene scene(log);
+    scene.dispatchInitialize();
+    GameObject& child = scene.createGameObject();
+    child.addComponent<Recorder>(log, "c1");
+    scene.first->addChild(child);
+    scene.beginFrame();
+    log.clear();
+
+    scene.first->setActive(false);
+    EXPECT_FALSE(scene.first->isActive());
+    EXPECT_FALSE(scene.first->isActiveInHierarchy());
+    EXPECT_TRUE(child.isActive());
+    EXPECT_FALSE(child.isActiveInHierarchy());
+    scene.dispatchUpdate(0.02);
+    scene.dispatchFixedUpdate(0.01);
+    scene.dispatchButtonDown(65);
+    EXPECT_THAT(log.events, ElementsAre("scene:update", "b1:update", "scene:fixed", "b1:fixed", "scene:buttonDown",
+                                        "b1:buttonDown"));
+
+    log.clear();
+    scene.first->setActive(true);
+    scene.dispatchUpdate(0.02);
+    EXPECT_THAT(log.events, ElementsAre("scene:update", "a1:update", "a2:update", "b1:update", "c1:update"));
+}
+
+TEST(Scene, ObjectsAreFoundByNameAndTag) {
+    EventLog log;
+    RecordingScene scene(log);
+    scene.dispatchInitialize();
+    EXPECT_EQ(scene.first->name(), "");
+    EXPECT_EQ(scene.first->tag(), "");
+    EXPECT_TRUE(scene.first->isActive());
+    scene.first->setName("player");
+    scene.first->setTag("hero");
+    scene.second->setTag("coin");
+    GameObject& later = scene.createGameObject(); // not joined yet: still found
+    later.setName("player");
+    later.setTag("coin");
+
+    EXPECT_EQ(scene.findByName("player"), scene.first);
+    EXPECT_EQ(scene.findByName("nobody"), nullptr);
+    EXPECT_THAT(scene.findByTag("coin"), ElementsAre(scene.second, &later));
+    EXPECT_EQ(scene.findFirstByTag("coin"), scene.second);
+    EXPECT_EQ(scene.findFirstByTag("hero"), scene.first);
+    EXPECT_THAT(scene.findByTag("enemy"), IsEmpty());
+    EXPECT_EQ(scene.findFirstByTag("enemy"), nullptr);
+
+    // Objects waiting to be destroyed are not found.
+    scene.destroyGameObject(*scene.first);
+    EXPECT_EQ(scene.findByName("player"), &later);
+    EXPECT_EQ(scene.findFirstByTag("hero"), nullptr);
+    scene.beginFrame();
+    EXPECT_EQ(scene.findByName("player"), &later);
+    EXPECT_THAT(scene.findByTag("coin"), ElementsAre(scene.second, &later));
+}

@@ -144,7 +144,7 @@ struct Running {
             const audio::MixerDef& mixerDef, const core::SceneRegistry& scenes, std::uint64_t seed)
         : window(windowDef), renderer(window, rendererDef), renderSystem(renderer, nullptr, state.logger),
           input(inputDef(state)), audio(mixerDef), physics(makeWorldDef(state.config)), random(seed), game(state),
-          director(scenes, *state.logger), inputSystem(input, director, &actions, input::InputSystemDef{false}) {}
+          director(scenes, *state.logger), inputSystem(input, director, &actions, input::InputSystemDef{false, state.config.keyRepeat}) {}
 
     input::InputDef inputDef(const detail::GameState& state) {
         input::InputDef def;
@@ -264,6 +264,9 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
     render::RendererDef rendererDef;
     rendererDef.depthRange = config.maxCameraDepth;
     rendererDef.logger = &logger_;
+    rendererDef.fileTextureFilter = config.textureFilteringMode == core::TextureFilteringMode::Nearest
+                                        ? render::TextureFilter::Nearest
+                                        : render::TextureFilter::Linear;
     audio::MixerDef mixerDef;
     mixerDef.logger = &logger_;
     mixerDef.voiceCount = config.voiceCount;
@@ -294,6 +297,7 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
     state.physics = &r.physics;
     state.random = &r.random;
     state.director = &r.director;
+    state.interpolator = &r.interpolator;
 
     if (!config.bindingsFile.empty()) {
         try {
@@ -365,7 +369,6 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
             if (r.director.applyPendingChange()) {
                 ++profile_.sceneChanges;
                 stepper.reset();
-                r.interpolator.clear();
             }
             core::Scene* scene = r.director.scene();
 

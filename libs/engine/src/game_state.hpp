@@ -29,6 +29,8 @@ class Window;
 
 namespace e2d::engine::detail {
 
+class Interpolator;
+
 /// Everything a running Game owns, as GameSystem reaches it. Filled in by Game::run() (which
 /// owns the objects) before the first scene starts.
 struct GameState {
@@ -44,6 +46,9 @@ struct GameState {
     core::Random* random = nullptr;
     core::SceneDirector* director = nullptr;
     FrameProfile* profile = nullptr;
+    Interpolator* interpolator = nullptr;
+    /// Textures released by the last scene change.
+    int texturesReleased = 0;
     bool debugDraw = false;
     bool headless = false;
     std::int64_t frame = 0;

@@ -8,6 +8,7 @@
 #include <e2d/render/renderer.hpp>
 
 #include "game_state.hpp"
+#include "interpolator.hpp"
 
 namespace e2d::engine {
 
@@ -43,7 +44,13 @@ bool GameSystem::headless() const noexcept { return state_.headless; }
 const FrameProfile& GameSystem::profile() const noexcept { return *state_.profile; }
 
 void GameSystem::clear() {
-    // The other systems cleared first (registered before this one): no sprite is left.
+    // The other systems cleared first (registered before this one): no sprite, voice or body
+    // of the old scene is left, and the render system dropped its hooks.
+    state_.texturesReleased = state_.renderSystem->releaseUnusedTextures();
+    if (state_.interpolator != nullptr) {
+        state_.interpolator->clear();
+        state_.renderSystem->addHook(*state_.interpolator);
+    }
 }
 
 } // namespace e2d::engine

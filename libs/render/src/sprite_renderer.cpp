@@ -84,6 +84,8 @@ void SpriteRenderer::syncTransform() {
     }
     detail::WorldPose pose = detail::worldPose(*gameObject());
     system_->renderer().setTransform(sprite_, pose.position, pose.z + def_.zOffset, pose.rotation, pose.scale);
+    // An inactive object (or one under an inactive parent) is not drawn.
+    system_->renderer().setVisible(sprite_, def_.visible && gameObject()->isActiveInHierarchy());
 }
 
 void SpriteRenderer::setTint(Color tint) {

@@ -15,6 +15,7 @@
 #include <type_traits>
 #include <typeinfo>
 #include <utility>
+#include <string>
 #include <vector>
 
 namespace e2d::core {
@@ -55,6 +56,25 @@ public:
     [[nodiscard]] bool isInitialized() const noexcept { return initialized_; }
     /// True after `Scene::destroyGameObject()` until the object is actually destroyed.
     [[nodiscard]] bool isPendingDestroy() const noexcept { return pendingDestroy_; }
+
+    // Name, tag, active ---------------------------------------------------------------------
+
+    /// What the object is called, for `Scene::findByName()`; need not be unique. Default "".
+    [[nodiscard]] const std::string& name() const noexcept { return name_; }
+    void setName(std::string name) { name_ = std::move(name); }
+    /// A category shared by several objects ("enemy", "coin"), for `Scene::findByTag()`.
+    /// Default "".
+    [[nodiscard]] const std::string& tag() const noexcept { return tag_; }
+    void setTag(std::string tag) { tag_ = std::move(tag); }
+    /// The object's own active flag. Default true.
+    [[nodiscard]] bool isActive() const noexcept { return active_; }
+    /// Deactivating an object pauses it and its descendants: their components receive no
+    /// update, fixedUpdate or input events (the scene's broadcasts skip them) and renderers
+    /// hide them; they stay in the scene, keep their components and still receive onInitialize
+    /// and onTerminate. Takes effect at once.
+    void setActive(bool active) noexcept { active_ = active; }
+    /// Active, and so is every ancestor.
+    [[nodiscard]] bool isActiveInHierarchy() const noexcept;
 
     // Transform ---------------------------------------------------------------------------
 
@@ -184,6 +204,9 @@ private:
 
     bool initialized_ = false;
     bool pendingDestroy_ = false;
+    bool active_ = true;
+    std::string name_;
+    std::string tag_;
     bool beingDestroyed_ = false; // set by Scene while it destroys a batch
     bool componentChangeQueued_ = false;
 

@@ -27,7 +27,8 @@ class Logger;
 ///
 /// Whoever runs the scene (SceneDirector, or a test) calls the public `dispatch*` methods;
 /// each one runs the scene's own handler first, then forwards the event to every game object
-/// in creation order, which forwards it to its components in attachment order (the seed's
+/// in creation order (skipping inactive ones, see GameObject::setActive()), which forwards it
+/// to its components in attachment order (the seed's
 /// order).
 ///
 /// Creation and destruction of game objects are deferred to `beginFrame()`, the start of the
@@ -55,6 +56,14 @@ public:
     /// The object with this id, or nullptr if it was destroyed (or the id is null). Objects
     /// waiting to join or to be destroyed are still found.
     [[nodiscard]] GameObject* find(GameObjectId id) const noexcept;
+    /// The first object (in creation order, objects waiting to join included) named `name`,
+    /// or nullptr. Objects waiting to be destroyed are skipped.
+    [[nodiscard]] GameObject* findByName(std::string_view name) const noexcept;
+    /// Every object tagged `tag`, in creation order (objects waiting to join included, those
+    /// waiting to be destroyed skipped).
+    [[nodiscard]] std::vector<GameObject*> findByTag(std::string_view tag) const;
+    /// The first of findByTag(), or nullptr.
+    [[nodiscard]] GameObject* findFirstByTag(std::string_view tag) const noexcept;
     /// Objects that joined the scene, in creation order.
     [[nodiscard]] const std::vector<GameObject*>& gameObjects() const noexcept { return objects_; }
 

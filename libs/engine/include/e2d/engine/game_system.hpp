@@ -1,33 +1,23 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+// Everything a scene reaches through GameSystem, so that one include does.
+#include <e2d/audio/mixer.hpp>
+#include <e2d/core/log.hpp>
+#include <e2d/core/random.hpp>
 #include <e2d/core/system.hpp>
 #include <e2d/engine/engine_config.hpp>
 #include <e2d/engine/frame_profile.hpp>
+#include <e2d/input/actions.hpp>
+#include <e2d/input/input.hpp>
+#include <e2d/physics/world.hpp>
+#include <e2d/render/render_system.hpp>
+#include <e2d/render/renderer.hpp>
+#include <e2d/render/text_renderer.hpp>
+#include <e2d/render/window.hpp>
 
 #include <filesystem>
 #include <string_view>
-
-namespace e2d::audio {
-class Mixer;
-}
-namespace e2d::core {
-class Logger;
-class Random;
-} // namespace e2d::core
-namespace e2d::input {
-class ActionMap;
-class Input;
-} // namespace e2d::input
-namespace e2d::physics {
-class World;
-}
-namespace e2d::render {
-class Renderer;
-class RenderSystem;
-class TextRenderer;
-class Window;
-} // namespace e2d::render
 
 namespace e2d::engine {
 
@@ -61,7 +51,11 @@ public:
     [[nodiscard]] audio::Mixer& mixer() noexcept;
     [[nodiscard]] physics::World& world() noexcept;
     [[nodiscard]] core::Logger& logger() noexcept;
-    /// World units per physics metre (config unitsPerMetre, default 1).
+    /// World units per physics metre (config unitsPerMetre, default 1). The config's PHYSICS
+    /// lengths are divided by it for the world, and the debug draw multiplies the world's
+    /// metres by it. Rigidbody and Collider components place bodies at their objects'
+    /// positions as they are (one world unit = one metre): a game that draws in pixels and
+    /// uses them either keeps unitsPerMetre 1 and zooms its camera, or converts itself.
     [[nodiscard]] double unitsPerMetre() const noexcept;
     /// The game's random numbers, seeded by `--seed` or the config's randomSeed.
     [[nodiscard]] core::Random& random() noexcept;

@@ -129,7 +129,7 @@ struct RendererDef {
     /// When set, every texture loaded from a file (loadTexture()) is sampled with this filter,
     /// whatever its TextureDef says (a game-wide setting such as the seed's
     /// textureFilteringMode); textures made from memory keep their own. Default unset.
-    std::optional<TextureFilter> fileTextureFilter;
+    std::optional<TextureFilter> fileTextureFilter{};
     /// Screen colour inside the camera's region. Default opaque black.
     Color clearColor{0, 0, 0, 255};
     /// Screen colour of the letterbox bars. Default opaque black.

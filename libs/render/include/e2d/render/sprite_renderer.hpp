@@ -41,7 +41,8 @@ struct SpriteRendererDef {
 };
 
 /// Puts a sprite at its game object: position (x, y), z, rotation and scale follow the
-/// object's world transform (parent chain included) every frame. The sprite is created when
+/// object's world transform (parent chain included) every frame, and it is hidden while the
+/// object is inactive (core::GameObject::setActive()). The sprite is created when
 /// the object enters the scene and destroyed with the component. The RenderSystem is found
 /// with `scene()->system<RenderSystem>()` (core::Error naming the type when the scene has none).
 class SpriteRenderer : public core::Component {

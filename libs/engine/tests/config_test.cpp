@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+// The engine's configuration: every key read from a file, the physics keys reaching the world,
+// and the malformed cases (bad values name file, line and key; unknown keys are warnings).
+#include <e2d/engine/engine_config.hpp>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+using namespace e2d;
+using engine::EngineConfigResult;
+using engine::loadEngineConfig;
+using testing::ElementsAre;
+using testing::HasSubstr;
+using testing::IsEmpty;
+
+const std::filesystem::path kData = E2D_ENGINE_TEST_DATA;
+
+std::filesystem::path writeTemp(const std::string& name, const std::string& text) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "e2d_engine_config_test";
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path path = dir / name;
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+    return path;
+}
+
+TEST(EngineConfig, EveryKeyOfTheFileIsRead) {
+    const EngineConfigResult r = loadEngineConfig(kData / "every_key.txt", true);
+    EXPECT_THAT(r.errors, IsEmpty());
+    EXPECT_THAT(r.warnings, IsEmpty());
+    const engine::EngineConfig& c = r.config;
+    EXPECT_EQ(c.file, kData / "every_key.txt");
+    EXPECT_EQ(c.assetRoot, kData);
+    EXPECT_EQ(c.firstScene, "Level");
+    EXPECT_EQ(c.referenceWindowWidth, 800);
+    EXPECT_EQ(c.referenceWindowHeight, 600);
+    EXPECT_EQ(c.windowWidth, 400);
+    EXPECT_EQ(c.windowHeight, 300);
+    EXPECT_EQ(c.screenFitMode, core::ScreenFitMode::HeightFit);
+    EXPECT_EQ(c.windowMode, core::WindowMode::Fullscreen);
+    EXPECT_EQ(c.windowTitle, "every key test");
+    EXPECT_EQ(c.textureFilteringMode, core::TextureFilteringMode::Linear);
+    EXPECT_EQ(c.maxCameraDepth, 500.0f);
+    EXPECT_FALSE(c.vsync);
+    EXPECT_EQ(c.msaaSamples, 4);
+    EXPECT_EQ(c.fontSize, 32);
+    EXPECT_EQ(c.gravityX, 50.0f);
+    EXPECT_EQ(c.gravityY, -1000.0f);
+    EXPECT_EQ(c.fixedTimestep, 0.005);
+    EXPECT_EQ(c.collisionResolutionSteps, 10);
+    EXPECT_EQ(c.allowedPenetration, 0.1f);
+    EXPECT_EQ(c.penetrationBiasFactor, 0.1f);
+    EXPECT_EQ(c.minRigidbodySpeed, 5.0f);
+    EXPECT_EQ(c.unitsPerMetre, 100.0);
+    EXPECT_EQ(c.minAttenuationDistance, 100.0f);
+    EXPECT_EQ(c.maxAttenuationDistance, 900.0f);
+    EXPECT_EQ(c.minPanningDistance, 50.0f);
+    EXPECT_EQ(c.maxPanningDistance, 700.0f);
+    EXPECT_EQ(c.masterGain, 0.5f);
+    EXPECT_EQ(c.voiceCount, 48);
+    EXPECT_EQ(c.bindingsFile, "bindings.txt");
+    EXPECT_FALSE(c.keyRepeat);
+    EXPECT_EQ(c.maxStepsPerFrame, 3);
+    EXPECT_EQ(c.randomSeed, 1234u);
+    EXPECT_EQ(c.maxFrameTime, 0.1);
+    EXPECT_TRUE(c.debugDraw);
+    EXPECT_EQ(c.debugDrawKey, "f3");
+    EXPECT_FALSE(c.printProfile);
+}
+
+TEST(EngineConfig, PhysicsKeysFeedTheWorldInMetres) {
+    const EngineConfigResult r = loadEngineConfig(kData / "every_key.txt", true);
+    const physics::WorldDef def = engine::makeWorldDef(r.config);
+    // 100 units per metre: -1000 units/s^2 is -10 m/s^2, 5 units/s is 0.05 m/s.
+    EXPECT_FLOAT_EQ(def.gravity.x, 0.5f);
+    EXPECT_FLOAT_EQ(def.gravity.y, -10.0f);
+    EXPECT_EQ(def.solver.subSteps, 10);
+    EXPECT_EQ(def.solver.velocityIterations, 10);
+    EXPECT_FLOAT_EQ(def.solver.linearSleepTolerance, 0.05f);
+
+    // The defaults give the library's own gravity direction and the config's value.
+    const physics::WorldDef defaults = engine::makeWorldDef(core::Config{});
+    EXPECT_EQ(defaults.gravity.x, 0.0f);
+    EXPECT_FLOAT_EQ(defaults.gravity.y, core::Config{}.gravityY);
+    EXPECT_EQ(defaults.solver.subSteps, core::Config{}.collisionResolutionSteps);
+
+    // More steps than the soft-step solver takes are capped, not an error.
+    core::Config many;
+    many.collisionResolutionSteps = 100;
+    EXPECT_EQ(engine::makeWorldDef(many).solver.subSteps, 64);
+    EXPECT_EQ(engine::makeWorldDef(many).solver.velocityIterations, 100);
+    // A world can be made from any valid config.
+    EXPECT_NO_THROW(physics::World{engine::makeWorldDef(many)});
+    EXPECT_NO_THROW(physics::World{engine::makeWorldDef(r.config)});
+}
+
+TEST(EngineConfig, BadValuesAreErrorsNamingFileLineAndKey) {
+    const std::filesystem::path path = writeTemp("bad.txt",
+                                                 "#DISPLAY\n"
+                                                 "windowWidth = wide\n"
+                                                 "screenFitMode = stretch\n"
+                                                 "msaaSamples = -1\n"
+                                                 "#PHYSICS\n"
+                                                 "fixedTimestep = 0\n"
+                                                 "unitsPerMetre = -100\n"
+                                                 "vsync = maybe\n"
+                                                 "this line has no equals sign\n"
+                                                 "voiceCount = 2000\n");
+    const EngineConfigResult r = loadEngineConfig(path, true);
+    const std::string f = path.string();
+    EXPECT_THAT(r.errors,
+                ElementsAre(f + ":2: windowWidth: expected an integer, got 'wide'",
+                            f + ":3: screenFitMode: unknown value 'stretch', expected one of: expand, widthFit, "
+                                "heightFit, bestFit",
+                            f + ":4: msaaSamples: must be in [0, 16], got -1",
+                            f + ":6: fixedTimestep: must be in (0, 1], got 0",
+                            f + ":7: unitsPerMetre: must be > 0, got -100",
+                            f + ":8: vsync: expected true or false, got 'maybe'",
+                            f + ":9: expected 'key = value', got 'this line has no equals sign'",
+                            f + ":10: voiceCount: must be in [1, 1024], got 2000"));
+    EXPECT_THAT(r.warnings, IsEmpty());
+}
+
+TEST(EngineConfig, UnknownAndDuplicateKeysAreWarningsWithTheirLine) {
+    const std::filesystem::path path =
+        writeTemp("warn.txt", "firstScene = A\nwindowWidht = 800\nfirstScene = B\n\n  gravityZ = 3\n");
+    const EngineConfigResult r = loadEngineConfig(path, true);
+    const std::string f = path.string();
+    EXPECT_THAT(r.errors, IsEmpty());
+    EXPECT_THAT(r.warnings, ElementsAre(f + ":2: windowWidht: unknown key, ignored",
+                                        f + ":3: firstScene: duplicate key, replaces the value set on line 1",
+                                        f + ":5: gravityZ: unknown key, ignored"));
+    EXPECT_EQ(r.config.firstScene, "B");
+    EXPECT_EQ(r.config.windowWidth, core::Config{}.windowWidth);
+}
+
+TEST(EngineConfig, MissingFileIsAnErrorOnlyWhenRequired) {
+    const std::filesystem::path missing = kData / "no-such-config.txt";
+    const EngineConfigResult required = loadEngineConfig(missing, true);
+    EXPECT_THAT(required.errors, ElementsAre(missing.string() + ": cannot read the configuration file"));
+    const EngineConfigResult optional = loadEngineConfig(missing, false);
+    EXPECT_THAT(optional.errors, IsEmpty());
+    EXPECT_THAT(optional.warnings,
+                ElementsAre(missing.string() + ": cannot read the configuration file, using the defaults"));
+    EXPECT_EQ(optional.config.windowWidth, core::Config{}.windowWidth);
+    EXPECT_TRUE(optional.config.file.empty());
+    // A folder is not a configuration file.
+    EXPECT_THAT(loadEngineConfig(kData, true).errors, ElementsAre(HasSubstr("cannot read")));
+}
+
+} // namespace

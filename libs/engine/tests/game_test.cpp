@@ -1,0 +1,677 @@
+// SPDX-License-Identifier: MIT
+// Whole games run in-process through Game::run(): a real window (Xvfb under CTest), the real
+// renderer, input fed by input scripts, the mixer (silent without a device: voices still
+// start and end) and the physics world. Each test is its own process under CTest.
+#include <e2d/audio/mixer.hpp>
+#include <e2d/core/component.hpp>
+#include <e2d/core/game_object.hpp>
+#include <e2d/core/scene.hpp>
+#include <e2d/engine/game.hpp>
+#include <e2d/engine/game_system.hpp>
+#include <e2d/input/actions.hpp>
+#include <e2d/input/input.hpp>
+#include <e2d/physics/collider.hpp>
+#include <e2d/physics/geometry.hpp>
+#include <e2d/physics/rigidbody.hpp>
+#include <e2d/physics/world.hpp>
+#include <e2d/render/image.hpp>
+#include <e2d/render/render_system.hpp>
+#include <e2d/render/renderer.hpp>
+#include <e2d/render/sprite_renderer.hpp>
+
+#include <GLFW/glfw3.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using namespace e2d;
+using engine::Game;
+using engine::GameSystem;
+using testing::HasSubstr;
+
+const std::filesystem::path kData = E2D_ENGINE_TEST_DATA;
+
+std::filesystem::path tempDir() {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                      ("e2d_engine_game_test_" + std::to_string(::testing::UnitTest::GetInstance()
+                                                                                    ->random_seed()) +
+                                       "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+std::filesystem::path writeFile(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+    return path;
+}
+
+/// A 160 x 120 game whose first scene is `first`, plus `extra` config lines.
+std::filesystem::path writeConfig(const std::string& first, const std::string& extra = {}) {
+    return writeFile(tempDir() / "config.txt", "firstScene = " + first +
+                                                   "\nreferenceWindowWidth = 160\nreferenceWindowHeight = 120\n"
+                                                   "windowWidth = 160\nwindowHeight = 120\nscreenFitMode = bestFit\n"
+                                                   "printProfile = true\n" +
+                                                   extra);
+}
+
+/// A scene running `setup` at initialisation and `each` every frame (update).
+class FnScene : public core::Scene {
+public:
+    FnScene(std::function<void(core::Scene&)> setup, std::function<void(core::Scene&)> each)
+        : setup_(std::move(setup)), each_(std::move(each)) {}
+
+protected:
+    void onInitialize() override {
+        if (setup_) {
+            setup_(*this);
+        }
+    }
+    void update(double) override {
+        if (each_) {
+            each_(*this);
+        }
+    }
+
+private:
+    std::function<void(core::Scene&)> setup_;
+    std::function<void(core::Scene&)> each_;
+};
+
+void addScene(Game& game, const std::string& name, std::function<void(core::Scene&)> setup,
+              std::function<void(core::Scene&)> each = {}) {
+    game.scenes().add(name, [setup, each] { return std::make_unique<FnScene>(setup, each); });
+}
+
+struct GameRun {
+    int code = -1;
+    std::vector<std::string> log;
+
+    [[nodiscard]] int count(const std::string& text) const {
+        return static_cast<int>(std::count_if(log.begin(), log.end(), [&](const std::string& line) {
+            return line.find(text) != std::string::npos;
+        }));
+    }
+    [[nodiscard]] std::string all() const {
+        std::string out;
+        for (const std::string& l : log) {
+            out += l + "\n";
+        }
+        return out;
+    }
+};
+
+GameRun run(Game& game, std::vector<std::string> args) {
+    GameRun result;
+    game.logger().setSink([&result](core::LogLevel level, std::string_view message) {
+        result.log.push_back(std::string(core::toString(level)) + ": " + std::string(message));
+    });
+    args.insert(args.begin(), "e2d_engine_game_test");
+    std::vector<char*> argv;
+    for (std::string& a : args) {
+        argv.push_back(a.data());
+    }
+    argv.push_back(nullptr);
+    result.code = game.run(static_cast<int>(args.size()), argv.data(), "no-default-config.txt");
+    game.logger().setSink({});
+    return result;
+}
+
+GameSystem& gameOf(const core::Scene& scene) { return scene.system<GameSystem>(); }
+
+bool near(const std::uint8_t* p, int r, int g, int b, int tolerance) {
+    return std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance && std::abs(p[2] - b) <= tolerance;
+}
+
+int countColour(const render::Image& image, int r, int g, int b, int tolerance) {
+    int n = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            n += near(image.at(x, y), r, g, b, tolerance) ? 1 : 0;
+        }
+    }
+    return n;
+}
+
+// --- Headless runs ---------------------------------------------------------------------------
+
+TEST(Game, HeadlessRunsExactlyNFramesOfOneStepEachAndSavesTheLastFrame) {
+    Game game;
+    int updates = 0;
+    int fixedSteps = 0;
+    struct StepCounter : core::Component {
+        explicit StepCounter(int& n) : count(n) {}
+        void fixedUpdate(double step) override {
+            EXPECT_DOUBLE_EQ(step, 1.0 / 60.0);
+            ++count;
+        }
+        int& count;
+    };
+    addScene(
+        game, "Red",
+        [&](core::Scene& s) {
+            core::GameObject& o = s.createGameObject();
+            render::SpriteRendererDef def;
+            def.size = {40.0f, 40.0f};
+            def.tint = {255, 0, 0, 255};
+            o.addComponent<render::SpriteRenderer>(def);
+            o.addComponent<StepCounter>(fixedSteps);
+        },
+        [&](core::Scene& s) {
+            EXPECT_EQ(gameOf(s).frame(), updates);
+            EXPECT_TRUE(gameOf(s).headless());
+            ++updates;
+        });
+    const std::filesystem::path shot = tempDir() / "shot.png";
+    const GameRun r = run(game, {"--config", writeConfig("Red").string(), "--frames", "120", "--screenshot", shot.string()});
+    ASSERT_EQ(r.code, 0) << r.all();
+    // 120 frames of exactly 1/60 s with a 1/60 s step: one step each, none dropped.
+    EXPECT_EQ(updates, 120);
+    EXPECT_EQ(fixedSteps, 120);
+    EXPECT_EQ(game.profile().frames, 120);
+    EXPECT_EQ(game.profile().fixedSteps, 120);
+    EXPECT_EQ(game.profile().spikes, 0);
+    EXPECT_EQ(game.profile().droppedSeconds, 0.0);
+    EXPECT_EQ(r.count("frame profile: 120 frames, 120 fixed steps"), 1) << r.all();
+    // Without a sound card (Xvfb machines), one message and the game runs silent.
+    EXPECT_LE(r.count("audio::Mixer"), 1) << r.all();
+
+    const render::Image image = render::loadImage(shot);
+    ASSERT_EQ(image.width, 160);
+    ASSERT_EQ(image.height, 120);
+    // A 40 x 40 red square at the centre of a 160 x 120 view of a 160 x 120 reference.
+    EXPECT_TRUE(near(image.at(80, 60), 255, 0, 0, 0));
+    EXPECT_TRUE(near(image.at(61, 41), 255, 0, 0, 0));
+    EXPECT_TRUE(near(image.at(58, 60), 0, 0, 0, 0));
+    EXPECT_EQ(countColour(image, 255, 0, 0, 0), 40 * 40);
+}
+
+TEST(Game, TerminateGameEndsTheRunAndTheLastFrameIsStillSaved) {
+    Game game;
+    addScene(
+        game, "Short",
+        [](core::Scene& s) {
+            render::SpriteRendererDef def;
+            def.size = {20.0f, 20.0f};
+            def.tint = {0, 0, 255, 255};
+            s.createGameObject().addComponent<render::SpriteRenderer>(def);
+        },
+        [](core::Scene& s) {
+            if (gameOf(s).frame() == 4) {
+                gameOf(s).terminateGame();
+            }
+        });
+    const std::filesystem::path shot = tempDir() / "short.png";
+    const GameRun r = run(game, {"--config", writeConfig("Short").string(), "--frames", "100", "--screenshot", shot.string()});
+    ASSERT_EQ(r.code, 0) << r.all();
+    EXPECT_EQ(game.profile().frames, 5);
+    const render::Image image = render::loadImage(shot);
+    EXPECT_EQ(countColour(image, 0, 0, 255, 0), 20 * 20);
+}
+
+TEST(Game, SeedMakesTheRandomNumbersReproducible) {
+    const auto firstNumber = [](std::vector<std::string> extra, const std::string& configExtra = {}) {
+        Game game;
+        std::uint64_t value = 0;
+        addScene(game, "Dice", [&](core::Scene& s) { value = gameOf(s).random().next(); });
+        std::vector<std::string> args{"--config", writeConfig("Dice", configExtra).string(), "--frames", "1"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        EXPECT_EQ(run(game, args).code, 0);
+        return value;
+    };
+    EXPECT_EQ(firstNumber({"--seed", "7"}), firstNumber({"--seed", "7"}));
+    EXPECT_NE(firstNumber({"--seed", "7"}), firstNumber({"--seed", "8"}));
+    // Without --seed, the config's randomSeed.
+    EXPECT_EQ(firstNumber({}, "randomSeed = 7\n"), firstNumber({"--seed", "7"}));
+    EXPECT_EQ(firstNumber({"--seed", "7"}), core::Random(7).next());
+}
+
+// --- Usage, configuration and display errors --------------------------------------------------
+
+TEST(Game, BadCommandLineExitsWith2NamingTheArgument) {
+    Game game;
+    addScene(game, "A", {});
+    const GameRun r = run(game, {"--frames", "ten"});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.count("--frames: expected a whole number >= 1, got 'ten'"), 1) << r.all();
+    EXPECT_EQ(r.count("usage:"), 1);
+    EXPECT_EQ(run(game, {"--bogus"}).code, 2);
+    EXPECT_EQ(run(game, {"--help"}).code, 0);
+}
+
+TEST(Game, BadConfigurationExitsWith2NamingFileLineAndKey) {
+    Game game;
+    addScene(game, "A", {});
+    const std::filesystem::path config = writeConfig("A", "gravityY = down\nwindowWidht = 3\n");
+    const GameRun r = run(game, {"--config", config.string(), "--frames", "1"});
+    EXPECT_EQ(r.code, 2);
+    // writeConfig puts 7 lines first: gravityY is on line 8, the misspelt key on line 9.
+    EXPECT_EQ(r.count("error: " + config.string() + ":8: gravityY: expected a number, got 'down'"), 1) << r.all();
+    EXPECT_EQ(r.count("warning: " + config.string() + ":9: windowWidht: unknown key, ignored"), 1) << r.all();
+
+    const GameRun missing = run(game, {"--config", (tempDir() / "none.txt").string()});
+    EXPECT_EQ(missing.code, 2);
+    EXPECT_EQ(missing.count("none.txt: cannot read the configuration file"), 1) << missing.all();
+
+    game.scenes().add("B", [] { return std::make_unique<FnScene>(nullptr, nullptr); });
+    const GameRun unknown = run(game, {"--config", writeConfig("Nope").string(), "--frames", "1"});
+    EXPECT_EQ(unknown.code, 2);
+    EXPECT_EQ(unknown.count("firstScene: no scene is registered as 'Nope' (registered: A, B)"), 1) << unknown.all();
+
+    const GameRun key = run(game, {"--config", writeConfig("A", "debugDrawKey = f99\n").string(), "--frames", "1"});
+    EXPECT_EQ(key.code, 2);
+    EXPECT_EQ(key.count("debugDrawKey: unknown key name 'f99'"), 1) << key.all();
+
+    const GameRun bindings =
+        run(game, {"--config", writeConfig("A", "bindingsFile = missing-bindings.txt\n").string(), "--frames", "1"});
+    EXPECT_EQ(bindings.code, 2);
+    EXPECT_EQ(bindings.count("bindingsFile:"), 1) << bindings.all();
+    EXPECT_EQ(bindings.count("missing-bindings.txt"), 1) << bindings.all();
+}
+
+TEST(Game, NoDisplayExitsWith3WithAClearMessage) {
+    ::unsetenv("DISPLAY");
+    ::unsetenv("WAYLAND_DISPLAY");
+    Game game;
+    addScene(game, "A", {});
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "1"});
+    EXPECT_EQ(r.code, 3);
+    EXPECT_EQ(r.count("cannot open the game window"), 1) << r.all();
+    EXPECT_EQ(r.count("set DISPLAY"), 1) << r.all();
+}
+
+// --- Scene changes release everything the old scene had ------------------------------------
+
+TEST(Game, SceneChangeReleasesSpritesVoicesBodiesAndTextures) {
+    const std::filesystem::path dir = tempDir();
+    render::Image pixels;
+    pixels.width = 4;
+    pixels.height = 4;
+    pixels.pixels.assign(4 * 4 * 4, 200);
+    render::writePng(pixels, dir / "tile.png");
+
+    struct Counts {
+        int sprites = -1, voices = -1, bodies = -1, textures = -1;
+    };
+    const auto count = [](core::Scene& s) {
+        GameSystem& g = gameOf(s);
+        return Counts{g.renderer().spriteCount(), g.mixer().stats().voicesInUse, g.world().bodyCount(),
+                      g.renderer().textureCount()};
+    };
+    Counts inA;
+    Counts atB;
+    Game game;
+    addScene(
+        game, "A",
+        [&](core::Scene& s) {
+            GameSystem& g = gameOf(s);
+            for (int i = 0; i < 5; ++i) {
+                core::GameObject& o = s.createGameObject();
+                o.setPosition(glm::vec2{static_cast<float>(i) * 10.0f, 0.0f});
+                render::SpriteRendererDef def;
+                def.texturePath = g.asset("tile.png").string();
+                o.addComponent<render::SpriteRenderer>(def);
+                if (i < 4) {
+                    o.addComponent<physics::Rigidbody>(physics::RigidbodyDef{});
+                    o.addComponent<physics::Collider>(physics::ShapeGeometry{physics::makeBox(1.0f, 1.0f)});
+                }
+            }
+            audio::SoundData tone;
+            tone.channels = 1;
+            tone.sampleRate = 8000;
+            tone.samples.assign(8000, 0.25f);
+            const audio::SoundId sound = g.mixer().add(tone, "tone");
+            for (int i = 0; i < 3; ++i) {
+                audio::PlayDef play;
+                play.loop = true;
+                g.mixer().play(sound, play);
+            }
+        },
+        [&](core::Scene& s) {
+            if (gameOf(s).frame() == 3) {
+                inA = count(s);
+                gameOf(s).changeScene("B");
+            }
+        });
+    addScene(game, "B", [&](core::Scene& s) { atB = count(s); });
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "6"});
+    ASSERT_EQ(r.code, 0) << r.all();
+    EXPECT_EQ(inA.sprites, 5);
+    EXPECT_EQ(inA.voices, 3);
+    EXPECT_EQ(inA.bodies, 4);
+    EXPECT_EQ(inA.textures, 1);
+    EXPECT_EQ(atB.sprites, 0);
+    EXPECT_EQ(atB.voices, 0);
+    EXPECT_EQ(atB.bodies, 0);
+    EXPECT_EQ(atB.textures, 0);
+    EXPECT_EQ(game.profile().sceneChanges, 1);
+}
+
+TEST(Game, MissingAssetIsReportedOnceAndThePlaceholderIsDrawn) {
+    Game game;
+    addScene(game, "A", [](core::Scene& s) {
+        for (int i = 0; i < 3; ++i) {
+            render::SpriteRendererDef def;
+            def.texturePath = gameOf(s).asset("missing.png").string();
+            def.size = {30.0f, 30.0f};
+            core::GameObject& o = s.createGameObject();
+            o.setPosition(glm::vec2{static_cast<float>(i - 1) * 40.0f, 0.0f});
+            o.addComponent<render::SpriteRenderer>(def);
+        }
+    });
+    const std::filesystem::path shot = tempDir() / "missing.png.shot.png";
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "10", "--screenshot", shot.string()});
+    ASSERT_EQ(r.code, 0) << r.all();
+    EXPECT_EQ(r.count("missing.png"), 1) << r.all();
+    // The magenta/black checker stands in.
+    EXPECT_GT(countColour(render::loadImage(shot), 255, 0, 255, 10), 3 * 30 * 30 / 4);
+}
+
+// --- Input scripts ------------------------------------------------------------------------------
+
+TEST(Game, InputScriptPressesActionsAndKeysOnTheirFrames) {
+    struct Seen {
+        std::vector<std::int64_t> jumpPressed, jumpHeld, jumpReleased, keyDown, keyUp, mouseDown;
+    } seen;
+    struct KeyLog : core::Component {
+        explicit KeyLog(Seen& s) : seen(s) {}
+        void onKeyDown(int key, int) override {
+            if (key == GLFW_KEY_A) {
+                seen.keyDown.push_back(scene()->system<GameSystem>().frame());
+            }
+        }
+        void onKeyUp(int key, int) override {
+            if (key == GLFW_KEY_A) {
+                seen.keyUp.push_back(scene()->system<GameSystem>().frame());
+            }
+        }
+        void onMouseButtonDown(int button, glm::vec2, glm::vec2) override {
+            if (button == GLFW_MOUSE_BUTTON_LEFT) {
+                seen.mouseDown.push_back(scene()->system<GameSystem>().frame());
+            }
+        }
+        Seen& seen;
+    };
+    Game game;
+    addScene(
+        game, "A", [&](core::Scene& s) { s.createGameObject().addComponent<KeyLog>(seen); },
+        [&](core::Scene& s) {
+            const input::ActionMap& a = gameOf(s).actions();
+            const std::int64_t f = gameOf(s).frame();
+            if (a.pressed("jump")) {
+                seen.jumpPressed.push_back(f);
+            }
+            if (a.held("jump")) {
+                seen.jumpHeld.push_back(f);
+            }
+            if (a.released("jump")) {
+                seen.jumpReleased.push_back(f);
+            }
+        });
+    const std::filesystem::path dir = tempDir();
+    const std::filesystem::path script =
+        writeFile(dir / "run.txt", "# jump from frame 2 to 5, tap A at 7, click at 3\n2 press jump\n5 release jump\n"
+                                   "7 tap key:a\n3 tap fire\n");
+    const std::string config = writeConfig("A", "bindingsFile = " + (kData / "bindings.txt").string() + "\n").string();
+    const GameRun r = run(game, {"--config", config, "--frames", "10", "--input-script", script.string()});
+    ASSERT_EQ(r.code, 0) << r.all();
+    EXPECT_EQ(seen.jumpPressed, (std::vector<std::int64_t>{2}));
+    EXPECT_EQ(seen.jumpHeld, (std::vector<std::int64_t>{2, 3, 4}));
+    EXPECT_EQ(seen.jumpReleased, (std::vector<std::int64_t>{5}));
+    EXPECT_EQ(seen.keyDown, (std::vector<std::int64_t>{7}));
+    EXPECT_EQ(seen.keyUp, (std::vector<std::int64_t>{8}));
+    EXPECT_EQ(seen.mouseDown, (std::vector<std::int64_t>{3}));
+}
+
+TEST(Game, InputScriptErrorsNameTheLine) {
+    Game game;
+    addScene(game, "A", {});
+    const std::filesystem::path dir = tempDir();
+    const std::string config = writeConfig("A", "bindingsFile = " + (kData / "bindings.txt").string() + "\n").string();
+    const auto errorOf = [&](const std::string& text) {
+        const std::filesystem::path script = writeFile(dir / "bad.txt", text);
+        const GameRun r = run(game, {"--config", config, "--frames", "2", "--input-script", script.string()});
+        EXPECT_EQ(r.code, 2) << text;
+        return r.all();
+    };
+    const std::string bad = (dir / "bad.txt").string();
+    EXPECT_THAT(errorOf("0 press jump\n1 push jump\n"), HasSubstr(bad + ":2: expected press, release or tap, got 'push'"));
+    EXPECT_THAT(errorOf("\n4 press dance\n"),
+                HasSubstr(bad + ":2: 'dance' is not an action of the game (nor a binding such as key:space)"));
+    EXPECT_THAT(errorOf("4 press padonly\n"),
+                HasSubstr(bad + ":1: action 'padonly' has no keyboard or mouse-button binding to press"));
+    EXPECT_THAT(errorOf("4 press key:nokey\n"), HasSubstr(bad + ":1: input::parseBinding(): unknown key name"));
+    EXPECT_THAT(errorOf("4 press button:a\n"), HasSubstr(bad + ":1: 'button:a': only key: and mouse: bindings"));
+    const GameRun missing = run(game, {"--config", config, "--input-script", (dir / "none.txt").string()});
+    EXPECT_EQ(missing.code, 2);
+    EXPECT_EQ(missing.count("none.txt: cannot read the input script"), 1) << missing.all();
+}
+
+// --- Fixed steps and interpolation ---------------------------------------------------------
+
+TEST(Game, BodiesAreDrawnBetweenTheirLastTwoStatesSoConstantSpeedLooksEven) {
+    // Steps of 1/30 s, frames of 1/60 s: a step every other frame. A kinematic body moving at
+    // 30 units/s jumps 1 unit per step; drawn interpolated it moves 0.5 units every frame.
+    struct Sample {
+        float object = 0.0f;
+        float drawn = 0.0f;
+    };
+    std::vector<Sample> samples;
+    struct Probe : core::Component, render::RenderHook {
+        explicit Probe(std::vector<Sample>& s) : samples(s) {}
+        void onInitialize() override { scene()->system<render::RenderSystem>().addHook(*this); }
+        void onTerminate() override { scene()->system<render::RenderSystem>().removeHook(*this); }
+        void beforeRender(render::Renderer& renderer) override {
+            const auto* sprite = gameObject()->getComponent<render::SpriteRenderer>();
+            samples.push_back({gameObject()->worldPosition().x, renderer.sprite(sprite->sprite()).position.x});
+        }
+        std::vector<Sample>& samples;
+    };
+    Game game;
+    addScene(game, "A", [&](core::Scene& s) {
+        core::GameObject& o = s.createGameObject();
+        render::SpriteRendererDef sprite;
+        sprite.size = {4.0f, 4.0f};
+        o.addComponent<render::SpriteRenderer>(sprite);
+        physics::RigidbodyDef body;
+        body.type = physics::BodyType::Kinematic;
+        body.linearVelocity = {30.0f, 0.0f};
+        o.addComponent<physics::Rigidbody>(body);
+        o.addComponent<Probe>(samples);
+    });
+    const GameRun r = run(game, {"--config", writeConfig("A", "fixedTimestep = 0.0333333333333333\ngravityY = 0\n").string(),
+                             "--frames", "40"});
+    ASSERT_EQ(r.code, 0) << r.all();
+    ASSERT_EQ(samples.size(), 40u);
+    EXPECT_EQ(game.profile().fixedSteps, 20);
+    int objectMoves = 0;
+    for (std::size_t i = 4; i < samples.size(); ++i) {
+        // Drawn: even half-unit steps every frame; the object itself: a whole unit every other
+        // frame. Drawn one step behind the physics state, at most.
+        EXPECT_NEAR(samples[i].drawn - samples[i - 1].drawn, 0.5f, 1e-3f) << i;
+        const float objectStep = samples[i].object - samples[i - 1].object;
+        EXPECT_TRUE(std::abs(objectStep) < 1e-4f || std::abs(objectStep - 1.0f) < 1e-3f) << i << " " << objectStep;
+        objectMoves += objectStep > 0.5f ? 1 : 0;
+        EXPECT_LE(samples[i].drawn, samples[i].object + 1e-4f);
+        EXPECT_GE(samples[i].drawn, samples[i].object - 1.0f - 1e-4f);
+    }
+    EXPECT_EQ(objectMoves, 18);
+}
+
+TEST(Game, AFrameTimeSpikeIsClampedAndCounted) {
+    Game game;
+    addScene(game, "A", {}, [](core::Scene& s) {
+        const std::int64_t f = gameOf(s).frame();
+        if (f == 3) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(400));
+        }
+        if (f == 6) {
+            gameOf(s).terminateGame();
+        }
+    });
+    // Not headless (no --frames): real frame times.
+    const GameRun r = run(game, {"--config", writeConfig("A", "maxFrameTime = 0.2\nmaxStepsPerFrame = 20\nvsync = false\n")
+                                             .string()});
+    ASSERT_EQ(r.code, 0) << r.all();
+    EXPECT_GE(game.profile().spikes, 1);
+    // 7 frames, one of them 0.4 s counted as 0.2 s: at most 0.2 s + 6 ordinary frames of steps.
+    EXPECT_EQ(game.profile().frames, 7);
+    EXPECT_GE(game.profile().fixedSteps, 12); // 0.2 s at 60 Hz
+    EXPECT_GT(game.profile().maxFrameMs, 350.0);
+}
+
+// --- Physics debug draw ----------------------------------------------------------------------
+
+int debugGreenPixels(const std::vector<std::string>& extraArgs, const std::string& configExtra) {
+    Game game;
+    addScene(game, "A", [](core::Scene& s) {
+        core::GameObject& ground = s.createGameObject();
+        ground.setPosition(glm::vec2{0.0f, -20.0f});
+        ground.addComponent<physics::Collider>(physics::ShapeGeometry{physics::makeBox(50.0f, 10.0f)});
+    });
+    const std::filesystem::path shot = tempDir() / "debug.png";
+    std::vector<std::string> args{"--config", writeConfig("A", configExtra).string(), "--frames", "5", "--screenshot",
+                                  shot.string()};
+    args.insert(args.end(), extraArgs.begin(), extraArgs.end());
+    const GameRun r = run(game, args);
+    EXPECT_EQ(r.code, 0) << r.all();
+    // The static shapes' outline colour (0.3, 0.9, 0.35).
+    return countColour(render::loadImage(shot), 77, 230, 89, 12);
+}
+
+TEST(Game, PhysicsDebugDrawIsToggledByFlagConfigAndKey) {
+    const int off = debugGreenPixels({}, "");
+    EXPECT_EQ(off, 0);
+    // The outline of a 100 x 20 box, 2 px wide, half of it under its AABB's 1 px red outline:
+    // about 2 * (100 + 20) green pixels.
+    const int flag = debugGreenPixels({"--debug-draw"}, "");
+    EXPECT_GT(flag, 200);
+    EXPECT_LT(flag, 300);
+    EXPECT_EQ(debugGreenPixels({}, "debugDraw = true\n"), flag);
+    const std::filesystem::path script = writeFile(tempDir() / "toggle.txt", "1 tap key:f1\n");
+    EXPECT_EQ(debugGreenPixels({"--input-script", script.string()}, ""), flag);
+    // Pressed twice: off again.
+    const std::filesystem::path twice = writeFile(tempDir() / "twice.txt", "1 tap key:f1\n3 tap key:f1\n");
+    EXPECT_EQ(debugGreenPixels({"--input-script", twice.string()}, ""), 0);
+    // Another key, by config.
+    const std::filesystem::path tab = writeFile(tempDir() / "tab.txt", "1 tap key:tab\n");
+    EXPECT_EQ(debugGreenPixels({"--input-script", tab.string()}, "debugDrawKey = tab\n"), flag);
+}
+
+// --- Game objects: name, tag, active; mouse positions in world units ---------------------------
+
+TEST(Game, InactiveObjectsAreNeitherUpdatedNorDrawnAndObjectsAreFoundByNameAndTag) {
+    struct Counter : core::Component {
+        explicit Counter(int& n) : count(n) {}
+        void update(double) override { ++count; }
+        int& count;
+    };
+    int activeUpdates = 0;
+    int inactiveUpdates = 0;
+    Game game;
+    addScene(
+        game, "A",
+        [&](core::Scene& s) {
+            const auto square = [&](const char* name, glm::vec2 at, render::Color colour, int& counter) {
+                core::GameObject& o = s.createGameObject();
+                o.setName(name);
+                o.setTag("square");
+                o.setPosition(at);
+                render::SpriteRendererDef def;
+                def.size = {20.0f, 20.0f};
+                def.tint = colour;
+                o.addComponent<render::SpriteRenderer>(def);
+                o.addComponent<Counter>(counter);
+            };
+            square("green", {-40.0f, 0.0f}, {0, 255, 0, 255}, activeUpdates);
+            square("blue", {40.0f, 0.0f}, {0, 0, 255, 255}, inactiveUpdates);
+            EXPECT_EQ(s.findByTag("square").size(), 2u);
+            s.findByName("blue")->setActive(false);
+        },
+        [&](core::Scene& s) { EXPECT_EQ(s.findFirstByTag("square"), s.findByName("green")); });
+    const std::filesystem::path shot = tempDir() / "active.png";
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "5", "--screenshot", shot.string()});
+    ASSERT_EQ(r.code, 0) << r.all();
+    EXPECT_EQ(activeUpdates, 5);
+    EXPECT_EQ(inactiveUpdates, 0);
+    const render::Image image = render::loadImage(shot);
+    EXPECT_EQ(countColour(image, 0, 255, 0, 0), 400);
+    EXPECT_EQ(countColour(image, 0, 0, 255, 0), 0);
+}
+
+TEST(Game, MouseEventsCarryWorldPositionsThroughTheActiveCamera) {
+    std::vector<glm::vec2> world;
+    struct Mouse : core::Component {
+        explicit Mouse(std::vector<glm::vec2>& w) : seen(w) {}
+        void onMouseMove(glm::vec2, glm::vec2 at) override { seen.push_back(at); }
+        std::vector<glm::vec2>& seen;
+    };
+    Game game;
+    addScene(
+        game, "A",
+        [&](core::Scene& s) {
+            s.createGameObject().addComponent<Mouse>(world);
+            gameOf(s).renderSystem().camera().setPosition({100.0f, 50.0f});
+        },
+        [](core::Scene& s) {
+            // As GLFW's cursor callback would: window pixels from the top-left corner.
+            if (gameOf(s).frame() == 1) {
+                gameOf(s).input().handleCursorPos(0.0, 0.0);
+            }
+            if (gameOf(s).frame() == 2) {
+                gameOf(s).input().handleCursorPos(120.0, 90.0);
+            }
+        });
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "4"});
+    ASSERT_EQ(r.code, 0) << r.all();
+    // 160 x 120 window showing the 160 x 120 reference around (100, 50): the top-left corner
+    // is (20, 110); (120, 90) from the top-left is (40, -30) from the centre, y up.
+    ASSERT_EQ(world.size(), 2u);
+    EXPECT_NEAR(world[0].x, 20.0f, 1e-3f);
+    EXPECT_NEAR(world[0].y, 110.0f, 1e-3f);
+    EXPECT_NEAR(world[1].x, 140.0f, 1e-3f);
+    EXPECT_NEAR(world[1].y, 20.0f, 1e-3f);
+}
+
+// --- What scenes reach -----------------------------------------------------------------------
+
+TEST(Game, GameSystemGivesTheConfigAssetsAndEverySubsystem) {
+    Game game;
+    bool checked = false;
+    const std::filesystem::path config = writeConfig("A", "unitsPerMetre = 32\nfontSize = 20\n");
+    addScene(game, "A", [&](core::Scene& s) {
+        GameSystem& g = gameOf(s);
+        EXPECT_EQ(g.config().fontSize, 20);
+        EXPECT_EQ(g.unitsPerMetre(), 32.0);
+        EXPECT_EQ(g.config().file, config);
+        EXPECT_EQ(g.asset("images/a.png"), config.parent_path() / "images/a.png");
+        EXPECT_EQ(g.asset("/abs/b.png"), std::filesystem::path("/abs/b.png"));
+        EXPECT_EQ(g.window().size(), glm::ivec2(160, 120));
+        EXPECT_FALSE(g.window().visible());
+        EXPECT_EQ(&g.renderer(), &g.renderSystem().renderer());
+        EXPECT_NE(g.text().font(render::kDefaultFontPath, 12), nullptr);
+        EXPECT_FALSE(g.input().isKeyDown(GLFW_KEY_A));
+        EXPECT_EQ(g.mixer().voiceCount(), 32);
+        EXPECT_FLOAT_EQ(g.world().gravity().y, static_cast<float>(core::Config{}.gravityY / 32.0));
+        EXPECT_FALSE(g.debugDraw());
+        g.setDebugDraw(true);
+        EXPECT_TRUE(g.debugDraw());
+        checked = true;
+    });
+    const GameRun r = run(game, {"--config", config.string(), "--frames", "2"});
+    ASSERT_EQ(r.code, 0) << r.all();
+    EXPECT_TRUE(checked);
+}
+
+} // namespace
