@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <e2d/engine/debug_colors.hpp>
+
 namespace e2d::physics {
 class World;
 }
@@ -11,17 +13,7 @@ class Drawer;
 
 namespace e2d::engine::detail {
 
-/// Colours of the physics debug draw (RGBA in [0, 1]).
-struct DebugDrawColors {
-    static constexpr float kDynamic[4] = {0.95f, 0.75f, 0.2f, 1.0f};  ///< awake dynamic bodies
-    static constexpr float kSleeping[4] = {0.55f, 0.55f, 0.55f, 1.0f}; ///< sleeping ones
-    static constexpr float kStatic[4] = {0.3f, 0.9f, 0.35f, 1.0f};
-    static constexpr float kKinematic[4] = {0.35f, 0.6f, 1.0f, 1.0f};
-    static constexpr float kSensor[4] = {0.9f, 0.3f, 0.9f, 1.0f};
-    static constexpr float kAabb[4] = {1.0f, 0.2f, 0.2f, 0.6f};
-    static constexpr float kContact[4] = {1.0f, 0.1f, 0.1f, 1.0f};
-    static constexpr float kNormal[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-};
+using engine::DebugDrawColors;
 
 /// Draws the shapes (outlines, by body type), their AABBs, the touching contact points and
 /// their normals of every shape visible through `camera`, in world units
