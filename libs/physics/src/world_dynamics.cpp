@@ -401,7 +401,8 @@ void World::setTargetTransform(BodyId id, Vec2 position, float angle, float time
     check::requirePosition("setTargetTransform", "position", position);
     check::requireFinite("setTargetTransform", "angle", angle);
     if (!(isFinite(timeStep) && timeStep > 0.0f)) {
-        check::fail("setTargetTransform", "timeStep must be finite and > 0, got " + check::text(timeStep));
+        check::fail("setTargetTransform",
+                    "timeStep must be finite and > 0, got " + check::text(timeStep));
     }
     const detail::Body& b = w.body(index);
     if (b.type == BodyType::Static) {
