@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Remakes the README gallery of the seed's demos: each app's own --screenshot, headless.
+# Remakes the README gallery of the seed's demos and the platformer: each app's own --screenshot, headless.
 #   apps/screenshots.sh [build dir, default build/dev]
 # Writes docs/screenshots/<app>.png. Needs the apps built (ninja -C <build dir> e2d_<app>).
 set -euo pipefail
@@ -20,3 +20,4 @@ shoot audio1 --frames 60
 shoot audio2 --frames 60
 shoot physics1 --frames 75 --input-script "$root/apps/physics1/tests/gallery.script"
 shoot physics2 --frames 150
+shoot platformer --frames 120 --input-script "$root/apps/platformer/tests/win.script"

@@ -395,4 +395,28 @@ void World::forEachTouchingContact(FunctionRef<void(const ContactData&)> callbac
     }
 }
 
+void World::setTargetTransform(BodyId id, Vec2 position, float angle, float timeStep) {
+    Impl& w = *impl_;
+    const int index = w.require(id, "setTargetTransform");
+    check::requirePosition("setTargetTransform", "position", position);
+    check::requireFinite("setTargetTransform", "angle", angle);
+    if (!(isFinite(timeStep) && timeStep > 0.0f)) {
+        check::fail("setTargetTransform",
+                    "timeStep must be finite and > 0, got " + check::text(timeStep));
+    }
+    const detail::Body& b = w.body(index);
+    if (b.type == BodyType::Static) {
+        check::fail("setTargetTransform", "the body is static (it never moves)");
+    }
+    // The linear velocity is the centre of mass's: aim the centre at where it is at the target.
+    const Transform target{position, Rot::fromAngle(angle)};
+    const Vec2 from = transformPoint(b.transform, b.motion.localCenter);
+    const Vec2 to = transformPoint(target, b.motion.localCenter);
+    float turn = angle - b.transform.q.angle();
+    constexpr float kPi = 3.14159265358979f;
+    turn = std::remainder(turn, 2.0f * kPi);
+    setLinearVelocity(id, (to - from) / timeStep);
+    setAngularVelocity(id, b.motion.fixedRotation ? 0.0f : turn / timeStep);
+}
+
 } // namespace e2d::physics

@@ -290,6 +290,13 @@ public:
     [[nodiscard]] float angularVelocity(BodyId id) const;
     /// radians/s, finite.
     void setAngularVelocity(BodyId id, float velocity);
+    /// Sets the velocities that carry the body's origin to `position` (metres, finite, within
+    /// kHuge) and its rotation to `angle` (radians, finite; the short way round) in `timeStep`
+    /// seconds (finite, > 0): how a kinematic body follows a path (a moving platform, a door)
+    /// while pushing and carrying what touches it, which setTransform() (a teleport) does not.
+    /// Call it before each step with that step's time. Kinematic and dynamic bodies; throws
+    /// core::Error for a static one.
+    void setTargetTransform(BodyId id, Vec2 position, float angle, float timeStep);
     [[nodiscard]] std::uint64_t bodyUserData(BodyId id) const;
     void setBodyUserData(BodyId id, std::uint64_t userData);
     [[nodiscard]] bool isBodyEnabled(BodyId id) const;

@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "player_controller.hpp"
+
+#include <e2d/physics/world.hpp>
+
+#include <glm/vec2.hpp>
+
+#include <vector>
+
+/// The platformer's one level and its rules, on a physics::World and nothing else (no window,
+/// no sound, no input device), so the whole game can be played by a test at the fixed step.
+/// Metres, seconds, y up. The scenes (scenes.cpp) draw it, play its sounds and feed it input.
+///
+/// Layout, left to right: the start ground with a coin, a spike pit to jump over, a lift (a
+/// kinematic platform going up and down) in front of a cliff too high to jump, a coin in the
+/// lift's shaft, the upper ledge with a one-way platform (jump up through it, land on it) and a
+/// coin on it, a shuttle sliding left and right above the end of the ledge to a bonus coin, and
+/// the goal flag before the end wall.
+namespace platformer {
+
+/// An axis-aligned rectangle, metres.
+struct Box {
+    glm::vec2 center{0.0f, 0.0f};
+    glm::vec2 half{0.0f, 0.0f};
+};
+
+struct Coin {
+    glm::vec2 position{0.0f, 0.0f};
+    bool collected = false;
+    e2d::physics::ShapeId shape{};
+};
+
+/// A kinematic platform following a timetable: it waits `dwell` seconds at `from`, travels to
+/// `to` in `travel` seconds, waits there, travels back; `phase` seconds of that cycle have passed
+/// at level time 0.
+struct MovingPlatform {
+    glm::vec2 half{1.5f, 0.2f};
+    glm::vec2 from{0.0f, 0.0f};
+    glm::vec2 to{0.0f, 0.0f};
+    float dwell = 2.0f;
+    float travel = 2.5f;
+    float phase = 0.0f;
+    /// Solid from above only, like the one-way platform. Default false.
+    bool oneWay = false;
+    e2d::physics::BodyId body{};
+    /// Where the timetable puts the platform's centre at level time `t`.
+    [[nodiscard]] glm::vec2 positionAt(double t) const;
+};
+
+/// What happened in the last fixed step, for sounds and effects.
+struct StepEvents {
+    int coinsCollected = 0;
+    bool jumped = false;
+    bool landed = false;
+    bool died = false;
+    bool won = false;
+};
+
+class Level {
+public:
+    /// Builds the level into `world` (gravity, terrain chain, platforms, sensors, the player) and
+    /// installs the world's pre-solve callback for the one-way platform. The level must outlive
+    /// nothing it built: its destructor destroys its bodies (those still valid) and removes the
+    /// callback.
+    explicit Level(e2d::physics::World& world, const PlayerTuning& tuning = {});
+    ~Level();
+    Level(const Level&) = delete;
+    Level& operator=(const Level&) = delete;
+
+    /// One fixed step before World::step(): reads the sensor events of the world's last step
+    /// (coins, hazards, goal), moves the platforms along their timetables, and sets the player's
+    /// velocity from `input`. Does nothing more once the player won or died.
+    void fixedUpdate(const PlayerInput& input, float dt);
+
+    // State --------------------------------------------------------------------------------
+    [[nodiscard]] double time() const noexcept { return time_; }
+    [[nodiscard]] int score() const noexcept { return score_; }
+    [[nodiscard]] int coinCount() const noexcept { return static_cast<int>(coins_.size()); }
+    [[nodiscard]] bool won() const noexcept { return won_; }
+    [[nodiscard]] bool dead() const noexcept { return dead_; }
+    [[nodiscard]] const StepEvents& events() const noexcept { return events_; }
+    [[nodiscard]] glm::vec2 playerPosition() const;
+    [[nodiscard]] glm::vec2 playerVelocity() const;
+    [[nodiscard]] bool grounded() const noexcept { return grounded_; }
+    [[nodiscard]] int facing() const noexcept { return controller_.facing(); }
+    [[nodiscard]] int jumps() const noexcept { return jumps_; }
+    /// Steps the player stood on a moving platform, and on the one-way platform.
+    [[nodiscard]] int stepsOnMovingPlatform() const noexcept { return stepsOnMoving_; }
+    [[nodiscard]] int stepsOnOneWay() const noexcept { return stepsOnOneWay_; }
+
+    // Layout, for drawing -----------------------------------------------------------------
+    [[nodiscard]] static glm::vec2 playerHalfSize() noexcept { return {0.35f, 0.6f}; }
+    [[nodiscard]] const std::vector<glm::vec2>& terrain() const noexcept { return terrain_; }
+    [[nodiscard]] const std::vector<Coin>& coins() const noexcept { return coins_; }
+    [[nodiscard]] const std::vector<Box>& hazards() const noexcept { return hazards_; }
+    [[nodiscard]] const std::vector<MovingPlatform>& platforms() const noexcept { return platforms_; }
+    [[nodiscard]] glm::vec2 platformPosition(std::size_t index) const;
+    [[nodiscard]] const Box& oneWay() const noexcept { return oneWay_; }
+    [[nodiscard]] const Box& goal() const noexcept { return goal_; }
+    /// The lowest y the player may reach before falling out of the world counts as death.
+    [[nodiscard]] static float killPlaneY() noexcept { return -12.0f; }
+
+private:
+    void readSensorEvents();
+    void movePlatforms(float dt);
+    void probeGround();
+
+    e2d::physics::World& world_;
+    PlayerController controller_;
+    std::vector<e2d::physics::BodyId> bodies_;
+    std::vector<glm::vec2> terrain_;
+    std::vector<Coin> coins_;
+    std::vector<Box> hazards_;
+    std::vector<e2d::physics::ShapeId> hazardShapes_;
+    std::vector<MovingPlatform> platforms_;
+    Box oneWay_;
+    Box goal_;
+    e2d::physics::ShapeId oneWayShape_{};
+    std::vector<e2d::physics::ShapeId> oneWayShapes_; // the platform and the shuttle
+    e2d::physics::ShapeId goalShape_{};
+    e2d::physics::BodyId player_{};
+    e2d::physics::ShapeId playerShape_{};
+    StepEvents events_;
+    double time_ = 0.0;
+    int score_ = 0;
+    int jumps_ = 0;
+    int stepsOnMoving_ = 0;
+    int stepsOnOneWay_ = 0;
+    bool grounded_ = false;
+    bool won_ = false;
+    bool dead_ = false;
+    glm::vec2 groundVelocity_{0.0f, 0.0f};
+    bool onMoving_ = false;
+    bool onOneWay_ = false;
+};
+
+} // namespace platformer

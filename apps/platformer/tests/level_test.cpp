@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: MIT
+// The platformer's level played by scripts at the fixed step, on a bare physics::World: the same
+// rules the game runs, without window, sound or input devices.
+#include "level.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+namespace {
+
+using platformer::Level;
+using platformer::PlayerController;
+using platformer::PlayerInput;
+
+constexpr float kDt = 1.0f / 60.0f;
+
+// A timeline of held inputs: from `time` on (seconds), `move` and `jump` hold until the next entry.
+struct Hold {
+    double time = 0.0;
+    float move = 0.0f;
+    bool jump = false;
+};
+
+struct Outcome {
+    bool won = false;
+    bool dead = false;
+    int score = 0;
+    int jumps = 0;
+    int stepsOnMoving = 0;
+    int stepsOnOneWay = 0;
+    int coinEvents = 0;
+    double time = 0.0;
+    float maxY = -1e9f;
+    glm::vec2 end{0.0f, 0.0f};
+};
+
+Outcome play(const std::vector<Hold>& script, double limit, double timeOffset = 0.0) {
+    e2d::physics::World world;
+    Level level(world);
+    Outcome run;
+    bool jumpWasHeld = false;
+    for (int i = 0; i < static_cast<int>(limit / kDt); ++i) {
+        const double t = i * kDt + timeOffset;
+        Hold now;
+        for (const Hold& h : script) {
+            if (h.time <= t + 1e-9) {
+                now = h;
+            }
+        }
+        PlayerInput input;
+        input.move = now.move;
+        input.jumpHeld = now.jump;
+        input.jumpPressed = now.jump && !jumpWasHeld;
+        jumpWasHeld = now.jump;
+        level.fixedUpdate(input, kDt);
+        run.coinEvents += level.events().coinsCollected;
+        if (level.won() || level.dead()) {
+            break;
+        }
+        world.step(kDt);
+        run.maxY = std::max(run.maxY, level.playerPosition().y);
+        if (std::getenv("TRACE") && i % 6 == 0) {
+            std::printf("t=%.2f p=(%.2f,%.2f) v=(%.2f,%.2f) g=%d lift=%.2f score=%d\n", t,
+                        level.playerPosition().x, level.playerPosition().y,
+                        level.playerVelocity().x, level.playerVelocity().y, level.grounded(),
+                        level.platformPosition(0).y, level.score());
+            std::printf("   shuttle x=%.2f\n", level.platformPosition(1).x);
+        }
+    }
+    run.won = level.won();
+    run.dead = level.dead();
+    run.score = level.score();
+    run.jumps = level.jumps();
+    run.stepsOnMoving = level.stepsOnMovingPlatform();
+    run.stepsOnOneWay = level.stepsOnOneWay();
+    run.time = level.time();
+    run.end = level.playerPosition();
+    return run;
+}
+
+// Hold right; jump over the spike pit, onto the lift, and under the one-way platform.
+// The winning run, then the bonus: stop on the one-way platform under the shuttle, jump up
+// through it while it waits, ride it to the bonus coin and back, run off it onto the goal.
+std::vector<Hold> bonusScript(double shift = 0.0) {
+    return {{0.0, 1.0f, false},          {0.55, 1.0f, true},          {0.95, 1.0f, false},
+            {1.6, 1.0f, true},           {2.0, 1.0f, false},          {5.75, 1.0f, true},
+            {6.25, 1.0f, false},         {6.55 + shift, 0.0f, false}, {7.2 + shift, 0.0f, true},
+            {7.6 + shift, 0.0f, false}, {14.4 + shift, 1.0f, false}};
+}
+
+std::vector<Hold> winningScript(double shift = 0.0) {
+    return {{0.0, 1.0f, false},         {0.55 + shift, 1.0f, true}, {0.95 + shift, 1.0f, false},
+            {1.6 + shift, 1.0f, true},  {2.0 + shift, 1.0f, false}, {5.75 + shift, 1.0f, true},
+            {6.25 + shift, 1.0f, false}};
+}
+
+TEST(PlatformerLevel, ScriptedRunCollectsEveryCoinRidesTheLiftAndReachesTheGoal) {
+    Outcome run = play(winningScript(), 20.0);
+    EXPECT_TRUE(run.won);
+    EXPECT_FALSE(run.dead);
+    EXPECT_EQ(run.score, 3);
+    EXPECT_EQ(run.coinEvents, 3); // each coin counted once
+    EXPECT_GT(run.stepsOnMoving, 30); // stood on the lift while it rose
+    EXPECT_GT(run.stepsOnOneWay, 5);  // jumped up through the one-way platform and landed on it
+    EXPECT_GT(run.maxY, 8.0f + Level::playerHalfSize().y - 0.05f);
+    EXPECT_EQ(run.jumps, 3);
+}
+
+TEST(PlatformerLevel, TheShuttleCarriesThePlayerToTheBonusCoin) {
+    for (double shift : {-0.05, 0.0, 0.05}) {
+        Outcome run = play(bonusScript(shift), 20.0);
+        EXPECT_TRUE(run.won) << "shift " << shift;
+        EXPECT_EQ(run.score, 4) << "shift " << shift;
+        EXPECT_EQ(run.jumps, 4) << "shift " << shift;
+        // Stood on the shuttle (top at 10 m).
+        EXPECT_GT(run.maxY, 10.0f + Level::playerHalfSize().y - 0.05f) << "shift " << shift;
+    }
+}
+
+TEST(PlatformerLevel, TheWinningScriptToleratesItsJumpsComingAFewFramesEarlyOrLate) {
+    for (double shift : {-0.1, -0.05, 0.05, 0.1}) {
+        Outcome run = play(winningScript(shift), 20.0);
+        EXPECT_TRUE(run.won) << "shift " << shift;
+        EXPECT_EQ(run.score, 3) << "shift " << shift;
+    }
+}
+
+TEST(PlatformerLevel, RunningRightWithoutJumpingEndsOnTheSpikes) {
+    Outcome run = play({{0.0, 1.0f, false}}, 10.0);
+    EXPECT_TRUE(run.dead);
+    EXPECT_FALSE(run.won);
+    EXPECT_EQ(run.score, 1); // the coin on the start ground
+    EXPECT_GT(run.end.x, 6.0f);
+    EXPECT_LT(run.end.x, 9.0f);
+    EXPECT_LT(run.end.y, -1.0f);
+}
+
+TEST(PlatformerLevel, StandingStillNothingHappens) {
+    Outcome run = play({}, 5.0);
+    EXPECT_FALSE(run.dead);
+    EXPECT_FALSE(run.won);
+    EXPECT_EQ(run.score, 0);
+    EXPECT_NEAR(run.end.x, 1.0f, 1e-3f);
+    EXPECT_NEAR(run.end.y, Level::playerHalfSize().y, 0.03f);
+}
+
+TEST(PlatformerLevel, TheOneWayPlatformHoldsFromAboveOnly) {
+    // Without a jump under it the player walks under the one-way platform (never on it).
+    std::vector<Hold> script = winningScript();
+    script.resize(5);
+    Outcome run = play(script, 20.0);
+    EXPECT_TRUE(run.won);
+    EXPECT_EQ(run.stepsOnOneWay, 0);
+    EXPECT_LT(run.maxY, 7.9f);
+    EXPECT_EQ(run.score, 2); // the coin on top of it is missed
+}
+
+TEST(PlatformerLevel, TheLiftFollowsItsTimetable) {
+    e2d::physics::World world;
+    Level level(world);
+    const platformer::MovingPlatform& lift = level.platforms().at(0);
+    for (int i = 0; i < 900; ++i) {
+        level.fixedUpdate({}, kDt);
+        world.step(kDt);
+        const glm::vec2 expected = lift.positionAt((i + 1) * kDt);
+        ASSERT_NEAR(level.platformPosition(0).x, expected.x, 1e-3f) << i;
+        ASSERT_NEAR(level.platformPosition(0).y, expected.y, 1e-3f) << i;
+    }
+    // The timetable: waits at `from`, arrives at `to` after dwell + travel, back after a cycle.
+    EXPECT_EQ(lift.positionAt(0.0), lift.from);
+    EXPECT_EQ(lift.positionAt(lift.dwell + lift.travel + 0.01), lift.to);
+    const double cycle = 2.0 * (lift.dwell + lift.travel);
+    EXPECT_EQ(lift.positionAt(cycle + 0.01), lift.from);
+}
+
+// The controller's timers on their own.
+TEST(PlayerController, CoyoteTimeAllowsAJumpJustAfterLeavingTheGround) {
+    PlayerController c;
+    c.step({}, {0, 0}, true, {0, 0}, kDt);
+    // Three steps (0.05 s) in the air, then jump: still allowed.
+    for (int i = 0; i < 3; ++i) {
+        c.step({}, {0, -1}, false, {0, 0}, kDt);
+    }
+    auto step = c.step({0.0f, true, true}, {0, -1}, false, {0, 0}, kDt);
+    EXPECT_TRUE(step.jumped);
+    EXPECT_FLOAT_EQ(step.velocity.y, c.tuning().jumpSpeed);
+
+    PlayerController late;
+    late.step({}, {0, 0}, true, {0, 0}, kDt);
+    for (int i = 0; i < 9; ++i) { // 0.15 s: past the 0.1 s coyote time
+        late.step({}, {0, -1}, false, {0, 0}, kDt);
+    }
+    EXPECT_FALSE(late.step({0.0f, true, true}, {0, -1}, false, {0, 0}, kDt).jumped);
+}
+
+TEST(PlayerController, AJumpPressedJustBeforeLandingHappensOnLanding) {
+    PlayerController c;
+    for (int i = 0; i < 30; ++i) {
+        c.step({}, {0, -5}, false, {0, 0}, kDt);
+    }
+    EXPECT_FALSE(c.step({0.0f, true, true}, {0, -5}, false, {0, 0}, kDt).jumped);
+    EXPECT_FALSE(c.step({0.0f, false, true}, {0, -5}, false, {0, 0}, kDt).jumped);
+    EXPECT_TRUE(c.step({0.0f, false, true}, {0, 0}, true, {0, 0}, kDt).jumped);
+
+    PlayerController early;
+    for (int i = 0; i < 30; ++i) {
+        early.step({}, {0, -5}, false, {0, 0}, kDt);
+    }
+    early.step({0.0f, true, true}, {0, -5}, false, {0, 0}, kDt);
+    for (int i = 0; i < 10; ++i) { // 0.17 s: past the 0.12 s buffer
+        early.step({0.0f, false, true}, {0, -5}, false, {0, 0}, kDt);
+    }
+    EXPECT_FALSE(early.step({0.0f, false, true}, {0, 0}, true, {0, 0}, kDt).jumped);
+}
+
+TEST(PlayerController, NoSecondJumpInTheAirAndReleasingJumpCutsTheRise) {
+    PlayerController c;
+    auto first = c.step({0.0f, true, true}, {0, 0}, true, {0, 0}, kDt);
+    ASSERT_TRUE(first.jumped);
+    EXPECT_FALSE(c.step({0.0f, true, true}, first.velocity, false, {0, 0}, kDt).jumped);
+    auto cut = c.step({0.0f, false, false}, {0, 8}, false, {0, 0}, kDt);
+    EXPECT_FLOAT_EQ(cut.velocity.y, 8.0f * c.tuning().jumpCut);
+}
+
+TEST(PlayerController, StandingOnAMovingPlatformCarriesThePlayer) {
+    PlayerController c;
+    glm::vec2 v{0, 0};
+    for (int i = 0; i < 60; ++i) {
+        v = c.step({}, v, true, {2.0f, 0.0f}, kDt).velocity;
+    }
+    EXPECT_FLOAT_EQ(v.x, 2.0f);
+    for (int i = 0; i < 60; ++i) {
+        v = c.step({1.0f, false, false}, v, true, {2.0f, 0.0f}, kDt).velocity;
+    }
+    EXPECT_FLOAT_EQ(v.x, 2.0f + c.tuning().runSpeed);
+    EXPECT_EQ(c.facing(), 1);
+}
+
+} // namespace
