@@ -3,13 +3,17 @@
 
 #include "generators.hpp"
 
+#include <e2d/physics/constants.hpp>
+
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <set>
 #include <sstream>
+#include <vector>
 
 namespace e2d::validation {
 namespace {
@@ -35,6 +39,51 @@ std::string typeName(const json& value) {
 
 std::string join(const std::string& path, const std::string& key) {
     return path.empty() ? key : path + "." + key;
+}
+
+// Edit distance (insertions, deletions, substitutions, each 1), for "did you mean".
+std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) {
+        row[j] = j;
+    }
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                              std::tolower(static_cast<unsigned char>(b[j - 1]));
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+// The candidate nearest to `word`, if it is near enough to be a typo of it; a candidate that
+// the word begins (a name cut short: "bounce" for "bounceHeight") comes first.
+std::string nearest(const std::string& word, const std::vector<std::string>& candidates) {
+    for (const std::string& c : candidates) {
+        if (word.size() >= 3 && c.size() > word.size() && c.compare(0, word.size(), word) == 0) {
+            return c;
+        }
+    }
+    std::string best;
+    std::size_t bestDistance = std::max<std::size_t>(2, word.size() / 3) + 1;
+    for (const std::string& c : candidates) {
+        const std::size_t d = editDistance(word, c);
+        if (d < bestDistance) {
+            best = c;
+            bestDistance = d;
+        }
+    }
+    return best;
+}
+
+std::string suggestion(const std::string& word, const std::vector<std::string>& candidates) {
+    const std::string near = nearest(word, candidates);
+    return near.empty() ? "" : " (did you mean \"" + near + "\"?)";
 }
 
 // One JSON object being read: every field read is remembered so that the fields nobody read
@@ -135,10 +184,34 @@ public:
         return number(key, fallback);
     }
 
+    // A required string naming a kind: missing, wrong type and unknown values each say so,
+    // an unknown value with the nearest valid one.
+    std::string choice(const std::string& key, const std::vector<std::string>& valid) {
+        const json* value = get(key);
+        std::string list;
+        for (std::size_t i = 0; i < valid.size(); ++i) {
+            list += (i == 0 ? "" : i + 1 == valid.size() ? " or " : ", ") + valid[i];
+        }
+        if (value == nullptr) {
+            fail(at(key), "required field is missing (one of " + list + ")");
+        }
+        if (!value->is_string()) {
+            fail(at(key), "expected a string, got " + typeName(*value));
+        }
+        const std::string got = value->get<std::string>();
+        if (std::find(valid.begin(), valid.end(), got) == valid.end()) {
+            fail(at(key), "expected " + list + ", got \"" + got + "\"" + suggestion(got, valid));
+        }
+        return got;
+    }
+
+    // Every field must have been read: the others are typos or fields of another kind of
+    // object; the message suggests the nearest field this object has.
     void finish() const {
+        const std::vector<std::string> known(used_.begin(), used_.end());
         for (auto it = value_.begin(); it != value_.end(); ++it) {
             if (!used_.contains(it.key())) {
-                fail(at(it.key()), "unknown field");
+                fail(at(it.key()), "unknown field" + suggestion(it.key(), known));
             }
         }
     }
@@ -161,6 +234,20 @@ public:
                                              : typeName(value)));
         }
         return {toNumber(value[0], path + "[0]"), toNumber(value[1], path + "[1]")};
+    }
+
+    // e2d refuses coordinates, sizes and densities beyond physics::kHuge; saying so here names
+    // the real limit instead of a confusing error from inside a run.
+    static void checkWithinE2d(float v, const std::string& path) {
+        if (std::abs(v) > physics::kHuge) {
+            fail(path, "must be within e2d's limit of " + show(physics::kHuge) +
+                           " (physics::kHuge: metres for positions and sizes, kg/m^2 for "
+                           "density), got " + show(v));
+        }
+    }
+    static void checkWithinE2d(glm::vec2 v, const std::string& path) {
+        checkWithinE2d(v.x, path + "[0]");
+        checkWithinE2d(v.y, path + "[1]");
     }
 
     static void checkAbove(float v, const std::string& path, float lo, bool strict) {
@@ -190,7 +277,7 @@ std::string indexed(const std::string& path, std::size_t i) {
 scenes::ShapeDesc parseShape(const json& value, const std::string& path) {
     Object o(value, path);
     scenes::ShapeDesc shape;
-    const std::string type = o.string("type", "");
+    const std::string type = o.choice("type", {"box", "polygon", "circle", "capsule", "segment"});
     shape.density = o.numberAbove("density", 1.0f, 0.0f, false);
     shape.friction = o.numberAbove("friction", 0.6f, 0.0f, false);
     shape.restitution = o.numberAbove("restitution", 0.0f, 0.0f, false);
@@ -238,8 +325,17 @@ scenes::ShapeDesc parseShape(const json& value, const std::string& path) {
             shape.radius = o.requireNumber("radius");
             Object::checkAbove(shape.radius, o.at("radius"), 0.0f, true);
         }
-    } else {
-        fail(o.at("type"), "expected box, polygon, circle, capsule or segment, got \"" + type + "\"");
+    }
+    Object::checkWithinE2d(shape.density, o.at("density"));
+    Object::checkWithinE2d(shape.radius, o.at("radius"));
+    if (shape.kind == scenes::ShapeKind::Box) {
+        Object::checkWithinE2d(shape.halfExtents, o.at("halfExtents"));
+    }
+    Object::checkWithinE2d(shape.center, o.at("center"));
+    Object::checkWithinE2d(shape.point1, o.at("point1"));
+    Object::checkWithinE2d(shape.point2, o.at("point2"));
+    for (std::size_t i = 0; i < shape.points.size(); ++i) {
+        Object::checkWithinE2d(shape.points[i], indexed(o.at("points"), i));
     }
     o.finish();
     return shape;
@@ -256,7 +352,8 @@ scenes::BodyKind parseBodyKind(Object& o) {
     if (type == "dynamic") {
         return scenes::BodyKind::Dynamic;
     }
-    fail(o.at("type"), "expected static, kinematic or dynamic, got \"" + type + "\"");
+    fail(o.at("type"), "expected static, kinematic or dynamic, got \"" + type + "\"" +
+                           suggestion(type, {"static", "kinematic", "dynamic"}));
 }
 
 scenes::BodyDesc parseBody(const json& value, const std::string& path) {
@@ -264,6 +361,7 @@ scenes::BodyDesc parseBody(const json& value, const std::string& path) {
     scenes::BodyDesc body;
     body.kind = parseBodyKind(o);
     body.position = o.vec2("position", {0.0f, 0.0f});
+    Object::checkWithinE2d(body.position, o.at("position"));
     body.angle = o.angle("angle", 0.0f);
     body.linearVelocity = o.vec2("linearVelocity", {0.0f, 0.0f});
     body.angularVelocity = o.number("angularVelocity", 0.0f);
@@ -294,6 +392,9 @@ LayoutParams parseLayout(Object& o, const std::string& defaultTag) {
     p.half = o.numberAbove("half", 0.5f, 0.0f, true);
     p.friction = o.numberAbove("friction", 0.6f, 0.0f, false);
     p.density = o.numberAbove("density", 1.0f, 0.0f, true);
+    Object::checkWithinE2d(p.origin, o.at("origin"));
+    Object::checkWithinE2d(p.half, o.at("half"));
+    Object::checkWithinE2d(p.density, o.at("density"));
     p.restitution = o.numberAbove("restitution", 0.0f, 0.0f, false);
     p.ground = o.boolean("ground", true);
     p.tag = o.string("tag", defaultTag);
@@ -302,7 +403,7 @@ LayoutParams parseLayout(Object& o, const std::string& defaultTag) {
 
 void parseGenerator(const json& value, const std::string& path, scenes::SceneDesc& scene) {
     Object o(value, path);
-    const std::string type = o.string("type", "");
+    const std::string type = o.choice("type", {"verticalStack", "pyramid", "dominoes", "grid"});
     if (type == "verticalStack") {
         const int count = o.integer("count", 10, 1, 1000);
         addVerticalStack(scene, count, parseLayout(o, "top"));
@@ -322,9 +423,6 @@ void parseGenerator(const json& value, const std::string& path, scenes::SceneDes
         LayoutParams p = parseLayout(o, "last");
         p.ground = false;
         addGrid(scene, columns, rows, spacing, shape, p);
-    } else {
-        fail(o.at("type"),
-             "expected verticalStack, pyramid, dominoes or grid, got \"" + type + "\"");
     }
     o.finish();
 }
@@ -351,32 +449,32 @@ constexpr CheckName kCheckNames[] = {
 Check parseCheck(const json& value, const std::string& path, const Scenario& scenario) {
     Object o(value, path);
     Check c;
-    const std::string type = o.string("type", "");
-    bool known = false;
+    std::vector<std::string> names;
+    for (const CheckName& n : kCheckNames) {
+        names.emplace_back(n.name);
+    }
+    const std::string type = o.choice("type", names);
     for (const CheckName& n : kCheckNames) {
         if (type == n.name) {
             c.kind = n.kind;
-            known = true;
         }
-    }
-    if (!known) {
-        std::string names;
-        for (const CheckName& n : kCheckNames) {
-            names += names.empty() ? n.name : std::string(", ") + n.name;
-        }
-        fail(o.at("type"), "expected one of " + names + ", got \"" + type + "\"");
     }
     const bool needsBody = c.kind != CheckKind::MaxPenetration && c.kind != CheckKind::MaxSpeed &&
                            c.kind != CheckKind::Momentum && c.kind != CheckKind::KineticEnergy &&
                            c.kind != CheckKind::Sleep;
     if (needsBody) {
-        c.body = o.string("body", "");
-        bool found = false;
-        for (const scenes::BodyDesc& b : scenario.scene.bodies) {
-            found = found || (!c.body.empty() && b.tag == c.body);
+        if (!o.has("body")) {
+            fail(o.at("body"), "required field is missing (the tag of the body to check)");
         }
-        if (!found) {
-            fail(o.at("body"), "no body has tag \"" + c.body + "\"");
+        c.body = o.string("body", "");
+        std::vector<std::string> tags;
+        for (const scenes::BodyDesc& b : scenario.scene.bodies) {
+            if (!b.tag.empty() && std::find(tags.begin(), tags.end(), b.tag) == tags.end()) {
+                tags.push_back(b.tag);
+            }
+        }
+        if (std::find(tags.begin(), tags.end(), c.body) == tags.end()) {
+            fail(o.at("body"), "no body has tag \"" + c.body + "\"" + suggestion(c.body, tags));
         }
     }
     auto positive = [&](const char* key) {
@@ -490,15 +588,114 @@ void parseSettings(Object& root, Scenario& scenario) {
     s.finish();
 }
 
+// Follows the parse as a SAX handler to tell where a document that nlohmann rejects went
+// wrong: the JSON path being read (`bodies[2].position[0]`) and the line and column.
+class ErrorLocator final : public nlohmann::json_sax<json> {
+public:
+    bool null() override { return value(); }
+    bool boolean(bool) override { return value(); }
+    bool number_integer(number_integer_t) override { return value(); }
+    bool number_unsigned(number_unsigned_t) override { return value(); }
+    bool number_float(number_float_t, const string_t&) override { return value(); }
+    bool string(string_t&) override { return value(); }
+    bool binary(binary_t&) override { return value(); }
+    bool start_object(std::size_t) override {
+        levels_.push_back({false, 0, {}});
+        return true;
+    }
+    bool key(string_t& name) override {
+        levels_.back().key = name;
+        return true;
+    }
+    bool end_object() override {
+        levels_.pop_back();
+        return value();
+    }
+    bool start_array(std::size_t) override {
+        levels_.push_back({true, 0, {}});
+        return true;
+    }
+    bool end_array() override {
+        levels_.pop_back();
+        return value();
+    }
+    bool parse_error(std::size_t position, const std::string& token,
+                     const nlohmann::detail::exception& error) override {
+        // `position` counts the characters read: just past the offending character of a
+        // syntax error, just past the whole literal of a number out of range.
+        const std::size_t back =
+            dynamic_cast<const json::out_of_range*>(&error) != nullptr ? token.size() : 1;
+        position_ = position >= back ? position - back : 0;
+        message_ = error.what();
+        // "[json.exception.parse_error.101] parse error at line 1, column 9: ..." -> the reason.
+        if (const auto bracket = message_.find("] "); bracket != std::string::npos) {
+            message_ = message_.substr(bracket + 2);
+        }
+        return false;
+    }
+
+    [[nodiscard]] std::string path() const {
+        std::string out;
+        for (const Level& level : levels_) {
+            if (level.array) {
+                out += "[" + std::to_string(level.index) + "]";
+            } else if (!level.key.empty()) {
+                out += (out.empty() ? "" : ".") + level.key;
+            }
+        }
+        return out.empty() ? "(root)" : out;
+    }
+    [[nodiscard]] std::size_t position() const { return position_; }
+    [[nodiscard]] const std::string& message() const { return message_; }
+
+private:
+    struct Level {
+        bool array;
+        std::size_t index; // arrays: elements finished so far, so the one being read
+        std::string key;   // objects: the key being read
+    };
+    bool value() {
+        if (!levels_.empty() && levels_.back().array) {
+            ++levels_.back().index;
+        }
+        return true;
+    }
+    std::vector<Level> levels_;
+    std::size_t position_ = 0;
+    std::string message_;
+};
+
+[[noreturn]] void failJson(std::string_view text) {
+    ErrorLocator locator;
+    static_cast<void>(json::sax_parse(text.begin(), text.end(), &locator));
+    const std::size_t start = std::min(locator.position(), text.size());
+    std::size_t line = 1;
+    std::size_t column = 1;
+    for (std::size_t i = 0; i < start; ++i) {
+        column = text[i] == '\n' ? 1 : column + 1;
+        line += text[i] == '\n' ? 1 : 0;
+    }
+    std::string reason = locator.message();
+    // nlohmann's parse errors repeat the place; out-of-range numbers do not have one.
+    const std::string lead = "parse error at line ";
+    if (reason.rfind(lead, 0) == 0) {
+        if (const auto colon = reason.find(": "); colon != std::string::npos) {
+            reason = reason.substr(colon + 2);
+        }
+    }
+    fail(locator.path(), "not valid JSON at line " + std::to_string(line) + ", column " +
+                             std::to_string(column) + ": " + reason);
+}
+
 } // namespace
 
 Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     json document;
     try {
         document = json::parse(text.begin(), text.end());
-    } catch (const json::parse_error& e) {
-        // nlohmann's message carries line and column.
-        fail("(root)", std::string("not valid JSON: ") + e.what());
+    } catch (const json::exception&) {
+        // Syntax errors and numbers no double can hold (1e999) alike.
+        failJson(text);
     }
     Object root(document, "");
     Scenario s;
@@ -506,13 +703,7 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     if (s.name.empty()) {
         fail("name", "must not be empty");
     }
-    s.family = root.string("family", "");
-    const std::set<std::string> families{"stacking", "friction", "restitution", "conservation",
-                                         "hard"};
-    if (!families.contains(s.family)) {
-        fail("family", "expected stacking, friction, restitution, conservation or hard, got \"" +
-                           s.family + "\"");
-    }
+    s.family = root.choice("family", {"stacking", "friction", "restitution", "conservation", "hard"});
     s.description = root.string("description", "");
     s.measures = root.string("measures", "");
     s.duration = root.numberAbove("duration", 5.0f, 0.0f, true);
@@ -531,6 +722,14 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     s.scene.timeStep = root.numberAbove("timeStep", 1.0f / 60.0f, 0.0f, true);
     if (s.scene.timeStep > 0.1f) {
         fail("timeStep", "must be <= 0.1 s, got " + show(s.scene.timeStep));
+    }
+    // Every step is recorded (a few dozen bytes per tagged body and instant) and runs in every
+    // configuration of the sweep: bound the count so a scenario cannot run for days or out of
+    // memory.
+    if (const double steps = std::round(double(s.duration) / s.scene.timeStep); steps > kMaxSteps) {
+        fail("timeStep", "duration / timeStep must be at most " + show(kMaxSteps) +
+                             " steps (600 s at 600 Hz), got " + show(s.duration) +
+                             " s / " + show(s.scene.timeStep) + " s = " + show(steps));
     }
     parseSettings(root, s);
 

@@ -67,9 +67,9 @@ TEST(ScenarioParser, NamesThePathOfASingleShape) {
 
 TEST(ScenarioParser, RejectsUnknownFieldsWithTheirPath) {
     EXPECT_EQ(errorOf(scene("", R"({"type": "circle", "radius": 1, "frction": 0.2})")),
-              "bodies[3].shapes[0].frction: unknown field");
+              "bodies[3].shapes[0].frction: unknown field (did you mean \"friction\"?)");
     EXPECT_EQ(errorOf(scene(R"(, "duraton": 3)", R"({"type": "circle", "radius": 1})")),
-              "duraton: unknown field");
+              "duraton: unknown field (did you mean \"duration\"?)");
     // A field of another shape type is unknown for this one.
     EXPECT_EQ(errorOf(scene("", R"({"type": "circle", "radius": 1, "halfExtents": [1, 1]})")),
               "bodies[3].shapes[0].halfExtents: unknown field");
@@ -96,8 +96,11 @@ TEST(ScenarioParser, RejectsOutOfRangeValues) {
               "bodies[3].shapes[0].point2: must differ from point1");
     EXPECT_EQ(errorOf(scene("", R"({"type": "polygon", "points": [[0, 0], [1, 0], [2, 0]]})")),
               "bodies[3].shapes[0].points: the points enclose no area");
-    EXPECT_EQ(errorOf(scene("", R"({"type": "blob"})")),
-              "bodies[3].shapes[0].type: expected box, polygon, circle, capsule or segment, got \"blob\"");
+    EXPECT_EQ(errorOf(scene("", R"({"type": "cirle"})")),
+              "bodies[3].shapes[0].type: expected box, polygon, circle, capsule or segment, got "
+              "\"cirle\" (did you mean \"circle\"?)");
+    EXPECT_EQ(errorOf(scene("", R"({"type": "triangle"})")),
+              "bodies[3].shapes[0].type: expected box, polygon, circle, capsule or segment, got \"triangle\"");
 }
 
 TEST(ScenarioParser, ChecksGeneratorsSettingsAndChecks) {
@@ -116,7 +119,10 @@ TEST(ScenarioParser, ChecksGeneratorsSettingsAndChecks) {
               "checks[0].limit: required field is missing");
     EXPECT_THAT(errorOf(R"({"family": "stacking", "generators": [{"type": "verticalStack"}],
                           "checks": [{"type": "bounce"}]})"),
-                StartsWith("checks[0].type: expected one of standing, maxPenetration"));
+                StartsWith("checks[0].type: expected standing, maxPenetration"));
+    EXPECT_THAT(errorOf(R"({"family": "stacking", "generators": [{"type": "verticalStack"}],
+                          "checks": [{"type": "bounce"}]})"),
+                HasSubstr("got \"bounce\" (did you mean \"bounceHeight\"?)"));
     EXPECT_EQ(errorOf(R"({"family": "friction", "duration": 2, "generators": [{"type": "verticalStack"}],
                           "checks": [{"type": "rollingDistance", "body": "top", "slopeDeg": 20,
                                       "time": 3, "tolerance": 0.1}]})"),
@@ -124,14 +130,58 @@ TEST(ScenarioParser, ChecksGeneratorsSettingsAndChecks) {
 }
 
 TEST(ScenarioParser, RejectsBadDocuments) {
-    EXPECT_THAT(errorOf("{\"family\": "), StartsWith("(root): not valid JSON"));
+    EXPECT_EQ(errorOf("{\"family\": "),
+              "family: not valid JSON at line 1, column 12: syntax error while parsing value - "
+              "unexpected end of input; expected '[', '{', or a literal");
     EXPECT_EQ(errorOf(R"({"bodies": [{"shape": {"type": "circle", "radius": 1}}]})"),
-              "family: expected stacking, friction, restitution, conservation or hard, got \"\"");
+              "family: required field is missing (one of stacking, friction, restitution, conservation or hard)");
     EXPECT_EQ(errorOf(R"({"family": "hard"})"),
               "bodies: the scene has no bodies (give bodies or generators)");
     EXPECT_EQ(errorOf(R"({"family": "hard", "bodies": [{"angle": 1, "angleDeg": 2,
                           "shape": {"type": "circle", "radius": 1}}]})"),
               "bodies[0].angleDeg: give either angle (radians) or angleDeg, not both");
+}
+
+TEST(ScenarioParser, SyntaxErrorsAndOverflowsNameTheirPathLineAndColumn) {
+    // A number no double holds: nlohmann reports it without a place; the parser adds it.
+    EXPECT_EQ(errorOf("{\"family\": \"hard\",\n \"bodies\": [{\"shape\": {\"type\": \"circle\",\n"
+                      "  \"radius\": 1e999}}]}"),
+              "bodies[0].shape.radius: not valid JSON at line 3, column 13: number overflow parsing '1e999'");
+    EXPECT_EQ(errorOf(R"({"family": "hard", "bodies": [{}, {"position": [1, 2,]}]})"),
+              "bodies[1].position[2]: not valid JSON at line 1, column 54: syntax error while parsing "
+              "value - unexpected ']'; expected '[', '{', or a literal");
+}
+
+TEST(ScenarioParser, MissingFieldsSayMissing) {
+    EXPECT_EQ(errorOf(scene("", R"({"radius": 1})")),
+              "bodies[3].shapes[0].type: required field is missing (one of box, polygon, circle, capsule or segment)");
+    EXPECT_EQ(errorOf(R"({"family": "stacking", "generators": [{"count": 3}]})"),
+              "generators[0].type: required field is missing (one of verticalStack, pyramid, dominoes or grid)");
+    EXPECT_EQ(errorOf(R"({"family": "stacking", "generators": [{"type": "verticalStack"}],
+                          "checks": [{"type": "standing", "tolerance": 1, "minY": 0}]})"),
+              "checks[0].body: required field is missing (the tag of the body to check)");
+    EXPECT_EQ(errorOf(R"({"family": "stacking", "generators": [{"type": "verticalStack"}],
+                          "checks": [{"type": "standing", "body": "tpo", "tolerance": 1, "minY": 0}]})"),
+              "checks[0].body: no body has tag \"tpo\" (did you mean \"top\"?)");
+}
+
+TEST(ScenarioParser, ValuesBeyondE2dsLimitsNameTheLimit) {
+    EXPECT_EQ(errorOf(R"({"family": "hard", "bodies": [{"position": [0, 200000],
+                          "shape": {"type": "circle", "radius": 1}}]})"),
+              "bodies[0].position[1]: must be within e2d's limit of 100000 (physics::kHuge: metres "
+              "for positions and sizes, kg/m^2 for density), got 200000");
+    EXPECT_THAT(errorOf(scene("", R"({"type": "circle", "radius": 1})", R"(, "halfExtents": [200000, 1])")),
+                StartsWith("bodies[1].shape.halfExtents[0]: must be within e2d's limit of 100000"));
+    EXPECT_THAT(errorOf(scene("", R"({"type": "circle", "radius": 1, "density": 1e30})")),
+                StartsWith("bodies[3].shapes[0].density: must be within e2d's limit of 100000"));
+}
+
+TEST(ScenarioParser, BoundsTheNumberOfSteps) {
+    EXPECT_EQ(errorOf(scene(R"(, "timeStep": 1e-6, "duration": 600, "settle": 1)", R"({"type": "circle", "radius": 1})")),
+              "timeStep: duration / timeStep must be at most 360000 steps (600 s at 600 Hz), got 600 s / "
+              "1e-06 s = 6e+08");
+    EXPECT_EQ(errorOf(scene(R"(, "timeStep": 0.001, "duration": 300, "settle": 1)", R"({"type": "circle", "radius": 1})")),
+              "");
 }
 
 TEST(ScenarioParser, AnglesInDegreesBecomeRadians) {

@@ -67,13 +67,13 @@ TEST(Polygon, TriangleCentroidAndNormals) {
 TEST(Polygon, BadSizesNameTheFunctionAndTheValue) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     EXPECT_EQ(errorMessage([] { makeBox(-1.0f, 1.0f); }),
-              "physics::makeBox(): half-extent hx must be finite and > 0, got -1");
+              "physics::makeBox(): half-extent hx must be finite and in (0, kHuge (100000 m)], got -1");
     EXPECT_EQ(errorMessage([&] { makeBox(1.0f, nan); }),
-              "physics::makeBox(): half-extent hy must be finite and > 0, got nan");
+              "physics::makeBox(): half-extent hy must be finite and in (0, kHuge (100000 m)], got nan");
     EXPECT_EQ(errorMessage([] { makeBox(0.5f, 0.0f); }),
-              "physics::makeBox(): half-extent hy must be finite and > 0, got 0");
+              "physics::makeBox(): half-extent hy must be finite and in (0, kHuge (100000 m)], got 0");
     EXPECT_EQ(errorMessage([] { makeOffsetBox(0.0f, 1.0f, {0, 0}, 0.0f); }),
-              "physics::makeOffsetBox(): half-extent hx must be finite and > 0, got 0");
+              "physics::makeOffsetBox(): half-extent hx must be finite and in (0, kHuge (100000 m)], got 0");
     EXPECT_EQ(errorMessage([&] { makeOffsetBox(1.0f, 1.0f, {nan, 0}, 0.0f); }),
               "physics::makeOffsetBox(): center must be finite and within kHuge, got (nan, 0)");
     EXPECT_EQ(errorMessage([] {
@@ -81,7 +81,7 @@ TEST(Polygon, BadSizesNameTheFunctionAndTheValue) {
               }),
               "physics::makeOffsetBox(): angle must be finite, got inf");
     EXPECT_EQ(errorMessage([] { makeRoundedBox(1.0f, 1.0f, -0.1f); }),
-              "physics::makeRoundedBox(): radius must be finite and >= 0, got -0.1");
+              "physics::makeRoundedBox(): radius must be finite and in [0, kHuge (100000 m)], got -0.1");
     std::vector<Vec2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     EXPECT_EQ(errorMessage([&] { makePolygon(square, -2.0f); }),
               "physics::makePolygon(): radius must be finite and >= 0, got -2");
