@@ -84,7 +84,7 @@ TEST(Polygon, BadSizesNameTheFunctionAndTheValue) {
               "physics::makeRoundedBox(): radius must be finite and in [0, kHuge (100000 m)], got -0.1");
     std::vector<Vec2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     EXPECT_EQ(errorMessage([&] { makePolygon(square, -2.0f); }),
-              "physics::makePolygon(): radius must be finite and >= 0, got -2");
+              "physics::makePolygon(): radius must be finite and in [0, kHuge (100000 m)], got -2");
 }
 
 TEST(Polygon, HandMadeHullsAreChecked) {
