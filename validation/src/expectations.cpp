@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace e2d::validation {
@@ -94,7 +95,49 @@ Apexes apexes(const std::vector<Sample>& s, int from) {
 
 } // namespace
 
+namespace {
+
+bool finite(glm::vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+
+// The first instant at which the body's state or one of the run's summed quantities the check
+// reads is not finite, or -1. Comparisons with NaN are false and std::max skips it, so a check
+// left to itself could pass on a blown-up run.
+int firstNonFinite(const Check& c, const Recording& rec, const std::vector<Sample>& s) {
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        if (!finite(s[k].position) || !finite(s[k].velocity) || !std::isfinite(s[k].angle)) {
+            return static_cast<int>(k);
+        }
+    }
+    for (int k = 0; k < rec.instants(); ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        const bool bad =
+            (c.kind == CheckKind::MaxSpeed && !std::isfinite(rec.maxSpeed[i])) ||
+            (c.kind == CheckKind::MaxPenetration && !std::isfinite(rec.penetration[i])) ||
+            (c.kind == CheckKind::Momentum && !finite(rec.momentum[i])) ||
+            (c.kind == CheckKind::KineticEnergy && !std::isfinite(rec.kineticEnergy[i]));
+        if (bad) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+} // namespace
+
 CheckResult evaluate(const Check& c, const Recording& rec, float gravity) {
+    CheckResult r = evaluateFinite(c, rec, gravity);
+    const int bad = firstNonFinite(c, rec, track(rec, c.body));
+    if (bad >= 0 || !std::isfinite(r.measured) || !std::isfinite(r.error)) {
+        r.passed = false;
+        r.error = std::numeric_limits<double>::infinity();
+        r.detail = (bad >= 0 ? "non-finite state at t = " + fmt(rec.time(bad)) + " s"
+                             : std::string("non-finite measurement")) +
+                   (r.detail.empty() ? "" : "; " + r.detail);
+    }
+    return r;
+}
+
+CheckResult evaluateFinite(const Check& c, const Recording& rec, float gravity) {
     CheckResult r;
     r.kind = checkKindName(c.kind);
     r.body = c.body;

@@ -297,6 +297,24 @@ scenes::ShapeDesc parseShape(const json& value, const std::string& path) {
         for (std::size_t i = 0; i < points.size(); ++i) {
             shape.points.push_back(Object::toVec2(points[i], indexed(o.at("points"), i)));
         }
+        // e2d welds points closer than kLinearSlop; say so here rather than in a failed run.
+        std::vector<glm::vec2> distinct;
+        for (glm::vec2 p : shape.points) {
+            const bool near = std::any_of(distinct.begin(), distinct.end(), [&](glm::vec2 q) {
+                const glm::vec2 d = p - q;
+                return d.x * d.x + d.y * d.y < physics::kLinearSlop * physics::kLinearSlop;
+            });
+            if (!near) {
+                distinct.push_back(p);
+            }
+        }
+        if (distinct.size() < 3) {
+            fail(o.at("points"), "e2d welds points closer than physics::kLinearSlop (" +
+                                     show(physics::kLinearSlop) + " m): " +
+                                     std::to_string(distinct.size()) + " of " +
+                                     std::to_string(shape.points.size()) +
+                                     " are distinct, a polygon needs 3");
+        }
         // Twice the signed area: a degenerate (collinear) polygon has none.
         float area2 = 0.0f;
         for (std::size_t i = 0; i < shape.points.size(); ++i) {

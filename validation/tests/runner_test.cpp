@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 
 namespace e2d::validation {
 namespace {
@@ -151,6 +154,85 @@ TEST(Runner, ParallelResultsComeBackInPlanOrder) {
         EXPECT_EQ(results[i].spec.scenario, plan[i].scenario);
         EXPECT_EQ(results[i].spec.variant, plan[i].variant);
     }
+}
+
+// A dynamic box of 0.2 x 0.2 mm trips an assertion inside Box2D 2.4 (its area is below
+// b2_epsilon): that run fails with the reason, and the process, e2d's runs and the report go on.
+TEST(Runner, AScenarioBox2DCannotBuildFailsThatRunOnly) {
+    const Scenario s = parseScenario(R"({"family": "hard", "duration": 0.5, "bodies": [
+        {"type": "static", "position": [0, -1], "shape": {"type": "box", "halfExtents": [5, 1]}},
+        {"position": [0, 0.0001], "tag": "speck", "shape": {"type": "box", "halfExtents": [0.0001, 0.0001]}}],
+        "checks": [{"type": "maxSpeed", "limit": 5}]})", "speck");
+    const RunResult box = runOne(s, box2d(8, 3));
+    EXPECT_FALSE(box.passed);
+    EXPECT_EQ(box.failure, "Box2D 2.4 cannot build this scene: body 1 (\"speck\"), shape 0: box area "
+                           "4e-08 m^2 is not above b2_epsilon (Box2D 2.4's ComputeMass asserts)");
+    const RunResult ours = runOne(s, e2d("soft", 4, 8, 3));
+    EXPECT_TRUE(ours.failure.empty()) << ours.failure;
+    const std::vector<RunResult> all =
+        runPlan({s}, makePlan({s}, {"box2d", "e2d"}, SweepLevel::None, false), 2, {});
+    EXPECT_EQ(all.size(), 5u); // Box2D and e2d's four modes, each with its own result
+}
+
+// A blown-up measurement must fail its check, never pass because NaN compares false.
+TEST(Runner, NonFiniteMeasurementsFailTheirChecks) {
+    Recording rec;
+    rec.timeStep = 0.5f;
+    for (int k = 0; k < 3; ++k) {
+        rec.kineticEnergy.push_back(1.0f);
+        rec.momentum.emplace_back(0.0f);
+        rec.maxSpeed.push_back(k == 1 ? std::numeric_limits<float>::quiet_NaN() : 1.0f);
+        rec.penetration.push_back(0.0f);
+        rec.allAsleep.push_back(false);
+        Sample sample;
+        sample.position = {0.0f, k == 2 ? std::numeric_limits<float>::infinity() : 1.0f};
+        rec.tagged["ball"].push_back(sample);
+    }
+    Check speed;
+    speed.kind = CheckKind::MaxSpeed;
+    speed.limit = 5.0f;
+    const CheckResult s = evaluate(speed, rec, 10.0f);
+    EXPECT_FALSE(s.passed);
+    EXPECT_EQ(s.detail, "non-finite state at t = 0.5 s");
+    EXPECT_TRUE(evaluateFinite(speed, rec, 10.0f).passed); // what NaN alone would have said
+
+    Check bounds;
+    bounds.kind = CheckKind::Bounds;
+    bounds.body = "ball";
+    bounds.lower = {-1.0f, -1.0f};
+    bounds.upper = {1.0f, 2.0f};
+    const CheckResult b = evaluate(bounds, rec, 10.0f);
+    EXPECT_FALSE(b.passed);
+    EXPECT_EQ(b.detail, "non-finite state at t = 1 s");
+}
+
+// A body launched at 1e30 m/s: whatever each engine does with it, the checks must not pass on a
+// non-finite number.
+TEST(Runner, AnAbsurdVelocityNeverPassesOnInfinity) {
+    const Scenario s = parseScenario(R"({"family": "hard", "duration": 0.2, "gravity": [0, 0],
+        "bodies": [{"position": [0, 0], "linearVelocity": [1e30, 1e30], "tag": "ball",
+                    "shape": {"type": "circle", "radius": 0.5}}],
+        "checks": [{"type": "maxSpeed", "limit": 1000}]})", "absurd");
+    for (const RunSpec& spec : {box2d(8, 3), e2d("soft", 4, 8, 3)}) {
+        SCOPED_TRACE(spec.config.engine);
+        const RunResult r = runOne(s, spec);
+        EXPECT_FALSE(r.passed);
+        EXPECT_TRUE(std::isfinite(r.normalizedError));
+    }
+}
+
+TEST(Runner, LongRunsReportTheirProgress) {
+    const Scenario s = shipped("drop_e050");
+    std::vector<int> seen;
+    const RunResult r = runOne(s, box2d(8, 3), [&](const RunSpec&, int step, int steps, double seconds) {
+        EXPECT_EQ(steps, r.steps == 0 ? steps : r.steps);
+        EXPECT_GE(seconds, 0.0);
+        seen.push_back(step);
+    }, 0.0);
+    ASSERT_FALSE(seen.empty());
+    EXPECT_EQ(seen.front(), 0); // the world is built
+    EXPECT_EQ(seen.back(), r.steps);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
 }
 
 } // namespace

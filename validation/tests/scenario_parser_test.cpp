@@ -176,6 +176,12 @@ TEST(ScenarioParser, ValuesBeyondE2dsLimitsNameTheLimit) {
                 StartsWith("bodies[3].shapes[0].density: must be within e2d's limit of 100000"));
 }
 
+TEST(ScenarioParser, PolygonsE2dWouldWeldAreRefused) {
+    EXPECT_EQ(errorOf(scene("", R"({"type": "polygon", "points": [[0, 0], [0.002, 0], [0.002, 0.002], [0, 0.002]]})")),
+              "bodies[3].shapes[0].points: e2d welds points closer than physics::kLinearSlop (0.005 m): 1 of 4 "
+              "are distinct, a polygon needs 3");
+}
+
 TEST(ScenarioParser, BoundsTheNumberOfSteps) {
     EXPECT_EQ(errorOf(scene(R"(, "timeStep": 1e-6, "duration": 600, "settle": 1)", R"({"type": "circle", "radius": 1})")),
               "timeStep: duration / timeStep must be at most 360000 steps (600 s at 600 Hz), got 600 s / "

@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace e2d::scenes {
@@ -85,9 +88,98 @@ void addShape(b2Body* body, const ShapeDesc& desc) {
     }
 }
 
+// Twice the signed area of a polygon given in order.
+float twiceArea(const std::vector<glm::vec2>& points) {
+    float area2 = 0.0f;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const glm::vec2 a = points[i];
+        const glm::vec2 b = points[(i + 1) % points.size()];
+        area2 += a.x * b.y - a.y * b.x;
+    }
+    return area2;
+}
+
+// Box2D 2.4's own weld of b2PolygonShape::Set: a point within 0.5 b2_linearSlop of a kept one
+// is dropped.
+std::vector<glm::vec2> welded(const std::vector<glm::vec2>& points) {
+    constexpr float kWeld = 0.5f * b2_linearSlop;
+    std::vector<glm::vec2> kept;
+    for (glm::vec2 p : points) {
+        const bool unique = std::none_of(kept.begin(), kept.end(), [&](glm::vec2 q) {
+            const glm::vec2 d = p - q;
+            return d.x * d.x + d.y * d.y < kWeld * kWeld;
+        });
+        if (unique) {
+            kept.push_back(p);
+        }
+    }
+    return kept;
+}
+
+std::string shapeUnsupported(const ShapeDesc& shape, bool massive) {
+    const auto number = [](float v) {
+        std::ostringstream out;
+        out << v;
+        return out.str();
+    };
+    switch (shape.kind) {
+    case ShapeKind::Polygon: {
+        const std::vector<glm::vec2> kept = welded(shape.points);
+        if (kept.size() < 3) {
+            return "Box2D 2.4 welds polygon vertices closer than 0.5 b2_linearSlop (0.0025 m) "
+                   "and " + std::to_string(kept.size()) + " of " +
+                   std::to_string(shape.points.size()) + " stay (b2PolygonShape::Set asserts)";
+        }
+        if (massive && !(0.5f * std::abs(twiceArea(kept)) > b2_epsilon)) {
+            return "polygon area " + number(0.5f * std::abs(twiceArea(kept))) +
+                   " m^2 is not above b2_epsilon (Box2D 2.4's ComputeMass asserts)";
+        }
+        return {};
+    }
+    case ShapeKind::Box:
+        if (massive && !(4.0f * shape.halfExtents.x * shape.halfExtents.y > b2_epsilon)) {
+            return "box area " + number(4.0f * shape.halfExtents.x * shape.halfExtents.y) +
+                   " m^2 is not above b2_epsilon (Box2D 2.4's ComputeMass asserts)";
+        }
+        return {};
+    case ShapeKind::Capsule: {
+        const glm::vec2 axis = shape.point2 - shape.point1;
+        const float length = std::sqrt(axis.x * axis.x + axis.y * axis.y);
+        const float area = length * 2.0f * std::max(shape.radius - b2_polygonRadius, 0.001f);
+        if (massive && length > 0.0f && !(area > b2_epsilon)) {
+            return "the box between the capsule's discs has area " + number(area) +
+                   " m^2, not above b2_epsilon (Box2D 2.4's ComputeMass asserts)";
+        }
+        return {};
+    }
+    case ShapeKind::Circle:
+    case ShapeKind::Segment:
+        return {};
+    }
+    return {};
+}
+
 } // namespace
 
+std::string box2DUnsupported(const SceneDesc& scene) {
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        const BodyDesc& body = scene.bodies[i];
+        for (std::size_t j = 0; j < body.shapes.size(); ++j) {
+            // Box2D computes mass (and asserts on it) only for dynamic bodies with density.
+            const bool massive = body.kind == BodyKind::Dynamic && body.shapes[j].density > 0.0f;
+            if (std::string why = shapeUnsupported(body.shapes[j], massive); !why.empty()) {
+                return "body " + std::to_string(i) + (body.tag.empty() ? "" : " (\"" + body.tag + "\")") +
+                       ", shape " + std::to_string(j) + ": " + why;
+            }
+        }
+    }
+    return {};
+}
+
 Box2DScene buildBox2D(const SceneDesc& scene, const Box2DSettings& settings) {
+    if (std::string why = box2DUnsupported(scene); !why.empty()) {
+        throw std::invalid_argument("Box2D 2.4 cannot build this scene: " + why);
+    }
     Box2DScene out;
     out.settings = settings;
     out.world = std::make_unique<b2World>(toB2(scene.gravity));
