@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <sstream>
 
 namespace e2d::validation {
@@ -122,11 +123,38 @@ int firstNonFinite(const Check& c, const Recording& rec, const std::vector<Sampl
     return -1;
 }
 
-} // namespace
+// Rotation from the start at every instant, unwrapped (e2d reports angles in (-pi, pi], Box2D
+// accumulates them): each step's change taken as the shortest turn.
+std::vector<double> turns(const std::vector<Sample>& s) {
+    std::vector<double> out;
+    out.reserve(s.size());
+    double total = 0.0;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        if (k > 0) {
+            double d = double(s[k].angle) - double(s[k - 1].angle);
+            d -= 2.0 * std::numbers::pi * std::round(d / (2.0 * std::numbers::pi));
+            total += d;
+        }
+        out.push_back(total);
+    }
+    return out;
+}
 
-CheckResult evaluate(const Check& c, const Recording& rec, float gravity) {
-    CheckResult r = evaluateFinite(c, rec, gravity);
-    const int bad = firstNonFinite(c, rec, track(rec, c.body));
+// How far the body got from its start by instant k: along `direction`, or in any direction.
+double moved(const std::vector<Sample>& s, int k, glm::vec2 direction) {
+    if (s.empty()) {
+        return 0.0;
+    }
+    const glm::vec2 d = s[static_cast<std::size_t>(k)].position - s.front().position;
+    return direction == glm::vec2(0.0f) ? length(d) : double(d.x) * direction.x + double(d.y) * direction.y;
+}
+
+CheckResult evaluateOn(const Check& c, const Recording& rec, float gravity, const std::vector<Sample>& s);
+
+// evaluateOn with the non-finite guard.
+CheckResult evaluateGuarded(const Check& c, const Recording& rec, float gravity, const std::vector<Sample>& s) {
+    CheckResult r = evaluateOn(c, rec, gravity, s);
+    const int bad = firstNonFinite(c, rec, s);
     if (bad >= 0 || !std::isfinite(r.measured) || !std::isfinite(r.error)) {
         r.passed = false;
         r.error = std::numeric_limits<double>::infinity();
@@ -137,12 +165,51 @@ CheckResult evaluate(const Check& c, const Recording& rec, float gravity) {
     return r;
 }
 
+// Which of two results of one check on different bodies is worse: a failure, then the larger
+// error against the tolerance.
+bool worse(const CheckResult& a, const CheckResult& b) {
+    if (a.passed != b.passed) {
+        return !a.passed;
+    }
+    const double ra = a.tolerance > 0.0 ? a.error / a.tolerance : a.error;
+    const double rb = b.tolerance > 0.0 ? b.error / b.tolerance : b.error;
+    return ra > rb || (std::isnan(ra) && !std::isnan(rb));
+}
+
+} // namespace
+
+CheckResult evaluate(const Check& c, const Recording& rec, float gravity) {
+    CheckResult r = evaluateGuarded(c, rec, gravity, track(rec, c.body));
+    auto more = rec.moreTagged.find(c.body);
+    if (c.body.empty() || more == rec.moreTagged.end() || more->second.empty()) {
+        return r;
+    }
+    // Every body with the tag is judged; the worst one speaks for the check.
+    const std::size_t count = more->second.size() + 1;
+    std::size_t worstIndex = 0;
+    for (std::size_t i = 0; i < more->second.size(); ++i) {
+        CheckResult other = evaluateGuarded(c, rec, gravity, more->second[i]);
+        if (worse(other, r)) {
+            r = std::move(other);
+            worstIndex = i + 1;
+        }
+    }
+    r.detail = "worst of " + std::to_string(count) + " bodies tagged " + c.body + ": body " +
+               std::to_string(worstIndex + 1) + (r.detail.empty() ? "" : "; " + r.detail);
+    return r;
+}
+
 CheckResult evaluateFinite(const Check& c, const Recording& rec, float gravity) {
+    return evaluateOn(c, rec, gravity, track(rec, c.body));
+}
+
+namespace {
+
+CheckResult evaluateOn(const Check& c, const Recording& rec, float gravity, const std::vector<Sample>& s) {
     CheckResult r;
     r.kind = checkKindName(c.kind);
     r.body = c.body;
     r.tolerance = c.tolerance;
-    const std::vector<Sample>& s = track(rec, c.body);
     const int last = rec.instants() - 1;
     switch (c.kind) {
     case CheckKind::Standing: {
@@ -287,9 +354,57 @@ CheckResult evaluateFinite(const Check& c, const Recording& rec, float gravity) 
         r.detail = k <= last ? "" : "never slept";
         break;
     }
+    case CheckKind::Turn: {
+        r.quantity = "rotation from the start, rad";
+        const std::vector<double> turn = turns(s);
+        double largest = 0.0;
+        bool finiteTurns = true;
+        for (double t : turn) {
+            finiteTurns = finiteTurns && std::isfinite(t);
+            largest = std::max(largest, std::abs(t));
+        }
+        const double final = turn.empty() ? 0.0 : std::abs(turn.back());
+        r.passed = finiteTurns;
+        r.error = 0.0;
+        r.measured = final;
+        if (c.minTurn) {
+            // Judged by the final rotation: e.g. a domino that must have fallen.
+            r.expected = *c.minTurn;
+            r.tolerance = *c.minTurn;
+            r.error = std::max(0.0, *c.minTurn - final);
+            r.passed = r.passed && final >= *c.minTurn;
+            r.detail = "final rotation " + fmt(final) + " rad";
+        }
+        if (c.maxTurn) {
+            // Judged by the largest rotation at any instant: e.g. a box that must stay level.
+            r.measured = largest;
+            r.expected = *c.maxTurn;
+            r.tolerance = *c.maxTurn;
+            r.error = std::max(r.error, largest);
+            r.passed = r.passed && largest <= *c.maxTurn;
+            r.detail = (c.minTurn ? r.detail + ", " : std::string()) + "largest rotation " +
+                       fmt(largest) + " rad";
+        }
+        if (!finiteTurns) {
+            r.measured = std::numeric_limits<double>::quiet_NaN();
+        }
+        break;
+    }
+    case CheckKind::Moves: {
+        r.quantity = c.direction == glm::vec2(0.0f) ? "distance from the start, m"
+                                                   : "distance from the start along the direction, m";
+        r.expected = c.distance;
+        r.tolerance = c.distance;
+        r.measured = moved(s, static_cast<int>(s.size()) - 1, c.direction);
+        r.error = std::max(0.0, c.distance - r.measured);
+        r.passed = r.measured >= c.distance;
+        break;
+    }
     }
     return r;
 }
+
+} // namespace
 
 Series seriesFor(const Check& c, const Recording& rec, float gravity, int stride) {
     Series out;
@@ -350,6 +465,21 @@ Series seriesFor(const Check& c, const Recording& rec, float gravity, int stride
         out.unit = std::string("m");
         sample([&](int k) { return alongLaunch(s, k); },
                [&](int k) { return slidingPosition(c.speed, c.friction, gravity, rec.time(k)); });
+        break;
+    case CheckKind::Turn: {
+        out.name = "rotation of " + c.body + "; dashed: " +
+                   std::string(c.maxTurn ? "largest rotation allowed" : "least final rotation");
+        out.unit = std::string("rad");
+        const std::vector<double> turn = turns(s);
+        const double bound = c.maxTurn ? *c.maxTurn : c.minTurn.value_or(0.0f);
+        sample([&](int k) { return std::abs(turn[static_cast<std::size_t>(k)]); },
+               [&](int) { return bound; });
+        break;
+    }
+    case CheckKind::Moves:
+        out.name = "distance of " + c.body + " from its start; dashed: least distance at the end";
+        out.unit = std::string("m");
+        sample([&](int k) { return moved(s, k, c.direction); }, [&](int) { return c.distance; });
         break;
     case CheckKind::Standing:
         out.name = "horizontal drift of " + c.body + "; dashed: tolerance";

@@ -25,7 +25,10 @@ struct Sample {
 struct Recording {
     float timeStep = 1.0f / 60.0f;
     float settle = 0.0f;                              ///< seconds before timing starts
-    std::map<std::string, std::vector<Sample>> tagged; ///< per tag, every instant
+    std::map<std::string, std::vector<Sample>> tagged; ///< per tag, every instant (first body)
+    /// Per tag, the bodies after the first that carry the same tag, each every instant: a
+    /// check on a tag judges every body that has it.
+    std::map<std::string, std::vector<std::vector<Sample>>> moreTagged;
     std::vector<float> kineticEnergy;                  ///< J, dynamic bodies
     std::vector<glm::vec2> momentum;                   ///< kg m/s, dynamic bodies
     std::vector<float> maxSpeed;                       ///< m/s, fastest dynamic body
@@ -49,7 +52,12 @@ public:
     [[nodiscard]] Recording take() { return std::move(rec_); }
 
 private:
-    std::vector<std::pair<std::string, int>> tags_; // tag, body index (first body with the tag)
+    struct Tagged {
+        std::string tag;
+        int body;  // index in the scene
+        int extra; // -1: the tag's first body (Recording::tagged); else its index in moreTagged
+    };
+    std::vector<Tagged> tags_;
     std::vector<BodyState> states_;
     Recording rec_;
 };

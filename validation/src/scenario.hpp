@@ -62,6 +62,10 @@ enum class CheckKind {
     Velocity,          ///< tagged body's final velocity vs an expected vector
     Bounds,            ///< tagged body stays inside an axis-aligned box for the whole run
     Sleep,             ///< every dynamic body asleep by time `time`
+    Turn,              ///< tagged body's rotation from its start: at least minTurn at the end,
+                       ///< at most maxTurn at every instant (a domino falls, a box stays level)
+    Moves,             ///< tagged body ends at least `distance` from its start, along
+                       ///< `direction` if given (a body must fall, a pushed box must move)
 };
 
 struct Check {
@@ -81,6 +85,10 @@ struct Check {
     glm::vec2 velocity{0.0f};      ///< Velocity
     glm::vec2 lower{0.0f};         ///< Bounds
     glm::vec2 upper{0.0f};         ///< Bounds
+    std::optional<float> minTurn;  ///< Turn: radians, |rotation| at the end at least this
+    std::optional<float> maxTurn;  ///< Turn: radians, |rotation| never above this
+    float distance = 0.0f;         ///< Moves: metres
+    glm::vec2 direction{0.0f};     ///< Moves: unit vector, or zero for any direction
 };
 
 /// One scene, what it measures and how it is judged.

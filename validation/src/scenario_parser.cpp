@@ -374,7 +374,7 @@ scenes::BodyKind parseBodyKind(Object& o) {
                            suggestion(type, {"static", "kinematic", "dynamic"}));
 }
 
-scenes::BodyDesc parseBody(const json& value, const std::string& path) {
+scenes::BodyDesc parseBody(const json& value, const std::string& path, float duration) {
     Object o(value, path);
     scenes::BodyDesc body;
     body.kind = parseBodyKind(o);
@@ -386,6 +386,27 @@ scenes::BodyDesc parseBody(const json& value, const std::string& path) {
     body.bullet = o.boolean("bullet", false);
     body.fixedRotation = o.boolean("fixedRotation", false);
     body.tag = o.string("tag", "");
+    body.gravityScale = o.number("gravityScale", 1.0f);
+    if (std::abs(body.gravityScale) > 1000.0f) {
+        fail(o.at("gravityScale"), "must be in [-1000, 1000], got " + show(body.gravityScale));
+    }
+    body.force = o.vec2("force", {0.0f, 0.0f});
+    if (const json* impulses = o.get("impulses")) {
+        requireArray(*impulses, o.at("impulses"));
+        for (std::size_t i = 0; i < impulses->size(); ++i) {
+            Object im((*impulses)[i], indexed(o.at("impulses"), i));
+            const float time = im.numberAbove("time", 0.0f, 0.0f, false);
+            if (time > duration) {
+                fail(im.at("time"), "must be <= duration (" + show(duration) + "), got " + show(time));
+            }
+            body.impulses.emplace_back(time, Object::toVec2(im.require("impulse"), im.at("impulse")));
+            im.finish();
+        }
+    }
+    if (body.kind != scenes::BodyKind::Dynamic && (body.force != glm::vec2(0.0f) || !body.impulses.empty())) {
+        fail(o.at(body.force != glm::vec2(0.0f) ? "force" : "impulses"),
+             "only a dynamic body can be pushed");
+    }
     if (o.has("shape") && o.has("shapes")) {
         fail(o.at("shapes"), "give either shape or shapes, not both");
     }
@@ -462,6 +483,8 @@ constexpr CheckName kCheckNames[] = {
     {"velocity", CheckKind::Velocity},
     {"bounds", CheckKind::Bounds},
     {"sleep", CheckKind::Sleep},
+    {"turn", CheckKind::Turn},
+    {"moves", CheckKind::Moves},
 };
 
 Check parseCheck(const json& value, const std::string& path, const Scenario& scenario) {
@@ -565,6 +588,33 @@ Check parseCheck(const json& value, const std::string& path, const Scenario& sce
     case CheckKind::Sleep:
         c.time = timeWithin("time");
         break;
+    case CheckKind::Turn: {
+        if (o.has("minTurn") || o.has("minTurnDeg")) {
+            c.minTurn = o.angle("minTurn", 0.0f);
+            Object::checkAbove(*c.minTurn, o.at("minTurn"), 0.0f, true);
+        }
+        if (o.has("maxTurn") || o.has("maxTurnDeg")) {
+            c.maxTurn = o.angle("maxTurn", 0.0f);
+            Object::checkAbove(*c.maxTurn, o.at("maxTurn"), 0.0f, true);
+        }
+        if (!c.minTurn && !c.maxTurn) {
+            fail(o.at("maxTurn"), "required field is missing (give minTurn, maxTurn or both, in "
+                                  "radians, or minTurnDeg / maxTurnDeg)");
+        }
+        break;
+    }
+    case CheckKind::Moves: {
+        c.distance = positive("distance");
+        if (const json* direction = o.get("direction")) {
+            const glm::vec2 d = Object::toVec2(*direction, o.at("direction"));
+            const float length = std::sqrt(d.x * d.x + d.y * d.y);
+            if (!(length > 0.0f)) {
+                fail(o.at("direction"), "must not be [0, 0]");
+            }
+            c.direction = d / length;
+        }
+        break;
+    }
     }
     o.finish();
     return c;
@@ -760,7 +810,7 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     if (const json* bodies = root.get("bodies")) {
         requireArray(*bodies, "bodies");
         for (std::size_t i = 0; i < bodies->size(); ++i) {
-            s.scene.bodies.push_back(parseBody((*bodies)[i], indexed("bodies", i)));
+            s.scene.bodies.push_back(parseBody((*bodies)[i], indexed("bodies", i), s.duration));
         }
     }
     if (s.scene.bodies.empty()) {

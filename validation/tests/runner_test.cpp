@@ -3,6 +3,7 @@
 #include "runner.hpp"
 #include "scenario_parser.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -233,6 +234,75 @@ TEST(Runner, LongRunsReportTheirProgress) {
     EXPECT_EQ(seen.front(), 0); // the world is built
     EXPECT_EQ(seen.back(), r.steps);
     EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+}
+
+// A free box of 1 kg in zero gravity: a constant force F for t seconds moves it F t^2 / (2 m)
+// (semi-implicit Euler over n steps of dt: F dt^2 n (n + 1) / 2, within 2% at 60 steps); an
+// impulse J at t0 moves it J (T - t0) / m by T. Both engines, both pushes.
+TEST(Runner, ForcesAndImpulsesMoveBodiesAsNewtonSays) {
+    const Scenario s = parseScenario(R"({"family": "hard", "duration": 1, "gravity": [0, 0],
+        "bodies": [
+          {"position": [0, 0], "tag": "pulled", "force": [2, 0],
+           "shape": {"type": "box", "halfExtents": [0.5, 0.5], "density": 1}},
+          {"position": [0, 5], "tag": "kicked", "impulses": [{"time": 0.5, "impulse": [0, 3]}],
+           "shape": {"type": "box", "halfExtents": [0.5, 0.5], "density": 1}}],
+        "checks": [{"type": "moves", "body": "pulled", "distance": 0.9, "direction": [1, 0]},
+                   {"type": "moves", "body": "kicked", "distance": 1.4, "direction": [0, 1]}]})",
+                                     "pushes");
+    for (const RunSpec& spec : {box2d(8, 3), e2d("soft", 4, 8, 3), e2d("classic", 4, 8, 3)}) {
+        SCOPED_TRACE(spec.config.family());
+        const RunResult r = runOne(s, spec);
+        ASSERT_TRUE(r.failure.empty()) << r.failure;
+        ASSERT_EQ(r.checks.size(), 2u);
+        EXPECT_NEAR(r.checks[0].measured, 0.5 * 2.0 * 1.0, 0.02);
+        // Applied before the step that starts at 0.5 s: 30 steps of 3 m/s.
+        EXPECT_NEAR(r.checks[1].measured, 3.0 * 0.5, 0.01);
+        EXPECT_TRUE(r.passed);
+    }
+}
+
+// gravityScale 0 floats, 2 falls twice as far as 1 (1/2 g t^2 at 1 s: 4.9 m and 9.8 m).
+TEST(Runner, GravityScaleScalesEachBodysFall) {
+    const Scenario s = parseScenario(R"({"family": "hard", "duration": 1, "gravity": [0, -9.8],
+        "bodies": [
+          {"position": [0, 0], "tag": "floating", "gravityScale": 0, "shape": {"type": "circle", "radius": 0.5}},
+          {"position": [2, 0], "tag": "falling", "shape": {"type": "circle", "radius": 0.5}},
+          {"position": [4, 0], "tag": "heavy", "gravityScale": 2, "shape": {"type": "circle", "radius": 0.5}}],
+        "checks": [{"type": "bounds", "body": "floating", "lower": [-0.001, -0.001], "upper": [0.001, 0.001]},
+                   {"type": "moves", "body": "falling", "distance": 4.5, "direction": [0, -1]},
+                   {"type": "moves", "body": "heavy", "distance": 9.0, "direction": [0, -1]}]})",
+                                     "gravity scale");
+    for (const RunSpec& spec : {box2d(8, 3), e2d("soft", 4, 8, 3)}) {
+        SCOPED_TRACE(spec.config.family());
+        const RunResult r = runOne(s, spec);
+        ASSERT_EQ(r.checks.size(), 3u);
+        EXPECT_TRUE(r.checks[0].passed);
+        EXPECT_NEAR(r.checks[1].measured, 4.9, 0.1);
+        EXPECT_NEAR(r.checks[2].measured, 2.0 * r.checks[1].measured, 0.02);
+        EXPECT_TRUE(r.passed);
+    }
+}
+
+// Two bodies share the tag "top": one rests on the ground, the other is thrown off the edge. A
+// standing check on the tag judges both, and the one that fell speaks for it.
+TEST(Runner, ACheckOnASharedTagJudgesEveryBody) {
+    const std::string text = R"({"family": "hard", "duration": 2, "bodies": [
+          {"type": "static", "position": [0, -1], "shape": {"type": "box", "halfExtents": [3, 1]}},
+          {"position": [-2, 0.5], "tag": "top", "shape": {"type": "box", "halfExtents": [0.5, 0.5]}},
+          {"position": [2, 0.5], "tag": "top", "linearVelocity": [VX, 0], "shape": {"type": "box", "halfExtents": [0.5, 0.5]}}],
+        "checks": [{"type": "standing", "body": "top", "tolerance": 0.05, "minY": 0.4}]})";
+    auto withSpeed = [&](const char* vx) {
+        std::string t = text;
+        t.replace(t.find("VX"), 2, vx);
+        return parseScenario(t, "shared tag");
+    };
+    const RunResult still = runOne(withSpeed("0"), box2d(8, 3));
+    ASSERT_EQ(still.checks.size(), 1u);
+    EXPECT_TRUE(still.checks[0].passed);
+    const RunResult thrown = runOne(withSpeed("20"), box2d(8, 3));
+    ASSERT_EQ(thrown.checks.size(), 1u);
+    EXPECT_FALSE(thrown.checks[0].passed);
+    EXPECT_THAT(thrown.checks[0].detail, ::testing::StartsWith("worst of 2 bodies tagged top: body 2"));
 }
 
 } // namespace

@@ -197,6 +197,57 @@ TEST(ScenarioParser, AnglesInDegreesBecomeRadians) {
     EXPECT_NEAR(s.scene.bodies[0].shapes[0].angle, 3.1415927f, 1e-6f);
 }
 
+TEST(ScenarioParser, PushesGravityScaleAndTheNewChecks) {
+    const Scenario s = parseScenario(R"({"family": "hard", "duration": 2, "bodies": [
+        {"type": "static", "position": [0, -1], "shape": {"type": "box", "halfExtents": [5, 1]}},
+        {"tag": "a", "gravityScale": 0.5, "force": [1, 2],
+         "impulses": [{"time": 1, "impulse": [3, 4]}, {"time": 0, "impulse": [0, 1]}],
+         "shape": {"type": "circle", "radius": 0.5}},
+        {"tag": "a", "shape": {"type": "circle", "radius": 0.5}}],
+        "checks": [{"type": "turn", "body": "a", "minTurnDeg": 90, "maxTurn": 2},
+                   {"type": "moves", "body": "a", "distance": 1, "direction": [3, -4]}]})", "x");
+    const scenes::BodyDesc& a = s.scene.bodies[1];
+    EXPECT_FLOAT_EQ(a.gravityScale, 0.5f);
+    EXPECT_EQ(a.force, glm::vec2(1.0f, 2.0f));
+    ASSERT_EQ(a.impulses.size(), 2u);
+    EXPECT_FLOAT_EQ(a.impulses[0].first, 1.0f);
+    EXPECT_EQ(a.impulses[0].second, glm::vec2(3.0f, 4.0f));
+    EXPECT_FLOAT_EQ(s.scene.bodies[2].gravityScale, 1.0f);
+    ASSERT_EQ(s.checks.size(), 2u);
+    EXPECT_NEAR(*s.checks[0].minTurn, 1.5707963f, 1e-6f);
+    EXPECT_FLOAT_EQ(*s.checks[0].maxTurn, 2.0f);
+    EXPECT_NEAR(s.checks[1].direction.x, 0.6f, 1e-6f);
+    EXPECT_NEAR(s.checks[1].direction.y, -0.8f, 1e-6f);
+}
+
+TEST(ScenarioParser, RejectsBadPushesAndChecks) {
+    const std::string ground = R"({"type": "static", "position": [0, -1], "shape": {"type": "box", "halfExtents": [5, 1]}})";
+    auto withBody = [&](const std::string& body, const std::string& checks = "") {
+        return errorOf(R"({"family": "hard", "duration": 2, "bodies": [)" + ground + ", " + body + "]" +
+                       (checks.empty() ? "" : R"(, "checks": [)" + checks + "]") + "}");
+    };
+    const std::string circle = R"("shape": {"type": "circle", "radius": 0.5})";
+    EXPECT_EQ(withBody(R"({"type": "static", "force": [1, 0], )" + circle + "}"),
+              "bodies[1].force: only a dynamic body can be pushed");
+    EXPECT_EQ(withBody(R"({"impulses": [{"time": 3, "impulse": [1, 0]}], )" + circle + "}"),
+              "bodies[1].impulses[0].time: must be <= duration (2), got 3");
+    EXPECT_EQ(withBody(R"({"impulses": [{"time": 1}], )" + circle + "}"),
+              "bodies[1].impulses[0].impulse: required field is missing");
+    EXPECT_EQ(withBody(R"({"impulses": [{"time": 1, "impulse": [1, 0], "tiem": 2}], )" + circle + "}"),
+              "bodies[1].impulses[0].tiem: unknown field (did you mean \"time\"?)");
+    EXPECT_EQ(withBody(R"({"gravityScale": 5000, )" + circle + "}"),
+              "bodies[1].gravityScale: must be in [-1000, 1000], got 5000");
+    const std::string tagged = R"({"tag": "a", )" + circle + "}";
+    EXPECT_THAT(withBody(tagged, R"({"type": "turn", "body": "a"})"),
+                StartsWith("checks[0].maxTurn: required field is missing"));
+    EXPECT_EQ(withBody(tagged, R"({"type": "turn", "body": "a", "maxTurn": -1})"),
+              "checks[0].maxTurn: must be > 0, got -1");
+    EXPECT_EQ(withBody(tagged, R"({"type": "moves", "body": "a", "distance": 1, "direction": [0, 0]})"),
+              "checks[0].direction: must not be [0, 0]");
+    EXPECT_EQ(withBody(tagged, R"({"type": "moves", "body": "a"})"),
+              "checks[0].distance: required field is missing");
+}
+
 TEST(Generators, PyramidHasTheBox2DLayout) {
     // base 3: rows of 3, 2, 1 unit boxes on a ground whose top is y = 0.
     const Scenario s = parseScenario(

@@ -198,6 +198,7 @@ Box2DScene buildBox2D(const SceneDesc& scene, const Box2DSettings& settings) {
         def.angularVelocity = desc.angularVelocity;
         def.bullet = desc.bullet;
         def.fixedRotation = desc.fixedRotation;
+        def.gravityScale = desc.gravityScale;
         b2Body* body = out.world->CreateBody(&def);
         for (const ShapeDesc& shape : desc.shapes) {
             addShape(body, shape);

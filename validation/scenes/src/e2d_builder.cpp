@@ -56,6 +56,7 @@ E2dScene buildE2d(const SceneDesc& scene, ph::WorldDef def) {
         bd.angularVelocity = desc.angularVelocity;
         bd.fixedRotation = desc.fixedRotation;
         bd.isBullet = desc.bullet;
+        bd.gravityScale = desc.gravityScale;
         const ph::BodyId body = out.world.createBody(bd);
         for (const ShapeDesc& shape : desc.shapes) {
             ph::ShapeDef sd;

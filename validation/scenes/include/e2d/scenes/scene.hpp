@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 /// Engine-neutral scene descriptions, shared by the benchmarks and the validation harness so a
@@ -37,8 +38,13 @@ struct BodyDesc {
     float angularVelocity = 0.0f;
     bool bullet = false;
     bool fixedRotation = false;
+    float gravityScale = 1.0f;      ///< multiplies the scene's gravity for this body
+    glm::vec2 force{0.0f, 0.0f};    ///< N, applied at the centre of mass before every step
+    /// Impulses at the centre of mass: each (time in s, impulse in N s) is applied before the
+    /// first step that starts at or after its time.
+    std::vector<std::pair<float, glm::vec2>> impulses;
     std::vector<ShapeDesc> shapes;
-    std::string tag; ///< names bodies the metrics look at, e.g. "top"
+    std::string tag; ///< names bodies the metrics look at, e.g. "top"; several may share one
 };
 
 struct SceneDesc {
