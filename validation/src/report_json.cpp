@@ -77,6 +77,7 @@ json scenarioJson(const Scenario& s) {
             {"shapes", shapes},
             {"quick", s.quick},
             {"sweep", s.sweep},
+            {"hardCase", s.hardCase},
             {"checks", checks}};
 }
 
@@ -172,6 +173,18 @@ json reportToJson(const Report& report) {
         }
         summary.push_back(row);
     }
+    json hardCases = json::array();
+    for (const HardCaseRow& row : hardCaseTable(report)) {
+        json passed = json::object();
+        for (const auto& [family, run] : row.runs) {
+            if (run != nullptr) {
+                passed[family] = run->passed;
+            }
+        }
+        hardCases.push_back({{"scenario", report.scenarios[row.scenario].name},
+                             {"passed", passed},
+                             {"numbers", row.numbers}});
+    }
     json sweeps = json::object();
     for (const auto& [family, engineCurves] : sweepCurves(report)) {
         for (const auto& [engine, curve] : engineCurves) {
@@ -207,6 +220,7 @@ json reportToJson(const Report& report) {
             {"environment", env},
             {"engines", engines},
             {"passed", exitStatus(report) == 0},
+            {"hardCases", hardCases},
             {"summary", summary},
             {"sweeps", sweeps},
             {"features", features},

@@ -102,6 +102,7 @@ struct Scenario {
     float settle = 1.0f;           ///< seconds before ms/step is timed
     bool quick = false;            ///< part of --quick
     bool sweep = true;             ///< part of the --all sweep
+    bool hardCase = false;         ///< listed in the hard-case table at the top of the summary
     std::string scaling;           ///< series name in the scaling plot, empty: not plotted
     std::map<std::string, SettingsOverride> settings; ///< key: engine ("box2d", "e2d")
     scenes::SceneDesc scene;

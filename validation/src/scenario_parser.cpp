@@ -784,6 +784,7 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     }
     s.quick = root.boolean("quick", false);
     s.sweep = root.boolean("sweep", true);
+    s.hardCase = root.boolean("hardCase", false);
     s.scaling = root.string("scaling", "");
     s.scene.name = s.name;
     s.scene.gravity = root.vec2("gravity", {0.0f, -10.0f});
