@@ -60,17 +60,21 @@ ctest_stage "asan+ubsan" asan
 echo "=== fuzz: libFuzzer targets, ${fuzz_seconds}s each"
 if cmake --preset fuzz >"$logs/fuzz-configure.log" 2>&1 && cmake --build --preset fuzz >"$logs/fuzz-build.log" 2>&1; then
   # Every library's fuzzers: build/fuzz/libs/<lib>/fuzz/fuzz_<name>, seeds in
-  # libs/<lib>/fuzz/corpus/fuzz_<name>/ (replayed every run).
-  for fuzzer in "$root"/build/fuzz/libs/*/fuzz/fuzz_*; do
+  # libs/<lib>/fuzz/corpus/fuzz_<name>/ (replayed every run); the validation harness's
+  # build/fuzz/validation/fuzz/fuzz_<name>, seeds in validation/fuzz/corpus/fuzz_<name>/ and the
+  # shipped scenarios in validation/scenarios/.
+  for fuzzer in "$root"/build/fuzz/libs/*/fuzz/fuzz_* "$root"/build/fuzz/validation/fuzz/fuzz_*; do
     [ -f "$fuzzer" ] && [ -x "$fuzzer" ] || continue
     target=$(basename "$fuzzer")
-    lib=$(basename "$(dirname "$(dirname "$fuzzer")")")
+    part=$(dirname "$(dirname "$fuzzer")")
+    part=${part#"$root/build/fuzz/"} # libs/<lib> or validation
     corpus="$root/build/fuzz/corpus/$target"
     mkdir -p "$corpus"
-    seeds="$root/libs/$lib/fuzz/corpus/$target"
-    [ -d "$seeds" ] || seeds=""
+    seeds=()
+    [ -d "$root/$part/fuzz/corpus/$target" ] && seeds+=("$root/$part/fuzz/corpus/$target")
+    [ "$part" = validation ] && seeds+=("$root/validation/scenarios")
     if "$fuzzer" -max_total_time="$fuzz_seconds" -print_final_stats=1 \
-         -artifact_prefix="$logs/$target-" "$corpus" $seeds >"$logs/$target.log" 2>&1; then
+         -artifact_prefix="$logs/$target-" "$corpus" "${seeds[@]}" >"$logs/$target.log" 2>&1; then
       echo "$target: ok ($(grep -E 'stat::number_of_executed_units' "$logs/$target.log" | awk '{print $2}') runs)"
       passed=$((passed + 1))
     else

@@ -392,7 +392,9 @@ void scalingSection(std::ostringstream& o, const Report& r) {
     plot.logY = true;
     plot.width = 720.0;
     plot.height = 400.0;
-    for (auto& [name, ps] : series) {
+    for (auto& entry : series) {
+        // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+        const PlotSeries& ps = entry.second;
         std::vector<std::size_t> idx(ps.points.size());
         for (std::size_t i = 0; i < idx.size(); ++i) {
             idx[i] = i;
