@@ -54,7 +54,7 @@ struct SummaryCell {
 struct HardCaseRow {
     std::size_t scenario = 0;
     std::vector<std::pair<std::string, const RunResult*>> runs; ///< engine family, run (may be null)
-    /// Per check: "kind(body) [expected e, tolerance t]: box2d m1, e2d soft sat m2, ...".
+    /// Per check: "kind(body) [expected e, tolerance t]: box2d m1, e2d soft sat m2 FAIL (detail), ...".
     std::vector<std::string> numbers;
 };
 [[nodiscard]] std::vector<HardCaseRow> hardCaseTable(const Report& report);

@@ -99,6 +99,9 @@ std::vector<HardCaseRow> hardCaseTable(const Report& report) {
                     text += ",";
                 }
                 text += " " + family + " " + shortNumber(c.measured) + (c.passed ? "" : " FAIL");
+                if (!c.passed && !c.detail.empty()) {
+                    text += " (" + c.detail + ")";
+                }
             }
             if (!text.empty()) {
                 row.numbers.push_back(text);
