@@ -25,8 +25,8 @@ namespace {
 
 using namespace e2d::validation;
 
-constexpr std::size_t kMaxFuzzBodies = 64;
-constexpr double kMaxFuzzSteps = 600.0;
+constexpr std::size_t kMaxFuzzBodies = 48;
+constexpr double kMaxFuzzSteps = 300.0;
 
 // Aborts naming the failed check's line and what was seen.
 void check(bool condition, const std::string& what, int line = __builtin_LINE()) {
