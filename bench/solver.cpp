@@ -11,6 +11,7 @@
 //   --e2d_stand=N   steps of the standing check (default 600, 10 s)
 //   --e2d_table=F   the Markdown table goes to F as well
 #include "ratio_reporter.hpp"
+#include "solver_joints.hpp"
 
 #include <e2d/physics/world.hpp>
 #include <e2d/scenes/box2d_builder.hpp>
@@ -237,6 +238,7 @@ int main(int argc, char** argv) {
         benchmark::RegisterBenchmark(("step/" + c.name + "/e2d").c_str(), stepE2d, &c)
             ->Unit(benchmark::kMillisecond);
     }
+    e2d::bench::registerJointBenchmarks(options.settleSteps);
     const int status =
         e2d::bench::runWithRatios(argc, argv, "box2d", {"e2d", "box2d"}, "ms per step", 1e6,
                                   appendix);

@@ -2,7 +2,7 @@
 # Every test e2d has, from a fresh Debian 12 machine:
 #   1. the release build: every library's GoogleTest suite, the benchmarks (short runs);
 #   2. the same suites under AddressSanitizer + UndefinedBehaviorSanitizer;
-#   3. the libFuzzer targets, each for E2D_FUZZ_SECONDS (default 30);
+#   3. the libFuzzer targets, each for E2D_FUZZ_SECONDS (default 30), two at a time;
 #   4. the consumer project, built against an install of e2d once per library, linking only it.
 # Ends with one line "e2d tests: N passed, M failed". Exit status 0 only if all passed.
 set -uo pipefail
@@ -59,22 +59,32 @@ ctest_stage "asan+ubsan" asan
 
 echo "=== fuzz: libFuzzer targets, ${fuzz_seconds}s each"
 if cmake --preset fuzz >"$logs/fuzz-configure.log" 2>&1 && cmake --build --preset fuzz >"$logs/fuzz-build.log" 2>&1; then
-  # Every library's fuzzers: build/fuzz/libs/<lib>/fuzz/fuzz_<name>, seeds in
-  # libs/<lib>/fuzz/corpus/fuzz_<name>/ (replayed every run); the validation harness's
-  # build/fuzz/validation/fuzz/fuzz_<name>, seeds in validation/fuzz/corpus/fuzz_<name>/ and the
-  # shipped scenarios in validation/scenarios/.
+  # Every fuzzer: build/fuzz/<dir>/fuzz/fuzz_<name> for <dir> libs/<lib> or validation, seeds in
+  # <dir>/fuzz/corpus/fuzz_<name>/ of the source tree (replayed every run). Two run at a time, one
+  # per core; each writes its own log, read when both of its pair have finished.
+  fuzzers=()
   for fuzzer in "$root"/build/fuzz/libs/*/fuzz/fuzz_* "$root"/build/fuzz/validation/fuzz/fuzz_*; do
-    [ -f "$fuzzer" ] && [ -x "$fuzzer" ] || continue
+    [ -f "$fuzzer" ] && [ -x "$fuzzer" ] && fuzzers+=("$fuzzer")
+  done
+  run_fuzzer() {
+    local fuzzer="$1" target dir corpus
+    local -a seeds
     target=$(basename "$fuzzer")
-    part=$(dirname "$(dirname "$fuzzer")")
-    part=${part#"$root/build/fuzz/"} # libs/<lib> or validation
+    dir=$(dirname "$(dirname "${fuzzer#"$root/build/fuzz/"}")")
     corpus="$root/build/fuzz/corpus/$target"
     mkdir -p "$corpus"
     seeds=()
-    [ -d "$root/$part/fuzz/corpus/$target" ] && seeds+=("$root/$part/fuzz/corpus/$target")
-    [ "$part" = validation ] && seeds+=("$root/validation/scenarios")
-    if "$fuzzer" -max_total_time="$fuzz_seconds" -print_final_stats=1 \
-         -artifact_prefix="$logs/$target-" "$corpus" "${seeds[@]}" >"$logs/$target.log" 2>&1; then
+    [ -d "$root/$dir/fuzz/corpus/$target" ] && seeds+=("$root/$dir/fuzz/corpus/$target")
+    # The scenario reader's fuzzers also start from every shipped scenario.
+    [ "$dir" = validation ] && seeds+=("$root/validation/scenarios")
+    "$fuzzer" -max_total_time="$fuzz_seconds" -print_final_stats=1 \
+      -artifact_prefix="$logs/$target-" "$corpus" "${seeds[@]}" >"$logs/$target.log" 2>&1
+    echo $? >"$logs/$target.status"
+  }
+  fuzz_result() {
+    local target
+    target=$(basename "$1")
+    if [ "$(cat "$logs/$target.status" 2>/dev/null)" = 0 ]; then
       echo "$target: ok ($(grep -E 'stat::number_of_executed_units' "$logs/$target.log" | awk '{print $2}') runs)"
       passed=$((passed + 1))
     else
@@ -82,7 +92,18 @@ if cmake --preset fuzz >"$logs/fuzz-configure.log" 2>&1 && cmake --build --prese
       failures+=("fuzz: $target found a failure (see $logs/$target.log)")
       failed=$((failed + 1))
     fi
+  }
+  for ((i = 0; i < ${#fuzzers[@]}; i += 2)); do
+    run_fuzzer "${fuzzers[i]}" &
+    if [ $((i + 1)) -lt ${#fuzzers[@]} ]; then run_fuzzer "${fuzzers[i + 1]}" & fi
+    wait
+    fuzz_result "${fuzzers[i]}"
+    if [ $((i + 1)) -lt ${#fuzzers[@]} ]; then fuzz_result "${fuzzers[i + 1]}"; fi
   done
+  if [ ${#fuzzers[@]} -eq 0 ]; then
+    failures+=("fuzz: the fuzz build made no fuzzer")
+    failed=$((failed + 1))
+  fi
 else
   tail -30 "$logs/fuzz-build.log" "$logs/fuzz-configure.log"
   failures+=("fuzz: build failed")

@@ -270,6 +270,46 @@ void Scene::dispatchMouseMove(glm::vec2 screen, glm::vec2 world) {
     broadcast([&] { onMouseMove(screen, world); }, [&](Component& c) { c.onMouseMove(screen, world); });
 }
 
+void Scene::dispatchKeyDown(int key, int mods) {
+    broadcast([&] { onKeyDown(key, mods); }, [&](Component& c) { c.onKeyDown(key, mods); });
+}
+
+void Scene::dispatchKeyUp(int key, int mods) {
+    broadcast([&] { onKeyUp(key, mods); }, [&](Component& c) { c.onKeyUp(key, mods); });
+}
+
+void Scene::dispatchKeyRepeat(int key, int mods) {
+    broadcast([&] { onKeyRepeat(key, mods); }, [&](Component& c) { c.onKeyRepeat(key, mods); });
+}
+
+void Scene::dispatchTextInput(char32_t codepoint) {
+    broadcast([&] { onTextInput(codepoint); }, [&](Component& c) { c.onTextInput(codepoint); });
+}
+
+void Scene::dispatchScroll(glm::vec2 offset, glm::vec2 screen, glm::vec2 world) {
+    broadcast([&] { onScroll(offset, screen, world); },
+              [&](Component& c) { c.onScroll(offset, screen, world); });
+}
+
+void Scene::dispatchFocusChanged(bool focused) {
+    broadcast([&] { onFocusChanged(focused); }, [&](Component& c) { c.onFocusChanged(focused); });
+}
+
+void Scene::dispatchControllerConnected(int controller) {
+    broadcast([&] { onControllerConnected(controller); },
+              [&](Component& c) { c.onControllerConnected(controller); });
+}
+
+void Scene::dispatchControllerDisconnected(int controller) {
+    broadcast([&] { onControllerDisconnected(controller); },
+              [&](Component& c) { c.onControllerDisconnected(controller); });
+}
+
+void Scene::dispatchControllerAxis(int controller, int axis, float value) {
+    broadcast([&] { onControllerAxis(controller, axis, value); },
+              [&](Component& c) { c.onControllerAxis(controller, axis, value); });
+}
+
 void Scene::dispatchTerminate() {
     if (dispatchDepth_ > 0) {
         throw Error("core::Scene::dispatchTerminate(): called from inside an event of scene '" + name_ + "'");

@@ -8,6 +8,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <string>
 
 using e2d::core::Component;
@@ -98,6 +99,55 @@ TEST(Scene, EveryInputEventIsForwarded) {
     scene.dispatchMouseButtonUp(1, {}, {});
     scene.dispatchMouseMove({1.0f, 2.0f}, {3.0f, 4.0f});
     EXPECT_THAT(input->seen, ElementsAre("up7", "cdown12", "cup34", "mdown058", "mup1", "move23"));
+}
+
+TEST(Scene, TheNewerInputEventsAreForwardedToTheSceneAndItsComponents) {
+    struct Seen {
+        std::vector<std::string> events;
+    };
+    struct Input : Component {
+        explicit Input(Seen& s) : seen(s) {}
+        Seen& seen;
+        void onKeyDown(int k, int m) override { seen.events.push_back("c:kdown" + std::to_string(k) + "/" + std::to_string(m)); }
+        void onKeyUp(int k, int m) override { seen.events.push_back("c:kup" + std::to_string(k) + "/" + std::to_string(m)); }
+        void onKeyRepeat(int k, int m) override { seen.events.push_back("c:krep" + std::to_string(k) + "/" + std::to_string(m)); }
+        void onTextInput(char32_t cp) override { seen.events.push_back("c:text" + std::to_string(std::uint32_t(cp))); }
+        void onScroll(glm::vec2 o, glm::vec2 s, glm::vec2 w) override {
+            seen.events.push_back("c:scroll" + std::to_string(int(o.y)) + "," + std::to_string(int(s.x)) + "," +
+                                  std::to_string(int(w.y)));
+        }
+        void onFocusChanged(bool f) override { seen.events.push_back(std::string("c:focus") + (f ? "1" : "0")); }
+        void onControllerConnected(int c) override { seen.events.push_back("c:conn" + std::to_string(c)); }
+        void onControllerDisconnected(int c) override { seen.events.push_back("c:disc" + std::to_string(c)); }
+        void onControllerAxis(int c, int a, float v) override {
+            seen.events.push_back("c:axis" + std::to_string(c) + "," + std::to_string(a) + "," + std::to_string(int(v * 4)));
+        }
+    };
+    struct InputScene : Scene {
+        explicit InputScene(Seen& s) : seen(s) {}
+        Seen& seen;
+        void onKeyDown(int k, int) override { seen.events.push_back("s:kdown" + std::to_string(k)); }
+        void onTextInput(char32_t cp) override { seen.events.push_back("s:text" + std::to_string(std::uint32_t(cp))); }
+        void onControllerAxis(int c, int a, float) override {
+            seen.events.push_back("s:axis" + std::to_string(c) + "," + std::to_string(a));
+        }
+    };
+    Seen seen;
+    InputScene scene(seen);
+    scene.createGameObject().addComponent<Input>(seen);
+    scene.beginFrame();
+    scene.dispatchKeyDown(65, 1);
+    scene.dispatchKeyRepeat(65, 3);
+    scene.dispatchKeyUp(65, 0);
+    scene.dispatchTextInput(U'\u00e9');
+    scene.dispatchScroll({0.0f, -2.0f}, {10.0f, 20.0f}, {30.0f, 40.0f});
+    scene.dispatchFocusChanged(false);
+    scene.dispatchControllerConnected(15);
+    scene.dispatchControllerDisconnected(3);
+    scene.dispatchControllerAxis(2, 5, 0.75f);
+    EXPECT_THAT(seen.events, ElementsAre("s:kdown65", "c:kdown65/1", "c:krep65/3", "c:kup65/0", "s:text233", "c:text233",
+                                         "c:scroll-2,10,40", "c:focus0", "c:conn15", "c:disc3", "s:axis2,5",
+                                         "c:axis2,5,3"));
 }
 
 TEST(Scene, CreatedObjectJoinsAtTheStartOfTheNextFrame) {

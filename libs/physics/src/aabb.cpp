@@ -18,6 +18,10 @@ Aabb computeAabb(const Capsule& shape, const Transform& xf) {
     return {glm::min(a, b) - r, glm::max(a, b) + r};
 }
 
+Aabb computeAabb(const ChainSegment& shape, const Transform& xf) {
+    return computeAabb(shape.segment, xf);
+}
+
 Aabb computeAabb(const Segment& shape, const Transform& xf) {
     Vec2 a = transformPoint(xf, shape.point1);
     Vec2 b = transformPoint(xf, shape.point2);

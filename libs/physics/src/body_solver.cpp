@@ -29,6 +29,12 @@ inline SpeedCaps speedCaps(float maxLinearSpeed, float h) {
 inline void clampVelocity(Vec2& v, float& w, SpeedCaps caps) {
     float speedSquared = dot(v, v);
     if (speedSquared > caps.linear * caps.linear) {
+        if (std::isinf(speedSquared)) {
+            // Past about 1.8e19 m/s the square overflows, and scaling by cap / inf would stop
+            // the body dead: bring the components to at most 1 first (still the same direction).
+            v *= 1.0f / std::max(std::fabs(v.x), std::fabs(v.y));
+            speedSquared = dot(v, v);
+        }
         v *= caps.linear / std::sqrt(speedSquared);
     }
     w = std::clamp(w, -caps.angular, caps.angular);
@@ -130,11 +136,16 @@ void solveSoftStep(const SolverStep& step) {
         // coupling with the sweep direction: base-70 pyramids then drift 5x more.
         bool backward = (i % 2) == 1;
         bool reversePoints = ((i / 2) % 2) == 1;
+        // Joints go before the contacts in each pass (Box2D v3's order): the contacts, solved
+        // last, win where the two disagree.
+        warmStartJoints(step.joints, step.jointOrder, step.states);
         warmStartContacts(step.constraints, step.states);
+        solveJoints(step.joints, step.jointOrder, step.states, step.jointStep, true);
         solveContacts(step.constraints, step.states, invH, true, def.contactPushMaxSpeed,
                       backward, reversePoints);
         integratePositions(step.states, h);
         for (int r = 0; r <= def.relaxIterations; ++r) {
+            solveJoints(step.joints, step.jointOrder, step.states, step.jointStep, false);
             solveContacts(step.constraints, step.states, invH, false, def.contactPushMaxSpeed,
                           backward, reversePoints);
         }
@@ -143,7 +154,8 @@ void solveSoftStep(const SolverStep& step) {
 }
 
 void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLevel, int endLevel,
-                        std::span<const int> bodies, std::span<const WideRestitution> restitution) {
+                        std::span<const int> bodies, std::span<const WideRestitution> restitution,
+                        std::span<const int> blockJoints) {
     const SolverDef& def = *step.def;
     float h = step.dt / static_cast<float>(def.subSteps);
     float invH = 1.0f / h;
@@ -152,11 +164,14 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
         integrateVelocities(step.sims, step.states, bodies, step.gravity, h, def.maxLinearSpeed);
         bool backward = (i % 2) == 1;
         bool reversePoints = ((i / 2) % 2) == 1;
+        warmStartJoints(step.joints, blockJoints, step.states);
         warmStartWide(wide, firstLevel, endLevel, step.states);
+        solveJoints(step.joints, blockJoints, step.states, step.jointStep, true);
         solveWide(wide, firstLevel, endLevel, step.states, invH, true, def.contactPushMaxSpeed,
                   backward, reversePoints);
         integratePositions(step.states, bodies, h);
         for (int r = 0; r <= def.relaxIterations; ++r) {
+            solveJoints(step.joints, blockJoints, step.states, step.jointStep, false);
             solveWide(wide, firstLevel, endLevel, step.states, invH, false,
                       def.contactPushMaxSpeed, backward, reversePoints);
         }
@@ -169,15 +184,21 @@ void solveClassic(const SolverStep& step) {
     float invDt = 1.0f / step.dt;
     integrateVelocities(step.sims, step.states, step.gravity, step.dt, def.maxLinearSpeed);
     prepareClassic(step.constraints, def.restitutionThreshold);
+    warmStartJoints(step.joints, step.jointOrder, step.states);
     warmStartContacts(step.constraints, step.states);
     for (int i = 0; i < def.velocityIterations; ++i) {
+        // Box2D 2.4's recipe: velocities only here (a limit not reached yet still stops the
+        // bodies at it), position errors in the position iterations below.
+        solveJoints(step.joints, step.jointOrder, step.states, step.jointStep, false);
         solveVelocitiesClassic(step.constraints, step.states, invDt);
     }
     applyRestitution(step.constraints, step.states, def.restitutionThreshold, step.dt);
     integratePositions(step.states, step.dt);
     for (int i = 0; i < def.positionIterations; ++i) {
         // Box2D 2.4's stopping rule: done once nothing overlaps by more than 3 slops.
-        if (solvePositionsClassic(step.constraints, step.states) >= -3.0f * kLinearSlop) {
+        const bool contactsDone = solvePositionsClassic(step.constraints, step.states) >= -3.0f * kLinearSlop;
+        const bool jointsDone = solveJointPositions(step.joints, step.jointOrder, step.states);
+        if (contactsDone && jointsDone) {
             break;
         }
     }

@@ -5,6 +5,7 @@
 
 #include "contact_solver.hpp"
 #include "contact_solver_wide.hpp"
+#include "joint_solver.hpp"
 #include "solver_body.hpp"
 
 #include <span>
@@ -20,6 +21,11 @@ struct SolverStep {
     Vec2 gravity{0.0f, 0.0f};
     float dt = 0.0f;
     const SolverDef* def = nullptr;
+    // The step's joints: joints[jointOrder[k]] in order (solveSoftStepBlock() takes its block's
+    // order instead), and the rigid parts' softness at the (sub-)step.
+    std::span<Joint> joints{};
+    std::span<const int> jointOrder{};
+    JointStep jointStep{};
 };
 
 // Clamps a body's speed to maxLinearSpeed and its angular speed to what one integration step
@@ -43,9 +49,12 @@ void solveSoftStep(const SolverStep& step);
 // another block's constraints touch), then restitution on `restitution` (the block's, in
 // constraint order). Blocks share no body, so running one through all sub-steps before the
 // next gives what running all of them sub-step by sub-step gives, and the block's
-// constraints and bodies stay in cache meanwhile. step.constraints is not used.
+// constraints and bodies stay in cache meanwhile. step.constraints is not used; the joints
+// solved are blockJoints (the block's: every joint between its bodies), before the contacts in
+// each pass.
 void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLevel, int endLevel,
-                        std::span<const int> bodies, std::span<const WideRestitution> restitution);
+                        std::span<const int> bodies, std::span<const WideRestitution> restitution,
+                        std::span<const int> blockJoints = {});
 void solveClassic(const SolverStep& step);
 
 // Moves each sim by its state's deltas (centre, rotation, origin). A body that became

@@ -25,6 +25,14 @@ Manifold collide(const ShapeGeometry& a, const Transform& xfA, const ShapeGeomet
     constexpr int kTypes = 4;
     const int ta = static_cast<int>(a.index());
     const int tb = static_cast<int>(b.index());
+    // Chain segments (one-sided, with neighbours) have their own routine.
+    constexpr auto kChain = static_cast<int>(ShapeType::ChainSegment);
+    if (ta == kChain) {
+        return collideChainSegment(std::get<ChainSegment>(a), xfA, b, xfB, margin);
+    }
+    if (tb == kChain) {
+        return detail::swapped(collideChainSegment(std::get<ChainSegment>(b), xfB, a, xfA, margin));
+    }
     switch (ta * kTypes + tb) {
     case kCircle * kTypes + kCircle:
         return collideCircles(std::get<Circle>(a), xfA, std::get<Circle>(b), xfB, margin);

@@ -23,7 +23,7 @@ Collider::Collider(PhysicsSystem& system, const ShapeGeometry& geometry, const C
     constexpr const char* kConstructor = "Collider::Collider";
     requireNonNegative(kConstructor, "density", def.density);
     requireNonNegative(kConstructor, "friction", def.friction);
-    requireNonNegative(kConstructor, "restitution", def.restitution);
+    detail::component_check::requireUnitInterval(kConstructor, "restitution", def.restitution);
     requireNonNegative(kConstructor, "rollingResistance", def.rollingResistance);
 }
 

@@ -25,4 +25,11 @@ inline void requireNonNegative(const char* function, const char* field, float va
     }
 }
 
+inline void requireUnitInterval(const char* function, const char* field, float value) {
+    if (!std::isfinite(value) || value < 0.0f || value > 1.0f) {
+        throw core::Error(std::string("physics::") + function + "(): def." + field +
+                          " must be finite and in [0, 1], got " + formatFloat(value));
+    }
+}
+
 } // namespace e2d::physics::detail::component_check

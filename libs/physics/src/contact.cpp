@@ -46,6 +46,8 @@ void World::Impl::createContact(int shapeA, int shapeB) {
     c.friction = detail::mixFriction(s.def, a.friction, b.friction);
     c.restitution = detail::mixRestitution(s.def, a.restitution, b.restitution);
     c.rollingResistance = std::max(a.rollingResistance, b.rollingResistance);
+    c.touchEvents = c.sensor ? a.sensorEvents && b.sensorEvents : a.contactEvents && b.contactEvents;
+    c.hitEvents = a.hitEvents && b.hitEvents;
     c.alive = true;
     for (int side = 0; side < 2; ++side) {
         detail::BodyMotion& m = body(side == 0 ? c.bodyA : c.bodyB).motion;
@@ -63,7 +65,7 @@ void World::Impl::createContact(int shapeA, int shapeB) {
 void World::Impl::destroyContact(int contactIndex, bool reportEnd) {
     detail::Simulation& s = sim;
     detail::Contact& c = s.contacts[static_cast<std::size_t>(contactIndex)];
-    if (reportEnd && c.touching) {
+    if (reportEnd && c.touching && c.touchEvents) {
         if (c.sensor) {
             bool aIsSensor = shape(c.shapeA).isSensor;
             (s.inStep ? s.sensorEndEvents : s.pendingSensorEndEvents)
@@ -124,7 +126,7 @@ void World::Impl::updateContacts(float dt) {
     // the solver makes constraints of (without streaming the whole contact array again).
     s.touchingContacts.clear();
     auto listTouching = [&](int ci, const detail::Contact& c) {
-        if (c.touching && !c.sensor) {
+        if (c.touching && !c.sensor && c.enabled) {
             s.touchingContacts.push_back({ci, c.bodyA, c.bodyB, c.rollingResistance});
         }
     };
@@ -169,7 +171,7 @@ void World::Impl::updateContacts(float dt) {
             Manifold m = collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
                                  collisionAlgorithm, 0.0f);
             c.touching = m.pointCount > 0;
-            if (c.touching != wasTouching) {
+            if (c.touching != wasTouching && c.touchEvents) {
                 bool aIsSensor = sa.isSensor;
                 ShapeId sensorId = aIsSensor ? c.idA : c.idB;
                 ShapeId visitorId = aIsSensor ? c.idB : c.idA;
@@ -216,10 +218,27 @@ void World::Impl::updateContacts(float dt) {
         }
         c.manifold = m;
         c.touching = m.pointCount > 0;
-        if (c.touching && !wasTouching) {
+        if (c.touching && !wasTouching && c.touchEvents) {
             s.beginEvents.push_back({c.idA, c.idB, m});
-        } else if (!c.touching && wasTouching) {
+        } else if (!c.touching && wasTouching && c.touchEvents) {
             s.endEvents.push_back({c.idA, c.idB});
+        }
+        if (hooks.preSolve) {
+            if (c.touching) {
+                CallbackLock lock(*this, "step", "pre-solve");
+                c.enabled = hooks.preSolve(c.idA, c.idB, c.manifold);
+            } else {
+                c.enabled = true;
+            }
+            if (!c.enabled) {
+                // Nothing was solved: no impulse to warm start the next step with.
+                for (int i = 0; i < c.manifold.pointCount; ++i) {
+                    c.manifold.points[i].normalImpulse = 0.0f;
+                    c.manifold.points[i].tangentImpulse = 0.0f;
+                }
+            }
+        } else {
+            c.enabled = true;
         }
         if (c.touching && awakeA != awakeB) {
             // Something awake touches a sleeping island: it wakes (static bodies never do).

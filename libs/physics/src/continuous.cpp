@@ -79,6 +79,9 @@ void World::Impl::solveContinuous(int simIndex) {
                     return;
                 }
                 const Transform& xfOther = endTransform(otherBody);
+                if (!passesChainAndFilter(si, otherIndex, xf1, xfOther)) {
+                    return;
+                }
                 TOIInput input;
                 input.proxyA = makeProxy(other.geometry);
                 input.proxyB = proxyB;

@@ -77,6 +77,8 @@ ShapeProxy makeProxy(const Segment& segment) {
     return proxy;
 }
 
+ShapeProxy makeProxy(const ChainSegment& segment) { return makeProxy(segment.segment); }
+
 ShapeProxy makeProxy(const ShapeGeometry& shape) {
     return std::visit([](const auto& s) { return makeProxy(s); }, shape);
 }

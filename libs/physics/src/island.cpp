@@ -38,6 +38,19 @@ void World::Impl::wakeBody(int bodyIndex) {
             }
             ci = c.next[side];
         }
+        // Jointed bodies wake together.
+        for (int ji = body(k).jointHead; ji != kNullIndex;) {
+            const detail::Joint& j = joint(ji);
+            int side = j.bodyA == k ? 0 : 1;
+            int other = side == 0 ? j.bodyB : j.bodyA;
+            detail::Body& o = body(other);
+            if (o.type != BodyType::Static && !o.motion.awake && o.enabled) {
+                o.motion.awake = true;
+                o.motion.sleepTime = 0.0f;
+                stack.push_back(other);
+            }
+            ji = j.next[side];
+        }
     }
 }
 
@@ -54,14 +67,14 @@ void World::Impl::updateSleep(float dt) {
         s.islandParent[static_cast<std::size_t>(i)] = i;
         s.islandSleepTime[static_cast<std::size_t>(i)] = kHuge;
     }
-    for (const detail::Simulation::ConstraintBodies& c : s.constraintBodies) {
+    auto join = [&](const detail::Simulation::ConstraintBodies& c) {
         if (c.indexA < 0 || c.indexB < 0) {
-            continue;
+            return;
         }
         // Kinematic bodies would chain everything they carry into one island.
         if (body(s.sims[static_cast<std::size_t>(c.indexA)].bodyIndex).type != BodyType::Dynamic ||
             body(s.sims[static_cast<std::size_t>(c.indexB)].bodyIndex).type != BodyType::Dynamic) {
-            continue;
+            return;
         }
         int ra = detail::findRoot(s.islandParent, c.indexA);
         int rb = detail::findRoot(s.islandParent, c.indexB);
@@ -69,6 +82,13 @@ void World::Impl::updateSleep(float dt) {
             // The lower index becomes the root, so the result does not depend on contact order.
             s.islandParent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
         }
+    };
+    for (const detail::Simulation::ConstraintBodies& c : s.constraintBodies) {
+        join(c);
+    }
+    // Jointed bodies sleep together (and so wake together).
+    for (const detail::Simulation::ConstraintBodies& c : s.jointBodies) {
+        join(c);
     }
 
     float linearTolSq = def.linearSleepTolerance * def.linearSleepTolerance;
@@ -138,6 +158,17 @@ void World::setAwake(BodyId id, bool awake) {
                 stack.push_back(other);
             }
             ci = c.next[side];
+        }
+        for (int ji = b.jointHead; ji != kNullIndex;) {
+            const detail::Joint& j = w.joint(ji);
+            int side = j.bodyA == k ? 0 : 1;
+            int other = side == 0 ? j.bodyB : j.bodyA;
+            detail::Body& o = w.body(other);
+            if (j.type != JointType::Mouse && o.type == BodyType::Dynamic && o.motion.awake) {
+                o.motion.awake = false;
+                stack.push_back(other);
+            }
+            ji = j.next[side];
         }
     }
 }

@@ -96,7 +96,9 @@ inline WorkFrame workFrameOf(const Polygon& a, const Transform& xfA) {
             Vec2 c2 = sd.closest2 - poly2.radius * w;
             int feature1 = sd.fraction1 < 0.5f ? i11 : i12;
             int feature2 = sd.fraction2 < 0.5f ? i21 : i22;
-            LocalManifold m;
+            // Zeroed: the unused second point would otherwise be copied uninitialised (GCC 12
+            // at -O3 rightly warns). A vertex contact is the rare path; the stores cost nothing.
+            LocalManifold m{};
             m.points[0] = 0.5f * (c1 + c2);
             m.separations[0] = distance - radius;
             m.ids[0] = flip ? makeFeatureId(feature2, feature1) : makeFeatureId(feature1, feature2);

@@ -131,6 +131,13 @@ MassData computeMass(const ShapeGeometry& shape, float density) {
     }
     case ShapeType::Polygon:
         return computeMass(std::get<Polygon>(shape), density);
+    case ShapeType::ChainSegment: {
+        checkDensity(density);
+        const Segment& segment = std::get<ChainSegment>(shape).segment;
+        MassData md;
+        md.center = 0.5f * (segment.point1 + segment.point2);
+        return md;
+    }
     }
     return {};
 }

@@ -44,6 +44,10 @@ ShapeGeometry scaledGeometry(const ShapeGeometry& geometry, glm::vec2 scale) {
             return Capsule{c.center1 * s, c.center2 * s, c.radius * r};
         }
         ShapeGeometry operator()(const Segment& g) const { return Segment{g.point1 * s, g.point2 * s}; }
+        ShapeGeometry operator()(const ChainSegment& g) const {
+            return ChainSegment{{g.segment.point1 * s, g.segment.point2 * s}, g.ghost1 * s,
+                                g.ghost2 * s, g.hasGhost1, g.hasGhost2};
+        }
         ShapeGeometry operator()(const Polygon& p) const {
             std::vector<Vec2> points(p.vertices.begin(), p.vertices.begin() + p.count);
             for (Vec2& v : points) {

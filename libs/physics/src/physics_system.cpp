@@ -2,6 +2,7 @@
 #include <e2d/physics/physics_system.hpp>
 
 #include <e2d/core/contact_info.hpp>
+#include <e2d/core/error.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/physics/collider.hpp>
 #include <e2d/physics/rigidbody.hpp>
@@ -53,6 +54,12 @@ void PhysicsSystem::unregisterStaticCollider(Collider& collider) noexcept {
 }
 
 void PhysicsSystem::fixedUpdate(double step) {
+    if (dispatching_) {
+        throw core::Error("physics::PhysicsSystem::fixedUpdate(): called from inside an event "
+                          "callback (onCollisionEnter/Exit, onTriggerEnter/Exit) of the same "
+                          "system");
+    }
+    forgetDestroyedBodies();
     pullMovedObjects();
     world_.step(static_cast<float>(step));
     pushBodyTransforms();
@@ -65,6 +72,34 @@ void PhysicsSystem::clear() {
     colliders_.clear();
     rigidbodies_.clear();
     staticColliders_.clear();
+}
+
+// Game code may destroy a component's body or a static collider's body through the World (in
+// an event callback or anywhere else). Its components then have no body and no shapes: the
+// object stays where the body last put it, as if it had no Rigidbody or Collider.
+void PhysicsSystem::forgetDestroyedBodies() {
+    std::erase_if(rigidbodies_, [&](Rigidbody* rb) {
+        if (world_.isValid(rb->body_)) {
+            return false;
+        }
+        for (Collider* c : rb->gameObject()->getComponents<Collider>()) {
+            if (!c->shape_.isNull() && !world_.isValid(c->shape_)) {
+                unregisterCollider(c->shape_);
+                c->shape_ = {};
+            }
+        }
+        rb->body_ = {};
+        return true;
+    });
+    std::erase_if(staticColliders_, [&](Collider* c) {
+        if (world_.isValid(c->ownBody_)) {
+            return false;
+        }
+        unregisterCollider(c->shape_);
+        c->shape_ = {};
+        c->ownBody_ = {};
+        return true;
+    });
 }
 
 // Objects moved by game code since the last step are teleported: the object is the authority
@@ -123,9 +158,20 @@ core::ContactInfo contactFor(const Manifold* manifold, bool receiverIsA, core::G
 
 void PhysicsSystem::dispatchEvents() {
     // Components may destroy objects or components while handling an event; core defers both,
-    // so the pointers looked up here stay valid until the next frame.
+    // so the pointers looked up here stay valid until the next frame. They may also change the
+    // world (destroy bodies, create them, even step it): the events are copied first, so the
+    // world's own arrays may change under the loops below.
+    beginEvents_.assign(world_.contactBeginEvents().begin(), world_.contactBeginEvents().end());
+    endEvents_.assign(world_.contactEndEvents().begin(), world_.contactEndEvents().end());
+    sensorBeginEvents_.assign(world_.sensorBeginEvents().begin(), world_.sensorBeginEvents().end());
+    sensorEndEvents_.assign(world_.sensorEndEvents().begin(), world_.sensorEndEvents().end());
+    dispatching_ = true;
+    struct Reset {
+        bool& flag;
+        ~Reset() { flag = false; }
+    } reset{dispatching_};
     const auto objectOf = [](Collider* c) { return c != nullptr ? c->gameObject() : nullptr; };
-    for (const ContactBeginTouchEvent& e : world_.contactBeginEvents()) {
+    for (const ContactBeginTouchEvent& e : beginEvents_) {
         Collider* a = collider(e.shapeA);
         Collider* b = collider(e.shapeB);
         if (a != nullptr) {
@@ -135,7 +181,7 @@ void PhysicsSystem::dispatchEvents() {
             b->gameObject()->dispatchCollisionEnter(contactFor(&e.manifold, false, objectOf(a), a));
         }
     }
-    for (const ContactEndTouchEvent& e : world_.contactEndEvents()) {
+    for (const ContactEndTouchEvent& e : endEvents_) {
         Collider* a = collider(e.shapeA);
         Collider* b = collider(e.shapeB);
         if (a != nullptr) {
@@ -145,7 +191,7 @@ void PhysicsSystem::dispatchEvents() {
             b->gameObject()->dispatchCollisionExit(contactFor(nullptr, false, objectOf(a), a));
         }
     }
-    for (const SensorBeginTouchEvent& e : world_.sensorBeginEvents()) {
+    for (const SensorBeginTouchEvent& e : sensorBeginEvents_) {
         Collider* sensor = collider(e.sensorShape);
         Collider* visitor = collider(e.visitorShape);
         if (sensor != nullptr) {
@@ -155,7 +201,7 @@ void PhysicsSystem::dispatchEvents() {
             visitor->gameObject()->dispatchTriggerEnter(contactFor(nullptr, true, objectOf(sensor), sensor));
         }
     }
-    for (const SensorEndTouchEvent& e : world_.sensorEndEvents()) {
+    for (const SensorEndTouchEvent& e : sensorEndEvents_) {
         Collider* sensor = collider(e.sensorShape);
         Collider* visitor = collider(e.visitorShape);
         if (sensor != nullptr) {

@@ -170,6 +170,15 @@ void validate(const ShapeGeometry& shape, const char* function) {
         }
         return;
     }
+    case ShapeType::ChainSegment: {
+        const auto& chain = std::get<ChainSegment>(shape);
+        if ((chain.hasGhost1 && !isSane(chain.ghost1)) || (chain.hasGhost2 && !isSane(chain.ghost2))) {
+            fail(function, "chain segment ghost points must be finite and within kHuge, got " +
+                               formatVec(chain.ghost1) + " and " + formatVec(chain.ghost2));
+        }
+        validate(chain.segment, function);
+        return;
+    }
     case ShapeType::Segment: {
         const auto& segment = std::get<Segment>(shape);
         if (!isSane(segment.point1) || !isSane(segment.point2)) {

@@ -112,6 +112,15 @@ CastOutput rayCast(const RayCastInput& input, const Segment& shape) {
     return makeHit(input, t, dot(n, d) > 0.0f ? -n : n);
 }
 
+CastOutput rayCast(const RayCastInput& input, const ChainSegment& shape) {
+    // One-sided: a ray along the front normal (or parallel to the segment) comes from behind.
+    const Segment& s = shape.segment;
+    if (dot(input.translation, rightPerp(s.point2 - s.point1)) >= 0.0f) {
+        return {};
+    }
+    return rayCast(input, s);
+}
+
 CastOutput rayCast(const RayCastInput& input, const Polygon& shape) {
     if (shape.radius > 0.0f) {
         if (testPoint(shape, input.origin)) {

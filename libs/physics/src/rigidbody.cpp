@@ -64,7 +64,8 @@ void Rigidbody::onInitialize() {
     ensureBody();
     // Colliders that attached to a static body before this component existed move onto it.
     for (Collider* c : gameObject()->getComponents<Collider>()) {
-        if (!c->shape_.isNull() && system_.world().shapeBody(c->shape_) != body_) {
+        if (!c->shape_.isNull() && (!system_.world().isValid(c->shape_) ||
+                                    system_.world().shapeBody(c->shape_) != body_)) {
             c->attach();
         }
     }
@@ -75,11 +76,17 @@ void Rigidbody::onTerminate() {
     if (body_.isNull()) {
         return;
     }
+    if (!system_.world().isValid(body_)) {
+        // Destroyed through the World since the last fixed step: its shapes went with it.
+        system_.forgetDestroyedBodies();
+        return;
+    }
     // While it goes, colliders looking for a Rigidbody must not find this one.
     leaving_ = true;
     std::vector<Collider*> riders;
     for (Collider* c : gameObject()->getComponents<Collider>()) {
-        if (!c->shape_.isNull() && system_.world().shapeBody(c->shape_) == body_) {
+        if (!c->shape_.isNull() && system_.world().isValid(c->shape_) &&
+            system_.world().shapeBody(c->shape_) == body_) {
             c->detach();
             riders.push_back(c);
         }
@@ -99,7 +106,8 @@ void Rigidbody::onTerminate() {
 BodyId Rigidbody::requireBody(const char* function) const {
     if (body_.isNull()) {
         throw core::Error(std::string("physics::Rigidbody::") + function +
-                          "(): the Rigidbody has no body (its object is not in a scene yet)");
+                          "(): the Rigidbody has no body (its object is not in a scene yet, or "
+                          "its body was destroyed through the World)");
     }
     return body_;
 }

@@ -75,6 +75,11 @@ struct Contact {
     bool touching = false;
     bool sensor = false; // one shape is a sensor: overlap only, no constraint
     bool alive = false;
+    // The pre-solve callback's answer this step: false leaves the contact out of the solver.
+    bool enabled = true;
+    // Both shapes' event switches (contact or sensor begin/end, hits).
+    bool touchEvents = true;
+    bool hitEvents = true;
 };
 
 struct Simulation {
@@ -150,6 +155,15 @@ struct Simulation {
     std::vector<int> lastConstraintContacts;
     std::vector<ConstraintBodies> lastConstraintBodies;
     std::vector<unsigned char> lastStateRigid;
+    // Joints this step (World::Impl::prepareJoints()): the world's joint slots with a moving
+    // side, in slot order, and their sides' BodyState indices (-1: static or asleep); last
+    // solve's, for the wide schedule's check; the wide solver's joints by block: block b's are
+    // blockJoints[blockJointStart[b] .. blockJointStart[b + 1]), slot order within a block.
+    std::vector<int> activeJoints;
+    std::vector<ConstraintBodies> jointBodies;
+    std::vector<ConstraintBodies> lastJointBodies;
+    std::vector<int> blockJointStart;
+    std::vector<int> blockJoints;
     std::vector<int> islandParent; // union-find over the awake arrays
     std::vector<float> islandSleepTime;
     std::vector<int> wakeStack;
@@ -160,6 +174,7 @@ struct Simulation {
     std::vector<SensorEndTouchEvent> sensorEndEvents;
     std::vector<ContactHitEvent> hitEvents;
     std::vector<BodyId> nonFiniteBodies;
+    std::vector<BodyId> outOfRangeBodies;
     StepCounters counters{};
     // End events of contacts destroyed between steps (a shape destroyed, a body disabled):
     // handed out with the next step's events, so the current arrays stay valid meanwhile.

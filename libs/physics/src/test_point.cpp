@@ -16,6 +16,8 @@ bool testPoint(const Capsule& shape, Vec2 localPoint) {
 
 bool testPoint(const Segment&, Vec2) { return false; }
 
+bool testPoint(const ChainSegment&, Vec2) { return false; }
+
 bool testPoint(const Polygon& shape, Vec2 localPoint) {
     float maxSeparation = -kHuge;
     for (int i = 0; i < shape.count; ++i) {

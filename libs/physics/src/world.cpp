@@ -4,6 +4,7 @@
 #include "world_check.hpp"
 #include "world_impl.hpp"
 
+#include <cstdint>
 #include <string>
 
 namespace e2d::physics {
@@ -33,6 +34,9 @@ void validateWorldDef(const WorldDef& def) {
     if (def.bodyCapacity < 0) {
         check::fail(fn, "def.bodyCapacity must be >= 0, got " + std::to_string(def.bodyCapacity));
     }
+    if (def.jointCapacity < 0) {
+        check::fail(fn, "def.jointCapacity must be >= 0, got " + std::to_string(def.jointCapacity));
+    }
     if (def.shapeCapacity < 0) {
         check::fail(fn,
                     "def.shapeCapacity must be >= 0, got " + std::to_string(def.shapeCapacity));
@@ -59,8 +63,41 @@ void validateShapeDef(const ShapeDef& def) {
     const char* fn = "createShape";
     check::requireNonNegative(fn, "def.density", def.density);
     check::requireNonNegative(fn, "def.friction", def.friction);
-    check::requireNonNegative(fn, "def.restitution", def.restitution);
+    if (!(isFinite(def.restitution) && def.restitution >= 0.0f && def.restitution <= 1.0f)) {
+        check::fail(fn, "def.restitution must be finite and in [0, 1], got " +
+                            check::text(def.restitution));
+    }
     check::requireNonNegative(fn, "def.rollingResistance", def.rollingResistance);
+}
+
+// A world's tag when WorldDef::tag is 0: the address of its heap-allocated state (which moves
+// with the World, so ids survive a move) mixed by the splitmix64 finaliser, folded to 16 bits,
+// never 0. No counter: a process-wide counter would be global mutable state.
+std::uint16_t tagFromAddress(const void* address) {
+    auto x = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(address));
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ull;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebull;
+    x ^= x >> 31;
+    auto tag = static_cast<std::uint16_t>(x ^ (x >> 16) ^ (x >> 32) ^ (x >> 48));
+    return tag == 0 ? std::uint16_t{1} : tag;
+}
+
+// "BodyId (index1 3, generation 1, world 4021)"
+template <class Id>
+std::string describe(const char* type, Id id) {
+    return std::string(type) + " (index1 " + std::to_string(id.index1) + ", generation " +
+           std::to_string(id.generation) + ", world " + std::to_string(id.world) + ")";
+}
+
+template <class Id>
+[[noreturn]] void failHandle(const char* function, const char* type, Id id, std::uint16_t tag) {
+    if (!id.isNull() && id.world != tag) {
+        check::fail(function, describe(type, id) + " belongs to another world (this world's tag is " +
+                                  std::to_string(tag) + ")");
+    }
+    check::fail(function, "stale or null " + describe(type, id));
 }
 
 std::uint16_t nextGeneration(std::uint16_t generation) {
@@ -76,8 +113,7 @@ std::uint16_t nextGeneration(std::uint16_t generation) {
 int World::Impl::require(BodyId id, const char* function) const {
     int index = find(id);
     if (index == kNullIndex) {
-        check::fail(function, "stale or null BodyId (index1 " + std::to_string(id.index1) +
-                                  ", generation " + std::to_string(id.generation) + ")");
+        failHandle(function, "BodyId", id, tag);
     }
     return index;
 }
@@ -85,10 +121,27 @@ int World::Impl::require(BodyId id, const char* function) const {
 int World::Impl::require(ShapeId id, const char* function) const {
     int index = find(id);
     if (index == kNullIndex) {
-        check::fail(function, "stale or null ShapeId (index1 " + std::to_string(id.index1) +
-                                  ", generation " + std::to_string(id.generation) + ")");
+        failHandle(function, "ShapeId", id, tag);
     }
     return index;
+}
+
+int World::Impl::require(JointId id, const char* function) const {
+    int index = find(id);
+    if (index == kNullIndex) {
+        failHandle(function, "JointId", id, tag);
+    }
+    return index;
+}
+
+void World::Impl::requireUnlocked(const char* function) const {
+    if (lockedBy != nullptr) {
+        const std::string callback =
+            lockedHook != nullptr ? std::string("the ") + lockedHook + " callback" : "the callback";
+        check::fail(function, "cannot run inside " + callback + " of " + lockedBy +
+                                  "() (it would change what the callback is walking); collect "
+                                  "the ids and call it after " + lockedBy + "() returns");
+    }
 }
 
 void World::Impl::createProxy(int shapeIndex) {
@@ -141,7 +194,18 @@ bool World::Impl::shouldPair(int shapeA, int shapeB) const {
     if (body(a.body).type != BodyType::Dynamic && body(b.body).type != BodyType::Dynamic) {
         return false;
     }
-    return shouldCollide(a.filter, b.filter);
+    if (!shouldCollide(a.filter, b.filter)) {
+        return false;
+    }
+    if (body(a.body).jointHead != kNullIndex && body(b.body).jointHead != kNullIndex &&
+        jointBlocksCollision(a.body, b.body)) {
+        return false;
+    }
+    if (!hooks.pairFilter) {
+        return true;
+    }
+    CallbackLock lock(*this, sim.inStep ? "step" : "updatePairs", "pair filter");
+    return hooks.pairFilter(shapeId(shapeA), shapeId(shapeB));
 }
 
 // --- World ---
@@ -154,10 +218,13 @@ World::World(const WorldDef& def) {
     impl_->gravity = def.gravity;
     impl_->collisionAlgorithm = def.collisionAlgorithm;
     impl_->speculativeDistance = def.speculativeDistance;
+    impl_->tag = def.tag != 0 ? def.tag : tagFromAddress(impl_.get());
     impl_->bodies.reserve(static_cast<std::size_t>(def.bodyCapacity));
     impl_->bodyIds.reserve(def.bodyCapacity);
     impl_->shapes.reserve(static_cast<std::size_t>(def.shapeCapacity));
     impl_->shapeIds.reserve(def.shapeCapacity);
+    impl_->joints.reserve(static_cast<std::size_t>(def.jointCapacity));
+    impl_->jointIds.reserve(def.jointCapacity);
 }
 
 World::~World() = default;
@@ -173,8 +240,10 @@ void World::setGravity(Vec2 gravity) {
 
 CollisionAlgorithm World::collisionAlgorithm() const { return impl_->collisionAlgorithm; }
 float World::speculativeDistance() const { return impl_->speculativeDistance; }
+std::uint16_t World::tag() const { return impl_->tag; }
 
 BodyId World::createBody(const BodyDef& def) {
+    impl_->requireUnlocked("createBody");
     validateBodyDef(def);
     Impl& w = *impl_;
     int index = w.bodyIds.allocate();
@@ -197,8 +266,12 @@ BodyId World::createBody(const BodyDef& def) {
 }
 
 void World::destroyBody(BodyId id) {
+    impl_->requireUnlocked("destroyBody");
     Impl& w = *impl_;
     int index = w.require(id, "destroyBody");
+    while (w.body(index).jointHead != kNullIndex) {
+        w.destroyJointAt(w.body(index).jointHead);
+    }
     while (w.body(index).headShape != kNullIndex) {
         w.destroyShapeAt(w.body(index).headShape);
     }
@@ -219,6 +292,7 @@ Transform World::transform(BodyId id) const {
 }
 
 void World::setTransform(BodyId id, Vec2 position, float angle) {
+    impl_->requireUnlocked("setTransform");
     Impl& w = *impl_;
     int index = w.require(id, "setTransform");
     check::requirePosition("setTransform", "position", position);
@@ -274,6 +348,7 @@ bool World::isBodyEnabled(BodyId id) const {
 }
 
 void World::setBodyEnabled(BodyId id, bool enabled) {
+    impl_->requireUnlocked("setBodyEnabled");
     Impl& w = *impl_;
     int index = w.require(id, "setBodyEnabled");
     if (w.body(index).enabled == enabled) {
@@ -304,6 +379,7 @@ std::vector<ShapeId> World::bodyShapes(BodyId id) const {
 }
 
 ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ShapeGeometry& geometry) {
+    impl_->requireUnlocked("createShape");
     Impl& w = *impl_;
     int bodyIndex = w.require(bodyId, "createShape");
     validateShapeDef(def);
@@ -325,6 +401,9 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ShapeGeomet
     s.restitution = def.restitution;
     s.rollingResistance = def.rollingResistance;
     s.isSensor = def.isSensor;
+    s.contactEvents = def.enableContactEvents;
+    s.sensorEvents = def.enableSensorEvents;
+    s.hitEvents = def.enableHitEvents;
     s.body = bodyIndex;
 
     detail::Body& b = w.body(bodyIndex);
@@ -344,6 +423,7 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ShapeGeomet
 }
 
 void World::destroyShape(ShapeId id) {
+    impl_->requireUnlocked("destroyShape");
     impl_->destroyShapeAt(impl_->require(id, "destroyShape"));
 }
 
@@ -375,6 +455,7 @@ Filter World::shapeFilter(ShapeId id) const {
 }
 
 void World::setShapeFilter(ShapeId id, const Filter& filter) {
+    impl_->requireUnlocked("setShapeFilter");
     Impl& w = *impl_;
     int index = w.require(id, "setShapeFilter");
     detail::Shape& s = w.shape(index);

@@ -37,6 +37,9 @@ Extents extentsOf(const ShapeGeometry& geometry, Vec2 center) {
             } else if constexpr (std::is_same_v<T, Segment>) {
                 return {kLinearSlop,
                         std::max(length(g.point1 - center), length(g.point2 - center))};
+            } else if constexpr (std::is_same_v<T, ChainSegment>) {
+                return {kLinearSlop, std::max(length(g.segment.point1 - center),
+                                              length(g.segment.point2 - center))};
             } else {
                 float minExtent = kHuge;
                 float maxExtent = 0.0f;
@@ -377,12 +380,14 @@ std::span<const SensorEndTouchEvent> World::sensorEndEvents() const {
 }
 std::span<const ContactHitEvent> World::hitEvents() const { return impl_->sim.hitEvents; }
 std::span<const BodyId> World::nonFiniteBodies() const { return impl_->sim.nonFiniteBodies; }
+std::span<const BodyId> World::outOfRangeBodies() const { return impl_->sim.outOfRangeBodies; }
 
 StepCounters World::stepCounters() const { return impl_->sim.counters; }
 
 int World::contactCount() const { return impl_->sim.contactCount; }
 
 void World::forEachTouchingContact(FunctionRef<void(const ContactData&)> callback) const {
+    Impl::CallbackLock lock(*impl_, "forEachTouchingContact");
     for (const detail::Contact& c : impl_->sim.contacts) {
         if (c.alive && c.touching && !c.sensor) {
             callback(ContactData{c.idA, c.idB, &c.manifold});

@@ -5,7 +5,9 @@
 
 #include "broad_phase.hpp"
 #include "id_pool.hpp"
+#include "joint_solver.hpp"
 #include "simulation.hpp"
+#include "world_hooks.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -25,6 +27,8 @@ struct Body {
     // owns no heap memory of its own.
     int headShape = kNullIndex;
     int shapeCount = 0;
+    // Intrusive list of the body's joints (detail::Joint::next[side]).
+    int jointHead = kNullIndex;
     std::uint16_t generation = 1;
     BodyType type = BodyType::Static;
     bool enabled = true;
@@ -51,6 +55,10 @@ struct Shape {
     std::uint16_t generation = 1;
     bool isSensor = false;
     bool alive = false;
+    // Event switches (ShapeDef::enable*Events).
+    bool contactEvents = true;
+    bool sensorEvents = true;
+    bool hitEvents = true;
 };
 
 } // namespace e2d::physics::detail
@@ -61,6 +69,8 @@ struct World::Impl {
     Vec2 gravity{0.0f, -10.0f};
     CollisionAlgorithm collisionAlgorithm = CollisionAlgorithm::Sat;
     float speculativeDistance = kSpeculativeDistance;
+    // Written into every id handed out and checked on every use (WorldDef::tag); never 0.
+    std::uint16_t tag = 1;
 
     std::vector<detail::Body> bodies;
     std::vector<detail::Shape> shapes;
@@ -70,7 +80,7 @@ struct World::Impl {
 
     // Index of a live body named by `id`, or kNullIndex.
     [[nodiscard]] int find(BodyId id) const {
-        if (id.index1 == 0 || id.index1 > bodies.size()) {
+        if (id.index1 == 0 || id.index1 > bodies.size() || id.world != tag) {
             return detail::kNullIndex;
         }
         const detail::Body& body = bodies[id.index1 - 1];
@@ -78,22 +88,53 @@ struct World::Impl {
                                                               : detail::kNullIndex;
     }
     [[nodiscard]] int find(ShapeId id) const {
-        if (id.index1 == 0 || id.index1 > shapes.size()) {
+        if (id.index1 == 0 || id.index1 > shapes.size() || id.world != tag) {
             return detail::kNullIndex;
         }
         const detail::Shape& shape = shapes[id.index1 - 1];
         return shape.alive && shape.generation == id.generation ? static_cast<int>(id.index1 - 1)
                                                                 : detail::kNullIndex;
     }
+    // The function whose callback is running (overlapAabb, forEachCandidatePair,
+    // forEachTouchingContact, or step/updatePairs for the hooks), or nullptr, and for a hook
+    // its name ("pre-solve", "pair filter"). Meanwhile, functions that would change what the
+    // callback walks (the broad phase, the contacts, the object arrays) refuse to run.
+    mutable const char* lockedBy = nullptr;
+    mutable const char* lockedHook = nullptr;
+    // Throws core::Error naming `function` and the running callback's function, if any.
+    void requireUnlocked(const char* function) const;
+    // Locks the world while a query's callback runs; nests.
+    class CallbackLock {
+    public:
+        CallbackLock(const Impl& world, const char* function, const char* hook = nullptr)
+            : world_(world), previous_(world.lockedBy), previousHook_(world.lockedHook) {
+            world_.lockedBy = function;
+            world_.lockedHook = hook;
+        }
+        ~CallbackLock() {
+            world_.lockedBy = previous_;
+            world_.lockedHook = previousHook_;
+        }
+        CallbackLock(const CallbackLock&) = delete;
+        CallbackLock& operator=(const CallbackLock&) = delete;
+
+    private:
+        const Impl& world_;
+        const char* previous_;
+        const char* previousHook_;
+    };
+
     // Like find(), but throws core::Error naming `function` for a stale or null handle.
     int require(BodyId id, const char* function) const;
     int require(ShapeId id, const char* function) const;
 
     [[nodiscard]] BodyId bodyId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1, bodies[static_cast<std::size_t>(index)].generation};
+        return {static_cast<std::uint32_t>(index) + 1,
+                bodies[static_cast<std::size_t>(index)].generation, tag};
     }
     [[nodiscard]] ShapeId shapeId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1, shapes[static_cast<std::size_t>(index)].generation};
+        return {static_cast<std::uint32_t>(index) + 1,
+                shapes[static_cast<std::size_t>(index)].generation, tag};
     }
     detail::Body& body(int index) { return bodies[static_cast<std::size_t>(index)]; }
     const detail::Body& body(int index) const { return bodies[static_cast<std::size_t>(index)]; }
@@ -109,6 +150,8 @@ struct World::Impl {
     // --- dynamics (world_step.cpp, contact.cpp, island.cpp, world_dynamics.cpp) ---
 
     detail::Simulation sim;
+    // Pre-solve and pair filter callbacks, move events (world_hooks.cpp).
+    detail::Hooks hooks;
 
     // Sets the body's motion fields from the def (createBody()).
     void initMotion(int bodyIndex, const BodyDef& def);
@@ -126,6 +169,46 @@ struct World::Impl {
     void scheduleWide(int constraintCount);
     void solveContinuous(int simIndex);
     void updateSleep(float dt);
+    // Fills hooks.moveEvents from this step's solver bodies (world_hooks.cpp).
+    void collectMoveEvents(float dt);
+    // Re-mixes the materials and event switches of the shape's contacts after a setter.
+    void refreshContactMaterials(int shapeIndex);
+    // Continuous collision's extra rules: a chain segment is one-sided, and the pair filter
+    // callback may refuse the pair (world_hooks.cpp).
+    [[nodiscard]] bool passesChainAndFilter(int movingShape, int otherShape,
+                                            const Transform& xfMoving,
+                                            const Transform& xfOther) const;
+
+    // --- joints (joint.cpp, joint_step.cpp) ---
+
+    std::vector<detail::Joint> joints;
+    detail::IdPool jointIds;
+
+    [[nodiscard]] int find(JointId id) const {
+        if (id.index1 == 0 || id.index1 > joints.size() || id.world != tag) {
+            return detail::kNullIndex;
+        }
+        const detail::Joint& j = joints[id.index1 - 1];
+        return j.alive && j.generation == id.generation ? static_cast<int>(id.index1 - 1) : detail::kNullIndex;
+    }
+    int require(JointId id, const char* function) const;
+    [[nodiscard]] JointId jointId(int index) const {
+        return {static_cast<std::uint32_t>(index) + 1, joints[static_cast<std::size_t>(index)].generation, tag};
+    }
+    detail::Joint& joint(int index) { return joints[static_cast<std::size_t>(index)]; }
+    const detail::Joint& joint(int index) const { return joints[static_cast<std::size_t>(index)]; }
+    void destroyJointAt(int jointIndex);
+    // Whether a joint between the two bodies turns their collisions off.
+    [[nodiscard]] bool jointBlocksCollision(int bodyA, int bodyB) const;
+    // Wakes the sleeping dynamic side of every joint whose other side is awake (before solve()).
+    void wakeJointedBodies();
+    // The step's joints: s.activeJoints (joints with a moving side, in slot order), prepared,
+    // and s.jointBodies (their BodyState indices).
+    void prepareJoints(float dt, float h);
+    // The wide solver's joints by block (s.blockJointStart, s.blockJoints), after scheduleWide().
+    void assignJointBlocks();
+    // Reactions of the active joints from their impulses (invH: 1 / the sub-step).
+    void storeJointReactions(float invH);
 };
 
 } // namespace e2d::physics

@@ -9,6 +9,7 @@ namespace e2d::physics {
 
 void World::updatePairs() {
     Impl& w = *impl_;
+    w.requireUnlocked("updatePairs");
     w.broadPhase.updatePairs([&w](std::uint64_t a, std::uint64_t b) {
         return w.shouldPair(static_cast<int>(a), static_cast<int>(b));
     });
@@ -22,6 +23,7 @@ int World::candidatePairCount() const { return impl_->broadPhase.pairCount(); }
 
 void World::forEachCandidatePair(FunctionRef<void(ShapeId, ShapeId)> callback) const {
     const Impl& w = *impl_;
+    Impl::CallbackLock lock(w, "forEachCandidatePair");
     w.broadPhase.forEachPair([&](const detail::ProxyPair& pair) {
         callback(w.shapeId(static_cast<int>(pair.userDataA)),
                  w.shapeId(static_cast<int>(pair.userDataB)));

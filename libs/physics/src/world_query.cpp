@@ -93,7 +93,8 @@ std::optional<RayResult> entryHit(const detail::Shape& shape, const Transform& x
 // inside, so its one hit is its entry.
 std::optional<RayResult> exitHit(const detail::Shape& shape, const Transform& xf,
                                  const RayCastInput& input) {
-    if (typeOf(shape.geometry) == ShapeType::Segment) {
+    if (typeOf(shape.geometry) == ShapeType::Segment ||
+        typeOf(shape.geometry) == ShapeType::ChainSegment) {
         return std::nullopt;
     }
     Vec2 end = input.origin + input.maxFraction * input.translation;
@@ -210,6 +211,7 @@ void World::overlapAabb(const Aabb& box, const QueryFilter& filter,
                         FunctionRef<bool(ShapeId)> callback) const {
     checkBox("overlapAabb", box);
     const Impl& w = *impl_;
+    Impl::CallbackLock lock(w, "overlapAabb");
     bool go = true;
     for (BodyType type : kAllTypes) {
         w.broadPhase.tree(type).query(box, filter.maskBits, [&](int, std::uint64_t userData) {
@@ -304,6 +306,15 @@ std::optional<RayResult> World::castShape(const ShapeGeometry& geometry, const T
             }
             input.proxyA = makeProxy(shape.geometry);
             input.transformA = w.body(shape.body).transform;
+            if (const auto* chain = std::get_if<ChainSegment>(&shape.geometry)) {
+                // One-sided: seen only by a shape in front of it moving against its normal.
+                const Segment& seg = chain->segment;
+                const Vec2 normal = rotate(input.transformA.q, rightPerp(seg.point2 - seg.point1));
+                const Vec2 p1 = transformPoint(input.transformA, seg.point1);
+                if (dot(center - p1, normal) < 0.0f || dot(translation, normal) >= 0.0f) {
+                    return true;
+                }
+            }
             CastOutput out = shapeCast(input);
             if (out.hit && (!best || out.fraction < best->fraction)) {
                 best = RayResult{w.shapeId(index), out.point, out.normal, out.fraction, false};

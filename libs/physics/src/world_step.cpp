@@ -28,8 +28,15 @@ bool isFiniteState(const detail::BodySim& s, const detail::BodyState& st) {
 } // namespace
 
 void World::step(float timeStep) {
+    impl_->requireUnlocked("step");
     if (!(isFinite(timeStep) && timeStep >= 0.0f)) {
         check::fail("step", "timeStep must be finite and >= 0, got " + check::text(timeStep));
+    }
+    if (timeStep > kMaxTimeStep) {
+        check::fail("step", "timeStep must be <= kMaxTimeStep (" + check::text(kMaxTimeStep) +
+                                " s), got " + check::text(timeStep) +
+                                ": longer steps sink bodies into what they rest on; call step() "
+                                "several times");
     }
     Impl& w = *impl_;
     detail::Simulation& s = w.sim;
@@ -39,10 +46,17 @@ void World::step(float timeStep) {
     s.sensorEndEvents.clear();
     s.hitEvents.clear();
     s.nonFiniteBodies.clear();
+    s.outOfRangeBodies.clear();
     s.counters = {};
     s.endEvents.swap(s.pendingEndEvents);
     s.sensorEndEvents.swap(s.pendingSensorEndEvents);
     s.inStep = true;
+    // A callback (pre-solve, pair filter) that throws leaves the step where it was, and the
+    // world out of it.
+    struct InStep {
+        detail::Simulation& sim;
+        ~InStep() { sim.inStep = false; }
+    } inStep{s};
     w.updateContacts(timeStep);
     if (timeStep > 0.0f) {
         w.solve(timeStep);
@@ -50,7 +64,7 @@ void World::step(float timeStep) {
         s.counters.contactConstraints = static_cast<int>(s.constraintContacts.size());
         w.updateSleep(timeStep);
     }
-    s.inStep = false;
+    w.collectMoveEvents(timeStep);
 }
 
 namespace {
@@ -76,7 +90,7 @@ void World::Impl::scheduleWide(int constraintCount) {
     for (std::size_t i = 0; i < n; ++i) {
         parent[i] = static_cast<int>(i);
     }
-    for (const detail::Simulation::ConstraintBodies& cb : s.constraintBodies) {
+    auto join = [&](const detail::Simulation::ConstraintBodies& cb) {
         if (cb.indexA >= 0 && cb.indexB >= 0) {
             int ra = detail::findRoot(parent, cb.indexA);
             int rb = detail::findRoot(parent, cb.indexB);
@@ -84,6 +98,14 @@ void World::Impl::scheduleWide(int constraintCount) {
                 parent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
             }
         }
+    };
+    for (const detail::Simulation::ConstraintBodies& cb : s.constraintBodies) {
+        join(cb);
+    }
+    // Jointed bodies share a block: a block runs all its sub-steps before the next one, so
+    // none of its bodies may be moved by another block's joints.
+    for (const detail::Simulation::ConstraintBodies& jb : s.jointBodies) {
+        join(jb);
     }
     s.islandConstraints.assign(n, 0);
     s.constraintIsland.resize(count);
@@ -182,6 +204,10 @@ void World::Impl::solve(float dt) {
     s.lastConstraintContacts.swap(s.constraintContacts);
     s.lastConstraintBodies.swap(s.constraintBodies);
     s.lastStateRigid.swap(s.stateRigid);
+    s.lastJointBodies.swap(s.jointBodies);
+    if (!joints.empty()) {
+        wakeJointedBodies();
+    }
     s.sims.clear();
     s.states.clear();
     s.stateRigid.clear();
@@ -222,6 +248,7 @@ void World::Impl::solve(float dt) {
         detail::clampVelocity(st.linearVelocity, st.angularVelocity, def.maxLinearSpeed, integrationStep);
     }
 
+    prepareJoints(dt, integrationStep);
     detail::ContactSoftness softness = detail::makeContactSoftness(def, dt);
     // A contact's side as prepareContact() sees it: body `bodyIndex`, `solverIndex` its place
     // in this step's arrays (kNullIndex: static or asleep, read from the body itself).
@@ -288,7 +315,8 @@ void World::Impl::solve(float dt) {
         static_assert(sizeof(detail::Simulation::ConstraintBodies) == 2 * sizeof(int));
         const bool same = s.wideScheduleValid && s.stateRigid == s.lastStateRigid &&
                           sameAsLast(s.constraintBodies, s.lastConstraintBodies) &&
-                          sameAsLast(s.constraintContacts, s.lastConstraintContacts);
+                          sameAsLast(s.constraintContacts, s.lastConstraintContacts) &&
+                          sameAsLast(s.jointBodies, s.lastJointBodies);
         if (!same) {
             // Each constraint's level (see ConstraintLevels): solving level by level is the
             // same sweep as solving in contact order, but the constraints of a level share no
@@ -303,6 +331,9 @@ void World::Impl::solve(float dt) {
                 s.constraintLevel.push_back(s.levels.assign(moving(cb.indexA), moving(cb.indexB)));
             }
             scheduleWide(constraintCount);
+        }
+        if (!s.activeJoints.empty()) {
+            assignJointBlocks();
         }
     }
     s.wideScheduleValid = wide;
@@ -349,7 +380,10 @@ void World::Impl::solve(float dt) {
         }
     };
 
-    detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def};
+    const detail::JointStep jointStep{
+        integrationStep, 1.0f / integrationStep,
+        detail::makeSoftness(detail::kJointHertz, detail::kJointDampingRatio, integrationStep)};
+    detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def, joints, s.activeJoints, jointStep};
     if (wide) {
         // Contacts are visited in slot order, twice a block: gathered before it is solved and
         // their impulses stored right after, while its lanes are in cache. A level's contacts
@@ -422,13 +456,21 @@ void World::Impl::solve(float dt) {
                 step, s.wideContacts, firstLevel, endLevel,
                 blockBodies.subspan(static_cast<std::size_t>(s.blockBodyStart[b]),
                                     static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b])),
-                s.wideRestitution);
+                s.wideRestitution,
+                s.activeJoints.empty()
+                    ? std::span<const int>{}
+                    : std::span<const int>(s.blockJoints)
+                          .subspan(static_cast<std::size_t>(s.blockJointStart[b]),
+                                   static_cast<std::size_t>(s.blockJointStart[b + 1] - s.blockJointStart[b])));
             detail::visitWide(s.wideContacts, s.levelStart, firstLevel, endLevel, storeLane);
         }
     } else if (def.mode == SolverMode::SoftStep) {
         detail::solveSoftStep(step);
     } else {
         detail::solveClassic(step);
+    }
+    if (!s.activeJoints.empty()) {
+        storeJointReactions(1.0f / integrationStep);
     }
     detail::finalizePositions(s.sims, s.states);
 
@@ -438,15 +480,18 @@ void World::Impl::solve(float dt) {
         }
     }
 
-    // Write back, move the proxies; a body whose state went non-finite is disabled instead.
+    // Write back, move the proxies; a body whose state went non-finite or whose origin left
+    // the coordinate range (kHuge) is disabled instead.
     for (std::size_t k = 0; k < s.sims.size(); ++k) {
         const detail::BodySim& bs = s.sims[k];
         const detail::BodyState& st = s.states[k];
         detail::Body& b = body(bs.bodyIndex);
         b.motion.force = {0.0f, 0.0f};
         b.motion.torque = 0.0f;
-        if (!isFiniteState(bs, st)) {
-            s.nonFiniteBodies.push_back(bodyId(bs.bodyIndex));
+        const bool finite = isFiniteState(bs, st);
+        if (!finite || !check::isWithinHuge(bs.transform.p)) {
+            // Its last transform (finite, within kHuge) stays, so calls from where it is work.
+            (finite ? s.outOfRangeBodies : s.nonFiniteBodies).push_back(bodyId(bs.bodyIndex));
             b.linearVelocity = {0.0f, 0.0f};
             b.angularVelocity = 0.0f;
             b.enabled = false;
@@ -499,8 +544,8 @@ void World::Impl::solve(float dt) {
     }
     for (const detail::Simulation::HitCandidate& h : s.hitCandidates) {
         const detail::Contact& c = s.contacts[static_cast<std::size_t>(h.contact)];
-        if (!c.alive) {
-            continue; // ended with a non-finite body
+        if (!c.alive || !c.hitEvents) {
+            continue; // ended with a non-finite body, or a shape's hit events are off
         }
         // A speculative point sits midway across the gap; the hit is on A's surface.
         const ManifoldPoint& mp = c.manifold.points[h.point];

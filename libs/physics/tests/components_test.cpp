@@ -229,6 +229,11 @@ TEST_F(ComponentsTest, DefinitionErrorsNameTheFieldAndValue) {
     def.density = std::nanf("");
     EXPECT_EQ(message([&] { Collider c(physics, box(0.5f), def); }),
               "physics::Collider::Collider(): def.density must be finite and >= 0, got nan");
+    def = {};
+    def.restitution = 1.25f;
+    EXPECT_EQ(message([&] { Collider c(physics, box(0.5f), def); }),
+              "physics::Collider::Collider(): def.restitution must be finite and in [0, 1], got "
+              "1.25");
     physics::RigidbodyDef rb;
     rb.gravityScale = INFINITY;
     EXPECT_EQ(message([&] { Rigidbody r(physics, rb); }),
@@ -335,6 +340,90 @@ TEST_F(ComponentsTest, DestroyingAnObjectRemovesItsBodyAndShapes) {
     frames(1);
     EXPECT_EQ(physics.world().bodyCount(), 0);
     EXPECT_EQ(physics.world().shapeCount(), 0);
+}
+
+// Destroys, through the World, the body of the object it collides with (or its own) on the
+// first collision: what a game does to a projectile that hits something.
+class BodyDestroyer : public core::Component {
+public:
+    BodyDestroyer(PhysicsSystem& physics, bool own) : physics_(physics), own_(own) {}
+    void onCollisionEnter(const core::ContactInfo& c) override {
+        core::GameObject* target = own_ ? gameObject() : c.other;
+        Rigidbody* rb = target != nullptr ? target->getComponent<Rigidbody>() : nullptr;
+        if (rb != nullptr && physics_.world().isValid(rb->body())) {
+            physics_.world().destroyBody(rb->body());
+            ++destroyed;
+        }
+    }
+    int destroyed = 0;
+
+private:
+    PhysicsSystem& physics_;
+    bool own_;
+};
+
+TEST_F(ComponentsTest, BodyDestroyedThroughTheWorldInsideACollisionEventLeavesItsObjectStill) {
+    for (bool own : {true, false}) {
+        SCOPED_TRACE(own ? "own body" : "the other object's body");
+        core::GameObject* ball = nullptr;
+        core::GameObject* floor = nullptr;
+        BodyDestroyer* destroyer = nullptr;
+        PhysicsSystem system;
+        core::SceneRegistry reg;
+        core::SceneDirector dir{reg, logger};
+        reg.add("Test", [&] {
+            return std::make_unique<SetupScene>([&](core::Scene& s) {
+                // A dynamic floor (so the other object has a Rigidbody too), held by zero gravity.
+                floor = &s.createGameObject();
+                physics::RigidbodyDef still;
+                still.gravityScale = 0.0f;
+                floor->addComponent<Rigidbody>(system, still);
+                floor->addComponent<Collider>(system, physics::makeBox(5.0f, 0.5f));
+                ball = &s.createGameObject();
+                ball->setPosition(glm::vec2{0.0f, 2.0f});
+                physics::RigidbodyDef falling;
+                falling.linearVelocity = {0.0f, -5.0f};
+                ball->addComponent<Rigidbody>(system, falling);
+                ball->addComponent<Collider>(system, physics::Circle{{0.0f, 0.0f}, 0.25f});
+                destroyer = ball->addComponent<BodyDestroyer>(system, own);
+            });
+        });
+        dir.addSystem(system);
+        ASSERT_TRUE(dir.start("Test"));
+        auto run = [&](int n) {
+            for (int i = 0; i < n; ++i) {
+                dir.applyPendingChange();
+                dir.scene()->beginFrame();
+                system.fixedUpdate(kStep);
+            }
+        };
+        ASSERT_NO_THROW(run(60));
+        ASSERT_EQ(destroyer->destroyed, 1);
+        core::GameObject* victim = own ? ball : floor;
+        Rigidbody* rb = victim->getComponent<Rigidbody>();
+        // The component saw its body go: it has none, its colliders have no shapes, and its
+        // object stays where the body last put it.
+        EXPECT_TRUE(rb->body().isNull());
+        EXPECT_TRUE(victim->getComponent<Collider>()->shape().isNull());
+        EXPECT_EQ(system.world().bodyCount(), 1);
+        EXPECT_EQ(system.world().shapeCount(), 1);
+        const glm::vec3 where = victim->position();
+        ASSERT_NO_THROW(run(10));
+        EXPECT_EQ(victim->position(), where);
+        // Its calls now say why they cannot work; destroying the object is still fine.
+        try {
+            rb->setLinearVelocity({1.0f, 0.0f});
+            ADD_FAILURE() << "no error";
+        } catch (const core::Error& e) {
+            EXPECT_NE(std::string(e.what()).find("physics::Rigidbody::setLinearVelocity(): the "
+                                                 "Rigidbody has no body"),
+                      std::string::npos)
+                << e.what();
+        }
+        dir.scene()->destroyGameObject(*victim);
+        ASSERT_NO_THROW(run(2));
+        EXPECT_EQ(system.world().bodyCount(), 1);
+    }
 }
 
 } // namespace

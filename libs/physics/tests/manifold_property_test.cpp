@@ -46,6 +46,11 @@ Core worldCore(const ShapeGeometry& shape, const Transform& xf) {
         core.radius = p.radius;
         break;
     }
+    case ShapeType::ChainSegment: {
+        const auto& s = std::get<ChainSegment>(shape).segment;
+        core.points = {transformPoint(xf, s.point1), transformPoint(xf, s.point2)};
+        break;
+    }
     }
     return core;
 }

@@ -21,7 +21,8 @@ TEST(WorldHandles, NullIdsAreNullAndInvalid) {
     EXPECT_FALSE(world.isValid(BodyId{}));
     EXPECT_FALSE(world.isValid(ShapeId{}));
     EXPECT_EQ(errorOf([&] { world.setTransform(BodyId{}, {0.0f, 0.0f}, 0.0f); }),
-              "physics::World::setTransform(): stale or null BodyId (index1 0, generation 0)");
+              "physics::World::setTransform(): stale or null BodyId (index1 0, generation 0, "
+              "world 0)");
     E2D_EXPECT_ERROR((void)world.shapeAabb(ShapeId{}),
                      "physics::World::shapeAabb(): stale or null ShapeId");
 }
@@ -175,8 +176,12 @@ TEST(WorldHandles, TwoWorldsAreIndependent) {
     def.position = {10.0f, 0.0f};
     BodyId bodyB = b.createBody(def);
     ShapeId shapeB = b.createShape(bodyB, {}, unitCircle());
-    // Same slot in each world, different objects.
-    EXPECT_EQ(bodyA, bodyB);
+    // Same slot in each world, different objects: the ids differ by their world's tag.
+    EXPECT_EQ(bodyA.index1, bodyB.index1);
+    EXPECT_EQ(bodyA.generation, bodyB.generation);
+    EXPECT_NE(bodyA, bodyB);
+    EXPECT_FALSE(b.isValid(bodyA));
+    EXPECT_FALSE(a.isValid(shapeB));
     EXPECT_EQ(a.overlapPoint({0.0f, 0.0f}), std::vector<ShapeId>{shapeA});
     EXPECT_EQ(b.overlapPoint({10.0f, 0.0f}), std::vector<ShapeId>{shapeB});
     EXPECT_TRUE(b.overlapPoint({0.0f, 0.0f}).empty());
@@ -187,11 +192,55 @@ TEST(WorldHandles, TwoWorldsAreIndependent) {
     EXPECT_EQ(b.shapeCount(), 1);
 }
 
+TEST(WorldHandles, AnIdFromAnotherWorldIsAnErrorNamingTheFunction) {
+    // Two worlds with the same objects in the same slots: a's ids must not name b's objects.
+    World a;
+    World b;
+    ASSERT_NE(a.tag(), b.tag()); // derived from two live worlds' addresses: 1/65535 to clash
+    BodyId bodyA = a.createBody({.position = {1.0f, 2.0f}});
+    ShapeId shapeA = a.createShape(bodyA, {}, unitCircle());
+    BodyId bodyB = b.createBody({.position = {5.0f, 6.0f}});
+    ShapeId shapeB = b.createShape(bodyB, {.userData = 9}, unitCircle());
+    EXPECT_EQ(bodyA.world, a.tag());
+    EXPECT_EQ(shapeB.world, b.tag());
+
+    std::string error = errorOf([&] { b.setTransform(bodyA, {0.0f, 0.0f}, 0.0f); });
+    EXPECT_EQ(error, "physics::World::setTransform(): BodyId (index1 1, generation 1, world " +
+                         std::to_string(a.tag()) + ") belongs to another world (this world's "
+                         "tag is " + std::to_string(b.tag()) + ")");
+    E2D_EXPECT_ERROR((void)b.shapeUserData(shapeA),
+                     "physics::World::shapeUserData(): ShapeId (index1 1, generation 1, world");
+    E2D_EXPECT_ERROR(b.destroyBody(bodyA), "physics::World::destroyBody(): BodyId");
+    E2D_EXPECT_ERROR(a.createShape(bodyB, {}, unitCircle()),
+                     "physics::World::createShape(): BodyId");
+    // Nothing of b was touched.
+    EXPECT_EQ(b.transform(bodyB).p, Vec2(5.0f, 6.0f));
+    EXPECT_EQ(b.shapeUserData(shapeB), 9u);
+    EXPECT_EQ(a.shapeCount(), 1);
+    EXPECT_EQ(b.bodyCount(), 1);
+}
+
+TEST(WorldHandles, ChosenTagsAreWrittenIntoIdsAndZeroIsNeverLive) {
+    World a{WorldDef{.tag = 7}};
+    World b{WorldDef{.tag = 8}};
+    EXPECT_EQ(a.tag(), 7);
+    BodyId body = a.createBody({});
+    EXPECT_EQ(body.world, 7);
+    EXPECT_EQ(a.createShape(body, {}, unitCircle()).world, 7);
+    EXPECT_FALSE(b.isValid(body));
+    // A hand-made id (world 0) never names a body.
+    EXPECT_FALSE(a.isValid(BodyId{body.index1, body.generation}));
+    World derived;
+    EXPECT_NE(derived.tag(), 0);
+}
+
 TEST(WorldHandles, MovedWorldKeepsItsObjects) {
     World a;
     BodyId body = a.createBody({});
     ShapeId shape = a.createShape(body, {}, unitCircle());
+    std::uint16_t tag = a.tag();
     World b = std::move(a);
+    EXPECT_EQ(b.tag(), tag);
     EXPECT_TRUE(b.isValid(body));
     EXPECT_EQ(b.overlapPoint({0.0f, 0.0f}), std::vector<ShapeId>{shape});
 }

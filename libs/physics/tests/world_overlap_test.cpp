@@ -3,6 +3,10 @@
 
 #include "world_random_scene.hpp"
 
+#include <functional>
+#include <string>
+#include <utility>
+
 namespace e2d::physics {
 namespace {
 
@@ -114,6 +118,108 @@ TEST(WorldOverlap, SetTransformMovesTheShapeInTheTree) {
     EXPECT_TRUE(world.overlapPoint({19.52f, -7.0f}).empty());
     EXPECT_EQ(world.overlapPoint({20.54f, -7.0f}), std::vector<ShapeId>{box});
     EXPECT_TRUE(contains(world.shapeFatAabb(box), world.shapeAabb(box)));
+}
+
+// A row of ten dynamic balls around the origin, for the callback tests.
+std::vector<BodyId> addRowOfBalls(World& world) {
+    std::vector<BodyId> balls;
+    for (int i = 0; i < 10; ++i) {
+        BodyDef def;
+        def.type = BodyType::Dynamic;
+        def.position = {static_cast<float>(i) - 4.5f, 0.0f};
+        balls.push_back(world.createBody(def));
+        world.createShape(balls.back(), {}, Circle{{0.0f, 0.0f}, 0.25f});
+    }
+    return balls;
+}
+
+TEST(WorldOverlap, ChangingTheShapesInsideAnOverlapCallbackIsAnErrorAtThatCall) {
+    // Destroying inside the walk used to skip results and pass stale ids; creating visited the
+    // new shapes. Each such call now throws, naming itself and the query, and changes nothing.
+    World world;
+    std::vector<BodyId> balls = addRowOfBalls(world);
+    const Aabb all{{-10.0f, -1.0f}, {10.0f, 1.0f}};
+    BodyId spare = world.createBody({.position = {50.0f, 0.0f}});
+    ShapeId spareShape = world.createShape(spare, {}, Circle{{0.0f, 0.0f}, 0.25f});
+    const std::vector<std::pair<std::string, std::function<void(ShapeId)>>> calls = {
+        {"destroyBody", [&](ShapeId s) { world.destroyBody(world.shapeBody(s)); }},
+        {"destroyShape", [&](ShapeId s) { world.destroyShape(s); }},
+        {"createBody", [&](ShapeId) { (void)world.createBody({}); }},
+        {"createShape",
+         [&](ShapeId s) { world.createShape(world.shapeBody(s), {}, Circle{{}, 1.0f}); }},
+        {"setTransform", [&](ShapeId) { world.setTransform(spare, {60.0f, 0.0f}, 0.0f); }},
+        {"setBodyEnabled", [&](ShapeId) { world.setBodyEnabled(spare, false); }},
+        {"setShapeFilter", [&](ShapeId) { world.setShapeFilter(spareShape, {}); }},
+        {"updatePairs", [&](ShapeId) { world.updatePairs(); }},
+        {"step", [&](ShapeId) { world.step(1.0f / 60.0f); }},
+    };
+    for (const auto& [name, call] : calls) {
+        SCOPED_TRACE(name);
+        int visited = 0;
+        std::string error = test::errorOf([&] {
+            world.overlapAabb(all, {}, [&](ShapeId s) {
+                ++visited;
+                EXPECT_TRUE(world.isValid(s));
+                call(s);
+                return true;
+            });
+        });
+        EXPECT_EQ(error, "physics::World::" + name + "(): cannot run inside the callback of "
+                         "overlapAabb() (it would change what the callback is walking); collect "
+                         "the ids and call it after overlapAabb() returns");
+        EXPECT_EQ(visited, 1);
+        EXPECT_EQ(world.bodyCount(), 11);
+        EXPECT_EQ(world.shapeCount(), 11);
+        EXPECT_EQ(world.transform(spare).p, Vec2(50.0f, 0.0f));
+        EXPECT_TRUE(world.isBodyEnabled(spare));
+        // The lock is gone once the query returned (by the exception here).
+        EXPECT_EQ(world.overlapAabb(all).size(), 10u);
+    }
+}
+
+TEST(WorldOverlap, AnOverlapCallbackMayPushWakeAndReadBodies) {
+    // An explosion: impulses, velocities, sleep and nested queries are allowed in the walk;
+    // destroying what was found happens after it, from the collected ids.
+    World world{WorldDef{.gravity = {0.0f, 0.0f}}};
+    std::vector<BodyId> balls = addRowOfBalls(world);
+    const Aabb all{{-10.0f, -1.0f}, {10.0f, 1.0f}};
+    std::vector<ShapeId> found;
+    world.overlapAabb(all, {}, [&](ShapeId s) {
+        BodyId b = world.shapeBody(s);
+        world.applyLinearImpulseToCenter(b, {0.0f, 1.0f});
+        world.setAngularVelocity(b, 2.0f);
+        world.setBodyUserData(b, 5);
+        EXPECT_FALSE(world.overlapPoint(world.transform(b).p).empty());
+        found.push_back(s);
+        return true;
+    });
+    ASSERT_EQ(found.size(), 10u);
+    for (BodyId b : balls) {
+        EXPECT_GT(world.linearVelocity(b).y, 0.0f);
+        EXPECT_EQ(world.angularVelocity(b), 2.0f);
+    }
+    for (ShapeId s : found) {
+        world.destroyBody(world.shapeBody(s));
+    }
+    EXPECT_EQ(world.bodyCount(), 0);
+}
+
+TEST(WorldOverlap, PairAndContactWalksLockTheWorldToo) {
+    World world;
+    std::vector<BodyId> balls = addRowOfBalls(world);
+    world.createShape(world.createBody({}), {}, makeOffsetBox(10.0f, 0.5f, {0.0f, -0.7f}, 0.0f));
+    world.step(1.0f / 60.0f);
+    ASSERT_GT(world.candidatePairCount(), 0);
+    E2D_EXPECT_ERROR(world.forEachCandidatePair([&](ShapeId, ShapeId) { world.destroyBody(balls[0]); }),
+                     "physics::World::destroyBody(): cannot run inside the callback of "
+                     "forEachCandidatePair()");
+    int touching = 0;
+    world.forEachTouchingContact([&](const ContactData&) { ++touching; });
+    ASSERT_GT(touching, 0);
+    E2D_EXPECT_ERROR(world.forEachTouchingContact([&](const ContactData&) { world.step(0.0f); }),
+                     "physics::World::step(): cannot run inside the callback of "
+                     "forEachTouchingContact()");
+    EXPECT_TRUE(world.isValid(balls[0]));
 }
 
 } // namespace

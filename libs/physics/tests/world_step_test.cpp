@@ -93,6 +93,41 @@ TEST(WorldStep, MassComesFromDensity) {
     EXPECT_EQ(world.massData(body).rotationalInertia, 0.0f);
 }
 
+TEST(WorldStep, DynamicBodyWithoutDensityHasUnitMassAndDoesNotRotate) {
+    // As in Box2D 2.4: a dynamic body whose shapes give no mass (density 0, or segments, which
+    // have no area) gets 1 kg at its origin and no rotational inertia, so it falls and slides
+    // but never turns; setMassData() gives it a real one.
+    World world;
+    addGround(world);
+    BodyDef bd;
+    bd.type = BodyType::Dynamic;
+    bd.position = {0.0f, 1.0f};
+    BodyId weightless = world.createBody(bd);
+    ShapeDef sd;
+    sd.density = 0.0f;
+    world.createShape(weightless, sd, makeBox(0.5f, 0.5f));
+    bd.position = {5.0f, 1.0f};
+    BodyId stick = world.createBody(bd);
+    world.createShape(stick, {}, Segment{{-0.5f, 0.0f}, {0.5f, 0.0f}});
+    for (BodyId body : {weightless, stick}) {
+        MassData md = world.massData(body);
+        EXPECT_EQ(md.mass, 1.0f);
+        EXPECT_EQ(md.center, Vec2(0.0f, 0.0f));
+        EXPECT_EQ(md.rotationalInertia, 0.0f);
+    }
+    // Off-centre impulses do not spin them.
+    world.applyLinearImpulse(weightless, {0.0f, 1.0f}, {0.5f, 0.0f});
+    EXPECT_EQ(world.angularVelocity(weightless), 0.0f);
+    EXPECT_EQ(world.linearVelocity(weightless).y, 1.0f); // 1 N*s on 1 kg
+    for (int i = 0; i < 120; ++i) {
+        world.step(kStep);
+    }
+    EXPECT_NEAR(world.transform(weightless).p.y, 0.5f, 0.01f);
+    EXPECT_LT(world.transform(stick).p.y, 0.1f);
+    EXPECT_GT(world.transform(stick).p.y, -0.05f);
+    EXPECT_EQ(world.transform(stick).q.angle(), 0.0f);
+}
+
 TEST(WorldStep, ImpulsesAndForcesChangeVelocity) {
     World world{WorldDef{.gravity = {0.0f, 0.0f}}};
     BodyDef bd;
@@ -132,6 +167,80 @@ TEST(WorldStep, NonFiniteBodyIsDisabledAndTheRestContinues) {
     }
     EXPECT_TRUE(world.nonFiniteBodies().empty());
     EXPECT_NEAR(world.transform(good).p.y, 0.5f, 0.01f);
+}
+
+TEST(WorldStep, TimeStepsBeyondKMaxTimeStepAreRejected) {
+    // step(100) used to leave a box 234 m below the floor, asleep in mid-air.
+    World world;
+    addGround(world);
+    BodyId box = addBox(world, {0.0f, 3.0f}, 0.5f);
+    EXPECT_EQ(test::errorOf([&] { world.step(100.0f); }),
+              "physics::World::step(): timeStep must be <= kMaxTimeStep (0.25 s), got 100: longer "
+              "steps sink bodies into what they rest on; call step() several times");
+    E2D_EXPECT_ERROR(world.step(0.2500001f), "timeStep must be <= kMaxTimeStep (0.25 s)");
+    EXPECT_EQ(world.transform(box).p, Vec2(0.0f, 3.0f));
+    // At the limit itself the box still lands and rests within the slop of the floor.
+    for (int i = 0; i < 40; ++i) {
+        world.step(kMaxTimeStep);
+    }
+    EXPECT_NEAR(world.transform(box).p.y, 0.5f, kLinearSlop);
+    EXPECT_FALSE(world.isAwake(box));
+}
+
+TEST(WorldStep, HugeInitialVelocitiesAreCappedNotStopped) {
+    // Beyond about 1.8e19 m/s the speed's square overflows; the cap used to scale by
+    // 400 / inf = 0 and stop the body dead (1e18 was capped, 1e20 and 1e30 stopped).
+    for (float speed : {1.0e18f, 1.0e20f, 1.0e30f, 3.0e38f}) {
+        for (Vec2 direction : {Vec2{1.0f, 0.0f}, Vec2{0.6f, -0.8f}}) {
+            World world{WorldDef{.gravity = {0.0f, 0.0f}}};
+            BodyDef bd;
+            bd.type = BodyType::Dynamic;
+            bd.linearVelocity = speed * direction;
+            BodyId body = world.createBody(bd);
+            world.createShape(body, {}, Circle{{0.0f, 0.0f}, 0.5f});
+            world.step(kStep);
+            const float cap = world.solverDef().maxLinearSpeed;
+            Vec2 v = world.linearVelocity(body);
+            EXPECT_NEAR(v.x, cap * direction.x, 1e-3f) << speed;
+            EXPECT_NEAR(v.y, cap * direction.y, 1e-3f) << speed;
+            EXPECT_NEAR(world.transform(body).p.x, cap * direction.x * kStep, 1e-3f) << speed;
+            EXPECT_TRUE(world.isBodyEnabled(body));
+        }
+    }
+}
+
+TEST(WorldStep, BodyLeavingTheCoordinateRangeIsDisabledAndReported) {
+    // A body carried past kHuge used to go on without an event, and calls made from its own
+    // position then threw (setTransform, ray casts).
+    for (Vec2 direction : {Vec2{1.0f, 0.0f}, Vec2{0.0f, -1.0f}}) {
+        World world{WorldDef{.gravity = {0.0f, 0.0f}}};
+        BodyId stay = addBall(world, {0.0f, 0.0f}, 0.5f);
+        BodyDef bd;
+        bd.type = BodyType::Dynamic;
+        bd.position = (kHuge - 10.0f) * direction;
+        bd.linearVelocity = 400.0f * direction; // 6.7 m per step: out in the second step
+        BodyId runaway = world.createBody(bd);
+        world.createShape(runaway, {}, Circle{{0.0f, 0.0f}, 0.5f});
+        world.step(kStep);
+        EXPECT_TRUE(world.outOfRangeBodies().empty());
+        Vec2 last = world.transform(runaway).p;
+        world.step(kStep);
+        ASSERT_EQ(world.outOfRangeBodies().size(), 1u);
+        EXPECT_EQ(world.outOfRangeBodies()[0], runaway);
+        EXPECT_TRUE(world.nonFiniteBodies().empty());
+        EXPECT_FALSE(world.isBodyEnabled(runaway));
+        EXPECT_EQ(world.transform(runaway).p, last);
+        EXPECT_EQ(world.linearVelocity(runaway), Vec2(0.0f, 0.0f));
+        // Calls from where it is work, and it can be brought back.
+        EXPECT_NO_THROW((void)world.castRayClosest(last, -direction));
+        world.setTransform(runaway, last, 0.0f);
+        world.setTransform(runaway, {5.0f, 0.0f}, 0.0f);
+        world.setBodyEnabled(runaway, true);
+        world.step(kStep);
+        EXPECT_TRUE(world.outOfRangeBodies().empty());
+        EXPECT_TRUE(world.isBodyEnabled(runaway));
+        EXPECT_TRUE(world.isBodyEnabled(stay));
+    }
 }
 
 TEST(WorldStep, NonFiniteBodyDoesNotTakeItsNeighboursWithIt) {

@@ -82,6 +82,44 @@ public:
         static_cast<void>(world);
     }
 
+    /// A key was pressed / released / auto-repeated with modifier bits `mods` (the input
+    /// library's, GLFW's: shift 1, control 2, alt 4, super 8, caps lock 16, num lock 32).
+    /// A press or release arrives as onButtonDown/onButtonUp(key) first, then as this event.
+    virtual void onKeyDown(int key, int mods) {
+        static_cast<void>(key);
+        static_cast<void>(mods);
+    }
+    virtual void onKeyUp(int key, int mods) {
+        static_cast<void>(key);
+        static_cast<void>(mods);
+    }
+    virtual void onKeyRepeat(int key, int mods) {
+        static_cast<void>(key);
+        static_cast<void>(mods);
+    }
+    /// Text was typed: one Unicode code point (UTF-32), after keyboard layout and modifiers.
+    virtual void onTextInput(char32_t codepoint) { static_cast<void>(codepoint); }
+    /// The mouse wheel (or touchpad) scrolled by `offset` (x horizontal, y vertical; positive y
+    /// is away from the user), with the cursor at `screen` (pixels) / `world` (world units).
+    virtual void onScroll(glm::vec2 offset, glm::vec2 screen, glm::vec2 world) {
+        static_cast<void>(offset);
+        static_cast<void>(screen);
+        static_cast<void>(world);
+    }
+    /// The window gained / lost keyboard focus (on loss, every held key and button has
+    /// already been released with the usual up events).
+    virtual void onFocusChanged(bool focused) { static_cast<void>(focused); }
+    /// A gamepad was connected / disconnected (`controller` is its slot, 0-based).
+    virtual void onControllerConnected(int controller) { static_cast<void>(controller); }
+    virtual void onControllerDisconnected(int controller) { static_cast<void>(controller); }
+    /// A gamepad axis changed to `value` (sticks in [-1, 1] after the dead zone, triggers in
+    /// [0, 1]).
+    virtual void onControllerAxis(int controller, int axis, float value) {
+        static_cast<void>(controller);
+        static_cast<void>(axis);
+        static_cast<void>(value);
+    }
+
     /// The owning object started / stopped touching another collider.
     virtual void onCollisionEnter(const ContactInfo& contact) { static_cast<void>(contact); }
     virtual void onCollisionExit(const ContactInfo& contact) { static_cast<void>(contact); }

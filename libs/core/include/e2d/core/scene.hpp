@@ -106,6 +106,15 @@ public:
     void dispatchMouseButtonDown(int button, glm::vec2 screen, glm::vec2 world);
     void dispatchMouseButtonUp(int button, glm::vec2 screen, glm::vec2 world);
     void dispatchMouseMove(glm::vec2 screen, glm::vec2 world);
+    void dispatchKeyDown(int key, int mods);
+    void dispatchKeyUp(int key, int mods);
+    void dispatchKeyRepeat(int key, int mods);
+    void dispatchTextInput(char32_t codepoint);
+    void dispatchScroll(glm::vec2 offset, glm::vec2 screen, glm::vec2 world);
+    void dispatchFocusChanged(bool focused);
+    void dispatchControllerConnected(int controller);
+    void dispatchControllerDisconnected(int controller);
+    void dispatchControllerAxis(int controller, int axis, float value);
     /// Runs onTerminate on the scene, then on every object (and its components) that was
     /// initialised, then destroys every object: all ids become stale.
     void dispatchTerminate();
@@ -140,6 +149,33 @@ protected:
     virtual void onMouseMove(glm::vec2 screen, glm::vec2 world) {
         static_cast<void>(screen);
         static_cast<void>(world);
+    }
+    /// See the Component events of the same names.
+    virtual void onKeyDown(int key, int mods) {
+        static_cast<void>(key);
+        static_cast<void>(mods);
+    }
+    virtual void onKeyUp(int key, int mods) {
+        static_cast<void>(key);
+        static_cast<void>(mods);
+    }
+    virtual void onKeyRepeat(int key, int mods) {
+        static_cast<void>(key);
+        static_cast<void>(mods);
+    }
+    virtual void onTextInput(char32_t codepoint) { static_cast<void>(codepoint); }
+    virtual void onScroll(glm::vec2 offset, glm::vec2 screen, glm::vec2 world) {
+        static_cast<void>(offset);
+        static_cast<void>(screen);
+        static_cast<void>(world);
+    }
+    virtual void onFocusChanged(bool focused) { static_cast<void>(focused); }
+    virtual void onControllerConnected(int controller) { static_cast<void>(controller); }
+    virtual void onControllerDisconnected(int controller) { static_cast<void>(controller); }
+    virtual void onControllerAxis(int controller, int axis, float value) {
+        static_cast<void>(controller);
+        static_cast<void>(axis);
+        static_cast<void>(value);
     }
 
 private:

@@ -10,7 +10,7 @@ namespace e2d::physics {
 
 class PhysicsSystem;
 
-/// Material, trigger flag and masks of a Collider (seed 2.6.1).
+/// Material, trigger flag and masks of a Collider.
 struct ColliderDef {
     /// kg/m^2, >= 0. Default 1.
     float density = 1.0f;
@@ -22,7 +22,7 @@ struct ColliderDef {
     float rollingResistance = 0.0f;
     /// A trigger detects overlaps (onTriggerEnter/Exit) but is not solid. Default false.
     bool isTrigger = false;
-    /// What this collider is (the seed's Mask). Default: the first mask bit.
+    /// What this collider is (a core::Mask). Default: the first mask bit.
     core::Mask category{1};
     /// What it may touch; both sides' masks must match. Default: everything.
     core::Mask mask = core::Mask::all();
@@ -40,7 +40,8 @@ public:
     Collider(PhysicsSystem& system, const ShapeGeometry& geometry, const ColliderDef& def = {});
     ~Collider() override;
 
-    /// The shape, null while not attached.
+    /// The shape, null while not attached or once its body was destroyed through the World
+    /// (see PhysicsSystem). A shape destroyed alone through the World leaves a stale id here.
     [[nodiscard]] ShapeId shape() const noexcept { return shape_; }
     [[nodiscard]] const ShapeGeometry& geometry() const noexcept { return geometry_; }
     [[nodiscard]] bool isTrigger() const noexcept { return def_.isTrigger; }

@@ -48,6 +48,8 @@ ShapeProxy makeProxy(const Polygon& polygon);
 ShapeProxy makeProxy(const Circle& circle);
 ShapeProxy makeProxy(const Capsule& capsule);
 ShapeProxy makeProxy(const Segment& segment);
+/// The chain segment's segment (a proxy has no sides).
+ShapeProxy makeProxy(const ChainSegment& segment);
 ShapeProxy makeProxy(const ShapeGeometry& shape);
 
 /// Warm-start data for shapeDistance(): the support point indices of the last simplex. Zero

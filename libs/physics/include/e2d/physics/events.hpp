@@ -56,7 +56,7 @@ struct StepCounters {
     int manifoldUpdates = 0;
 };
 
-/// A touching contact as World::forEachContact() shows it.
+/// A touching contact as World::forEachTouchingContact() shows it.
 struct ContactData {
     ShapeId shapeA;
     ShapeId shapeB;

@@ -69,6 +69,12 @@ Manifold collideSegmentAndCapsule(const Segment& a, const Transform& xfA, const 
 Manifold collideSegmentAndPolygon(const Segment& a, const Transform& xfA, const Polygon& b,
                                   const Transform& xfB, float margin = kSpeculativeDistance);
 
+/// A chain segment against a circle, capsule or polygon: one-sided and smooth over the joints
+/// between segments (see ChainSegment); nothing against a segment or chain segment. Polygon
+/// faces are found by SAT whatever the world's algorithm.
+Manifold collideChainSegment(const ChainSegment& a, const Transform& xfA, const ShapeGeometry& b,
+                             const Transform& xfB, float margin = kSpeculativeDistance);
+
 /// Any pair. The normal points from A to B whatever the order of the shape types; polygon
 /// pairs use `algorithm`. Two segments never collide (pointCount == 0).
 Manifold collide(const ShapeGeometry& a, const Transform& xfA, const ShapeGeometry& b,

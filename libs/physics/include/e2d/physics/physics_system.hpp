@@ -29,6 +29,13 @@ class Rigidbody;
 /// events are dispatched as onCollisionEnter/Exit and onTriggerEnter/Exit to the objects of both
 /// shapes, with core::ContactInfo normals pointing away from the receiving object.
 /// On a scene change (clear()) the world is emptied.
+///
+/// Event callbacks may change the world through world(): create, move or destroy bodies and
+/// shapes (events are dispatched from a copy, after the step). A Rigidbody's or static
+/// Collider's body destroyed through the world is noticed at the start of the next
+/// fixedUpdate(): the components then have no body and no shapes (Rigidbody::body() and
+/// Collider::shape() are null) and the object keeps its last pose. Calling fixedUpdate() from
+/// inside an event callback throws core::Error.
 class PhysicsSystem : public core::System {
 public:
     /// Throws core::Error naming the invalid field of `def` (see World).
@@ -57,6 +64,7 @@ private:
     void registerStaticCollider(Collider& collider);
     void unregisterStaticCollider(Collider& collider) noexcept;
 
+    void forgetDestroyedBodies();
     void pullMovedObjects();
     void pushBodyTransforms();
     void dispatchEvents();
@@ -71,6 +79,12 @@ private:
     std::vector<ColliderSlot> colliders_; // indexed by ShapeId::index1 - 1
     std::vector<Rigidbody*> rigidbodies_;
     std::vector<Collider*> staticColliders_; // colliders with a static body of their own
+    // The last step's events, copied before dispatch (capacity reused from step to step).
+    std::vector<ContactBeginTouchEvent> beginEvents_;
+    std::vector<ContactEndTouchEvent> endEvents_;
+    std::vector<SensorBeginTouchEvent> sensorBeginEvents_;
+    std::vector<SensorEndTouchEvent> sensorEndEvents_;
+    bool dispatching_ = false;
 };
 
 } // namespace e2d::physics

@@ -10,7 +10,7 @@
 namespace e2d::physics {
 
 /// Which shapes a query sees. A shape is seen when its Filter::categoryBits share a bit with
-/// `maskBits` and its Filter::maskBits share a bit with `categoryBits`, like the seed's Mask
+/// `maskBits` and its Filter::maskBits share a bit with `categoryBits`, like a core::Mask
 /// match in both directions. Filter::group plays no part in queries.
 struct QueryFilter {
     std::uint64_t categoryBits = 1;              ///< what the query is, default bit 0
@@ -19,8 +19,8 @@ struct QueryFilter {
     /// solid, so rays pass through them and point/box queries skip them.
     bool includeSensors = false;
     /// Ray casts only. Default true: a ray reports only the points where it enters a shape.
-    /// When false, the point where it leaves a solid shape is also reported (the seed's
-    /// "back faces"), including the exit of a shape the ray starts inside. A segment, which
+    /// When false, the point where it leaves a solid shape is also reported ("back faces"),
+    /// including the exit of a shape the ray starts inside. A segment, which
     /// has no inside, is hit once either way.
     bool ignoreBackFaces = true;
 };

@@ -10,7 +10,7 @@ namespace e2d::physics {
 
 class PhysicsSystem;
 
-/// How a Rigidbody starts (seed 2.6.2). Every field can be changed later through the component.
+/// How a Rigidbody starts. Every field can be changed later through the component.
 struct RigidbodyDef {
     /// Dynamic (forces and contacts move it) or kinematic (only its velocity does). Default
     /// dynamic. A static body is a Collider without a Rigidbody.
@@ -21,9 +21,9 @@ struct RigidbodyDef {
     float linearDamping = 0.0f;
     /// 1/s, >= 0. Default 0.
     float angularDamping = 0.0f;
-    /// The seed's freeze rotation. Default false.
+    /// The body never rotates. Default false.
     bool freezeRotation = false;
-    /// The seed's freeze position X / Y (world axes). Default false.
+    /// The body never moves along world x / world y. Default false.
     bool freezePositionX = false;
     bool freezePositionY = false;
     /// Continuous collision against everything (not only static shapes). Default false.
@@ -47,7 +47,8 @@ public:
     Rigidbody(PhysicsSystem& system, const RigidbodyDef& def = {});
     ~Rigidbody() override;
 
-    /// The body, null before the object entered the scene or after the component went.
+    /// The body, null before the object entered the scene, after the component went, or once
+    /// the PhysicsSystem noticed the body was destroyed through the World.
     [[nodiscard]] BodyId body() const noexcept { return body_; }
     [[nodiscard]] PhysicsSystem& system() const noexcept { return system_; }
 
@@ -77,6 +78,7 @@ public:
 
 private:
     friend class Collider;
+    friend class JointComponent;
     friend class PhysicsSystem;
 
     /// Creates the body now if the object is in the scene and it does not exist yet.

@@ -11,7 +11,7 @@ enum class BodyType : std::uint8_t { Static = 0, Kinematic = 1, Dynamic = 2 };
 inline constexpr int kBodyTypeCount = 3;
 
 /// Collision filtering. Two shapes may touch when each one's category matches the other's mask,
-/// as with the seed's Mask (a bit set: two masks match when they share a bit). A non-zero
+/// as with core::Mask (a bit set: two masks match when they share a bit). A non-zero
 /// `group` overrides the masks: same positive group always collides, same negative never does.
 struct Filter {
     std::uint64_t categoryBits = 1;              ///< what this shape is, default bit 0

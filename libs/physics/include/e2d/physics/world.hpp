@@ -6,6 +6,7 @@
 #include <e2d/physics/function_ref.hpp>
 #include <e2d/physics/geometry.hpp>
 #include <e2d/physics/id.hpp>
+#include <e2d/physics/joint.hpp>
 #include <e2d/physics/manifold.hpp>
 #include <e2d/physics/math.hpp>
 #include <e2d/physics/query.hpp>
@@ -13,6 +14,7 @@
 #include <e2d/physics/types.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -33,8 +35,18 @@ struct WorldDef {
     float speculativeDistance = kSpeculativeDistance;
     /// Bodies to reserve room for, >= 0. Default 0 (grow on demand).
     int bodyCapacity = 0;
+    /// Joints to reserve room for, >= 0. Default 0 (grow on demand).
+    int jointCapacity = 0;
     /// Shapes to reserve room for, >= 0. Default 0 (grow on demand).
     int shapeCapacity = 0;
+    /// The tag this world writes into every id it hands out (BodyId::world, ShapeId::world);
+    /// an id whose tag is not this world's is rejected like a stale one. 1..65535: used as
+    /// given (choose distinct tags to make ids of live worlds never mix up, or the same tag
+    /// on every run so id values repeat exactly). Default 0: derived from the address of the
+    /// world's internal state, never 0 (no counter or other global state); two live worlds then
+    /// share a tag with probability 1/65535, and id values differ from run to run (the
+    /// simulation itself does not depend on them).
+    std::uint16_t tag = 0;
 
     // --- dynamics (World::step) ---
 
@@ -71,9 +83,9 @@ struct BodyDef {
     float gravityScale = 1.0f;
     /// The body never rotates (infinite rotational inertia). Default false.
     bool fixedRotation = false;
-    /// The centre of mass never moves along world x (the seed's freeze X). Default false.
+    /// The centre of mass never moves along world x. Default false.
     bool lockX = false;
-    /// The centre of mass never moves along world y (the seed's freeze Y). Default false.
+    /// The centre of mass never moves along world y. Default false.
     bool lockY = false;
     /// A fast dynamic body: continuous collision every step (not only when it moves far),
     /// against static shapes and also against kinematic and non-bullet dynamic ones.
@@ -87,11 +99,15 @@ struct BodyDef {
 
 /// How a shape is created. World::createShape() validates every field.
 struct ShapeDef {
-    /// kg/m^2, finite, >= 0. Default 1.
+    /// kg/m^2, finite, >= 0. Default 1. A dynamic body's mass, centre and rotational inertia
+    /// come from its shapes' densities and areas. When they give no mass (every shape of
+    /// density 0, or only segments, which have no area) the body gets 1 kg at its origin and
+    /// no rotational inertia, as in Box2D 2.4: it falls and is pushed but never turns. Give it
+    /// a density, a shape with area, or World::setMassData().
     float density = 1.0f;
     /// Coulomb friction coefficient, finite, >= 0. Default 0.6.
     float friction = 0.6f;
-    /// Bounciness, finite, >= 0 (1 is elastic). Default 0.
+    /// Bounciness, finite, in [0, 1] (0 does not bounce, 1 is elastic). Default 0.
     float restitution = 0.0f;
     /// Rolling resistance (torque per normal force), metres, finite, >= 0. Default 0.
     float rollingResistance = 0.0f;
@@ -99,18 +115,133 @@ struct ShapeDef {
     Filter filter{};
     /// A sensor detects overlap but is not solid. Sensors pair only with non-sensor shapes and
     /// are skipped by queries unless QueryFilter::includeSensors. Default false.
+    ///
+    /// Which pairs a sensor sees follows the broad phase's rule (World::updatePairs()): one of
+    /// the two bodies must be dynamic. So a sensor on a static or kinematic body (a trigger
+    /// zone, a moving detector) sees dynamic bodies only, and a sensor on a dynamic body sees
+    /// static, kinematic and dynamic shapes alike. A zone that must also see kinematic bodies
+    /// goes on a dynamic body with gravityScale 0 (a sensor has no say in the body's motion,
+    /// and nothing solid touches it).
     bool isSensor = false;
     /// Anything the application wants to find the shape's owner by. Default 0.
     std::uint64_t userData = 0;
+    /// Whether the shape's contacts report ContactBeginTouchEvent and ContactEndTouchEvent. A
+    /// pair reports them only when both shapes have this on. Default true.
+    bool enableContactEvents = true;
+    /// Whether the shape's sensor overlaps report SensorBeginTouchEvent and SensorEndTouchEvent
+    /// (as the sensor or as the visitor). A pair reports them only when both shapes have this
+    /// on. Default true.
+    bool enableSensorEvents = true;
+    /// Whether the shape's contacts report ContactHitEvent. A pair reports hits only when both
+    /// shapes have this on. Default true.
+    bool enableHitEvents = true;
 };
 
-/// A physics world. Owns its bodies and shapes, hands out BodyId and ShapeId handles, and
-/// checks every handle on use: a stale or null handle throws core::Error (isValid() tells
-/// beforehand). Functions that throw leave the world unchanged. Worlds are independent: any
+/// Friction, restitution and rolling resistance of one chain segment (ChainDef::materials).
+struct SurfaceMaterial {
+    /// Coulomb friction coefficient, finite, >= 0. Default 0.6.
+    float friction = 0.6f;
+    /// Bounciness, finite, in [0, 1]. Default 0.
+    float restitution = 0.0f;
+    /// Rolling resistance, metres, finite, >= 0. Default 0.
+    float rollingResistance = 0.0f;
+    /// The segment's ShapeDef::userData. Default 0.
+    std::uint64_t userData = 0;
+};
+
+/// A chain of one-sided segments through `points` (World::createChain()): smooth terrain that
+/// shapes slide over without catching on the joints. Each segment is hit from its right-hand
+/// side walking from one point to the next (see ChainSegment): list a floor's points from right
+/// to left, and a loop counter-clockwise to make it solid inside.
+struct ChainDef {
+    /// Chain points in the body's frame, metres, finite, within kHuge; at least 2 (3 for a
+    /// loop); consecutive points (and for a loop the last and the first) at least kLinearSlop
+    /// apart. No default.
+    std::vector<Vec2> points{};
+    /// Joins the last point back to the first: every segment then has neighbours on both
+    /// sides. Default false.
+    bool isLoop = false;
+    /// Open chains only: the point before points[0] and the point after the last one (ghost
+    /// points: never collided, they only smooth the end segments' joints with whatever the
+    /// chain continues into). Without one, that end is free and round like a Segment's.
+    /// Default none.
+    std::optional<Vec2> ghostBefore{};
+    std::optional<Vec2> ghostAfter{};
+    /// Per-segment materials: empty (every segment takes `shape`'s), one (every segment takes
+    /// it) or one per segment (points.size() - 1, or points.size() for a loop). Default empty.
+    std::vector<SurfaceMaterial> materials{};
+    /// What every segment shape is made with: filter, events, friction, restitution and
+    /// userData unless `materials` says otherwise. density is ignored (segments have no mass).
+    /// Default ShapeDef{}.
+    ShapeDef shape{};
+};
+
+/// A body moved by the last step: its transform after the step (World::bodyMoveEvents()).
+struct BodyMoveEvent {
+    BodyId body;
+    Transform transform{};
+    /// The body fell asleep at the end of this step (it sends no more move events until
+    /// something wakes it).
+    bool fellAsleep = false;
+};
+
+/// An explosion (World::explode()): an impulse pushing every dynamic body whose shapes come
+/// within `radius + falloff` of `position`, nothing in between blocking it.
+struct ExplosionDef {
+    /// Centre, metres, finite, within kHuge. Default (0, 0).
+    Vec2 position{0.0f, 0.0f};
+    /// Full strength out to this distance, metres, finite, >= 0. Default 1.
+    float radius = 1.0f;
+    /// Beyond `radius` the strength falls linearly to zero over this distance, metres,
+    /// finite, >= 0. Default 1.
+    float falloff = 1.0f;
+    /// Impulse per metre of the shape's outline facing the explosion at full strength,
+    /// N*s/m, finite. Default 1. (A shape's impulse is impulsePerLength times the width it
+    /// presents to the centre times the strength at its closest point, pushing along the line
+    /// from the centre to that point, applied at its closest point.)
+    float impulsePerLength = 1.0f;
+    /// Which shapes it reaches (QueryFilter rules; sensors never). Default everything.
+    std::uint64_t maskBits = ~std::uint64_t{0};
+};
+
+/// Called during World::step() for each touching solid contact after the narrow phase
+/// computed its manifold (see World::setPreSolveCallback()). Returns false to leave the contact
+/// out of this step's solver.
+using PreSolveCallback = std::function<bool(ShapeId shapeA, ShapeId shapeB, const Manifold& manifold)>;
+/// Called when two shapes could start a pair (see World::setPairFilterCallback()). Returns
+/// false to keep them apart.
+using PairFilterCallback = std::function<bool(ShapeId shapeA, ShapeId shapeB)>;
+
+class Body;
+class Joint;
+class Shape;
+
+/// A physics world. Owns its bodies, shapes and joints, hands out BodyId, ShapeId and JointId
+/// handles, and checks every handle on use: a stale or null handle throws core::Error
+/// (isValid() tells beforehand), and so does a handle from another world (each id carries its world's tag, see
+/// WorldDef::tag). Functions that throw leave the world unchanged. Worlds are independent: any
 /// number may live in one process, each used from one thread at a time.
 ///
-/// Handles are not tagged with their world: a handle from another world is only caught when
-/// its slot or generation does not exist here.
+/// Callbacks run while the world walks its shapes, pairs or contacts: those of the queries
+/// (overlapAabb(), forEachCandidatePair(), forEachTouchingContact()) and the hooks called inside
+/// step() and updatePairs() (the pre-solve and pair filter callbacks). Inside them, reading
+/// anything, queries, velocities, forces, impulses, explode(), sleep, materials, event switches
+/// and user data are allowed; createBody(), destroyBody(), createShape(), createChain(),
+/// destroyShape(), createJoint(), destroyJoint(), setTransform(), setBodyEnabled(),
+/// setBodyType(), setMassData(), setShapeFilter(), setShapeSensor(), setShapeDensity(),
+/// setShapeGeometry(),
+/// setPreSolveCallback(), setPairFilterCallback(), updatePairs() and step() throw core::Error
+/// naming themselves and the running callback (collect the ids, act after it returns). The
+/// event arrays are read after step() returns: anything but step() may be called while going
+/// through them (events of what is destroyed then are reported by the next step()).
+///
+/// Finding your way: every function takes the id of what it acts on, grouped below as world
+/// settings, bodies, shapes, chains, joints, pairs, queries, dynamics, hooks and events. The same
+/// functions are reachable through small handle views that hold the world and an id and cost
+/// nothing (see views.hpp): `Body b = world.body(id); b.position(); b.applyLinearImpulse(...);
+/// b.shapes();`, `Shape s = world.shape(id); s.setFriction(0.2f);` and `Joint j =
+/// world.joint(id); j.setMotorSpeed(2.0f);`. A view checks its id on
+/// every call like the world does; it never outlives the world it came from.
 class World {
 public:
     /// Throws core::Error naming the first invalid field of `def`.
@@ -129,6 +260,8 @@ public:
     void setGravity(Vec2 gravity);
     [[nodiscard]] CollisionAlgorithm collisionAlgorithm() const;
     [[nodiscard]] float speculativeDistance() const;
+    /// The tag in every id this world hands out (WorldDef::tag, or the one derived), never 0.
+    [[nodiscard]] std::uint16_t tag() const;
 
     // --- bodies ---
 
@@ -193,6 +326,72 @@ public:
     [[nodiscard]] std::uint64_t shapeUserData(ShapeId id) const;
     void setShapeUserData(ShapeId id, std::uint64_t userData);
 
+    // --- chains ---
+
+    /// Attaches a chain of ChainSegment shapes to a body, one per pair of consecutive points
+    /// (ChainDef). Returns the segments' ids in chain order; each is an ordinary shape
+    /// (destroyShape(), setShapeFriction(), queries...). Throws core::Error naming the invalid
+    /// field of `def` before creating anything.
+    std::vector<ShapeId> createChain(BodyId body, const ChainDef& def);
+
+    // --- joints (joint.hpp; joint.cpp) ---
+
+    /// A new joint between the def's two bodies (live, different, at least one dynamic), which
+    /// are woken. Unless def.collideConnected, their shapes stop colliding with each other (a
+    /// contact between them ends now). Throws core::Error naming the invalid field of `def`.
+    JointId createJoint(const JointDef& def);
+    /// Destroys the joint and wakes its bodies. destroyBody() destroys the body's joints.
+    void destroyJoint(JointId id);
+    /// Whether `id` names a live joint of this world.
+    [[nodiscard]] bool isValid(JointId id) const;
+    [[nodiscard]] JointType jointType(JointId id) const;
+    [[nodiscard]] BodyId jointBodyA(JointId id) const;
+    [[nodiscard]] BodyId jointBodyB(JointId id) const;
+    /// The body's joints, most recently created first.
+    [[nodiscard]] std::vector<JointId> bodyJoints(BodyId id) const;
+    [[nodiscard]] std::uint64_t jointUserData(JointId id) const;
+    void setJointUserData(JointId id, std::uint64_t userData);
+    /// The joint's anchors in world coordinates, metres (a mouse joint's A anchor is its
+    /// target; a motor joint's is where it drives B's origin, its B anchor B's origin).
+    [[nodiscard]] Vec2 jointAnchorA(JointId id) const;
+    [[nodiscard]] Vec2 jointAnchorB(JointId id) const;
+    /// The force the joint applied to body B during the last step, newtons, world axes (body A
+    /// got the opposite), averaged over the step's last sub-step; zero before the first step
+    /// and while a body is disabled; while the bodies sleep, the one they fell asleep with. A
+    /// game breaks a joint when this exceeds a threshold.
+    [[nodiscard]] Vec2 jointReactionForce(JointId id) const;
+    /// The torque the joint applied to body B about its anchor during the last step, N*m.
+    [[nodiscard]] float jointReactionTorque(JointId id) const;
+    /// Revolute: the joint angle (radians, B relative to A minus the reference angle, counted
+    /// through whole turns). Prismatic and wheel: the translation of B's anchor along the axis
+    /// from A's anchor, metres. Distance: the current length, metres. Throws for other types.
+    [[nodiscard]] float jointValue(JointId id) const;
+    /// Turns the motor of a distance, prismatic, revolute or wheel joint on or off. Throws for
+    /// other types. Wakes the bodies.
+    void enableJointMotor(JointId id, bool enable);
+    /// Motor speed (m/s or rad/s, finite) of a distance, prismatic, revolute or wheel joint.
+    void setJointMotorSpeed(JointId id, float speed);
+    /// Largest motor force (N) or torque (N*m), finite, >= 0, of a distance, prismatic,
+    /// revolute or wheel joint; the largest force of a mouse or motor joint.
+    void setJointMaxMotorForce(JointId id, float force);
+    /// Turns the limits of a distance, prismatic, revolute or wheel joint on or off.
+    void enableJointLimit(JointId id, bool enable);
+    /// Limits (finite, lower <= upper): lengths of a distance joint (lower >= 0), translations
+    /// of a prismatic or wheel joint, angles of a revolute joint.
+    void setJointLimits(JointId id, float lower, float upper);
+    /// Spring of a distance, prismatic, revolute or wheel joint (enabled when hertz > 0) or
+    /// the stiffness of a mouse joint (hertz > 0) or of both parts of a weld joint: hertz and
+    /// damping ratio finite, >= 0.
+    void setJointSpring(JointId id, float hertz, float dampingRatio);
+    /// A mouse joint's target, world metres, finite. Wakes body B.
+    void setMouseJointTarget(JointId id, Vec2 target);
+    /// A motor joint's target pose of B in A's frame (metres, radians, finite). Wakes the
+    /// bodies.
+    void setMotorJointOffsets(JointId id, Vec2 linearOffset, float angularOffset);
+    [[nodiscard]] int jointCount() const;
+    /// Every live joint's debug picture (JointDebugData), in slot order.
+    [[nodiscard]] std::vector<JointDebugData> jointDebugData() const;
+
     // --- counts ---
 
     [[nodiscard]] int bodyCount() const;
@@ -212,6 +411,7 @@ public:
     [[nodiscard]] int candidatePairCount() const;
     /// Calls `callback(a, b)` once per current pair, a's slot before b's, in the broad phase's
     /// table order: not sorted, but the same operations give the same order (determinism).
+    /// The world is locked during the callback (see World).
     void forEachCandidatePair(FunctionRef<void(ShapeId, ShapeId)> callback) const;
 
     // --- queries (world space; they read the broad phase, so updatePairs() is not needed) ---
@@ -228,7 +428,9 @@ public:
     [[nodiscard]] std::optional<RayResult> rayCastShape(ShapeId id, Vec2 origin, Vec2 translation,
                                                         bool ignoreBackFaces = true) const;
     /// Calls `callback(shape)` for each shape whose tight world box overlaps `box`; the callback
-    /// returns false to stop. `box` must be finite with lower <= upper.
+    /// returns false to stop. `box` must be finite with lower <= upper. The world is locked
+    /// during the callback (no creating, destroying or moving; see World): to destroy what it
+    /// finds, collect the ids (or use the overload returning them) and destroy them after.
     void overlapAabb(const Aabb& box, const QueryFilter& filter,
                      FunctionRef<bool(ShapeId)> callback) const;
     /// The shapes whose tight world box overlaps `box`, in slot order.
@@ -242,16 +444,18 @@ public:
     /// and moved by `translation` (metres, finite, non-zero), would touch. `point` is on the
     /// surface of the shape hit, `normal` points out of it towards the moving shape and
     /// `fraction` is how far along `translation` they meet. A shape the geometry already
-    /// overlaps at the start is hit at fraction 0 with a zero normal. Back faces play no part.
+    /// overlaps at the start is hit at fraction 0 with a zero normal. Back faces play no part:
+    /// a chain segment is seen only from its front (the moving shape's box centre in front of
+    /// it, moving against its normal).
     /// Throws core::Error for an invalid geometry or non-finite input.
     [[nodiscard]] std::optional<RayResult> castShape(const ShapeGeometry& geometry,
                                                      const Transform& transform, Vec2 translation,
                                                      const QueryFilter& filter = {}) const;
 
-    // --- dynamics (world_step.cpp, world_dynamics.cpp) ---
+    // --- dynamics ---
 
-    /// Advances the world by `timeStep` seconds (finite, >= 0; 0 updates contacts and events
-    /// only): pairs, contacts, narrow phase, solver, continuous collision, sleeping, events.
+    /// Advances the world by `timeStep` seconds (finite, in [0, kMaxTimeStep (0.25 s)]; 0
+    /// updates contacts and events only): pairs, contacts, narrow phase, solver, continuous collision, sleeping, events.
     /// Call it at a fixed rate (e.g. 1/60 s) for stable results.
     void step(float timeStep);
     [[nodiscard]] const SolverDef& solverDef() const;
@@ -307,7 +511,8 @@ public:
     /// Number of awake dynamic and kinematic bodies.
     [[nodiscard]] int awakeBodyCount() const;
 
-    /// Events of the last step (see events.hpp), valid until the next step.
+    /// Events of the last step (ContactBeginTouchEvent and the others), valid until the next
+    /// step.
     [[nodiscard]] std::span<const ContactBeginTouchEvent> contactBeginEvents() const;
     [[nodiscard]] std::span<const ContactEndTouchEvent> contactEndEvents() const;
     [[nodiscard]] std::span<const SensorBeginTouchEvent> sensorBeginEvents() const;
@@ -316,6 +521,15 @@ public:
     /// Bodies the last step disabled because their state became non-finite (NaN or infinite
     /// position or velocity); the rest of the world went on.
     [[nodiscard]] std::span<const BodyId> nonFiniteBodies() const;
+    /// Bodies the last step disabled because their origin left the coordinate range (|x| or
+    /// |y| beyond kHuge); each keeps its last transform inside the range and its velocity is
+    /// zeroed, so it can be moved back (setTransform()) and enabled again.
+    [[nodiscard]] std::span<const BodyId> outOfRangeBodies() const;
+
+    /// Bodies the last step moved: every awake dynamic and kinematic body the solver
+    /// integrated, with its transform after the step, in a fixed order. For syncing game
+    /// objects (or render transforms) with only the bodies that moved.
+    [[nodiscard]] std::span<const BodyMoveEvent> bodyMoveEvents() const;
 
     /// What the last step computed (see StepCounters).
     [[nodiscard]] StepCounters stepCounters() const;
@@ -323,8 +537,89 @@ public:
     /// Number of contacts (pairs of shapes whose fat boxes overlap), touching or not.
     [[nodiscard]] int contactCount() const;
     /// Calls `callback` for each touching solid contact (manifold with points), in a fixed
-    /// order.
+    /// order. The world is locked during the callback (see World).
     void forEachTouchingContact(FunctionRef<void(const ContactData&)> callback) const;
+
+    // --- hooks ---
+    //
+    // Both callbacks run inside step() (the pair filter also inside updatePairs()), on the
+    // thread that called it: e2d steps on one thread, so they are never called concurrently.
+    // The world is locked while they run (see World): reading, queries, velocities, impulses,
+    // sleep, materials and user data are allowed; creating, destroying, moving, re-filtering,
+    // changing a body's type or a shape's geometry or sensor flag, replacing a callback and
+    // stepping throw core::Error naming the call and the callback. An exception thrown by a
+    // callback leaves step() at that point (the world stays valid; the step is partial).
+
+    /// Called in step() after the narrow phase computed a contact's manifold and before the
+    /// solver, once per step for each touching solid contact with an awake body (shapes in the
+    /// pair's order; the manifold's normal points from shapeA to shapeB). Returning false
+    /// leaves the contact out of this step's solver (a one-way platform: return false while
+    /// the body comes from below); its begin/end touch events are reported all the same, and
+    /// a contact between sleeping bodies keeps the last answer. Continuous collision does not
+    /// ask it (a chain segment is one-sided for that too). An empty function removes it.
+    void setPreSolveCallback(PreSolveCallback callback);
+    /// Called when two shapes whose boxes begin to overlap pass the built-in rules (different
+    /// bodies, one dynamic, filters, not both sensors: updatePairs()); returning false keeps
+    /// them from pairing (no contact, no events) until their boxes part and meet again.
+    /// Continuous collision asks it too. An empty function removes it.
+    void setPairFilterCallback(PairFilterCallback callback);
+
+    // --- more queries ---
+
+    /// The shapes that `geometry` (a circle, capsule or polygon) placed at `transform` overlaps
+    /// (touching counts; distance <= 0), in slot order. Throws core::Error for a segment or
+    /// chain segment, an invalid geometry or a non-finite transform.
+    [[nodiscard]] std::vector<ShapeId> overlapShape(const ShapeGeometry& geometry,
+                                                    const Transform& transform,
+                                                    const QueryFilter& filter = {}) const;
+    /// Pushes dynamic bodies away from a point (see ExplosionDef), waking them. Returns how
+    /// many shapes it pushed. Throws core::Error naming the invalid field.
+    int explode(const ExplosionDef& def);
+
+    // --- points and setters ---
+
+    /// A point in the body's frame (metres) in world coordinates.
+    [[nodiscard]] Vec2 worldPoint(BodyId id, Vec2 localPoint) const;
+    /// A world point (metres) in the body's frame.
+    [[nodiscard]] Vec2 localPoint(BodyId id, Vec2 worldPoint) const;
+    /// A direction in the body's frame rotated to world axes.
+    [[nodiscard]] Vec2 worldVector(BodyId id, Vec2 localVector) const;
+    /// A world direction in the body's frame.
+    [[nodiscard]] Vec2 localVector(BodyId id, Vec2 worldVector) const;
+    /// Velocity (m/s) of the body's material point at a world point (metres).
+    [[nodiscard]] Vec2 linearVelocityAtWorldPoint(BodyId id, Vec2 worldPoint) const;
+    /// Velocity (m/s) of the body's material point at a point in its frame (metres).
+    [[nodiscard]] Vec2 linearVelocityAtLocalPoint(BodyId id, Vec2 localPoint) const;
+
+    /// Changes the body's type. Its mass is recomputed (static and kinematic bodies have
+    /// none), its contacts end (pairs are found again under the new type's rules at the next
+    /// step) and it wakes unless it became static; a static body stops.
+    void setBodyType(BodyId id, BodyType type);
+    /// Finite, >= 0. Contacts take it from the next step.
+    void setShapeFriction(ShapeId id, float friction);
+    /// Finite, in [0, 1]. Contacts take it from the next step.
+    void setShapeRestitution(ShapeId id, float restitution);
+    /// Finite, >= 0. Contacts take it from the next step.
+    void setShapeRollingResistance(ShapeId id, float rollingResistance);
+    /// kg/m^2, finite, >= 0. The body's mass is recomputed from its shapes' densities.
+    void setShapeDensity(ShapeId id, float density);
+    /// Makes the shape a sensor or a solid one. Its contacts end (touching ones report end
+    /// events) and pairs are found again at the next step.
+    void setShapeSensor(ShapeId id, bool isSensor);
+    /// Replaces the shape's geometry (same rules as createShape()): its contacts end, its box
+    /// moves, the body's mass is recomputed.
+    void setShapeGeometry(ShapeId id, const ShapeGeometry& geometry);
+    /// Per-shape event switches (see ShapeDef). Contacts take them from the next step.
+    void setShapeEventFlags(ShapeId id, bool contactEvents, bool sensorEvents, bool hitEvents);
+
+    // --- handle views (views.hpp) ---
+
+    /// A view of the body: World plus id, forwarding to the functions above.
+    [[nodiscard]] Body body(BodyId id);
+    /// A view of the shape: World plus id, forwarding to the functions above.
+    [[nodiscard]] Shape shape(ShapeId id);
+    /// A view of the joint: World plus id, forwarding to the functions above.
+    [[nodiscard]] Joint joint(JointId id);
 
 private:
     struct Impl;
@@ -332,3 +627,5 @@ private:
 };
 
 } // namespace e2d::physics
+
+#include <e2d/physics/views.hpp>

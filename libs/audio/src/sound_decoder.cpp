@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: MIT
+#include "sound_decoder.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <utility>
+
+namespace e2d::audio::detail {
+
+namespace {
+
+// libsndfile's virtual I/O over a block of memory (Decoder::Memory).
+using MemoryCursor = Decoder::Memory;
+
+sf_count_t vioLength(void* user) {
+    return static_cast<sf_count_t>(static_cast<MemoryCursor*>(user)->bytes.size());
+}
+
+sf_count_t vioSeek(sf_count_t offset, int whence, void* user) {
+    auto* cursor = static_cast<MemoryCursor*>(user);
+    const auto size = static_cast<sf_count_t>(cursor->bytes.size());
+    sf_count_t base = 0;
+    switch (whence) {
+    case SEEK_CUR:
+        base = cursor->position;
+        break;
+    case SEEK_END:
+        base = size;
+        break;
+    default:
+        break;
+    }
+    // Guard the addition: a corrupt header can ask for any offset.
+    if ((offset > 0 && base > std::numeric_limits<sf_count_t>::max() - offset) ||
+        base + offset < 0) {
+        return -1;
+    }
+    cursor->position = base + offset;
+    return cursor->position;
+}
+
+sf_count_t vioRead(void* ptr, sf_count_t count, void* user) {
+    auto* cursor = static_cast<MemoryCursor*>(user);
+    const auto size = static_cast<sf_count_t>(cursor->bytes.size());
+    if (count <= 0 || cursor->position >= size) {
+        return 0;
+    }
+    const sf_count_t n = std::min(count, size - cursor->position);
+    std::memcpy(ptr, cursor->bytes.data() + cursor->position, static_cast<std::size_t>(n));
+    cursor->position += n;
+    return n;
+}
+
+sf_count_t vioWrite(const void*, sf_count_t, void*) { return 0; }
+
+sf_count_t vioTell(void* user) { return static_cast<MemoryCursor*>(user)->position; }
+
+} // namespace
+
+std::unique_ptr<Decoder> Decoder::open(const std::filesystem::path& path, const DecodeLimits& limits,
+                                       std::string& error) {
+    std::unique_ptr<Decoder> decoder(new Decoder());
+    decoder->name_ = path.string();
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) {
+        error = "'" + decoder->name_ + "': no such file";
+        return nullptr;
+    }
+    if (std::filesystem::is_directory(path, ec)) {
+        error = "'" + decoder->name_ + "': is a directory";
+        return nullptr;
+    }
+    decoder->file_ = sf_open(decoder->name_.c_str(), SFM_READ, &decoder->info_);
+    if (!decoder->finishOpen(limits, error)) {
+        return nullptr;
+    }
+    return decoder;
+}
+
+std::unique_ptr<Decoder> Decoder::open(std::span<const std::byte> bytes, std::string_view name,
+                                       const DecodeLimits& limits, std::string& error) {
+    std::unique_ptr<Decoder> decoder(new Decoder());
+    decoder->name_ = std::string(name);
+    decoder->memory_ = Memory{bytes, 0};
+    SF_VIRTUAL_IO io{vioLength, vioSeek, vioRead, vioWrite, vioTell};
+    decoder->file_ = sf_open_virtual(&io, SFM_READ, &decoder->info_, &decoder->memory_);
+    if (!decoder->finishOpen(limits, error)) {
+        return nullptr;
+    }
+    return decoder;
+}
+
+bool Decoder::finishOpen(const DecodeLimits& limits, std::string& error) {
+    const std::string prefix = "'" + name_ + "': ";
+    if (file_ == nullptr) {
+        error = prefix + sf_strerror(nullptr);
+        return false;
+    }
+    if (info_.channels < 1 || info_.channels > limits.maxChannels) {
+        error = prefix + std::to_string(info_.channels) + " channels, at most " +
+                std::to_string(limits.maxChannels) + " supported";
+        return false;
+    }
+    if (info_.samplerate < limits.minSampleRate || info_.samplerate > limits.maxSampleRate) {
+        error = prefix + "sample rate " + std::to_string(info_.samplerate) + " Hz outside " +
+                std::to_string(limits.minSampleRate) + ".." + std::to_string(limits.maxSampleRate) +
+                " Hz";
+        return false;
+    }
+    // libsndfile reads a data chunk that claims more bytes than the file holds up to the end
+    // of the file, and only notes it in its log ("data : 8820 (should be 1000)"): a truncated
+    // or mis-sized file, which is an error here.
+    std::string log(4096, '\0');
+    sf_command(file_, SFC_GET_LOG_INFO, log.data(), static_cast<int>(log.size()));
+    log.resize(log.find('\0'));
+    for (std::size_t begin = 0; begin < log.size();) {
+        std::size_t end = log.find('\n', begin);
+        end = end == std::string::npos ? log.size() : end;
+        const std::string_view line(log.data() + begin, end - begin);
+        if (line.starts_with("data") && line.find("(should be") != std::string_view::npos) {
+            error = prefix + "truncated or wrong chunk size (libsndfile: " + std::string(line) + ")";
+            return false;
+        }
+        begin = end + 1;
+    }
+    // libsndfile says SF_COUNT_MAX when the length is unknown.
+    headerFrames_ = info_.frames == SF_COUNT_MAX ? -1 : static_cast<std::int64_t>(info_.frames);
+    if (headerFrames_ == 0 || headerFrames_ < -1) {
+        error = prefix + "no audio frames";
+        return false;
+    }
+    return true;
+}
+
+Decoder::~Decoder() {
+    if (file_ != nullptr) {
+        sf_close(file_);
+    }
+}
+
+void Decoder::setError(std::string_view reason) {
+    error_ = "'" + name_ + "': ";
+    error_ += reason;
+}
+
+std::int64_t Decoder::read(float* out, std::int64_t frames) {
+    const sf_count_t got = sf_readf_float(file_, out, static_cast<sf_count_t>(frames));
+    if (sf_error(file_) != SF_ERR_NO_ERROR) {
+        setError(sf_strerror(file_));
+        return -1;
+    }
+    return got;
+}
+
+bool Decoder::seek(std::int64_t frame) {
+    if (sf_seek(file_, static_cast<sf_count_t>(frame), SEEK_SET) < 0) {
+        setError(std::string("cannot seek: ") + sf_strerror(file_));
+        return false;
+    }
+    return true;
+}
+
+DecodeResult Decoder::readAll(std::int64_t maxFrames) {
+    DecodeResult result;
+    if (headerFrames_ > maxFrames) {
+        result.error = "'" + name_ + "': " + std::to_string(headerFrames_) +
+                       " frames, more than the limit of " + std::to_string(maxFrames);
+        return result;
+    }
+    const int channels = info_.channels;
+    constexpr std::int64_t kChunk = 16384;
+    // The header is untrusted: reserve at most a few MiB up front and grow as data arrives.
+    std::vector<float> samples;
+    if (headerFrames_ > 0) {
+        samples.reserve(static_cast<std::size_t>(std::min<std::int64_t>(headerFrames_, 1 << 20) * channels));
+    }
+    std::int64_t total = 0;
+    for (;;) {
+        const std::int64_t want = std::min(kChunk, maxFrames + 1 - total);
+        samples.resize(static_cast<std::size_t>((total + want) * channels));
+        const std::int64_t got = read(samples.data() + total * channels, want);
+        if (got < 0) {
+            result.error = error_;
+            return result;
+        }
+        total += got;
+        if (total > maxFrames) {
+            result.error = "'" + name_ + "': more than the limit of " + std::to_string(maxFrames) + " frames";
+            return result;
+        }
+        if (got < want) {
+            break;
+        }
+    }
+    samples.resize(static_cast<std::size_t>(total * channels));
+    if (total == 0) {
+        result.error = "'" + name_ + "': no audio frames";
+        return result;
+    }
+    if (headerFrames_ > 0 && total < headerFrames_) {
+        result.error = "'" + name_ + "': truncated: the header announces " + std::to_string(headerFrames_) +
+                       " frames, the data holds " + std::to_string(total);
+        return result;
+    }
+    result.data.channels = channels;
+    result.data.sampleRate = info_.samplerate;
+    result.data.samples = std::move(samples);
+    return result;
+}
+
+} // namespace e2d::audio::detail
+
+namespace e2d::audio {
+
+DecodeResult decodeSoundFile(const std::filesystem::path& path, const DecodeLimits& limits) {
+    DecodeResult result;
+    auto decoder = detail::Decoder::open(path, limits, result.error);
+    if (!decoder) {
+        return result;
+    }
+    return decoder->readAll(limits.maxFrames);
+}
+
+DecodeResult decodeSoundMemory(std::span<const std::byte> bytes, std::string_view name,
+                               const DecodeLimits& limits) {
+    DecodeResult result;
+    auto decoder = detail::Decoder::open(bytes, name, limits, result.error);
+    if (!decoder) {
+        return result;
+    }
+    return decoder->readAll(limits.maxFrames);
+}
+
+} // namespace e2d::audio

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// Arbitrary bytes as a gamepad mapping text: every line is accepted, counted as another
+// platform's, or reported once with its line number; an accepted line is accepted again on its
+// own and holds nothing GLFW would split or cut (no control characters, < 1024 bytes).
+#include <e2d/input/gamepad_mappings.hpp>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+namespace {
+
+void check(bool condition) {
+    if (!condition) {
+        std::abort();
+    }
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    const e2d::input::MappingParseResult result = e2d::input::parseGamepadMappings(text, "fuzz");
+    const auto lineCount = static_cast<int>(std::count(text.begin(), text.end(), '\n')) + 1;
+    check(result.lines.size() + result.errors.size() + static_cast<std::size_t>(result.otherPlatform) <=
+          static_cast<std::size_t>(lineCount));
+    int previous = 0;
+    for (const e2d::input::MappingError& e : result.errors) {
+        check(e.line > previous && e.line <= lineCount);
+        check(e.message.starts_with("fuzz:" + std::to_string(e.line) + ": "));
+        previous = e.line;
+    }
+    for (const std::string& line : result.lines) {
+        check(line.size() < 1024);
+        check(std::none_of(line.begin(), line.end(),
+                           [](char c) { return static_cast<unsigned char>(c) < 0x20 && c != '\t'; }));
+        const e2d::input::MappingParseResult again = e2d::input::parseGamepadMappings(line);
+        check(again.errors.empty() && again.lines.size() == 1 && again.lines[0] == line);
+    }
+    return 0;
+}

@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/core/error.hpp>
+#include <e2d/input/actions.hpp>
+#include <e2d/input/names.hpp>
+
+#include <GLFW/glfw3.h>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace e2d::input {
+namespace {
+
+using ::testing::ElementsAre;
+
+std::string errorOf(auto&& f) {
+    try {
+        f();
+    } catch (const core::Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+const char* kFile = "# controls\n"
+                    "jump = key:space, button:a\n"
+                    "\n"
+                    "  move_x =keys:a/d,axis:leftx ,  axis@1:-rightx\r\n"
+                    "fire = mouse:left, button@0:righttrigger\n"
+                    "pause =\n";
+
+TEST(BindingsFile, LoadsEveryActionWithItsBindings) {
+    ActionMap actions;
+    actions.loadFromString(kFile);
+    ASSERT_EQ(actions.size(), 4u);
+    EXPECT_THAT(actions.bindings(actions.find("jump")),
+                ElementsAre(Binding::key(GLFW_KEY_SPACE), Binding::gamepadButton(GLFW_GAMEPAD_BUTTON_A)));
+    EXPECT_THAT(actions.bindings(actions.find("move_x")),
+                ElementsAre(Binding::keyAxis(GLFW_KEY_A, GLFW_KEY_D), Binding::gamepadAxis(GLFW_GAMEPAD_AXIS_LEFT_X),
+                            Binding::gamepadAxis(GLFW_GAMEPAD_AXIS_RIGHT_X, true, 1)));
+    EXPECT_THAT(actions.bindings(actions.find("fire")),
+                ElementsAre(Binding::mouseButton(GLFW_MOUSE_BUTTON_LEFT),
+                            Binding::gamepadButton(kGamepadButtonRightTrigger, 0)));
+    EXPECT_TRUE(actions.bindings(actions.find("pause")).empty());
+}
+
+TEST(BindingsFile, SaveThenLoadGivesTheSameMap) {
+    const std::filesystem::path path = std::filesystem::path(::testing::TempDir()) / "e2d_input_bindings.txt";
+    ActionMap original;
+    original.loadFromString(kFile);
+    original.bind(original.add("menu"), Binding::key(GLFW_KEY_F10));
+    original.save(path);
+
+    ActionMap loaded;
+    loaded.load(path);
+    ASSERT_EQ(loaded.size(), original.size());
+    for (std::uint32_t i = 1; i <= original.size(); ++i) {
+        EXPECT_EQ(loaded.name(ActionId{i}), original.name(ActionId{i}));
+        EXPECT_TRUE(std::ranges::equal(loaded.bindings(ActionId{i}), original.bindings(ActionId{i}))) << i;
+    }
+    EXPECT_EQ(loaded.toString(), original.toString());
+    std::filesystem::remove(path);
+}
+
+TEST(BindingsFile, LoadingReplacesListedActionsAndKeepsTheOthers) {
+    ActionMap actions;
+    const ActionId keep = actions.add("keep");
+    actions.bind(keep, Binding::key(GLFW_KEY_K));
+    const ActionId jump = actions.add("jump");
+    actions.bind(jump, Binding::key(GLFW_KEY_W));
+    actions.loadFromString("jump = key:up\n");
+    EXPECT_THAT(actions.bindings(jump), ElementsAre(Binding::key(GLFW_KEY_UP)));
+    EXPECT_THAT(actions.bindings(keep), ElementsAre(Binding::key(GLFW_KEY_K)));
+}
+
+TEST(BindingsFile, MalformedLinesNameFileAndLineAndChangeNothing) {
+    ActionMap actions;
+    const ActionId jump = actions.add("jump");
+    actions.bind(jump, Binding::key(GLFW_KEY_W));
+    const auto message = [&](std::string_view text) {
+        return errorOf([&] { actions.loadFromString(text, "controls.txt"); });
+    };
+    EXPECT_EQ(message("jump = key:up\nfire = key:spcae\n"), "controls.txt:2: unknown key name 'spcae' in 'key:spcae'");
+    EXPECT_EQ(message("# c\n\njump key:up\n"), "controls.txt:3: expected '<action> = <binding>, ...'");
+    EXPECT_EQ(message("jump = key:up,,key:w\n"), "controls.txt:1: empty binding");
+    EXPECT_EQ(message("ju mp = key:up\n"),
+              "controls.txt:1: action name must be letters, digits, '_', '-' or '.', got 'ju mp'");
+    EXPECT_EQ(message(" = key:up\n"), "controls.txt:1: action name must be letters, digits, '_', '-' or '.', got ''");
+    EXPECT_EQ(message("a = key:up\na = key:w\n"), "controls.txt:2: action 'a' is listed twice");
+    EXPECT_EQ(message("a = button:fire\n"), "controls.txt:1: unknown gamepad button name 'fire' in 'button:fire'");
+    // Nothing of the failed loads stuck.
+    EXPECT_EQ(actions.size(), 1u);
+    EXPECT_THAT(actions.bindings(jump), ElementsAre(Binding::key(GLFW_KEY_W)));
+}
+
+TEST(BindingsFile, UnreadableAndUnwritableFilesAreNamed) {
+    ActionMap actions;
+    EXPECT_EQ(errorOf([&] { actions.load("/nonexistent/e2d/controls.txt"); }),
+              "input::ActionMap::load(): cannot read '/nonexistent/e2d/controls.txt'");
+    EXPECT_EQ(errorOf([&] { actions.save("/nonexistent/e2d/controls.txt"); }),
+              "input::ActionMap::save(): cannot write '/nonexistent/e2d/controls.txt'");
+    // A file error names the file path as the source.
+    const std::filesystem::path path = std::filesystem::path(::testing::TempDir()) / "e2d_input_bad_bindings.txt";
+    std::ofstream(path) << "jump = key:space\n\nfire = mouse:nine\n";
+    EXPECT_EQ(errorOf([&] { actions.load(path); }),
+              path.string() + ":3: unknown mouse button name 'nine' in 'mouse:nine'");
+    std::filesystem::remove(path);
+}
+
+} // namespace
+} // namespace e2d::input

@@ -1,0 +1,287 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/physics/joint.hpp>
+
+#include "solver_body.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+// Joints as the world stores them (one slot each, every type's fields in one struct) and the
+// solver passes over them. The passes mirror the contacts': prepare once per step, then per
+// sub-step warm start, solve with a soft position bias, relax without it (soft step), or warm
+// start and velocity iterations with the bias (classic). Each type's solve is in its own
+// joint_<type>.cpp.
+namespace e2d::physics::detail {
+
+// The rigid parts of every joint (a revolute's point, a limit reached, a prismatic's sideways
+// and angular constraints) are soft constraints of this stiffness and damping ratio at the
+// sub-step rate, as Box2D v3's.
+inline constexpr float kJointHertz = 60.0f;
+inline constexpr float kJointDampingRatio = 2.0f;
+
+// Laid out for the solver: what the per-sub-step passes read and write sits in the first two
+// cache lines (128 bytes), the definition and what prepareJoint() alone reads after them. A
+// big joint grid is bound by memory traffic, so this halves the lines each pass touches.
+struct alignas(64) Joint {
+    // --- hot: every pass (first cache line) ---
+    JointType type = JointType::Distance;
+    bool enableSpring = false;
+    bool enableLimit = false;
+    bool enableMotor = false;
+    int indexA = -1; // BodyState index this step, -1: static or asleep
+    int indexB = -1;
+    float invInertiaA = 0.0f;
+    float invInertiaB = 0.0f;
+    float angle0 = 0.0f; // joint angle at the step start
+    Vec2 invMassA{0.0f, 0.0f};
+    Vec2 invMassB{0.0f, 0.0f};
+    Vec2 anchorA{0.0f, 0.0f}; // from A's centre of mass, world axes, at the step start
+    Vec2 anchorB{0.0f, 0.0f};
+    Vec2 deltaCenter{0.0f, 0.0f}; // B's centre minus A's (mouse: minus the target)
+    Vec2 axisA{0.0f, 0.0f};       // world axes at the step start
+    // Accumulated impulses of the last (sub-)step: warm start and reaction force.
+    Vec2 linearImpulse{0.0f, 0.0f}; // point (revolute, weld, mouse, motor) or (perp, angle)
+    // --- hot, second cache line (to maxMotorForce; the rest of the line is read when a
+    // spring, a weld or a distance joint needs it) ---
+    float angularImpulse = 0.0f; // weld, motor
+    float springImpulse = 0.0f;  // distance: its rigid or spring impulse
+    float motorImpulse = 0.0f;
+    float lowerImpulse = 0.0f;
+    float upperImpulse = 0.0f;
+    float perpImpulse = 0.0f; // wheel
+    float axialMass = 0.0f;
+    float angularMass = 0.0f;
+    float lower = 0.0f; // limits: translations or angles
+    float upper = 0.0f;
+    float motorSpeed = 0.0f;
+    float maxMotorForce = 0.0f; // force or torque (mouse, motor: maxForce)
+    float hertz = 0.0f;         // spring (mouse: its pull; weld: linear)
+    float angularHertz = 0.0f;  // weld
+    float length = 1.0f;
+    float minLength = 0.0f;
+
+    // --- cold: the step's prepare, the definition, the lists ---
+    float maxLength = 0.0f;
+    float maxTorque = 0.0f; // motor joint
+    float correctionFactor = 0.0f;
+    Softness springSoftness{};
+    Softness angularSoftness{};
+    int bodyA = -1;
+    int bodyB = -1;
+    // Intrusive lists of each body's joints (side 0: through body A, side 1: through body B).
+    int prev[2] = {-1, -1};
+    int next[2] = {-1, -1};
+    std::uint64_t userData = 0;
+    std::uint16_t generation = 1;
+    bool alive = false;
+    bool collideConnected = false;
+    Vec2 localAnchorA{0.0f, 0.0f}; // from body A's origin, A's frame (motor: linearOffset)
+    Vec2 localAnchorB{0.0f, 0.0f};
+    Vec2 localAxisA{1.0f, 0.0f}; // unit
+    Vec2 target{0.0f, 0.0f};     // mouse
+    float referenceAngle = 0.0f; // motor: angularOffset
+    float dampingRatio = 0.0f;
+    float angularDampingRatio = 0.0f;
+    // The joint angle at the last prepare, followed through whole turns (revolute).
+    float angle = 0.0f;
+    Vec2 reactionForce{0.0f, 0.0f};
+    float reactionTorque = 0.0f;
+};
+static_assert(offsetof(Joint, maxMotorForce) + sizeof(float) <= 128, "the solver's fields fit two cache lines");
+
+// What a pass needs besides the joint and the bodies' states.
+struct JointStep {
+    float h = 0.0f; // the (sub-)step the velocities act over
+    float invH = 0.0f;
+    Softness jointSoftness{}; // the rigid parts' (kJointHertz) at h
+};
+
+// One side of a joint at the step start, as prepareJoint() reads it.
+struct JointBodyView {
+    Rot q{};
+    Vec2 center{0.0f, 0.0f};
+    Vec2 localCenter{0.0f, 0.0f};
+    Vec2 invMass{0.0f, 0.0f};
+    float invInertia = 0.0f;
+    int stateIndex = -1;
+};
+
+// The angle of rotation b relative to a, radians in [-pi, pi].
+inline float relativeAngle(Rot a, Rot b) { return invMulRot(a, b).angle(); }
+
+// x wrapped into [-pi, pi].
+inline float wrapAngle(float x) { return std::remainder(x, 6.28318530718f); }
+
+// Fills the step's fields (anchors, masses, softness) of an alive joint.
+void prepareJoint(Joint& j, const JointBodyView& a, const JointBodyView& b, const JointStep& step);
+void warmStartJoint(Joint& j, std::span<BodyState> states);
+// useBias: correct the position error of the rigid parts (solve) or not (relax).
+void solveJoint(Joint& j, std::span<BodyState> states, const JointStep& step, bool useBias);
+// reactionForce and reactionTorque from the accumulated impulses of the last (sub-)step.
+void storeJointReaction(Joint& j, std::span<const BodyState> states, float invH);
+
+// The passes over the joints joints[order[k]] in order.
+void warmStartJoints(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states);
+void solveJoints(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
+                 const JointStep& step, bool useBias);
+
+// Classic mode: one non-linear Gauss-Seidel pass over the rigid parts' position errors
+// (joint_position.cpp). True when every error was within the slops before the pass.
+bool solveJointPositions(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states);
+
+// Per-type passes (joint_<type>.cpp).
+void warmStartDistance(Joint& j, BodyState& a, BodyState& b);
+void solveDistance(Joint& j, BodyState& a, BodyState& b, const JointStep& step, bool useBias);
+void warmStartMotor(Joint& j, BodyState& a, BodyState& b);
+void solveMotor(Joint& j, BodyState& a, BodyState& b, const JointStep& step, bool useBias);
+void warmStartMouse(Joint& j, BodyState& a, BodyState& b);
+void solveMouse(Joint& j, BodyState& a, BodyState& b, const JointStep& step, bool useBias);
+void warmStartPrismatic(Joint& j, BodyState& a, BodyState& b);
+void solvePrismatic(Joint& j, BodyState& a, BodyState& b, const JointStep& step, bool useBias);
+void warmStartRevolute(Joint& j, BodyState& a, BodyState& b);
+void solveRevolute(Joint& j, BodyState& a, BodyState& b, const JointStep& step, bool useBias);
+void warmStartWeld(Joint& j, BodyState& a, BodyState& b);
+void solveWeld(Joint& j, BodyState& a, BodyState& b, const JointStep& step, bool useBias);
+void warmStartWheel(Joint& j, BodyState& a, BodyState& b);
+void solveWheel(Joint& j, BodyState& a, BodyState& b, const JointStep& step, bool useBias);
+
+// --- shared pieces of the per-type solves ---
+
+// The anchors' current offsets from the centres (rotated by the step's motion so far).
+struct JointFrame {
+    Vec2 rA;
+    Vec2 rB;
+    Vec2 d; // anchor B minus anchor A, world
+};
+inline JointFrame currentFrame(const Joint& j, const BodyState& a, const BodyState& b) {
+    Vec2 rA = rotate(a.deltaRotation, j.anchorA);
+    Vec2 rB = rotate(b.deltaRotation, j.anchorB);
+    return {rA, rB, (b.deltaPosition - a.deltaPosition) + j.deltaCenter + (rB - rA)};
+}
+
+// The joint angle now: at the step start plus the relative turn since.
+inline float currentAngle(const Joint& j, const BodyState& a, const BodyState& b) {
+    return j.angle0 + relativeAngle(a.deltaRotation, b.deltaRotation);
+}
+
+// Inverse mass along a unit axis with per-axis inverse masses.
+inline float axisMass(Vec2 invMass, Vec2 axis) {
+    return invMass.x * axis.x * axis.x + invMass.y * axis.y * axis.y;
+}
+
+// The point constraint's effective-mass matrix K (symmetric: k11, k12, k22).
+struct Mat22 {
+    float k11 = 0.0f;
+    float k12 = 0.0f;
+    float k22 = 0.0f;
+};
+inline Mat22 pointMatrix(const Joint& j, Vec2 rA, Vec2 rB) {
+    float iA = j.invInertiaA;
+    float iB = j.invInertiaB;
+    return {j.invMassA.x + j.invMassB.x + iA * rA.y * rA.y + iB * rB.y * rB.y,
+            -iA * rA.x * rA.y - iB * rB.x * rB.y,
+            j.invMassA.y + j.invMassB.y + iA * rA.x * rA.x + iB * rB.x * rB.x};
+}
+// K^-1 b (zero where K is singular).
+inline Vec2 solve22(const Mat22& k, Vec2 b) {
+    float det = k.k11 * k.k22 - k.k12 * k.k12;
+    if (det != 0.0f) {
+        det = 1.0f / det;
+    }
+    return {det * (k.k22 * b.x - k.k12 * b.y), det * (k.k11 * b.y - k.k12 * b.x)};
+}
+
+// Applies impulse p at the anchors (B gets +p, A gets -p) plus angular impulse l about them.
+inline void applyPointImpulse(const Joint& j, BodyState& a, BodyState& b, Vec2 rA, Vec2 rB, Vec2 p,
+                              float l = 0.0f) {
+    a.linearVelocity -= j.invMassA * p;
+    a.angularVelocity -= j.invInertiaA * (cross(rA, p) + l);
+    b.linearVelocity += j.invMassB * p;
+    b.angularVelocity += j.invInertiaB * (cross(rB, p) + l);
+}
+
+// Velocity of anchor B relative to anchor A.
+inline Vec2 relativeVelocity(const BodyState& a, const BodyState& b, Vec2 rA, Vec2 rB) {
+    return (b.linearVelocity + cross(b.angularVelocity, rB)) -
+           (a.linearVelocity + cross(a.angularVelocity, rA));
+}
+
+// One side of a one-sided limit along `Cdot`'s direction: C >= 0 is allowed. Returns the
+// impulse change applied (accumulated in `impulse`, kept >= 0). A limit not reached yet is
+// speculative: it only stops the bodies from passing it within this sub-step.
+inline float solveLimitRow(float& impulse, float mass, float C, float Cdot, const JointStep& step,
+                           bool useBias) {
+    float bias = 0.0f;
+    float massScale = 1.0f;
+    float impulseScale = 0.0f;
+    if (C > 0.0f) {
+        bias = C * step.invH;
+    } else if (useBias) {
+        bias = step.jointSoftness.biasRate * C;
+        massScale = step.jointSoftness.massScale;
+        impulseScale = step.jointSoftness.impulseScale;
+    }
+    float delta = -mass * massScale * (Cdot + bias) - impulseScale * impulse;
+    float next = std::max(impulse + delta, 0.0f);
+    delta = next - impulse;
+    impulse = next;
+    return delta;
+}
+
+// A motor row: drives Cdot to speed with at most maxImpulse accumulated.
+inline float solveMotorRow(float& impulse, float mass, float speed, float Cdot, float maxImpulse) {
+    float delta = mass * (speed - Cdot);
+    float next = std::clamp(impulse + delta, -maxImpulse, maxImpulse);
+    delta = next - impulse;
+    impulse = next;
+    return delta;
+}
+
+// A spring or rigid row (soft): impulse towards C = 0 with the given softness.
+inline float solveSoftRow(float& impulse, float mass, float C, float Cdot, const Softness& soft) {
+    float delta = -mass * soft.massScale * (Cdot + soft.biasRate * C) - soft.impulseScale * impulse;
+    impulse += delta;
+    return delta;
+}
+
+// The rigid parts' softness: with the bias while solving, none while relaxing.
+inline Softness rigidSoftness(const JointStep& step, bool useBias) {
+    return useBias ? step.jointSoftness : Softness{0.0f, 1.0f, 0.0f};
+}
+
+// A prismatic or wheel joint's axis (fixed in A) and its lever arms now: an impulse p along
+// the axis turns A by p * a1 and B by p * a2 (perp: s1, s2).
+struct SlideFrame {
+    JointFrame f;
+    Vec2 axis;
+    Vec2 perp;
+    float a1;
+    float a2;
+    float s1;
+    float s2;
+};
+inline SlideFrame currentSlide(const Joint& j, const BodyState& a, const BodyState& b) {
+    const JointFrame f = currentFrame(j, a, b);
+    const Vec2 axis = rotate(a.deltaRotation, j.axisA);
+    const Vec2 perp = leftPerp(axis);
+    const Vec2 arm = f.d + f.rA;
+    return {f, axis, perp, cross(arm, axis), cross(f.rB, axis), cross(arm, perp), cross(f.rB, perp)};
+}
+// Impulse p along `dir` with lever arms (l1, l2), plus angular impulse l on both.
+inline void applySlideImpulse(const Joint& j, BodyState& a, BodyState& b, Vec2 dir, float p, float l1,
+                              float l2, float l = 0.0f) {
+    a.linearVelocity -= j.invMassA * (p * dir);
+    a.angularVelocity -= j.invInertiaA * (p * l1 + l);
+    b.linearVelocity += j.invMassB * (p * dir);
+    b.angularVelocity += j.invInertiaB * (p * l2 + l);
+}
+inline float slideVelocity(const BodyState& a, const BodyState& b, Vec2 dir, float l1, float l2) {
+    return dot(dir, b.linearVelocity - a.linearVelocity) + l2 * b.angularVelocity - l1 * a.angularVelocity;
+}
+
+} // namespace e2d::physics::detail

@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: MIT
+// JointComponent: game objects with Rigidbodies connected without ids, in a real scene.
+#include <e2d/core/error.hpp>
+#include <e2d/core/game_object.hpp>
+#include <e2d/core/log.hpp>
+#include <e2d/core/scene.hpp>
+#include <e2d/core/scene_director.hpp>
+#include <e2d/core/scene_registry.hpp>
+#include <e2d/physics/collider.hpp>
+#include <e2d/physics/joint_component.hpp>
+#include <e2d/physics/physics_system.hpp>
+#include <e2d/physics/rigidbody.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace {
+
+using namespace e2d;
+using physics::Collider;
+using physics::JointComponent;
+using physics::JointComponentDef;
+using physics::PhysicsSystem;
+using physics::Rigidbody;
+
+constexpr double kStep = 1.0 / 60.0;
+
+class SetupScene : public core::Scene {
+public:
+    explicit SetupScene(std::function<void(core::Scene&)> setup) : setup_(std::move(setup)) {}
+
+protected:
+    void onInitialize() override { setup_(*this); }
+
+private:
+    std::function<void(core::Scene&)> setup_;
+};
+
+class JointComponentTest : public ::testing::Test {
+protected:
+    void start(std::function<void(core::Scene&)> setup) {
+        registry.add("Test", [setup] { return std::make_unique<SetupScene>(setup); });
+        director.addSystem(physics);
+        ASSERT_TRUE(director.start("Test"));
+    }
+    void frames(int n) {
+        for (int i = 0; i < n; ++i) {
+            director.applyPendingChange();
+            director.scene()->beginFrame();
+            physics.fixedUpdate(kStep);
+        }
+    }
+    core::GameObject& ball(core::Scene& s, glm::vec2 at, float radius = 0.25f) {
+        core::GameObject& o = s.createGameObject();
+        o.setPosition(at);
+        o.addComponent<Rigidbody>(physics);
+        o.addComponent<Collider>(physics, physics::Circle{{0.0f, 0.0f}, radius});
+        return o;
+    }
+
+    core::Logger logger{core::LogLevel::Off};
+    core::SceneRegistry registry;
+    core::SceneDirector director{registry, logger};
+    PhysicsSystem physics{};
+};
+
+// A ball hung from the world by a revolute joint 1 m above it: it stays 1 m from the pivot and
+// the joint carries its weight.
+TEST_F(JointComponentTest, BallHungFromTheWorldCarriesItsWeight) {
+    core::GameObject* bob = nullptr;
+    JointComponent* hinge = nullptr;
+    start([&](core::Scene& s) {
+        bob = &ball(s, {2.0f, 4.0f});
+        physics::RevoluteJointDef r;
+        r.localAnchorA = {2.0f, 5.0f}; // a world point: the anchor is at the origin
+        r.localAnchorB = {0.0f, 1.0f};
+        hinge = bob->addComponent<JointComponent>(physics, JointComponentDef{r, {}});
+    });
+    EXPECT_TRUE(hinge->isConnected()) << "made as the object entered the scene";
+    frames(60);
+    ASSERT_TRUE(hinge->isConnected());
+    EXPECT_EQ(physics.world().jointCount(), 1);
+    EXPECT_EQ(physics.world().jointBodyB(hinge->joint()), bob->getComponent<Rigidbody>()->body());
+    const float weight = bob->getComponent<Rigidbody>()->mass() * 10.0f;
+    EXPECT_NEAR(hinge->reactionForce().x, 0.0f, 0.01f * weight);
+    EXPECT_NEAR(hinge->reactionForce().y, weight, 0.01f * weight);
+    EXPECT_NEAR(bob->position().x, 2.0f, 1e-3f);
+    EXPECT_NEAR(bob->position().y, 4.0f, 5e-3f);
+    // Knocked sideways, it swings on its 1 m circle.
+    bob->getComponent<Rigidbody>()->applyLinearImpulse({bob->getComponent<Rigidbody>()->mass() * 2.0f, 0.0f});
+    frames(20);
+    const float r = std::hypot(bob->position().x - 2.0f, bob->position().y - 5.0f);
+    EXPECT_GT(bob->position().x, 2.2f);
+    EXPECT_NEAR(r, 1.0f, 5e-3f);
+}
+
+// Two balls on a rope (distance joint with a limit only): the lower one falls until the rope
+// is taut, then hangs the rope's length below the upper one, which hangs from the world.
+TEST_F(JointComponentTest, RopeBetweenTwoObjectsStopsAtItsLength) {
+    core::GameObject* top = nullptr;
+    core::GameObject* low = nullptr;
+    JointComponent* rope = nullptr;
+    start([&](core::Scene& s) {
+        top = &ball(s, {0.0f, 10.0f});
+        low = &ball(s, {0.0f, 9.5f});
+        physics::WeldJointDef weld;
+        weld.localAnchorA = {0.0f, 10.0f};
+        top->addComponent<JointComponent>(physics, JointComponentDef{weld, {}});
+        physics::DistanceJointDef d;
+        d.enableLimit = true;
+        d.minLength = 0.0f;
+        d.maxLength = 2.0f;
+        rope = low->addComponent<JointComponent>(physics, JointComponentDef{d, top->id()});
+    });
+    frames(120);
+    ASSERT_TRUE(rope->isConnected());
+    EXPECT_NEAR(top->position().y, 10.0f, 5e-3f);
+    EXPECT_NEAR(top->position().y - low->position().y, 2.0f, 0.01f);
+    EXPECT_NEAR(physics.world().jointValue(rope->joint()), 2.0f, 0.01f);
+    // Breaking it: the lower ball falls free.
+    rope->disconnect();
+    EXPECT_FALSE(rope->isConnected());
+    const float before = low->position().y;
+    frames(30);
+    // Half a second of free fall from rest: g t^2 / 2 = 1.25 m.
+    EXPECT_NEAR(before - low->position().y, 1.25f, 0.05f);
+    EXPECT_NEAR(top->position().y, 10.0f, 5e-3f);
+}
+
+// The joint goes with the connected object's Rigidbody, and with the component.
+TEST_F(JointComponentTest, JointGoesWithEitherRigidbodyOrTheComponent) {
+    core::GameObject* a = nullptr;
+    core::GameObject* b = nullptr;
+    JointComponent* joint = nullptr;
+    start([&](core::Scene& s) {
+        a = &ball(s, {0.0f, 0.0f});
+        b = &ball(s, {1.0f, 0.0f});
+        joint = b->addComponent<JointComponent>(physics, JointComponentDef{physics::RevoluteJointDef{}, a->id()});
+    });
+    frames(1);
+    ASSERT_TRUE(joint->isConnected());
+    a->removeComponent(a->getComponent<Rigidbody>());
+    frames(1);
+    EXPECT_FALSE(joint->isConnected());
+    EXPECT_EQ(physics.world().jointCount(), 0);
+    EXPECT_EQ(joint->reactionForce(), physics::Vec2(0.0f, 0.0f));
+
+    core::GameObject* c = nullptr;
+    JointComponent* second = nullptr;
+    director.scene()->createGameObject(); // unrelated
+    c = &ball(*director.scene(), {3.0f, 0.0f});
+    second = c->addComponent<JointComponent>(physics, JointComponentDef{physics::RevoluteJointDef{}, b->id()});
+    frames(1);
+    ASSERT_TRUE(second->isConnected());
+    c->removeComponent(second);
+    frames(1);
+    EXPECT_EQ(physics.world().jointCount(), 0);
+}
+
+TEST_F(JointComponentTest, BadDefsAndMissingRigidbodiesAreClearErrors) {
+    physics::RevoluteJointDef r;
+    r.lowerAngle = 1.0f;
+    r.upperAngle = -1.0f;
+    try {
+        JointComponent bad(physics, JointComponentDef{r, {}});
+        FAIL() << "no error";
+    } catch (const core::Error& e) {
+        EXPECT_STREQ(e.what(), "physics::JointComponent::JointComponent(): def.joint: revolute def.lowerAngle "
+                               "must be <= def.upperAngle, got 1 > -1");
+    }
+    core::GameObject* lonely = nullptr;
+    start([&](core::Scene& s) { lonely = &s.createGameObject(); });
+    lonely->addComponent<JointComponent>(physics);
+    try {
+        frames(1);
+        FAIL() << "no error";
+    } catch (const core::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("physics::JointComponent::onInitialize(): the object has no Rigidbody"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+} // namespace

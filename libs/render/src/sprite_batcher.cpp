@@ -1,0 +1,626 @@
+// SPDX-License-Identifier: MIT
+#include "sprite_batcher.hpp"
+
+#include "error_format.hpp"
+#include "half.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+namespace e2d::render::detail {
+
+namespace {
+
+constexpr const char* kCreate = "render::Renderer::createSprite()";
+
+void validate(const char* function, const SpriteDef& def) {
+    requireFinite(function, "position", def.position);
+    requireFinite(function, "z", def.z);
+    requireFinite(function, "scale", def.scale);
+    requireFinite(function, "rotation", def.rotation);
+    requireFinite(function, "pivot", def.pivot);
+    if (!isFinite(def.size) || def.size.x < 0.0f || def.size.y < 0.0f) {
+        fail(function, "size must be >= 0 and finite, got " + formatVec(def.size));
+    }
+    if (!isFinite(def.uv.min) || !isFinite(def.uv.size) || def.uv.size.x < 0.0f || def.uv.size.y < 0.0f ||
+        def.uv.min.x < 0.0f || def.uv.min.y < 0.0f || def.uv.max().x > 1.0f || def.uv.max().y > 1.0f) {
+        fail(function, "uv must lie in [0, 1] with size >= 0, got min " + formatVec(def.uv.min) + " size " +
+                           formatVec(def.uv.size));
+    }
+    if (!std::isfinite(def.parallax) || def.parallax < 0.0f) {
+        fail(function, "parallax must be >= 0 and finite, got " + formatFloat(def.parallax));
+    }
+}
+
+std::uint16_t unorm16(float v) { return static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 65535.0f)); }
+
+// Monotonic unsigned image of a float: a < b  <=>  bits(a) < bits(b).
+std::uint32_t orderedBits(float z) {
+    std::uint32_t bits = std::bit_cast<std::uint32_t>(z == 0.0f ? 0.0f : z);
+    return (bits & 0x80000000u) != 0u ? ~bits : bits | 0x80000000u;
+}
+
+glm::vec2 rotate(glm::vec2 v, float c, float s) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
+
+void packLook(Instance& out, const Rect& uv, bool flipX, bool flipY, Color tint) {
+    float u0 = uv.min.x;
+    float u1 = uv.min.x + uv.size.x;
+    float vTop = uv.min.y;
+    float vBottom = uv.min.y + uv.size.y;
+    if (flipX) {
+        std::swap(u0, u1);
+    }
+    if (flipY) {
+        std::swap(vTop, vBottom);
+    }
+    out.uv[0] = unorm16(u0);
+    out.uv[1] = unorm16(vTop);
+    out.uv[2] = unorm16(u1);
+    out.uv[3] = unorm16(vBottom);
+    out.tint[0] = tint.r;
+    out.tint[1] = tint.g;
+    out.tint[2] = tint.b;
+    out.tint[3] = tint.a;
+}
+
+void packEdges(Instance& out, glm::vec2 ex, glm::vec2 ey) {
+    out.edges[0] = toHalf(ex.x);
+    out.edges[1] = toHalf(ex.y);
+    out.edges[2] = toHalf(ey.x);
+    out.edges[3] = toHalf(ey.y);
+}
+
+// Bounds of the parallelogram origin + [0,1] ex + [0,1] ey.
+glm::vec4 boundsOf(glm::vec2 o, glm::vec2 ex, glm::vec2 ey) {
+    glm::vec2 lo = o + glm::min(ex, glm::vec2(0.0f)) + glm::min(ey, glm::vec2(0.0f));
+    glm::vec2 hi = o + glm::max(ex, glm::vec2(0.0f)) + glm::max(ey, glm::vec2(0.0f));
+    return {lo.x, lo.y, hi.x, hi.y};
+}
+
+bool outside(const glm::vec4& b, const ViewBounds& view) {
+    return b.z < view.min.x || b.x > view.max.x || b.w < view.min.y || b.y > view.max.y;
+}
+
+// World placement of a quad given in local units (world, or camera units for HUD).
+struct Placement {
+    glm::vec2 origin;
+    glm::vec2 ex;
+    glm::vec2 ey;
+};
+
+Placement place(glm::vec2 position, glm::vec2 pivotOffset, glm::vec2 ex, glm::vec2 ey, float parallax, bool hud,
+                const CameraState& camera) {
+    if (hud) {
+        // camera -> world: position + R(rotation) * v / zoom, applied to the whole quad.
+        float c = std::cos(camera.rotation) / camera.zoom;
+        float s = std::sin(camera.rotation) / camera.zoom;
+        return {camera.position + rotate(position + pivotOffset, c, s), rotate(ex, c, s), rotate(ey, c, s)};
+    }
+    glm::vec2 anchor = position;
+    if (parallax != 1.0f) {
+        anchor = camera.position + parallax * (position - camera.position);
+    }
+    return {anchor + pivotOffset, ex, ey};
+}
+
+} // namespace
+
+SpriteBatcher::SpriteBatcher(const std::vector<TextureFacts>& textures, std::uint32_t whiteSlot,
+                             std::uint32_t placeholderSlot)
+    : textures_(textures), whiteSlot_(whiteSlot), placeholderSlot_(placeholderSlot) {}
+
+SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function) {
+    return const_cast<Slot&>(static_cast<const SpriteBatcher&>(*this).slot(id, function));
+}
+
+const SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function) const {
+    if (!isValid(id)) {
+        fail(function, id.isNull() ? std::string("null sprite id")
+                                   : "stale sprite id (index " + std::to_string(id.index1 - 1) + ", generation " +
+                                         std::to_string(id.generation) + ")");
+    }
+    return slots_[id.index1 - 1];
+}
+
+bool SpriteBatcher::isValid(SpriteId id) const noexcept {
+    if (id.index1 == 0 || id.index1 > slots_.size()) {
+        return false;
+    }
+    const Slot& s = slots_[id.index1 - 1];
+    return s.alive && s.generation == id.generation;
+}
+
+void SpriteBatcher::resolveTexture(Slot& s) const {
+    TextureId id = s.def.texture;
+    if (id.isNull()) {
+        s.texture = whiteSlot_;
+    } else if (id.index1 <= textures_.size() && textures_[id.index1 - 1].generation == id.generation) {
+        s.texture = id.index1 - 1;
+    } else {
+        s.texture = placeholderSlot_;
+    }
+}
+
+bool SpriteBatcher::opaque(const Slot& s) const { return s.def.tint.a == 255 && !textures_[s.texture].translucent; }
+
+std::uint64_t SpriteBatcher::key(float z, std::uint32_t texture, bool isOpaque) const {
+    std::uint64_t zBits = orderedBits(z);
+    if (isOpaque) {
+        // Pass 0, by texture, then front to back (larger z first).
+        return (static_cast<std::uint64_t>(texture) << 32) | (~zBits & 0xffffffffu);
+    }
+    // Pass 1, back to front (smaller z first), then texture so equal z shares batches.
+    return (1ull << 63) | (zBits << 31) | (texture & 0x7fffffffu);
+}
+
+void SpriteBatcher::markDirty(std::uint32_t index, std::uint8_t bits) {
+    Slot& s = slots_[index];
+    if ((s.dirty & kQueued) == 0) {
+        dirtyList_.push_back(index);
+        s.dirty |= kQueued;
+    }
+    s.dirty |= bits;
+}
+
+SpriteId SpriteBatcher::create(const SpriteDef& def) {
+    validate(kCreate, def);
+    if (!def.texture.isNull() && !(def.texture.index1 <= textures_.size() &&
+                                   textures_[def.texture.index1 - 1].generation == def.texture.generation)) {
+        fail(kCreate, "stale texture id (index " + std::to_string(def.texture.index1 - 1) + ")");
+    }
+    std::uint32_t index;
+    if (!free_.empty()) {
+        index = free_.back();
+        free_.pop_back();
+    } else {
+        index = static_cast<std::uint32_t>(slots_.size());
+        slots_.emplace_back();
+        packed_.emplace_back();
+        bounds_.emplace_back();
+    }
+    Slot& s = slots_[index];
+    s.def = def;
+    s.alive = true;
+    s.dirty = 0;
+    resolveTexture(s);
+    ++alive_;
+    markDirty(index, kMoved | kShape | kLook);
+    orderDirty_ = true;
+    return SpriteId{index + 1, s.generation};
+}
+
+bool SpriteBatcher::destroy(SpriteId id) {
+    if (!isValid(id)) {
+        return false;
+    }
+    std::uint32_t index = id.index1 - 1;
+    Slot& s = slots_[index];
+    s.alive = false;
+    s.dirty = 0;
+    ++s.generation;
+    if (s.generation == 0) {
+        s.generation = 1;
+    }
+    free_.push_back(index);
+    --alive_;
+    orderDirty_ = true;
+    return true;
+}
+
+void SpriteBatcher::destroyAll() {
+    for (std::uint32_t i = 0; i < slots_.size(); ++i) {
+        if (slots_[i].alive) {
+            destroy(SpriteId{i + 1, slots_[i].generation});
+        }
+    }
+    dirtyList_.clear();
+}
+
+const SpriteDef& SpriteBatcher::def(SpriteId id, const char* function) const { return slot(id, function).def; }
+
+void SpriteBatcher::set(SpriteId id, const SpriteDef& def, const char* function) {
+    Slot& s = slot(id, function);
+    validate(function, def);
+    s.def = def;
+    resolveTexture(s);
+    markDirty(id.index1 - 1, kMoved | kShape | kLook);
+    orderDirty_ = true;
+}
+
+void SpriteBatcher::setPosition(SpriteId id, glm::vec2 position) {
+    constexpr const char* fn = "render::Renderer::setPosition()";
+    Slot& s = slot(id, fn);
+    requireFinite(fn, "position", position);
+    if (s.def.position != position) {
+        s.def.position = position;
+        markDirty(id.index1 - 1, kMoved);
+    }
+}
+
+void SpriteBatcher::setZ(SpriteId id, float z) {
+    constexpr const char* fn = "render::Renderer::setZ()";
+    Slot& s = slot(id, fn);
+    requireFinite(fn, "z", z);
+    if (s.def.z != z) {
+        s.def.z = z;
+        markDirty(id.index1 - 1, kMoved);
+        orderDirty_ = true;
+    }
+}
+
+void SpriteBatcher::setSize(SpriteId id, glm::vec2 size) {
+    constexpr const char* fn = "render::Renderer::setSize()";
+    Slot& s = slot(id, fn);
+    if (!isFinite(size) || size.x < 0.0f || size.y < 0.0f) {
+        fail(fn, "size must be >= 0 and finite, got " + formatVec(size));
+    }
+    if (s.def.size != size) {
+        s.def.size = size;
+        markDirty(id.index1 - 1, kShape);
+    }
+}
+
+void SpriteBatcher::setScale(SpriteId id, glm::vec2 scale) {
+    constexpr const char* fn = "render::Renderer::setScale()";
+    Slot& s = slot(id, fn);
+    requireFinite(fn, "scale", scale);
+    if (s.def.scale != scale) {
+        s.def.scale = scale;
+        markDirty(id.index1 - 1, kShape);
+    }
+}
+
+void SpriteBatcher::setRotation(SpriteId id, float radians) {
+    constexpr const char* fn = "render::Renderer::setRotation()";
+    Slot& s = slot(id, fn);
+    requireFinite(fn, "rotation", radians);
+    if (s.def.rotation != radians) {
+        s.def.rotation = radians;
+        markDirty(id.index1 - 1, kShape);
+    }
+}
+
+void SpriteBatcher::setPivot(SpriteId id, glm::vec2 pivot) {
+    constexpr const char* fn = "render::Renderer::setPivot()";
+    Slot& s = slot(id, fn);
+    requireFinite(fn, "pivot", pivot);
+    if (s.def.pivot != pivot) {
+        s.def.pivot = pivot;
+        markDirty(id.index1 - 1, kShape);
+    }
+}
+
+void SpriteBatcher::setTint(SpriteId id, Color tint) {
+    Slot& s = slot(id, "render::Renderer::setTint()");
+    if (s.def.tint != tint) {
+        if ((s.def.tint.a == 255) != (tint.a == 255)) {
+            orderDirty_ = true; // changes pass
+        }
+        s.def.tint = tint;
+        markDirty(id.index1 - 1, kLook);
+    }
+}
+
+void SpriteBatcher::setUv(SpriteId id, const Rect& uv) {
+    constexpr const char* fn = "render::Renderer::setUv()";
+    Slot& s = slot(id, fn);
+    SpriteDef def = s.def;
+    def.uv = uv;
+    validate(fn, def);
+    if (s.def.uv != uv) {
+        s.def.uv = uv;
+        // The automatic size follows the UV rectangle's extent.
+        markDirty(id.index1 - 1, s.def.size == glm::vec2(0.0f) ? kLook | kShape : kLook);
+    }
+}
+
+void SpriteBatcher::setFlip(SpriteId id, bool flipX, bool flipY) {
+    Slot& s = slot(id, "render::Renderer::setFlip()");
+    if (s.def.flipX != flipX || s.def.flipY != flipY) {
+        s.def.flipX = flipX;
+        s.def.flipY = flipY;
+        markDirty(id.index1 - 1, kLook);
+    }
+}
+
+void SpriteBatcher::setParallax(SpriteId id, float parallax) {
+    constexpr const char* fn = "render::Renderer::setParallax()";
+    Slot& s = slot(id, fn);
+    if (!std::isfinite(parallax) || parallax < 0.0f) {
+        fail(fn, "parallax must be >= 0 and finite, got " + formatFloat(parallax));
+    }
+    if (s.def.parallax != parallax) {
+        s.def.parallax = parallax;
+        markDirty(id.index1 - 1, kMoved);
+        orderDirty_ = true; // camera-dependent list
+    }
+}
+
+void SpriteBatcher::setHud(SpriteId id, bool hud) {
+    Slot& s = slot(id, "render::Renderer::setHud()");
+    if (s.def.hud != hud) {
+        s.def.hud = hud;
+        markDirty(id.index1 - 1, kMoved | kShape);
+        orderDirty_ = true;
+    }
+}
+
+void SpriteBatcher::setVisible(SpriteId id, bool visible) {
+    Slot& s = slot(id, "render::Renderer::setVisible()");
+    if (s.def.visible != visible) {
+        s.def.visible = visible;
+        orderDirty_ = true;
+    }
+}
+
+void SpriteBatcher::setTexture(SpriteId id, TextureId texture) {
+    constexpr const char* fn = "render::Renderer::setTexture()";
+    Slot& s = slot(id, fn);
+    if (!texture.isNull() &&
+        !(texture.index1 <= textures_.size() && textures_[texture.index1 - 1].generation == texture.generation)) {
+        fail(fn, "stale texture id (index " + std::to_string(texture.index1 - 1) + ")");
+    }
+    if (s.def.texture != texture) {
+        s.def.texture = texture;
+        resolveTexture(s);
+        markDirty(id.index1 - 1, kShape);
+        orderDirty_ = true;
+    }
+}
+
+void SpriteBatcher::setTransform(SpriteId id, glm::vec2 position, float z, float rotation, glm::vec2 scale) {
+    constexpr const char* fn = "render::Renderer::setTransform()";
+    Slot& s = slot(id, fn);
+    requireFinite(fn, "position", position);
+    requireFinite(fn, "z", z);
+    requireFinite(fn, "rotation", rotation);
+    requireFinite(fn, "scale", scale);
+    std::uint8_t bits = 0;
+    if (s.def.position != position || s.def.z != z) {
+        bits |= kMoved;
+    }
+    if (s.def.z != z) {
+        orderDirty_ = true;
+    }
+    if (s.def.rotation != rotation || s.def.scale != scale) {
+        bits |= kShape;
+    }
+    if (bits != 0) {
+        s.def.position = position;
+        s.def.z = z;
+        s.def.rotation = rotation;
+        s.def.scale = scale;
+        markDirty(id.index1 - 1, bits);
+    }
+}
+
+void SpriteBatcher::submit(const Quad& quad) {
+    constexpr const char* fn = "render::Renderer::submit()";
+    requireFinite(fn, "position", quad.position);
+    requireFinite(fn, "z", quad.z);
+    requireFinite(fn, "rotation", quad.rotation);
+    requireFinite(fn, "pivot", quad.pivot);
+    if (!isFinite(quad.size) || quad.size.x < 0.0f || quad.size.y < 0.0f) {
+        fail(fn, "size must be >= 0 and finite, got " + formatVec(quad.size));
+    }
+    if (!quad.texture.isNull() && !(quad.texture.index1 <= textures_.size() &&
+                                    textures_[quad.texture.index1 - 1].generation == quad.texture.generation)) {
+        fail(fn, "stale texture id (index " + std::to_string(quad.texture.index1 - 1) + ")");
+    }
+    Transient t{};
+    t.quad = quad;
+    quads_.push_back(t);
+}
+
+void SpriteBatcher::texturesChanged() {
+    allDirty_ = true;
+    orderDirty_ = true;
+}
+
+void SpriteBatcher::clearTransient() noexcept { quads_.clear(); }
+
+void SpriteBatcher::repack(std::uint32_t index, const CameraState& camera) {
+    Slot& s = slots_[index];
+    Instance& out = packed_[index];
+    const SpriteDef& d = s.def;
+    if ((s.dirty & kShape) != 0) {
+        glm::vec2 size = d.size;
+        if (size == glm::vec2(0.0f)) {
+            size = textures_[s.texture].size * d.uv.size;
+        }
+        glm::vec2 extent = size * d.scale;
+        float c = std::cos(d.rotation);
+        float sn = std::sin(d.rotation);
+        s.edgeX = glm::vec2(c, sn) * extent.x;
+        s.edgeY = glm::vec2(-sn, c) * extent.y;
+        s.pivotOffset = -(s.edgeX * d.pivot.x + s.edgeY * d.pivot.y);
+        if (!d.hud) {
+            packEdges(out, s.edgeX, s.edgeY);
+        }
+    }
+    if ((s.dirty & kLook) != 0) {
+        packLook(out, d.uv, d.flipX, d.flipY, d.tint);
+    }
+    Placement p = place(d.position, s.pivotOffset, s.edgeX, s.edgeY, d.parallax, d.hud, camera);
+    if (d.hud) {
+        packEdges(out, p.ex, p.ey);
+    }
+    out.x = p.origin.x;
+    out.y = p.origin.y;
+    out.z = d.z;
+    bounds_[index] = boundsOf(p.origin, p.ex, p.ey);
+    s.dirty = 0;
+}
+
+void SpriteBatcher::sortOrder() {
+    order_.clear();
+    cameraDependent_.clear();
+    for (std::uint32_t i = 0; i < slots_.size(); ++i) {
+        Slot& s = slots_[i];
+        if (!s.alive || !s.def.visible) {
+            continue;
+        }
+        order_.push_back(i);
+        if (s.def.hud || s.def.parallax != 1.0f) {
+            cameraDependent_.push_back(i);
+        }
+    }
+    std::vector<std::uint64_t> keys(slots_.size());
+    for (std::uint32_t i : order_) {
+        const Slot& s = slots_[i];
+        keys[i] = key(s.def.z, s.texture, opaque(s));
+    }
+    // Ties keep creation (slot) order, so equal keys draw the same way every frame.
+    std::sort(order_.begin(), order_.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return keys[a] != keys[b] ? keys[a] < keys[b] : a < b; });
+    orderKeys_.resize(order_.size());
+    orderTranslucent_.resize(order_.size());
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+        orderKeys_[k] = keys[order_[k]];
+        orderTranslucent_[k] = static_cast<std::uint8_t>(orderKeys_[k] >> 63);
+    }
+    orderDirty_ = false;
+}
+
+std::size_t SpriteBatcher::prepare(const CameraState& camera, const ViewBounds& view, bool& changed) {
+    changed = !emittedOnce_ || orderDirty_ || allDirty_ || !dirtyList_.empty() || !quads_.empty() ||
+              lastHadQuads_ || !(camera == camera_) || !(view == view_);
+    if (allDirty_) {
+        for (std::uint32_t i = 0; i < slots_.size(); ++i) {
+            if (slots_[i].alive) {
+                resolveTexture(slots_[i]);
+                markDirty(i, kMoved | kShape | kLook);
+            }
+        }
+        allDirty_ = false;
+    }
+    if (orderDirty_) {
+        sortOrder();
+    }
+    if (!(camera == camera_)) {
+        for (std::uint32_t i : cameraDependent_) {
+            markDirty(i, slots_[i].def.hud ? kMoved | kShape : kMoved);
+        }
+    }
+    camera_ = camera;
+    view_ = view;
+    rebuiltLast_ = static_cast<int>(dirtyList_.size());
+    for (std::uint32_t i : dirtyList_) {
+        if (slots_[i].alive) {
+            repack(i, camera);
+        } else {
+            slots_[i].dirty = 0;
+        }
+    }
+    dirtyList_.clear();
+
+    // Transient quads: packed and keyed every frame.
+    quadOrder_.resize(quads_.size());
+    for (std::uint32_t k = 0; k < quads_.size(); ++k) {
+        Transient& t = quads_[k];
+        const Quad& q = t.quad;
+        if (q.texture.isNull()) {
+            t.texture = whiteSlot_;
+        } else {
+            t.texture = q.texture.index1 <= textures_.size() &&
+                                textures_[q.texture.index1 - 1].generation == q.texture.generation
+                            ? q.texture.index1 - 1
+                            : placeholderSlot_;
+        }
+        float c = std::cos(q.rotation);
+        float sn = std::sin(q.rotation);
+        glm::vec2 ex = glm::vec2(c, sn) * q.size.x;
+        glm::vec2 ey = glm::vec2(-sn, c) * q.size.y;
+        glm::vec2 pivotOffset = -(ex * q.pivot.x + ey * q.pivot.y);
+        Placement p = place(q.position, pivotOffset, ex, ey, 1.0f, q.hud, camera);
+        t.instance.x = p.origin.x;
+        t.instance.y = p.origin.y;
+        t.instance.z = q.z;
+        packEdges(t.instance, p.ex, p.ey);
+        packLook(t.instance, q.uv, false, false, q.tint);
+        t.bounds = boundsOf(p.origin, p.ex, p.ey);
+        t.translucent = q.tint.a != 255 || textures_[t.texture].translucent;
+        t.key = key(q.z, t.texture, !t.translucent);
+        quadOrder_[k] = k;
+    }
+    std::sort(quadOrder_.begin(), quadOrder_.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return quads_[a].key != quads_[b].key ? quads_[a].key < quads_[b].key : a < b;
+    });
+    return order_.size() + quads_.size();
+}
+
+std::size_t SpriteBatcher::emit(Instance* dst, std::vector<Batch>& batches, BuildCounts& counts) {
+    batches.clear();
+    std::uint32_t n = 0;
+    int culled = 0;
+    std::uint32_t currentTexture = 0xffffffffu;
+    bool currentTranslucent = false;
+    const ViewBounds view = view_;
+    auto open = [&](std::uint32_t texture, bool translucent) {
+        if (texture != currentTexture || translucent != currentTranslucent || batches.empty()) {
+            if (!batches.empty()) {
+                batches.back().count = n - batches.back().first;
+            }
+            batches.push_back(Batch{n, 0, texture, translucent});
+            currentTexture = texture;
+            currentTranslucent = translucent;
+        }
+    };
+    const std::size_t sprites = order_.size();
+    if (quads_.empty()) {
+        for (std::size_t k = 0; k < sprites; ++k) {
+            std::uint32_t i = order_[k];
+            if (outside(bounds_[i], view)) {
+                ++culled;
+                continue;
+            }
+            std::uint32_t texture = slots_[i].texture;
+            bool translucent = orderTranslucent_[k] != 0;
+            if (texture != currentTexture || translucent != currentTranslucent) [[unlikely]] {
+                open(texture, translucent);
+            }
+            dst[n++] = packed_[i];
+        }
+    } else {
+        std::size_t k = 0;
+        std::size_t q = 0;
+        while (k < sprites || q < quadOrder_.size()) {
+            bool takeSprite = q == quadOrder_.size() ||
+                              (k < sprites && orderKeys_[k] <= quads_[quadOrder_[q]].key);
+            if (takeSprite) {
+                std::uint32_t i = order_[k];
+                bool translucent = orderTranslucent_[k] != 0;
+                ++k;
+                if (outside(bounds_[i], view)) {
+                    ++culled;
+                    continue;
+                }
+                open(slots_[i].texture, translucent);
+                dst[n++] = packed_[i];
+            } else {
+                const Transient& t = quads_[quadOrder_[q++]];
+                if (outside(t.bounds, view)) {
+                    ++culled;
+                    continue;
+                }
+                open(t.texture, t.translucent);
+                dst[n++] = t.instance;
+            }
+        }
+    }
+    if (!batches.empty()) {
+        batches.back().count = n - batches.back().first;
+    }
+    lastHadQuads_ = !quads_.empty();
+    quads_.clear();
+    emittedOnce_ = true;
+    counts.drawn = static_cast<int>(n);
+    counts.culled = culled;
+    counts.rebuilt = rebuiltLast_;
+    return n;
+}
+
+} // namespace e2d::render::detail

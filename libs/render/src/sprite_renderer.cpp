@@ -1,0 +1,179 @@
+// SPDX-License-Identifier: MIT
+#include <e2d/render/sprite_renderer.hpp>
+
+#include <e2d/core/game_object.hpp>
+#include <e2d/core/scene.hpp>
+#include <e2d/render/render_system.hpp>
+
+#include "error_format.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace e2d::render {
+
+namespace {
+
+constexpr const char* kCtor = "render::SpriteRenderer";
+
+SpriteDef toSpriteDef(const SpriteRendererDef& def, TextureId texture) {
+    SpriteDef s;
+    s.texture = texture;
+    s.size = def.size;
+    s.pivot = def.pivot;
+    s.tint = def.tint;
+    s.uv = def.uv;
+    s.flipX = def.flipX;
+    s.flipY = def.flipY;
+    s.parallax = def.parallax;
+    s.hud = def.hud;
+    s.visible = def.visible;
+    return s;
+}
+
+// Position, z, rotation and scale of the object's world transform (parent chain included).
+struct WorldPose {
+    glm::vec2 position;
+    float z;
+    float rotation;
+    glm::vec2 scale;
+};
+
+WorldPose worldPose(const core::GameObject& object) {
+    const glm::mat4& m = object.worldTransform();
+    glm::vec2 xAxis(m[0][0], m[0][1]);
+    glm::vec2 yAxis(m[1][0], m[1][1]);
+    float sx = glm::length(xAxis);
+    float sy = glm::length(yAxis);
+    // A mirrored transform keeps its x axis' direction (worldOrientation()) and flips y.
+    if (xAxis.x * yAxis.y - xAxis.y * yAxis.x < 0.0f) {
+        sy = -sy;
+    }
+    return {glm::vec2(m[3][0], m[3][1]), m[3][2], object.worldOrientation(), {sx, sy}};
+}
+
+} // namespace
+
+SpriteRenderer::SpriteRenderer(const SpriteRendererDef& def) : def_(def) {
+    // The same checks as the sprite's, before any renderer is involved.
+    detail::requireFinite(kCtor, "pivot", def.pivot);
+    detail::requireFinite(kCtor, "zOffset", def.zOffset);
+    if (!detail::isFinite(def.size) || def.size.x < 0.0f || def.size.y < 0.0f) {
+        detail::fail(kCtor, "size must be >= 0 and finite, got " + detail::formatVec(def.size));
+    }
+    if (!std::isfinite(def.parallax) || def.parallax < 0.0f) {
+        detail::fail(kCtor, "parallax must be >= 0 and finite, got " + detail::formatFloat(def.parallax));
+    }
+}
+
+SpriteRenderer::~SpriteRenderer() {
+    if (system_ != nullptr) {
+        system_->renderer().destroySprite(sprite_);
+        system_->remove(*this);
+    }
+}
+
+void SpriteRenderer::onInitialize() {
+    system_ = &scene()->system<RenderSystem>();
+    Renderer& renderer = system_->renderer();
+    TextureId texture = def_.texture;
+    if (!def_.texturePath.empty()) {
+        texture = renderer.loadTexture(def_.texturePath, def_.textureDef);
+    }
+    WorldPose pose = worldPose(*gameObject());
+    SpriteDef sprite = toSpriteDef(def_, texture);
+    sprite.position = pose.position;
+    sprite.z = pose.z + def_.zOffset;
+    sprite.rotation = pose.rotation;
+    sprite.scale = pose.scale;
+    sprite_ = renderer.createSprite(sprite);
+    system_->add(*this);
+}
+
+void SpriteRenderer::onTerminate() {
+    if (system_ != nullptr) {
+        system_->renderer().destroySprite(sprite_);
+        system_->remove(*this);
+    }
+    system_ = nullptr;
+    sprite_ = {};
+}
+
+void SpriteRenderer::syncTransform() {
+    if (system_ == nullptr) {
+        return;
+    }
+    WorldPose pose = worldPose(*gameObject());
+    system_->renderer().setTransform(sprite_, pose.position, pose.z + def_.zOffset, pose.rotation, pose.scale);
+}
+
+void SpriteRenderer::setTint(Color tint) {
+    def_.tint = tint;
+    if (system_ != nullptr) {
+        system_->renderer().setTint(sprite_, tint);
+    }
+}
+
+void SpriteRenderer::setUv(const Rect& uv) {
+    if (system_ != nullptr) {
+        system_->renderer().setUv(sprite_, uv);
+    }
+    def_.uv = uv;
+}
+
+void SpriteRenderer::setFlip(bool flipX, bool flipY) {
+    def_.flipX = flipX;
+    def_.flipY = flipY;
+    if (system_ != nullptr) {
+        system_->renderer().setFlip(sprite_, flipX, flipY);
+    }
+}
+
+void SpriteRenderer::setVisible(bool visible) {
+    def_.visible = visible;
+    if (system_ != nullptr) {
+        system_->renderer().setVisible(sprite_, visible);
+    }
+}
+
+void SpriteRenderer::setTexture(TextureId texture) {
+    if (system_ != nullptr) {
+        system_->renderer().setTexture(sprite_, texture);
+    }
+    def_.texture = texture;
+    def_.texturePath.clear();
+}
+
+CameraComponent::CameraComponent(const CameraComponentDef& def)
+    : camera_(CameraDef{{0.0f, 0.0f}, 0.0f, def.zoom, def.referenceSize, def.fit}) {}
+
+CameraComponent::~CameraComponent() {
+    if (system_ != nullptr) {
+        system_->remove(*this);
+    }
+}
+
+void CameraComponent::onInitialize() {
+    system_ = &scene()->system<RenderSystem>();
+    system_->add(*this);
+    syncTransform();
+}
+
+void CameraComponent::onTerminate() {
+    if (system_ != nullptr) {
+        system_->remove(*this);
+    }
+    system_ = nullptr;
+}
+
+void CameraComponent::syncTransform() {
+    if (gameObject() == nullptr) {
+        return;
+    }
+    glm::vec3 position = gameObject()->worldPosition();
+    camera_.setPosition({position.x, position.y});
+    camera_.setRotation(gameObject()->worldOrientation());
+}
+
+} // namespace e2d::render

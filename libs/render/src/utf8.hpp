@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstddef>
+#include <string_view>
+
+namespace e2d::render::detail {
+
+/// Replacement for every ill-formed sequence.
+inline constexpr char32_t kReplacementCharacter = 0xFFFD;
+
+/// Decodes the code point starting at `text[pos]` and moves `pos` past it. An ill-formed
+/// sequence (stray continuation byte, truncated sequence, overlong form, surrogate, value above
+/// U+10FFFF, bytes F5..FF) gives U+FFFD and consumes its maximal valid prefix, at least one byte
+/// (Unicode's "maximal subpart" practice), so decoding always moves on. `pos` < text.size().
+char32_t decodeUtf8(std::string_view text, std::size_t& pos) noexcept;
+
+} // namespace e2d::render::detail
