@@ -9,6 +9,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace e2d::validation {
@@ -37,6 +38,9 @@ public:
     virtual void readBodies(std::vector<BodyState>& out) const = 0;
     /// The deepest overlap among the current contacts, metres, >= 0, as the engine measures it.
     [[nodiscard]] virtual float maxPenetration() const = 0;
+    /// Fills `out` (resized to the scene's joint count) with each joint's two anchors in world
+    /// coordinates, metres, in SceneDesc::joints order.
+    virtual void readJointAnchors(std::vector<std::pair<glm::vec2, glm::vec2>>& out) const = 0;
 };
 
 /// The forces and impulses a scene applies over time (BodyDesc::force, BodyDesc::impulses),

@@ -61,6 +61,15 @@ public:
         }
     }
 
+    void readJointAnchors(std::vector<std::pair<glm::vec2, glm::vec2>>& out) const override {
+        out.resize(scene_.joints.size());
+        for (std::size_t i = 0; i < scene_.joints.size(); ++i) {
+            const b2Vec2 a = scene_.joints[i]->GetAnchorA();
+            const b2Vec2 b = scene_.joints[i]->GetAnchorB();
+            out[i] = {{a.x, a.y}, {b.x, b.y}};
+        }
+    }
+
     [[nodiscard]] float maxPenetration() const override {
         // Box2D's separations are between the skinned shapes (polygons and edges grow by
         // b2_polygonRadius); the skin is not part of the scene, so it is added back to measure

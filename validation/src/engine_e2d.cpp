@@ -74,6 +74,13 @@ public:
         }
     }
 
+    void readJointAnchors(std::vector<std::pair<glm::vec2, glm::vec2>>& out) const override {
+        out.resize(scene_.joints.size());
+        for (std::size_t i = 0; i < scene_.joints.size(); ++i) {
+            out[i] = {world_.jointAnchorA(scene_.joints[i]), world_.jointAnchorB(scene_.joints[i])};
+        }
+    }
+
     [[nodiscard]] float maxPenetration() const override {
         float deepest = 0.0f;
         world_.forEachTouchingContact([&](const ph::ContactData& c) {

@@ -115,7 +115,9 @@ int firstNonFinite(const Check& c, const Recording& rec, const std::vector<Sampl
             (c.kind == CheckKind::MaxSpeed && !std::isfinite(rec.maxSpeed[i])) ||
             (c.kind == CheckKind::MaxPenetration && !std::isfinite(rec.penetration[i])) ||
             (c.kind == CheckKind::Momentum && !finite(rec.momentum[i])) ||
-            (c.kind == CheckKind::KineticEnergy && !std::isfinite(rec.kineticEnergy[i]));
+            (c.kind == CheckKind::KineticEnergy && !std::isfinite(rec.kineticEnergy[i])) ||
+            (c.kind == CheckKind::JointError && i < rec.jointError.size() &&
+             !std::isfinite(rec.jointError[i]));
         if (bad) {
             return k;
         }
@@ -136,6 +138,20 @@ std::vector<double> turns(const std::vector<Sample>& s) {
             total += d;
         }
         out.push_back(total);
+    }
+    return out;
+}
+
+// The times at which the body's x velocity turns from negative to non-negative (its leftmost
+// points), interpolated between instants: one per period of a swing.
+std::vector<double> leftTurns(const std::vector<Sample>& s, float dt) {
+    std::vector<double> out;
+    for (std::size_t k = 1; k < s.size(); ++k) {
+        const double v0 = s[k - 1].velocity.x;
+        const double v1 = s[k].velocity.x;
+        if (v0 < 0.0 && v1 >= 0.0) {
+            out.push_back((double(k - 1) + v0 / (v0 - v1)) * dt);
+        }
     }
     return out;
 }
@@ -390,6 +406,38 @@ CheckResult evaluateOn(const Check& c, const Recording& rec, float gravity, cons
         }
         break;
     }
+    case CheckKind::JointError: {
+        r.quantity = "largest joint error over the run, m";
+        float worst = 0.0f;
+        for (float e : rec.jointError) {
+            worst = std::max(worst, e);
+        }
+        r.expected = c.limit;
+        r.measured = worst;
+        r.tolerance = c.limit;
+        r.error = worst;
+        r.passed = !rec.jointError.empty() && worst <= c.limit;
+        r.detail = rec.jointError.empty() ? "no joint measured" : "";
+        break;
+    }
+    case CheckKind::Period: {
+        r.quantity = "mean period of the swing, s";
+        r.expected = c.period;
+        r.tolerance = c.tolerance;
+        const std::vector<double> t = leftTurns(s, rec.timeStep);
+        if (t.size() < 2) {
+            r.measured = 0.0;
+            r.error = c.period;
+            r.passed = false;
+            r.detail = "fewer than two swings";
+            break;
+        }
+        r.measured = (t.back() - t.front()) / double(t.size() - 1);
+        r.error = std::abs(r.measured - c.period);
+        r.passed = r.error <= c.tolerance;
+        r.detail = std::to_string(t.size() - 1) + " periods";
+        break;
+    }
     case CheckKind::Moves: {
         r.quantity = c.direction == glm::vec2(0.0f) ? "distance from the start, m"
                                                    : "distance from the start along the direction, m";
@@ -408,11 +456,21 @@ CheckResult evaluateOn(const Check& c, const Recording& rec, float gravity, cons
 
 Series seriesFor(const Check& c, const Recording& rec, float gravity, int stride) {
     Series out;
+    stride = std::max(stride, 1);
+    if (c.kind == CheckKind::JointError) {
+        out.name = "largest joint error; dashed: limit";
+        out.unit = std::string("m");
+        for (std::size_t k = 0; k < rec.jointError.size(); k += std::size_t(stride)) {
+            out.t.push_back(rec.time(static_cast<int>(k)));
+            out.measured.push_back(rec.jointError[k]);
+            out.expected.push_back(c.limit);
+        }
+        return out;
+    }
     const std::vector<Sample>& s = track(rec, c.body);
     if (s.empty()) {
         return out;
     }
-    stride = std::max(stride, 1);
     auto sample = [&](auto&& measured, auto&& expected) {
         for (int k = 0; k < static_cast<int>(s.size()); k += stride) {
             out.t.push_back(rec.time(k));
@@ -474,6 +532,23 @@ Series seriesFor(const Check& c, const Recording& rec, float gravity, int stride
         const double bound = c.maxTurn ? *c.maxTurn : c.minTurn.value_or(0.0f);
         sample([&](int k) { return std::abs(turn[static_cast<std::size_t>(k)]); },
                [&](int) { return bound; });
+        break;
+    }
+    case CheckKind::JointError:
+        break;
+    case CheckKind::Period: {
+        out.name = "x of " + c.body + " about its mean; dashed: the same swing at the expected period";
+        out.unit = std::string("m");
+        double mean = 0.0;
+        for (const Sample& x : s) {
+            mean += x.position.x;
+        }
+        mean /= double(s.size());
+        const double amplitude = double(s.front().position.x) - mean;
+        sample([&](int k) { return double(s[static_cast<std::size_t>(k)].position.x) - mean; },
+               [&](int k) {
+                   return amplitude * std::cos(2.0 * std::numbers::pi * rec.time(k) / c.period);
+               });
         break;
     }
     case CheckKind::Moves:

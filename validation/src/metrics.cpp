@@ -28,6 +28,15 @@ Recorder::Recorder(const scenes::SceneDesc& scene, float settle) {
             more.emplace_back();
         }
     }
+    for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+        const scenes::JointDesc& j = scene.joints[i];
+        if (j.kind == scenes::JointKind::Revolute || j.kind == scenes::JointKind::Weld) {
+            joints_.push_back({i, -1.0f});
+        } else if (j.kind == scenes::JointKind::Distance && !j.enableSpring && !j.enableLimit) {
+            const glm::vec2 d = j.anchorB - j.anchorA;
+            joints_.push_back({i, j.length > 0.0f ? j.length : std::sqrt(d.x * d.x + d.y * d.y)});
+        }
+    }
 }
 
 void Recorder::record(const Engine& engine, double stepMs) {
@@ -53,6 +62,19 @@ void Recorder::record(const Engine& engine, double stepMs) {
     rec_.maxSpeed.push_back(fastest);
     rec_.penetration.push_back(engine.maxPenetration());
     rec_.allAsleep.push_back(asleep);
+    if (!joints_.empty()) {
+        engine.readJointAnchors(anchors_);
+        float worst = 0.0f;
+        for (const MeasuredJoint& j : joints_) {
+            const auto& [a, b] = anchors_[j.index];
+            const glm::vec2 d = b - a;
+            const float gap = std::sqrt(d.x * d.x + d.y * d.y);
+            const float error = j.rest < 0.0f ? gap : std::abs(gap - j.rest);
+            // As for speeds: a NaN must reach the check.
+            worst = std::isfinite(worst) && !(error <= worst) ? error : worst;
+        }
+        rec_.jointError.push_back(worst);
+    }
     if (rec_.kineticEnergy.size() > 1) {
         rec_.stepMs.push_back(stepMs);
     }

@@ -32,6 +32,10 @@ struct Recording {
     std::vector<float> kineticEnergy;                  ///< J, dynamic bodies
     std::vector<glm::vec2> momentum;                   ///< kg m/s, dynamic bodies
     std::vector<float> maxSpeed;                       ///< m/s, fastest dynamic body
+    /// m, per instant: the largest joint error, over the revolute and weld joints the distance
+    /// between their two anchors, over rigid distance joints |length - rest length|; empty when
+    /// the scene has none of these.
+    std::vector<float> jointError;
     std::vector<float> penetration;                    ///< m, deepest contact
     std::vector<bool> allAsleep;                       ///< every dynamic body asleep
     std::vector<double> stepMs;                        ///< wall time of each step
@@ -59,6 +63,12 @@ private:
     };
     std::vector<Tagged> tags_;
     std::vector<BodyState> states_;
+    struct MeasuredJoint {
+        std::size_t index; // in SceneDesc::joints
+        float rest;        // rigid distance joint: the length it holds; < 0: a point joint
+    };
+    std::vector<MeasuredJoint> joints_;
+    std::vector<std::pair<glm::vec2, glm::vec2>> anchors_;
     Recording rec_;
 };
 

@@ -66,6 +66,8 @@ enum class CheckKind {
                        ///< at most maxTurn at every instant (a domino falls, a box stays level)
     Moves,             ///< tagged body ends at least `distance` from its start, along
                        ///< `direction` if given (a body must fall, a pushed box must move)
+    JointError,        ///< largest joint error over the run (Recording::jointError) <= limit
+    Period,            ///< tagged body's mean period of oscillation in x vs `period`
 };
 
 struct Check {
@@ -89,6 +91,7 @@ struct Check {
     std::optional<float> maxTurn;  ///< Turn: radians, |rotation| never above this
     float distance = 0.0f;         ///< Moves: metres
     glm::vec2 direction{0.0f};     ///< Moves: unit vector, or zero for any direction
+    float period = 0.0f;           ///< Period: seconds
 };
 
 /// One scene, what it measures and how it is judged.

@@ -485,6 +485,8 @@ constexpr CheckName kCheckNames[] = {
     {"sleep", CheckKind::Sleep},
     {"turn", CheckKind::Turn},
     {"moves", CheckKind::Moves},
+    {"jointError", CheckKind::JointError},
+    {"period", CheckKind::Period},
 };
 
 Check parseCheck(const json& value, const std::string& path, const Scenario& scenario) {
@@ -502,7 +504,7 @@ Check parseCheck(const json& value, const std::string& path, const Scenario& sce
     }
     const bool needsBody = c.kind != CheckKind::MaxPenetration && c.kind != CheckKind::MaxSpeed &&
                            c.kind != CheckKind::Momentum && c.kind != CheckKind::KineticEnergy &&
-                           c.kind != CheckKind::Sleep;
+                           c.kind != CheckKind::Sleep && c.kind != CheckKind::JointError;
     if (needsBody) {
         if (!o.has("body")) {
             fail(o.at("body"), "required field is missing (the tag of the body to check)");
@@ -603,6 +605,24 @@ Check parseCheck(const json& value, const std::string& path, const Scenario& sce
         }
         break;
     }
+    case CheckKind::JointError: {
+        c.limit = positive("limit");
+        const bool measured = std::any_of(scenario.scene.joints.begin(), scenario.scene.joints.end(),
+                                          [](const scenes::JointDesc& j) {
+                                              return j.kind == scenes::JointKind::Revolute ||
+                                                     j.kind == scenes::JointKind::Weld ||
+                                                     (j.kind == scenes::JointKind::Distance &&
+                                                      !j.enableSpring && !j.enableLimit);
+                                          });
+        if (!measured) {
+            fail(o.at("type"), "the scene has no joint this check measures (revolute, weld or rigid distance)");
+        }
+        break;
+    }
+    case CheckKind::Period:
+        c.period = positive("period");
+        tolerance();
+        break;
     case CheckKind::Moves: {
         c.distance = positive("distance");
         if (const json* direction = o.get("direction")) {
@@ -757,6 +777,151 @@ private:
 
 } // namespace
 
+// A joint's body: an index into the file's `bodies` array (after the generators' bodies in the
+// scene), or a tag that exactly one body carries.
+int jointBody(Object& o, const std::string& key, const scenes::SceneDesc& scene, std::size_t generated) {
+    const json& v = o.require(key);
+    if (v.is_string()) {
+        const std::string tag = v.get<std::string>();
+        int found = -1;
+        int count = 0;
+        std::vector<std::string> tags;
+        for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+            if (scene.bodies[i].tag == tag) {
+                found = static_cast<int>(i);
+                ++count;
+            }
+            if (!scene.bodies[i].tag.empty()) {
+                tags.push_back(scene.bodies[i].tag);
+            }
+        }
+        if (count == 0) {
+            fail(o.at(key), "no body has tag \"" + tag + "\"" + suggestion(tag, tags));
+        }
+        if (count > 1) {
+            fail(o.at(key), std::to_string(count) + " bodies have tag \"" + tag +
+                                "\"; name one by its index in bodies");
+        }
+        return found;
+    }
+    const std::size_t own = scene.bodies.size() - generated;
+    if (own == 0) {
+        fail(o.at(key), "the file has no bodies to join by index (generators' bodies are named by tag)");
+    }
+    const int index = o.integer(key, 0, 0, static_cast<int>(own) - 1);
+    return static_cast<int>(generated) + index;
+}
+
+scenes::JointDesc parseJoint(const json& value, const std::string& path, const scenes::SceneDesc& scene,
+                             std::size_t generated) {
+    Object o(value, path);
+    scenes::JointDesc j;
+    const std::string type = o.choice("type", {"revolute", "distance", "prismatic", "weld"});
+    j.kind = type == "revolute"    ? scenes::JointKind::Revolute
+             : type == "distance"  ? scenes::JointKind::Distance
+             : type == "prismatic" ? scenes::JointKind::Prismatic
+                                   : scenes::JointKind::Weld;
+    j.bodyA = jointBody(o, "bodyA", scene, generated);
+    j.bodyB = jointBody(o, "bodyB", scene, generated);
+    if (j.bodyA == j.bodyB) {
+        fail(o.at("bodyB"), "must differ from bodyA (both are body " + std::to_string(j.bodyA) + ")");
+    }
+    if (scene.bodies[std::size_t(j.bodyA)].kind != scenes::BodyKind::Dynamic &&
+        scene.bodies[std::size_t(j.bodyB)].kind != scenes::BodyKind::Dynamic) {
+        fail(o.at("bodyB"), "one of the two bodies must be dynamic");
+    }
+    j.collideConnected = o.boolean("collideConnected", false);
+    auto point = [&](const char* key) {
+        const glm::vec2 p = Object::toVec2(o.require(key), o.at(key));
+        Object::checkWithinE2d(p, o.at(key));
+        return p;
+    };
+    // Both ends of a range or neither; lower <= upper.
+    auto range = [&](const std::string& lowKey, const std::string& highKey, bool angle) {
+        const bool low = o.has(lowKey) || (angle && o.has(lowKey + "Deg"));
+        const bool high = o.has(highKey) || (angle && o.has(highKey + "Deg"));
+        if (low != high) {
+            fail(o.at(low ? highKey : lowKey), "required field is missing (a limit needs " + lowKey +
+                                                   " and " + highKey + ")");
+        }
+        if (!low) {
+            return;
+        }
+        j.enableLimit = true;
+        j.lower = angle ? o.angle(lowKey, 0.0f) : o.requireNumber(lowKey);
+        j.upper = angle ? o.angle(highKey, 0.0f) : o.requireNumber(highKey);
+        Object::checkWithinE2d(j.lower, o.at(lowKey));
+        Object::checkWithinE2d(j.upper, o.at(highKey));
+        if (!(j.lower <= j.upper)) {
+            fail(o.at(highKey), "must be >= " + lowKey + " (" + show(j.lower) + "), got " + show(j.upper));
+        }
+    };
+    auto motor = [&](const char* maxKey) {
+        if (!o.has(maxKey)) {
+            if (o.has("motorSpeed")) {
+                fail(o.at(maxKey), std::string("required field is missing (a motor needs motorSpeed and ") +
+                                       maxKey + ")");
+            }
+            return;
+        }
+        j.enableMotor = true;
+        j.maxMotor = o.numberAbove(maxKey, 0.0f, 0.0f, false);
+        j.motorSpeed = o.number("motorSpeed", 0.0f);
+        Object::checkWithinE2d(j.maxMotor, o.at(maxKey));
+        Object::checkWithinE2d(j.motorSpeed, o.at("motorSpeed"));
+    };
+    switch (j.kind) {
+    case scenes::JointKind::Revolute:
+        j.anchorA = point("anchor");
+        range("lowerAngle", "upperAngle", true);
+        motor("maxMotorTorque");
+        break;
+    case scenes::JointKind::Prismatic: {
+        j.anchorA = point("anchor");
+        const glm::vec2 axis = o.vec2("axis", {1.0f, 0.0f});
+        const float length = std::sqrt(axis.x * axis.x + axis.y * axis.y);
+        if (!(length > 1.0e-6f)) {
+            fail(o.at("axis"), "must not be [0, 0]");
+        }
+        j.axis = axis / length;
+        range("lowerTranslation", "upperTranslation", false);
+        motor("maxMotorForce");
+        break;
+    }
+    case scenes::JointKind::Weld:
+        j.anchorA = point("anchor");
+        break;
+    case scenes::JointKind::Distance: {
+        j.anchorA = point("anchorA");
+        j.anchorB = point("anchorB");
+        const glm::vec2 d = j.anchorB - j.anchorA;
+        j.length = o.numberAbove("length", std::sqrt(d.x * d.x + d.y * d.y), 0.0f, false);
+        Object::checkWithinE2d(j.length, o.at("length"));
+        // e2d and Box2D both hold lengths below the linear slop at the slop.
+        if (j.length < physics::kLinearSlop) {
+            fail(o.at(o.has("length") ? "length" : "anchorB"),
+                 "the length must be at least physics::kLinearSlop (" + show(physics::kLinearSlop) +
+                     " m), got " + show(j.length));
+        }
+        range("minLength", "maxLength", false);
+        if (j.enableLimit && j.lower < 0.0f) {
+            fail(o.at("minLength"), "must be >= 0, got " + show(j.lower));
+        }
+        if (o.has("hertz")) {
+            j.enableSpring = true;
+            j.hertz = o.numberAbove("hertz", 0.0f, 0.0f, true);
+            j.dampingRatio = o.numberAbove("dampingRatio", 0.0f, 0.0f, false);
+            if (j.hertz > 1000.0f || j.dampingRatio > 1000.0f) {
+                fail(o.at(j.hertz > 1000.0f ? "hertz" : "dampingRatio"), "must be <= 1000");
+            }
+        }
+        break;
+    }
+    }
+    o.finish();
+    return j;
+}
+
 Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     json document;
     try {
@@ -808,6 +973,7 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
             parseGenerator((*generators)[i], indexed("generators", i), s.scene);
         }
     }
+    const std::size_t generated = s.scene.bodies.size();
     if (const json* bodies = root.get("bodies")) {
         requireArray(*bodies, "bodies");
         for (std::size_t i = 0; i < bodies->size(); ++i) {
@@ -816,6 +982,12 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     }
     if (s.scene.bodies.empty()) {
         fail("bodies", "the scene has no bodies (give bodies or generators)");
+    }
+    if (const json* joints = root.get("joints")) {
+        requireArray(*joints, "joints");
+        for (std::size_t i = 0; i < joints->size(); ++i) {
+            s.scene.joints.push_back(parseJoint((*joints)[i], indexed("joints", i), s.scene, generated));
+        }
     }
     if (const json* checks = root.get("checks")) {
         requireArray(*checks, "checks");

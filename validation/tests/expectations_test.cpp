@@ -276,6 +276,54 @@ TEST(Evaluate, TheWorstBodyWithATagSpeaksForTheCheck) {
     EXPECT_EQ(r.detail.rfind("worst of 3 bodies tagged domino: body 2", 0), 0u) << r.detail;
 }
 
+// x = A cos(2 pi t / T), sampled at 60 Hz with its velocity: the period check finds T from the
+// leftmost turns, and fails a wrong expectation.
+TEST(Evaluate, PeriodOfASampledSwing) {
+    Recording rec;
+    rec.timeStep = 1.0f / 60.0f;
+    const double period = 1.7;
+    const double w = 2.0 * kPi / period;
+    for (int k = 0; k <= 600; ++k) {
+        const double t = k * double(rec.timeStep);
+        rec.tagged["bob"].push_back({{static_cast<float>(0.3 * std::cos(w * t)), 0.0f}, 0.0f,
+                                     {static_cast<float>(-0.3 * w * std::sin(w * t)), 0.0f}});
+        rec.kineticEnergy.push_back(0.0f);
+    }
+    Check c;
+    c.kind = CheckKind::Period;
+    c.body = "bob";
+    c.period = 1.7f;
+    c.tolerance = 0.005f;
+    CheckResult r = evaluate(c, rec, 10.0f);
+    EXPECT_NEAR(r.measured, period, 1e-3);
+    EXPECT_TRUE(r.passed);
+    c.period = 1.75f;
+    EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
+    // A body at rest has no swing to time.
+    rec.tagged["bob"].assign(601, Sample{});
+    r = evaluate(c, rec, 10.0f);
+    EXPECT_FALSE(r.passed);
+    EXPECT_EQ(r.detail, "fewer than two swings");
+}
+
+TEST(Evaluate, JointErrorIsTheLargestGapAndFailsOnNaN) {
+    Recording rec = turning({0.0f, 0.0f, 0.0f});
+    rec.jointError = {0.0f, 0.004f, 0.002f};
+    Check c;
+    c.kind = CheckKind::JointError;
+    c.limit = 0.005f;
+    CheckResult r = evaluate(c, rec, 10.0f);
+    EXPECT_FLOAT_EQ(static_cast<float>(r.measured), 0.004f);
+    EXPECT_TRUE(r.passed);
+    c.limit = 0.003f;
+    EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
+    rec.jointError[2] = std::numeric_limits<float>::quiet_NaN();
+    c.limit = 1.0f;
+    r = evaluate(c, rec, 10.0f);
+    EXPECT_FALSE(r.passed);
+    EXPECT_EQ(r.detail, "non-finite state at t = 1 s");
+}
+
 TEST(SvgPlot, ParetoFrontKeepsTheUnbeatenPoints) {
     const auto front = paretoFront({{3.0, 1.0}, {1.0, 5.0}, {2.0, 2.0}, {2.5, 3.0}, {4.0, 1.0}});
     const std::vector<std::pair<double, double>> expected{{1.0, 5.0}, {2.0, 2.0}, {3.0, 1.0}};

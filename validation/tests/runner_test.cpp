@@ -305,5 +305,55 @@ TEST(Runner, ACheckOnASharedTagJudgesEveryBody) {
     EXPECT_THAT(thrown.checks[0].detail, ::testing::StartsWith("worst of 2 bodies tagged top: body 2"));
 }
 
+// The joints of a scene are built in both engines: the shipped pendulum swings at its analytic
+// period (2 pi sqrt((r^2/2 + L^2) / (g L)) with the finite-amplitude terms, computed in the
+// file's description) within 1 %, its joint holds, and the prismatic motor stops at its limit.
+TEST(Runner, JointScenesInBothEngines) {
+    const Scenario pendulum = shipped("pendulum_period");
+    const double r = 0.05;
+    const double L = 1.0;
+    const double theta = 0.1;
+    const double t0 = 2.0 * 3.14159265358979 * std::sqrt((r * r / 2.0 + L * L) / (10.0 * L));
+    const double expected = t0 * (1.0 + theta * theta / 16.0 + 11.0 * std::pow(theta, 4) / 3072.0);
+    ASSERT_NEAR(pendulum.checks[0].period, expected, 1e-5);
+    const Scenario slider = shipped("prismatic_motor_limit");
+    for (const RunSpec& spec : {box2d(8, 3), e2d("soft", 4, 8, 3), e2d("classic", 4, 8, 3)}) {
+        SCOPED_TRACE(spec.config.family());
+        const RunResult p = runOne(pendulum, spec);
+        ASSERT_TRUE(p.failure.empty()) << p.failure;
+        ASSERT_EQ(p.checks.size(), 2u);
+        EXPECT_NEAR(p.checks[0].measured, expected, 0.01 * expected);
+        EXPECT_LT(p.checks[1].measured, 0.005);
+        const RunResult s = runOne(slider, spec);
+        ASSERT_TRUE(s.failure.empty()) << s.failure;
+        EXPECT_NEAR(s.checks[0].measured, 1.0, 0.02); // the upper limit
+    }
+}
+
+// A joint error the check must catch: a two-link chain holds a disc of its own density, but a
+// disc of 1000 times it (about 60 000 times a link's mass) pulls Box2D's joints apart.
+TEST(Runner, JointErrorCanFail) {
+    auto chain = [](const char* density) {
+        std::string text = R"({"family": "hard", "duration": 2, "bodies": [
+          {"type": "static", "position": [0, 10], "shape": {"type": "box", "halfExtents": [0.1, 0.1]}},
+          {"position": [0.5, 10], "shape": {"type": "box", "halfExtents": [0.5, 0.05], "density": 1}},
+          {"position": [1.5, 10], "shape": {"type": "box", "halfExtents": [0.5, 0.05], "density": 1}},
+          {"position": [3.0, 10], "shape": {"type": "circle", "radius": 1, "density": DENSITY}}],
+        "joints": [{"type": "revolute", "bodyA": 0, "bodyB": 1, "anchor": [0, 10]},
+                   {"type": "revolute", "bodyA": 1, "bodyB": 2, "anchor": [1, 10]},
+                   {"type": "revolute", "bodyA": 2, "bodyB": 3, "anchor": [2, 10]}],
+        "checks": [{"type": "jointError", "limit": 0.05}]})";
+        text.replace(text.find("DENSITY"), 7, density);
+        return parseScenario(text, "chain");
+    };
+    const RunResult light = runOne(chain("1"), box2d(8, 3));
+    ASSERT_EQ(light.checks.size(), 1u);
+    EXPECT_TRUE(light.checks[0].passed) << light.checks[0].measured;
+    const RunResult heavy = runOne(chain("1000"), box2d(8, 3));
+    ASSERT_EQ(heavy.checks.size(), 1u);
+    EXPECT_FALSE(heavy.checks[0].passed);
+    EXPECT_GT(heavy.checks[0].measured, 0.05);
+}
+
 } // namespace
 } // namespace e2d::validation

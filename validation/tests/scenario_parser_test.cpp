@@ -248,6 +248,80 @@ TEST(ScenarioParser, RejectsBadPushesAndChecks) {
               "checks[0].distance: required field is missing");
 }
 
+TEST(ScenarioParser, Joints) {
+    const Scenario s = parseScenario(R"({"family": "hard", "generators": [{"type": "verticalStack", "count": 2}],
+        "bodies": [
+          {"type": "static", "position": [0, 10], "shape": {"type": "box", "halfExtents": [0.1, 0.1]}},
+          {"position": [1, 10], "tag": "bob", "shape": {"type": "circle", "radius": 0.1}},
+          {"position": [3, 10], "shape": {"type": "circle", "radius": 0.1}}],
+        "joints": [
+          {"type": "revolute", "bodyA": 0, "bodyB": "bob", "anchor": [0, 10], "lowerAngleDeg": -90, "upperAngle": 1,
+           "motorSpeed": 2, "maxMotorTorque": 5},
+          {"type": "distance", "bodyA": "bob", "bodyB": 2, "anchorA": [1, 10], "anchorB": [3, 10]},
+          {"type": "prismatic", "bodyA": "top", "bodyB": 2, "anchor": [3, 10], "axis": [0, 2],
+           "lowerTranslation": -1, "upperTranslation": 1},
+          {"type": "weld", "bodyA": 1, "bodyB": 2, "anchor": [2, 10], "collideConnected": true}],
+        "checks": [{"type": "jointError", "limit": 0.01}, {"type": "period", "body": "bob", "period": 2, "tolerance": 0.1}]})",
+                                     "joints");
+    ASSERT_EQ(s.scene.joints.size(), 4u);
+    const scenes::JointDesc& r = s.scene.joints[0];
+    EXPECT_EQ(r.kind, scenes::JointKind::Revolute);
+    EXPECT_EQ(r.bodyA, 3); // after the two boxes and the ground of the generator
+    EXPECT_EQ(r.bodyB, 4);
+    EXPECT_TRUE(r.enableLimit);
+    EXPECT_NEAR(r.lower, -1.5707963f, 1e-6f);
+    EXPECT_FLOAT_EQ(r.upper, 1.0f);
+    EXPECT_TRUE(r.enableMotor);
+    EXPECT_FLOAT_EQ(r.maxMotor, 5.0f);
+    EXPECT_FLOAT_EQ(s.scene.joints[1].length, 2.0f); // the anchors' distance
+    EXPECT_FALSE(s.scene.joints[1].enableLimit);
+    EXPECT_EQ(s.scene.joints[2].bodyA, 2);           // the stack's top box, by tag
+    EXPECT_EQ(s.scene.joints[2].axis, glm::vec2(0.0f, 1.0f));
+    EXPECT_TRUE(s.scene.joints[3].collideConnected);
+    EXPECT_FLOAT_EQ(s.checks[1].period, 2.0f);
+}
+
+TEST(ScenarioParser, RejectsBadJoints) {
+    auto withJoint = [](const std::string& joint, const std::string& checks = "") {
+        return errorOf(R"({"family": "hard", "bodies": [
+            {"type": "static", "position": [0, 0], "tag": "post", "shape": {"type": "box", "halfExtents": [0.1, 0.1]}},
+            {"type": "static", "position": [2, 0], "tag": "post", "shape": {"type": "box", "halfExtents": [0.1, 0.1]}},
+            {"position": [1, 0], "tag": "bob", "shape": {"type": "circle", "radius": 0.1}}],
+            "joints": [)" + joint + "]" + (checks.empty() ? "" : R"(, "checks": [)" + checks + "]") + "}");
+    };
+    EXPECT_EQ(withJoint(R"({"type": "revolute", "bodyA": 2, "bodyB": "bob", "anchor": [1, 0]})"),
+              "joints[0].bodyB: must differ from bodyA (both are body 2)");
+    EXPECT_EQ(withJoint(R"({"type": "revolute", "bodyA": 0, "bodyB": 1, "anchor": [1, 0]})"),
+              "joints[0].bodyB: one of the two bodies must be dynamic");
+    EXPECT_EQ(withJoint(R"({"type": "revolute", "bodyA": "post", "bodyB": 2, "anchor": [1, 0]})"),
+              "joints[0].bodyA: 2 bodies have tag \"post\"; name one by its index in bodies");
+    EXPECT_EQ(withJoint(R"({"type": "revolute", "bodyA": "bbo", "bodyB": 0, "anchor": [1, 0]})"),
+              "joints[0].bodyA: no body has tag \"bbo\" (did you mean \"bob\"?)");
+    EXPECT_THAT(withJoint(R"({"type": "revolute", "bodyA": 7, "bodyB": 0, "anchor": [1, 0]})"),
+                StartsWith("joints[0].bodyA: must be in [0, 2], got 7"));
+    EXPECT_EQ(withJoint(R"({"type": "revolute", "bodyA": 0, "bodyB": 2})"),
+              "joints[0].anchor: required field is missing");
+    EXPECT_THAT(withJoint(R"({"type": "hinge", "bodyA": 0, "bodyB": 2})"),
+                StartsWith("joints[0].type: expected revolute, distance, prismatic or weld, got \"hinge\""));
+    EXPECT_EQ(withJoint(R"({"type": "revolute", "bodyA": 0, "bodyB": 2, "anchor": [0, 0], "lowerAngle": 1, "upperAngle": 0})"),
+              "joints[0].upperAngle: must be >= lowerAngle (1), got 0");
+    EXPECT_THAT(withJoint(R"({"type": "revolute", "bodyA": 0, "bodyB": 2, "anchor": [0, 0], "lowerAngle": 1})"),
+                StartsWith("joints[0].upperAngle: required field is missing"));
+    EXPECT_THAT(withJoint(R"({"type": "revolute", "bodyA": 0, "bodyB": 2, "anchor": [0, 0], "motorSpeed": 1})"),
+                StartsWith("joints[0].maxMotorTorque: required field is missing"));
+    EXPECT_EQ(withJoint(R"({"type": "prismatic", "bodyA": 0, "bodyB": 2, "anchor": [0, 0], "axis": [0, 0]})"),
+              "joints[0].axis: must not be [0, 0]");
+    EXPECT_THAT(withJoint(R"({"type": "distance", "bodyA": 0, "bodyB": 2, "anchorA": [1, 0], "anchorB": [1, 0.001]})"),
+                StartsWith("joints[0].anchorB: the length must be at least physics::kLinearSlop"));
+    EXPECT_THAT(withJoint(R"({"type": "revolute", "bodyA": 0, "bodyB": 2, "anchor": [200000, 0]})"),
+                StartsWith("joints[0].anchor[0]: must be within e2d's limit of 100000"));
+    EXPECT_EQ(withJoint(R"({"type": "distance", "bodyA": 0, "bodyB": 2, "anchorA": [0, 0], "anchorB": [1, 0], "hertz": 1})",
+                        R"({"type": "jointError", "limit": 0.1})"),
+              "checks[0].type: the scene has no joint this check measures (revolute, weld or rigid distance)");
+    EXPECT_EQ(withJoint(R"({"type": "weld", "bodyA": 0, "bodyB": 2, "anchor": [0, 0], "lowerAngle": 0})"),
+              "joints[0].lowerAngle: unknown field");
+}
+
 TEST(Generators, PyramidHasTheBox2DLayout) {
     // base 3: rows of 3, 2, 1 unit boxes on a ground whose top is y = 0.
     const Scenario s = parseScenario(

@@ -161,6 +161,67 @@ std::string shapeUnsupported(const ShapeDesc& shape, bool massive) {
 
 } // namespace
 
+namespace {
+
+// Box2D 2.4's Initialize() functions take world anchors and set the reference angle, as
+// JointDesc does.
+b2Joint* createJoint(b2World& world, const JointDesc& j, b2Body* a, b2Body* b) {
+    switch (j.kind) {
+    case JointKind::Revolute: {
+        b2RevoluteJointDef def;
+        def.Initialize(a, b, toB2(j.anchorA));
+        def.collideConnected = j.collideConnected;
+        def.enableLimit = j.enableLimit;
+        def.lowerAngle = j.lower;
+        def.upperAngle = j.upper;
+        def.enableMotor = j.enableMotor;
+        def.motorSpeed = j.motorSpeed;
+        def.maxMotorTorque = j.maxMotor;
+        return world.CreateJoint(&def);
+    }
+    case JointKind::Prismatic: {
+        b2PrismaticJointDef def;
+        def.Initialize(a, b, toB2(j.anchorA), toB2(j.axis));
+        def.collideConnected = j.collideConnected;
+        def.enableLimit = j.enableLimit;
+        def.lowerTranslation = j.lower;
+        def.upperTranslation = j.upper;
+        def.enableMotor = j.enableMotor;
+        def.motorSpeed = j.motorSpeed;
+        def.maxMotorForce = j.maxMotor;
+        return world.CreateJoint(&def);
+    }
+    case JointKind::Weld: {
+        b2WeldJointDef def;
+        def.Initialize(a, b, toB2(j.anchorA));
+        def.collideConnected = j.collideConnected;
+        return world.CreateJoint(&def);
+    }
+    case JointKind::Distance: {
+        b2DistanceJointDef def;
+        // Rigid: minLength = maxLength = length (Initialize's default).
+        def.Initialize(a, b, toB2(j.anchorA), toB2(j.anchorB));
+        def.collideConnected = j.collideConnected;
+        if (j.length > 0.0f) {
+            def.length = def.minLength = def.maxLength = j.length;
+        }
+        if (j.enableSpring || j.enableLimit) {
+            // Box2D 2.4 solves a distance joint with minLength < maxLength as a spring (stiffness
+            // > 0) or a rope (stiffness 0) between the two.
+            def.minLength = j.enableLimit ? j.lower : 0.0f;
+            def.maxLength = j.enableLimit ? j.upper : FLT_MAX;
+        }
+        if (j.enableSpring) {
+            b2LinearStiffness(def.stiffness, def.damping, j.hertz, j.dampingRatio, a, b);
+        }
+        return world.CreateJoint(&def);
+    }
+    }
+    return nullptr;
+}
+
+} // namespace
+
 std::string box2DUnsupported(const SceneDesc& scene) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         const BodyDesc& body = scene.bodies[i];
@@ -204,6 +265,11 @@ Box2DScene buildBox2D(const SceneDesc& scene, const Box2DSettings& settings) {
             addShape(body, shape);
         }
         out.bodies.push_back(body);
+    }
+    out.joints.reserve(scene.joints.size());
+    for (const JointDesc& j : scene.joints) {
+        out.joints.push_back(createJoint(*out.world, j, out.bodies[std::size_t(j.bodyA)],
+                                         out.bodies[std::size_t(j.bodyB)]));
     }
     return out;
 }

@@ -9,6 +9,7 @@
 
 class b2World;
 class b2Body;
+class b2Joint;
 
 namespace e2d::scenes {
 
@@ -28,6 +29,7 @@ struct Box2DSettings {
 struct Box2DScene {
     std::unique_ptr<b2World> world;
     std::vector<b2Body*> bodies; ///< in SceneDesc order
+    std::vector<b2Joint*> joints; ///< in SceneDesc::joints order
     Box2DSettings settings;
 
     Box2DScene();
