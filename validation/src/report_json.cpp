@@ -63,6 +63,11 @@ json scenarioJson(const Scenario& s) {
     for (const Check& c : s.checks) {
         checks.push_back({{"type", checkKindName(c.kind)}, {"body", c.body}});
     }
+    json joints = json::object();
+    for (const scenes::JointDesc& j : s.scene.joints) {
+        const std::string kind = scenes::jointKindName(j.kind);
+        joints[kind] = joints.value(kind, 0) + 1;
+    }
     return {{"name", s.name},
             {"family", s.family},
             {"description", s.description},
@@ -75,6 +80,7 @@ json scenarioJson(const Scenario& s) {
             {"bodies", s.scene.bodies.size()},
             {"dynamicBodies", dynamic},
             {"shapes", shapes},
+            {"joints", joints},
             {"quick", s.quick},
             {"sweep", s.sweep},
             {"hardCase", s.hardCase},

@@ -155,6 +155,10 @@ TEST(ReportModel, HardCasesHeadTheSummary) {
     const nlohmann::json j = reportToJson(report);
     ASSERT_EQ(j.at("hardCases").size(), 1u);
     EXPECT_EQ(j.at("hardCases")[0].at("passed").at("e2d soft sat"), false);
+    EXPECT_TRUE(j.at("scenarios")[1].at("joints").empty());
+    report.scenarios = {shipped("ragdoll_drop")};
+    report.runs.clear();
+    EXPECT_EQ(reportToJson(report).at("scenarios")[0].at("joints").at("revolute"), 9);
 }
 
 } // namespace
