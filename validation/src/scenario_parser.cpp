@@ -281,6 +281,9 @@ scenes::ShapeDesc parseShape(const json& value, const std::string& path) {
     shape.density = o.numberAbove("density", 1.0f, 0.0f, false);
     shape.friction = o.numberAbove("friction", 0.6f, 0.0f, false);
     shape.restitution = o.numberAbove("restitution", 0.0f, 0.0f, false);
+    if (shape.restitution > 1.0f) {
+        fail(o.at("restitution"), "must be in [0, 1] (e2d's limit), got " + show(shape.restitution));
+    }
     if (type == "box") {
         shape.kind = scenes::ShapeKind::Box;
         shape.halfExtents = o.vec2("halfExtents", {0.5f, 0.5f});
@@ -435,6 +438,9 @@ LayoutParams parseLayout(Object& o, const std::string& defaultTag) {
     Object::checkWithinE2d(p.half, o.at("half"));
     Object::checkWithinE2d(p.density, o.at("density"));
     p.restitution = o.numberAbove("restitution", 0.0f, 0.0f, false);
+    if (p.restitution > 1.0f) {
+        fail(o.at("restitution"), "must be in [0, 1] (e2d's limit), got " + show(p.restitution));
+    }
     p.ground = o.boolean("ground", true);
     p.tag = o.string("tag", defaultTag);
     return p;

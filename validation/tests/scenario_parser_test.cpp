@@ -174,6 +174,11 @@ TEST(ScenarioParser, ValuesBeyondE2dsLimitsNameTheLimit) {
                 StartsWith("bodies[1].shape.halfExtents[0]: must be within e2d's limit of 100000"));
     EXPECT_THAT(errorOf(scene("", R"({"type": "circle", "radius": 1, "density": 1e30})")),
                 StartsWith("bodies[3].shapes[0].density: must be within e2d's limit of 100000"));
+    // Found by fuzz_scenario: e2d refuses a restitution above 1 when the run builds the shape.
+    EXPECT_EQ(errorOf(scene("", R"({"type": "circle", "radius": 1, "restitution": 20})")),
+              "bodies[3].shapes[0].restitution: must be in [0, 1] (e2d's limit), got 20");
+    EXPECT_EQ(errorOf(R"({"family": "hard", "generators": [{"type": "verticalStack", "restitution": 1.5}]})"),
+              "generators[0].restitution: must be in [0, 1] (e2d's limit), got 1.5");
 }
 
 TEST(ScenarioParser, PolygonsE2dWouldWeldAreRefused) {
