@@ -130,10 +130,12 @@ function(e2d_write_package_files)
 endfunction()
 
 # e2d_add_fuzzers(<lib> <name>...): libFuzzer targets <name> from <name>.cpp in the calling
-# folder (libs/<lib>/fuzz/), linking e2d::<lib>. The library itself is instrumented for coverage
+# folder (libs/<lib>/fuzz/), linking the library target e2d_<lib> (e2d::<lib>; for the
+# validation harness, e2d_validation_harness). The library itself is instrumented for coverage
 # and checked by ASan + UBSan; only the fuzz executables link the fuzzer runtime. Called only
 # when E2D_BUILD_FUZZ is ON (the `fuzz` preset); scripts/test.sh runs every fuzz_* it finds
-# under build/fuzz/libs/<lib>/fuzz/ with seeds from libs/<lib>/fuzz/corpus/<name>/.
+# under build/fuzz/libs/<lib>/fuzz/ with seeds from libs/<lib>/fuzz/corpus/<name>/, and
+# build/fuzz/validation/fuzz/fuzz_* with the shipped scenarios as seeds.
 function(e2d_add_fuzzers lib)
   if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
     message(FATAL_ERROR "E2D_BUILD_FUZZ needs clang (libFuzzer), got ${CMAKE_CXX_COMPILER_ID}")
@@ -143,7 +145,7 @@ function(e2d_add_fuzzers lib)
     -fsanitize=fuzzer-no-link,${sanitizers} -fno-sanitize-recover=all -fno-omit-frame-pointer)
   foreach(name IN LISTS ARGN)
     add_executable(${name} ${name}.cpp)
-    target_link_libraries(${name} PRIVATE e2d::${lib} e2d_warnings)
+    target_link_libraries(${name} PRIVATE e2d_${lib} e2d_warnings)
     target_compile_options(${name} PRIVATE
       -fsanitize=fuzzer,${sanitizers} -fno-sanitize-recover=all -fno-omit-frame-pointer)
     target_link_options(${name} PRIVATE -fsanitize=fuzzer,${sanitizers})

@@ -67,15 +67,18 @@ if cmake --preset fuzz >"$logs/fuzz-configure.log" 2>&1 && cmake --build --prese
     [ -f "$fuzzer" ] && [ -x "$fuzzer" ] && fuzzers+=("$fuzzer")
   done
   run_fuzzer() {
-    local fuzzer="$1" target dir corpus seeds
+    local fuzzer="$1" target dir corpus
+    local -a seeds
     target=$(basename "$fuzzer")
     dir=$(dirname "$(dirname "${fuzzer#"$root/build/fuzz/"}")")
     corpus="$root/build/fuzz/corpus/$target"
     mkdir -p "$corpus"
-    seeds="$root/$dir/fuzz/corpus/$target"
-    [ -d "$seeds" ] || seeds=""
+    seeds=()
+    [ -d "$root/$dir/fuzz/corpus/$target" ] && seeds+=("$root/$dir/fuzz/corpus/$target")
+    # The scenario reader's fuzzers also start from every shipped scenario.
+    [ "$dir" = validation ] && seeds+=("$root/validation/scenarios")
     "$fuzzer" -max_total_time="$fuzz_seconds" -print_final_stats=1 \
-      -artifact_prefix="$logs/$target-" "$corpus" $seeds >"$logs/$target.log" 2>&1
+      -artifact_prefix="$logs/$target-" "$corpus" "${seeds[@]}" >"$logs/$target.log" 2>&1
     echo $? >"$logs/$target.status"
   }
   fuzz_result() {

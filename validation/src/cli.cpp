@@ -14,6 +14,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <ostream>
 #include <thread>
 
@@ -219,8 +220,35 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         << threads << " threads\n";
     const auto start = std::chrono::steady_clock::now();
     int lastPercent = -1;
+    // Runs left per scenario, to say when each scenario is done.
+    std::vector<int> left(scenarios.size(), 0);
+    for (const RunSpec& spec : plan) {
+        ++left[static_cast<std::size_t>(spec.scenario)];
+    }
+    std::vector<int> baselineRuns(scenarios.size(), 0);
+    std::vector<int> baselinePassed(scenarios.size(), 0);
+    std::mutex errMutex; // the workers' step progress and the finished-run lines share err
     Report report;
+    const auto stepProgress = [&](const RunSpec& spec, int step, int steps, double seconds) {
+        const std::lock_guard lock(errMutex);
+        err << "  ... " << scenarios[static_cast<std::size_t>(spec.scenario)].name << " / "
+            << spec.config.family() << " " << spec.variant << ": "
+            << (step == 0 ? std::string("world built")
+                          : "step " + std::to_string(step) + " of " + std::to_string(steps) + " (" +
+                                std::to_string(100 * static_cast<long long>(step) / steps) + "%)")
+            << " after " << static_cast<int>(seconds) << " s\n";
+    };
     report.runs = runPlan(scenarios, plan, threads, [&](int done, int total, const RunResult& r) {
+        const std::lock_guard lock(errMutex);
+        const auto si = static_cast<std::size_t>(r.spec.scenario);
+        if (r.spec.role == RunRole::Baseline) {
+            ++baselineRuns[si];
+            baselinePassed[si] += r.passed ? 1 : 0;
+        }
+        if (--left[si] == 0) {
+            err << "scenario " << scenarios[si].name << " done: " << baselinePassed[si] << " of "
+                << baselineRuns[si] << " baseline runs pass\n";
+        }
         const int percent = 100 * done / total;
         if (percent / 5 != lastPercent / 5 || r.seconds > 5.0 || done == total) {
             lastPercent = percent;
@@ -230,7 +258,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
                 << " s] " << scenarios[static_cast<std::size_t>(r.spec.scenario)].name << " / "
                 << r.spec.config.family() << " " << r.spec.variant << ": " << r.seconds << " s\n";
         }
-    });
+    }, stepProgress);
     report.scenarios = std::move(scenarios);
     report.env = collectEnvironment();
     report.env.threads = threads;

@@ -5,9 +5,11 @@
 
 #include <glm/vec2.hpp>
 
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace e2d::validation {
@@ -36,6 +38,32 @@ public:
     virtual void readBodies(std::vector<BodyState>& out) const = 0;
     /// The deepest overlap among the current contacts, metres, >= 0, as the engine measures it.
     [[nodiscard]] virtual float maxPenetration() const = 0;
+    /// Fills `out` (resized to the scene's joint count) with each joint's two anchors in world
+    /// coordinates, metres, in SceneDesc::joints order.
+    virtual void readJointAnchors(std::vector<std::pair<glm::vec2, glm::vec2>>& out) const = 0;
+};
+
+/// The forces and impulses a scene applies over time (BodyDesc::force, BodyDesc::impulses),
+/// handed to an engine adapter before each step.
+class Pushes {
+public:
+    explicit Pushes(const scenes::SceneDesc& scene);
+    /// Before the step that starts at `time` seconds: `force(body, f)` for every body with a
+    /// constant force, then `impulse(body, j)` for each impulse now due, each once. `body` is
+    /// the index in the scene.
+    void apply(double time, const std::function<void(int, glm::vec2)>& force,
+               const std::function<void(int, glm::vec2)>& impulse);
+    [[nodiscard]] bool empty() const { return forces_.empty() && impulses_.empty(); }
+
+private:
+    struct Timed {
+        float time;
+        int body;
+        glm::vec2 impulse;
+    };
+    std::vector<std::pair<int, glm::vec2>> forces_;
+    std::vector<Timed> impulses_; // sorted by time
+    std::size_t next_ = 0;
 };
 
 /// A configuration the harness cannot run (unknown engine, engine not built).

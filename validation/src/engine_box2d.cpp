@@ -18,7 +18,7 @@ float skinOf(const b2Fixture* fixture) {
 class Box2DEngine final : public Engine {
 public:
     Box2DEngine(const scenes::SceneDesc& scene, const EngineConfig& config)
-        : timeStep_(scene.timeStep) {
+        : timeStep_(scene.timeStep), pushes_(scene) {
         scenes::Box2DSettings settings;
         settings.velocityIterations = config.velocityIterations;
         settings.positionIterations = config.positionIterations;
@@ -28,7 +28,16 @@ public:
         scene_ = scenes::buildBox2D(scene, settings);
     }
 
-    void step() override { scene_.step(timeStep_); }
+    void step() override {
+        if (!pushes_.empty()) {
+            pushes_.apply(
+                double(steps_) * timeStep_,
+                [&](int i, glm::vec2 f) { scene_.bodies[std::size_t(i)]->ApplyForceToCenter({f.x, f.y}, true); },
+                [&](int i, glm::vec2 j) { scene_.bodies[std::size_t(i)]->ApplyLinearImpulseToCenter({j.x, j.y}, true); });
+        }
+        scene_.step(timeStep_);
+        ++steps_;
+    }
 
     [[nodiscard]] int bodyCount() const override { return static_cast<int>(scene_.bodies.size()); }
 
@@ -49,6 +58,15 @@ public:
             const b2Vec2 c = body->GetLocalCenter();
             s.inertia = std::max(0.0f, body->GetInertia() - s.mass * b2Dot(c, c));
             s.awake = body->IsAwake();
+        }
+    }
+
+    void readJointAnchors(std::vector<std::pair<glm::vec2, glm::vec2>>& out) const override {
+        out.resize(scene_.joints.size());
+        for (std::size_t i = 0; i < scene_.joints.size(); ++i) {
+            const b2Vec2 a = scene_.joints[i]->GetAnchorA();
+            const b2Vec2 b = scene_.joints[i]->GetAnchorB();
+            out[i] = {{a.x, a.y}, {b.x, b.y}};
         }
     }
 
@@ -74,6 +92,8 @@ public:
 
 private:
     float timeStep_;
+    Pushes pushes_;
+    long long steps_ = 0;
     scenes::Box2DScene scene_;
 };
 

@@ -36,9 +36,18 @@ class E2dEngine final : public Engine {
 public:
     E2dEngine(const scenes::SceneDesc& scene, const EngineConfig& config)
         : scene_(scenes::buildE2d(scene, worldDef(scene, config))), world_(scene_.world),
-          bodies_(scene_.bodies) {}
+          bodies_(scene_.bodies), pushes_(scene), timeStep_(scene.timeStep) {}
 
-    void step() override { scene_.step(); }
+    void step() override {
+        if (!pushes_.empty()) {
+            pushes_.apply(
+                double(steps_) * timeStep_,
+                [&](int i, glm::vec2 f) { world_.applyForceToCenter(bodies_[std::size_t(i)], f); },
+                [&](int i, glm::vec2 j) { world_.applyLinearImpulseToCenter(bodies_[std::size_t(i)], j); });
+        }
+        scene_.step();
+        ++steps_;
+    }
 
     [[nodiscard]] int bodyCount() const override { return static_cast<int>(bodies_.size()); }
 
@@ -65,6 +74,13 @@ public:
         }
     }
 
+    void readJointAnchors(std::vector<std::pair<glm::vec2, glm::vec2>>& out) const override {
+        out.resize(scene_.joints.size());
+        for (std::size_t i = 0; i < scene_.joints.size(); ++i) {
+            out[i] = {world_.jointAnchorA(scene_.joints[i]), world_.jointAnchorB(scene_.joints[i])};
+        }
+    }
+
     [[nodiscard]] float maxPenetration() const override {
         float deepest = 0.0f;
         world_.forEachTouchingContact([&](const ph::ContactData& c) {
@@ -79,6 +95,9 @@ private:
     scenes::E2dScene scene_;
     ph::World& world_;
     const std::vector<ph::BodyId>& bodies_;
+    Pushes pushes_;
+    float timeStep_;
+    long long steps_ = 0;
 };
 
 } // namespace

@@ -3,6 +3,7 @@
 #include "engine_box2d.hpp"
 #include "engine_e2d.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 namespace e2d::validation {
@@ -28,6 +29,33 @@ std::string translationNotes(const EngineConfig& config) {
 }
 
 std::vector<std::string> availableEngines() { return {"box2d", "e2d"}; }
+
+Pushes::Pushes(const scenes::SceneDesc& scene) {
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        const scenes::BodyDesc& b = scene.bodies[i];
+        if (b.force != glm::vec2(0.0f)) {
+            forces_.emplace_back(static_cast<int>(i), b.force);
+        }
+        for (const auto& [time, impulse] : b.impulses) {
+            impulses_.push_back({time, static_cast<int>(i), impulse});
+        }
+    }
+    std::stable_sort(impulses_.begin(), impulses_.end(),
+                     [](const Timed& a, const Timed& b) { return a.time < b.time; });
+}
+
+void Pushes::apply(double time, const std::function<void(int, glm::vec2)>& force,
+                   const std::function<void(int, glm::vec2)>& impulse) {
+    for (const auto& [body, f] : forces_) {
+        force(body, f);
+    }
+    // A half-step margin: an impulse at t = 0.5 s goes before the step starting at 0.5 s even
+    // when 30 steps of 1/60 s add up to 0.49999 s.
+    while (next_ < impulses_.size() && impulses_[next_].time <= time + 1.0e-6) {
+        impulse(impulses_[next_].body, impulses_[next_].impulse);
+        ++next_;
+    }
+}
 
 std::string EngineConfig::family() const {
     if (engine == "e2d") {

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <sstream>
 
 namespace e2d::validation {
@@ -94,12 +96,136 @@ Apexes apexes(const std::vector<Sample>& s, int from) {
 
 } // namespace
 
+namespace {
+
+bool finite(glm::vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+
+// The first instant at which the body's state or one of the run's summed quantities the check
+// reads is not finite, or -1. Comparisons with NaN are false and std::max skips it, so a check
+// left to itself could pass on a blown-up run.
+int firstNonFinite(const Check& c, const Recording& rec, const std::vector<Sample>& s) {
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        if (!finite(s[k].position) || !finite(s[k].velocity) || !std::isfinite(s[k].angle)) {
+            return static_cast<int>(k);
+        }
+    }
+    for (int k = 0; k < rec.instants(); ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        const bool bad =
+            (c.kind == CheckKind::MaxSpeed && !std::isfinite(rec.maxSpeed[i])) ||
+            (c.kind == CheckKind::MaxPenetration && !std::isfinite(rec.penetration[i])) ||
+            (c.kind == CheckKind::Momentum && !finite(rec.momentum[i])) ||
+            (c.kind == CheckKind::KineticEnergy && !std::isfinite(rec.kineticEnergy[i])) ||
+            (c.kind == CheckKind::JointError && i < rec.jointError.size() &&
+             !std::isfinite(rec.jointError[i]));
+        if (bad) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+// Rotation from the start at every instant, unwrapped (e2d reports angles in (-pi, pi], Box2D
+// accumulates them): each step's change taken as the shortest turn.
+std::vector<double> turns(const std::vector<Sample>& s) {
+    std::vector<double> out;
+    out.reserve(s.size());
+    double total = 0.0;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        if (k > 0) {
+            double d = double(s[k].angle) - double(s[k - 1].angle);
+            d -= 2.0 * std::numbers::pi * std::round(d / (2.0 * std::numbers::pi));
+            total += d;
+        }
+        out.push_back(total);
+    }
+    return out;
+}
+
+// The times at which the body's x velocity turns from negative to non-negative (its leftmost
+// points), interpolated between instants: one per period of a swing.
+std::vector<double> leftTurns(const std::vector<Sample>& s, float dt) {
+    std::vector<double> out;
+    for (std::size_t k = 1; k < s.size(); ++k) {
+        const double v0 = s[k - 1].velocity.x;
+        const double v1 = s[k].velocity.x;
+        if (v0 < 0.0 && v1 >= 0.0) {
+            out.push_back((double(k - 1) + v0 / (v0 - v1)) * dt);
+        }
+    }
+    return out;
+}
+
+// How far the body got from its start by instant k: along `direction`, or in any direction.
+double moved(const std::vector<Sample>& s, int k, glm::vec2 direction) {
+    if (s.empty()) {
+        return 0.0;
+    }
+    const glm::vec2 d = s[static_cast<std::size_t>(k)].position - s.front().position;
+    return direction == glm::vec2(0.0f) ? length(d) : double(d.x) * direction.x + double(d.y) * direction.y;
+}
+
+CheckResult evaluateOn(const Check& c, const Recording& rec, float gravity, const std::vector<Sample>& s);
+
+// evaluateOn with the non-finite guard.
+CheckResult evaluateGuarded(const Check& c, const Recording& rec, float gravity, const std::vector<Sample>& s) {
+    CheckResult r = evaluateOn(c, rec, gravity, s);
+    const int bad = firstNonFinite(c, rec, s);
+    if (bad >= 0 || !std::isfinite(r.measured) || !std::isfinite(r.error)) {
+        r.passed = false;
+        r.error = std::numeric_limits<double>::infinity();
+        r.detail = (bad >= 0 ? "non-finite state at t = " + fmt(rec.time(bad)) + " s"
+                             : std::string("non-finite measurement")) +
+                   (r.detail.empty() ? "" : "; " + r.detail);
+    }
+    return r;
+}
+
+// Which of two results of one check on different bodies is worse: a failure, then the larger
+// error against the tolerance.
+bool worse(const CheckResult& a, const CheckResult& b) {
+    if (a.passed != b.passed) {
+        return !a.passed;
+    }
+    const double ra = a.tolerance > 0.0 ? a.error / a.tolerance : a.error;
+    const double rb = b.tolerance > 0.0 ? b.error / b.tolerance : b.error;
+    return ra > rb || (std::isnan(ra) && !std::isnan(rb));
+}
+
+} // namespace
+
 CheckResult evaluate(const Check& c, const Recording& rec, float gravity) {
+    CheckResult r = evaluateGuarded(c, rec, gravity, track(rec, c.body));
+    auto more = rec.moreTagged.find(c.body);
+    if (c.body.empty() || more == rec.moreTagged.end() || more->second.empty()) {
+        return r;
+    }
+    // Every body with the tag is judged; the worst one speaks for the check.
+    const std::size_t count = more->second.size() + 1;
+    std::size_t worstIndex = 0;
+    for (std::size_t i = 0; i < more->second.size(); ++i) {
+        CheckResult other = evaluateGuarded(c, rec, gravity, more->second[i]);
+        if (worse(other, r)) {
+            r = std::move(other);
+            worstIndex = i + 1;
+        }
+    }
+    r.detail = "worst of " + std::to_string(count) + " bodies tagged " + c.body + ": body " +
+               std::to_string(worstIndex + 1) + (r.detail.empty() ? "" : "; " + r.detail);
+    return r;
+}
+
+CheckResult evaluateFinite(const Check& c, const Recording& rec, float gravity) {
+    return evaluateOn(c, rec, gravity, track(rec, c.body));
+}
+
+namespace {
+
+CheckResult evaluateOn(const Check& c, const Recording& rec, float gravity, const std::vector<Sample>& s) {
     CheckResult r;
     r.kind = checkKindName(c.kind);
     r.body = c.body;
     r.tolerance = c.tolerance;
-    const std::vector<Sample>& s = track(rec, c.body);
     const int last = rec.instants() - 1;
     switch (c.kind) {
     case CheckKind::Standing: {
@@ -244,17 +370,107 @@ CheckResult evaluate(const Check& c, const Recording& rec, float gravity) {
         r.detail = k <= last ? "" : "never slept";
         break;
     }
+    case CheckKind::Turn: {
+        r.quantity = "rotation from the start, rad";
+        const std::vector<double> turn = turns(s);
+        double largest = 0.0;
+        bool finiteTurns = true;
+        for (double t : turn) {
+            finiteTurns = finiteTurns && std::isfinite(t);
+            largest = std::max(largest, std::abs(t));
+        }
+        const double final = turn.empty() ? 0.0 : std::abs(turn.back());
+        r.passed = finiteTurns;
+        r.error = 0.0;
+        r.measured = final;
+        if (c.minTurn) {
+            // Judged by the final rotation: e.g. a domino that must have fallen.
+            r.expected = *c.minTurn;
+            r.tolerance = *c.minTurn;
+            r.error = std::max(0.0, *c.minTurn - final);
+            r.passed = r.passed && final >= *c.minTurn;
+            r.detail = "final rotation " + fmt(final) + " rad";
+        }
+        if (c.maxTurn) {
+            // Judged by the largest rotation at any instant: e.g. a box that must stay level.
+            r.measured = largest;
+            r.expected = *c.maxTurn;
+            r.tolerance = *c.maxTurn;
+            r.error = std::max(r.error, largest);
+            r.passed = r.passed && largest <= *c.maxTurn;
+            r.detail = (c.minTurn ? r.detail + ", " : std::string()) + "largest rotation " +
+                       fmt(largest) + " rad";
+        }
+        if (!finiteTurns) {
+            r.measured = std::numeric_limits<double>::quiet_NaN();
+        }
+        break;
+    }
+    case CheckKind::JointError: {
+        r.quantity = "largest joint error over the run, m";
+        float worst = 0.0f;
+        for (float e : rec.jointError) {
+            worst = std::max(worst, e);
+        }
+        r.expected = c.limit;
+        r.measured = worst;
+        r.tolerance = c.limit;
+        r.error = worst;
+        r.passed = !rec.jointError.empty() && worst <= c.limit;
+        r.detail = rec.jointError.empty() ? "no joint measured" : "";
+        break;
+    }
+    case CheckKind::Period: {
+        r.quantity = "mean period of the swing, s";
+        r.expected = c.period;
+        r.tolerance = c.tolerance;
+        const std::vector<double> t = leftTurns(s, rec.timeStep);
+        if (t.size() < 2) {
+            r.measured = 0.0;
+            r.error = c.period;
+            r.passed = false;
+            r.detail = "fewer than two swings";
+            break;
+        }
+        r.measured = (t.back() - t.front()) / double(t.size() - 1);
+        r.error = std::abs(r.measured - c.period);
+        r.passed = r.error <= c.tolerance;
+        r.detail = std::to_string(t.size() - 1) + " periods";
+        break;
+    }
+    case CheckKind::Moves: {
+        r.quantity = c.direction == glm::vec2(0.0f) ? "distance from the start, m"
+                                                   : "distance from the start along the direction, m";
+        r.expected = c.distance;
+        r.tolerance = c.distance;
+        r.measured = moved(s, static_cast<int>(s.size()) - 1, c.direction);
+        r.error = std::max(0.0, c.distance - r.measured);
+        r.passed = r.measured >= c.distance;
+        break;
+    }
     }
     return r;
 }
 
+} // namespace
+
 Series seriesFor(const Check& c, const Recording& rec, float gravity, int stride) {
     Series out;
+    stride = std::max(stride, 1);
+    if (c.kind == CheckKind::JointError) {
+        out.name = "largest joint error; dashed: limit";
+        out.unit = std::string("m");
+        for (std::size_t k = 0; k < rec.jointError.size(); k += std::size_t(stride)) {
+            out.t.push_back(rec.time(static_cast<int>(k)));
+            out.measured.push_back(rec.jointError[k]);
+            out.expected.push_back(c.limit);
+        }
+        return out;
+    }
     const std::vector<Sample>& s = track(rec, c.body);
     if (s.empty()) {
         return out;
     }
-    stride = std::max(stride, 1);
     auto sample = [&](auto&& measured, auto&& expected) {
         for (int k = 0; k < static_cast<int>(s.size()); k += stride) {
             out.t.push_back(rec.time(k));
@@ -307,6 +523,38 @@ Series seriesFor(const Check& c, const Recording& rec, float gravity, int stride
         out.unit = std::string("m");
         sample([&](int k) { return alongLaunch(s, k); },
                [&](int k) { return slidingPosition(c.speed, c.friction, gravity, rec.time(k)); });
+        break;
+    case CheckKind::Turn: {
+        out.name = "rotation of " + c.body + "; dashed: " +
+                   std::string(c.maxTurn ? "largest rotation allowed" : "least final rotation");
+        out.unit = std::string("rad");
+        const std::vector<double> turn = turns(s);
+        const double bound = c.maxTurn ? *c.maxTurn : c.minTurn.value_or(0.0f);
+        sample([&](int k) { return std::abs(turn[static_cast<std::size_t>(k)]); },
+               [&](int) { return bound; });
+        break;
+    }
+    case CheckKind::JointError:
+        break;
+    case CheckKind::Period: {
+        out.name = "x of " + c.body + " about its mean; dashed: the same swing at the expected period";
+        out.unit = std::string("m");
+        double mean = 0.0;
+        for (const Sample& x : s) {
+            mean += x.position.x;
+        }
+        mean /= double(s.size());
+        const double amplitude = double(s.front().position.x) - mean;
+        sample([&](int k) { return double(s[static_cast<std::size_t>(k)].position.x) - mean; },
+               [&](int k) {
+                   return amplitude * std::cos(2.0 * std::numbers::pi * rec.time(k) / c.period);
+               });
+        break;
+    }
+    case CheckKind::Moves:
+        out.name = "distance of " + c.body + " from its start; dashed: least distance at the end";
+        out.unit = std::string("m");
+        sample([&](int k) { return moved(s, k, c.direction); }, [&](int) { return c.distance; });
         break;
     case CheckKind::Standing:
         out.name = "horizontal drift of " + c.body + "; dashed: tolerance";

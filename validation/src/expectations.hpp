@@ -56,8 +56,12 @@ struct Series {
     std::vector<float> expected;
 };
 
-/// Evaluates `check` on a finished run. `gravity` is |g| of the scene, m/s^2.
+/// Evaluates `check` on a finished run. `gravity` is |g| of the scene, m/s^2. A check whose
+/// body or quantity was not finite at some instant of the run, or whose measurement is not
+/// finite, fails (error infinite, the instant in `detail`), whatever the comparison would say.
 [[nodiscard]] CheckResult evaluate(const Check& check, const Recording& rec, float gravity);
+/// The comparison alone, assuming finite values (evaluate() guards it).
+[[nodiscard]] CheckResult evaluateFinite(const Check& check, const Recording& rec, float gravity);
 
 /// The time series that shows `check` (bounce heights, drift, distance against the analytic
 /// curve), sampled at most every `stride` instants. Empty name when the check has none.

@@ -16,9 +16,25 @@ Recorder::Recorder(const scenes::SceneDesc& scene, float settle) {
     rec_.settle = settle;
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         const std::string& tag = scene.bodies[i].tag;
-        if (!tag.empty() && !rec_.tagged.contains(tag)) {
+        if (tag.empty()) {
+            continue;
+        }
+        if (!rec_.tagged.contains(tag)) {
             rec_.tagged[tag] = {};
-            tags_.emplace_back(tag, static_cast<int>(i));
+            tags_.push_back({tag, static_cast<int>(i), -1});
+        } else {
+            auto& more = rec_.moreTagged[tag];
+            tags_.push_back({tag, static_cast<int>(i), static_cast<int>(more.size())});
+            more.emplace_back();
+        }
+    }
+    for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+        const scenes::JointDesc& j = scene.joints[i];
+        if (j.kind == scenes::JointKind::Revolute || j.kind == scenes::JointKind::Weld) {
+            joints_.push_back({i, -1.0f});
+        } else if (j.kind == scenes::JointKind::Distance && !j.enableSpring && !j.enableLimit) {
+            const glm::vec2 d = j.anchorB - j.anchorA;
+            joints_.push_back({i, j.length > 0.0f ? j.length : std::sqrt(d.x * d.x + d.y * d.y)});
         }
     }
 }
@@ -36,7 +52,9 @@ void Recorder::record(const Engine& engine, double stepMs) {
         const float v2 = s.velocity.x * s.velocity.x + s.velocity.y * s.velocity.y;
         kinetic += 0.5f * s.mass * v2 + 0.5f * s.inertia * s.angularVelocity * s.angularVelocity;
         momentum += s.mass * s.velocity;
-        fastest = std::max(fastest, std::sqrt(v2));
+        // A non-finite speed must reach the checks: std::max would drop a NaN.
+        const float speed = std::sqrt(v2);
+        fastest = std::isfinite(fastest) && !(speed <= fastest) ? speed : fastest;
         asleep = asleep && !s.awake;
     }
     rec_.kineticEnergy.push_back(kinetic);
@@ -44,12 +62,27 @@ void Recorder::record(const Engine& engine, double stepMs) {
     rec_.maxSpeed.push_back(fastest);
     rec_.penetration.push_back(engine.maxPenetration());
     rec_.allAsleep.push_back(asleep);
+    if (!joints_.empty()) {
+        engine.readJointAnchors(anchors_);
+        float worst = 0.0f;
+        for (const MeasuredJoint& j : joints_) {
+            const auto& [a, b] = anchors_[j.index];
+            const glm::vec2 d = b - a;
+            const float gap = std::sqrt(d.x * d.x + d.y * d.y);
+            const float error = j.rest < 0.0f ? gap : std::abs(gap - j.rest);
+            // As for speeds: a NaN must reach the check.
+            worst = std::isfinite(worst) && !(error <= worst) ? error : worst;
+        }
+        rec_.jointError.push_back(worst);
+    }
     if (rec_.kineticEnergy.size() > 1) {
         rec_.stepMs.push_back(stepMs);
     }
-    for (const auto& [tag, index] : tags_) {
-        const BodyState& s = states_[static_cast<std::size_t>(index)];
-        rec_.tagged[tag].push_back({s.position, s.angle, s.velocity});
+    for (const Tagged& t : tags_) {
+        const BodyState& s = states_[static_cast<std::size_t>(t.body)];
+        std::vector<Sample>& track = t.extra < 0 ? rec_.tagged[t.tag]
+                                                 : rec_.moreTagged[t.tag][static_cast<std::size_t>(t.extra)];
+        track.push_back({s.position, s.angle, s.velocity});
     }
 }
 

@@ -25,10 +25,17 @@ struct Sample {
 struct Recording {
     float timeStep = 1.0f / 60.0f;
     float settle = 0.0f;                              ///< seconds before timing starts
-    std::map<std::string, std::vector<Sample>> tagged; ///< per tag, every instant
+    std::map<std::string, std::vector<Sample>> tagged; ///< per tag, every instant (first body)
+    /// Per tag, the bodies after the first that carry the same tag, each every instant: a
+    /// check on a tag judges every body that has it.
+    std::map<std::string, std::vector<std::vector<Sample>>> moreTagged;
     std::vector<float> kineticEnergy;                  ///< J, dynamic bodies
     std::vector<glm::vec2> momentum;                   ///< kg m/s, dynamic bodies
     std::vector<float> maxSpeed;                       ///< m/s, fastest dynamic body
+    /// m, per instant: the largest joint error, over the revolute and weld joints the distance
+    /// between their two anchors, over rigid distance joints |length - rest length|; empty when
+    /// the scene has none of these.
+    std::vector<float> jointError;
     std::vector<float> penetration;                    ///< m, deepest contact
     std::vector<bool> allAsleep;                       ///< every dynamic body asleep
     std::vector<double> stepMs;                        ///< wall time of each step
@@ -49,8 +56,19 @@ public:
     [[nodiscard]] Recording take() { return std::move(rec_); }
 
 private:
-    std::vector<std::pair<std::string, int>> tags_; // tag, body index (first body with the tag)
+    struct Tagged {
+        std::string tag;
+        int body;  // index in the scene
+        int extra; // -1: the tag's first body (Recording::tagged); else its index in moreTagged
+    };
+    std::vector<Tagged> tags_;
     std::vector<BodyState> states_;
+    struct MeasuredJoint {
+        std::size_t index; // in SceneDesc::joints
+        float rest;        // rigid distance joint: the length it holds; < 0: a point joint
+    };
+    std::vector<MeasuredJoint> joints_;
+    std::vector<std::pair<glm::vec2, glm::vec2>> anchors_;
     Recording rec_;
 };
 

@@ -48,6 +48,17 @@ struct SummaryCell {
 /// summary[scenario index][family] for the baseline runs.
 [[nodiscard]] std::vector<std::map<std::string, SummaryCell>> summaryTable(const Report& report);
 
+/// The hard-case table at the top of the summary: one row per scenario with `hardCase` set,
+/// its baseline run on Box2D and on each e2d mode (SAT; GJK/EPA only where there is no SAT
+/// run), and the measurement of every check on each.
+struct HardCaseRow {
+    std::size_t scenario = 0;
+    std::vector<std::pair<std::string, const RunResult*>> runs; ///< engine family, run (may be null)
+    /// Per check: "kind(body) [expected e, tolerance t]: box2d m1, e2d soft sat m2 FAIL (detail), ...".
+    std::vector<std::string> numbers;
+};
+[[nodiscard]] std::vector<HardCaseRow> hardCaseTable(const Report& report);
+
 /// One point of a family's speed-against-error curve: summed over the family's swept
 /// scenarios.
 struct SweepPoint {

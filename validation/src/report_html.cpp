@@ -84,10 +84,42 @@ void enginesSection(std::ostringstream& o, const Report& r) {
          "feature runs switch one option of the baseline.</p>\n";
 }
 
+// The scenarios marked hardCase, first: pass or fail per engine and every check's numbers.
+void hardCaseTableHtml(std::ostringstream& o, const Report& r) {
+    const std::vector<HardCaseRow> rows = hardCaseTable(r);
+    if (rows.empty()) {
+        return;
+    }
+    o << "<h3 id=\"hard-cases\">Hard cases</h3>\n<table class=\"hard\">\n<tr><th>scenario</th>";
+    for (const auto& [family, run] : rows.front().runs) {
+        o << "<th>" << escapeHtml(family) << "</th>";
+    }
+    o << "<th>key numbers (each check: expected, tolerance, each engine's measurement)</th></tr>\n";
+    for (const HardCaseRow& row : rows) {
+        const Scenario& s = r.scenarios[row.scenario];
+        o << "<tr><td title=\"" << escapeHtml(s.description) << "\">" << escapeHtml(s.name) << "</td>";
+        for (const auto& [family, run] : row.runs) {
+            if (run == nullptr) {
+                o << "<td>-</td>";
+                continue;
+            }
+            o << "<td class=\"" << (run->passed ? "pass" : "fail") << "\" title=\""
+              << escapeHtml(run->failure) << "\">" << (run->passed ? "PASS" : "FAIL") << "</td>";
+        }
+        o << "<td>";
+        for (std::size_t k = 0; k < row.numbers.size(); ++k) {
+            o << (k == 0 ? "" : "<br>") << escapeHtml(row.numbers[k]);
+        }
+        o << "</td></tr>\n";
+    }
+    o << "</table>\n";
+}
+
 void summarySection(std::ostringstream& o, const Report& r) {
     const std::vector<std::string> families = engineFamilies(r);
     const auto table = summaryTable(r);
     o << "<h2 id=\"summary\">Summary</h2>\n";
+    hardCaseTableHtml(o, r);
     o << "<p class=\"note\">Baseline runs. Each cell: PASS/FAIL and the largest check error as a "
          "fraction of its tolerance (1 = at the limit). <span style=\"background:#e53935;color:#fff"
          "\">&nbsp;red&nbsp;</span>: e2d does worse than Box2D on that scenario.</p>\n";
@@ -360,7 +392,9 @@ void scalingSection(std::ostringstream& o, const Report& r) {
     plot.logY = true;
     plot.width = 720.0;
     plot.height = 400.0;
-    for (auto& [name, ps] : series) {
+    for (auto& entry : series) {
+        // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+        const PlotSeries& ps = entry.second;
         std::vector<std::size_t> idx(ps.points.size());
         for (std::size_t i = 0; i < idx.size(); ++i) {
             idx[i] = i;
@@ -441,6 +475,18 @@ std::string reportToHtml(const Report& r) {
 
 std::string reportSummary(const Report& r) {
     std::ostringstream o;
+    for (const HardCaseRow& row : hardCaseTable(r)) {
+        o << "HARD  " << r.scenarios[row.scenario].name << ":";
+        for (const auto& [family, run] : row.runs) {
+            if (run != nullptr) {
+                o << " " << family << " " << (run->passed ? "PASS" : "FAIL") << ";";
+            }
+        }
+        for (const std::string& n : row.numbers) {
+            o << "  " << n << ";";
+        }
+        o << "\n";
+    }
     const std::vector<std::string> families = engineFamilies(r);
     const auto table = summaryTable(r);
     int failed = 0;

@@ -63,6 +63,11 @@ json scenarioJson(const Scenario& s) {
     for (const Check& c : s.checks) {
         checks.push_back({{"type", checkKindName(c.kind)}, {"body", c.body}});
     }
+    json joints = json::object();
+    for (const scenes::JointDesc& j : s.scene.joints) {
+        const std::string kind = scenes::jointKindName(j.kind);
+        joints[kind] = joints.value(kind, 0) + 1;
+    }
     return {{"name", s.name},
             {"family", s.family},
             {"description", s.description},
@@ -75,8 +80,10 @@ json scenarioJson(const Scenario& s) {
             {"bodies", s.scene.bodies.size()},
             {"dynamicBodies", dynamic},
             {"shapes", shapes},
+            {"joints", joints},
             {"quick", s.quick},
             {"sweep", s.sweep},
+            {"hardCase", s.hardCase},
             {"checks", checks}};
 }
 
@@ -172,6 +179,18 @@ json reportToJson(const Report& report) {
         }
         summary.push_back(row);
     }
+    json hardCases = json::array();
+    for (const HardCaseRow& row : hardCaseTable(report)) {
+        json passed = json::object();
+        for (const auto& [family, run] : row.runs) {
+            if (run != nullptr) {
+                passed[family] = run->passed;
+            }
+        }
+        hardCases.push_back({{"scenario", report.scenarios[row.scenario].name},
+                             {"passed", passed},
+                             {"numbers", row.numbers}});
+    }
     json sweeps = json::object();
     for (const auto& [family, engineCurves] : sweepCurves(report)) {
         for (const auto& [engine, curve] : engineCurves) {
@@ -207,6 +226,7 @@ json reportToJson(const Report& report) {
             {"environment", env},
             {"engines", engines},
             {"passed", exitStatus(report) == 0},
+            {"hardCases", hardCases},
             {"summary", summary},
             {"sweeps", sweeps},
             {"features", features},

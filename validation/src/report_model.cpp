@@ -2,6 +2,8 @@
 #include "report.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <set>
 
 namespace e2d::validation {
@@ -43,6 +45,71 @@ std::vector<std::map<std::string, SummaryCell>> summaryTable(const Report& repor
         }
     }
     return table;
+}
+
+namespace {
+
+std::string shortNumber(double v) {
+    if (std::isnan(v)) {
+        return "n/a";
+    }
+    std::ostringstream out;
+    out.precision(3);
+    out << v;
+    return out.str();
+}
+
+} // namespace
+
+std::vector<HardCaseRow> hardCaseTable(const Report& report) {
+    // Box2D, then each e2d mode once: SAT, or GJK/EPA where the mode has no SAT run.
+    std::vector<std::string> shown;
+    const std::vector<std::string> families = engineFamilies(report);
+    for (const std::string& f : families) {
+        const bool gjk = f.size() > 4 && f.compare(f.size() - 4, 4, " gjk") == 0;
+        const std::string sat = gjk ? f.substr(0, f.size() - 4) + " sat" : std::string();
+        if (!gjk || std::find(families.begin(), families.end(), sat) == families.end()) {
+            shown.push_back(f);
+        }
+    }
+    std::stable_partition(shown.begin(), shown.end(), [](const std::string& f) { return f == "box2d"; });
+    const auto table = summaryTable(report);
+    std::vector<HardCaseRow> rows;
+    for (std::size_t i = 0; i < report.scenarios.size(); ++i) {
+        if (!report.scenarios[i].hardCase) {
+            continue;
+        }
+        HardCaseRow row;
+        row.scenario = i;
+        for (const std::string& f : shown) {
+            auto it = table[i].find(f);
+            row.runs.emplace_back(f, it == table[i].end() ? nullptr : it->second.run);
+        }
+        for (std::size_t k = 0; k < report.scenarios[i].checks.size(); ++k) {
+            std::string text;
+            for (const auto& [family, run] : row.runs) {
+                if (run == nullptr || k >= run->checks.size()) {
+                    continue;
+                }
+                const CheckResult& c = run->checks[k];
+                if (text.empty()) {
+                    text = c.kind + (c.body.empty() ? "" : "(" + c.body + ")") + " [expected " +
+                           shortNumber(c.expected) + ", tolerance " + shortNumber(c.tolerance) + "]:";
+                } else {
+                    text += ",";
+                }
+                text += " " + family + " " + shortNumber(c.measured) + (c.passed ? "" : " FAIL");
+                if (!c.passed && !c.detail.empty()) {
+                    text += " (" + c.detail + ")";
+                }
+            }
+            if (!text.empty()) {
+                row.numbers.push_back(text);
+            }
+        }
+        rows.push_back(std::move(row));
+    }
+    return rows;
 }
 
 std::map<std::string, std::map<std::string, std::vector<SweepPoint>>> sweepCurves(

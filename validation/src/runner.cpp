@@ -13,16 +13,26 @@
 
 namespace e2d::validation {
 
-RunResult runOne(const Scenario& scenario, const RunSpec& spec) {
+RunResult runOne(const Scenario& scenario, const RunSpec& spec, const StepProgress& stepProgress,
+                 double progressSeconds) {
     using Clock = std::chrono::steady_clock;
     RunResult result;
     result.spec = spec;
     result.bodies = static_cast<int>(scenario.scene.bodies.size());
     const auto start = Clock::now();
+    auto lastReport = start;
+    const int steps =
+        std::max(1, static_cast<int>(std::lround(scenario.duration / scenario.scene.timeStep)));
+    auto report = [&](int done, Clock::time_point now) {
+        if (stepProgress &&
+            std::chrono::duration<double>(now - lastReport).count() >= progressSeconds) {
+            lastReport = now;
+            stepProgress(spec, done, steps, std::chrono::duration<double>(now - start).count());
+        }
+    };
     try {
         std::unique_ptr<Engine> engine = makeEngine(scenario.scene, spec.config);
-        const int steps =
-            std::max(1, static_cast<int>(std::lround(scenario.duration / scenario.scene.timeStep)));
+        report(0, Clock::now());
         Recorder recorder(scenario.scene, scenario.settle);
         recorder.record(*engine, 0.0);
         for (int i = 0; i < steps; ++i) {
@@ -30,6 +40,7 @@ RunResult runOne(const Scenario& scenario, const RunSpec& spec) {
             engine->step();
             const auto t1 = Clock::now();
             recorder.record(*engine, std::chrono::duration<double, std::milli>(t1 - t0).count());
+            report(i + 1, t1);
         }
         result.steps = steps;
         const Recording rec = recorder.take();
@@ -40,7 +51,10 @@ RunResult runOne(const Scenario& scenario, const RunSpec& spec) {
         for (const Check& check : scenario.checks) {
             CheckResult c = evaluate(check, rec, g);
             result.passed = result.passed && c.passed;
-            const double ratio = c.tolerance > 0.0 ? c.error / c.tolerance : (c.passed ? 0.0 : 1.0);
+            double ratio = c.tolerance > 0.0 ? c.error / c.tolerance : (c.passed ? 0.0 : 1.0);
+            if (!std::isfinite(ratio)) {
+                ratio = kNonFiniteError;
+            }
             // A failed check counts at least as "at the limit" even when its measure is small
             // (a fallen stack with little drift, a tunnelled ball).
             result.normalizedError =
@@ -68,7 +82,7 @@ RunResult runOne(const Scenario& scenario, const RunSpec& spec) {
 
 std::vector<RunResult> runPlan(const std::vector<Scenario>& scenarios,
                                const std::vector<RunSpec>& plan, int threads,
-                               const Progress& progress) {
+                               const Progress& progress, const StepProgress& stepProgress) {
     std::vector<RunResult> results(plan.size());
     // Longest first so that one big pyramid does not start last and run alone.
     std::vector<std::size_t> order(plan.size());
@@ -91,7 +105,8 @@ std::vector<RunResult> runPlan(const std::vector<Scenario>& scenarios,
     auto worker = [&] {
         for (std::size_t n = next++; n < order.size(); n = next++) {
             const std::size_t i = order[n];
-            RunResult r = runOne(scenarios[static_cast<std::size_t>(plan[i].scenario)], plan[i]);
+            RunResult r =
+                runOne(scenarios[static_cast<std::size_t>(plan[i].scenario)], plan[i], stepProgress);
             std::lock_guard lock(mutex);
             results[i] = std::move(r);
             ++done;

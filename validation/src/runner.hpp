@@ -28,17 +28,31 @@ struct RunResult {
     std::string failure;          ///< set when the engine threw
 };
 
+/// Called from inside a long run, at most every `kStepProgressSeconds` of wall time, with the
+/// run's spec, the steps done, the steps in all and the seconds since the run started (building
+/// the world included: step 0 says how long building took). Called on the run's own thread.
+using StepProgress = std::function<void(const RunSpec&, int, int, double)>;
+inline constexpr double kStepProgressSeconds = 5.0;
+
+/// A check whose error is not finite counts this much (error / tolerance) in normalizedError,
+/// so plots and sums stay finite; the check itself fails.
+inline constexpr double kNonFiniteError = 1.0e6;
+
 /// Runs one spec to the end on the calling thread.
-[[nodiscard]] RunResult runOne(const Scenario& scenario, const RunSpec& spec);
+[[nodiscard]] RunResult runOne(const Scenario& scenario, const RunSpec& spec,
+                               const StepProgress& stepProgress = {},
+                               double progressSeconds = kStepProgressSeconds);
 
 /// Called after each finished run with (finished so far, total, that run's result); calls are
 /// serialised.
 using Progress = std::function<void(int, int, const RunResult&)>;
 
 /// Runs the plan on `threads` worker threads (each world lives and dies on one thread), the
-/// most expensive runs first. Results come back in plan order.
+/// most expensive runs first. Results come back in plan order. `stepProgress` (may be empty)
+/// is called from the worker threads, not serialised.
 [[nodiscard]] std::vector<RunResult> runPlan(const std::vector<Scenario>& scenarios,
                                              const std::vector<RunSpec>& plan, int threads,
-                                             const Progress& progress);
+                                             const Progress& progress,
+                                             const StepProgress& stepProgress = {});
 
 } // namespace e2d::validation

@@ -62,6 +62,12 @@ enum class CheckKind {
     Velocity,          ///< tagged body's final velocity vs an expected vector
     Bounds,            ///< tagged body stays inside an axis-aligned box for the whole run
     Sleep,             ///< every dynamic body asleep by time `time`
+    Turn,              ///< tagged body's rotation from its start: at least minTurn at the end,
+                       ///< at most maxTurn at every instant (a domino falls, a box stays level)
+    Moves,             ///< tagged body ends at least `distance` from its start, along
+                       ///< `direction` if given (a body must fall, a pushed box must move)
+    JointError,        ///< largest joint error over the run (Recording::jointError) <= limit
+    Period,            ///< tagged body's mean period of oscillation in x vs `period`
 };
 
 struct Check {
@@ -81,6 +87,11 @@ struct Check {
     glm::vec2 velocity{0.0f};      ///< Velocity
     glm::vec2 lower{0.0f};         ///< Bounds
     glm::vec2 upper{0.0f};         ///< Bounds
+    std::optional<float> minTurn;  ///< Turn: radians, |rotation| at the end at least this
+    std::optional<float> maxTurn;  ///< Turn: radians, |rotation| never above this
+    float distance = 0.0f;         ///< Moves: metres
+    glm::vec2 direction{0.0f};     ///< Moves: unit vector, or zero for any direction
+    float period = 0.0f;           ///< Period: seconds
 };
 
 /// One scene, what it measures and how it is judged.
@@ -94,6 +105,7 @@ struct Scenario {
     float settle = 1.0f;           ///< seconds before ms/step is timed
     bool quick = false;            ///< part of --quick
     bool sweep = true;             ///< part of the --all sweep
+    bool hardCase = false;         ///< listed in the hard-case table at the top of the summary
     std::string scaling;           ///< series name in the scaling plot, empty: not plotted
     std::map<std::string, SettingsOverride> settings; ///< key: engine ("box2d", "e2d")
     scenes::SceneDesc scene;

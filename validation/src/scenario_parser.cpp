@@ -3,13 +3,17 @@
 
 #include "generators.hpp"
 
+#include <e2d/physics/constants.hpp>
+
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <set>
 #include <sstream>
+#include <vector>
 
 namespace e2d::validation {
 namespace {
@@ -35,6 +39,51 @@ std::string typeName(const json& value) {
 
 std::string join(const std::string& path, const std::string& key) {
     return path.empty() ? key : path + "." + key;
+}
+
+// Edit distance (insertions, deletions, substitutions, each 1), for "did you mean".
+std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) {
+        row[j] = j;
+    }
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                              std::tolower(static_cast<unsigned char>(b[j - 1]));
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+// The candidate nearest to `word`, if it is near enough to be a typo of it; a candidate that
+// the word begins (a name cut short: "bounce" for "bounceHeight") comes first.
+std::string nearest(const std::string& word, const std::vector<std::string>& candidates) {
+    for (const std::string& c : candidates) {
+        if (word.size() >= 3 && c.size() > word.size() && c.compare(0, word.size(), word) == 0) {
+            return c;
+        }
+    }
+    std::string best;
+    std::size_t bestDistance = std::max<std::size_t>(2, word.size() / 3) + 1;
+    for (const std::string& c : candidates) {
+        const std::size_t d = editDistance(word, c);
+        if (d < bestDistance) {
+            best = c;
+            bestDistance = d;
+        }
+    }
+    return best;
+}
+
+std::string suggestion(const std::string& word, const std::vector<std::string>& candidates) {
+    const std::string near = nearest(word, candidates);
+    return near.empty() ? "" : " (did you mean \"" + near + "\"?)";
 }
 
 // One JSON object being read: every field read is remembered so that the fields nobody read
@@ -135,10 +184,34 @@ public:
         return number(key, fallback);
     }
 
+    // A required string naming a kind: missing, wrong type and unknown values each say so,
+    // an unknown value with the nearest valid one.
+    std::string choice(const std::string& key, const std::vector<std::string>& valid) {
+        const json* value = get(key);
+        std::string list;
+        for (std::size_t i = 0; i < valid.size(); ++i) {
+            list += (i == 0 ? "" : i + 1 == valid.size() ? " or " : ", ") + valid[i];
+        }
+        if (value == nullptr) {
+            fail(at(key), "required field is missing (one of " + list + ")");
+        }
+        if (!value->is_string()) {
+            fail(at(key), "expected a string, got " + typeName(*value));
+        }
+        const std::string got = value->get<std::string>();
+        if (std::find(valid.begin(), valid.end(), got) == valid.end()) {
+            fail(at(key), "expected " + list + ", got \"" + got + "\"" + suggestion(got, valid));
+        }
+        return got;
+    }
+
+    // Every field must have been read: the others are typos or fields of another kind of
+    // object; the message suggests the nearest field this object has.
     void finish() const {
+        const std::vector<std::string> known(used_.begin(), used_.end());
         for (auto it = value_.begin(); it != value_.end(); ++it) {
             if (!used_.contains(it.key())) {
-                fail(at(it.key()), "unknown field");
+                fail(at(it.key()), "unknown field" + suggestion(it.key(), known));
             }
         }
     }
@@ -161,6 +234,20 @@ public:
                                              : typeName(value)));
         }
         return {toNumber(value[0], path + "[0]"), toNumber(value[1], path + "[1]")};
+    }
+
+    // e2d refuses coordinates, sizes and densities beyond physics::kHuge; saying so here names
+    // the real limit instead of a confusing error from inside a run.
+    static void checkWithinE2d(float v, const std::string& path) {
+        if (std::abs(v) > physics::kHuge) {
+            fail(path, "must be within e2d's limit of " + show(physics::kHuge) +
+                           " (physics::kHuge: metres for positions and sizes, kg/m^2 for "
+                           "density), got " + show(v));
+        }
+    }
+    static void checkWithinE2d(glm::vec2 v, const std::string& path) {
+        checkWithinE2d(v.x, path + "[0]");
+        checkWithinE2d(v.y, path + "[1]");
     }
 
     static void checkAbove(float v, const std::string& path, float lo, bool strict) {
@@ -190,10 +277,13 @@ std::string indexed(const std::string& path, std::size_t i) {
 scenes::ShapeDesc parseShape(const json& value, const std::string& path) {
     Object o(value, path);
     scenes::ShapeDesc shape;
-    const std::string type = o.string("type", "");
+    const std::string type = o.choice("type", {"box", "polygon", "circle", "capsule", "segment"});
     shape.density = o.numberAbove("density", 1.0f, 0.0f, false);
     shape.friction = o.numberAbove("friction", 0.6f, 0.0f, false);
     shape.restitution = o.numberAbove("restitution", 0.0f, 0.0f, false);
+    if (shape.restitution > 1.0f) {
+        fail(o.at("restitution"), "must be in [0, 1] (e2d's limit), got " + show(shape.restitution));
+    }
     if (type == "box") {
         shape.kind = scenes::ShapeKind::Box;
         shape.halfExtents = o.vec2("halfExtents", {0.5f, 0.5f});
@@ -209,6 +299,24 @@ scenes::ShapeDesc parseShape(const json& value, const std::string& path) {
         }
         for (std::size_t i = 0; i < points.size(); ++i) {
             shape.points.push_back(Object::toVec2(points[i], indexed(o.at("points"), i)));
+        }
+        // e2d welds points closer than kLinearSlop; say so here rather than in a failed run.
+        std::vector<glm::vec2> distinct;
+        for (glm::vec2 p : shape.points) {
+            const bool near = std::any_of(distinct.begin(), distinct.end(), [&](glm::vec2 q) {
+                const glm::vec2 d = p - q;
+                return d.x * d.x + d.y * d.y < physics::kLinearSlop * physics::kLinearSlop;
+            });
+            if (!near) {
+                distinct.push_back(p);
+            }
+        }
+        if (distinct.size() < 3) {
+            fail(o.at("points"), "e2d welds points closer than physics::kLinearSlop (" +
+                                     show(physics::kLinearSlop) + " m): " +
+                                     std::to_string(distinct.size()) + " of " +
+                                     std::to_string(shape.points.size()) +
+                                     " are distinct, a polygon needs 3");
         }
         // Twice the signed area: a degenerate (collinear) polygon has none.
         float area2 = 0.0f;
@@ -238,8 +346,17 @@ scenes::ShapeDesc parseShape(const json& value, const std::string& path) {
             shape.radius = o.requireNumber("radius");
             Object::checkAbove(shape.radius, o.at("radius"), 0.0f, true);
         }
-    } else {
-        fail(o.at("type"), "expected box, polygon, circle, capsule or segment, got \"" + type + "\"");
+    }
+    Object::checkWithinE2d(shape.density, o.at("density"));
+    Object::checkWithinE2d(shape.radius, o.at("radius"));
+    if (shape.kind == scenes::ShapeKind::Box) {
+        Object::checkWithinE2d(shape.halfExtents, o.at("halfExtents"));
+    }
+    Object::checkWithinE2d(shape.center, o.at("center"));
+    Object::checkWithinE2d(shape.point1, o.at("point1"));
+    Object::checkWithinE2d(shape.point2, o.at("point2"));
+    for (std::size_t i = 0; i < shape.points.size(); ++i) {
+        Object::checkWithinE2d(shape.points[i], indexed(o.at("points"), i));
     }
     o.finish();
     return shape;
@@ -256,20 +373,43 @@ scenes::BodyKind parseBodyKind(Object& o) {
     if (type == "dynamic") {
         return scenes::BodyKind::Dynamic;
     }
-    fail(o.at("type"), "expected static, kinematic or dynamic, got \"" + type + "\"");
+    fail(o.at("type"), "expected static, kinematic or dynamic, got \"" + type + "\"" +
+                           suggestion(type, {"static", "kinematic", "dynamic"}));
 }
 
-scenes::BodyDesc parseBody(const json& value, const std::string& path) {
+scenes::BodyDesc parseBody(const json& value, const std::string& path, float duration) {
     Object o(value, path);
     scenes::BodyDesc body;
     body.kind = parseBodyKind(o);
     body.position = o.vec2("position", {0.0f, 0.0f});
+    Object::checkWithinE2d(body.position, o.at("position"));
     body.angle = o.angle("angle", 0.0f);
     body.linearVelocity = o.vec2("linearVelocity", {0.0f, 0.0f});
     body.angularVelocity = o.number("angularVelocity", 0.0f);
     body.bullet = o.boolean("bullet", false);
     body.fixedRotation = o.boolean("fixedRotation", false);
     body.tag = o.string("tag", "");
+    body.gravityScale = o.number("gravityScale", 1.0f);
+    if (std::abs(body.gravityScale) > 1000.0f) {
+        fail(o.at("gravityScale"), "must be in [-1000, 1000], got " + show(body.gravityScale));
+    }
+    body.force = o.vec2("force", {0.0f, 0.0f});
+    if (const json* impulses = o.get("impulses")) {
+        requireArray(*impulses, o.at("impulses"));
+        for (std::size_t i = 0; i < impulses->size(); ++i) {
+            Object im((*impulses)[i], indexed(o.at("impulses"), i));
+            const float time = im.numberAbove("time", 0.0f, 0.0f, false);
+            if (time > duration) {
+                fail(im.at("time"), "must be <= duration (" + show(duration) + "), got " + show(time));
+            }
+            body.impulses.emplace_back(time, Object::toVec2(im.require("impulse"), im.at("impulse")));
+            im.finish();
+        }
+    }
+    if (body.kind != scenes::BodyKind::Dynamic && (body.force != glm::vec2(0.0f) || !body.impulses.empty())) {
+        fail(o.at(body.force != glm::vec2(0.0f) ? "force" : "impulses"),
+             "only a dynamic body can be pushed");
+    }
     if (o.has("shape") && o.has("shapes")) {
         fail(o.at("shapes"), "give either shape or shapes, not both");
     }
@@ -294,7 +434,13 @@ LayoutParams parseLayout(Object& o, const std::string& defaultTag) {
     p.half = o.numberAbove("half", 0.5f, 0.0f, true);
     p.friction = o.numberAbove("friction", 0.6f, 0.0f, false);
     p.density = o.numberAbove("density", 1.0f, 0.0f, true);
+    Object::checkWithinE2d(p.origin, o.at("origin"));
+    Object::checkWithinE2d(p.half, o.at("half"));
+    Object::checkWithinE2d(p.density, o.at("density"));
     p.restitution = o.numberAbove("restitution", 0.0f, 0.0f, false);
+    if (p.restitution > 1.0f) {
+        fail(o.at("restitution"), "must be in [0, 1] (e2d's limit), got " + show(p.restitution));
+    }
     p.ground = o.boolean("ground", true);
     p.tag = o.string("tag", defaultTag);
     return p;
@@ -302,7 +448,7 @@ LayoutParams parseLayout(Object& o, const std::string& defaultTag) {
 
 void parseGenerator(const json& value, const std::string& path, scenes::SceneDesc& scene) {
     Object o(value, path);
-    const std::string type = o.string("type", "");
+    const std::string type = o.choice("type", {"verticalStack", "pyramid", "dominoes", "grid"});
     if (type == "verticalStack") {
         const int count = o.integer("count", 10, 1, 1000);
         addVerticalStack(scene, count, parseLayout(o, "top"));
@@ -322,9 +468,6 @@ void parseGenerator(const json& value, const std::string& path, scenes::SceneDes
         LayoutParams p = parseLayout(o, "last");
         p.ground = false;
         addGrid(scene, columns, rows, spacing, shape, p);
-    } else {
-        fail(o.at("type"),
-             "expected verticalStack, pyramid, dominoes or grid, got \"" + type + "\"");
     }
     o.finish();
 }
@@ -346,37 +489,41 @@ constexpr CheckName kCheckNames[] = {
     {"velocity", CheckKind::Velocity},
     {"bounds", CheckKind::Bounds},
     {"sleep", CheckKind::Sleep},
+    {"turn", CheckKind::Turn},
+    {"moves", CheckKind::Moves},
+    {"jointError", CheckKind::JointError},
+    {"period", CheckKind::Period},
 };
 
 Check parseCheck(const json& value, const std::string& path, const Scenario& scenario) {
     Object o(value, path);
     Check c;
-    const std::string type = o.string("type", "");
-    bool known = false;
+    std::vector<std::string> names;
+    for (const CheckName& n : kCheckNames) {
+        names.emplace_back(n.name);
+    }
+    const std::string type = o.choice("type", names);
     for (const CheckName& n : kCheckNames) {
         if (type == n.name) {
             c.kind = n.kind;
-            known = true;
         }
-    }
-    if (!known) {
-        std::string names;
-        for (const CheckName& n : kCheckNames) {
-            names += names.empty() ? n.name : std::string(", ") + n.name;
-        }
-        fail(o.at("type"), "expected one of " + names + ", got \"" + type + "\"");
     }
     const bool needsBody = c.kind != CheckKind::MaxPenetration && c.kind != CheckKind::MaxSpeed &&
                            c.kind != CheckKind::Momentum && c.kind != CheckKind::KineticEnergy &&
-                           c.kind != CheckKind::Sleep;
+                           c.kind != CheckKind::Sleep && c.kind != CheckKind::JointError;
     if (needsBody) {
-        c.body = o.string("body", "");
-        bool found = false;
-        for (const scenes::BodyDesc& b : scenario.scene.bodies) {
-            found = found || (!c.body.empty() && b.tag == c.body);
+        if (!o.has("body")) {
+            fail(o.at("body"), "required field is missing (the tag of the body to check)");
         }
-        if (!found) {
-            fail(o.at("body"), "no body has tag \"" + c.body + "\"");
+        c.body = o.string("body", "");
+        std::vector<std::string> tags;
+        for (const scenes::BodyDesc& b : scenario.scene.bodies) {
+            if (!b.tag.empty() && std::find(tags.begin(), tags.end(), b.tag) == tags.end()) {
+                tags.push_back(b.tag);
+            }
+        }
+        if (std::find(tags.begin(), tags.end(), c.body) == tags.end()) {
+            fail(o.at("body"), "no body has tag \"" + c.body + "\"" + suggestion(c.body, tags));
         }
     }
     auto positive = [&](const char* key) {
@@ -449,6 +596,51 @@ Check parseCheck(const json& value, const std::string& path, const Scenario& sce
     case CheckKind::Sleep:
         c.time = timeWithin("time");
         break;
+    case CheckKind::Turn: {
+        if (o.has("minTurn") || o.has("minTurnDeg")) {
+            c.minTurn = o.angle("minTurn", 0.0f);
+            Object::checkAbove(*c.minTurn, o.at("minTurn"), 0.0f, true);
+        }
+        if (o.has("maxTurn") || o.has("maxTurnDeg")) {
+            c.maxTurn = o.angle("maxTurn", 0.0f);
+            Object::checkAbove(*c.maxTurn, o.at("maxTurn"), 0.0f, true);
+        }
+        if (!c.minTurn && !c.maxTurn) {
+            fail(o.at("maxTurn"), "required field is missing (give minTurn, maxTurn or both, in "
+                                  "radians, or minTurnDeg / maxTurnDeg)");
+        }
+        break;
+    }
+    case CheckKind::JointError: {
+        c.limit = positive("limit");
+        const bool measured = std::any_of(scenario.scene.joints.begin(), scenario.scene.joints.end(),
+                                          [](const scenes::JointDesc& j) {
+                                              return j.kind == scenes::JointKind::Revolute ||
+                                                     j.kind == scenes::JointKind::Weld ||
+                                                     (j.kind == scenes::JointKind::Distance &&
+                                                      !j.enableSpring && !j.enableLimit);
+                                          });
+        if (!measured) {
+            fail(o.at("type"), "the scene has no joint this check measures (revolute, weld or rigid distance)");
+        }
+        break;
+    }
+    case CheckKind::Period:
+        c.period = positive("period");
+        tolerance();
+        break;
+    case CheckKind::Moves: {
+        c.distance = positive("distance");
+        if (const json* direction = o.get("direction")) {
+            const glm::vec2 d = Object::toVec2(*direction, o.at("direction"));
+            const float length = std::sqrt(d.x * d.x + d.y * d.y);
+            if (!(length > 0.0f)) {
+                fail(o.at("direction"), "must not be [0, 0]");
+            }
+            c.direction = d / length;
+        }
+        break;
+    }
     }
     o.finish();
     return c;
@@ -490,15 +682,259 @@ void parseSettings(Object& root, Scenario& scenario) {
     s.finish();
 }
 
+// Follows the parse as a SAX handler to tell where a document that nlohmann rejects went
+// wrong: the JSON path being read (`bodies[2].position[0]`) and the line and column.
+class ErrorLocator final : public nlohmann::json_sax<json> {
+public:
+    bool null() override { return value(); }
+    bool boolean(bool) override { return value(); }
+    bool number_integer(number_integer_t) override { return value(); }
+    bool number_unsigned(number_unsigned_t) override { return value(); }
+    bool number_float(number_float_t, const string_t&) override { return value(); }
+    bool string(string_t&) override { return value(); }
+    bool binary(binary_t&) override { return value(); }
+    bool start_object(std::size_t) override {
+        levels_.push_back({false, 0, {}});
+        return true;
+    }
+    bool key(string_t& name) override {
+        levels_.back().key = name;
+        return true;
+    }
+    bool end_object() override {
+        levels_.pop_back();
+        return value();
+    }
+    bool start_array(std::size_t) override {
+        levels_.push_back({true, 0, {}});
+        return true;
+    }
+    bool end_array() override {
+        levels_.pop_back();
+        return value();
+    }
+    bool parse_error(std::size_t position, const std::string& token,
+                     const nlohmann::detail::exception& error) override {
+        // `position` counts the characters read: just past the offending character of a
+        // syntax error, just past the whole literal of a number out of range.
+        const std::size_t back =
+            dynamic_cast<const json::out_of_range*>(&error) != nullptr ? token.size() : 1;
+        position_ = position >= back ? position - back : 0;
+        message_ = error.what();
+        // "[json.exception.parse_error.101] parse error at line 1, column 9: ..." -> the reason.
+        if (const auto bracket = message_.find("] "); bracket != std::string::npos) {
+            message_ = message_.substr(bracket + 2);
+        }
+        return false;
+    }
+
+    [[nodiscard]] std::string path() const {
+        std::string out;
+        for (const Level& level : levels_) {
+            if (level.array) {
+                out += "[" + std::to_string(level.index) + "]";
+            } else if (!level.key.empty()) {
+                out += (out.empty() ? "" : ".") + level.key;
+            }
+        }
+        return out.empty() ? "(root)" : out;
+    }
+    [[nodiscard]] std::size_t position() const { return position_; }
+    [[nodiscard]] const std::string& message() const { return message_; }
+
+private:
+    struct Level {
+        bool array;
+        std::size_t index; // arrays: elements finished so far, so the one being read
+        std::string key;   // objects: the key being read
+    };
+    bool value() {
+        if (!levels_.empty() && levels_.back().array) {
+            ++levels_.back().index;
+        }
+        return true;
+    }
+    std::vector<Level> levels_;
+    std::size_t position_ = 0;
+    std::string message_;
+};
+
+[[noreturn]] void failJson(std::string_view text) {
+    ErrorLocator locator;
+    static_cast<void>(json::sax_parse(text.begin(), text.end(), &locator));
+    const std::size_t start = std::min(locator.position(), text.size());
+    std::size_t line = 1;
+    std::size_t column = 1;
+    for (std::size_t i = 0; i < start; ++i) {
+        column = text[i] == '\n' ? 1 : column + 1;
+        line += text[i] == '\n' ? 1 : 0;
+    }
+    std::string reason = locator.message();
+    // nlohmann's parse errors repeat the place; out-of-range numbers do not have one.
+    const std::string lead = "parse error at line ";
+    if (reason.rfind(lead, 0) == 0) {
+        if (const auto colon = reason.find(": "); colon != std::string::npos) {
+            reason = reason.substr(colon + 2);
+        }
+    }
+    fail(locator.path(), "not valid JSON at line " + std::to_string(line) + ", column " +
+                             std::to_string(column) + ": " + reason);
+}
+
 } // namespace
+
+// A joint's body: an index into the file's `bodies` array (after the generators' bodies in the
+// scene), or a tag that exactly one body carries.
+int jointBody(Object& o, const std::string& key, const scenes::SceneDesc& scene, std::size_t generated) {
+    const json& v = o.require(key);
+    if (v.is_string()) {
+        const std::string tag = v.get<std::string>();
+        int found = -1;
+        int count = 0;
+        std::vector<std::string> tags;
+        for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+            if (scene.bodies[i].tag == tag) {
+                found = static_cast<int>(i);
+                ++count;
+            }
+            if (!scene.bodies[i].tag.empty()) {
+                tags.push_back(scene.bodies[i].tag);
+            }
+        }
+        if (count == 0) {
+            fail(o.at(key), "no body has tag \"" + tag + "\"" + suggestion(tag, tags));
+        }
+        if (count > 1) {
+            fail(o.at(key), std::to_string(count) + " bodies have tag \"" + tag +
+                                "\"; name one by its index in bodies");
+        }
+        return found;
+    }
+    const std::size_t own = scene.bodies.size() - generated;
+    if (own == 0) {
+        fail(o.at(key), "the file has no bodies to join by index (generators' bodies are named by tag)");
+    }
+    const int index = o.integer(key, 0, 0, static_cast<int>(own) - 1);
+    return static_cast<int>(generated) + index;
+}
+
+scenes::JointDesc parseJoint(const json& value, const std::string& path, const scenes::SceneDesc& scene,
+                             std::size_t generated) {
+    Object o(value, path);
+    scenes::JointDesc j;
+    const std::string type = o.choice("type", {"revolute", "distance", "prismatic", "weld"});
+    j.kind = type == "revolute"    ? scenes::JointKind::Revolute
+             : type == "distance"  ? scenes::JointKind::Distance
+             : type == "prismatic" ? scenes::JointKind::Prismatic
+                                   : scenes::JointKind::Weld;
+    j.bodyA = jointBody(o, "bodyA", scene, generated);
+    j.bodyB = jointBody(o, "bodyB", scene, generated);
+    if (j.bodyA == j.bodyB) {
+        fail(o.at("bodyB"), "must differ from bodyA (both are body " + std::to_string(j.bodyA) + ")");
+    }
+    if (scene.bodies[std::size_t(j.bodyA)].kind != scenes::BodyKind::Dynamic &&
+        scene.bodies[std::size_t(j.bodyB)].kind != scenes::BodyKind::Dynamic) {
+        fail(o.at("bodyB"), "one of the two bodies must be dynamic");
+    }
+    j.collideConnected = o.boolean("collideConnected", false);
+    auto point = [&](const char* key) {
+        const glm::vec2 p = Object::toVec2(o.require(key), o.at(key));
+        Object::checkWithinE2d(p, o.at(key));
+        return p;
+    };
+    // Both ends of a range or neither; lower <= upper.
+    auto range = [&](const std::string& lowKey, const std::string& highKey, bool angle) {
+        const bool low = o.has(lowKey) || (angle && o.has(lowKey + "Deg"));
+        const bool high = o.has(highKey) || (angle && o.has(highKey + "Deg"));
+        if (low != high) {
+            fail(o.at(low ? highKey : lowKey), "required field is missing (a limit needs " + lowKey +
+                                                   " and " + highKey + ")");
+        }
+        if (!low) {
+            return;
+        }
+        j.enableLimit = true;
+        j.lower = angle ? o.angle(lowKey, 0.0f) : o.requireNumber(lowKey);
+        j.upper = angle ? o.angle(highKey, 0.0f) : o.requireNumber(highKey);
+        Object::checkWithinE2d(j.lower, o.at(lowKey));
+        Object::checkWithinE2d(j.upper, o.at(highKey));
+        if (!(j.lower <= j.upper)) {
+            fail(o.at(highKey), "must be >= " + lowKey + " (" + show(j.lower) + "), got " + show(j.upper));
+        }
+    };
+    auto motor = [&](const char* maxKey) {
+        if (!o.has(maxKey)) {
+            if (o.has("motorSpeed")) {
+                fail(o.at(maxKey), std::string("required field is missing (a motor needs motorSpeed and ") +
+                                       maxKey + ")");
+            }
+            return;
+        }
+        j.enableMotor = true;
+        j.maxMotor = o.numberAbove(maxKey, 0.0f, 0.0f, false);
+        j.motorSpeed = o.number("motorSpeed", 0.0f);
+        Object::checkWithinE2d(j.maxMotor, o.at(maxKey));
+        Object::checkWithinE2d(j.motorSpeed, o.at("motorSpeed"));
+    };
+    switch (j.kind) {
+    case scenes::JointKind::Revolute:
+        j.anchorA = point("anchor");
+        range("lowerAngle", "upperAngle", true);
+        motor("maxMotorTorque");
+        break;
+    case scenes::JointKind::Prismatic: {
+        j.anchorA = point("anchor");
+        const glm::vec2 axis = o.vec2("axis", {1.0f, 0.0f});
+        const float length = std::sqrt(axis.x * axis.x + axis.y * axis.y);
+        if (!(length > 1.0e-6f)) {
+            fail(o.at("axis"), "must not be [0, 0]");
+        }
+        j.axis = axis / length;
+        range("lowerTranslation", "upperTranslation", false);
+        motor("maxMotorForce");
+        break;
+    }
+    case scenes::JointKind::Weld:
+        j.anchorA = point("anchor");
+        break;
+    case scenes::JointKind::Distance: {
+        j.anchorA = point("anchorA");
+        j.anchorB = point("anchorB");
+        const glm::vec2 d = j.anchorB - j.anchorA;
+        j.length = o.numberAbove("length", std::sqrt(d.x * d.x + d.y * d.y), 0.0f, false);
+        Object::checkWithinE2d(j.length, o.at("length"));
+        // e2d and Box2D both hold lengths below the linear slop at the slop.
+        if (j.length < physics::kLinearSlop) {
+            fail(o.at(o.has("length") ? "length" : "anchorB"),
+                 "the length must be at least physics::kLinearSlop (" + show(physics::kLinearSlop) +
+                     " m), got " + show(j.length));
+        }
+        range("minLength", "maxLength", false);
+        if (j.enableLimit && j.lower < 0.0f) {
+            fail(o.at("minLength"), "must be >= 0, got " + show(j.lower));
+        }
+        if (o.has("hertz")) {
+            j.enableSpring = true;
+            j.hertz = o.numberAbove("hertz", 0.0f, 0.0f, true);
+            j.dampingRatio = o.numberAbove("dampingRatio", 0.0f, 0.0f, false);
+            if (j.hertz > 1000.0f || j.dampingRatio > 1000.0f) {
+                fail(o.at(j.hertz > 1000.0f ? "hertz" : "dampingRatio"), "must be <= 1000");
+            }
+        }
+        break;
+    }
+    }
+    o.finish();
+    return j;
+}
 
 Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     json document;
     try {
         document = json::parse(text.begin(), text.end());
-    } catch (const json::parse_error& e) {
-        // nlohmann's message carries line and column.
-        fail("(root)", std::string("not valid JSON: ") + e.what());
+    } catch (const json::exception&) {
+        // Syntax errors and numbers no double can hold (1e999) alike.
+        failJson(text);
     }
     Object root(document, "");
     Scenario s;
@@ -506,13 +942,7 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     if (s.name.empty()) {
         fail("name", "must not be empty");
     }
-    s.family = root.string("family", "");
-    const std::set<std::string> families{"stacking", "friction", "restitution", "conservation",
-                                         "hard"};
-    if (!families.contains(s.family)) {
-        fail("family", "expected stacking, friction, restitution, conservation or hard, got \"" +
-                           s.family + "\"");
-    }
+    s.family = root.choice("family", {"stacking", "friction", "restitution", "conservation", "hard"});
     s.description = root.string("description", "");
     s.measures = root.string("measures", "");
     s.duration = root.numberAbove("duration", 5.0f, 0.0f, true);
@@ -525,12 +955,21 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     }
     s.quick = root.boolean("quick", false);
     s.sweep = root.boolean("sweep", true);
+    s.hardCase = root.boolean("hardCase", false);
     s.scaling = root.string("scaling", "");
     s.scene.name = s.name;
     s.scene.gravity = root.vec2("gravity", {0.0f, -10.0f});
     s.scene.timeStep = root.numberAbove("timeStep", 1.0f / 60.0f, 0.0f, true);
     if (s.scene.timeStep > 0.1f) {
         fail("timeStep", "must be <= 0.1 s, got " + show(s.scene.timeStep));
+    }
+    // Every step is recorded (a few dozen bytes per tagged body and instant) and runs in every
+    // configuration of the sweep: bound the count so a scenario cannot run for days or out of
+    // memory.
+    if (const double steps = std::round(double(s.duration) / s.scene.timeStep); steps > kMaxSteps) {
+        fail("timeStep", "duration / timeStep must be at most " + show(kMaxSteps) +
+                             " steps (600 s at 600 Hz), got " + show(s.duration) +
+                             " s / " + show(s.scene.timeStep) + " s = " + show(steps));
     }
     parseSettings(root, s);
 
@@ -540,14 +979,21 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
             parseGenerator((*generators)[i], indexed("generators", i), s.scene);
         }
     }
+    const std::size_t generated = s.scene.bodies.size();
     if (const json* bodies = root.get("bodies")) {
         requireArray(*bodies, "bodies");
         for (std::size_t i = 0; i < bodies->size(); ++i) {
-            s.scene.bodies.push_back(parseBody((*bodies)[i], indexed("bodies", i)));
+            s.scene.bodies.push_back(parseBody((*bodies)[i], indexed("bodies", i), s.duration));
         }
     }
     if (s.scene.bodies.empty()) {
         fail("bodies", "the scene has no bodies (give bodies or generators)");
+    }
+    if (const json* joints = root.get("joints")) {
+        requireArray(*joints, "joints");
+        for (std::size_t i = 0; i < joints->size(); ++i) {
+            s.scene.joints.push_back(parseJoint((*joints)[i], indexed("joints", i), s.scene, generated));
+        }
     }
     if (const json* checks = root.get("checks")) {
         requireArray(*checks, "checks");

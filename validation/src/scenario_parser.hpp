@@ -17,6 +17,9 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// The most steps a scenario may ask for (duration / timeStep): 600 s at 600 Hz.
+inline constexpr double kMaxSteps = 360000.0;
+
 /// Parses a scenario from JSON text. `fallbackName` names it when the file has no "name".
 /// Throws ScenarioError naming the JSON path of the first problem: syntax errors, wrong types,
 /// out-of-range values and unknown fields (typos) alike.

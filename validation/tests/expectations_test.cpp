@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace e2d::validation {
@@ -187,6 +188,140 @@ TEST(Evaluate, StandingFailsWhenTheTopFalls) {
     EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
     rec.tagged["top"].back().position = {0.3f, 9.5f}; // slid off sideways
     EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
+}
+
+// A body that turns a quarter turn and a half, through the wrap at pi: e2d reports angles in
+// (-pi, pi], so a step from 3.1 to -3.1 is a turn of 0.083 rad, not 6.2.
+Recording turning(const std::vector<float>& angles) {
+    Recording rec;
+    rec.timeStep = 0.5f;
+    for (float a : angles) {
+        rec.tagged["domino"].push_back({{0.0f, 0.0f}, a, {}});
+        rec.kineticEnergy.push_back(0.0f);
+        rec.momentum.emplace_back(0.0f);
+        rec.maxSpeed.push_back(0.0f);
+        rec.penetration.push_back(0.0f);
+        rec.allAsleep.push_back(false);
+    }
+    return rec;
+}
+
+TEST(Evaluate, TurnIsUnwrappedAndJudgedAtTheEndOrEveryInstant) {
+    const float pi = static_cast<float>(kPi);
+    // 0 -> 1.5 -> 3.0 -> -3.0 (= 3.283) -> -2.0 (= 4.283): four and a bit radians.
+    const Recording rec = turning({0.0f, 1.5f, 3.0f, -3.0f, -2.0f});
+    Check c;
+    c.kind = CheckKind::Turn;
+    c.body = "domino";
+    c.minTurn = 4.0f;
+    CheckResult r = evaluate(c, rec, 10.0f);
+    EXPECT_NEAR(r.measured, 2.0 * pi - 2.0, 1e-5);
+    EXPECT_TRUE(r.passed);
+    c.minTurn = 4.5f;
+    EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
+
+    // A box that must stay level: judged by its largest tilt, even when it ends level.
+    const Recording tipped = turning({0.0f, 0.05f, 0.3f, 0.0f});
+    Check level;
+    level.kind = CheckKind::Turn;
+    level.body = "domino";
+    level.maxTurn = 0.1f;
+    r = evaluate(level, tipped, 10.0f);
+    EXPECT_FALSE(r.passed);
+    EXPECT_NEAR(r.measured, 0.3, 1e-6);
+    level.maxTurn = 0.35f;
+    EXPECT_TRUE(evaluate(level, tipped, 10.0f).passed);
+    const Series series = seriesFor(level, tipped, 10.0f, 1);
+    ASSERT_EQ(series.measured.size(), 4u);
+    EXPECT_NEAR(series.measured[2], 0.3f, 1e-6f);
+    EXPECT_FLOAT_EQ(series.expected[2], 0.35f);
+}
+
+TEST(Evaluate, MovesMeasuresDistanceOrDistanceAlongADirection) {
+    Recording rec = turning({0.0f, 0.0f, 0.0f});
+    auto& s = rec.tagged["domino"];
+    s[1].position = {1.0f, -1.0f};
+    s[2].position = {3.0f, -4.0f}; // 5 m away, 4 m down, 3 m right
+    Check c;
+    c.kind = CheckKind::Moves;
+    c.body = "domino";
+    c.distance = 4.9f;
+    CheckResult r = evaluate(c, rec, 10.0f);
+    EXPECT_NEAR(r.measured, 5.0, 1e-6);
+    EXPECT_TRUE(r.passed);
+    c.direction = {0.0f, -1.0f};
+    r = evaluate(c, rec, 10.0f);
+    EXPECT_NEAR(r.measured, 4.0, 1e-6);
+    EXPECT_FALSE(r.passed);
+    c.direction = {0.0f, 1.0f}; // it went down, not up
+    EXPECT_NEAR(evaluate(c, rec, 10.0f).measured, -4.0, 1e-6);
+    // A non-finite position fails however far it got.
+    s[1].position.x = std::numeric_limits<float>::infinity();
+    c.direction = {0.0f, -1.0f};
+    c.distance = 1.0f;
+    EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
+}
+
+TEST(Evaluate, TheWorstBodyWithATagSpeaksForTheCheck) {
+    Recording rec = turning({0.0f, 0.0f});
+    rec.moreTagged["domino"] = {{{{0.0f, 0.0f}, 0.0f, {}}, {{0.0f, 0.0f}, 1.2f, {}}},
+                                {{{0.0f, 0.0f}, 0.0f, {}}, {{0.0f, 0.0f}, 0.4f, {}}}};
+    Check c;
+    c.kind = CheckKind::Turn;
+    c.body = "domino";
+    c.maxTurn = 0.5f;
+    const CheckResult r = evaluate(c, rec, 10.0f);
+    EXPECT_FALSE(r.passed);
+    EXPECT_NEAR(r.measured, 1.2, 1e-6);
+    EXPECT_EQ(r.detail.rfind("worst of 3 bodies tagged domino: body 2", 0), 0u) << r.detail;
+}
+
+// x = A cos(2 pi t / T), sampled at 60 Hz with its velocity: the period check finds T from the
+// leftmost turns, and fails a wrong expectation.
+TEST(Evaluate, PeriodOfASampledSwing) {
+    Recording rec;
+    rec.timeStep = 1.0f / 60.0f;
+    const double period = 1.7;
+    const double w = 2.0 * kPi / period;
+    for (int k = 0; k <= 600; ++k) {
+        const double t = k * double(rec.timeStep);
+        rec.tagged["bob"].push_back({{static_cast<float>(0.3 * std::cos(w * t)), 0.0f}, 0.0f,
+                                     {static_cast<float>(-0.3 * w * std::sin(w * t)), 0.0f}});
+        rec.kineticEnergy.push_back(0.0f);
+    }
+    Check c;
+    c.kind = CheckKind::Period;
+    c.body = "bob";
+    c.period = 1.7f;
+    c.tolerance = 0.005f;
+    CheckResult r = evaluate(c, rec, 10.0f);
+    EXPECT_NEAR(r.measured, period, 1e-3);
+    EXPECT_TRUE(r.passed);
+    c.period = 1.75f;
+    EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
+    // A body at rest has no swing to time.
+    rec.tagged["bob"].assign(601, Sample{});
+    r = evaluate(c, rec, 10.0f);
+    EXPECT_FALSE(r.passed);
+    EXPECT_EQ(r.detail, "fewer than two swings");
+}
+
+TEST(Evaluate, JointErrorIsTheLargestGapAndFailsOnNaN) {
+    Recording rec = turning({0.0f, 0.0f, 0.0f});
+    rec.jointError = {0.0f, 0.004f, 0.002f};
+    Check c;
+    c.kind = CheckKind::JointError;
+    c.limit = 0.005f;
+    CheckResult r = evaluate(c, rec, 10.0f);
+    EXPECT_FLOAT_EQ(static_cast<float>(r.measured), 0.004f);
+    EXPECT_TRUE(r.passed);
+    c.limit = 0.003f;
+    EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
+    rec.jointError[2] = std::numeric_limits<float>::quiet_NaN();
+    c.limit = 1.0f;
+    r = evaluate(c, rec, 10.0f);
+    EXPECT_FALSE(r.passed);
+    EXPECT_EQ(r.detail, "non-finite state at t = 1 s");
 }
 
 TEST(SvgPlot, ParetoFrontKeepsTheUnbeatenPoints) {

@@ -110,5 +110,56 @@ TEST(ReportModel, E2dWorseThanBox2DIsFlagged) {
               std::string::npos);
 }
 
+// Scenarios marked hardCase head the summary: one row each, Box2D first, each e2d mode once
+// (SAT), with every check's numbers; the others are not listed.
+TEST(ReportModel, HardCasesHeadTheSummary) {
+    Report report;
+    report.scenarios = {shipped("stack_5"), shipped("packed_discs")};
+    ASSERT_FALSE(report.scenarios[0].hardCase);
+    ASSERT_TRUE(report.scenarios[1].hardCase);
+    auto run = [](int scenario, const std::string& engine, const std::string& solver,
+                  const std::string& collision, bool passed, double speed) {
+        RunResult r;
+        r.spec.scenario = scenario;
+        r.spec.config.engine = engine;
+        r.spec.config.solver = solver;
+        r.spec.config.collision = collision;
+        r.passed = passed;
+        CheckResult c;
+        c.kind = "maxSpeed";
+        c.expected = 3.0;
+        c.tolerance = 3.0;
+        c.measured = speed;
+        c.passed = speed <= 3.0;
+        r.checks = {c};
+        return r;
+    };
+    report.runs = {run(0, "box2d", "soft", "sat", true, 1.0), run(1, "e2d", "soft", "sat", false, 3.4),
+                   run(1, "e2d", "soft", "gjk", false, 3.5), run(1, "box2d", "soft", "sat", true, 0.5),
+                   run(1, "e2d", "classic", "gjk", true, 0.25)};
+    const std::vector<HardCaseRow> rows = hardCaseTable(report);
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0].scenario, 1u);
+    ASSERT_EQ(rows[0].runs.size(), 3u);
+    EXPECT_EQ(rows[0].runs[0].first, "box2d");
+    EXPECT_EQ(rows[0].runs[1].first, "e2d soft sat");
+    EXPECT_EQ(rows[0].runs[2].first, "e2d classic gjk"); // no classic SAT run to prefer
+    ASSERT_EQ(rows[0].numbers.size(), 1u);
+    EXPECT_EQ(rows[0].numbers[0], "maxSpeed [expected 3, tolerance 3]: box2d 0.5, e2d soft sat 3.4 FAIL, "
+                                  "e2d classic gjk 0.25");
+    const std::string summary = reportSummary(report);
+    EXPECT_EQ(summary.rfind("HARD  packed_discs: box2d PASS; e2d soft sat FAIL; e2d classic gjk PASS;", 0), 0u)
+        << summary;
+    const std::string html = reportToHtml(report);
+    EXPECT_LT(html.find("id=\"hard-cases\""), html.find("<table class=\"summary\">"));
+    const nlohmann::json j = reportToJson(report);
+    ASSERT_EQ(j.at("hardCases").size(), 1u);
+    EXPECT_EQ(j.at("hardCases")[0].at("passed").at("e2d soft sat"), false);
+    EXPECT_TRUE(j.at("scenarios")[1].at("joints").empty());
+    report.scenarios = {shipped("ragdoll_drop")};
+    report.runs.clear();
+    EXPECT_EQ(reportToJson(report).at("scenarios")[0].at("joints").at("revolute"), 9);
+}
+
 } // namespace
 } // namespace e2d::validation

@@ -3,9 +3,13 @@
 #include "runner.hpp"
 #include "scenario_parser.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 
 namespace e2d::validation {
 namespace {
@@ -151,6 +155,204 @@ TEST(Runner, ParallelResultsComeBackInPlanOrder) {
         EXPECT_EQ(results[i].spec.scenario, plan[i].scenario);
         EXPECT_EQ(results[i].spec.variant, plan[i].variant);
     }
+}
+
+// A dynamic box of 0.2 x 0.2 mm trips an assertion inside Box2D 2.4 (its area is below
+// b2_epsilon): that run fails with the reason, and the process, e2d's runs and the report go on.
+TEST(Runner, AScenarioBox2DCannotBuildFailsThatRunOnly) {
+    const Scenario s = parseScenario(R"({"family": "hard", "duration": 0.5, "bodies": [
+        {"type": "static", "position": [0, -1], "shape": {"type": "box", "halfExtents": [5, 1]}},
+        {"position": [0, 0.0001], "tag": "speck", "shape": {"type": "box", "halfExtents": [0.0001, 0.0001]}}],
+        "checks": [{"type": "maxSpeed", "limit": 5}]})", "speck");
+    const RunResult box = runOne(s, box2d(8, 3));
+    EXPECT_FALSE(box.passed);
+    EXPECT_EQ(box.failure, "Box2D 2.4 cannot build this scene: body 1 (\"speck\"), shape 0: box area "
+                           "4e-08 m^2 is not above b2_epsilon (Box2D 2.4's ComputeMass asserts)");
+    const RunResult ours = runOne(s, e2d("soft", 4, 8, 3));
+    EXPECT_TRUE(ours.failure.empty()) << ours.failure;
+    const std::vector<RunResult> all =
+        runPlan({s}, makePlan({s}, {"box2d", "e2d"}, SweepLevel::None, false), 2, {});
+    EXPECT_EQ(all.size(), 5u); // Box2D and e2d's four modes, each with its own result
+}
+
+// A blown-up measurement must fail its check, never pass because NaN compares false.
+TEST(Runner, NonFiniteMeasurementsFailTheirChecks) {
+    Recording rec;
+    rec.timeStep = 0.5f;
+    for (int k = 0; k < 3; ++k) {
+        rec.kineticEnergy.push_back(1.0f);
+        rec.momentum.emplace_back(0.0f);
+        rec.maxSpeed.push_back(k == 1 ? std::numeric_limits<float>::quiet_NaN() : 1.0f);
+        rec.penetration.push_back(0.0f);
+        rec.allAsleep.push_back(false);
+        Sample sample;
+        sample.position = {0.0f, k == 2 ? std::numeric_limits<float>::infinity() : 1.0f};
+        rec.tagged["ball"].push_back(sample);
+    }
+    Check speed;
+    speed.kind = CheckKind::MaxSpeed;
+    speed.limit = 5.0f;
+    const CheckResult s = evaluate(speed, rec, 10.0f);
+    EXPECT_FALSE(s.passed);
+    EXPECT_EQ(s.detail, "non-finite state at t = 0.5 s");
+    EXPECT_TRUE(evaluateFinite(speed, rec, 10.0f).passed); // what NaN alone would have said
+
+    Check bounds;
+    bounds.kind = CheckKind::Bounds;
+    bounds.body = "ball";
+    bounds.lower = {-1.0f, -1.0f};
+    bounds.upper = {1.0f, 2.0f};
+    const CheckResult b = evaluate(bounds, rec, 10.0f);
+    EXPECT_FALSE(b.passed);
+    EXPECT_EQ(b.detail, "non-finite state at t = 1 s");
+}
+
+// A body launched at 1e30 m/s: whatever each engine does with it, the checks must not pass on a
+// non-finite number.
+TEST(Runner, AnAbsurdVelocityNeverPassesOnInfinity) {
+    const Scenario s = parseScenario(R"({"family": "hard", "duration": 0.2, "gravity": [0, 0],
+        "bodies": [{"position": [0, 0], "linearVelocity": [1e30, 1e30], "tag": "ball",
+                    "shape": {"type": "circle", "radius": 0.5}}],
+        "checks": [{"type": "maxSpeed", "limit": 1000}]})", "absurd");
+    for (const RunSpec& spec : {box2d(8, 3), e2d("soft", 4, 8, 3)}) {
+        SCOPED_TRACE(spec.config.engine);
+        const RunResult r = runOne(s, spec);
+        EXPECT_FALSE(r.passed);
+        EXPECT_TRUE(std::isfinite(r.normalizedError));
+    }
+}
+
+TEST(Runner, LongRunsReportTheirProgress) {
+    const Scenario s = shipped("drop_e050");
+    std::vector<int> seen;
+    const RunResult r = runOne(s, box2d(8, 3), [&](const RunSpec&, int step, int steps, double seconds) {
+        EXPECT_EQ(steps, r.steps == 0 ? steps : r.steps);
+        EXPECT_GE(seconds, 0.0);
+        seen.push_back(step);
+    }, 0.0);
+    ASSERT_FALSE(seen.empty());
+    EXPECT_EQ(seen.front(), 0); // the world is built
+    EXPECT_EQ(seen.back(), r.steps);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+}
+
+// A free box of 1 kg in zero gravity: a constant force F for t seconds moves it F t^2 / (2 m)
+// (semi-implicit Euler over n steps of dt: F dt^2 n (n + 1) / 2, within 2% at 60 steps); an
+// impulse J at t0 moves it J (T - t0) / m by T. Both engines, both pushes.
+TEST(Runner, ForcesAndImpulsesMoveBodiesAsNewtonSays) {
+    const Scenario s = parseScenario(R"({"family": "hard", "duration": 1, "gravity": [0, 0],
+        "bodies": [
+          {"position": [0, 0], "tag": "pulled", "force": [2, 0],
+           "shape": {"type": "box", "halfExtents": [0.5, 0.5], "density": 1}},
+          {"position": [0, 5], "tag": "kicked", "impulses": [{"time": 0.5, "impulse": [0, 3]}],
+           "shape": {"type": "box", "halfExtents": [0.5, 0.5], "density": 1}}],
+        "checks": [{"type": "moves", "body": "pulled", "distance": 0.9, "direction": [1, 0]},
+                   {"type": "moves", "body": "kicked", "distance": 1.4, "direction": [0, 1]}]})",
+                                     "pushes");
+    for (const RunSpec& spec : {box2d(8, 3), e2d("soft", 4, 8, 3), e2d("classic", 4, 8, 3)}) {
+        SCOPED_TRACE(spec.config.family());
+        const RunResult r = runOne(s, spec);
+        ASSERT_TRUE(r.failure.empty()) << r.failure;
+        ASSERT_EQ(r.checks.size(), 2u);
+        EXPECT_NEAR(r.checks[0].measured, 0.5 * 2.0 * 1.0, 0.02);
+        // Applied before the step that starts at 0.5 s: 30 steps of 3 m/s.
+        EXPECT_NEAR(r.checks[1].measured, 3.0 * 0.5, 0.01);
+        EXPECT_TRUE(r.passed);
+    }
+}
+
+// gravityScale 0 floats, 2 falls twice as far as 1 (1/2 g t^2 at 1 s: 4.9 m and 9.8 m).
+TEST(Runner, GravityScaleScalesEachBodysFall) {
+    const Scenario s = parseScenario(R"({"family": "hard", "duration": 1, "gravity": [0, -9.8],
+        "bodies": [
+          {"position": [0, 0], "tag": "floating", "gravityScale": 0, "shape": {"type": "circle", "radius": 0.5}},
+          {"position": [2, 0], "tag": "falling", "shape": {"type": "circle", "radius": 0.5}},
+          {"position": [4, 0], "tag": "heavy", "gravityScale": 2, "shape": {"type": "circle", "radius": 0.5}}],
+        "checks": [{"type": "bounds", "body": "floating", "lower": [-0.001, -0.001], "upper": [0.001, 0.001]},
+                   {"type": "moves", "body": "falling", "distance": 4.5, "direction": [0, -1]},
+                   {"type": "moves", "body": "heavy", "distance": 9.0, "direction": [0, -1]}]})",
+                                     "gravity scale");
+    for (const RunSpec& spec : {box2d(8, 3), e2d("soft", 4, 8, 3)}) {
+        SCOPED_TRACE(spec.config.family());
+        const RunResult r = runOne(s, spec);
+        ASSERT_EQ(r.checks.size(), 3u);
+        EXPECT_TRUE(r.checks[0].passed);
+        EXPECT_NEAR(r.checks[1].measured, 4.9, 0.1);
+        EXPECT_NEAR(r.checks[2].measured, 2.0 * r.checks[1].measured, 0.02);
+        EXPECT_TRUE(r.passed);
+    }
+}
+
+// Two bodies share the tag "top": one rests on the ground, the other is thrown off the edge. A
+// standing check on the tag judges both, and the one that fell speaks for it.
+TEST(Runner, ACheckOnASharedTagJudgesEveryBody) {
+    const std::string text = R"({"family": "hard", "duration": 2, "bodies": [
+          {"type": "static", "position": [0, -1], "shape": {"type": "box", "halfExtents": [3, 1]}},
+          {"position": [-2, 0.5], "tag": "top", "shape": {"type": "box", "halfExtents": [0.5, 0.5]}},
+          {"position": [2, 0.5], "tag": "top", "linearVelocity": [VX, 0], "shape": {"type": "box", "halfExtents": [0.5, 0.5]}}],
+        "checks": [{"type": "standing", "body": "top", "tolerance": 0.05, "minY": 0.4}]})";
+    auto withSpeed = [&](const char* vx) {
+        std::string t = text;
+        t.replace(t.find("VX"), 2, vx);
+        return parseScenario(t, "shared tag");
+    };
+    const RunResult still = runOne(withSpeed("0"), box2d(8, 3));
+    ASSERT_EQ(still.checks.size(), 1u);
+    EXPECT_TRUE(still.checks[0].passed);
+    const RunResult thrown = runOne(withSpeed("20"), box2d(8, 3));
+    ASSERT_EQ(thrown.checks.size(), 1u);
+    EXPECT_FALSE(thrown.checks[0].passed);
+    EXPECT_THAT(thrown.checks[0].detail, ::testing::StartsWith("worst of 2 bodies tagged top: body 2"));
+}
+
+// The joints of a scene are built in both engines: the shipped pendulum swings at its analytic
+// period (2 pi sqrt((r^2/2 + L^2) / (g L)) with the finite-amplitude terms, computed in the
+// file's description) within 1 %, its joint holds, and the prismatic motor stops at its limit.
+TEST(Runner, JointScenesInBothEngines) {
+    const Scenario pendulum = shipped("pendulum_period");
+    const double r = 0.05;
+    const double L = 1.0;
+    const double theta = 0.1;
+    const double t0 = 2.0 * 3.14159265358979 * std::sqrt((r * r / 2.0 + L * L) / (10.0 * L));
+    const double expected = t0 * (1.0 + theta * theta / 16.0 + 11.0 * std::pow(theta, 4) / 3072.0);
+    ASSERT_NEAR(pendulum.checks[0].period, expected, 1e-5);
+    const Scenario slider = shipped("prismatic_motor_limit");
+    for (const RunSpec& spec : {box2d(8, 3), e2d("soft", 4, 8, 3), e2d("classic", 4, 8, 3)}) {
+        SCOPED_TRACE(spec.config.family());
+        const RunResult p = runOne(pendulum, spec);
+        ASSERT_TRUE(p.failure.empty()) << p.failure;
+        ASSERT_EQ(p.checks.size(), 2u);
+        EXPECT_NEAR(p.checks[0].measured, expected, 0.01 * expected);
+        EXPECT_LT(p.checks[1].measured, 0.005);
+        const RunResult s = runOne(slider, spec);
+        ASSERT_TRUE(s.failure.empty()) << s.failure;
+        EXPECT_NEAR(s.checks[0].measured, 1.0, 0.02); // the upper limit
+    }
+}
+
+// A joint error the check must catch: a two-link chain holds a disc of its own density, but a
+// disc of 1000 times it (about 60 000 times a link's mass) pulls Box2D's joints apart.
+TEST(Runner, JointErrorCanFail) {
+    auto chain = [](const char* density) {
+        std::string text = R"({"family": "hard", "duration": 2, "bodies": [
+          {"type": "static", "position": [0, 10], "shape": {"type": "box", "halfExtents": [0.1, 0.1]}},
+          {"position": [0.5, 10], "shape": {"type": "box", "halfExtents": [0.5, 0.05], "density": 1}},
+          {"position": [1.5, 10], "shape": {"type": "box", "halfExtents": [0.5, 0.05], "density": 1}},
+          {"position": [3.0, 10], "shape": {"type": "circle", "radius": 1, "density": DENSITY}}],
+        "joints": [{"type": "revolute", "bodyA": 0, "bodyB": 1, "anchor": [0, 10]},
+                   {"type": "revolute", "bodyA": 1, "bodyB": 2, "anchor": [1, 10]},
+                   {"type": "revolute", "bodyA": 2, "bodyB": 3, "anchor": [2, 10]}],
+        "checks": [{"type": "jointError", "limit": 0.05}]})";
+        text.replace(text.find("DENSITY"), 7, density);
+        return parseScenario(text, "chain");
+    };
+    const RunResult light = runOne(chain("1"), box2d(8, 3));
+    ASSERT_EQ(light.checks.size(), 1u);
+    EXPECT_TRUE(light.checks[0].passed) << light.checks[0].measured;
+    const RunResult heavy = runOne(chain("1000"), box2d(8, 3));
+    ASSERT_EQ(heavy.checks.size(), 1u);
+    EXPECT_FALSE(heavy.checks[0].passed);
+    EXPECT_GT(heavy.checks[0].measured, 0.05);
 }
 
 } // namespace

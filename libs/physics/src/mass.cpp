@@ -11,7 +11,7 @@ namespace {
 void checkDensity(float density) {
     if (!detail::isSane(density) || density < 0.0f) {
         detail::fail("physics::computeMass()",
-                     "density must be finite and >= 0, got " + detail::formatFloat(density));
+                     "density must be finite and in [0, kHuge (" + detail::formatFloat(kHuge) + " kg/m^2)], got " + detail::formatFloat(density));
     }
 }
 

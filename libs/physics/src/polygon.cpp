@@ -11,13 +11,13 @@ namespace {
 
 void checkRadius(float radius, const char* function) {
     if (!detail::isSane(radius) || radius < 0.0f) {
-        detail::fail(function, "radius must be finite and >= 0, got " + detail::formatFloat(radius));
+        detail::fail(function, "radius must be finite and in [0, kHuge (" + detail::formatFloat(kHuge) + " m)], got " + detail::formatFloat(radius));
     }
 }
 
 void checkHalfExtent(float value, const char* name, const char* function) {
     if (!detail::isSane(value) || value <= 0.0f) {
-        detail::fail(function, std::string("half-extent ") + name + " must be finite and > 0, got " +
+        detail::fail(function, std::string("half-extent ") + name + " must be finite and in (0, kHuge (" + detail::formatFloat(kHuge) + " m)], got " +
                                    detail::formatFloat(value));
     }
 }
@@ -149,7 +149,7 @@ void validate(const ShapeGeometry& shape, const char* function) {
             fail(function, "circle center must be finite and within kHuge, got " + formatVec(circle.center));
         }
         if (!isSane(circle.radius) || circle.radius <= 0.0f) {
-            fail(function, "circle radius must be finite and > 0, got " + formatFloat(circle.radius));
+            fail(function, "circle radius must be finite and in (0, kHuge (" + formatFloat(kHuge) + " m)], got " + formatFloat(circle.radius));
         }
         return;
     }
@@ -160,7 +160,7 @@ void validate(const ShapeGeometry& shape, const char* function) {
                                formatVec(capsule.center1) + " and " + formatVec(capsule.center2));
         }
         if (!isSane(capsule.radius) || capsule.radius <= 0.0f) {
-            fail(function, "capsule radius must be finite and > 0, got " + formatFloat(capsule.radius));
+            fail(function, "capsule radius must be finite and in (0, kHuge (" + formatFloat(kHuge) + " m)], got " + formatFloat(capsule.radius));
         }
         // A capsule shorter than the slop has no usable axis; a Circle says what is meant.
         float len = distance(capsule.center1, capsule.center2);
@@ -199,7 +199,7 @@ void validate(const ShapeGeometry& shape, const char* function) {
                                std::to_string(kMaxPolygonVertices) + " (use makePolygon())");
         }
         if (!isSane(polygon.radius) || polygon.radius < 0.0f) {
-            fail(function, "polygon radius must be finite and >= 0, got " + formatFloat(polygon.radius));
+            fail(function, "polygon radius must be finite and in [0, kHuge (" + formatFloat(kHuge) + " m)], got " + formatFloat(polygon.radius));
         }
         if (!isSane(polygon.centroid)) {
             fail(function, "polygon centroid must be finite and within kHuge, got " +

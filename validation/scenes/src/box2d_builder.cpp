@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace e2d::scenes {
@@ -85,9 +88,159 @@ void addShape(b2Body* body, const ShapeDesc& desc) {
     }
 }
 
+// Twice the signed area of a polygon given in order.
+float twiceArea(const std::vector<glm::vec2>& points) {
+    float area2 = 0.0f;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const glm::vec2 a = points[i];
+        const glm::vec2 b = points[(i + 1) % points.size()];
+        area2 += a.x * b.y - a.y * b.x;
+    }
+    return area2;
+}
+
+// Box2D 2.4's own weld of b2PolygonShape::Set: a point within 0.5 b2_linearSlop of a kept one
+// is dropped.
+std::vector<glm::vec2> welded(const std::vector<glm::vec2>& points) {
+    constexpr float kWeld = 0.5f * b2_linearSlop;
+    std::vector<glm::vec2> kept;
+    for (glm::vec2 p : points) {
+        const bool unique = std::none_of(kept.begin(), kept.end(), [&](glm::vec2 q) {
+            const glm::vec2 d = p - q;
+            return d.x * d.x + d.y * d.y < kWeld * kWeld;
+        });
+        if (unique) {
+            kept.push_back(p);
+        }
+    }
+    return kept;
+}
+
+std::string shapeUnsupported(const ShapeDesc& shape, bool massive) {
+    const auto number = [](float v) {
+        std::ostringstream out;
+        out << v;
+        return out.str();
+    };
+    switch (shape.kind) {
+    case ShapeKind::Polygon: {
+        const std::vector<glm::vec2> kept = welded(shape.points);
+        if (kept.size() < 3) {
+            return "Box2D 2.4 welds polygon vertices closer than 0.5 b2_linearSlop (0.0025 m) "
+                   "and " + std::to_string(kept.size()) + " of " +
+                   std::to_string(shape.points.size()) + " stay (b2PolygonShape::Set asserts)";
+        }
+        if (massive && !(0.5f * std::abs(twiceArea(kept)) > b2_epsilon)) {
+            return "polygon area " + number(0.5f * std::abs(twiceArea(kept))) +
+                   " m^2 is not above b2_epsilon (Box2D 2.4's ComputeMass asserts)";
+        }
+        return {};
+    }
+    case ShapeKind::Box:
+        if (massive && !(4.0f * shape.halfExtents.x * shape.halfExtents.y > b2_epsilon)) {
+            return "box area " + number(4.0f * shape.halfExtents.x * shape.halfExtents.y) +
+                   " m^2 is not above b2_epsilon (Box2D 2.4's ComputeMass asserts)";
+        }
+        return {};
+    case ShapeKind::Capsule: {
+        const glm::vec2 axis = shape.point2 - shape.point1;
+        const float length = std::sqrt(axis.x * axis.x + axis.y * axis.y);
+        const float area = length * 2.0f * std::max(shape.radius - b2_polygonRadius, 0.001f);
+        if (massive && length > 0.0f && !(area > b2_epsilon)) {
+            return "the box between the capsule's discs has area " + number(area) +
+                   " m^2, not above b2_epsilon (Box2D 2.4's ComputeMass asserts)";
+        }
+        return {};
+    }
+    case ShapeKind::Circle:
+    case ShapeKind::Segment:
+        return {};
+    }
+    return {};
+}
+
 } // namespace
 
+namespace {
+
+// Box2D 2.4's Initialize() functions take world anchors and set the reference angle, as
+// JointDesc does.
+b2Joint* createJoint(b2World& world, const JointDesc& j, b2Body* a, b2Body* b) {
+    switch (j.kind) {
+    case JointKind::Revolute: {
+        b2RevoluteJointDef def;
+        def.Initialize(a, b, toB2(j.anchorA));
+        def.collideConnected = j.collideConnected;
+        def.enableLimit = j.enableLimit;
+        def.lowerAngle = j.lower;
+        def.upperAngle = j.upper;
+        def.enableMotor = j.enableMotor;
+        def.motorSpeed = j.motorSpeed;
+        def.maxMotorTorque = j.maxMotor;
+        return world.CreateJoint(&def);
+    }
+    case JointKind::Prismatic: {
+        b2PrismaticJointDef def;
+        def.Initialize(a, b, toB2(j.anchorA), toB2(j.axis));
+        def.collideConnected = j.collideConnected;
+        def.enableLimit = j.enableLimit;
+        def.lowerTranslation = j.lower;
+        def.upperTranslation = j.upper;
+        def.enableMotor = j.enableMotor;
+        def.motorSpeed = j.motorSpeed;
+        def.maxMotorForce = j.maxMotor;
+        return world.CreateJoint(&def);
+    }
+    case JointKind::Weld: {
+        b2WeldJointDef def;
+        def.Initialize(a, b, toB2(j.anchorA));
+        def.collideConnected = j.collideConnected;
+        return world.CreateJoint(&def);
+    }
+    case JointKind::Distance: {
+        b2DistanceJointDef def;
+        // Rigid: minLength = maxLength = length (Initialize's default).
+        def.Initialize(a, b, toB2(j.anchorA), toB2(j.anchorB));
+        def.collideConnected = j.collideConnected;
+        if (j.length > 0.0f) {
+            def.length = def.minLength = def.maxLength = j.length;
+        }
+        if (j.enableSpring || j.enableLimit) {
+            // Box2D 2.4 solves a distance joint with minLength < maxLength as a spring (stiffness
+            // > 0) or a rope (stiffness 0) between the two.
+            def.minLength = j.enableLimit ? j.lower : 0.0f;
+            def.maxLength = j.enableLimit ? j.upper : FLT_MAX;
+        }
+        if (j.enableSpring) {
+            b2LinearStiffness(def.stiffness, def.damping, j.hertz, j.dampingRatio, a, b);
+        }
+        return world.CreateJoint(&def);
+    }
+    }
+    return nullptr;
+}
+
+} // namespace
+
+std::string box2DUnsupported(const SceneDesc& scene) {
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        const BodyDesc& body = scene.bodies[i];
+        for (std::size_t j = 0; j < body.shapes.size(); ++j) {
+            // Box2D computes mass (and asserts on it) only for dynamic bodies with density.
+            const bool massive = body.kind == BodyKind::Dynamic && body.shapes[j].density > 0.0f;
+            if (std::string why = shapeUnsupported(body.shapes[j], massive); !why.empty()) {
+                return "body " + std::to_string(i) + (body.tag.empty() ? "" : " (\"" + body.tag + "\")") +
+                       ", shape " + std::to_string(j) + ": " + why;
+            }
+        }
+    }
+    return {};
+}
+
 Box2DScene buildBox2D(const SceneDesc& scene, const Box2DSettings& settings) {
+    if (std::string why = box2DUnsupported(scene); !why.empty()) {
+        throw std::invalid_argument("Box2D 2.4 cannot build this scene: " + why);
+    }
     Box2DScene out;
     out.settings = settings;
     out.world = std::make_unique<b2World>(toB2(scene.gravity));
@@ -106,11 +259,17 @@ Box2DScene buildBox2D(const SceneDesc& scene, const Box2DSettings& settings) {
         def.angularVelocity = desc.angularVelocity;
         def.bullet = desc.bullet;
         def.fixedRotation = desc.fixedRotation;
+        def.gravityScale = desc.gravityScale;
         b2Body* body = out.world->CreateBody(&def);
         for (const ShapeDesc& shape : desc.shapes) {
             addShape(body, shape);
         }
         out.bodies.push_back(body);
+    }
+    out.joints.reserve(scene.joints.size());
+    for (const JointDesc& j : scene.joints) {
+        out.joints.push_back(createJoint(*out.world, j, out.bodies[std::size_t(j.bodyA)],
+                                         out.bodies[std::size_t(j.bodyB)]));
     }
     return out;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/scenes/e2d_builder.hpp>
 
+#include <cmath>
 #include <span>
 
 namespace e2d::scenes {
@@ -42,10 +43,80 @@ ph::BodyType toType(BodyKind kind) {
 
 } // namespace
 
+ph::JointDef toE2dJoint(const JointDesc& j, const SceneDesc& scene, const ph::World& world,
+                        const std::vector<ph::BodyId>& bodies) {
+    const ph::BodyId a = bodies[std::size_t(j.bodyA)];
+    const ph::BodyId b = bodies[std::size_t(j.bodyB)];
+    const float referenceAngle =
+        scene.bodies[std::size_t(j.bodyB)].angle - scene.bodies[std::size_t(j.bodyA)].angle;
+    switch (j.kind) {
+    case JointKind::Revolute: {
+        ph::RevoluteJointDef d;
+        d.bodyA = a;
+        d.bodyB = b;
+        d.localAnchorA = world.localPoint(a, j.anchorA);
+        d.localAnchorB = world.localPoint(b, j.anchorA);
+        d.referenceAngle = referenceAngle;
+        d.enableLimit = j.enableLimit;
+        d.lowerAngle = j.lower;
+        d.upperAngle = j.upper;
+        d.enableMotor = j.enableMotor;
+        d.motorSpeed = j.motorSpeed;
+        d.maxMotorTorque = j.maxMotor;
+        d.collideConnected = j.collideConnected;
+        return d;
+    }
+    case JointKind::Prismatic: {
+        ph::PrismaticJointDef d;
+        d.bodyA = a;
+        d.bodyB = b;
+        d.localAnchorA = world.localPoint(a, j.anchorA);
+        d.localAnchorB = world.localPoint(b, j.anchorA);
+        d.localAxisA = world.localVector(a, j.axis);
+        d.referenceAngle = referenceAngle;
+        d.enableLimit = j.enableLimit;
+        d.lowerTranslation = j.lower;
+        d.upperTranslation = j.upper;
+        d.enableMotor = j.enableMotor;
+        d.motorSpeed = j.motorSpeed;
+        d.maxMotorForce = j.maxMotor;
+        d.collideConnected = j.collideConnected;
+        return d;
+    }
+    case JointKind::Weld: {
+        ph::WeldJointDef d;
+        d.bodyA = a;
+        d.bodyB = b;
+        d.localAnchorA = world.localPoint(a, j.anchorA);
+        d.localAnchorB = world.localPoint(b, j.anchorA);
+        d.referenceAngle = referenceAngle;
+        d.collideConnected = j.collideConnected;
+        return d;
+    }
+    case JointKind::Distance:
+        break;
+    }
+    ph::DistanceJointDef d;
+    d.bodyA = a;
+    d.bodyB = b;
+    d.localAnchorA = world.localPoint(a, j.anchorA);
+    d.localAnchorB = world.localPoint(b, j.anchorB);
+    const glm::vec2 gap = j.anchorB - j.anchorA;
+    d.length = j.length > 0.0f ? j.length : std::sqrt(gap.x * gap.x + gap.y * gap.y);
+    d.enableSpring = j.enableSpring;
+    d.hertz = j.hertz;
+    d.dampingRatio = j.dampingRatio;
+    d.enableLimit = j.enableLimit;
+    d.minLength = j.lower;
+    d.maxLength = j.enableLimit ? j.upper : ph::kHuge;
+    d.collideConnected = j.collideConnected;
+    return d;
+}
+
 E2dScene buildE2d(const SceneDesc& scene, ph::WorldDef def) {
     def.gravity = scene.gravity;
     def.bodyCapacity = static_cast<int>(scene.bodies.size());
-    E2dScene out{ph::World(def), {}, scene.timeStep};
+    E2dScene out{ph::World(def), {}, {}, scene.timeStep};
     out.bodies.reserve(scene.bodies.size());
     for (const BodyDesc& desc : scene.bodies) {
         ph::BodyDef bd;
@@ -56,6 +127,7 @@ E2dScene buildE2d(const SceneDesc& scene, ph::WorldDef def) {
         bd.angularVelocity = desc.angularVelocity;
         bd.fixedRotation = desc.fixedRotation;
         bd.isBullet = desc.bullet;
+        bd.gravityScale = desc.gravityScale;
         const ph::BodyId body = out.world.createBody(bd);
         for (const ShapeDesc& shape : desc.shapes) {
             ph::ShapeDef sd;
@@ -65,6 +137,10 @@ E2dScene buildE2d(const SceneDesc& scene, ph::WorldDef def) {
             out.world.createShape(body, sd, toE2dGeometry(shape));
         }
         out.bodies.push_back(body);
+    }
+    out.joints.reserve(scene.joints.size());
+    for (const JointDesc& j : scene.joints) {
+        out.joints.push_back(out.world.createJoint(toE2dJoint(j, scene, out.world, out.bodies)));
     }
     return out;
 }

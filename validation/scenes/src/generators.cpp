@@ -5,6 +5,20 @@
 
 namespace e2d::scenes {
 
+const char* jointKindName(JointKind kind) {
+    switch (kind) {
+    case JointKind::Revolute:
+        return "revolute";
+    case JointKind::Distance:
+        return "distance";
+    case JointKind::Prismatic:
+        return "prismatic";
+    case JointKind::Weld:
+        return "weld";
+    }
+    return "?";
+}
+
 BodyDesc staticBox(glm::vec2 position, glm::vec2 halfExtents, float friction) {
     BodyDesc body;
     body.kind = BodyKind::Static;

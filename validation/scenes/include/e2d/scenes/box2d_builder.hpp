@@ -4,10 +4,12 @@
 #include <e2d/scenes/scene.hpp>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 class b2World;
 class b2Body;
+class b2Joint;
 
 namespace e2d::scenes {
 
@@ -27,6 +29,7 @@ struct Box2DSettings {
 struct Box2DScene {
     std::unique_ptr<b2World> world;
     std::vector<b2Body*> bodies; ///< in SceneDesc order
+    std::vector<b2Joint*> joints; ///< in SceneDesc::joints order
     Box2DSettings settings;
 
     Box2DScene();
@@ -37,6 +40,15 @@ struct Box2DScene {
     void step(float timeStep);
 };
 
+/// Why Box2D 2.4 cannot build `scene` (empty when it can). Box2D checks its input with
+/// assertions that abort the process: a polygon whose vertices weld (closer than
+/// 0.5 b2_linearSlop = 0.0025 m) to fewer than three, or a dynamic polygon whose area is not above
+/// b2_epsilon (b2PolygonShape::Set, ComputeMass). The reason names the body and shape
+/// (`bodies[3].shapes[0]: ...`).
+[[nodiscard]] std::string box2DUnsupported(const SceneDesc& scene);
+
+/// Builds `scene` in a new Box2D world. Throws std::invalid_argument with box2DUnsupported()'s
+/// reason instead of building a scene Box2D would abort on.
 Box2DScene buildBox2D(const SceneDesc& scene, const Box2DSettings& settings = {});
 
 } // namespace e2d::scenes

@@ -14,6 +14,7 @@ namespace e2d::scenes {
 struct E2dScene {
     physics::World world;
     std::vector<physics::BodyId> bodies;
+    std::vector<physics::JointId> joints; ///< in SceneDesc::joints order
     float timeStep = 1.0f / 60.0f;
 
     void step() { world.step(timeStep); }
@@ -22,6 +23,11 @@ struct E2dScene {
 /// Builds the scene into a world made from `def` (its gravity is replaced by the scene's, and
 /// bodyCapacity by the scene's body count).
 E2dScene buildE2d(const SceneDesc& scene, physics::WorldDef def = {});
+
+/// The joint a JointDesc describes between `world`'s bodies `bodies` (in SceneDesc order, at
+/// their starting poses): world anchors and axis become local ones.
+physics::JointDef toE2dJoint(const JointDesc& joint, const SceneDesc& scene, const physics::World& world,
+                             const std::vector<physics::BodyId>& bodies);
 
 /// The shape a ShapeDesc describes, as e2d geometry.
 physics::ShapeGeometry toE2dGeometry(const ShapeDesc& shape);

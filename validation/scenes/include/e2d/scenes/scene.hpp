@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 /// Engine-neutral scene descriptions, shared by the benchmarks and the validation harness so a
@@ -37,15 +38,53 @@ struct BodyDesc {
     float angularVelocity = 0.0f;
     bool bullet = false;
     bool fixedRotation = false;
+    float gravityScale = 1.0f;      ///< multiplies the scene's gravity for this body
+    glm::vec2 force{0.0f, 0.0f};    ///< N, applied at the centre of mass before every step
+    /// Impulses at the centre of mass: each (time in s, impulse in N s) is applied before the
+    /// first step that starts at or after its time.
+    std::vector<std::pair<float, glm::vec2>> impulses;
     std::vector<ShapeDesc> shapes;
-    std::string tag; ///< names bodies the metrics look at, e.g. "top"
+    std::string tag; ///< names bodies the metrics look at, e.g. "top"; several may share one
 };
+
+enum class JointKind { Revolute, Distance, Prismatic, Weld };
+
+/// A joint between two bodies of the scene, given in world coordinates at creation (as Box2D's
+/// Initialize() functions take it); each builder turns the anchors and axis into its bodies'
+/// local frames from their starting poses. The reference angle is angle B - angle A at creation.
+struct JointDesc {
+    JointKind kind = JointKind::Revolute;
+    int bodyA = 0;                    ///< index in SceneDesc::bodies
+    int bodyB = 0;
+    glm::vec2 anchorA{0.0f, 0.0f};    ///< world, m; revolute, prismatic, weld: the one anchor
+    glm::vec2 anchorB{0.0f, 0.0f};    ///< world, m; distance only
+    glm::vec2 axis{1.0f, 0.0f};       ///< prismatic: unit axis, world
+    bool collideConnected = false;
+    /// Revolute: angles (rad); prismatic: translations along the axis (m); distance: the least
+    /// and largest length (m, a rope when there is no spring).
+    bool enableLimit = false;
+    float lower = 0.0f;
+    float upper = 0.0f;
+    /// Revolute: rad/s and N m; prismatic: m/s and N.
+    bool enableMotor = false;
+    float motorSpeed = 0.0f;
+    float maxMotor = 0.0f;
+    /// Distance: a spring of `hertz` and `dampingRatio` instead of a rigid rod.
+    bool enableSpring = false;
+    float hertz = 0.0f;
+    float dampingRatio = 0.0f;
+    float length = 0.0f;              ///< distance: rest length, m (the anchors' distance if 0)
+};
+
+/// The name of a joint kind as in scenario files ("revolute", ...).
+const char* jointKindName(JointKind kind);
 
 struct SceneDesc {
     std::string name;
     glm::vec2 gravity{0.0f, -10.0f}; ///< m/s^2
     float timeStep = 1.0f / 60.0f;   ///< seconds
     std::vector<BodyDesc> bodies;
+    std::vector<JointDesc> joints;
 };
 
 /// A static box: the ground of most scenes.
