@@ -13,6 +13,11 @@ physics::WorldDef makeWorldDef(const core::Config& config) {
     def.solver.subSteps = std::min(config.collisionResolutionSteps, 64);
     def.solver.velocityIterations = std::min(config.collisionResolutionSteps, 256);
     def.solver.linearSleepTolerance = metres(config.minRigidbodySpeed);
+    // Both keys are already checked by core (>= 0, and [0, 1]); only the physics' upper bound
+    // on the overlap is left, a cap like the sub-steps' above rather than an error.
+    def.solver.classicAllowedPenetration =
+        std::min(metres(config.allowedPenetration), physics::kMaxClassicAllowedPenetration);
+    def.solver.classicPositionBias = config.penetrationBiasFactor;
     return def;
 }
 

@@ -82,12 +82,29 @@ TEST(EngineConfig, PhysicsKeysFeedTheWorldInMetres) {
     EXPECT_EQ(def.solver.subSteps, 10);
     EXPECT_EQ(def.solver.velocityIterations, 10);
     EXPECT_FLOAT_EQ(def.solver.linearSleepTolerance, 0.05f);
+    // 0.1 units of allowed penetration is 1 mm; the bias factor has no unit.
+    EXPECT_FLOAT_EQ(def.solver.classicAllowedPenetration, 0.001f);
+    EXPECT_FLOAT_EQ(def.solver.classicPositionBias, 0.1f);
 
     // The defaults give the library's own gravity direction and the config's value.
     const physics::WorldDef defaults = engine::makeWorldDef(core::Config{});
     EXPECT_EQ(defaults.gravity.x, 0.0f);
     EXPECT_FLOAT_EQ(defaults.gravity.y, core::Config{}.gravityY);
     EXPECT_EQ(defaults.solver.subSteps, core::Config{}.collisionResolutionSteps);
+    // The seed's position-correction defaults are the classic solver's own, bit for bit.
+    EXPECT_EQ(defaults.solver.classicAllowedPenetration, physics::SolverDef{}.classicAllowedPenetration);
+    EXPECT_EQ(defaults.solver.classicPositionBias, physics::SolverDef{}.classicPositionBias);
+
+    // More allowed penetration than the solver takes is capped; a bias factor of 0 (no
+    // position correction) reaches the world as 0.
+    core::Config loose;
+    loose.unitsPerMetre = 100.0;
+    loose.allowedPenetration = 50.0f; // 0.5 m
+    loose.penetrationBiasFactor = 0.0f;
+    const physics::WorldDef looseDef = engine::makeWorldDef(loose);
+    EXPECT_EQ(looseDef.solver.classicAllowedPenetration, physics::kMaxClassicAllowedPenetration);
+    EXPECT_EQ(looseDef.solver.classicPositionBias, 0.0f);
+    EXPECT_NO_THROW(physics::World{looseDef});
 
     // More steps than the soft-step solver takes are capped, not an error.
     core::Config many;
@@ -97,6 +114,38 @@ TEST(EngineConfig, PhysicsKeysFeedTheWorldInMetres) {
     // A world can be made from any valid config.
     EXPECT_NO_THROW(physics::World{engine::makeWorldDef(many)});
     EXPECT_NO_THROW(physics::World{engine::makeWorldDef(r.config)});
+}
+
+TEST(EngineConfig, PenetrationKeysTuneAClassicWorld) {
+    // A unit box spawned 10 cm into the ground of a classic-solver world made from a config:
+    // the position iterations lift it until the allowed penetration is left, 2 units = 2 cm
+    // at 100 units per metre; with a bias factor of 0 it is not lifted at all.
+    const auto overlapAfter = [](float allowedPenetration, float biasFactor, int steps) {
+        core::Config config;
+        config.unitsPerMetre = 100.0;
+        config.gravityY = -1000.0f;
+        config.allowedPenetration = allowedPenetration;
+        config.penetrationBiasFactor = biasFactor;
+        physics::WorldDef def = engine::makeWorldDef(config);
+        def.solver.mode = physics::SolverMode::Classic;
+        physics::World world{def};
+        const physics::BodyId ground = world.createBody({});
+        world.createShape(ground, {}, physics::makeOffsetBox(10.0f, 1.0f, {0.0f, -1.0f}, 0.0f));
+        physics::BodyDef bd;
+        bd.type = physics::BodyType::Dynamic;
+        bd.position = {0.0f, 0.4f};
+        const physics::BodyId box = world.createBody(bd);
+        world.createShape(box, {}, physics::makeBox(0.5f, 0.5f));
+        for (int i = 0; i < steps; ++i) {
+            world.step(1.0f / 60.0f);
+        }
+        return 0.5f - world.transform(box).p.y; // metres; the ground's top is y = 0
+    };
+    EXPECT_NEAR(overlapAfter(2.0f, 0.2f, 300), 0.02f, 1e-3f);
+    EXPECT_NEAR(overlapAfter(0.5f, 0.2f, 300), 0.005f, 1e-3f);
+    // A smaller factor corrects more slowly; 0 leaves the overlap as it was.
+    EXPECT_GT(overlapAfter(0.5f, 0.05f, 6), overlapAfter(0.5f, 0.2f, 6) + 0.02f);
+    EXPECT_NEAR(overlapAfter(0.5f, 0.0f, 6), 0.1f, 1e-5f);
 }
 
 TEST(EngineConfig, BadValuesAreErrorsNamingFileLineAndKey) {

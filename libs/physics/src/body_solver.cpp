@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "body_solver.hpp"
 
-#include <e2d/physics/constants.hpp>
-
 #include <algorithm>
 #include <cmath>
 
@@ -195,8 +193,11 @@ void solveClassic(const SolverStep& step) {
     applyRestitution(step.constraints, step.states, def.restitutionThreshold, step.dt);
     integratePositions(step.states, step.dt);
     for (int i = 0; i < def.positionIterations; ++i) {
-        // Box2D 2.4's stopping rule: done once nothing overlaps by more than 3 slops.
-        const bool contactsDone = solvePositionsClassic(step.constraints, step.states) >= -3.0f * kLinearSlop;
+        // Box2D 2.4's stopping rule: done once nothing overlaps by more than 3 times the
+        // allowed penetration (3 slops by default).
+        const float allowed = def.classicAllowedPenetration;
+        const bool contactsDone = solvePositionsClassic(step.constraints, step.states, allowed,
+                                                        def.classicPositionBias) >= -3.0f * allowed;
         const bool jointsDone = solveJointPositions(step.joints, step.jointOrder, step.states);
         if (contactsDone && jointsDone) {
             break;

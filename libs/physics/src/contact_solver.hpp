@@ -142,9 +142,11 @@ void applyRestitution(std::span<ContactConstraint> constraints, std::span<BodySt
 void prepareClassic(std::span<ContactConstraint> constraints, float restitutionThreshold);
 void solveVelocitiesClassic(std::span<ContactConstraint> constraints, std::span<BodyState> states,
                             float invDt);
-// One non-linear Gauss-Seidel pass over the separations; moves deltaPosition/deltaRotation.
+// One non-linear Gauss-Seidel pass over the separations; moves deltaPosition/deltaRotation,
+// pushing each point apart by `bias` times its overlap beyond `allowedPenetration` (metres).
 // Returns the smallest separation seen.
-float solvePositionsClassic(std::span<ContactConstraint> constraints, std::span<BodyState> states);
+float solvePositionsClassic(std::span<ContactConstraint> constraints, std::span<BodyState> states,
+                            float allowedPenetration, float bias);
 
 // The current separation of point `p` of `c` from the bodies' motion since the step began.
 inline float currentSeparation(const ContactConstraint& c, const ContactConstraintPoint& p,

@@ -4,8 +4,6 @@
 #include "contact_solver.hpp"
 #include "contact_solver_common.hpp"
 
-#include <e2d/physics/constants.hpp>
-
 #include <algorithm>
 #include <cmath>
 
@@ -109,9 +107,8 @@ void solveVelocitiesClassic(std::span<ContactConstraint> constraints, std::span<
     }
 }
 
-float solvePositionsClassic(std::span<ContactConstraint> constraints,
-                            std::span<BodyState> states) {
-    constexpr float kBaumgarte = 0.2f;
+float solvePositionsClassic(std::span<ContactConstraint> constraints, std::span<BodyState> states,
+                            float allowedPenetration, float bias) {
     constexpr float kMaxCorrection = 0.2f;
     float minSeparation = 0.0f;
     BodyState dummyA;
@@ -126,7 +123,7 @@ float solvePositionsClassic(std::span<ContactConstraint> constraints,
             float s = dot((sb->deltaPosition - sa->deltaPosition) + (prB - prA), normal) +
                       cp.baseSeparation;
             minSeparation = std::min(minSeparation, s);
-            float correction = std::clamp(kBaumgarte * (s + kLinearSlop), -kMaxCorrection, 0.0f);
+            float correction = std::clamp(bias * (s + allowedPenetration), -kMaxCorrection, 0.0f);
             float k = effectiveMass(normal, prA, prB, c);
             float impulse = -correction * k;
             Vec2 p = impulse * normal;

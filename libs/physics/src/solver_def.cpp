@@ -41,6 +41,13 @@ void requireNonNegative(const char* name, float value) {
     }
 }
 
+void requireInterval(const char* name, float value, float lo, float hi) {
+    if (!(std::isfinite(value) && value >= lo && value <= hi)) {
+        fail(std::string(name) + " must be finite and in [" + text(lo) + ", " + text(hi) + "], got " +
+             text(value));
+    }
+}
+
 bool isRule(MixingRule rule) {
     auto r = static_cast<int>(rule);
     return r >= static_cast<int>(MixingRule::GeometricMean) && r <= static_cast<int>(MixingRule::Multiply);
@@ -57,6 +64,9 @@ void validate(const SolverDef& def) {
     requireRange("relaxIterations", def.relaxIterations, 0, 64);
     requireRange("velocityIterations", def.velocityIterations, 1, 256);
     requireRange("positionIterations", def.positionIterations, 0, 256);
+    requireInterval("classicAllowedPenetration", def.classicAllowedPenetration, 0.0f,
+                    kMaxClassicAllowedPenetration);
+    requireInterval("classicPositionBias", def.classicPositionBias, 0.0f, 1.0f);
     requirePositive("contactHertz", def.contactHertz);
     requireNonNegative("contactDampingRatio", def.contactDampingRatio);
     requirePositive("contactPushMaxSpeed", def.contactPushMaxSpeed);

@@ -18,6 +18,8 @@ TEST(WorldDefs, DefaultsAreDocumentedValues) {
     EXPECT_EQ(def.gravity, Vec2(0.0f, -10.0f));
     EXPECT_EQ(def.collisionAlgorithm, CollisionAlgorithm::Sat);
     EXPECT_EQ(def.speculativeDistance, kSpeculativeDistance);
+    EXPECT_EQ(def.solver.classicAllowedPenetration, kLinearSlop);
+    EXPECT_EQ(def.solver.classicPositionBias, 0.2f);
     ShapeDef shape;
     EXPECT_EQ(shape.density, 1.0f);
     EXPECT_EQ(shape.friction, 0.6f);
@@ -66,6 +68,47 @@ TEST(WorldDefs, WorldDefFieldsAreCheckedByName) {
     def.shapeCapacity = 20;
     World world(def);
     EXPECT_EQ(world.collisionAlgorithm(), CollisionAlgorithm::GjkEpa);
+}
+
+TEST(WorldDefs, ClassicPositionCorrectionFieldsAreCheckedByName) {
+    WorldDef def;
+    def.solver.classicAllowedPenetration = -0.01f;
+    EXPECT_EQ(errorOf([&] { World w(def); }),
+              "physics::World::World(): def.solver.classicAllowedPenetration must be finite and in "
+              "[0, 0.1], got -0.01");
+    def.solver.classicAllowedPenetration = 0.5f;
+    EXPECT_EQ(errorOf([&] { World w(def); }),
+              "physics::World::World(): def.solver.classicAllowedPenetration must be finite and in "
+              "[0, 0.1], got 0.5");
+    def.solver.classicAllowedPenetration = kInf;
+    E2D_EXPECT_ERROR(World w(def), "def.solver.classicAllowedPenetration must be finite and in "
+                                   "[0, 0.1], got inf");
+
+    def = {};
+    def.solver.classicPositionBias = 1.5f;
+    EXPECT_EQ(errorOf([&] { World w(def); }),
+              "physics::World::World(): def.solver.classicPositionBias must be finite and in "
+              "[0, 1], got 1.5");
+    def.solver.classicPositionBias = -0.2f;
+    E2D_EXPECT_ERROR(World w(def), "def.solver.classicPositionBias must be finite and in [0, 1], "
+                                   "got -0.2");
+    def.solver.classicPositionBias = kNan;
+    E2D_EXPECT_ERROR(World w(def), "def.solver.classicPositionBias must be finite and in [0, 1], "
+                                   "got nan");
+
+    // The ends of both ranges are valid, in either solver mode.
+    for (SolverMode mode : {SolverMode::SoftStep, SolverMode::Classic}) {
+        def = {};
+        def.solver.mode = mode;
+        def.solver.classicAllowedPenetration = 0.0f;
+        def.solver.classicPositionBias = 0.0f;
+        EXPECT_NO_THROW(World w(def));
+        def.solver.classicAllowedPenetration = 0.1f;
+        def.solver.classicPositionBias = 1.0f;
+        World world(def);
+        EXPECT_EQ(world.solverDef().classicAllowedPenetration, 0.1f);
+        EXPECT_EQ(world.solverDef().classicPositionBias, 1.0f);
+    }
 }
 
 TEST(WorldDefs, BodyDefFieldsAreCheckedByNameAndNothingIsCreated) {

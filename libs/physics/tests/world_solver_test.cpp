@@ -209,6 +209,104 @@ TEST(WorldSolver, SleepToleranceIsTheWorlds) {
     }
 }
 
+// Classic mode's position iterations push an overlap out down to classicAllowedPenetration,
+// each iteration by classicPositionBias times what is beyond it.
+WorldDef classicDef(float allowedPenetration, float positionBias, Vec2 gravity = {0.0f, -10.0f}) {
+    WorldDef def;
+    def.gravity = gravity;
+    def.solver.mode = SolverMode::Classic;
+    def.solver.enableSleep = false;
+    def.solver.classicAllowedPenetration = allowedPenetration;
+    def.solver.classicPositionBias = positionBias;
+    return def;
+}
+
+TEST(WorldSolver, ClassicBoxSettlesWithTheAllowedPenetration) {
+    // A unit box spawned 10 cm into the ground. The velocity iterations keep it still (it
+    // rests, nothing approaches); the position iterations lift it until the overlap left is
+    // the allowed one, where their correction is zero.
+    const auto restingOverlap = [](float allowed) {
+        World world{classicDef(allowed, 0.2f)};
+        addGround(world);
+        BodyId box = addBox(world, {0.0f, 0.4f}, 0.5f);
+        for (int i = 0; i < 300; ++i) {
+            world.step(kStep);
+        }
+        EXPECT_NEAR(world.transform(box).q.s, 0.0f, 1e-4f) << allowed << ": stays flat";
+        EXPECT_LT(length(world.linearVelocity(box)), 1e-3f) << allowed;
+        return 0.5f - world.transform(box).p.y; // the ground's top is y = 0
+    };
+    const float deep = restingOverlap(0.02f);
+    const float shallow = restingOverlap(kLinearSlop);
+    EXPECT_NEAR(deep, 0.02f, 1e-3f);
+    EXPECT_NEAR(shallow, kLinearSlop, 1e-3f);
+    EXPECT_GT(deep - shallow, 0.01f);
+    // Nothing left to correct: 0 allowed pushes the overlap out entirely.
+    EXPECT_NEAR(restingOverlap(0.0f), 0.0f, 1e-3f);
+}
+
+TEST(WorldSolver, ClassicPositionBiasSetsHowFastAnOverlapIsPushedOut) {
+    // A weightless ball of radius 0.5 spawned 10 cm into the ground: one contact point whose
+    // arm is along the normal, so each position iteration removes exactly bias times the
+    // overlap beyond the allowed one (the ground is static). Each step runs up to 3
+    // iterations and stops after one that started with at most 3 times the allowed overlap.
+    constexpr float kStartOverlap = 0.1f;
+    constexpr int kSteps = 6;
+    const auto expected = [](float bias, float allowed) {
+        float excess = kStartOverlap - allowed;
+        for (int step = 0; step < kSteps; ++step) {
+            for (int i = 0; i < 3; ++i) {
+                const float before = excess;
+                excess -= bias * excess;
+                if (before + allowed <= 3.0f * allowed) {
+                    break;
+                }
+            }
+        }
+        return allowed + excess;
+    };
+    const auto overlapAfter = [](float bias, float allowed) {
+        World world{classicDef(allowed, bias, {0.0f, 0.0f})};
+        addGround(world);
+        BodyId ball = addBall(world, {0.0f, 0.5f - kStartOverlap}, 0.5f);
+        for (int i = 0; i < kSteps; ++i) {
+            world.step(kStep);
+        }
+        EXPECT_EQ(world.linearVelocity(ball), Vec2(0.0f, 0.0f)) << bias << ": moved by position only";
+        return 0.5f - world.transform(ball).p.y;
+    };
+    const float fast = overlapAfter(0.2f, kLinearSlop);
+    const float slow = overlapAfter(0.05f, kLinearSlop);
+    EXPECT_NEAR(fast, expected(0.2f, kLinearSlop), 1e-5f);
+    EXPECT_NEAR(slow, expected(0.05f, kLinearSlop), 1e-5f);
+    EXPECT_GT(slow, fast + 0.03f);
+    // With 2 cm allowed, the iterations of a step stop once the overlap is 6 cm or less.
+    EXPECT_NEAR(overlapAfter(0.2f, 0.02f), expected(0.2f, 0.02f), 1e-5f);
+    // Bias 0: contacts get no position correction, the overlap stays.
+    EXPECT_NEAR(overlapAfter(0.0f, kLinearSlop), kStartOverlap, 1e-6f);
+}
+
+TEST(WorldSolver, SoftStepIgnoresTheClassicPositionSettings) {
+    // A leaning column of boxes spawned 5 cm into the ground and 10 cm into each other.
+    const auto pile = [](float allowed, float bias) {
+        WorldDef def;
+        def.solver.classicAllowedPenetration = allowed;
+        def.solver.classicPositionBias = bias;
+        World world{def};
+        addGround(world);
+        std::vector<BodyId> bodies;
+        for (int i = 0; i < 6; ++i) {
+            const float k = static_cast<float>(i);
+            bodies.push_back(addBox(world, {0.1f * k, 0.45f + 0.9f * k}, 0.5f)); // overlapping
+        }
+        for (int i = 0; i < 120; ++i) {
+            world.step(kStep);
+        }
+        return transformsHash(world, bodies);
+    };
+    EXPECT_EQ(pile(kLinearSlop, 0.2f), pile(0.05f, 0.05f));
+}
+
 // A random pile stepped n times in a world of the given mode; a hash of the final transforms.
 std::uint64_t pileHash(SolverMode mode, int steps) {
     WorldDef def;

@@ -27,10 +27,16 @@ struct EngineConfig : core::Config {
 /// - gravityX / gravityY (units/s^2)  -> WorldDef::gravity (m/s^2);
 /// - collisionResolutionSteps         -> solver.subSteps (soft step, capped at 64) and
 ///                                       solver.velocityIterations (classic solver);
-/// - minRigidbodySpeed (units/s)      -> solver.linearSleepTolerance (m/s).
-/// allowedPenetration and penetrationBiasFactor are the seed's position-correction settings;
-/// the soft-step solver has no such settings (its contacts are springs, see SolverDef), so
-/// they are not used.
+/// - minRigidbodySpeed (units/s)      -> solver.linearSleepTolerance (m/s);
+/// - allowedPenetration (units)       -> solver.classicAllowedPenetration (m, capped at
+///                                       SolverDef's 0.1 m);
+/// - penetrationBiasFactor            -> solver.classicPositionBias (same [0, 1] range; 0
+///                                       turns the contacts' position correction off).
+/// The last two are the seed's position-correction settings and only the classic solver
+/// (SolverMode::Classic) uses them: the default soft-step solver's contacts are springs with
+/// their own settings (see SolverDef). No config key picks the solver, so they take effect
+/// in a world made from this def with solver.mode set to Classic, not in a Game's world as
+/// is. The defaults (0.005 units at 1 unit per metre, 0.2) are SolverDef's own.
 [[nodiscard]] physics::WorldDef makeWorldDef(const core::Config& config);
 
 /// The result of reading a configuration file for a Game.

@@ -26,6 +26,10 @@ enum class MixingRule : std::uint8_t {
     Multiply,      ///< a * b
 };
 
+/// The largest SolverDef::classicAllowedPenetration, metres: a tenth of the smallest objects
+/// e2d is tuned for (see constants.hpp).
+inline constexpr float kMaxClassicAllowedPenetration = 0.1f;
+
 /// The solver's settings. World's constructor validates every field and names the bad one.
 struct SolverDef {
     /// Default SolverMode::SoftStep.
@@ -38,6 +42,18 @@ struct SolverDef {
     int velocityIterations = 8;
     /// Classic: position iterations per step, in [0, 256]. Default 3.
     int positionIterations = 3;
+    /// Classic: the overlap the position iterations leave between touching shapes, metres,
+    /// finite, in [0, kMaxClassicAllowedPenetration]. Default 0.005 (kLinearSlop, Box2D 2.4's).
+    /// Shapes overlapping deeper (spawned inside each other, pushed in) are pushed apart until
+    /// this much is left; a body landing from above stops at the speculative gap's end and
+    /// overlaps less. The iterations of a step stop early once nothing overlaps by more than 3
+    /// times this. The soft-step solver does not use it.
+    float classicAllowedPenetration = 0.005f;
+    /// Classic: the fraction of the overlap beyond classicAllowedPenetration that each
+    /// position iteration corrects (Baumgarte factor), finite, in [0, 1]. Default 0.2 (Box2D
+    /// 2.4's). Lower corrects overlaps more slowly and more softly; 0 turns contact position
+    /// correction off (joints are still corrected). The soft-step solver does not use it.
+    float classicPositionBias = 0.2f;
     /// Soft step: stiffness of contacts, hertz, finite, > 0. Capped at a quarter of the
     /// sub-step rate; contacts against static bodies use twice this. Default 38.
     /// A resting contact is a spring: each point overlaps its load / (m_n (2 pi hertz)^2), m_n
