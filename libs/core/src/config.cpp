@@ -21,6 +21,7 @@ namespace {
 constexpr std::array<std::string_view, 4> kScreenFitNames{"expand", "widthFit", "heightFit", "bestFit"};
 constexpr std::array<std::string_view, 2> kWindowModeNames{"windowed", "fullscreen"};
 constexpr std::array<std::string_view, 2> kFilteringNames{"nearest", "linear"};
+constexpr std::array<std::string_view, 2> kPhysicsSolverNames{"softStep", "classic"};
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -177,6 +178,7 @@ const std::map<std::string_view, Setter>& fields() {
         {"allowedPenetration", real(&Config::allowedPenetration, kNonNegative)},
         {"penetrationBiasFactor", real(&Config::penetrationBiasFactor, Bounds{0.0, 1.0, false})},
         {"minRigidbodySpeed", real(&Config::minRigidbodySpeed, kNonNegative)},
+        {"physicsSolver", enumeration(&Config::physicsSolver, kPhysicsSolverNames)},
         {"unitsPerMetre", real(&Config::unitsPerMetre, kPositive)},
         {"minAttenuationDistance", real(&Config::minAttenuationDistance, kNonNegative)},
         {"maxAttenuationDistance", real(&Config::maxAttenuationDistance, kNonNegative)},
@@ -208,6 +210,10 @@ std::string_view toString(WindowMode mode) noexcept {
 
 std::string_view toString(TextureFilteringMode mode) noexcept {
     return kFilteringNames[static_cast<std::size_t>(mode)];
+}
+
+std::string_view toString(PhysicsSolver solver) noexcept {
+    return kPhysicsSolverNames[static_cast<std::size_t>(solver)];
 }
 
 std::string ConfigDiagnostic::toString() const {

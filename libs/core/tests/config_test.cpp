@@ -15,11 +15,13 @@ using e2d::core::ConfigDiagnostic;
 using e2d::core::ConfigResult;
 using e2d::core::loadConfig;
 using e2d::core::parseConfig;
+using e2d::core::PhysicsSolver;
 using e2d::core::ScreenFitMode;
 using e2d::core::TextureFilteringMode;
 using e2d::core::WindowMode;
 using Severity = e2d::core::ConfigDiagnostic::Severity;
 using testing::ElementsAre;
+using testing::HasSubstr;
 using testing::IsEmpty;
 
 namespace {
@@ -121,6 +123,15 @@ TEST(Config, EveryEnumValue) {
     EXPECT_EQ(r.config.textureFilteringMode, TextureFilteringMode::Linear);
     EXPECT_EQ(parseConfig("screenFitMode = heightFit").config.screenFitMode, ScreenFitMode::HeightFit);
     EXPECT_EQ(parseConfig("screenFitMode = bestFit").config.screenFitMode, ScreenFitMode::BestFit);
+    EXPECT_EQ(Config{}.physicsSolver, PhysicsSolver::SoftStep);
+    EXPECT_EQ(parseConfig("physicsSolver = classic").config.physicsSolver, PhysicsSolver::Classic);
+    EXPECT_EQ(parseConfig("physicsSolver = softStep").config.physicsSolver, PhysicsSolver::SoftStep);
+    EXPECT_EQ(toString(PhysicsSolver::Classic), "classic");
+    const ConfigResult bad = parseConfig("physicsSolver = box2d\n", "game.cfg");
+    ASSERT_TRUE(bad.hasErrors());
+    EXPECT_THAT(texts(bad)[0], HasSubstr("game.cfg:1"));
+    EXPECT_THAT(texts(bad)[0], HasSubstr("physicsSolver"));
+    EXPECT_EQ(bad.config.physicsSolver, PhysicsSolver::SoftStep);
     EXPECT_EQ(e2d::core::toString(ScreenFitMode::BestFit), "bestFit");
     EXPECT_EQ(e2d::core::toString(WindowMode::Fullscreen), "fullscreen");
     EXPECT_EQ(e2d::core::toString(TextureFilteringMode::Linear), "linear");

@@ -10,6 +10,8 @@ physics::WorldDef makeWorldDef(const core::Config& config) {
     const auto metres = [&config](double units) { return static_cast<float>(units / config.unitsPerMetre); };
     physics::WorldDef def;
     def.gravity = {metres(config.gravityX), metres(config.gravityY)};
+    def.solver.mode = config.physicsSolver == core::PhysicsSolver::Classic ? physics::SolverMode::Classic
+                                                                            : physics::SolverMode::SoftStep;
     def.solver.subSteps = std::min(config.collisionResolutionSteps, 64);
     def.solver.velocityIterations = std::min(config.collisionResolutionSteps, 256);
     def.solver.linearSleepTolerance = metres(config.minRigidbodySpeed);

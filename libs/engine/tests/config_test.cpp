@@ -53,6 +53,7 @@ TEST(EngineConfig, EveryKeyOfTheFileIsRead) {
     EXPECT_EQ(c.gravityY, -1000.0f);
     EXPECT_EQ(c.fixedTimestep, 0.005);
     EXPECT_EQ(c.collisionResolutionSteps, 10);
+    EXPECT_EQ(c.physicsSolver, core::PhysicsSolver::Classic);
     EXPECT_EQ(c.allowedPenetration, 0.1f);
     EXPECT_EQ(c.penetrationBiasFactor, 0.1f);
     EXPECT_EQ(c.minRigidbodySpeed, 5.0f);
@@ -79,6 +80,7 @@ TEST(EngineConfig, PhysicsKeysFeedTheWorldInMetres) {
     // 100 units per metre: -1000 units/s^2 is -10 m/s^2, 5 units/s is 0.05 m/s.
     EXPECT_FLOAT_EQ(def.gravity.x, 0.5f);
     EXPECT_FLOAT_EQ(def.gravity.y, -10.0f);
+    EXPECT_EQ(def.solver.mode, physics::SolverMode::Classic);
     EXPECT_EQ(def.solver.subSteps, 10);
     EXPECT_EQ(def.solver.velocityIterations, 10);
     EXPECT_FLOAT_EQ(def.solver.linearSleepTolerance, 0.05f);
@@ -91,6 +93,7 @@ TEST(EngineConfig, PhysicsKeysFeedTheWorldInMetres) {
     EXPECT_EQ(defaults.gravity.x, 0.0f);
     EXPECT_FLOAT_EQ(defaults.gravity.y, core::Config{}.gravityY);
     EXPECT_EQ(defaults.solver.subSteps, core::Config{}.collisionResolutionSteps);
+    EXPECT_EQ(defaults.solver.mode, physics::SolverMode::SoftStep);
     // The seed's position-correction defaults are the classic solver's own, bit for bit.
     EXPECT_EQ(defaults.solver.classicAllowedPenetration, physics::SolverDef{}.classicAllowedPenetration);
     EXPECT_EQ(defaults.solver.classicPositionBias, physics::SolverDef{}.classicPositionBias);
@@ -126,9 +129,8 @@ TEST(EngineConfig, PenetrationKeysTuneAClassicWorld) {
         config.gravityY = -1000.0f;
         config.allowedPenetration = allowedPenetration;
         config.penetrationBiasFactor = biasFactor;
-        physics::WorldDef def = engine::makeWorldDef(config);
-        def.solver.mode = physics::SolverMode::Classic;
-        physics::World world{def};
+        config.physicsSolver = core::PhysicsSolver::Classic;
+        physics::World world{engine::makeWorldDef(config)};
         const physics::BodyId ground = world.createBody({});
         world.createShape(ground, {}, physics::makeOffsetBox(10.0f, 1.0f, {0.0f, -1.0f}, 0.0f));
         physics::BodyDef bd;

@@ -14,11 +14,14 @@ namespace e2d::core {
 enum class ScreenFitMode { Expand, WidthFit, HeightFit, BestFit };
 enum class WindowMode { Windowed, Fullscreen };
 enum class TextureFilteringMode { Nearest, Linear };
+/// Which contact solver the game's physics world uses (see physics::SolverMode).
+enum class PhysicsSolver { SoftStep, Classic };
 
 /// The spelling used in config files ("expand", "widthFit", "heightFit", "bestFit", ...).
 [[nodiscard]] std::string_view toString(ScreenFitMode mode) noexcept;
 [[nodiscard]] std::string_view toString(WindowMode mode) noexcept;
 [[nodiscard]] std::string_view toString(TextureFilteringMode mode) noexcept;
+[[nodiscard]] std::string_view toString(PhysicsSolver solver) noexcept;
 
 /// Everything the game configuration file sets (seed Figure 107, plus e2d's own keys: the
 /// LOOP, INPUT and DEBUG sections and the DISPLAY, PHYSICS and SOUND additions below).
@@ -65,9 +68,14 @@ struct Config {
     double fixedTimestep = 1.0 / 60.0;
     /// Solver iterations per step (>= 1). Default 4.
     int collisionResolutionSteps = 4;
-    /// Overlap tolerated before position correction, metres (>= 0). Default 0.005.
+    /// The contact solver: "softStep" (soft contacts, sub-stepped; e2d's default) or "classic"
+    /// (sequential impulses with position iterations, the seed's kind). Default softStep.
+    PhysicsSolver physicsSolver = PhysicsSolver::SoftStep;
+    /// Overlap tolerated before position correction, world units (>= 0); used by the classic
+    /// solver only. Default 0.005.
     float allowedPenetration = 0.005f;
-    /// Fraction of the overlap corrected per step, in [0, 1]. Default 0.2.
+    /// Fraction of the overlap corrected per position iteration, in [0, 1]; used by the
+    /// classic solver only. Default 0.2.
     float penetrationBiasFactor = 0.2f;
     /// Speed below which a body may rest, m/s (>= 0). Default 0.05.
     float minRigidbodySpeed = 0.05f;

@@ -24,6 +24,7 @@ struct EngineConfig : core::Config {
 
 /// The physics world a configuration asks for. The PHYSICS lengths are world units and are
 /// divided by `unitsPerMetre` (the world runs in metres):
+/// - physicsSolver (softStep|classic) -> solver.mode;
 /// - gravityX / gravityY (units/s^2)  -> WorldDef::gravity (m/s^2);
 /// - collisionResolutionSteps         -> solver.subSteps (soft step, capped at 64) and
 ///                                       solver.velocityIterations (classic solver);
@@ -33,10 +34,9 @@ struct EngineConfig : core::Config {
 /// - penetrationBiasFactor            -> solver.classicPositionBias (same [0, 1] range; 0
 ///                                       turns the contacts' position correction off).
 /// The last two are the seed's position-correction settings and only the classic solver
-/// (SolverMode::Classic) uses them: the default soft-step solver's contacts are springs with
-/// their own settings (see SolverDef). No config key picks the solver, so they take effect
-/// in a world made from this def with solver.mode set to Classic, not in a Game's world as
-/// is. The defaults (0.005 units at 1 unit per metre, 0.2) are SolverDef's own.
+/// (`physicsSolver = classic`) uses them: the default soft-step solver's contacts are springs
+/// with their own settings (see SolverDef). The defaults (0.005 units at 1 unit per metre,
+/// 0.2) are SolverDef's own.
 [[nodiscard]] physics::WorldDef makeWorldDef(const core::Config& config);
 
 /// The result of reading a configuration file for a Game.
