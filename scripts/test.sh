@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Every test e2d has, from a fresh Debian 12 machine:
 #   1. the release build: every library's GoogleTest suite, the benchmarks (short runs);
-#   2. the same suites under AddressSanitizer + UndefinedBehaviorSanitizer;
+#   2. the same suites under AddressSanitizer + UndefinedBehaviorSanitizer, and the libraries
+#      built as CMAKE_BUILD_TYPE=Release (-O3) with warnings as errors;
 #   3. the libFuzzer targets, each for E2D_FUZZ_SECONDS (default 30), two at a time;
 #   4. the consumer project, built against an install of e2d once per library, linking only it.
 # Ends with one line "e2d tests: N passed, M failed". Exit status 0 only if all passed.
@@ -56,6 +57,21 @@ ctest_stage() {
 
 ctest_stage "release" release
 ctest_stage "asan+ubsan" asan
+
+# A user's own optimised build of the libraries (CMAKE_BUILD_TYPE=Release, -O3, where GCC
+# warns about things -O2 does not), warnings as errors; Debug and RelWithDebInfo are the two
+# stages above.
+echo "=== Release (-O3): the libraries as a user's dependency build makes them"
+if cmake -S "$root" -B "$root/build/o3" -G Ninja -DCMAKE_BUILD_TYPE=Release -DE2D_WARNINGS_AS_ERRORS=ON \
+     -DE2D_BUILD_TESTS=OFF -DE2D_BUILD_APPS=OFF -DE2D_BUILD_VALIDATION=OFF -DE2D_BUILD_BENCH=OFF \
+     >"$logs/o3-configure.log" 2>&1 && cmake --build "$root/build/o3" >"$logs/o3-build.log" 2>&1; then
+  echo "Release (-O3): every library builds without a warning"
+  passed=$((passed + 1))
+else
+  grep -E -A5 'error|warning|FAILED' "$logs/o3-configure.log" "$logs/o3-build.log" | head -60
+  failures+=("Release (-O3) build failed (see $logs/o3-build.log)")
+  failed=$((failed + 1))
+fi
 
 echo "=== fuzz: libFuzzer targets, ${fuzz_seconds}s each"
 if cmake --preset fuzz >"$logs/fuzz-configure.log" 2>&1 && cmake --build --preset fuzz >"$logs/fuzz-build.log" 2>&1; then

@@ -95,7 +95,12 @@ Binding parseBinding(std::string_view text) {
 }
 
 std::string formatBinding(const Binding& b) {
-    const std::string slot = b.gamepad >= 0 ? "@" + std::to_string(b.gamepad) : "";
+    // Appended, not "@" + to_string(...): GCC 12 at -O3 warns (-Wrestrict) about the
+    // operator+ form, a false positive.
+    std::string slot;
+    if (b.gamepad >= 0) {
+        slot.append("@").append(std::to_string(b.gamepad));
+    }
     switch (b.kind) {
     case BindingKind::Key: return "key:" + nameOf(keyName(b.code), b.code, "key");
     case BindingKind::KeyAxis:
