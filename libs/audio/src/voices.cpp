@@ -605,8 +605,11 @@ bool Mixer::setLoop(VoiceId id, bool loop) {
 }
 
 bool Mixer::setPosition(VoiceId id, glm::vec2 position) {
-    if (!std::isfinite(position.x) || !std::isfinite(position.y)) {
-        throwInvalid("audio::Mixer::setPosition()", "position", "finite", position.x + position.y);
+    if (!std::isfinite(position.x)) {
+        throwInvalid("audio::Mixer::setPosition()", "position.x", "finite", position.x);
+    }
+    if (!std::isfinite(position.y)) {
+        throwInvalid("audio::Mixer::setPosition()", "position.y", "finite", position.y);
     }
     Voice* voice = impl_->find(id);
     if (voice != nullptr) {

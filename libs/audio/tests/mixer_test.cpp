@@ -8,6 +8,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 namespace e2d::audio {
 namespace {
 
@@ -425,6 +428,11 @@ TEST(MixerValidation, MessagesNameFunctionFieldAndValue) {
     EXPECT_EQ(message([&] { rig.mixer.update(-0.1); }), "audio::Mixer::update(): dt must be >= 0 seconds, got -0.1");
     std::vector<float> odd(3);
     EXPECT_THAT(message([&] { rig.mixer.render(odd); }), HasSubstr("must be even"));
+    // The component that is not finite is named with its own value (a sum would hide it).
+    EXPECT_EQ(message([&] { rig.mixer.setPosition(VoiceId{}, {1.0f, std::numeric_limits<float>::infinity()}); }),
+              "audio::Mixer::setPosition(): position.y must be finite, got inf");
+    EXPECT_EQ(message([&] { rig.mixer.setPosition(VoiceId{}, {std::nanf(""), 2.0f}); }),
+              "audio::Mixer::setPosition(): position.x must be finite, got nan");
 }
 
 // No device -------------------------------------------------------------------------------------
