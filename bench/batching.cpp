@@ -249,6 +249,17 @@ struct Targets {
     std::string running; // the case being run
     int warmup = 3;      // frames drawn before timing
 
+    // Draws `warmup` untimed frames, then one frame per benchmark iteration.
+    template <class Frame>
+    void run(benchmark::State& state, Frame& frame) const {
+        for (int i = 0; i < warmup; ++i) {
+            frame();
+        }
+        for (auto _ : state) {
+            frame();
+        }
+    }
+
     void shot(const benchmark::State&, Image image) const {
         if (shots.empty()) {
             return;
@@ -313,12 +324,7 @@ void frameE2d(benchmark::State& state, Targets& targets, Scene scene, const Rend
         glFinish();
         ++frameNumber;
     };
-    for (int i = 0; i < targets.warmup; ++i) {
-        frame();
-    }
-    for (auto _ : state) {
-        frame();
-    }
+    targets.run(state, frame);
     const Image image = renderer.readPixels();
     targets.shot(state, image);
     state.counters["lit"] = litFraction(image.pixels.data(), image.pixels.size() / 4);
@@ -398,12 +404,7 @@ void frameSfmlSprites(benchmark::State& state, Targets& targets, Scene scene) {
         glFinish();
         ++frameNumber;
     };
-    for (int i = 0; i < targets.warmup; ++i) {
-        frame();
-    }
-    for (auto _ : state) {
-        frame();
-    }
+    targets.run(state, frame);
     finishSfml(state, targets);
 }
 
@@ -456,12 +457,7 @@ void frameSfmlVertexArrays(benchmark::State& state, Targets& targets, Scene scen
         glFinish();
         ++frameNumber;
     };
-    for (int i = 0; i < targets.warmup; ++i) {
-        frame();
-    }
-    for (auto _ : state) {
-        frame();
-    }
+    targets.run(state, frame);
     finishSfml(state, targets);
 }
 
@@ -557,12 +553,7 @@ void main() { colour = texture(image, uv); })";
         glFinish();
         ++frameNumber;
     };
-    for (int i = 0; i < targets.warmup; ++i) {
-        frame();
-    }
-    for (auto _ : state) {
-        frame();
-    }
+    targets.run(state, frame);
     std::vector<std::uint8_t> pixels(static_cast<std::size_t>(kWidth * kHeight * 4));
     glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
     state.counters["lit"] = litFraction(pixels.data(), pixels.size() / 4);
@@ -635,12 +626,7 @@ void textE2d(benchmark::State& state, Targets& targets) {
         glFinish();
         ++frameNumber;
     };
-    for (int i = 0; i < targets.warmup; ++i) {
-        frame();
-    }
-    for (auto _ : state) {
-        frame();
-    }
+    targets.run(state, frame);
     const Image image = renderer.readPixels();
     targets.shot(state, image);
     state.counters["lit"] = litFraction(image.pixels.data(), image.pixels.size() / 4);
@@ -671,12 +657,7 @@ void textSfml(benchmark::State& state, Targets& targets) {
         glFinish();
         ++frameNumber;
     };
-    for (int i = 0; i < targets.warmup; ++i) {
-        frame();
-    }
-    for (auto _ : state) {
-        frame();
-    }
+    targets.run(state, frame);
     finishSfml(state, targets);
     const int glyphs = glyphCount(strings[0]);
     state.counters["glyphs"] = glyphs;
