@@ -9,9 +9,8 @@ rm -f "$shot"
 # Enough frames (about 15 ms each under llvmpipe) for the drag to happen while it runs.
 "$app" --frames 900 --show --screenshot "$shot" >/dev/null 2>&1 &
 pid=$!
-wid=$(timeout 20 xdotool search --sync --name '^e2d audio 1$' | head -1)
-# Focus it (no window manager here) so keys reach it, and let it settle.
-xdotool windowfocus --sync "$wid"
+wid=$("$(dirname "$0")/../../tools/focus_window.sh" "e2d audio 1")
+# Let it settle (focus_window.sh focused it: no window manager here).
 sleep 0.5
 xdotool mousemove --window "$wid" 732 270
 sleep 0.2

@@ -10,9 +10,8 @@ rm -f "$shot"
 # Enough frames (a few ms each) for the click to happen early and the fall (1.6 s) to end.
 "$app" --frames 1800 --show --screenshot "$shot" >/dev/null 2>&1 &
 pid=$!
-wid=$(timeout 20 xdotool search --sync --name '^e2d physics 1$' | head -1)
-# Focus it (no window manager here) so keys reach it, and let it settle.
-xdotool windowfocus --sync "$wid"
+wid=$("$(dirname "$0")/../../tools/focus_window.sh" "e2d physics 1")
+# Let it settle (focus_window.sh focused it: no window manager here).
 sleep 1
 xdotool key m
 sleep 0.2
