@@ -473,5 +473,25 @@ TEST(Runner, ChainFloorWithAMaterialPerSegment) {
     }
 }
 
+// The shipped car (wheel joints with springs and a motor on one b2ChainShape / e2d chain)
+// drives over its bumps in every engine; with its motor off it stays where it is put.
+TEST(Runner, TheCarDrivesOverTheBumpyChain) {
+    const Scenario car = shipped("car_bumpy_chain");
+    Scenario parked = car;
+    parked.scene.joints[0].enableMotor = false;
+    for (const RunSpec& spec : allEngines()) {
+        SCOPED_TRACE(spec.config.family());
+        const RunResult r = runOne(car, spec);
+        ASSERT_TRUE(r.failure.empty()) << r.failure;
+        ASSERT_EQ(r.checks.size(), 4u);
+        for (const CheckResult& c : r.checks) {
+            EXPECT_TRUE(c.passed) << c.kind << " " << c.measured;
+        }
+        EXPECT_LT(r.checks[0].measured, 32.0); // no faster than rolling at the motor's speed
+        const RunResult p = runOne(parked, spec);
+        EXPECT_LT(std::abs(p.checks[0].measured), 0.1);
+    }
+}
+
 } // namespace
 } // namespace e2d::validation
