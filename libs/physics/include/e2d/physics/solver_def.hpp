@@ -9,9 +9,8 @@ namespace e2d::physics {
 /// Which contact solver World::step() runs.
 enum class SolverMode : std::uint8_t {
     /// Sub-stepped soft constraints (default): per sub-step integrate, warm start, solve with a
-    /// soft bias, integrate positions, relax without bias (sweeping the constraints the other
-    /// way); restitution after the sub-steps. A 2-point manifold is solved as one 2x2 block (no
-    /// point order), one two-row soft constraint.
+    /// soft bias, integrate positions, relax without bias sweeping the other way; restitution
+    /// after the sub-steps. A 2-point manifold is one two-row soft constraint (no point order).
     SoftStep,
     /// The Box2D 2.4 recipe: velocity iterations with warm starting, restitution bias, then
     /// non-linear Gauss-Seidel position iterations.
