@@ -56,11 +56,9 @@ struct SolverDef {
     float classicPositionBias = 0.2f;
     /// Soft step: stiffness of contacts, hertz, finite, > 0. Capped at a quarter of the
     /// sub-step rate; contacts against static bodies use twice this. Default 38.
-    /// A resting contact is a spring: a one-point contact overlaps its load / (m_n (2 pi
-    /// hertz)^2), m_n the point's normal mass; a two-point one is one two-row spring on the
-    /// points' effective-mass matrix, so a unit box resting flat on another overlaps its load /
-    /// (0.5 (2 pi hertz)^2), 0.5 the pair's reduced mass: at 38 Hz the contact under 19 unit
-    /// boxes overlaps 6.7 mm (10.7 mm at Box2D v3's 30 Hz). Stiffer is not free: a column spawned overlapped is pushed apart
+    /// A resting contact is a spring: a unit box resting flat on another overlaps its load /
+    /// (0.5 (2 pi hertz)^2), 0.5 the pair's reduced mass: 6.7 mm under 19 boxes at 38 Hz (10.7 mm
+    /// at Box2D v3's 30 Hz). Stiffer is not free: a column spawned overlapped is pushed apart
     /// faster, and a base-100 pyramid drifts more (0.12 m at 45 Hz).
     float contactHertz = 38.0f;
     /// Soft step: damping ratio of contacts, finite, >= 0 (1 is critical). Default 12.5: with
