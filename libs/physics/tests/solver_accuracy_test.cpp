@@ -417,7 +417,8 @@ TEST(SolverAccuracy, HouseOfCardsStandsTenSeconds) {
             cards.push_back(addCard({x + pairDx, y + pairY}, lean));
             angles.push_back(lean);
             if (i + 1 < pairs) {
-                cards.push_back(addCard({x + 0.15f, y + 2.0f * pairY + kHalfThickness}, 0.5f * kPi));
+                const Vec2 flat{x + 0.15f, y + 2.0f * pairY + kHalfThickness};
+                cards.push_back(addCard(flat, 0.5f * kPi));
                 angles.push_back(0.5f * kPi);
             }
         }
