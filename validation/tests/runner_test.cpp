@@ -64,15 +64,18 @@ RunSpec e2d(const std::string& solver, int subSteps, int velocity, int position)
     return spec;
 }
 
-// The same for e2d: one sub-step (soft step) drops a 20-box stack, one velocity and position
-// iteration (classic) a 10-box stack, which the defaults hold. (Classic at its defaults does
-// not hold 20 boxes: the report shows it.)
+// The same for e2d: one sub-step (soft step) sinks the awake 50-box column 2.7 m into its
+// contacts (their stiffness is capped at a quarter of the sub-step rate, 15 Hz), one velocity
+// and position iteration (classic) drops a 10-box stack, which the defaults hold. (Classic at
+// its defaults does not hold 20 boxes: the report shows it. The soft step at one sub-step holds
+// a 20-box stack upright since it solves each 2-point manifold as one two-row constraint; only
+// its 5 cm contacts fail there.)
 TEST(BrokenSettings, E2dWithOneSubStepOrOneIterationFailsTheStack) {
     const struct {
         const char* scenario;
         RunSpec good;
         RunSpec broken;
-    } cases[] = {{"stack_20", e2d("soft", 4, 8, 3), e2d("soft", 1, 8, 3)},
+    } cases[] = {{"column_50_awake", e2d("soft", 4, 8, 3), e2d("soft", 1, 8, 3)},
                  {"stack_10", e2d("classic", 4, 8, 3), e2d("classic", 4, 1, 1)}};
     for (const auto& c : cases) {
         SCOPED_TRACE(c.good.config.solver);

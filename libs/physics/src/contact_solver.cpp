@@ -161,13 +161,17 @@ void solveContactsInOrder(std::span<ContactConstraint> constraints, std::span<Bo
             noteImpact(cp2, vn.y, t2.separation, invH, useBias);
             // One point's soft update, k11 (x - lambda) = -massScale (vn + bias) -
             // impulseScale k11 lambda, written for two: K (x - lambda) = -M (vn + bias) -
-            // I diag(K) lambda, with each point's own mass and impulse scales in the diagonal
-            // M and I (a speculative point's row is rigid). At rest each point then overlaps
-            // as it would alone (diag(K), not K, carries the load), and the block LCP solves it
-            // with vn + bias replaced by this right-hand side.
+            // I K lambda, with each point's own mass and impulse scales in the diagonal M and I
+            // (a speculative point's row is rigid). Both overlapping, this is the soft update of
+            // one two-row constraint (K^-1 its mass): at rest each point overlaps
+            // (K lambda)_i / (h w^2), so a box on a box compresses like a spring on the pair's
+            // reduced mass, not on one corner's normal mass (a 50-box column sags 0.42 m, not
+            // 0.53 m). The block LCP solves it with vn + bias replaced by this right-hand side.
             Vec2 old{cp1.normalImpulse, cp2.normalImpulse};
-            Vec2 rhs{t1.massScale * (vn.x + t1.bias) + t1.impulseScale * (c.blockK.a11 * old.x),
-                     t2.massScale * (vn.y + t2.bias) + t2.impulseScale * (c.blockK.a22 * old.y)};
+            Vec2 rhs{t1.massScale * (vn.x + t1.bias) +
+                         t1.impulseScale * (c.blockK.a11 * old.x + c.blockK.a12 * old.y),
+                     t2.massScale * (vn.y + t2.bias) +
+                         t2.impulseScale * (c.blockK.a12 * old.x + c.blockK.a22 * old.y)};
             Vec2 x = old;
             solveBlock(c, old, rhs, x);
             applyBlock(c, old, x, vA, wA, vB, wB);
