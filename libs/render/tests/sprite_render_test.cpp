@@ -306,6 +306,95 @@ TEST_P(SpriteRender, CullsOffscreenAndRebuildsOnlyWhatChanged) {
     EXPECT_EQ(again.pixels, image.pixels);
 }
 
+// A moved sprite's instance is written straight away when nothing else about it changed; every
+// other case goes through the repack: a move, a resize and a second move in one frame; a
+// parallax sprite and a HUD sprite under a moving camera; a sprite moved while hidden; a slot
+// reused by a new sprite and moved before the next frame. The whole image is compared with
+// the rectangles the scene says.
+TEST_P(SpriteRender, MovesOfEveryKindOfSpriteLandWhereTheSceneSays) {
+    Scene scene(GetParam(), {64, 64});
+    Camera camera = pixelCamera({64, 64});
+    const Color kWhite{255, 255, 255, 255};
+    const Color kYellow{255, 255, 0, 255};
+    auto def = [](glm::vec2 position, Color tint) {
+        return SpriteDef{.position = position, .size = {4.0f, 4.0f}, .pivot = {0.0f, 0.0f}, .tint = tint};
+    };
+    const SpriteId a = scene.renderer.createSprite(def({-30.0f, 20.0f}, kRed));
+    SpriteDef parallax = def({0.0f, 20.0f}, kGreen);
+    parallax.parallax = 0.5f;
+    const SpriteId b = scene.renderer.createSprite(parallax);
+    SpriteDef hud = def({20.0f, 20.0f}, kBlue);
+    hud.hud = true;
+    const SpriteId c = scene.renderer.createSprite(hud);
+    const SpriteId d = scene.renderer.createSprite(def({-30.0f, -30.0f}, kWhite));
+    const SpriteId e = scene.renderer.createSprite(def({0.0f, -30.0f}, kYellow));
+    scene.frame(camera, "before");
+
+    // Screen rectangles [x0, x1) x [y0, y1) and colours, y up, camera at `cam`.
+    struct Expect {
+        PixelRect rect;
+        Color color;
+    };
+    auto check = [&](const Image& image, const std::vector<Expect>& expected) {
+        int wrong = 0;
+        for (int y = 0; y < 64; ++y) {
+            for (int x = 0; x < 64; ++x) {
+                Color want = kBlack;
+                for (const Expect& ex : expected) {
+                    if (ex.rect.contains(x, y)) {
+                        want = ex.color;
+                    }
+                }
+                if (!near(pixel(image, x, y), want, 0) && ++wrong <= 5) {
+                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") is " << str(pixel(image, x, y)) << ", expected "
+                                  << str(want);
+                }
+            }
+        }
+        EXPECT_EQ(wrong, 0);
+    };
+    // World (wx, wy) with camera at cam: screen 32 + (w - cam).
+    auto at = [](glm::vec2 world, glm::vec2 cam, glm::vec2 size) {
+        const int x0 = 32 + static_cast<int>(world.x - cam.x);
+        const int y0 = 32 + static_cast<int>(world.y - cam.y);
+        return PixelRect{x0, y0, x0 + static_cast<int>(size.x), y0 + static_cast<int>(size.y)};
+    };
+
+    const glm::vec2 cam{4.0f, -2.0f};
+    camera.setPosition(cam);
+    scene.renderer.setPosition(a, {-20.0f, 10.0f});
+    scene.renderer.setSize(a, {6.0f, 6.0f});
+    scene.renderer.setPosition(a, {-26.0f, 12.0f});
+    scene.renderer.setPosition(b, {10.0f, 18.0f});
+    scene.renderer.setPosition(c, {-10.0f, 14.0f});
+    scene.renderer.setVisible(d, false);
+    scene.renderer.setPosition(d, {-20.0f, -24.0f});
+    scene.renderer.destroySprite(e);
+    const SpriteId f = scene.renderer.createSprite(def({0.0f, 0.0f}, kYellow));
+    scene.renderer.setPosition(f, {16.0f, -20.0f});
+    Image moved = scene.frame(camera, "moved");
+    // Parallax 0.5 draws b at cam + 0.5 * (position - cam); the HUD sprite ignores the camera.
+    const glm::vec2 bDrawn = cam + 0.5f * (glm::vec2(10.0f, 18.0f) - cam);
+    check(moved, {{at({-26.0f, 12.0f}, cam, {6.0f, 6.0f}), kRed},
+                  {at(bDrawn, cam, {4.0f, 4.0f}), kGreen},
+                  {at({-10.0f, 14.0f}, {0.0f, 0.0f}, {4.0f, 4.0f}), kBlue},
+                  {at({16.0f, -20.0f}, cam, {4.0f, 4.0f}), kYellow}});
+    EXPECT_EQ(scene.renderer.stats().sprites, 4);
+
+    // Shown again where it was moved while hidden; a plain move of the reused slot's sprite.
+    scene.renderer.setVisible(d, true);
+    scene.renderer.setPosition(f, {20.0f, -26.0f});
+    Image shown = scene.frame(camera, "shown");
+    check(shown, {{at({-26.0f, 12.0f}, cam, {6.0f, 6.0f}), kRed},
+                  {at(bDrawn, cam, {4.0f, 4.0f}), kGreen},
+                  {at({-10.0f, 14.0f}, {0.0f, 0.0f}, {4.0f, 4.0f}), kBlue},
+                  {at({-20.0f, -24.0f}, cam, {4.0f, 4.0f}), kWhite},
+                  {at({20.0f, -26.0f}, cam, {4.0f, 4.0f}), kYellow}});
+    EXPECT_EQ(scene.renderer.stats().rebuilt, 2); // d (shown again) and f (moved)
+    EXPECT_EQ(scene.renderer.sprite(f).position, glm::vec2(20.0f, -26.0f));
+    EXPECT_EQ(scene.renderer.sprite(a).position, glm::vec2(-26.0f, 12.0f));
+}
+
 // Transient quads share the sprites' batches (same texture, same pass) and last one frame.
 TEST_P(SpriteRender, SubmittedQuadsBatchWithSprites) {
     Scene scene(GetParam(), {32, 32});
