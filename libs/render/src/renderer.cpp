@@ -258,7 +258,7 @@ void Renderer::setScale(SpriteId id, glm::vec2 scale) { impl_->batcher.setScale(
 void Renderer::setRotation(SpriteId id, float radians) { impl_->batcher.setRotation(id, radians); }
 void Renderer::setPivot(SpriteId id, glm::vec2 pivot) { impl_->batcher.setPivot(id, pivot); }
 void Renderer::setTint(SpriteId id, Color tint) { impl_->batcher.setTint(id, tint); }
-void Renderer::setUv(SpriteId id, const Rect& uv) { impl_->batcher.setUv(id, uv); }
+void Renderer::setUv(SpriteId id, const Rect& uv, bool uvRotated) { impl_->batcher.setUv(id, uv, uvRotated); }
 void Renderer::setFlip(SpriteId id, bool flipX, bool flipY) { impl_->batcher.setFlip(id, flipX, flipY); }
 void Renderer::setParallax(SpriteId id, float parallax) { impl_->batcher.setParallax(id, parallax); }
 void Renderer::setHud(SpriteId id, bool hud) { impl_->batcher.setHud(id, hud); }

@@ -323,16 +323,18 @@ void SpriteBatcher::setTint(SpriteId id, Color tint) {
     }
 }
 
-void SpriteBatcher::setUv(SpriteId id, const Rect& uv) {
+void SpriteBatcher::setUv(SpriteId id, const Rect& uv, bool uvRotated) {
     constexpr const char* fn = "render::Renderer::setUv()";
     Slot& s = slot(id, fn);
     SpriteDef def = s.def;
     def.uv = uv;
     validate(fn, def);
-    if (s.def.uv != uv) {
+    if (s.def.uv != uv || s.def.uvRotated != uvRotated) {
+        // A turned image turns the quad's edges; the automatic size follows the UV extent.
+        const bool shape = s.def.uvRotated != uvRotated || s.def.size == glm::vec2(0.0f);
         s.def.uv = uv;
-        // The automatic size follows the UV rectangle's extent.
-        markDirty(id.index1 - 1, s.def.size == glm::vec2(0.0f) ? kLook | kShape : kLook);
+        s.def.uvRotated = uvRotated;
+        markDirty(id.index1 - 1, shape ? kLook | kShape : kLook);
     }
 }
 
@@ -459,6 +461,9 @@ void SpriteBatcher::repack(std::uint32_t index, const CameraState& camera) {
         glm::vec2 size = d.size;
         if (size == glm::vec2(0.0f)) {
             size = textures_[s.texture].size * d.uv.size;
+            if (d.uvRotated) {
+                size = {size.y, size.x};
+            }
         }
         const glm::vec2 extent = size * d.scale;
         if (d.rotation == 0.0f) {
@@ -472,13 +477,24 @@ void SpriteBatcher::repack(std::uint32_t index, const CameraState& camera) {
             s.edgeY = glm::vec2(-sn, c) * extent.y;
         }
         pivotOffset = -(s.edgeX * d.pivot.x + s.edgeY * d.pivot.y);
+        if (d.uvRotated) {
+            // The image is stored turned 90 degrees clockwise: the texture's u axis runs up the
+            // shown image and its v axis (down) to the right. The instance maps u along its
+            // edge X and v down along -edge Y, so its corner (0, 0) is the shown image's
+            // bottom-right corner, edge X the image's up edge and edge Y its leftward edge.
+            pivotOffset += s.edgeX;
+            const glm::vec2 up = s.edgeY;
+            s.edgeY = -s.edgeX;
+            s.edgeX = up;
+        }
         if (!d.hud) {
             packEdges(out, s.edgeX, s.edgeY);
             orderBounds_[at & ~kCameraBit] = boundsOf(glm::vec2(0.0f), s.edgeX, s.edgeY);
         }
     }
     if ((dirty & kLook) != 0) {
-        packLook(out, d.uv, d.flipX, d.flipY, d.tint);
+        // A turned image mirrors left-right along the texture's v axis, up-down along u.
+        packLook(out, d.uv, d.uvRotated ? d.flipY : d.flipX, d.uvRotated ? d.flipX : d.flipY, d.tint);
     }
     const Placement p = place(pos_[index], pivotOffset, s.edgeX, s.edgeY, d.parallax, d.hud, camera);
     if (d.hud) {

@@ -81,7 +81,7 @@ public:
     void setRotation(SpriteId id, float radians);
     void setPivot(SpriteId id, glm::vec2 pivot);
     void setTint(SpriteId id, Color tint);
-    void setUv(SpriteId id, const Rect& uv);
+    void setUv(SpriteId id, const Rect& uv, bool uvRotated);
     void setFlip(SpriteId id, bool flipX, bool flipY);
     void setParallax(SpriteId id, float parallax);
     void setHud(SpriteId id, bool hud);

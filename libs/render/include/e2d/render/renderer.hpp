@@ -87,6 +87,10 @@ struct SpriteDef {
     /// Part of the texture shown, fraction of the texture, top-left origin (see Image), each
     /// coordinate in [0, 1], size >= 0. Default the whole texture.
     Rect uv = kFullUv;
+    /// The `uv` region holds the image stored turned 90 degrees clockwise (a TexturePacker
+    /// frame with `rotated: true`): the sprite shows it upright, so the region's height is the
+    /// image's width (the automatic size is the region's extent swapped). Default false.
+    bool uvRotated = false;
     /// Mirror the image (not the quad: the pivot stays where it is). Default false.
     bool flipX = false;
     bool flipY = false;
@@ -229,7 +233,8 @@ public:
     void setRotation(SpriteId id, float radians);
     void setPivot(SpriteId id, glm::vec2 pivot);
     void setTint(SpriteId id, Color tint);
-    void setUv(SpriteId id, const Rect& uv);
+    /// The UV rectangle and whether the image is stored turned in it (SpriteDef::uvRotated).
+    void setUv(SpriteId id, const Rect& uv, bool uvRotated = false);
     void setFlip(SpriteId id, bool flipX, bool flipY);
     void setParallax(SpriteId id, float parallax);
     void setHud(SpriteId id, bool hud);
