@@ -93,10 +93,15 @@ struct RendererImpl {
             glEnable(GL_BLEND);
             glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
             glDepthMask(GL_FALSE);
+            // At equal z a translucent quad draws over the opaque ones.
+            glDepthFunc(GL_LEQUAL);
             glUniform1f(alphaCutLocation, 1.0f / 512.0f);
         } else {
             glDisable(GL_BLEND);
             glDepthMask(GL_TRUE);
+            // Strict: the batcher draws the opaque quad that must end on top of an equal-z
+            // pile first, and llvmpipe (like GPUs) rejects the ones under it before shading.
+            glDepthFunc(GL_LESS);
             glUniform1f(alphaCutLocation, 0.5f);
         }
     }
@@ -325,8 +330,6 @@ void Renderer::render(Camera& camera) {
     glUniform1f(r.depthScaleLocation, 1.0f / r.def.depthRange);
     glActiveTexture(GL_TEXTURE0);
     glEnable(GL_DEPTH_TEST);
-    // LEQUAL: at equal z the later-drawn quad wins, as in the translucent pass (painter's order).
-    glDepthFunc(GL_LEQUAL);
     glEnable(GL_DEPTH_CLAMP);
     glDisable(GL_CULL_FACE);
     r.beginPass(false);

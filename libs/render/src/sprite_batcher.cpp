@@ -37,6 +37,13 @@ void validate(const char* function, const SpriteDef& def) {
 
 std::uint16_t unorm16(float v) { return static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 65535.0f)); }
 
+bool isTranslucentKey(std::uint64_t key) { return (key >> 63) != 0; }
+
+// Of two equal keys, whether `a` (created or submitted before `b` when a < b) is drawn first:
+// in the translucent pass the later one is drawn last (painter's order); in the opaque pass
+// first (the strict depth test keeps the first).
+bool tieFirst(std::uint64_t key, std::uint32_t a, std::uint32_t b) { return isTranslucentKey(key) ? a < b : a > b; }
+
 // Monotonic unsigned image of a float: a < b  <=>  bits(a) < bits(b).
 std::uint32_t orderedBits(float z) {
     std::uint32_t bits = std::bit_cast<std::uint32_t>(z == 0.0f ? 0.0f : z);
@@ -151,8 +158,12 @@ bool SpriteBatcher::opaque(const Slot& s) const { return s.def.tint.a == 255 && 
 std::uint64_t SpriteBatcher::key(float z, std::uint32_t texture, bool isOpaque) const {
     std::uint64_t zBits = orderedBits(z);
     if (isOpaque) {
-        // Pass 0, by texture, then front to back (larger z first).
-        return (static_cast<std::uint64_t>(texture) << 32) | (~zBits & 0xffffffffu);
+        // Pass 0, drawn with a strict depth test, so of equal-z quads the first drawn stays on
+        // top: by texture, last texture first, then front to back (larger z first); equal keys
+        // draw the latest-created first (the comparators). The quad that ends on top is the
+        // same as painter's order would give, and the depth test rejects the quads it covers
+        // before they are shaded.
+        return (static_cast<std::uint64_t>(~texture & 0x7fffffffu) << 32) | (~zBits & 0xffffffffu);
     }
     // Pass 1, back to front (smaller z first), then texture so equal z shares batches.
     return (1ull << 63) | (zBits << 31) | (texture & 0x7fffffffu);
@@ -527,7 +538,7 @@ void SpriteBatcher::sortOrder() {
     }
     // Ties keep creation (slot) order, so equal keys draw the same way every frame.
     std::sort(order_.begin(), order_.end(),
-              [&](std::uint32_t a, std::uint32_t b) { return keys[a] != keys[b] ? keys[a] < keys[b] : a < b; });
+              [&](std::uint32_t a, std::uint32_t b) { return keys[a] != keys[b] ? keys[a] < keys[b] : tieFirst(keys[a], a, b); });
     // The packed instances live only in draw order: sprites drawn last frame move to their new
     // place; the others (new, shown again) are packed from scratch by prepare().
     std::vector<Instance> oldPacked = std::move(orderPacked_);
@@ -619,7 +630,7 @@ std::size_t SpriteBatcher::prepare(const CameraState& camera, const ViewBounds& 
         quadOrder_[k] = k;
     }
     std::sort(quadOrder_.begin(), quadOrder_.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return quads_[a].key != quads_[b].key ? quads_[a].key < quads_[b].key : a < b;
+        return quads_[a].key != quads_[b].key ? quads_[a].key < quads_[b].key : tieFirst(quads_[a].key, a, b);
     });
     return order_.size() + quads_.size();
 }
@@ -664,8 +675,11 @@ std::size_t SpriteBatcher::emit(Instance* dst, std::vector<Batch>& batches, Buil
         std::size_t k = 0;
         std::size_t q = 0;
         while (k < sprites || q < quadOrder_.size()) {
+            // At equal keys the later of the two (the quad, submitted after the sprites were
+            // made) is drawn first in the opaque pass and last in the translucent one.
+            const std::uint64_t quadKey = q < quadOrder_.size() ? quads_[quadOrder_[q]].key : 0;
             bool takeSprite = q == quadOrder_.size() ||
-                              (k < sprites && orderKeys_[k] <= quads_[quadOrder_[q]].key);
+                              (k < sprites && (orderKeys_[k] < quadKey || (orderKeys_[k] == quadKey && isTranslucentKey(quadKey))));
             if (takeSprite) {
                 const std::size_t at = k++;
                 if (outside(orderPacked_[at], orderBounds_[at], view)) {
