@@ -395,6 +395,45 @@ TEST_P(SpriteRender, MovesOfEveryKindOfSpriteLandWhereTheSceneSays) {
     EXPECT_EQ(scene.renderer.sprite(a).position, glm::vec2(-26.0f, 12.0f));
 }
 
+// Opaque quads at equal z: the later texture on top whatever the creation order, a cut-out
+// (alpha 0) texel of the top one shows the one under it, and a submitted quad lies over a
+// sprite of its texture.
+TEST_P(SpriteRender, EqualZOpaqueOverlapsFollowTextureThenSubmission) {
+    Scene scene(GetParam(), {32, 32});
+    Camera camera = pixelCamera({32, 32});
+    auto solid = [](Color c, bool cutTopRight) {
+        Image image{2, 2, {}};
+        for (int i = 0; i < 4; ++i) {
+            const bool cut = cutTopRight && i == 1; // rows from the top: texel 1 is the top-right
+            image.pixels.insert(image.pixels.end(), {c.r, c.g, c.b, static_cast<std::uint8_t>(cut ? 0 : 255)});
+        }
+        return image;
+    };
+    const TextureDef nearest{.filter = TextureFilter::Nearest};
+    const TextureId red = scene.renderer.createTexture(solid(kRed, false), nearest);
+    const TextureId green = scene.renderer.createTexture(solid(kGreen, true), nearest);
+    // Green (the later texture) made first, red over its right half made second.
+    scene.renderer.createSprite(SpriteDef{.texture = green, .position = {-12.0f, 0.0f}, .size = {8.0f, 8.0f},
+                                          .pivot = {0.0f, 0.0f}});
+    scene.renderer.createSprite(SpriteDef{.texture = red, .position = {-8.0f, 0.0f}, .size = {8.0f, 8.0f},
+                                          .pivot = {0.0f, 0.0f}});
+    // A blue plain sprite and a submitted white quad over its right half.
+    scene.renderer.createSprite(SpriteDef{.position = {4.0f, -8.0f}, .size = {8.0f, 8.0f}, .pivot = {0.0f, 0.0f},
+                                          .tint = kBlue});
+    scene.renderer.submit(Quad{.position = {8.0f, -8.0f}, .size = {8.0f, 8.0f}, .pivot = {0.0f, 0.0f}});
+    Image image = scene.frame(camera, "equal-z");
+    // Green covers screen [4, 12) x [16, 24); red [8, 16) x [16, 24); green's top-right
+    // quarter [8, 12) x [20, 24) is cut out.
+    EXPECT_TRUE(near(pixel(image, 9, 17), kGreen, 0)) << str(pixel(image, 9, 17));   // overlap, uncut
+    EXPECT_TRUE(near(pixel(image, 9, 22), kRed, 0)) << str(pixel(image, 9, 22));     // overlap, cut
+    EXPECT_TRUE(near(pixel(image, 5, 22), kGreen, 0)) << str(pixel(image, 5, 22));   // green alone
+    EXPECT_TRUE(near(pixel(image, 14, 18), kRed, 0)) << str(pixel(image, 14, 18));   // red alone
+    // Blue covers [20, 28) x [8, 16), the quad [24, 32) x [8, 16).
+    EXPECT_TRUE(near(pixel(image, 21, 10), kBlue, 0)) << str(pixel(image, 21, 10));
+    EXPECT_TRUE(near(pixel(image, 25, 10), Color{255, 255, 255, 255}, 0)) << str(pixel(image, 25, 10));
+    EXPECT_EQ(scene.renderer.stats().opaqueBatches, 3);
+}
+
 // Transient quads share the sprites' batches (same texture, same pass) and last one frame.
 TEST_P(SpriteRender, SubmittedQuadsBatchWithSprites) {
     Scene scene(GetParam(), {32, 32});

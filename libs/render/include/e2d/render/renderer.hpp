@@ -28,8 +28,10 @@
 ///
 /// Each frame (render()):
 /// 1. opaque pass: quads whose tint alpha is 255 and whose texture has no texel with alpha
-///    strictly between 0 and 255; depth test and write, texels with alpha < 0.5 discarded,
-///    sorted by texture then front to back (depth does the ordering, so one batch per texture);
+///    strictly between 0 and 255; strict depth test and write, texels with alpha < 0.5
+///    discarded, sorted by texture (last first) then front to back, and of equal-z quads the
+///    one that ends on top first (depth does the ordering, so one batch per texture, and the
+///    quads it covers are rejected before shading);
 /// 2. translucent pass: the rest, blended, depth-tested against the opaque pass, sorted back
 ///    to front by z, a batch broken only where the texture changes in that order.
 /// Each batch is one instanced draw call (FrameStats::drawCalls == FrameStats::batches).
