@@ -434,6 +434,62 @@ TEST_P(SpriteRender, EqualZOpaqueOverlapsFollowTextureThenSubmission) {
     EXPECT_EQ(scene.renderer.stats().opaqueBatches, 3);
 }
 
+// A UV region holding its image turned 90 degrees clockwise (SpriteDef::uvRotated) is shown
+// upright with a corner pivot, mirrored by flipY along the image's own vertical, and a plain
+// move (written straight into the instance) keeps it upright.
+TEST_P(SpriteRender, TurnedUvRegionsShowUpright) {
+    Scene scene(GetParam(), {32, 32});
+    Camera camera = pixelCamera({32, 32});
+    // The shown image: 4 x 2 texels, rows from the top: red red green green / blue blue white
+    // white. Stored turned clockwise in a 2 x 4 texture: shown texel (x, y) at (1 - y, x).
+    const Color kWhite{255, 255, 255, 255};
+    auto shown = [&](int x, int yDown) { return yDown == 0 ? (x < 2 ? kRed : kGreen) : (x < 2 ? kBlue : kWhite); };
+    Image image{2, 4, std::vector<std::uint8_t>(2 * 4 * 4, 255)};
+    for (int y = 0; y < 2; ++y) {
+        for (int x = 0; x < 4; ++x) {
+            std::uint8_t* p = &image.pixels[static_cast<std::size_t>((x * 2 + (1 - y)) * 4)];
+            const Color c = shown(x, y);
+            p[0] = c.r;
+            p[1] = c.g;
+            p[2] = c.b;
+        }
+    }
+    const TextureId texture = scene.renderer.createTexture(image, TextureDef{.filter = TextureFilter::Nearest});
+    // 8 x 4 world units: each shown texel a 2 x 2 block.
+    const SpriteId plain = scene.renderer.createSprite(SpriteDef{
+        .texture = texture, .position = {-12.0f, 4.0f}, .size = {8.0f, 4.0f}, .pivot = {0.0f, 0.0f}, .uvRotated = true});
+    const SpriteId flipped = scene.renderer.createSprite(SpriteDef{.texture = texture, .position = {2.0f, -10.0f},
+                                                                   .size = {8.0f, 4.0f}, .pivot = {0.0f, 0.0f},
+                                                                   .uvRotated = true, .flipY = true});
+    auto check = [&](const Image& frame, glm::vec2 plainAt, glm::vec2 flippedAt) {
+        int wrong = 0;
+        for (int y = 0; y < 32; ++y) {
+            for (int x = 0; x < 32; ++x) {
+                Color want = kBlack;
+                const int px = x - (16 + static_cast<int>(plainAt.x));
+                const int py = y - (16 + static_cast<int>(plainAt.y));
+                const int fx = x - (16 + static_cast<int>(flippedAt.x));
+                const int fy = y - (16 + static_cast<int>(flippedAt.y));
+                if (px >= 0 && px < 8 && py >= 0 && py < 4) {
+                    want = shown(px / 2, 1 - py / 2);
+                } else if (fx >= 0 && fx < 8 && fy >= 0 && fy < 4) {
+                    want = shown(fx / 2, fy / 2); // flipY: the bottom row on top
+                }
+                if (!near(pixel(frame, x, y), want, 0) && ++wrong <= 5) {
+                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") is " << str(pixel(frame, x, y)) << ", expected "
+                                  << str(want);
+                }
+            }
+        }
+        EXPECT_EQ(wrong, 0);
+    };
+    check(scene.frame(camera, "turned"), {-12.0f, 4.0f}, {2.0f, -10.0f});
+    scene.renderer.setPosition(plain, {-6.0f, -14.0f});
+    check(scene.frame(camera, "moved"), {-6.0f, -14.0f}, {2.0f, -10.0f});
+    EXPECT_EQ(scene.renderer.stats().rebuilt, 1);
+    EXPECT_TRUE(scene.renderer.sprite(flipped).uvRotated);
+}
+
 // Transient quads share the sprites' batches (same texture, same pass) and last one frame.
 TEST_P(SpriteRender, SubmittedQuadsBatchWithSprites) {
     Scene scene(GetParam(), {32, 32});
