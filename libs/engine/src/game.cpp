@@ -143,7 +143,7 @@ struct Running {
     Running(detail::GameState& state, const render::WindowDef& windowDef, const render::RendererDef& rendererDef,
             const audio::MixerDef& mixerDef, const core::SceneRegistry& scenes, std::uint64_t seed)
         : window(windowDef), renderer(window, rendererDef), renderSystem(renderer, nullptr, state.logger),
-          input(inputDef(state)), audio(mixerDef), physics(makeWorldDef(state.config)), random(seed), game(state),
+          input(inputDef(state)), audio(mixerDef), physics(makeWorldDef(state.config), static_cast<float>(state.config.unitsPerMetre)), random(seed), game(state),
           director(scenes, *state.logger), inputSystem(input, director, &actions, input::InputSystemDef{false, state.config.keyRepeat}) {}
 
     input::InputDef inputDef(const detail::GameState& state) {

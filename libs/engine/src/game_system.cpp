@@ -30,6 +30,7 @@ input::Input& GameSystem::input() noexcept { return *state_.input; }
 input::ActionMap& GameSystem::actions() noexcept { return *state_.actions; }
 audio::Mixer& GameSystem::mixer() noexcept { return state_.audio->mixer(); }
 physics::World& GameSystem::world() noexcept { return state_.physics->world(); }
+physics::PhysicsSystem& GameSystem::physics() noexcept { return *state_.physics; }
 core::Logger& GameSystem::logger() noexcept { return *state_.logger; }
 double GameSystem::unitsPerMetre() const noexcept { return state_.config.unitsPerMetre; }
 core::Random& GameSystem::random() noexcept { return *state_.random; }
