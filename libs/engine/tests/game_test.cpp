@@ -12,6 +12,7 @@
 #include <e2d/input/input.hpp>
 #include <e2d/physics/collider.hpp>
 #include <e2d/physics/geometry.hpp>
+#include <e2d/physics/joint_component.hpp>
 #include <e2d/physics/rigidbody.hpp>
 #include <e2d/physics/world.hpp>
 #include <e2d/render/image.hpp>
@@ -580,6 +581,78 @@ TEST(Game, PhysicsDebugDrawIsToggledByFlagConfigAndKey) {
     // Another key, by config.
     const std::filesystem::path tab = writeFile(tempDir() / "tab.txt", "1 tap key:tab\n");
     EXPECT_EQ(debugGreenPixels({"--input-script", tab.string()}, "debugDrawKey = tab\n"), flag);
+}
+
+TEST(Game, PhysicsDebugDrawShowsJointsInTheirOwnColour) {
+    // Two bodies without shapes, gravity off, at (-40, 20) and (40, 20) world units (1 unit is
+    // 1 px, the view's centre at the origin: pixel (80 + x, 60 - y)), joined by a distance
+    // joint whose anchors hang 20 units below each origin. The picture: a vertical line down
+    // each side from pixel row 40 to row 60 at columns 40 and 120, a line between the anchors
+    // along row 60, and a dot on each anchor.
+    const auto draw = [](bool debug) {
+        Game game;
+        addScene(game, "A", [](core::Scene& s) {
+            auto& physics = gameOf(s).physics();
+            physics::RigidbodyDef still;
+            still.gravityScale = 0.0f;
+            core::GameObject& a = s.createGameObject();
+            a.setPosition(glm::vec2{-40.0f, 20.0f});
+            a.addComponent<physics::Rigidbody>(still);
+            core::GameObject& b = s.createGameObject();
+            b.setPosition(glm::vec2{40.0f, 20.0f});
+            b.addComponent<physics::Rigidbody>(still);
+            physics::DistanceJointDef rope;
+            rope.localAnchorA = {0.0f, -20.0f};
+            rope.localAnchorB = {0.0f, -20.0f};
+            rope.length = 80.0f;
+            b.addComponent<physics::JointComponent>(physics, physics::JointComponentDef{rope, a.id()});
+        });
+        const std::filesystem::path shot = tempDir() / (debug ? "joint.png" : "joint_off.png");
+        std::vector<std::string> args{"--config", writeConfig("A").string(), "--frames", "5", "--screenshot",
+                                      shot.string()};
+        if (debug) {
+            args.emplace_back("--debug-draw");
+        }
+        const GameRun r = run(game, args);
+        EXPECT_EQ(r.code, 0) << r.all();
+        return render::loadImage(shot);
+    };
+    // The joint colour (0.1, 0.85, 0.85) reads (26, 217, 217).
+    const auto joint = [](const render::Image& image, int x0, int y0, int x1, int y1) {
+        int n = 0;
+        for (int y = y0; y <= y1; ++y) {
+            for (int x = x0; x <= x1; ++x) {
+                n += near(image.at(x, y), 26, 217, 217, 12) ? 1 : 0;
+            }
+        }
+        return n;
+    };
+    const render::Image off = draw(false);
+    EXPECT_EQ(joint(off, 0, 0, off.width - 1, off.height - 1), 0);
+    const render::Image on = draw(true);
+    ASSERT_EQ(on.width, 160);
+    ASSERT_EQ(on.height, 120);
+    // Each of the three lines, 2 px wide: at least one joint pixel in each row (column) it spans.
+    int rowsLeft = 0;
+    int rowsRight = 0;
+    for (int y = 42; y <= 56; ++y) {
+        rowsLeft += joint(on, 38, y, 42, y) > 0 ? 1 : 0;
+        rowsRight += joint(on, 118, y, 122, y) > 0 ? 1 : 0;
+    }
+    EXPECT_EQ(rowsLeft, 15);
+    EXPECT_EQ(rowsRight, 15);
+    int columns = 0;
+    for (int x = 45; x <= 115; ++x) {
+        columns += joint(on, x, 58, x, 62) > 0 ? 1 : 0;
+    }
+    EXPECT_EQ(columns, 71);
+    // The anchor dots (3 px radius) are wider than the lines.
+    EXPECT_GE(joint(on, 37, 57, 43, 63), 20);
+    EXPECT_GE(joint(on, 117, 57, 123, 63), 20);
+    // Nothing of that colour elsewhere: the three lines' strips hold it all.
+    const int all = joint(on, 0, 0, on.width - 1, on.height - 1);
+    const int inStrips = joint(on, 36, 36, 44, 64) + joint(on, 116, 36, 124, 64) + joint(on, 45, 56, 115, 64);
+    EXPECT_EQ(all, inStrips);
 }
 
 // --- Game objects: name, tag, active; mouse positions in world units ---------------------------

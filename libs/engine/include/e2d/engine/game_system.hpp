@@ -70,7 +70,8 @@ public:
     /// Ends the game after this frame.
     void terminateGame();
 
-    /// Whether the physics debug draw (shapes, AABBs, contacts and normals) is on.
+    /// Whether the physics debug draw (shapes, AABBs, contacts and normals, joints; colours in
+    /// DebugDrawColors) is on.
     [[nodiscard]] bool debugDraw() const noexcept;
     void setDebugDraw(bool on) noexcept;
 
