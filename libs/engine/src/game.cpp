@@ -24,6 +24,7 @@
 #include "debug_draw.hpp"
 #include "game_state.hpp"
 #include "interpolator.hpp"
+#include "profile_overlay.hpp"
 
 #include <GLFW/glfw3.h>
 
@@ -139,12 +140,14 @@ struct Running {
     core::SceneDirector director;
     input::InputSystem inputSystem;
     detail::Interpolator interpolator;
+    detail::ProfileOverlay overlay;
 
     Running(detail::GameState& state, const render::WindowDef& windowDef, const render::RendererDef& rendererDef,
             const audio::MixerDef& mixerDef, const core::SceneRegistry& scenes, std::uint64_t seed)
         : window(windowDef), renderer(window, rendererDef), renderSystem(renderer, nullptr, state.logger),
           input(inputDef(state)), audio(mixerDef), physics(makeWorldDef(state.config), static_cast<float>(state.config.unitsPerMetre)), random(seed), game(state),
-          director(scenes, *state.logger), inputSystem(input, director, &actions, input::InputSystemDef{false, state.config.keyRepeat}) {}
+          director(scenes, *state.logger), inputSystem(input, director, &actions, input::InputSystemDef{false, state.config.keyRepeat}),
+          overlay(renderSystem, *state.profile, static_cast<float>(state.config.maxCameraDepth)) {}
 
     input::InputDef inputDef(const detail::GameState& state) {
         input::InputDef def;
@@ -232,6 +235,14 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
                       " (registered: " + (names.empty() ? std::string("none") : names) + ")");
         return kExitUsage;
     }
+    std::optional<int> profileKey;
+    if (!config.profileKey.empty()) {
+        profileKey = input::keyFromName(config.profileKey);
+        if (!profileKey) {
+            logger_.error(configName + ": profileKey: unknown key name '" + config.profileKey + "'");
+            return kExitUsage;
+        }
+    }
     std::optional<int> debugKey;
     if (!config.debugDrawKey.empty()) {
         debugKey = input::keyFromName(config.debugDrawKey);
@@ -298,6 +309,8 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
     state.random = &r.random;
     state.director = &r.director;
     state.interpolator = &r.interpolator;
+    state.overlay = &r.overlay;
+    r.overlay.setVisible(config.showProfile || options.profile);
 
     if (!config.bindingsFile.empty()) {
         try {
@@ -323,6 +336,7 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
                              static_cast<float>(config.referenceWindowHeight)});
     camera.setFit(toScreenFit(config.screenFitMode));
     r.renderSystem.addHook(r.interpolator);
+    r.renderSystem.addHook(r.overlay);
 
     r.director.addSystem(r.inputSystem);
     r.director.addSystem(r.physics);
@@ -392,6 +406,9 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
             }
             if (debugKey && r.input.wasKeyPressed(*debugKey)) {
                 state.debugDraw = !state.debugDraw;
+            }
+            if (profileKey && r.input.wasKeyPressed(*profileKey)) {
+                r.overlay.setVisible(!r.overlay.visible());
             }
             times.input = msSince(t);
 

@@ -9,6 +9,7 @@
 
 #include "game_state.hpp"
 #include "interpolator.hpp"
+#include "profile_overlay.hpp"
 
 namespace e2d::engine {
 
@@ -40,6 +41,8 @@ void GameSystem::terminateGame() { state_.director->terminateGame(); }
 
 bool GameSystem::debugDraw() const noexcept { return state_.debugDraw; }
 void GameSystem::setDebugDraw(bool on) noexcept { state_.debugDraw = on; }
+bool GameSystem::profileOverlay() const noexcept { return state_.overlay->visible(); }
+void GameSystem::setProfileOverlay(bool on) noexcept { state_.overlay->setVisible(on); }
 std::int64_t GameSystem::frame() const noexcept { return state_.frame; }
 bool GameSystem::headless() const noexcept { return state_.headless; }
 const FrameProfile& GameSystem::profile() const noexcept { return *state_.profile; }

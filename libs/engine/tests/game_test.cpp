@@ -655,6 +655,103 @@ TEST(Game, PhysicsDebugDrawShowsJointsInTheirOwnColour) {
     EXPECT_EQ(all, inStrips);
 }
 
+// --- Frame profile overlay ---------------------------------------------------------------------
+
+struct OverlayRun {
+    render::Image image;
+    bool on = false;
+};
+
+// A 160 x 120 game drawing a mid-grey backdrop over its whole view (so the overlay's 60 % black
+// backdrop shows too), run 20 frames with `extraArgs` and `configExtra`.
+OverlayRun overlayRun(const std::vector<std::string>& extraArgs, const std::string& configExtra,
+                      const std::string& name) {
+    Game game;
+    bool on = false;
+    addScene(
+        game, "A",
+        [](core::Scene& s) {
+            render::SpriteRendererDef def;
+            def.size = {160.0f, 120.0f};
+            def.tint = {128, 128, 128, 255};
+            s.createGameObject().addComponent<render::SpriteRenderer>(def);
+        },
+        [&on](core::Scene& s) { on = gameOf(s).profileOverlay(); });
+    const std::filesystem::path shot = tempDir() / (name + ".png");
+    std::vector<std::string> args{"--config", writeConfig("A", configExtra).string(), "--frames", "20",
+                                  "--screenshot", shot.string()};
+    args.insert(args.end(), extraArgs.begin(), extraArgs.end());
+    const GameRun r = run(game, args);
+    EXPECT_EQ(r.code, 0) << r.all();
+    return {render::loadImage(shot), on};
+}
+
+// Pixels of the overlay's colours in a region: its yellow text (255, 230, 90, antialiased, so
+// any pixel clearly yellower than the grey) and its backdrop (the grey 128 darkened by 60 %
+// black: 51).
+struct OverlayInk {
+    int text = 0;
+    int backdrop = 0;
+};
+
+OverlayInk overlayInk(const render::Image& image, int x0, int y0, int x1, int y1) {
+    OverlayInk ink;
+    for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+            const std::uint8_t* p = image.at(x, y);
+            ink.text += (p[0] > p[2] + 40 && p[1] > p[2] + 30) ? 1 : 0;
+            ink.backdrop += near(p, 51, 51, 51, 3) ? 1 : 0;
+        }
+    }
+    return ink;
+}
+
+TEST(Game, ProfileOverlayIsDrawnTopLeftWhenTurnedOnByFlagConfigOrKey) {
+    // Three lines of 14 px text from 6 px in, over the top 60 rows (wider than this small
+    // window: it runs off its right edge).
+    const OverlayRun off = overlayRun({}, "", "off");
+    EXPECT_FALSE(off.on);
+    const OverlayInk none = overlayInk(off.image, 0, 0, 159, 119);
+    EXPECT_EQ(none.text, 0);
+    EXPECT_EQ(none.backdrop, 0);
+
+    const OverlayRun flag = overlayRun({"--profile"}, "", "flag");
+    EXPECT_TRUE(flag.on);
+    const OverlayInk corner = overlayInk(flag.image, 0, 0, 149, 59);
+    EXPECT_GT(corner.text, 150) << "text ink in the top-left corner";
+    EXPECT_GT(corner.backdrop, 1500) << "its backdrop";
+    const OverlayInk rest = overlayInk(flag.image, 0, 62, 159, 119);
+    EXPECT_EQ(rest.text + rest.backdrop, 0) << "nothing of it below";
+    // Anchored 6 px in from the corner, the backdrop 4 px around the text: the two outermost
+    // rows and columns stay grey.
+    const OverlayInk top = overlayInk(flag.image, 0, 0, 159, 1);
+    const OverlayInk left = overlayInk(flag.image, 0, 0, 1, 119);
+    EXPECT_EQ(top.text + top.backdrop + left.text + left.backdrop, 0);
+    EXPECT_EQ(overlayInk(flag.image, 2, 2, 5, 59).text, 0) << "the text starts 6 px in";
+
+    const OverlayRun config = overlayRun({}, "showProfile = true\n", "config");
+    EXPECT_TRUE(config.on);
+    EXPECT_GT(overlayInk(config.image, 0, 0, 149, 59).text, 150);
+
+    // The profileKey (default f2) turns it on; pressed again, off.
+    const std::filesystem::path once = writeFile(tempDir() / "once.txt", "2 tap key:f2\n");
+    const OverlayRun key = overlayRun({"--input-script", once.string()}, "", "key");
+    EXPECT_TRUE(key.on);
+    EXPECT_GT(overlayInk(key.image, 0, 0, 149, 59).text, 150);
+    const std::filesystem::path twice = writeFile(tempDir() / "twice.txt", "2 tap key:f4\n5 tap key:f4\n");
+    const OverlayRun keyTwice = overlayRun({"--input-script", twice.string()}, "profileKey = f4\n", "twice");
+    EXPECT_FALSE(keyTwice.on);
+    EXPECT_EQ(overlayInk(keyTwice.image, 0, 0, 159, 119).text, 0);
+}
+
+TEST(Game, UnknownProfileKeyIsAConfigError) {
+    Game game;
+    addScene(game, "A", [](core::Scene&) {});
+    const GameRun r = run(game, {"--config", writeConfig("A", "profileKey = f99\n").string(), "--frames", "1"});
+    EXPECT_EQ(r.code, 2) << r.all();
+    EXPECT_EQ(r.count("profileKey: unknown key name 'f99'"), 1) << r.all();
+}
+
 // --- Game objects: name, tag, active; mouse positions in world units ---------------------------
 
 TEST(Game, InactiveObjectsAreNeitherUpdatedNorDrawnAndObjectsAreFoundByNameAndTag) {

@@ -75,6 +75,12 @@ public:
     [[nodiscard]] bool debugDraw() const noexcept;
     void setDebugDraw(bool on) noexcept;
 
+    /// Whether the frame profile overlay (config showProfile, `--profile`, the profileKey) is
+    /// on: mean milliseconds per frame and per phase over the last 15 frames, drawn by the
+    /// engine in camera space at the view's top-left corner, above everything.
+    [[nodiscard]] bool profileOverlay() const noexcept;
+    void setProfileOverlay(bool on) noexcept;
+
     /// Frames run so far (0 during the first frame).
     [[nodiscard]] std::int64_t frame() const noexcept;
     /// True for a `--frames N` run (fixed 1/60 s frames, hidden window).
