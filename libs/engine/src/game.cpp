@@ -29,6 +29,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdlib>
 #include <cstdio>
@@ -81,11 +82,70 @@ std::filesystem::path programFolder(const char* argv0) {
     return argv0 != nullptr ? std::filesystem::path(argv0).parent_path() : std::filesystem::path();
 }
 
-/// A scripted input resolved to what is pressed.
+/// A scripted input resolved to what is pressed or moved.
 struct ScriptTarget {
-    enum class Kind { Key, Mouse };
+    enum class Kind { Key, Mouse, PadButton, PadAxis, Cursor };
     Kind kind = Kind::Key;
     int code = 0;
+    /// PadButton, PadAxis: the gamepad slot.
+    int slot = 0;
+    /// Move: the cursor position, or the axis value in GLFW's range.
+    float x = 0.0f;
+    float y = 0.0f;
+};
+
+/// Whether a script names a gamepad button or axis (it then drives scripted gamepads, and the
+/// real joysticks are not read).
+bool scriptUsesGamepad(const InputScript& script) {
+    return std::any_of(script.events.begin(), script.events.end(), [](const ScriptEvent& e) {
+        return e.target.rfind("button", 0) == 0 || e.target.rfind("axis", 0) == 0;
+    });
+}
+
+/// The gamepads an input script drives: a snapshot per slot, fed to Input on change.
+struct ScriptedPads {
+    std::array<input::JoystickSnapshot, input::kMaxGamepads> pads{};
+    std::array<bool, input::kMaxGamepads> used{};
+    std::array<bool, input::kMaxGamepads> changed{};
+
+    void use(int slot) {
+        const auto s = static_cast<std::size_t>(slot);
+        if (!used[s]) {
+            used[s] = true;
+            changed[s] = true;
+            input::JoystickSnapshot& pad = pads[s];
+            pad.present = true;
+            pad.gamepad = true;
+            pad.guid = "00000000000000000000000000000000";
+            pad.name = "e2d input script";
+            pad.axes.fill(0.0f);
+            pad.axes[GLFW_GAMEPAD_AXIS_LEFT_TRIGGER] = -1.0f; // released, as GLFW reports it
+            pad.axes[GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER] = -1.0f;
+        }
+    }
+    void button(int slot, int code, bool down) {
+        const auto s = static_cast<std::size_t>(slot);
+        if (code == input::kGamepadButtonLeftTrigger || code == input::kGamepadButtonRightTrigger) {
+            const int axis = code == input::kGamepadButtonLeftTrigger ? GLFW_GAMEPAD_AXIS_LEFT_TRIGGER
+                                                                      : GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
+            pads[s].axes[static_cast<std::size_t>(axis)] = down ? 1.0f : -1.0f;
+        } else {
+            pads[s].buttons[static_cast<std::size_t>(code)] = down ? 1 : 0;
+        }
+        changed[s] = true;
+    }
+    void axis(int slot, int code, float raw) {
+        pads[static_cast<std::size_t>(slot)].axes[static_cast<std::size_t>(code)] = raw;
+        changed[static_cast<std::size_t>(slot)] = true;
+    }
+    void feed(input::Input& input) {
+        for (int slot = 0; slot < input::kMaxGamepads; ++slot) {
+            if (changed[static_cast<std::size_t>(slot)]) {
+                input.handleJoystick(slot, pads[static_cast<std::size_t>(slot)]);
+                changed[static_cast<std::size_t>(slot)] = false;
+            }
+        }
+    }
 };
 
 /// Resolves an input-script target: an action's first key or mouse binding, or a binding text.
@@ -102,6 +162,30 @@ ScriptTarget resolveTarget(const ScriptEvent& event, const InputScript& script, 
         }
         return std::nullopt;
     };
+    if (event.kind == ScriptEvent::Kind::Move) {
+        if (event.target == "mouse") {
+            return ScriptTarget{ScriptTarget::Kind::Cursor, 0, 0, event.x, event.y};
+        }
+        input::Binding axis;
+        try {
+            axis = input::parseBinding(event.target);
+        } catch (const core::Error& e) {
+            return fail(e.what());
+        }
+        if (axis.kind != input::BindingKind::GamepadAxis) {
+            return fail("move: '" + event.target + "' is not a gamepad axis (axis:leftx, axis@1:righttrigger)");
+        }
+        const float value = axis.inverted ? -event.x : event.x;
+        const bool trigger = axis.code == GLFW_GAMEPAD_AXIS_LEFT_TRIGGER || axis.code == GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
+        if (trigger && value < 0.0f) {
+            char number[32];
+            std::snprintf(number, sizeof number, "%g", static_cast<double>(event.x));
+            return fail("move " + event.target + ": a trigger's value is in [0, 1], got " + number);
+        }
+        // GLFW reports a trigger from -1 (released) to 1.
+        return ScriptTarget{ScriptTarget::Kind::PadAxis, axis.code, std::max(axis.gamepad, 0),
+                            trigger ? 2.0f * value - 1.0f : value, 0.0f};
+    }
     if (const input::ActionId id = actions.find(event.target); !id.isNull()) {
         for (const input::Binding& b : actions.bindings(id)) {
             if (auto t = fromBinding(b)) {
@@ -122,7 +206,11 @@ ScriptTarget resolveTarget(const ScriptEvent& event, const InputScript& script, 
     if (auto t = fromBinding(binding)) {
         return *t;
     }
-    return fail("'" + event.target + "': only key: and mouse: bindings can be scripted");
+    if (binding.kind == input::BindingKind::GamepadButton) {
+        return ScriptTarget{ScriptTarget::Kind::PadButton, binding.code, std::max(binding.gamepad, 0), 0.0f, 0.0f};
+    }
+    return fail("'" + event.target + "': only key:, mouse: and button: bindings can be pressed (axes are moved: "
+                "'<frame> move " + event.target + " <value>')");
 }
 
 /// The systems of a running game and the objects they run, in construction order (so they are
@@ -153,6 +241,7 @@ struct Running {
         input::InputDef def;
         def.window = window.handle();
         def.logger = state.logger;
+        def.pollGamepads = !state.scriptedGamepads;
         // Window pixels (top-left origin) -> framebuffer pixels (bottom-left) -> world, through
         // the camera the last frame was drawn with.
         def.screenToWorld = [this](glm::vec2 screen) {
@@ -261,6 +350,8 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
         }
     }
 
+    state.scriptedGamepads = scriptUsesGamepad(script);
+
     // Window, renderer, input, mixer, physics.
     render::WindowDef windowDef;
     windowDef.title = config.windowTitle;
@@ -321,10 +412,14 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
         }
     }
     std::vector<std::pair<std::int64_t, std::pair<ScriptTarget, bool>>> scripted;
+    ScriptedPads pads;
     try {
         for (const ScriptEvent& event : script.events) {
-            scripted.push_back(
-                {event.frame, {resolveTarget(event, script, r.actions), event.kind == ScriptEvent::Kind::Press}});
+            const ScriptTarget target = resolveTarget(event, script, r.actions);
+            if (target.kind == ScriptTarget::Kind::PadButton || target.kind == ScriptTarget::Kind::PadAxis) {
+                pads.use(target.slot); // connected from the first frame
+            }
+            scripted.push_back({event.frame, {target, event.kind == ScriptEvent::Kind::Press}});
         }
     } catch (const core::Error& e) {
         logger_.error(e.what());
@@ -393,12 +488,25 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
             }
             for (; nextScripted < scripted.size() && scripted[nextScripted].first <= state.frame; ++nextScripted) {
                 const auto& [target, press] = scripted[nextScripted].second;
-                if (target.kind == ScriptTarget::Kind::Key) {
+                switch (target.kind) {
+                case ScriptTarget::Kind::Key:
                     r.input.handleKey(target.code, 0, press ? GLFW_PRESS : GLFW_RELEASE, 0);
-                } else {
+                    break;
+                case ScriptTarget::Kind::Mouse:
                     r.input.handleMouseButton(target.code, press ? GLFW_PRESS : GLFW_RELEASE, 0);
+                    break;
+                case ScriptTarget::Kind::Cursor:
+                    r.input.handleCursorPos(target.x, target.y);
+                    break;
+                case ScriptTarget::Kind::PadButton:
+                    pads.button(target.slot, target.code, press);
+                    break;
+                case ScriptTarget::Kind::PadAxis:
+                    pads.axis(target.slot, target.code, target.x);
+                    break;
                 }
             }
+            pads.feed(r.input);
             r.window.pollEvents();
             r.director.setWindowSize(r.window.size());
             for (core::System* system : systems) {

@@ -53,6 +53,8 @@ struct GameState {
     int texturesReleased = 0;
     bool debugDraw = false;
     bool headless = false;
+    /// The input script drives gamepads: the real joysticks are not polled.
+    bool scriptedGamepads = false;
     std::int64_t frame = 0;
 };
 

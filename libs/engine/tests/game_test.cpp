@@ -447,13 +447,14 @@ TEST(Game, InputScriptErrorsNameTheLine) {
         return r.all();
     };
     const std::string bad = (dir / "bad.txt").string();
-    EXPECT_THAT(errorOf("0 press jump\n1 push jump\n"), HasSubstr(bad + ":2: expected press, release or tap, got 'push'"));
+    EXPECT_THAT(errorOf("0 press jump\n1 push jump\n"), HasSubstr(bad + ":2: expected press, release, tap or move, got 'push'"));
     EXPECT_THAT(errorOf("\n4 press dance\n"),
                 HasSubstr(bad + ":2: 'dance' is not an action of the game (nor a binding such as key:space)"));
     EXPECT_THAT(errorOf("4 press padonly\n"),
                 HasSubstr(bad + ":1: action 'padonly' has no keyboard or mouse-button binding to press"));
     EXPECT_THAT(errorOf("4 press key:nokey\n"), HasSubstr(bad + ":1: input::parseBinding(): unknown key name"));
-    EXPECT_THAT(errorOf("4 press button:a\n"), HasSubstr(bad + ":1: 'button:a': only key: and mouse: bindings"));
+    EXPECT_THAT(errorOf("4 press axis:lefty\n"),
+                HasSubstr(bad + ":1: 'axis:lefty': only key:, mouse: and button: bindings can be pressed"));
     const GameRun missing = run(game, {"--config", config, "--input-script", (dir / "none.txt").string()});
     EXPECT_EQ(missing.code, 2);
     EXPECT_EQ(missing.count("none.txt: cannot read the input script"), 1) << missing.all();
@@ -653,6 +654,84 @@ TEST(Game, PhysicsDebugDrawShowsJointsInTheirOwnColour) {
     const int all = joint(on, 0, 0, on.width - 1, on.height - 1);
     const int inStrips = joint(on, 36, 36, 44, 64) + joint(on, 116, 36, 124, 64) + joint(on, 45, 56, 115, 64);
     EXPECT_EQ(all, inStrips);
+}
+
+TEST(Game, InputScriptMovesTheMouseClicksAndDrivesGamepads) {
+    struct Seen : core::Component {
+        explicit Seen(std::vector<std::string>& out) : events(out) {}
+        std::vector<std::string>& events;
+        void onMouseButtonDown(int button, glm::vec2, glm::vec2 world) override {
+            events.push_back("mouse " + std::to_string(button) + " at " + std::to_string(static_cast<int>(world.x)) +
+                             "," + std::to_string(static_cast<int>(world.y)));
+        }
+        void onControllerConnected(int pad) override { events.push_back("connected " + std::to_string(pad)); }
+        void onControllerButtonDown(int pad, int button) override {
+            events.push_back("down " + std::to_string(pad) + ":" + std::to_string(button));
+        }
+        void onControllerButtonUp(int pad, int button) override {
+            events.push_back("up " + std::to_string(pad) + ":" + std::to_string(button));
+        }
+    };
+    std::vector<std::string> seen;
+    std::vector<float> leftX;
+    std::vector<float> rightTrigger;
+    std::vector<bool> aDown;
+    Game game;
+    addScene(
+        game, "A", [&](core::Scene& s) { s.createGameObject().addComponent<Seen>(seen); },
+        [&](core::Scene& s) {
+            const input::Input& in = gameOf(s).input();
+            leftX.push_back(in.gamepadAxis(0, GLFW_GAMEPAD_AXIS_LEFT_X));
+            rightTrigger.push_back(in.gamepadAxis(1, GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER));
+            aDown.push_back(in.isGamepadButtonDown(0, GLFW_GAMEPAD_BUTTON_A));
+        });
+    const std::filesystem::path script = writeFile(tempDir() / "pads.txt",
+                                                   "1 move mouse 120 90\n"
+                                                   "1 tap mouse:left\n"
+                                                   "2 press button:a\n"
+                                                   "3 move axis:leftx 0.6\n"
+                                                   "4 move axis@1:righttrigger 1\n"
+                                                   "5 release button:a\n"
+                                                   "6 move axis:leftx 0\n");
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "8", "--input-script",
+                                 script.string()});
+    ASSERT_EQ(r.code, 0) << r.all();
+    // 160 x 120 window, camera at the origin: window pixel (120, 90) is world (40, -30).
+    EXPECT_THAT(seen, testing::ElementsAre("connected 0", "connected 1", "mouse 0 at 40,-30", "down 0:0",
+                                                   "down 1:" + std::to_string(input::kGamepadButtonRightTrigger),
+                                                   "up 0:0"));
+    ASSERT_EQ(leftX.size(), 8u);
+    // The stick through its default 0.2 radial dead zone: (0.6 - 0.2) / 0.8 = 0.5.
+    EXPECT_EQ(leftX[2], 0.0f);
+    EXPECT_NEAR(leftX[3], 0.5f, 1e-5f);
+    EXPECT_NEAR(leftX[5], 0.5f, 1e-5f);
+    EXPECT_EQ(leftX[6], 0.0f);
+    EXPECT_EQ(rightTrigger[3], 0.0f);
+    EXPECT_NEAR(rightTrigger[4], 1.0f, 1e-5f);
+    const std::vector<bool> expectA{false, false, true, true, true, false, false, false};
+    EXPECT_EQ(aDown, expectA);
+}
+
+TEST(Game, InputScriptGamepadErrorsNameTheLine) {
+    Game game;
+    addScene(game, "A", [](core::Scene&) {});
+    const auto errorOf = [&](const std::string& text) {
+        const std::filesystem::path script = writeFile(tempDir() / "bad.txt", text);
+        const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "1", "--input-script",
+                                     script.string()});
+        EXPECT_EQ(r.code, 2) << r.all();
+        return r.all();
+    };
+    const std::string bad = (tempDir() / "bad.txt").string();
+    EXPECT_THAT(errorOf("0 press axis:leftx\n"), HasSubstr(bad + ":1: 'axis:leftx': only key:, mouse: and button: "
+                                                                  "bindings can be pressed"));
+    EXPECT_THAT(errorOf("0 tap key:a\n1 move key:a 1\n"),
+                HasSubstr(bad + ":2: move: expected 'mouse' or a gamepad axis (axis:leftx), got 'key:a'"));
+    const std::string unknown = errorOf("0 move axis:sideways 1\n");
+    EXPECT_THAT(unknown, HasSubstr(bad + ":1: "));
+    EXPECT_THAT(unknown, HasSubstr("'sideways'"));
+    EXPECT_THAT(errorOf("0 move axis:lefttrigger -0.5\n"),
+                HasSubstr(bad + ":1: move axis:lefttrigger: a trigger's value is in [0, 1], got -0.5"));
 }
 
 // --- Frame profile overlay ---------------------------------------------------------------------
