@@ -176,7 +176,8 @@ ScriptTarget resolveTarget(const ScriptEvent& event, const InputScript& script, 
             return fail("move: '" + event.target + "' is not a gamepad axis (axis:leftx, axis@1:righttrigger)");
         }
         const float value = axis.inverted ? -event.x : event.x;
-        const bool trigger = axis.code == GLFW_GAMEPAD_AXIS_LEFT_TRIGGER || axis.code == GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
+        const bool trigger =
+            axis.code == GLFW_GAMEPAD_AXIS_LEFT_TRIGGER || axis.code == GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
         if (trigger && value < 0.0f) {
             char number[32];
             std::snprintf(number, sizeof number, "%g", static_cast<double>(event.x));
@@ -233,8 +234,10 @@ struct Running {
     Running(detail::GameState& state, const render::WindowDef& windowDef, const render::RendererDef& rendererDef,
             const audio::MixerDef& mixerDef, const core::SceneRegistry& scenes, std::uint64_t seed)
         : window(windowDef), renderer(window, rendererDef), renderSystem(renderer, nullptr, state.logger),
-          input(inputDef(state)), audio(mixerDef), physics(makeWorldDef(state.config), static_cast<float>(state.config.unitsPerMetre)), random(seed), game(state),
-          director(scenes, *state.logger), inputSystem(input, director, &actions, input::InputSystemDef{false, state.config.keyRepeat}),
+          input(inputDef(state)), audio(mixerDef),
+          physics(makeWorldDef(state.config), static_cast<float>(state.config.unitsPerMetre)), random(seed),
+          game(state), director(scenes, *state.logger),
+          inputSystem(input, director, &actions, input::InputSystemDef{false, state.config.keyRepeat}),
           overlay(renderSystem, *state.profile, static_cast<float>(state.config.maxCameraDepth)) {}
 
     input::InputDef inputDef(const detail::GameState& state) {

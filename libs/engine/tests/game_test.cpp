@@ -447,7 +447,8 @@ TEST(Game, InputScriptErrorsNameTheLine) {
         return r.all();
     };
     const std::string bad = (dir / "bad.txt").string();
-    EXPECT_THAT(errorOf("0 press jump\n1 push jump\n"), HasSubstr(bad + ":2: expected press, release, tap or move, got 'push'"));
+    EXPECT_THAT(errorOf("0 press jump\n1 push jump\n"),
+                HasSubstr(bad + ":2: expected press, release, tap or move, got 'push'"));
     EXPECT_THAT(errorOf("\n4 press dance\n"),
                 HasSubstr(bad + ":2: 'dance' is not an action of the game (nor a binding such as key:space)"));
     EXPECT_THAT(errorOf("4 press padonly\n"),

@@ -97,7 +97,8 @@ TEST(InputScript, MalformedMovesNameFileLineAndValue) {
     EXPECT_EQ(errorOf("1 move mouse 12 y"), "run.txt:1: move mouse: expected '<x> <y>' in window pixels, got '12 y'");
     EXPECT_EQ(errorOf("1 move mouse 1 2 3"),
               "run.txt:1: move mouse: expected '<x> <y>' in window pixels, got '1 2 3'");
-    EXPECT_EQ(errorOf("\n1 move axis:leftx 1.5"), "run.txt:2: move axis:leftx: expected one value in [-1, 1], got '1.5'");
+    EXPECT_EQ(errorOf("\n1 move axis:leftx 1.5"),
+              "run.txt:2: move axis:leftx: expected one value in [-1, 1], got '1.5'");
     EXPECT_EQ(errorOf("1 move axis:leftx"), "run.txt:1: move axis:leftx: expected one value in [-1, 1], got ''");
     EXPECT_EQ(errorOf("1 move axis:leftx nan"), "run.txt:1: move axis:leftx: expected one value in [-1, 1], got 'nan'");
     EXPECT_EQ(errorOf("1 move jump 1"), "run.txt:1: move: expected 'mouse' or a gamepad axis (axis:leftx), got 'jump'");

@@ -206,45 +206,49 @@ void PhysicsSystem::dispatchEvents() {
         bool& flag;
         ~Reset() { flag = false; }
     } reset{dispatching_};
-    const auto objectOf = [](Collider* c) { return c != nullptr ? c->gameObject() : nullptr; };
+    // What the receiving object is told about `other`: points and separations in world units.
+    const auto contact = [this](const Manifold* manifold, bool receiverIsA, Collider* other) {
+        return contactFor(manifold, receiverIsA, other != nullptr ? other->gameObject() : nullptr, other,
+                          unitsPerMetre_);
+    };
     for (const ContactBeginTouchEvent& e : beginEvents_) {
         Collider* a = collider(e.shapeA);
         Collider* b = collider(e.shapeB);
         if (a != nullptr) {
-            a->gameObject()->dispatchCollisionEnter(contactFor(&e.manifold, true, objectOf(b), b, unitsPerMetre_));
+            a->gameObject()->dispatchCollisionEnter(contact(&e.manifold, true, b));
         }
         if (b != nullptr) {
-            b->gameObject()->dispatchCollisionEnter(contactFor(&e.manifold, false, objectOf(a), a, unitsPerMetre_));
+            b->gameObject()->dispatchCollisionEnter(contact(&e.manifold, false, a));
         }
     }
     for (const ContactEndTouchEvent& e : endEvents_) {
         Collider* a = collider(e.shapeA);
         Collider* b = collider(e.shapeB);
         if (a != nullptr) {
-            a->gameObject()->dispatchCollisionExit(contactFor(nullptr, true, objectOf(b), b, unitsPerMetre_));
+            a->gameObject()->dispatchCollisionExit(contact(nullptr, true, b));
         }
         if (b != nullptr) {
-            b->gameObject()->dispatchCollisionExit(contactFor(nullptr, false, objectOf(a), a, unitsPerMetre_));
+            b->gameObject()->dispatchCollisionExit(contact(nullptr, false, a));
         }
     }
     for (const SensorBeginTouchEvent& e : sensorBeginEvents_) {
         Collider* sensor = collider(e.sensorShape);
         Collider* visitor = collider(e.visitorShape);
         if (sensor != nullptr) {
-            sensor->gameObject()->dispatchTriggerEnter(contactFor(nullptr, true, objectOf(visitor), visitor, unitsPerMetre_));
+            sensor->gameObject()->dispatchTriggerEnter(contact(nullptr, true, visitor));
         }
         if (visitor != nullptr) {
-            visitor->gameObject()->dispatchTriggerEnter(contactFor(nullptr, true, objectOf(sensor), sensor, unitsPerMetre_));
+            visitor->gameObject()->dispatchTriggerEnter(contact(nullptr, true, sensor));
         }
     }
     for (const SensorEndTouchEvent& e : sensorEndEvents_) {
         Collider* sensor = collider(e.sensorShape);
         Collider* visitor = collider(e.visitorShape);
         if (sensor != nullptr) {
-            sensor->gameObject()->dispatchTriggerExit(contactFor(nullptr, true, objectOf(visitor), visitor, unitsPerMetre_));
+            sensor->gameObject()->dispatchTriggerExit(contact(nullptr, true, visitor));
         }
         if (visitor != nullptr) {
-            visitor->gameObject()->dispatchTriggerExit(contactFor(nullptr, true, objectOf(sensor), sensor, unitsPerMetre_));
+            visitor->gameObject()->dispatchTriggerExit(contact(nullptr, true, sensor));
         }
     }
 }
