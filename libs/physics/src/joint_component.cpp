@@ -7,6 +7,7 @@
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
+#include "error_format.hpp"
 #include "joint_def_check.hpp"
 
 #include <string>
@@ -37,7 +38,9 @@ JointDef inMetres(JointDef def, float upm) {
             if constexpr (std::is_same_v<D, DistanceJointDef>) {
                 length(d.length);
                 length(d.minLength);
-                length(d.maxLength);
+                if (d.maxLength < kHuge) { // kHuge: no limit, at any scale
+                    length(d.maxLength);
+                }
                 length(d.maxMotorForce);
                 length(d.motorSpeed);
             } else if constexpr (std::is_same_v<D, MotorJointDef>) {
@@ -89,6 +92,10 @@ JointComponent::JointComponent(PhysicsSystem& system, const JointComponentDef& d
         std::string what = e.what();
         if (what.rfind(kCreatePrefix, 0) == 0) {
             what.erase(0, kCreatePrefix.size());
+        }
+        if (system.unitsPerMetre() != 1.0f) {
+            what += " (in metres: the def's world units divided by unitsPerMetre " +
+                    detail::formatFloat(system.unitsPerMetre()) + ")";
         }
         fail("JointComponent", "def.joint: " + what);
     }

@@ -228,9 +228,15 @@ TEST(PhysicsScale, JointDefsAreCheckedInMetresAfterScaling) {
         FAIL() << "accepted a 3 mm joint";
     } catch (const core::Error& e) {
         EXPECT_NE(std::string(e.what()).find("length"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("(in metres: the def's world units divided by unitsPerMetre 100)"),
+                  std::string::npos)
+            << e.what();
     }
     rope.length = 30.0f; // 0.3 m
     EXPECT_NO_THROW((physics::JointComponent{system, physics::JointComponentDef{rope, {}}}));
+    // The default maxLength (kHuge, no limit) stays valid at any scale.
+    PhysicsSystem small{physics::WorldDef{}, 0.5f};
+    EXPECT_NO_THROW((physics::JointComponent{small, physics::JointComponentDef{rope, {}}}));
 }
 
 } // namespace
