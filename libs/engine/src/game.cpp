@@ -433,6 +433,7 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
     camera.setReferenceSize({static_cast<float>(config.referenceWindowWidth),
                              static_cast<float>(config.referenceWindowHeight)});
     camera.setFit(toScreenFit(config.screenFitMode));
+    // The engine's own hooks (GameSystem::clear() adds them again after a scene change).
     r.renderSystem.addHook(r.interpolator);
     r.renderSystem.addHook(r.overlay);
 

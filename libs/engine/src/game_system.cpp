@@ -51,9 +51,13 @@ void GameSystem::clear() {
     // The other systems cleared first (registered before this one): no sprite, voice or body
     // of the old scene is left, and the render system dropped its hooks.
     state_.texturesReleased = state_.renderSystem->releaseUnusedTextures();
+    // The engine's own hooks go back, before the new scene's components add theirs.
     if (state_.interpolator != nullptr) {
         state_.interpolator->clear();
         state_.renderSystem->addHook(*state_.interpolator);
+    }
+    if (state_.overlay != nullptr) {
+        state_.renderSystem->addHook(*state_.overlay);
     }
 }
 

@@ -824,6 +824,32 @@ TEST(Game, ProfileOverlayIsDrawnTopLeftWhenTurnedOnByFlagConfigOrKey) {
     EXPECT_EQ(overlayInk(keyTwice.image, 0, 0, 159, 119).text, 0);
 }
 
+TEST(Game, ProfileOverlayStaysAfterASceneChange) {
+    // The render system drops its hooks on a scene change; the engine puts its own back.
+    Game game;
+    addScene(
+        game, "A", [](core::Scene&) {},
+        [](core::Scene& s) {
+            if (gameOf(s).frame() == 3) {
+                gameOf(s).changeScene("B");
+            }
+        });
+    addScene(game, "B", [](core::Scene& s) {
+        render::SpriteRendererDef def;
+        def.size = {160.0f, 120.0f};
+        def.tint = {128, 128, 128, 255};
+        s.createGameObject().addComponent<render::SpriteRenderer>(def);
+    });
+    const std::filesystem::path shot = tempDir() / "changed.png";
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "20", "--profile",
+                                 "--screenshot", shot.string()});
+    ASSERT_EQ(r.code, 0) << r.all();
+    EXPECT_EQ(game.profile().sceneChanges, 1);
+    const OverlayInk ink = overlayInk(render::loadImage(shot), 0, 0, 149, 59);
+    EXPECT_GT(ink.text, 150);
+    EXPECT_GT(ink.backdrop, 1500);
+}
+
 TEST(Game, UnknownProfileKeyIsAConfigError) {
     Game game;
     addScene(game, "A", [](core::Scene&) {});
