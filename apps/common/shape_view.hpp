@@ -34,20 +34,19 @@ public:
         static_cast<void>(dt);
         auto& game = scene()->system<engine::GameSystem>();
         render::Drawer& draw = game.renderer().drawer();
-        const float units = static_cast<float>(game.unitsPerMetre());
         const glm::vec2 origin{gameObject()->worldPosition()};
         const float angle = gameObject()->worldOrientation();
         const float c = std::cos(angle);
         const float s = std::sin(angle);
-        // Local metres to world units.
-        auto toWorld = [&](glm::vec2 p) { return origin + units * glm::vec2{c * p.x - s * p.y, s * p.x + c * p.y}; };
+        // Collider geometry is in the object's frame, in world units.
+        auto toWorld = [&](glm::vec2 p) { return origin + glm::vec2{c * p.x - s * p.y, s * p.x + c * p.y}; };
 
         for (const physics::Collider* collider : gameObject()->getComponents<physics::Collider>()) {
             const physics::ShapeGeometry& g = collider->geometry();
             if (const auto* circle = std::get_if<physics::Circle>(&g)) {
                 const glm::vec2 centre = toWorld(circle->center);
-                draw.fillCircle(centre, circle->radius * units, fill_);
-                draw.circle(centre, circle->radius * units, outline_, 1.5f);
+                draw.fillCircle(centre, circle->radius, fill_);
+                draw.circle(centre, circle->radius, outline_, 1.5f);
                 // A spoke, so rolling shows.
                 draw.line(centre, toWorld(circle->center + glm::vec2{circle->radius, 0.0f}), outline_, 1.5f);
             } else if (const auto* polygon = std::get_if<physics::Polygon>(&g)) {
@@ -62,12 +61,12 @@ public:
             } else if (const auto* capsule = std::get_if<physics::Capsule>(&g)) {
                 const glm::vec2 a = toWorld(capsule->center1);
                 const glm::vec2 b = toWorld(capsule->center2);
-                draw.fillCircle(a, capsule->radius * units, fill_);
-                draw.fillCircle(b, capsule->radius * units, fill_);
+                draw.fillCircle(a, capsule->radius, fill_);
+                draw.fillCircle(b, capsule->radius, fill_);
                 const glm::vec2 d = b - a;
                 const float length = std::sqrt(d.x * d.x + d.y * d.y);
                 if (length > 0.0f) {
-                    const glm::vec2 n = glm::vec2{-d.y, d.x} * (capsule->radius * units / length);
+                    const glm::vec2 n = glm::vec2{-d.y, d.x} * (capsule->radius / length);
                     const std::array<glm::vec2, 4> quad = {a + n, a - n, b - n, b + n};
                     draw.fillPolygon(quad, fill_);
                 }

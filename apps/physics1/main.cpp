@@ -167,19 +167,18 @@ private:
     // The seed's ray-cast impulse: the closest shape on the ray from the cannon is pushed
     // along the ray, at the point hit (so it also spins).
     void push() {
-        auto& game = system<engine::GameSystem>();
-        // Queries speak metres; the config says how many world units make one (1 here).
-        const auto units = static_cast<float>(game.unitsPerMetre());
+        // The physics system's queries speak world units, like its components.
+        auto& simulation = system<physics::PhysicsSystem>();
         const glm::vec2 direction = aimDirection();
         const glm::vec2 translation = direction * 40.0f;
         rayEnd_ = kCannon + translation;
         rayTime_ = 0.3;
-        const auto hit = game.world().castRayClosest(kCannon / units, translation / units);
+        const auto hit = simulation.castRayClosest(kCannon, translation);
         if (!hit) {
             return;
         }
-        rayEnd_ = hit->point * units;
-        const physics::Collider* collider = system<physics::PhysicsSystem>().collider(hit->shape);
+        rayEnd_ = hit->point;
+        const physics::Collider* collider = simulation.collider(hit->shape);
         if (collider == nullptr) {
             return;
         }

@@ -37,7 +37,9 @@ if(E2D_BUILD_TESTS)
         -DCHECKER=$<TARGET_FILE:e2d_image_check>
         "-DCHECK=${ARGN}"
         -P ${scripts}/run_and_check.cmake)
-    set_tests_properties(app_platformer_${test} PROPERTIES LABELS apps TIMEOUT 300
+    # apps-long: left out of the asan test preset (CI time; the level test plays the same
+    # script's first 2 s there).
+    set_tests_properties(app_platformer_${test} PROPERTIES LABELS "apps;apps-long" TIMEOUT 300
       ENVIRONMENT "ALSOFT_DRIVERS=null;MESA_SHADER_CACHE_DISABLE=true")
   endfunction()
   platformer_run(win 540 win.script

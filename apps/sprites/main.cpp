@@ -97,12 +97,15 @@ protected:
             sprite.addComponent<render::AnimatedSpriteRenderer>(def);
         }
 
-        // The counter: HUD text at the top-left (camera units, origin at the view's centre).
+        // The counter: HUD text at the top-right (camera units, origin at the view's centre).
+        // The top-left corner holds the engine's frame profile overlay (config showProfile,
+        // toggled with F2): where each frame's milliseconds go.
         auto& fps = createGameObject();
-        fps.setPosition(glm::vec3{-kWidth / 2 + 12, kHeight / 2 - 10, 10.0f});
+        fps.setPosition(glm::vec3{kWidth / 2 - 12, kHeight / 2 - 10, 10.0f});
         render::TextLabelDef label;
         label.text = "measuring...";
         label.pixelSize = 24;
+        label.style.horizontal = render::HorizontalAlign::Right;
         label.hud = true;
         fps.addComponent<render::TextLabel>(label);
         fps.addComponent<FpsCounter>();

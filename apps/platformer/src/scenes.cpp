@@ -10,6 +10,7 @@
 #include <e2d/core/scene.hpp>
 #include <e2d/engine/game_system.hpp>
 #include <e2d/input/actions.hpp>
+#include <e2d/physics/physics_system.hpp>
 #include <e2d/render/animation.hpp>
 #include <e2d/render/renderer.hpp>
 #include <e2d/render/sprite_renderer.hpp>
@@ -241,8 +242,9 @@ private:
     void onInitialize() override {
         GameSystem& game = system<GameSystem>();
         ensureBindings(game);
-        // The config's unitsPerMetre: world units (reference pixels) per metre, 48 for this game.
-        ppm_ = static_cast<float>(game.unitsPerMetre());
+        // The level runs on the bare World, in metres; the game's PhysicsSystem knows the
+        // config's unitsPerMetre (48 reference pixels per metre here) and converts for drawing.
+        physics_ = &game.physics();
         level_ = std::make_unique<Level>(game.world());
         session_.levelBodies = game.world().bodyCount();
         session_.lastScene = name();
@@ -497,10 +499,11 @@ private:
         camera_->setPosition(at);
     }
 
-    [[nodiscard]] glm::vec2 px(glm::vec2 metres) const { return metres * ppm_; }
+    // Metres to world units (reference pixels), by the engine's one scale.
+    [[nodiscard]] glm::vec2 px(glm::vec2 metres) const { return physics_->toUnits(metres); }
 
     Session& session_;
-    float ppm_ = 48.0f;
+    const e2d::physics::PhysicsSystem* physics_ = nullptr;
     std::unique_ptr<Level> level_;
     GameObject* camera_ = nullptr;
     GameObject* player_ = nullptr;

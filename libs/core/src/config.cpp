@@ -194,6 +194,8 @@ const std::map<std::string_view, Setter>& fields() {
         {"debugDraw", boolean(&Config::debugDraw)},
         {"debugDrawKey", text(&Config::debugDrawKey)},
         {"printProfile", boolean(&Config::printProfile)},
+        {"showProfile", boolean(&Config::showProfile)},
+        {"profileKey", text(&Config::profileKey)},
     };
     return kFields;
 }

@@ -291,10 +291,13 @@ TEST(Config, E2dKeysDefaultsAndValues) {
     EXPECT_FALSE(d.debugDraw);
     EXPECT_EQ(d.debugDrawKey, "f1");
     EXPECT_TRUE(d.printProfile);
+    EXPECT_FALSE(d.showProfile);
+    EXPECT_EQ(d.profileKey, "f2");
 
     const ConfigResult r = parseConfig("vsync = false\nmsaaSamples = 4\nunitsPerMetre = 100\nvoiceCount = 64\n"
                                        "bindingsFile = keys/bindings.txt\nkeyRepeat = false\nmaxFrameTime = 0.1\n"
-                                       "debugDraw = true\ndebugDrawKey = tab\nprintProfile = false\n");
+                                       "debugDraw = true\ndebugDrawKey = tab\nprintProfile = false\n"
+                                       "showProfile = true\nprofileKey = f4\n");
     EXPECT_THAT(texts(r), IsEmpty());
     EXPECT_FALSE(r.config.vsync);
     EXPECT_EQ(r.config.msaaSamples, 4);
@@ -306,6 +309,8 @@ TEST(Config, E2dKeysDefaultsAndValues) {
     EXPECT_TRUE(r.config.debugDraw);
     EXPECT_EQ(r.config.debugDrawKey, "tab");
     EXPECT_FALSE(r.config.printProfile);
+    EXPECT_TRUE(r.config.showProfile);
+    EXPECT_EQ(r.config.profileKey, "f4");
 }
 
 TEST(Config, E2dKeysBadValuesNameLineAndKey) {

@@ -65,6 +65,9 @@ CommandLine parseCommandLine(std::span<const std::string_view> args) {
         } else if (arg == "--debug-draw") {
             flag();
             out.debugDraw = true;
+        } else if (arg == "--profile") {
+            flag();
+            out.profile = true;
         } else if (arg == "--show") {
             flag();
             out.show = true;
@@ -85,8 +88,10 @@ std::string usage(std::string_view program) {
            "  --frames N           run N frames of exactly 1/60 s, then exit (hidden window)\n"
            "  --screenshot FILE    save the last frame as a PNG\n"
            "  --seed N             seed of the game's random numbers\n"
-           "  --input-script FILE  timed presses: '<frame> <press|release|tap> <action or key:x>' per line\n"
+           "  --input-script FILE  timed input, one per line: '<frame> <press|release|tap> <action, key:x,\n"
+           "                       mouse:left or button:a>', '<frame> move mouse <x> <y>', '<frame> move axis:leftx <v>'\n"
            "  --debug-draw         start with the physics debug draw on\n"
+           "  --profile            start with the frame profile overlay on\n"
            "  --show               keep the window visible with --frames\n"
            "  --help               this text\n";
 }

@@ -99,8 +99,30 @@ int drawPhysics(const physics::World& world, const render::Camera& camera, doubl
         drawer.rect(toWorld(aabb.lower), toWorld(aabb.upper), color(DebugDrawColors::kAabb), 1.0f);
     }
 
-    // Contact points (4 px dots) and normals (20 px long, from shape A to shape B).
+    // Joints: origin A - anchor A - anchor B - origin B, dots on the anchors, the axis of a
+    // prismatic or wheel joint. Every joint, whether or not its bodies are in view (a line
+    // between two bodies outside the view may cross it).
     const float pixel = 1.0f / camera.pixelsPerUnit().x;
+    const glm::vec4 jointColour = color(DebugDrawColors::kJoint);
+    for (const physics::JointDebugData& joint : world.jointDebugData()) {
+        const glm::vec2 originA = toWorld(joint.originA);
+        const glm::vec2 originB = toWorld(joint.originB);
+        const glm::vec2 anchorA = toWorld(joint.anchorA);
+        const glm::vec2 anchorB = toWorld(joint.anchorB);
+        drawer.line(originA, anchorA, jointColour, 2.0f);
+        drawer.line(anchorA, anchorB, jointColour, 2.0f);
+        drawer.line(anchorB, originB, jointColour, 2.0f);
+        drawer.fillCircle(anchorA, 3.0f * pixel, jointColour);
+        drawer.fillCircle(anchorB, 3.0f * pixel, jointColour);
+        if (joint.axis != physics::Vec2{0.0f, 0.0f}) {
+            const glm::vec2 axis{joint.axis};
+            const float lower = joint.limitEnabled ? joint.lower * upm : -30.0f * pixel;
+            const float upper = joint.limitEnabled ? joint.upper * upm : 30.0f * pixel;
+            drawer.line(anchorA + axis * lower, anchorA + axis * upper, jointColour, 1.0f);
+        }
+    }
+
+    // Contact points (4 px dots) and normals (20 px long, from shape A to shape B).
     world.forEachTouchingContact([&](const physics::ContactData& contact) {
         if (contact.manifold == nullptr) {
             return;

@@ -16,7 +16,7 @@ namespace e2d::engine::detail {
 using engine::DebugDrawColors;
 
 /// Draws the shapes (outlines, by body type), their AABBs, the touching contact points and
-/// their normals of every shape visible through `camera`, in world units
+/// their normals of every shape visible through `camera`, and every joint, in world units
 /// (`unitsPerMetre` world units per metre). Returns the number of shapes drawn.
 int drawPhysics(const physics::World& world, const render::Camera& camera, double unitsPerMetre,
                 render::Drawer& drawer);

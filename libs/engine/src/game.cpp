@@ -24,10 +24,12 @@
 #include "debug_draw.hpp"
 #include "game_state.hpp"
 #include "interpolator.hpp"
+#include "profile_overlay.hpp"
 
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdlib>
 #include <cstdio>
@@ -80,11 +82,70 @@ std::filesystem::path programFolder(const char* argv0) {
     return argv0 != nullptr ? std::filesystem::path(argv0).parent_path() : std::filesystem::path();
 }
 
-/// A scripted input resolved to what is pressed.
+/// A scripted input resolved to what is pressed or moved.
 struct ScriptTarget {
-    enum class Kind { Key, Mouse };
+    enum class Kind { Key, Mouse, PadButton, PadAxis, Cursor };
     Kind kind = Kind::Key;
     int code = 0;
+    /// PadButton, PadAxis: the gamepad slot.
+    int slot = 0;
+    /// Move: the cursor position, or the axis value in GLFW's range.
+    float x = 0.0f;
+    float y = 0.0f;
+};
+
+/// Whether a script names a gamepad button or axis (it then drives scripted gamepads, and the
+/// real joysticks are not read).
+bool scriptUsesGamepad(const InputScript& script) {
+    return std::any_of(script.events.begin(), script.events.end(), [](const ScriptEvent& e) {
+        return e.target.rfind("button", 0) == 0 || e.target.rfind("axis", 0) == 0;
+    });
+}
+
+/// The gamepads an input script drives: a snapshot per slot, fed to Input on change.
+struct ScriptedPads {
+    std::array<input::JoystickSnapshot, input::kMaxGamepads> pads{};
+    std::array<bool, input::kMaxGamepads> used{};
+    std::array<bool, input::kMaxGamepads> changed{};
+
+    void use(int slot) {
+        const auto s = static_cast<std::size_t>(slot);
+        if (!used[s]) {
+            used[s] = true;
+            changed[s] = true;
+            input::JoystickSnapshot& pad = pads[s];
+            pad.present = true;
+            pad.gamepad = true;
+            pad.guid = "00000000000000000000000000000000";
+            pad.name = "e2d input script";
+            pad.axes.fill(0.0f);
+            pad.axes[GLFW_GAMEPAD_AXIS_LEFT_TRIGGER] = -1.0f; // released, as GLFW reports it
+            pad.axes[GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER] = -1.0f;
+        }
+    }
+    void button(int slot, int code, bool down) {
+        const auto s = static_cast<std::size_t>(slot);
+        if (code == input::kGamepadButtonLeftTrigger || code == input::kGamepadButtonRightTrigger) {
+            const int axis = code == input::kGamepadButtonLeftTrigger ? GLFW_GAMEPAD_AXIS_LEFT_TRIGGER
+                                                                      : GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
+            pads[s].axes[static_cast<std::size_t>(axis)] = down ? 1.0f : -1.0f;
+        } else {
+            pads[s].buttons[static_cast<std::size_t>(code)] = down ? 1 : 0;
+        }
+        changed[s] = true;
+    }
+    void axis(int slot, int code, float raw) {
+        pads[static_cast<std::size_t>(slot)].axes[static_cast<std::size_t>(code)] = raw;
+        changed[static_cast<std::size_t>(slot)] = true;
+    }
+    void feed(input::Input& input) {
+        for (int slot = 0; slot < input::kMaxGamepads; ++slot) {
+            if (changed[static_cast<std::size_t>(slot)]) {
+                input.handleJoystick(slot, pads[static_cast<std::size_t>(slot)]);
+                changed[static_cast<std::size_t>(slot)] = false;
+            }
+        }
+    }
 };
 
 /// Resolves an input-script target: an action's first key or mouse binding, or a binding text.
@@ -101,6 +162,31 @@ ScriptTarget resolveTarget(const ScriptEvent& event, const InputScript& script, 
         }
         return std::nullopt;
     };
+    if (event.kind == ScriptEvent::Kind::Move) {
+        if (event.target == "mouse") {
+            return ScriptTarget{ScriptTarget::Kind::Cursor, 0, 0, event.x, event.y};
+        }
+        input::Binding axis;
+        try {
+            axis = input::parseBinding(event.target);
+        } catch (const core::Error& e) {
+            return fail(e.what());
+        }
+        if (axis.kind != input::BindingKind::GamepadAxis) {
+            return fail("move: '" + event.target + "' is not a gamepad axis (axis:leftx, axis@1:righttrigger)");
+        }
+        const float value = axis.inverted ? -event.x : event.x;
+        const bool trigger =
+            axis.code == GLFW_GAMEPAD_AXIS_LEFT_TRIGGER || axis.code == GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
+        if (trigger && value < 0.0f) {
+            char number[32];
+            std::snprintf(number, sizeof number, "%g", static_cast<double>(event.x));
+            return fail("move " + event.target + ": a trigger's value is in [0, 1], got " + number);
+        }
+        // GLFW reports a trigger from -1 (released) to 1.
+        return ScriptTarget{ScriptTarget::Kind::PadAxis, axis.code, std::max(axis.gamepad, 0),
+                            trigger ? 2.0f * value - 1.0f : value, 0.0f};
+    }
     if (const input::ActionId id = actions.find(event.target); !id.isNull()) {
         for (const input::Binding& b : actions.bindings(id)) {
             if (auto t = fromBinding(b)) {
@@ -121,7 +207,11 @@ ScriptTarget resolveTarget(const ScriptEvent& event, const InputScript& script, 
     if (auto t = fromBinding(binding)) {
         return *t;
     }
-    return fail("'" + event.target + "': only key: and mouse: bindings can be scripted");
+    if (binding.kind == input::BindingKind::GamepadButton) {
+        return ScriptTarget{ScriptTarget::Kind::PadButton, binding.code, std::max(binding.gamepad, 0), 0.0f, 0.0f};
+    }
+    return fail("'" + event.target + "': only key:, mouse: and button: bindings can be pressed (axes are moved: "
+                "'<frame> move " + event.target + " <value>')");
 }
 
 /// The systems of a running game and the objects they run, in construction order (so they are
@@ -139,17 +229,22 @@ struct Running {
     core::SceneDirector director;
     input::InputSystem inputSystem;
     detail::Interpolator interpolator;
+    detail::ProfileOverlay overlay;
 
     Running(detail::GameState& state, const render::WindowDef& windowDef, const render::RendererDef& rendererDef,
             const audio::MixerDef& mixerDef, const core::SceneRegistry& scenes, std::uint64_t seed)
         : window(windowDef), renderer(window, rendererDef), renderSystem(renderer, nullptr, state.logger),
-          input(inputDef(state)), audio(mixerDef), physics(makeWorldDef(state.config)), random(seed), game(state),
-          director(scenes, *state.logger), inputSystem(input, director, &actions, input::InputSystemDef{false, state.config.keyRepeat}) {}
+          input(inputDef(state)), audio(mixerDef),
+          physics(makeWorldDef(state.config), static_cast<float>(state.config.unitsPerMetre)), random(seed),
+          game(state), director(scenes, *state.logger),
+          inputSystem(input, director, &actions, input::InputSystemDef{false, state.config.keyRepeat}),
+          overlay(renderSystem, *state.profile, static_cast<float>(state.config.maxCameraDepth)) {}
 
     input::InputDef inputDef(const detail::GameState& state) {
         input::InputDef def;
         def.window = window.handle();
         def.logger = state.logger;
+        def.pollGamepads = !state.scriptedGamepads;
         // Window pixels (top-left origin) -> framebuffer pixels (bottom-left) -> world, through
         // the camera the last frame was drawn with.
         def.screenToWorld = [this](glm::vec2 screen) {
@@ -232,6 +327,14 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
                       " (registered: " + (names.empty() ? std::string("none") : names) + ")");
         return kExitUsage;
     }
+    std::optional<int> profileKey;
+    if (!config.profileKey.empty()) {
+        profileKey = input::keyFromName(config.profileKey);
+        if (!profileKey) {
+            logger_.error(configName + ": profileKey: unknown key name '" + config.profileKey + "'");
+            return kExitUsage;
+        }
+    }
     std::optional<int> debugKey;
     if (!config.debugDrawKey.empty()) {
         debugKey = input::keyFromName(config.debugDrawKey);
@@ -249,6 +352,8 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
             return kExitUsage;
         }
     }
+
+    state.scriptedGamepads = scriptUsesGamepad(script);
 
     // Window, renderer, input, mixer, physics.
     render::WindowDef windowDef;
@@ -298,6 +403,8 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
     state.random = &r.random;
     state.director = &r.director;
     state.interpolator = &r.interpolator;
+    state.overlay = &r.overlay;
+    r.overlay.setVisible(config.showProfile || options.profile);
 
     if (!config.bindingsFile.empty()) {
         try {
@@ -308,10 +415,14 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
         }
     }
     std::vector<std::pair<std::int64_t, std::pair<ScriptTarget, bool>>> scripted;
+    ScriptedPads pads;
     try {
         for (const ScriptEvent& event : script.events) {
-            scripted.push_back(
-                {event.frame, {resolveTarget(event, script, r.actions), event.kind == ScriptEvent::Kind::Press}});
+            const ScriptTarget target = resolveTarget(event, script, r.actions);
+            if (target.kind == ScriptTarget::Kind::PadButton || target.kind == ScriptTarget::Kind::PadAxis) {
+                pads.use(target.slot); // connected from the first frame
+            }
+            scripted.push_back({event.frame, {target, event.kind == ScriptEvent::Kind::Press}});
         }
     } catch (const core::Error& e) {
         logger_.error(e.what());
@@ -322,7 +433,9 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
     camera.setReferenceSize({static_cast<float>(config.referenceWindowWidth),
                              static_cast<float>(config.referenceWindowHeight)});
     camera.setFit(toScreenFit(config.screenFitMode));
+    // The engine's own hooks (GameSystem::clear() adds them again after a scene change).
     r.renderSystem.addHook(r.interpolator);
+    r.renderSystem.addHook(r.overlay);
 
     r.director.addSystem(r.inputSystem);
     r.director.addSystem(r.physics);
@@ -379,12 +492,25 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
             }
             for (; nextScripted < scripted.size() && scripted[nextScripted].first <= state.frame; ++nextScripted) {
                 const auto& [target, press] = scripted[nextScripted].second;
-                if (target.kind == ScriptTarget::Kind::Key) {
+                switch (target.kind) {
+                case ScriptTarget::Kind::Key:
                     r.input.handleKey(target.code, 0, press ? GLFW_PRESS : GLFW_RELEASE, 0);
-                } else {
+                    break;
+                case ScriptTarget::Kind::Mouse:
                     r.input.handleMouseButton(target.code, press ? GLFW_PRESS : GLFW_RELEASE, 0);
+                    break;
+                case ScriptTarget::Kind::Cursor:
+                    r.input.handleCursorPos(target.x, target.y);
+                    break;
+                case ScriptTarget::Kind::PadButton:
+                    pads.button(target.slot, target.code, press);
+                    break;
+                case ScriptTarget::Kind::PadAxis:
+                    pads.axis(target.slot, target.code, target.x);
+                    break;
                 }
             }
+            pads.feed(r.input);
             r.window.pollEvents();
             r.director.setWindowSize(r.window.size());
             for (core::System* system : systems) {
@@ -392,6 +518,9 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
             }
             if (debugKey && r.input.wasKeyPressed(*debugKey)) {
                 state.debugDraw = !state.debugDraw;
+            }
+            if (profileKey && r.input.wasKeyPressed(*profileKey)) {
+                r.overlay.setVisible(!r.overlay.visible());
             }
             times.input = msSince(t);
 

@@ -30,6 +30,7 @@ class Window;
 namespace e2d::engine::detail {
 
 class Interpolator;
+class ProfileOverlay;
 
 /// Everything a running Game owns, as GameSystem reaches it. Filled in by Game::run() (which
 /// owns the objects) before the first scene starts.
@@ -47,10 +48,13 @@ struct GameState {
     core::SceneDirector* director = nullptr;
     FrameProfile* profile = nullptr;
     Interpolator* interpolator = nullptr;
+    ProfileOverlay* overlay = nullptr;
     /// Textures released by the last scene change.
     int texturesReleased = 0;
     bool debugDraw = false;
     bool headless = false;
+    /// The input script drives gamepads: the real joysticks are not polled.
+    bool scriptedGamepads = false;
     std::int64_t frame = 0;
 };
 

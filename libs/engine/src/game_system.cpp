@@ -9,6 +9,7 @@
 
 #include "game_state.hpp"
 #include "interpolator.hpp"
+#include "profile_overlay.hpp"
 
 namespace e2d::engine {
 
@@ -30,6 +31,7 @@ input::Input& GameSystem::input() noexcept { return *state_.input; }
 input::ActionMap& GameSystem::actions() noexcept { return *state_.actions; }
 audio::Mixer& GameSystem::mixer() noexcept { return state_.audio->mixer(); }
 physics::World& GameSystem::world() noexcept { return state_.physics->world(); }
+physics::PhysicsSystem& GameSystem::physics() noexcept { return *state_.physics; }
 core::Logger& GameSystem::logger() noexcept { return *state_.logger; }
 double GameSystem::unitsPerMetre() const noexcept { return state_.config.unitsPerMetre; }
 core::Random& GameSystem::random() noexcept { return *state_.random; }
@@ -39,6 +41,8 @@ void GameSystem::terminateGame() { state_.director->terminateGame(); }
 
 bool GameSystem::debugDraw() const noexcept { return state_.debugDraw; }
 void GameSystem::setDebugDraw(bool on) noexcept { state_.debugDraw = on; }
+bool GameSystem::profileOverlay() const noexcept { return state_.overlay->visible(); }
+void GameSystem::setProfileOverlay(bool on) noexcept { state_.overlay->setVisible(on); }
 std::int64_t GameSystem::frame() const noexcept { return state_.frame; }
 bool GameSystem::headless() const noexcept { return state_.headless; }
 const FrameProfile& GameSystem::profile() const noexcept { return *state_.profile; }
@@ -47,9 +51,13 @@ void GameSystem::clear() {
     // The other systems cleared first (registered before this one): no sprite, voice or body
     // of the old scene is left, and the render system dropped its hooks.
     state_.texturesReleased = state_.renderSystem->releaseUnusedTextures();
+    // The engine's own hooks go back, before the new scene's components add theirs.
     if (state_.interpolator != nullptr) {
         state_.interpolator->clear();
         state_.renderSystem->addHook(*state_.interpolator);
+    }
+    if (state_.overlay != nullptr) {
+        state_.renderSystem->addHook(*state_.overlay);
     }
 }
 

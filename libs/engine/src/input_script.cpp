@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <optional>
 #include <fstream>
 #include <sstream>
 
@@ -46,6 +48,60 @@ std::vector<std::string_view> words(std::string_view line) {
     throw core::Error(std::string(source) + ":" + std::to_string(line) + ": " + message);
 }
 
+std::int64_t parseFrame(std::string_view word, std::string_view source, int line) {
+    std::int64_t frame = 0;
+    const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), frame);
+    if (ec != std::errc() || ptr != word.data() + word.size() || frame < 0) {
+        fail(source, line, "frame must be a whole number >= 0, got '" + std::string(word) + "'");
+    }
+    return frame;
+}
+
+// A finite decimal number, or nothing.
+std::optional<float> number(std::string_view word) {
+    float value = 0.0f;
+    const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (ec != std::errc() || ptr != word.data() + word.size() || !std::isfinite(value)) {
+        return std::nullopt;
+    }
+    return value;
+}
+
+// `<frame> move mouse <x> <y>` or `<frame> move axis:<name> <value>`.
+ScriptEvent parseMove(const std::vector<std::string_view>& w, std::string_view line, std::string_view source,
+                      int lineNumber) {
+    ScriptEvent event;
+    event.frame = parseFrame(w[0], source, lineNumber);
+    event.kind = ScriptEvent::Kind::Move;
+    event.target = std::string(w[2]);
+    event.line = lineNumber;
+    const auto rest = [&](std::size_t from) {
+        const std::size_t at = w.size() > from ? static_cast<std::size_t>(w[from].data() - line.data()) : line.size();
+        return std::string(line.substr(at));
+    };
+    if (w[2] == "mouse") {
+        const std::optional<float> x = w.size() == 5 ? number(w[3]) : std::nullopt;
+        const std::optional<float> y = w.size() == 5 ? number(w[4]) : std::nullopt;
+        if (!x || !y) {
+            fail(source, lineNumber, "move mouse: expected '<x> <y>' in window pixels, got '" + rest(3) + "'");
+        }
+        event.x = *x;
+        event.y = *y;
+        return event;
+    }
+    if (w[2].substr(0, 4) != "axis") {
+        fail(source, lineNumber, "move: expected 'mouse' or a gamepad axis (axis:leftx), got '" +
+                                     std::string(w[2]) + "'");
+    }
+    const std::optional<float> value = w.size() == 4 ? number(w[3]) : std::nullopt;
+    if (!value || *value < -1.0f || *value > 1.0f) {
+        fail(source, lineNumber, "move " + std::string(w[2]) + ": expected one value in [-1, 1], got '" + rest(3) +
+                                     "'");
+    }
+    event.x = *value;
+    return event;
+}
+
 } // namespace
 
 InputScript parseInputScript(std::string_view text, std::string_view source) {
@@ -61,15 +117,15 @@ InputScript parseInputScript(std::string_view text, std::string_view source) {
             continue;
         }
         const std::vector<std::string_view> w = words(line);
+        if (w.size() >= 3 && w[1] == "move") {
+            script.events.push_back(parseMove(w, line, source, lineNumber));
+            continue;
+        }
         if (w.size() != 3) {
             fail(source, lineNumber,
                  "expected '<frame> <press|release|tap> <target>', got '" + std::string(line) + "'");
         }
-        std::int64_t frame = 0;
-        const auto [ptr, ec] = std::from_chars(w[0].data(), w[0].data() + w[0].size(), frame);
-        if (ec != std::errc() || ptr != w[0].data() + w[0].size() || frame < 0) {
-            fail(source, lineNumber, "frame must be a whole number >= 0, got '" + std::string(w[0]) + "'");
-        }
+        const std::int64_t frame = parseFrame(w[0], source, lineNumber);
         const std::string target(w[2]);
         if (w[1] == "press" || w[1] == "release") {
             script.events.push_back(
@@ -78,7 +134,7 @@ InputScript parseInputScript(std::string_view text, std::string_view source) {
             script.events.push_back({frame, ScriptEvent::Kind::Press, target, lineNumber});
             script.events.push_back({frame + 1, ScriptEvent::Kind::Release, target, lineNumber});
         } else {
-            fail(source, lineNumber, "expected press, release or tap, got '" + std::string(w[1]) + "'");
+            fail(source, lineNumber, "expected press, release, tap or move, got '" + std::string(w[1]) + "'");
         }
     }
     std::stable_sort(script.events.begin(), script.events.end(),

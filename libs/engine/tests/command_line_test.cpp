@@ -33,19 +33,21 @@ TEST(CommandLine, NothingGivesTheDefaults) {
     EXPECT_FALSE(c.seed.has_value());
     EXPECT_TRUE(c.inputScript.empty());
     EXPECT_FALSE(c.debugDraw);
+    EXPECT_FALSE(c.profile);
     EXPECT_FALSE(c.show);
     EXPECT_FALSE(c.help);
 }
 
 TEST(CommandLine, EveryOptionInBothSpellings) {
     const CommandLine c = parse({"--frames", "300", "--screenshot=out/shot.png", "--config", "my game.txt", "--seed=42",
-                                 "--input-script", "run.txt", "--debug-draw", "--show", "-h"});
+                                 "--input-script", "run.txt", "--debug-draw", "--profile", "--show", "-h"});
     EXPECT_EQ(c.frames, 300);
     EXPECT_EQ(c.screenshot, "out/shot.png");
     EXPECT_EQ(c.config, "my game.txt");
     EXPECT_EQ(c.seed, 42u);
     EXPECT_EQ(c.inputScript, "run.txt");
     EXPECT_TRUE(c.debugDraw);
+    EXPECT_TRUE(c.profile);
     EXPECT_TRUE(c.show);
     EXPECT_TRUE(c.help);
     EXPECT_EQ(parse({"--frames=1"}).frames, 1);
@@ -69,7 +71,7 @@ TEST(CommandLine, ErrorsNameTheArgument) {
 TEST(CommandLine, UsageListsEveryOption) {
     const std::string text = engine::usage("e2d_demo");
     for (const char* option : {"--config", "--frames", "--screenshot", "--seed", "--input-script", "--debug-draw",
-                               "--show", "--help"}) {
+                               "--profile", "--show", "--help"}) {
         EXPECT_THAT(text, testing::HasSubstr(option));
     }
     EXPECT_THAT(text, testing::StartsWith("usage: e2d_demo"));

@@ -72,6 +72,8 @@ TEST(EngineConfig, EveryKeyOfTheFileIsRead) {
     EXPECT_TRUE(c.debugDraw);
     EXPECT_EQ(c.debugDrawKey, "f3");
     EXPECT_FALSE(c.printProfile);
+    EXPECT_TRUE(c.showProfile);
+    EXPECT_EQ(c.profileKey, "f5");
 }
 
 TEST(EngineConfig, PhysicsKeysFeedTheWorldInMetres) {

@@ -12,6 +12,7 @@
 #include <e2d/input/input.hpp>
 #include <e2d/physics/collider.hpp>
 #include <e2d/physics/geometry.hpp>
+#include <e2d/physics/joint_component.hpp>
 #include <e2d/physics/rigidbody.hpp>
 #include <e2d/physics/world.hpp>
 #include <e2d/render/image.hpp>
@@ -446,13 +447,15 @@ TEST(Game, InputScriptErrorsNameTheLine) {
         return r.all();
     };
     const std::string bad = (dir / "bad.txt").string();
-    EXPECT_THAT(errorOf("0 press jump\n1 push jump\n"), HasSubstr(bad + ":2: expected press, release or tap, got 'push'"));
+    EXPECT_THAT(errorOf("0 press jump\n1 push jump\n"),
+                HasSubstr(bad + ":2: expected press, release, tap or move, got 'push'"));
     EXPECT_THAT(errorOf("\n4 press dance\n"),
                 HasSubstr(bad + ":2: 'dance' is not an action of the game (nor a binding such as key:space)"));
     EXPECT_THAT(errorOf("4 press padonly\n"),
                 HasSubstr(bad + ":1: action 'padonly' has no keyboard or mouse-button binding to press"));
     EXPECT_THAT(errorOf("4 press key:nokey\n"), HasSubstr(bad + ":1: input::parseBinding(): unknown key name"));
-    EXPECT_THAT(errorOf("4 press button:a\n"), HasSubstr(bad + ":1: 'button:a': only key: and mouse: bindings"));
+    EXPECT_THAT(errorOf("4 press axis:lefty\n"),
+                HasSubstr(bad + ":1: 'axis:lefty': only key:, mouse: and button: bindings can be pressed"));
     const GameRun missing = run(game, {"--config", config, "--input-script", (dir / "none.txt").string()});
     EXPECT_EQ(missing.code, 2);
     EXPECT_EQ(missing.count("none.txt: cannot read the input script"), 1) << missing.all();
@@ -580,6 +583,279 @@ TEST(Game, PhysicsDebugDrawIsToggledByFlagConfigAndKey) {
     // Another key, by config.
     const std::filesystem::path tab = writeFile(tempDir() / "tab.txt", "1 tap key:tab\n");
     EXPECT_EQ(debugGreenPixels({"--input-script", tab.string()}, "debugDrawKey = tab\n"), flag);
+}
+
+TEST(Game, PhysicsDebugDrawShowsJointsInTheirOwnColour) {
+    // Two bodies without shapes, gravity off, at (-40, 20) and (40, 20) world units (1 unit is
+    // 1 px, the view's centre at the origin: pixel (80 + x, 60 - y)), joined by a distance
+    // joint whose anchors hang 20 units below each origin. The picture: a vertical line down
+    // each side from pixel row 40 to row 60 at columns 40 and 120, a line between the anchors
+    // along row 60, and a dot on each anchor.
+    const auto draw = [](bool debug) {
+        Game game;
+        addScene(game, "A", [](core::Scene& s) {
+            auto& physics = gameOf(s).physics();
+            physics::RigidbodyDef still;
+            still.gravityScale = 0.0f;
+            core::GameObject& a = s.createGameObject();
+            a.setPosition(glm::vec2{-40.0f, 20.0f});
+            a.addComponent<physics::Rigidbody>(still);
+            core::GameObject& b = s.createGameObject();
+            b.setPosition(glm::vec2{40.0f, 20.0f});
+            b.addComponent<physics::Rigidbody>(still);
+            physics::DistanceJointDef rope;
+            rope.localAnchorA = {0.0f, -20.0f};
+            rope.localAnchorB = {0.0f, -20.0f};
+            rope.length = 80.0f;
+            b.addComponent<physics::JointComponent>(physics, physics::JointComponentDef{rope, a.id()});
+        });
+        const std::filesystem::path shot = tempDir() / (debug ? "joint.png" : "joint_off.png");
+        std::vector<std::string> args{"--config", writeConfig("A").string(), "--frames", "5", "--screenshot",
+                                      shot.string()};
+        if (debug) {
+            args.emplace_back("--debug-draw");
+        }
+        const GameRun r = run(game, args);
+        EXPECT_EQ(r.code, 0) << r.all();
+        return render::loadImage(shot);
+    };
+    // The joint colour (0.1, 0.85, 0.85) reads (26, 217, 217).
+    const auto joint = [](const render::Image& image, int x0, int y0, int x1, int y1) {
+        int n = 0;
+        for (int y = y0; y <= y1; ++y) {
+            for (int x = x0; x <= x1; ++x) {
+                n += near(image.at(x, y), 26, 217, 217, 12) ? 1 : 0;
+            }
+        }
+        return n;
+    };
+    const render::Image off = draw(false);
+    EXPECT_EQ(joint(off, 0, 0, off.width - 1, off.height - 1), 0);
+    const render::Image on = draw(true);
+    ASSERT_EQ(on.width, 160);
+    ASSERT_EQ(on.height, 120);
+    // Each of the three lines, 2 px wide: at least one joint pixel in each row (column) it spans.
+    int rowsLeft = 0;
+    int rowsRight = 0;
+    for (int y = 42; y <= 56; ++y) {
+        rowsLeft += joint(on, 38, y, 42, y) > 0 ? 1 : 0;
+        rowsRight += joint(on, 118, y, 122, y) > 0 ? 1 : 0;
+    }
+    EXPECT_EQ(rowsLeft, 15);
+    EXPECT_EQ(rowsRight, 15);
+    int columns = 0;
+    for (int x = 45; x <= 115; ++x) {
+        columns += joint(on, x, 58, x, 62) > 0 ? 1 : 0;
+    }
+    EXPECT_EQ(columns, 71);
+    // The anchor dots (3 px radius) are wider than the lines.
+    EXPECT_GE(joint(on, 37, 57, 43, 63), 20);
+    EXPECT_GE(joint(on, 117, 57, 123, 63), 20);
+    // Nothing of that colour elsewhere: the three lines' strips hold it all.
+    const int all = joint(on, 0, 0, on.width - 1, on.height - 1);
+    const int inStrips = joint(on, 36, 36, 44, 64) + joint(on, 116, 36, 124, 64) + joint(on, 45, 56, 115, 64);
+    EXPECT_EQ(all, inStrips);
+}
+
+TEST(Game, InputScriptMovesTheMouseClicksAndDrivesGamepads) {
+    struct Seen : core::Component {
+        explicit Seen(std::vector<std::string>& out) : events(out) {}
+        std::vector<std::string>& events;
+        void onMouseButtonDown(int button, glm::vec2, glm::vec2 world) override {
+            events.push_back("mouse " + std::to_string(button) + " at " + std::to_string(static_cast<int>(world.x)) +
+                             "," + std::to_string(static_cast<int>(world.y)));
+        }
+        void onControllerConnected(int pad) override { events.push_back("connected " + std::to_string(pad)); }
+        void onControllerButtonDown(int pad, int button) override {
+            events.push_back("down " + std::to_string(pad) + ":" + std::to_string(button));
+        }
+        void onControllerButtonUp(int pad, int button) override {
+            events.push_back("up " + std::to_string(pad) + ":" + std::to_string(button));
+        }
+    };
+    std::vector<std::string> seen;
+    std::vector<float> leftX;
+    std::vector<float> rightTrigger;
+    std::vector<bool> aDown;
+    Game game;
+    addScene(
+        game, "A", [&](core::Scene& s) { s.createGameObject().addComponent<Seen>(seen); },
+        [&](core::Scene& s) {
+            const input::Input& in = gameOf(s).input();
+            leftX.push_back(in.gamepadAxis(0, GLFW_GAMEPAD_AXIS_LEFT_X));
+            rightTrigger.push_back(in.gamepadAxis(1, GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER));
+            aDown.push_back(in.isGamepadButtonDown(0, GLFW_GAMEPAD_BUTTON_A));
+        });
+    const std::filesystem::path script = writeFile(tempDir() / "pads.txt",
+                                                   "1 move mouse 120 90\n"
+                                                   "1 tap mouse:left\n"
+                                                   "2 press button:a\n"
+                                                   "3 move axis:leftx 0.6\n"
+                                                   "4 move axis@1:righttrigger 1\n"
+                                                   "5 release button:a\n"
+                                                   "6 move axis:leftx 0\n");
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "8", "--input-script",
+                                 script.string()});
+    ASSERT_EQ(r.code, 0) << r.all();
+    // 160 x 120 window, camera at the origin: window pixel (120, 90) is world (40, -30).
+    EXPECT_THAT(seen, testing::ElementsAre("connected 0", "connected 1", "mouse 0 at 40,-30", "down 0:0",
+                                                   "down 1:" + std::to_string(input::kGamepadButtonRightTrigger),
+                                                   "up 0:0"));
+    ASSERT_EQ(leftX.size(), 8u);
+    // The stick through its default 0.2 radial dead zone: (0.6 - 0.2) / 0.8 = 0.5.
+    EXPECT_EQ(leftX[2], 0.0f);
+    EXPECT_NEAR(leftX[3], 0.5f, 1e-5f);
+    EXPECT_NEAR(leftX[5], 0.5f, 1e-5f);
+    EXPECT_EQ(leftX[6], 0.0f);
+    EXPECT_EQ(rightTrigger[3], 0.0f);
+    EXPECT_NEAR(rightTrigger[4], 1.0f, 1e-5f);
+    const std::vector<bool> expectA{false, false, true, true, true, false, false, false};
+    EXPECT_EQ(aDown, expectA);
+}
+
+TEST(Game, InputScriptGamepadErrorsNameTheLine) {
+    Game game;
+    addScene(game, "A", [](core::Scene&) {});
+    const auto errorOf = [&](const std::string& text) {
+        const std::filesystem::path script = writeFile(tempDir() / "bad.txt", text);
+        const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "1", "--input-script",
+                                     script.string()});
+        EXPECT_EQ(r.code, 2) << r.all();
+        return r.all();
+    };
+    const std::string bad = (tempDir() / "bad.txt").string();
+    EXPECT_THAT(errorOf("0 press axis:leftx\n"), HasSubstr(bad + ":1: 'axis:leftx': only key:, mouse: and button: "
+                                                                  "bindings can be pressed"));
+    EXPECT_THAT(errorOf("0 tap key:a\n1 move key:a 1\n"),
+                HasSubstr(bad + ":2: move: expected 'mouse' or a gamepad axis (axis:leftx), got 'key:a'"));
+    const std::string unknown = errorOf("0 move axis:sideways 1\n");
+    EXPECT_THAT(unknown, HasSubstr(bad + ":1: "));
+    EXPECT_THAT(unknown, HasSubstr("'sideways'"));
+    EXPECT_THAT(errorOf("0 move axis:lefttrigger -0.5\n"),
+                HasSubstr(bad + ":1: move axis:lefttrigger: a trigger's value is in [0, 1], got -0.5"));
+}
+
+// --- Frame profile overlay ---------------------------------------------------------------------
+
+struct OverlayRun {
+    render::Image image;
+    bool on = false;
+};
+
+// A 160 x 120 game drawing a mid-grey backdrop over its whole view (so the overlay's 60 % black
+// backdrop shows too), run 20 frames with `extraArgs` and `configExtra`.
+OverlayRun overlayRun(const std::vector<std::string>& extraArgs, const std::string& configExtra,
+                      const std::string& name) {
+    Game game;
+    bool on = false;
+    addScene(
+        game, "A",
+        [](core::Scene& s) {
+            render::SpriteRendererDef def;
+            def.size = {160.0f, 120.0f};
+            def.tint = {128, 128, 128, 255};
+            s.createGameObject().addComponent<render::SpriteRenderer>(def);
+        },
+        [&on](core::Scene& s) { on = gameOf(s).profileOverlay(); });
+    const std::filesystem::path shot = tempDir() / (name + ".png");
+    std::vector<std::string> args{"--config", writeConfig("A", configExtra).string(), "--frames", "20",
+                                  "--screenshot", shot.string()};
+    args.insert(args.end(), extraArgs.begin(), extraArgs.end());
+    const GameRun r = run(game, args);
+    EXPECT_EQ(r.code, 0) << r.all();
+    return {render::loadImage(shot), on};
+}
+
+// Pixels of the overlay's colours in a region: its yellow text (255, 230, 90, antialiased, so
+// any pixel clearly yellower than the grey) and its backdrop (the grey 128 darkened by 60 %
+// black: 51).
+struct OverlayInk {
+    int text = 0;
+    int backdrop = 0;
+};
+
+OverlayInk overlayInk(const render::Image& image, int x0, int y0, int x1, int y1) {
+    OverlayInk ink;
+    for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+            const std::uint8_t* p = image.at(x, y);
+            ink.text += (p[0] > p[2] + 40 && p[1] > p[2] + 30) ? 1 : 0;
+            ink.backdrop += near(p, 51, 51, 51, 3) ? 1 : 0;
+        }
+    }
+    return ink;
+}
+
+TEST(Game, ProfileOverlayIsDrawnTopLeftWhenTurnedOnByFlagConfigOrKey) {
+    // Three lines of 14 px text from 6 px in, over the top 60 rows (wider than this small
+    // window: it runs off its right edge).
+    const OverlayRun off = overlayRun({}, "", "off");
+    EXPECT_FALSE(off.on);
+    const OverlayInk none = overlayInk(off.image, 0, 0, 159, 119);
+    EXPECT_EQ(none.text, 0);
+    EXPECT_EQ(none.backdrop, 0);
+
+    const OverlayRun flag = overlayRun({"--profile"}, "", "flag");
+    EXPECT_TRUE(flag.on);
+    const OverlayInk corner = overlayInk(flag.image, 0, 0, 149, 59);
+    EXPECT_GT(corner.text, 150) << "text ink in the top-left corner";
+    EXPECT_GT(corner.backdrop, 1500) << "its backdrop";
+    const OverlayInk rest = overlayInk(flag.image, 0, 62, 159, 119);
+    EXPECT_EQ(rest.text + rest.backdrop, 0) << "nothing of it below";
+    // Anchored 6 px in from the corner, the backdrop 4 px around the text: the two outermost
+    // rows and columns stay grey.
+    const OverlayInk top = overlayInk(flag.image, 0, 0, 159, 1);
+    const OverlayInk left = overlayInk(flag.image, 0, 0, 1, 119);
+    EXPECT_EQ(top.text + top.backdrop + left.text + left.backdrop, 0);
+    EXPECT_EQ(overlayInk(flag.image, 2, 2, 5, 59).text, 0) << "the text starts 6 px in";
+
+    const OverlayRun config = overlayRun({}, "showProfile = true\n", "config");
+    EXPECT_TRUE(config.on);
+    EXPECT_GT(overlayInk(config.image, 0, 0, 149, 59).text, 150);
+
+    // The profileKey (default f2) turns it on; pressed again, off.
+    const std::filesystem::path once = writeFile(tempDir() / "once.txt", "2 tap key:f2\n");
+    const OverlayRun key = overlayRun({"--input-script", once.string()}, "", "key");
+    EXPECT_TRUE(key.on);
+    EXPECT_GT(overlayInk(key.image, 0, 0, 149, 59).text, 150);
+    const std::filesystem::path twice = writeFile(tempDir() / "twice.txt", "2 tap key:f4\n5 tap key:f4\n");
+    const OverlayRun keyTwice = overlayRun({"--input-script", twice.string()}, "profileKey = f4\n", "twice");
+    EXPECT_FALSE(keyTwice.on);
+    EXPECT_EQ(overlayInk(keyTwice.image, 0, 0, 159, 119).text, 0);
+}
+
+TEST(Game, ProfileOverlayStaysAfterASceneChange) {
+    // The render system drops its hooks on a scene change; the engine puts its own back.
+    Game game;
+    addScene(
+        game, "A", [](core::Scene&) {},
+        [](core::Scene& s) {
+            if (gameOf(s).frame() == 3) {
+                gameOf(s).changeScene("B");
+            }
+        });
+    addScene(game, "B", [](core::Scene& s) {
+        render::SpriteRendererDef def;
+        def.size = {160.0f, 120.0f};
+        def.tint = {128, 128, 128, 255};
+        s.createGameObject().addComponent<render::SpriteRenderer>(def);
+    });
+    const std::filesystem::path shot = tempDir() / "changed.png";
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "20", "--profile",
+                                 "--screenshot", shot.string()});
+    ASSERT_EQ(r.code, 0) << r.all();
+    EXPECT_EQ(game.profile().sceneChanges, 1);
+    const OverlayInk ink = overlayInk(render::loadImage(shot), 0, 0, 149, 59);
+    EXPECT_GT(ink.text, 150);
+    EXPECT_GT(ink.backdrop, 1500);
+}
+
+TEST(Game, UnknownProfileKeyIsAConfigError) {
+    Game game;
+    addScene(game, "A", [](core::Scene&) {});
+    const GameRun r = run(game, {"--config", writeConfig("A", "profileKey = f99\n").string(), "--frames", "1"});
+    EXPECT_EQ(r.code, 2) << r.all();
+    EXPECT_EQ(r.count("profileKey: unknown key name 'f99'"), 1) << r.all();
 }
 
 // --- Game objects: name, tag, active; mouse positions in world units ---------------------------

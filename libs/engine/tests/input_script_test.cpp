@@ -53,7 +53,7 @@ TEST(InputScript, MalformedLinesNameFileAndLine) {
     EXPECT_EQ(errorOf("x press jump"), "run.txt:1: frame must be a whole number >= 0, got 'x'");
     EXPECT_EQ(errorOf("-1 press jump"), "run.txt:1: frame must be a whole number >= 0, got '-1'");
     EXPECT_EQ(errorOf("\n\n1.5 press jump"), "run.txt:3: frame must be a whole number >= 0, got '1.5'");
-    EXPECT_EQ(errorOf("3 hold jump"), "run.txt:1: expected press, release or tap, got 'hold'");
+    EXPECT_EQ(errorOf("3 hold jump"), "run.txt:1: expected press, release, tap or move, got 'hold'");
     EXPECT_EQ(errorOf("3 press jump now"),
               "run.txt:1: expected '<frame> <press|release|tap> <target>', got '3 press jump now'");
     EXPECT_TRUE(parseInputScript("").events.empty());
@@ -66,6 +66,42 @@ TEST(InputScript, MissingFileIsNamed) {
     } catch (const core::Error& e) {
         EXPECT_STREQ(e.what(), "/no/such/script.txt: cannot read the input script");
     }
+}
+
+TEST(InputScript, MovesCarryTheCursorPositionOrTheAxisValue) {
+    const InputScript s = parseInputScript("5 move mouse 120 90.5\n"
+                                           "5 tap mouse:left\n"
+                                           "2 move axis:leftx -0.75\n"
+                                           "3 move axis@1:righttrigger 1\n"
+                                           "4 press button:a\n",
+                                           "run.txt");
+    ASSERT_EQ(s.events.size(), 6u);
+    EXPECT_EQ(s.events[0].kind, Kind::Move);
+    EXPECT_EQ(s.events[0].target, "axis:leftx");
+    EXPECT_EQ(s.events[0].x, -0.75f);
+    EXPECT_EQ(s.events[1].target, "axis@1:righttrigger");
+    EXPECT_EQ(s.events[1].x, 1.0f);
+    EXPECT_EQ(s.events[2].kind, Kind::Press);
+    EXPECT_EQ(s.events[2].target, "button:a");
+    EXPECT_EQ(s.events[3].kind, Kind::Move);
+    EXPECT_EQ(s.events[3].target, "mouse");
+    EXPECT_EQ(s.events[3].x, 120.0f);
+    EXPECT_EQ(s.events[3].y, 90.5f);
+    EXPECT_EQ(s.events[3].frame, 5);
+    EXPECT_EQ(s.events[4].kind, Kind::Press) << "the click after the move, on the same frame";
+    EXPECT_EQ(s.events[4].target, "mouse:left");
+}
+
+TEST(InputScript, MalformedMovesNameFileLineAndValue) {
+    EXPECT_EQ(errorOf("1 move mouse 12"), "run.txt:1: move mouse: expected '<x> <y>' in window pixels, got '12'");
+    EXPECT_EQ(errorOf("1 move mouse 12 y"), "run.txt:1: move mouse: expected '<x> <y>' in window pixels, got '12 y'");
+    EXPECT_EQ(errorOf("1 move mouse 1 2 3"),
+              "run.txt:1: move mouse: expected '<x> <y>' in window pixels, got '1 2 3'");
+    EXPECT_EQ(errorOf("\n1 move axis:leftx 1.5"),
+              "run.txt:2: move axis:leftx: expected one value in [-1, 1], got '1.5'");
+    EXPECT_EQ(errorOf("1 move axis:leftx"), "run.txt:1: move axis:leftx: expected one value in [-1, 1], got ''");
+    EXPECT_EQ(errorOf("1 move axis:leftx nan"), "run.txt:1: move axis:leftx: expected one value in [-1, 1], got 'nan'");
+    EXPECT_EQ(errorOf("1 move jump 1"), "run.txt:1: move: expected 'mouse' or a gamepad axis (axis:leftx), got 'jump'");
 }
 
 } // namespace

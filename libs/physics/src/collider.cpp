@@ -55,12 +55,14 @@ void Collider::attach() {
     // The world matrix's basis vectors carry the scale of the object and all its parents.
     const glm::mat4& m = object.worldTransform();
     const glm::vec2 scale{std::hypot(m[0][0], m[0][1]), std::hypot(m[1][0], m[1][1])};
-    const ShapeGeometry scaled = detail::scaledGeometry(geometry_, scale);
+    // The geometry is in world units, the world in metres.
+    const float upm = sys().unitsPerMetre();
+    const ShapeGeometry scaled = detail::scaledGeometry(geometry_, scale, upm);
     BodyId body{};
     if (Rigidbody* rb = object.getComponent<Rigidbody>(); rb != nullptr && !rb->leaving_) {
         body = rb->ensureBody();
     } else {
-        const detail::Pose pose = detail::worldPose(object);
+        const detail::Pose pose = detail::worldPose(object, upm);
         BodyDef def;
         def.type = BodyType::Static;
         def.position = pose.position;
@@ -75,7 +77,7 @@ void Collider::attach() {
     def.density = def_.density;
     def.friction = def_.friction;
     def.restitution = def_.restitution;
-    def.rollingResistance = def_.rollingResistance;
+    def.rollingResistance = def_.rollingResistance / upm;
     def.isSensor = def_.isTrigger;
     def.filter.categoryBits = def_.category.bits();
     def.filter.maskBits = def_.mask.bits();

@@ -7,16 +7,65 @@
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
+#include "error_format.hpp"
 #include "joint_def_check.hpp"
 
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 
 namespace e2d::physics {
 
 namespace {
 
 constexpr std::string_view kCreatePrefix = "physics::World::createJoint(): ";
+
+// The def in metres: lengths, linear speeds and forces divided by the units per metre, torques
+// by its square (angles, rates in rad/s, frequencies and ratios need no scale).
+JointDef inMetres(JointDef def, float upm) {
+    std::visit(
+        [upm](auto& d) {
+            using D = std::decay_t<decltype(d)>;
+            const auto length = [upm](auto& v) { v /= upm; };
+            const auto torque = [upm](float& v) { v = v / upm / upm; };
+            if constexpr (requires { d.localAnchorA; }) {
+                length(d.localAnchorA);
+            }
+            if constexpr (requires { d.localAnchorB; }) {
+                length(d.localAnchorB);
+            }
+            if constexpr (std::is_same_v<D, DistanceJointDef>) {
+                length(d.length);
+                length(d.minLength);
+                if (d.maxLength < kHuge) { // kHuge: no limit, at any scale
+                    length(d.maxLength);
+                }
+                length(d.maxMotorForce);
+                length(d.motorSpeed);
+            } else if constexpr (std::is_same_v<D, MotorJointDef>) {
+                length(d.linearOffset);
+                length(d.maxForce);
+                torque(d.maxTorque);
+            } else if constexpr (std::is_same_v<D, MouseJointDef>) {
+                length(d.target);
+                length(d.maxForce);
+            } else if constexpr (std::is_same_v<D, PrismaticJointDef>) {
+                length(d.lowerTranslation);
+                length(d.upperTranslation);
+                length(d.maxMotorForce);
+                length(d.motorSpeed);
+            } else if constexpr (std::is_same_v<D, RevoluteJointDef>) {
+                torque(d.maxMotorTorque);
+            } else if constexpr (std::is_same_v<D, WheelJointDef>) {
+                length(d.lowerTranslation);
+                length(d.upperTranslation);
+                torque(d.maxMotorTorque);
+            }
+        },
+        def);
+    return def;
+}
 
 // The def with its bodies set.
 JointDef withBodies(JointDef def, BodyId a, BodyId b) {
@@ -36,13 +85,17 @@ JointDef withBodies(JointDef def, BodyId a, BodyId b) {
 } // namespace
 
 JointComponent::JointComponent(PhysicsSystem& system, const JointComponentDef& def)
-    : system_(system), def_(def) {
+    : system_(system), def_(def), metres_(inMetres(def.joint, system.unitsPerMetre())) {
     try {
-        detail::validateJointDef(def.joint);
+        detail::validateJointDef(metres_);
     } catch (const core::Error& e) {
         std::string what = e.what();
         if (what.rfind(kCreatePrefix, 0) == 0) {
             what.erase(0, kCreatePrefix.size());
+        }
+        if (system.unitsPerMetre() != 1.0f) {
+            what += " (in metres: the def's world units divided by unitsPerMetre " +
+                    detail::formatFloat(system.unitsPerMetre()) + ")";
         }
         fail("JointComponent", "def.joint: " + what);
     }
@@ -53,11 +106,12 @@ JointComponent::~JointComponent() = default;
 bool JointComponent::isConnected() const { return !joint_.isNull() && system_.world().isValid(joint_); }
 
 Vec2 JointComponent::reactionForce() const {
-    return isConnected() ? system_.world().jointReactionForce(joint_) : Vec2{0.0f, 0.0f};
+    return isConnected() ? system_.toUnits(system_.world().jointReactionForce(joint_)) : Vec2{0.0f, 0.0f};
 }
 
 float JointComponent::reactionTorque() const {
-    return isConnected() ? system_.world().jointReactionTorque(joint_) : 0.0f;
+    const float upm = system_.unitsPerMetre();
+    return isConnected() ? system_.world().jointReactionTorque(joint_) * upm * upm : 0.0f;
 }
 
 void JointComponent::disconnect() {
@@ -97,7 +151,7 @@ void JointComponent::onInitialize() {
     }
     const BodyId bodyB = own->ensureBody();
     try {
-        joint_ = system_.world().createJoint(withBodies(def_.joint, bodyA, bodyB));
+        joint_ = system_.world().createJoint(withBodies(metres_, bodyA, bodyB));
     } catch (...) {
         disconnect();
         throw;

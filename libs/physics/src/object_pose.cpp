@@ -11,12 +11,14 @@
 
 namespace e2d::physics::detail {
 
-Pose worldPose(const core::GameObject& object) {
+Pose worldPose(const core::GameObject& object, float unitsPerMetre) {
     const glm::vec3 p = object.worldPosition();
-    return {{p.x, p.y}, object.worldOrientation()};
+    // A division, not a product with the reciprocal: whole multiples of the scale come out exact.
+    return {Vec2{p.x, p.y} / unitsPerMetre, object.worldOrientation()};
 }
 
-void setWorldPose(core::GameObject& object, const Pose& pose) {
+void setWorldPose(core::GameObject& object, const Pose& metres, float unitsPerMetre) {
+    const Pose pose{metres.position * unitsPerMetre, metres.angle};
     const core::GameObject* parent = object.parent();
     const float z = object.position().z;
     if (parent == nullptr) {
@@ -31,32 +33,36 @@ void setWorldPose(core::GameObject& object, const Pose& pose) {
     object.setOrientation(pose.angle - parent->worldOrientation());
 }
 
-ShapeGeometry scaledGeometry(const ShapeGeometry& geometry, glm::vec2 scale) {
-    if (scale.x == 1.0f && scale.y == 1.0f) {
+ShapeGeometry scaledGeometry(const ShapeGeometry& geometry, glm::vec2 scale, float unitsPerMetre) {
+    if (scale.x == 1.0f && scale.y == 1.0f && unitsPerMetre == 1.0f) {
         return geometry;
     }
     const float radiusScale = std::max(std::fabs(scale.x), std::fabs(scale.y));
+    // Scaled, then divided by the units per metre (a division keeps whole multiples exact).
     struct Scaler {
         glm::vec2 s;
         float r;
-        ShapeGeometry operator()(const Circle& c) const { return Circle{c.center * s, c.radius * r}; }
+        float upm;
+        [[nodiscard]] Vec2 p(Vec2 v) const { return v * s / upm; }
+        [[nodiscard]] float l(float radius) const { return radius * r / upm; }
+        ShapeGeometry operator()(const Circle& c) const { return Circle{p(c.center), l(c.radius)}; }
         ShapeGeometry operator()(const Capsule& c) const {
-            return Capsule{c.center1 * s, c.center2 * s, c.radius * r};
+            return Capsule{p(c.center1), p(c.center2), l(c.radius)};
         }
-        ShapeGeometry operator()(const Segment& g) const { return Segment{g.point1 * s, g.point2 * s}; }
+        ShapeGeometry operator()(const Segment& g) const { return Segment{p(g.point1), p(g.point2)}; }
         ShapeGeometry operator()(const ChainSegment& g) const {
-            return ChainSegment{{g.segment.point1 * s, g.segment.point2 * s}, g.ghost1 * s,
-                                g.ghost2 * s, g.hasGhost1, g.hasGhost2};
+            return ChainSegment{{p(g.segment.point1), p(g.segment.point2)}, p(g.ghost1),
+                                p(g.ghost2), g.hasGhost1, g.hasGhost2};
         }
-        ShapeGeometry operator()(const Polygon& p) const {
-            std::vector<Vec2> points(p.vertices.begin(), p.vertices.begin() + p.count);
+        ShapeGeometry operator()(const Polygon& poly) const {
+            std::vector<Vec2> points(poly.vertices.begin(), poly.vertices.begin() + poly.count);
             for (Vec2& v : points) {
-                v *= s;
+                v = p(v);
             }
-            return makePolygon(points, p.radius * r);
+            return makePolygon(points, l(poly.radius));
         }
     };
-    return std::visit(Scaler{scale, radiusScale}, geometry);
+    return std::visit(Scaler{scale, radiusScale, unitsPerMetre}, geometry);
 }
 
 bool movedApart(const Pose& a, Vec2 position, float angle) {

@@ -9,11 +9,46 @@
 
 #include "object_pose.hpp"
 
+#include "error_format.hpp"
+
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 namespace e2d::physics {
 
-PhysicsSystem::PhysicsSystem(const WorldDef& def) : def_(def), world_(def) {}
+namespace {
+
+float checkedScale(float unitsPerMetre) {
+    if (!std::isfinite(unitsPerMetre) || unitsPerMetre <= 0.0f) {
+        throw core::Error("physics::PhysicsSystem::PhysicsSystem(): unitsPerMetre must be finite "
+                          "and > 0, got " + detail::formatFloat(unitsPerMetre));
+    }
+    return unitsPerMetre;
+}
+
+} // namespace
+
+PhysicsSystem::PhysicsSystem(const WorldDef& def, float unitsPerMetre)
+    : def_(def), unitsPerMetre_(checkedScale(unitsPerMetre)), world_(def) {}
+
+std::optional<RayResult> PhysicsSystem::castRayClosest(Vec2 origin, Vec2 translation,
+                                                       const QueryFilter& filter) const {
+    std::optional<RayResult> hit = world_.castRayClosest(toMetres(origin), toMetres(translation), filter);
+    if (hit) {
+        hit->point = toUnits(hit->point);
+    }
+    return hit;
+}
+
+std::vector<RayResult> PhysicsSystem::castRayAll(Vec2 origin, Vec2 translation,
+                                                 const QueryFilter& filter) const {
+    std::vector<RayResult> hits = world_.castRayAll(toMetres(origin), toMetres(translation), filter);
+    for (RayResult& hit : hits) {
+        hit.point = toUnits(hit.point);
+    }
+    return hits;
+}
 
 PhysicsSystem::~PhysicsSystem() = default;
 
@@ -106,7 +141,7 @@ void PhysicsSystem::forgetDestroyedBodies() {
 // between steps, the body during them.
 void PhysicsSystem::pullMovedObjects() {
     for (Rigidbody* rb : rigidbodies_) {
-        const detail::Pose pose = detail::worldPose(*rb->gameObject());
+        const detail::Pose pose = detail::worldPose(*rb->gameObject(), unitsPerMetre_);
         if (detail::movedApart(pose, rb->writtenPosition_, rb->writtenAngle_)) {
             world_.setTransform(rb->body_, pose.position, pose.angle);
             rb->writtenPosition_ = pose.position;
@@ -114,7 +149,7 @@ void PhysicsSystem::pullMovedObjects() {
         }
     }
     for (Collider* c : staticColliders_) {
-        const detail::Pose pose = detail::worldPose(*c->gameObject());
+        const detail::Pose pose = detail::worldPose(*c->gameObject(), unitsPerMetre_);
         if (detail::movedApart(pose, c->writtenPosition_, c->writtenAngle_)) {
             world_.setTransform(c->ownBody_, pose.position, pose.angle);
             c->writtenPosition_ = pose.position;
@@ -127,9 +162,9 @@ void PhysicsSystem::pushBodyTransforms() {
     for (Rigidbody* rb : rigidbodies_) {
         const Transform xf = world_.transform(rb->body_);
         const detail::Pose pose{xf.p, xf.q.angle()};
-        detail::setWorldPose(*rb->gameObject(), pose);
+        detail::setWorldPose(*rb->gameObject(), pose, unitsPerMetre_);
         // Remember what the object now reports, after its own matrix round trip.
-        const detail::Pose seen = detail::worldPose(*rb->gameObject());
+        const detail::Pose seen = detail::worldPose(*rb->gameObject(), unitsPerMetre_);
         rb->writtenPosition_ = seen.position;
         rb->writtenAngle_ = seen.angle;
     }
@@ -139,7 +174,7 @@ namespace {
 
 // The contact as the receiving object sees it: normals point away from it.
 core::ContactInfo contactFor(const Manifold* manifold, bool receiverIsA, core::GameObject* other,
-                             core::Component* otherCollider) {
+                             core::Component* otherCollider, float unitsPerMetre) {
     core::ContactInfo info;
     info.other = other;
     info.otherCollider = otherCollider;
@@ -148,7 +183,8 @@ core::ContactInfo contactFor(const Manifold* manifold, bool receiverIsA, core::G
         info.pointCount = std::min(manifold->pointCount, core::ContactInfo::kMaxPoints);
         for (int i = 0; i < info.pointCount; ++i) {
             const ManifoldPoint& mp = manifold->points[i];
-            info.points[static_cast<std::size_t>(i)] = {mp.point, normal, mp.separation};
+            info.points[static_cast<std::size_t>(i)] = {mp.point * unitsPerMetre, normal,
+                                                        mp.separation * unitsPerMetre};
         }
     }
     return info;
@@ -170,45 +206,49 @@ void PhysicsSystem::dispatchEvents() {
         bool& flag;
         ~Reset() { flag = false; }
     } reset{dispatching_};
-    const auto objectOf = [](Collider* c) { return c != nullptr ? c->gameObject() : nullptr; };
+    // What the receiving object is told about `other`: points and separations in world units.
+    const auto contact = [this](const Manifold* manifold, bool receiverIsA, Collider* other) {
+        return contactFor(manifold, receiverIsA, other != nullptr ? other->gameObject() : nullptr, other,
+                          unitsPerMetre_);
+    };
     for (const ContactBeginTouchEvent& e : beginEvents_) {
         Collider* a = collider(e.shapeA);
         Collider* b = collider(e.shapeB);
         if (a != nullptr) {
-            a->gameObject()->dispatchCollisionEnter(contactFor(&e.manifold, true, objectOf(b), b));
+            a->gameObject()->dispatchCollisionEnter(contact(&e.manifold, true, b));
         }
         if (b != nullptr) {
-            b->gameObject()->dispatchCollisionEnter(contactFor(&e.manifold, false, objectOf(a), a));
+            b->gameObject()->dispatchCollisionEnter(contact(&e.manifold, false, a));
         }
     }
     for (const ContactEndTouchEvent& e : endEvents_) {
         Collider* a = collider(e.shapeA);
         Collider* b = collider(e.shapeB);
         if (a != nullptr) {
-            a->gameObject()->dispatchCollisionExit(contactFor(nullptr, true, objectOf(b), b));
+            a->gameObject()->dispatchCollisionExit(contact(nullptr, true, b));
         }
         if (b != nullptr) {
-            b->gameObject()->dispatchCollisionExit(contactFor(nullptr, false, objectOf(a), a));
+            b->gameObject()->dispatchCollisionExit(contact(nullptr, false, a));
         }
     }
     for (const SensorBeginTouchEvent& e : sensorBeginEvents_) {
         Collider* sensor = collider(e.sensorShape);
         Collider* visitor = collider(e.visitorShape);
         if (sensor != nullptr) {
-            sensor->gameObject()->dispatchTriggerEnter(contactFor(nullptr, true, objectOf(visitor), visitor));
+            sensor->gameObject()->dispatchTriggerEnter(contact(nullptr, true, visitor));
         }
         if (visitor != nullptr) {
-            visitor->gameObject()->dispatchTriggerEnter(contactFor(nullptr, true, objectOf(sensor), sensor));
+            visitor->gameObject()->dispatchTriggerEnter(contact(nullptr, true, sensor));
         }
     }
     for (const SensorEndTouchEvent& e : sensorEndEvents_) {
         Collider* sensor = collider(e.sensorShape);
         Collider* visitor = collider(e.visitorShape);
         if (sensor != nullptr) {
-            sensor->gameObject()->dispatchTriggerExit(contactFor(nullptr, true, objectOf(visitor), visitor));
+            sensor->gameObject()->dispatchTriggerExit(contact(nullptr, true, visitor));
         }
         if (visitor != nullptr) {
-            visitor->gameObject()->dispatchTriggerExit(contactFor(nullptr, true, objectOf(sensor), sensor));
+            visitor->gameObject()->dispatchTriggerExit(contact(nullptr, true, sensor));
         }
     }
 }

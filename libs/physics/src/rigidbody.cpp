@@ -53,12 +53,13 @@ BodyId Rigidbody::ensureBody() {
     if (!body_.isNull()) {
         return body_;
     }
-    const detail::Pose pose = detail::worldPose(*gameObject());
+    const float upm = sys().unitsPerMetre();
+    const detail::Pose pose = detail::worldPose(*gameObject(), upm);
     BodyDef def;
     def.type = def_.type;
     def.position = pose.position;
     def.angle = pose.angle;
-    def.linearVelocity = def_.linearVelocity;
+    def.linearVelocity = def_.linearVelocity / upm;
     def.angularVelocity = def_.angularVelocity;
     def.linearDamping = def_.linearDamping;
     def.angularDamping = def_.angularDamping;
@@ -126,11 +127,13 @@ BodyId Rigidbody::requireBody(const char* function) const {
     return body_;
 }
 
+// The world speaks metres; the component speaks world units (see PhysicsSystem): lengths scale
+// by 1/upm, torques and angular impulses (a force times a length) by 1/upm^2.
 Vec2 Rigidbody::linearVelocity() const {
-    return sys().world().linearVelocity(requireBody("linearVelocity"));
+    return sys().toUnits(sys().world().linearVelocity(requireBody("linearVelocity")));
 }
 void Rigidbody::setLinearVelocity(Vec2 velocity) {
-    sys().world().setLinearVelocity(requireBody("setLinearVelocity"), velocity);
+    sys().world().setLinearVelocity(requireBody("setLinearVelocity"), sys().toMetres(velocity));
 }
 float Rigidbody::angularVelocity() const {
     return sys().world().angularVelocity(requireBody("angularVelocity"));
@@ -152,22 +155,23 @@ void Rigidbody::setFreezePosition(bool x, bool y) {
     sys().world().setPositionLocks(requireBody("setFreezePosition"), x, y);
 }
 void Rigidbody::applyForce(Vec2 force) {
-    sys().world().applyForceToCenter(requireBody("applyForce"), force);
+    sys().world().applyForceToCenter(requireBody("applyForce"), sys().toMetres(force));
 }
 void Rigidbody::applyForceAtPoint(Vec2 force, Vec2 point) {
-    sys().world().applyForce(requireBody("applyForceAtPoint"), force, point);
+    sys().world().applyForce(requireBody("applyForceAtPoint"), sys().toMetres(force), sys().toMetres(point));
 }
 void Rigidbody::applyTorque(float torque) {
-    sys().world().applyTorque(requireBody("applyTorque"), torque);
+    sys().world().applyTorque(requireBody("applyTorque"), sys().toMetres(sys().toMetres(torque)));
 }
 void Rigidbody::applyLinearImpulse(Vec2 impulse) {
-    sys().world().applyLinearImpulseToCenter(requireBody("applyLinearImpulse"), impulse);
+    sys().world().applyLinearImpulseToCenter(requireBody("applyLinearImpulse"), sys().toMetres(impulse));
 }
 void Rigidbody::applyImpulseAtPoint(Vec2 impulse, Vec2 point) {
-    sys().world().applyLinearImpulse(requireBody("applyImpulseAtPoint"), impulse, point);
+    sys().world().applyLinearImpulse(requireBody("applyImpulseAtPoint"), sys().toMetres(impulse),
+                                     sys().toMetres(point));
 }
 void Rigidbody::applyAngularImpulse(float impulse) {
-    sys().world().applyAngularImpulse(requireBody("applyAngularImpulse"), impulse);
+    sys().world().applyAngularImpulse(requireBody("applyAngularImpulse"), sys().toMetres(sys().toMetres(impulse)));
 }
 
 } // namespace e2d::physics

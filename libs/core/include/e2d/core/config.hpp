@@ -123,6 +123,11 @@ struct Config {
     std::string debugDrawKey = "f1";
     /// Print the frame profile (mean milliseconds per phase) when the game ends. Default true.
     bool printProfile = true;
+    /// Start with the frame profile overlay on: milliseconds per frame and per phase (update,
+    /// fixed steps, physics, render, audio, input) in the top-left corner. Default false.
+    bool showProfile = false;
+    /// Key name that toggles the profile overlay at run time; empty: no key. Default "f2".
+    std::string profileKey = "f2";
 };
 
 /// One problem found while reading a configuration.

@@ -25,6 +25,8 @@ struct CommandLine {
     std::filesystem::path inputScript;
     /// `--debug-draw`: start with the physics debug draw on.
     bool debugDraw = false;
+    /// `--profile`: start with the frame profile overlay on.
+    bool profile = false;
     /// `--show`: keep the window visible with `--frames`.
     bool show = false;
     /// `--help` / `-h`.

@@ -10,6 +10,7 @@
 #include <e2d/engine/frame_profile.hpp>
 #include <e2d/input/actions.hpp>
 #include <e2d/input/input.hpp>
+#include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/world.hpp>
 #include <e2d/render/render_system.hpp>
 #include <e2d/render/renderer.hpp>
@@ -49,13 +50,17 @@ public:
     /// The game's actions, loaded from the config's bindingsFile (if any).
     [[nodiscard]] input::ActionMap& actions() noexcept;
     [[nodiscard]] audio::Mixer& mixer() noexcept;
+    /// The physics world, in metres (see unitsPerMetre()).
     [[nodiscard]] physics::World& world() noexcept;
+    /// The physics system the components use, in world units.
+    [[nodiscard]] physics::PhysicsSystem& physics() noexcept;
     [[nodiscard]] core::Logger& logger() noexcept;
     /// World units per physics metre (config unitsPerMetre, default 1). The config's PHYSICS
-    /// lengths are divided by it for the world, and the debug draw multiplies the world's
-    /// metres by it. Rigidbody and Collider components place bodies at their objects'
-    /// positions as they are (one world unit = one metre): a game that draws in pixels and
-    /// uses them either keeps unitsPerMetre 1 and zooms its camera, or converts itself.
+    /// lengths are divided by it for the world, the debug draw multiplies the world's metres
+    /// by it, and the game's physics::PhysicsSystem has it as its unitsPerMetre(): Rigidbody,
+    /// Collider and JointComponent take and give world units (positions, sizes, velocities,
+    /// forces, contact points, PhysicsSystem ray casts), so a game that draws in pixels writes
+    /// pixels everywhere. world() itself stays in metres.
     [[nodiscard]] double unitsPerMetre() const noexcept;
     /// The game's random numbers, seeded by `--seed` or the config's randomSeed.
     [[nodiscard]] core::Random& random() noexcept;
@@ -65,9 +70,16 @@ public:
     /// Ends the game after this frame.
     void terminateGame();
 
-    /// Whether the physics debug draw (shapes, AABBs, contacts and normals) is on.
+    /// Whether the physics debug draw (shapes, AABBs, contacts and normals, joints; colours in
+    /// DebugDrawColors) is on.
     [[nodiscard]] bool debugDraw() const noexcept;
     void setDebugDraw(bool on) noexcept;
+
+    /// Whether the frame profile overlay (config showProfile, `--profile`, the profileKey) is
+    /// on: mean milliseconds per frame and per phase over the last 15 frames, drawn by the
+    /// engine in camera space at the view's top-left corner, above everything.
+    [[nodiscard]] bool profileOverlay() const noexcept;
+    void setProfileOverlay(bool on) noexcept;
 
     /// Frames run so far (0 during the first frame).
     [[nodiscard]] std::int64_t frame() const noexcept;

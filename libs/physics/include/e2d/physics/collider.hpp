@@ -12,13 +12,14 @@ class PhysicsSystem;
 
 /// Material, trigger flag and masks of a Collider.
 struct ColliderDef {
-    /// kg/m^2, >= 0. Default 1.
+    /// kg per square metre, >= 0 (metres whatever the system's unitsPerMetre(), so a scene
+    /// drawn at any scale weighs the same). Default 1.
     float density = 1.0f;
     /// Coulomb coefficient, >= 0. Default 0.6.
     float friction = 0.6f;
     /// 0 (no bounce) .. 1 (elastic). Default 0.
     float restitution = 0.0f;
-    /// Rolling resistance, metres, >= 0. Default 0.
+    /// Rolling resistance, world units, >= 0. Default 0.
     float rollingResistance = 0.0f;
     /// A trigger detects overlaps (onTriggerEnter/Exit) but is not solid. Default false.
     bool isTrigger = false;
@@ -28,7 +29,8 @@ struct ColliderDef {
     core::Mask mask = core::Mask::all();
 };
 
-/// A convex shape attached to its GameObject, in the object's local frame, scaled by the
+/// A convex shape attached to its GameObject, in the object's local frame (world units; the
+/// PhysicsSystem divides them by its unitsPerMetre() for the World's metres), scaled by the
 /// object's world scale (its magnitude per axis; mirroring is ignored) when it is attached;
 /// later scale changes are not followed. It rides on
 /// the object's Rigidbody; an object without one is static, and moving it by hand moves the

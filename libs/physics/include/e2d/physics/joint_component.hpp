@@ -15,9 +15,13 @@ class PhysicsSystem;
 struct JointComponentDef {
     /// The joint, any of joint.hpp's defs, validated as World::createJoint() does. Its bodyA
     /// and bodyB are ignored: body A is the connected object's Rigidbody (or a static anchor),
-    /// body B this object's Rigidbody. Anchors are in each body's own frame (metres from the
-    /// object's position, unrotated), as for World::createJoint(). Default: a revolute joint
-    /// at both origins.
+    /// body B this object's Rigidbody. Anchors are in each body's own frame (world units from
+    /// the object's position, unrotated). Lengths, translations, offsets, targets and linear
+    /// motor speeds are in world units (per second), forces in kg*units/s^2 and torques in
+    /// kg*units^2/s^2; the system divides them by its unitsPerMetre() (squared for torques)
+    /// for World::createJoint(), so at the default 1 unit per metre they are metres and
+    /// newtons. Angles, frequencies and ratios have no scale. Default: a revolute joint at both
+    /// origins.
     JointDef joint = RevoluteJointDef{};
     /// The object to connect to; it must have a Rigidbody. Null (default): a static anchor
     /// fixed in the world at the world origin, so localAnchorA is a world point.
@@ -47,11 +51,11 @@ public:
     [[nodiscard]] PhysicsSystem& system() const noexcept { return system_; }
     [[nodiscard]] const JointComponentDef& def() const noexcept { return def_; }
 
-    /// The force on this object's body during the last fixed step, N, world axes (see
-    /// World::jointReactionForce()); zero when not connected.
+    /// The force on this object's body during the last fixed step, kg*units/s^2 (N at 1 unit
+    /// per metre), world axes (see World::jointReactionForce()); zero when not connected.
     [[nodiscard]] Vec2 reactionForce() const;
-    /// The torque on this object's body during the last fixed step, N*m; zero when not
-    /// connected.
+    /// The torque on this object's body during the last fixed step, kg*units^2/s^2 (N*m at 1
+    /// unit per metre); zero when not connected.
     [[nodiscard]] float reactionTorque() const;
     /// Destroys the joint now (a game breaking it above a force); the bodies stay.
     void disconnect();
@@ -62,6 +66,7 @@ public:
 private:
     PhysicsSystem& system_;
     JointComponentDef def_;
+    JointDef metres_; // def_.joint in metres, for the World
     JointId joint_{};
     BodyId anchor_{}; // the static anchor made for a null connectedObject
 };

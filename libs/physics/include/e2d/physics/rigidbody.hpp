@@ -10,7 +10,8 @@ namespace e2d::physics {
 
 class PhysicsSystem;
 
-/// How a Rigidbody starts. Every field can be changed later through the component.
+/// How a Rigidbody starts. Every field can be changed later through the component. Lengths are
+/// world units (the PhysicsSystem's unitsPerMetre() of them make a metre; see PhysicsSystem).
 struct RigidbodyDef {
     /// Dynamic (forces and contacts move it) or kinematic (only its velocity does). Default
     /// dynamic. A static body is a Collider without a Rigidbody.
@@ -28,7 +29,7 @@ struct RigidbodyDef {
     bool freezePositionY = false;
     /// Continuous collision against everything (not only static shapes). Default false.
     bool bullet = false;
-    /// Initial velocity, m/s and rad/s. Default 0.
+    /// Initial velocity, world units/s and rad/s. Default 0.
     Vec2 linearVelocity{0.0f, 0.0f};
     float angularVelocity = 0.0f;
 };
@@ -38,6 +39,11 @@ struct RigidbodyDef {
 /// from the object's Colliders' densities. The body is created when the object enters the scene
 /// (or, if added later, when the component is attached) and destroyed with the component; its
 /// Colliders move onto it, and back onto static bodies of their own when it goes.
+///
+/// Units are the scene's: positions and points in world units, velocities in units/s, forces
+/// in kg*units/s^2, impulses in kg*units/s, torques in kg*units^2/s^2 and angular impulses in
+/// kg*units^2/s (at the default 1 unit per metre: metres, N, N*s, N*m). The PhysicsSystem
+/// converts them to the World's metres.
 class Rigidbody : public core::Component {
 public:
     static constexpr bool kUnique = true;
@@ -57,8 +63,10 @@ public:
     /// def-only component whose object is not in a scene with a PhysicsSystem).
     [[nodiscard]] PhysicsSystem& system() const { return sys(); }
 
+    /// World units/s.
     [[nodiscard]] Vec2 linearVelocity() const;
     void setLinearVelocity(Vec2 velocity);
+    /// rad/s.
     [[nodiscard]] float angularVelocity() const;
     void setAngularVelocity(float velocity);
     /// kg, from the colliders' densities.
@@ -68,14 +76,17 @@ public:
     void setFreezeRotation(bool freeze);
     void setFreezePosition(bool x, bool y);
 
-    /// Force at the centre of mass (N), applied during the next fixed step.
+    /// Force at the centre of mass (kg*units/s^2), applied during the next fixed step.
     void applyForce(Vec2 force);
-    /// Force at a world point (N, m).
+    /// Force (kg*units/s^2) at a point (world units).
     void applyForceAtPoint(Vec2 force, Vec2 point);
+    /// Torque, kg*units^2/s^2, applied during the next fixed step.
     void applyTorque(float torque);
-    /// Impulse at the centre of mass (N*s): changes the velocity at once.
+    /// Impulse at the centre of mass (kg*units/s): changes the velocity at once.
     void applyLinearImpulse(Vec2 impulse);
+    /// Impulse (kg*units/s) at a point (world units).
     void applyImpulseAtPoint(Vec2 impulse, Vec2 point);
+    /// Angular impulse, kg*units^2/s.
     void applyAngularImpulse(float impulse);
 
     void onInitialize() override;
