@@ -127,9 +127,71 @@ int DynamicTree::createProxy(const Aabb& aabb, std::uint64_t categoryBits, std::
     return index;
 }
 
+int DynamicTree::createProxyDeferred(const Aabb& aabb, std::uint64_t categoryBits,
+                                     std::uint64_t userData) {
+    checkBox(aabb, "createProxyDeferred");
+    if (deferred_.size() == deferred_.capacity()) {
+        if (deferred_.size() > 2 * static_cast<std::size_t>(deferredCount_) + 64) {
+            compactDeferred(); // many deferred leaves were destroyed again
+        }
+        // Reserve first so that nothing can throw after the node is taken.
+        deferred_.reserve(std::max<std::size_t>(64, 2 * deferred_.size()));
+    }
+    const int index = allocateNode();
+    Node& node = nodes_[static_cast<std::size_t>(index)];
+    node.aabb = aabb;
+    node.categoryBits = categoryBits;
+    node.userData = userData;
+    node.parent = kDeferredParent;
+    deferred_.push_back(index);
+    ++deferredCount_;
+    ++proxyCount_;
+    return index;
+}
+
+void DynamicTree::compactDeferred() {
+    // Keep the first entry of every leaf still deferred; mark kept ones (parent -3) meanwhile.
+    constexpr int kSeen = -3;
+    std::size_t write = 0;
+    for (const int index : deferred_) {
+        if (isDeferred(index)) {
+            nodes_[static_cast<std::size_t>(index)].parent = kSeen;
+            deferred_[write++] = index;
+        }
+    }
+    deferred_.resize(write);
+    for (const int index : deferred_) {
+        nodes_[static_cast<std::size_t>(index)].parent = kDeferredParent;
+    }
+}
+
+void DynamicTree::insertDeferred() {
+    if (deferredCount_ == 0) {
+        deferred_.clear();
+        return;
+    }
+    if (proxyCount_ >= 3 && 4 * deferredCount_ >= proxyCount_) {
+        rebuild();
+        return;
+    }
+    // insertLeaf() may reallocate nodes_, never deferred_.
+    for (const int index : deferred_) {
+        if (isDeferred(index)) {
+            nodes_[static_cast<std::size_t>(index)].parent = kNullProxy;
+            insertLeaf(index);
+        }
+    }
+    deferred_.clear();
+    deferredCount_ = 0;
+}
+
 void DynamicTree::destroyProxy(int proxyId) {
     checkProxy(proxyId, "destroyProxy");
-    removeLeaf(proxyId);
+    if (isDeferred(proxyId)) {
+        --deferredCount_; // its entry in deferred_ goes stale
+    } else {
+        removeLeaf(proxyId);
+    }
     freeNode(proxyId);
     --proxyCount_;
 }
@@ -137,6 +199,10 @@ void DynamicTree::destroyProxy(int proxyId) {
 void DynamicTree::moveProxy(int proxyId, const Aabb& aabb) {
     checkProxy(proxyId, "moveProxy");
     checkBox(aabb, "moveProxy");
+    if (isDeferred(proxyId)) {
+        nodes_[static_cast<std::size_t>(proxyId)].aabb = aabb;
+        return;
+    }
     removeLeaf(proxyId);
     nodes_[static_cast<std::size_t>(proxyId)].aabb = aabb;
     insertLeaf(proxyId);
@@ -146,6 +212,9 @@ void DynamicTree::enlargeProxy(int proxyId, const Aabb& aabb) {
     checkProxy(proxyId, "enlargeProxy");
     checkBox(aabb, "enlargeProxy");
     nodes_[static_cast<std::size_t>(proxyId)].aabb = aabb;
+    if (isDeferred(proxyId)) {
+        return;
+    }
     int index = nodes_[static_cast<std::size_t>(proxyId)].parent;
     while (index != kNullProxy) {
         Node& node = nodes_[static_cast<std::size_t>(index)];
@@ -191,6 +260,8 @@ void DynamicTree::clear() {
     freeList_ = 0;
     root_ = kNullProxy;
     proxyCount_ = 0;
+    deferred_.clear();
+    deferredCount_ = 0;
 }
 
 // Branch-and-bound descent for the sibling that minimises the surface-area cost of inserting
@@ -433,12 +504,23 @@ void DynamicTree::removeLeaf(int leaf) {
 
 void DynamicTree::rebuild() {
     if (proxyCount_ < 3) {
+        // Nothing to balance: only deferred leaves may need inserting.
+        if (deferredCount_ > 0) {
+            for (const int index : deferred_) {
+                if (isDeferred(index)) {
+                    nodes_[static_cast<std::size_t>(index)].parent = kNullProxy;
+                    insertLeaf(index);
+                }
+            }
+        }
+        deferred_.clear();
+        deferredCount_ = 0;
         return;
     }
-    // Collect the leaves and free every internal node.
+    // Collect the leaves (deferred ones too) and free every internal node.
     std::vector<int> leaves;
     leaves.reserve(static_cast<std::size_t>(proxyCount_));
-    {
+    if (root_ != kNullProxy) {
         detail::TreeStack<128> stack;
         stack.push(root_);
         while (!stack.empty()) {
@@ -453,8 +535,35 @@ void DynamicTree::rebuild() {
             }
         }
     }
+    for (const int index : deferred_) {
+        if (isDeferred(index)) {
+            // No longer deferred: a stale second entry for the same id is skipped.
+            nodes_[static_cast<std::size_t>(index)].parent = kNullProxy;
+            leaves.push_back(index);
+        }
+    }
+    deferred_.clear();
+    deferredCount_ = 0;
+    root_ = kNullProxy;
     // Sorting by id makes the result independent of the old tree's shape.
     std::sort(leaves.begin(), leaves.end());
+    buildFrom(leaves);
+}
+
+void DynamicTree::buildFrom(std::vector<int>& leafIds) {
+    // The leaves' boxes and centres, copied once: every level of the build reads them
+    // sequentially instead of gathering nodes.
+    struct Item {
+        Aabb box;
+        Vec2 center;
+        int id;
+    };
+    std::vector<Item> leaves;
+    leaves.reserve(leafIds.size());
+    for (const int id : leafIds) {
+        const Aabb& box = nodes_[static_cast<std::size_t>(id)].aabb;
+        leaves.push_back({box, centerOf(box), id});
+    }
 
     struct Task {
         int begin;
@@ -469,7 +578,7 @@ void DynamicTree::rebuild() {
 
     constexpr int kBins = 16;
     std::vector<int> binOf(leaves.size());
-    std::vector<int> rightLeaves;
+    std::vector<Item> rightLeaves;
     rightLeaves.reserve(leaves.size());
 
     auto link = [&](int child, int parent, int slot) {
@@ -488,10 +597,10 @@ void DynamicTree::rebuild() {
         tasks.pop_back();
         const int n = task.end - task.begin;
         if (n == 1) {
-            link(leaves[static_cast<std::size_t>(task.begin)], task.parent, task.slot);
+            link(leaves[static_cast<std::size_t>(task.begin)].id, task.parent, task.slot);
             continue;
         }
-        // No growth: the internal nodes freed above are reused.
+        // Reuses freed internal nodes; grows the node array only for new leaves' parents.
         const int node = allocateNode();
         internals.push_back(node);
         link(node, task.parent, task.slot);
@@ -502,16 +611,15 @@ void DynamicTree::rebuild() {
         Vec2 cmin{std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
         Vec2 cmax = -cmin;
         for (auto it = first; it != last; ++it) {
-            const Vec2 c = centerOf(nodes_[static_cast<std::size_t>(*it)].aabb);
+            const Vec2 c = it->center;
             cmin = {std::fmin(cmin.x, c.x), std::fmin(cmin.y, c.y)};
             cmax = {std::fmax(cmax.x, c.x), std::fmax(cmax.y, c.y)};
         }
         const int axis = (cmax.x - cmin.x) >= (cmax.y - cmin.y) ? 0 : 1;
         const float lo = axis == 0 ? cmin.x : cmin.y;
         const float extent = axis == 0 ? cmax.x - cmin.x : cmax.y - cmin.y;
-        auto axisCenter = [&](int leaf) {
-            const Vec2 c = centerOf(nodes_[static_cast<std::size_t>(leaf)].aabb);
-            return axis == 0 ? c.x : c.y;
+        auto axisCenter = [&](const Item& item) {
+            return axis == 0 ? item.center.x : item.center.y;
         };
 
         int mid = task.begin + n / 2;
@@ -521,15 +629,14 @@ void DynamicTree::rebuild() {
             std::array<int, kBins> binCount{};
             const float scale = static_cast<float>(kBins) / extent;
             for (int i = task.begin; i < task.end; ++i) {
-                const int leaf = leaves[static_cast<std::size_t>(i)];
-                int bin = static_cast<int>((axisCenter(leaf) - lo) * scale);
+                const Item& item = leaves[static_cast<std::size_t>(i)];
+                int bin = static_cast<int>((axisCenter(item) - lo) * scale);
                 bin = std::clamp(bin, 0, kBins - 1);
                 binOf[static_cast<std::size_t>(i)] = bin;
-                const Aabb& box = nodes_[static_cast<std::size_t>(leaf)].aabb;
                 binBox[static_cast<std::size_t>(bin)] =
                     binCount[static_cast<std::size_t>(bin)] == 0
-                        ? box
-                        : merge(binBox[static_cast<std::size_t>(bin)], box);
+                        ? item.box
+                        : merge(binBox[static_cast<std::size_t>(bin)], item.box);
                 ++binCount[static_cast<std::size_t>(bin)];
             }
             // Cost of splitting before bin k: perimeter * count on each side.
@@ -570,11 +677,11 @@ void DynamicTree::rebuild() {
                 int write = task.begin;
                 rightLeaves.clear();
                 for (int i = task.begin; i < task.end; ++i) {
-                    const int leaf = leaves[static_cast<std::size_t>(i)];
+                    const Item& item = leaves[static_cast<std::size_t>(i)];
                     if (binOf[static_cast<std::size_t>(i)] < bestSplit) {
-                        leaves[static_cast<std::size_t>(write++)] = leaf;
+                        leaves[static_cast<std::size_t>(write++)] = item;
                     } else {
-                        rightLeaves.push_back(leaf);
+                        rightLeaves.push_back(item);
                     }
                 }
                 std::copy(rightLeaves.begin(), rightLeaves.end(), leaves.begin() + write);
@@ -586,10 +693,10 @@ void DynamicTree::rebuild() {
         }
         if (!split) {
             // Coincident centres (or an unhelpful binning): median split by position, ties by id.
-            std::nth_element(first, leaves.begin() + mid, last, [&](int x, int y) {
+            std::nth_element(first, leaves.begin() + mid, last, [&](const Item& x, const Item& y) {
                 const float cx = axisCenter(x);
                 const float cy = axisCenter(y);
-                return cx < cy || (cx == cy && x < y);
+                return cx < cy || (cx == cy && x.id < y.id);
             });
         }
         tasks.push_back({mid, task.end, node, 2});
@@ -661,7 +768,14 @@ bool DynamicTree::validate() const {
             return false;
         }
     }
-    return leaves == proxyCount_ && reachable + freeCount == static_cast<int>(nodes_.size());
+    int deferred = 0;
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        if (isDeferred(static_cast<int>(i))) {
+            ++deferred;
+        }
+    }
+    return deferred == deferredCount_ && leaves + deferred == proxyCount_ &&
+           reachable + freeCount + deferred == static_cast<int>(nodes_.size());
 }
 
 } // namespace e2d::physics
