@@ -557,29 +557,42 @@ void DynamicTree::buildFrom(std::vector<int>& leafIds) {
         Aabb box;
         Vec2 center;
         int id;
+        int bin;
+    };
+    struct Bounds {
+        Vec2 lower{std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
+        Vec2 upper{-std::numeric_limits<float>::max(), -std::numeric_limits<float>::max()};
+        void add(Vec2 p) {
+            lower = {minOf(lower.x, p.x), minOf(lower.y, p.y)};
+            upper = {maxOf(upper.x, p.x), maxOf(upper.y, p.y)};
+        }
+        void add(const Bounds& b) {
+            lower = {minOf(lower.x, b.lower.x), minOf(lower.y, b.lower.y)};
+            upper = {maxOf(upper.x, b.upper.x), maxOf(upper.y, b.upper.y)};
+        }
     };
     std::vector<Item> leaves;
     leaves.reserve(leafIds.size());
+    Bounds all;
     for (const int id : leafIds) {
         const Aabb& box = nodes_[static_cast<std::size_t>(id)].aabb;
-        leaves.push_back({box, centerOf(box), id});
+        leaves.push_back({box, centerOf(box), id, 0});
+        all.add(leaves.back().center);
     }
 
     struct Task {
         int begin;
         int end;
         int parent;
-        int slot; // 1 or 2: which child of parent
+        int slot;       // 1 or 2: which child of parent
+        Bounds centers; // of the leaves in [begin, end)
     };
     std::vector<Task> tasks;
     std::vector<int> internals; // in creation order: parents before children
     internals.reserve(leaves.size());
-    tasks.push_back({0, static_cast<int>(leaves.size()), kNullProxy, 0});
+    tasks.push_back({0, static_cast<int>(leaves.size()), kNullProxy, 0, all});
 
     constexpr int kBins = 16;
-    std::vector<int> binOf(leaves.size());
-    std::vector<Item> rightLeaves;
-    rightLeaves.reserve(leaves.size());
 
     auto link = [&](int child, int parent, int slot) {
         nodes_[static_cast<std::size_t>(child)].parent = parent;
@@ -607,37 +620,34 @@ void DynamicTree::buildFrom(std::vector<int>& leafIds) {
 
         auto first = leaves.begin() + task.begin;
         auto last = leaves.begin() + task.end;
-
-        Vec2 cmin{std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
-        Vec2 cmax = -cmin;
-        for (auto it = first; it != last; ++it) {
-            const Vec2 c = it->center;
-            cmin = {std::fmin(cmin.x, c.x), std::fmin(cmin.y, c.y)};
-            cmax = {std::fmax(cmax.x, c.x), std::fmax(cmax.y, c.y)};
-        }
+        const Vec2 cmin = task.centers.lower;
+        const Vec2 cmax = task.centers.upper;
         const int axis = (cmax.x - cmin.x) >= (cmax.y - cmin.y) ? 0 : 1;
         const float lo = axis == 0 ? cmin.x : cmin.y;
         const float extent = axis == 0 ? cmax.x - cmin.x : cmax.y - cmin.y;
-        auto axisCenter = [&](const Item& item) {
+        auto axisCenter = [axis](const Item& item) {
             return axis == 0 ? item.center.x : item.center.y;
         };
 
         int mid = task.begin + n / 2;
+        Bounds leftCenters;
+        Bounds rightCenters;
         bool split = false;
         if (extent > 0.0f) {
+            // One pass: each leaf's bin, the bins' boxes, counts and centre bounds (the
+            // children's centre bounds are unions of bins, so no level reads the leaves twice).
             std::array<Aabb, kBins> binBox{};
             std::array<int, kBins> binCount{};
+            std::array<Bounds, kBins> binCenters{};
             const float scale = static_cast<float>(kBins) / extent;
-            for (int i = task.begin; i < task.end; ++i) {
-                const Item& item = leaves[static_cast<std::size_t>(i)];
-                int bin = static_cast<int>((axisCenter(item) - lo) * scale);
+            for (auto it = first; it != last; ++it) {
+                int bin = static_cast<int>((axisCenter(*it) - lo) * scale);
                 bin = std::clamp(bin, 0, kBins - 1);
-                binOf[static_cast<std::size_t>(i)] = bin;
-                binBox[static_cast<std::size_t>(bin)] =
-                    binCount[static_cast<std::size_t>(bin)] == 0
-                        ? item.box
-                        : merge(binBox[static_cast<std::size_t>(bin)], item.box);
-                ++binCount[static_cast<std::size_t>(bin)];
+                it->bin = bin;
+                const auto b = static_cast<std::size_t>(bin);
+                binBox[b] = binCount[b] == 0 ? it->box : merge(binBox[b], it->box);
+                binCenters[b].add(it->center);
+                ++binCount[b];
             }
             // Cost of splitting before bin k: perimeter * count on each side.
             std::array<float, kBins> rightCost{};
@@ -673,21 +683,19 @@ void DynamicTree::buildFrom(std::vector<int>& leafIds) {
                 }
             }
             if (bestSplit > 0) {
-                // Stable partition keeps the order (and so the result) deterministic.
-                int write = task.begin;
-                rightLeaves.clear();
-                for (int i = task.begin; i < task.end; ++i) {
-                    const Item& item = leaves[static_cast<std::size_t>(i)];
-                    if (binOf[static_cast<std::size_t>(i)] < bestSplit) {
-                        leaves[static_cast<std::size_t>(write++)] = item;
-                    } else {
-                        rightLeaves.push_back(item);
-                    }
-                }
-                std::copy(rightLeaves.begin(), rightLeaves.end(), leaves.begin() + write);
+                // In place; deterministic (the same input gives the same order).
+                auto cut = std::partition(first, last,
+                                          [bestSplit](const Item& item) { return item.bin < bestSplit; });
+                const int write = static_cast<int>(cut - leaves.begin());
                 if (write > task.begin && write < task.end) {
                     mid = write;
                     split = true;
+                    for (int k = 0; k < kBins; ++k) {
+                        if (binCount[static_cast<std::size_t>(k)] > 0) {
+                            (k < bestSplit ? leftCenters : rightCenters)
+                                .add(binCenters[static_cast<std::size_t>(k)]);
+                        }
+                    }
                 }
             }
         }
@@ -698,9 +706,14 @@ void DynamicTree::buildFrom(std::vector<int>& leafIds) {
                 const float cy = axisCenter(y);
                 return cx < cy || (cx == cy && x.id < y.id);
             });
+            leftCenters = Bounds{};
+            rightCenters = Bounds{};
+            for (int i = task.begin; i < task.end; ++i) {
+                (i < mid ? leftCenters : rightCenters).add(leaves[static_cast<std::size_t>(i)].center);
+            }
         }
-        tasks.push_back({mid, task.end, node, 2});
-        tasks.push_back({task.begin, mid, node, 1});
+        tasks.push_back({mid, task.end, node, 2, rightCenters});
+        tasks.push_back({task.begin, mid, node, 1, leftCenters});
     }
 
     // Children were created after their parents: refit in reverse creation order.
