@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <charconv>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -171,7 +173,7 @@ void DynamicTree::insertDeferred() {
         return;
     }
     if (proxyCount_ >= 3 && 4 * deferredCount_ >= proxyCount_) {
-        rebuild();
+        rebuildAll(true);
         return;
     }
     // insertLeaf() may reallocate nodes_, never deferred_.
@@ -502,7 +504,9 @@ void DynamicTree::removeLeaf(int leaf) {
     refitAncestors(grandParent);
 }
 
-void DynamicTree::rebuild() {
+void DynamicTree::rebuild() { rebuildAll(false); }
+
+void DynamicTree::rebuildAll(bool morton) {
     if (proxyCount_ < 3) {
         // Nothing to balance: only deferred leaves may need inserting.
         if (deferredCount_ > 0) {
@@ -547,7 +551,11 @@ void DynamicTree::rebuild() {
     root_ = kNullProxy;
     // Sorting by id makes the result independent of the old tree's shape.
     std::sort(leaves.begin(), leaves.end());
-    buildFrom(leaves);
+    if (morton) {
+        buildMorton(leaves);
+    } else {
+        buildFrom(leaves);
+    }
 }
 
 void DynamicTree::buildFrom(std::vector<int>& leafIds) {
@@ -557,7 +565,6 @@ void DynamicTree::buildFrom(std::vector<int>& leafIds) {
         Aabb box;
         Vec2 center;
         int id;
-        int bin;
     };
     struct Bounds {
         Vec2 lower{std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
@@ -576,7 +583,7 @@ void DynamicTree::buildFrom(std::vector<int>& leafIds) {
     Bounds all;
     for (const int id : leafIds) {
         const Aabb& box = nodes_[static_cast<std::size_t>(id)].aabb;
-        leaves.push_back({box, centerOf(box), id, 0});
+        leaves.push_back({box, centerOf(box), id});
         all.add(leaves.back().center);
     }
 
@@ -593,6 +600,7 @@ void DynamicTree::buildFrom(std::vector<int>& leafIds) {
     tasks.push_back({0, static_cast<int>(leaves.size()), kNullProxy, 0, all});
 
     constexpr int kBins = 16;
+    constexpr int kSamples = 1024;
 
     auto link = [&](int child, int parent, int slot) {
         nodes_[static_cast<std::size_t>(child)].parent = parent;
@@ -634,19 +642,20 @@ void DynamicTree::buildFrom(std::vector<int>& leafIds) {
         Bounds rightCenters;
         bool split = false;
         if (extent > 0.0f) {
-            // One pass: each leaf's bin, the bins' boxes, counts and centre bounds (the
-            // children's centre bounds are unions of bins, so no level reads the leaves twice).
+            // The bins' boxes and counts from at most kSamples leaves spread evenly over the
+            // range (all of them for small ranges): a big build would otherwise spend most of
+            // its time binning every leaf at every level.
             std::array<Aabb, kBins> binBox{};
             std::array<int, kBins> binCount{};
-            std::array<Bounds, kBins> binCenters{};
             const float scale = static_cast<float>(kBins) / extent;
-            for (auto it = first; it != last; ++it) {
-                int bin = static_cast<int>((axisCenter(*it) - lo) * scale);
-                bin = std::clamp(bin, 0, kBins - 1);
-                it->bin = bin;
-                const auto b = static_cast<std::size_t>(bin);
-                binBox[b] = binCount[b] == 0 ? it->box : merge(binBox[b], it->box);
-                binCenters[b].add(it->center);
+            auto binOf = [&](const Item& item) {
+                return std::clamp(static_cast<int>((axisCenter(item) - lo) * scale), 0, kBins - 1);
+            };
+            const int stride = n <= kSamples ? 1 : n / kSamples;
+            for (int i = task.begin; i < task.end; i += stride) {
+                const Item& item = leaves[static_cast<std::size_t>(i)];
+                const auto b = static_cast<std::size_t>(binOf(item));
+                binBox[b] = binCount[b] == 0 ? item.box : merge(binBox[b], item.box);
                 ++binCount[b];
             }
             // Cost of splitting before bin k: perimeter * count on each side.
@@ -683,19 +692,32 @@ void DynamicTree::buildFrom(std::vector<int>& leafIds) {
                 }
             }
             if (bestSplit > 0) {
-                // In place; deterministic (the same input gives the same order).
-                auto cut = std::partition(first, last,
-                                          [bestSplit](const Item& item) { return item.bin < bestSplit; });
-                const int write = static_cast<int>(cut - leaves.begin());
-                if (write > task.begin && write < task.end) {
-                    mid = write;
-                    split = true;
-                    for (int k = 0; k < kBins; ++k) {
-                        if (binCount[static_cast<std::size_t>(k)] > 0) {
-                            (k < bestSplit ? leftCenters : rightCenters)
-                                .add(binCenters[static_cast<std::size_t>(k)]);
-                        }
+                // In-place two-way partition that looks at each leaf once and gathers both
+                // sides' centre bounds on the way (deterministic: same input, same order).
+                auto goesLeft = [&](const Item& item) { return binOf(item) < bestSplit; };
+                int i = task.begin;
+                int j = task.end - 1;
+                for (;;) {
+                    while (i <= j && goesLeft(leaves[static_cast<std::size_t>(i)])) {
+                        leftCenters.add(leaves[static_cast<std::size_t>(i)].center);
+                        ++i;
                     }
+                    while (i <= j && !goesLeft(leaves[static_cast<std::size_t>(j)])) {
+                        rightCenters.add(leaves[static_cast<std::size_t>(j)].center);
+                        --j;
+                    }
+                    if (i > j) {
+                        break;
+                    }
+                    std::swap(leaves[static_cast<std::size_t>(i)], leaves[static_cast<std::size_t>(j)]);
+                    leftCenters.add(leaves[static_cast<std::size_t>(i)].center);
+                    rightCenters.add(leaves[static_cast<std::size_t>(j)].center);
+                    ++i;
+                    --j;
+                }
+                if (i > task.begin && i < task.end) {
+                    mid = i;
+                    split = true;
                 }
             }
         }
@@ -716,6 +738,113 @@ void DynamicTree::buildFrom(std::vector<int>& leafIds) {
         tasks.push_back({task.begin, mid, node, 1, leftCenters});
     }
 
+    // Children were created after their parents: refit in reverse creation order.
+    for (auto it = internals.rbegin(); it != internals.rend(); ++it) {
+        refit(*it);
+    }
+}
+
+namespace {
+
+// Spreads the low 16 bits of v to the even bits of the result.
+std::uint32_t spreadBits(std::uint32_t v) {
+    v &= 0xFFFFu;
+    v = (v | (v << 8)) & 0x00FF00FFu;
+    v = (v | (v << 4)) & 0x0F0F0F0Fu;
+    v = (v | (v << 2)) & 0x33333333u;
+    v = (v | (v << 1)) & 0x55555555u;
+    return v;
+}
+
+} // namespace
+
+void DynamicTree::buildMorton(const std::vector<int>& leafIds) {
+    const std::size_t n = leafIds.size();
+    // Centre bounds, then each centre on a 65536 x 65536 grid of square cells over them.
+    Vec2 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
+    Vec2 hi = -lo;
+    for (const int id : leafIds) {
+        const Vec2 c = centerOf(nodes_[static_cast<std::size_t>(id)].aabb);
+        lo = {minOf(lo.x, c.x), minOf(lo.y, c.y)};
+        hi = {maxOf(hi.x, c.x), maxOf(hi.y, c.y)};
+    }
+    const float extent = maxOf(hi.x - lo.x, hi.y - lo.y);
+    const float scale = extent > 0.0f ? 65535.0f / extent : 0.0f;
+    struct Key {
+        std::uint32_t code;
+        int id;
+    };
+    std::vector<Key> keys(n);
+    std::vector<Key> scratch(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const int id = leafIds[i];
+        const Vec2 c = centerOf(nodes_[static_cast<std::size_t>(id)].aabb);
+        // Clamped: (c - lo) * scale may round a hair above 65535.
+        const auto qx = static_cast<std::uint32_t>(minOf((c.x - lo.x) * scale, 65535.0f));
+        const auto qy = static_cast<std::uint32_t>(minOf((c.y - lo.y) * scale, 65535.0f));
+        keys[i] = {spreadBits(qx) | (spreadBits(qy) << 1), id};
+    }
+    // Stable LSD radix sort by code, 8 bits a pass: equal codes keep id order (deterministic).
+    for (int shift = 0; shift < 32; shift += 8) {
+        std::array<std::size_t, 257> start{};
+        for (const Key& k : keys) {
+            ++start[((k.code >> shift) & 0xFFu) + 1];
+        }
+        for (std::size_t b = 1; b < start.size(); ++b) {
+            start[b] += start[b - 1];
+        }
+        for (const Key& k : keys) {
+            scratch[start[(k.code >> shift) & 0xFFu]++] = k;
+        }
+        keys.swap(scratch);
+    }
+
+    // Top-down: a range splits where the highest bit in which its first and last codes differ
+    // flips (the cells of a quadtree level), or in the middle when all codes are equal.
+    struct Task {
+        int begin;
+        int end;
+        int parent;
+        int slot; // 1 or 2: which child of parent
+    };
+    std::vector<Task> tasks;
+    std::vector<int> internals; // in creation order: parents before children
+    internals.reserve(n);
+    tasks.push_back({0, static_cast<int>(n), kNullProxy, 0});
+    auto link = [&](int child, int parent, int slot) {
+        nodes_[static_cast<std::size_t>(child)].parent = parent;
+        if (parent == kNullProxy) {
+            root_ = child;
+        } else if (slot == 1) {
+            nodes_[static_cast<std::size_t>(parent)].child1 = child;
+        } else {
+            nodes_[static_cast<std::size_t>(parent)].child2 = child;
+        }
+    };
+    while (!tasks.empty()) {
+        const Task task = tasks.back();
+        tasks.pop_back();
+        if (task.end - task.begin == 1) {
+            link(keys[static_cast<std::size_t>(task.begin)].id, task.parent, task.slot);
+            continue;
+        }
+        const int node = allocateNode();
+        internals.push_back(node);
+        link(node, task.parent, task.slot);
+        const std::uint32_t first = keys[static_cast<std::size_t>(task.begin)].code;
+        const std::uint32_t last = keys[static_cast<std::size_t>(task.end - 1)].code;
+        int mid = task.begin + (task.end - task.begin) / 2;
+        if (first != last) {
+            const int bit = 31 - std::countl_zero(first ^ last);
+            // First key in the range with `bit` set: the codes share every higher bit.
+            auto it = std::partition_point(
+                keys.begin() + task.begin, keys.begin() + task.end,
+                [bit](const Key& k) { return ((k.code >> bit) & 1u) == 0; });
+            mid = static_cast<int>(it - keys.begin());
+        }
+        tasks.push_back({mid, task.end, node, 2});
+        tasks.push_back({task.begin, mid, node, 1});
+    }
     // Children were created after their parents: refit in reverse creation order.
     for (auto it = internals.rbegin(); it != internals.rend(); ++it) {
         refit(*it);
