@@ -75,7 +75,7 @@ struct World::Impl {
     // Written into every id handed out and checked on every use (WorldDef::tag); never 0.
     std::uint16_t tag = 1;
 
-    // Segmented (see SlotArray): growth copies nothing.
+    // Grown without copies (see SlotArray).
     detail::SlotArray<detail::Body> bodies;
     detail::SlotArray<detail::Shape> shapes;
     detail::IdPool bodyIds;
