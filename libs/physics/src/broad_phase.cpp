@@ -50,7 +50,7 @@ int BroadPhase::createProxy(const Aabb& aabb, BodyType type, std::uint64_t categ
     // Reserve first so that nothing can throw after the tree changed.
     reserveOneMore(moveBuffer_);
     DynamicTree& tree = trees_[static_cast<std::size_t>(typeIndex)];
-    const int proxyId = tree.createProxy(fatten(aabb, type), categoryBits, userData);
+    const int proxyId = tree.createProxyDeferred(fatten(aabb, type), categoryBits, userData);
     const int key = makeProxyKey(proxyId, type);
     if (static_cast<std::size_t>(key) >= infos_.size()) {
         try {

@@ -46,6 +46,8 @@ class BroadPhase {
 public:
     /// Adds a proxy for the tight box `aabb` and buffers it as moved, so the next
     /// updatePairs() finds its pairs. Returns its proxy key. Throws core::Error on a bad box.
+    /// The proxy enters its tree deferred (DynamicTree::createProxyDeferred()): the trees take
+    /// their new proxies in bulk at the next updatePairs() or tree() call, whichever is first.
     int createProxy(const Aabb& aabb, BodyType type, std::uint64_t categoryBits,
                     std::uint64_t userData);
     /// Removes the proxy and every pair it is part of. Cheap when it has no pairs left (the
@@ -64,8 +66,15 @@ public:
     [[nodiscard]] std::uint64_t userData(int proxyKey) const {
         return trees_[treeIndex(proxyKey)].userData(proxyIdOf(proxyKey));
     }
+    /// The tree of one body type, with every proxy created so far inserted (queries see new
+    /// proxies at once). Inserting is a change behind a const call: fine under the World's rule
+    /// that one thread uses it at a time.
     [[nodiscard]] const DynamicTree& tree(BodyType type) const {
-        return trees_[static_cast<std::size_t>(type)];
+        DynamicTree& t = trees_[static_cast<std::size_t>(type)];
+        if (t.deferredCount() > 0) [[unlikely]] {
+            t.insertDeferred();
+        }
+        return t;
     }
     [[nodiscard]] int proxyCount() const;
 
@@ -123,7 +132,8 @@ private:
     [[noreturn]] static void throwBadKey(int proxyKey, const char* function);
     void erasePair(std::uint64_t key);
 
-    std::array<DynamicTree, kBodyTypeCount> trees_;
+    // Mutable: tree() inserts deferred proxies on demand.
+    mutable std::array<DynamicTree, kBodyTypeCount> trees_;
     std::vector<ProxyInfo> infos_; // indexed by proxy key
     std::vector<int> moveBuffer_;
     std::vector<ProxyPair> newPairs_;
@@ -136,6 +146,9 @@ template <class ShouldPair>
 void BroadPhase::updatePairs(ShouldPair&& shouldPair) {
     newPairs_.clear();
     queryCount_ = 0;
+    for (DynamicTree& t : trees_) {
+        t.insertDeferred(); // new proxies in bulk
+    }
     for (const int key : moveBuffer_) {
         if (key == kNullProxyKey) {
             continue; // destroyed after it moved

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <charconv>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -127,9 +129,71 @@ int DynamicTree::createProxy(const Aabb& aabb, std::uint64_t categoryBits, std::
     return index;
 }
 
+int DynamicTree::createProxyDeferred(const Aabb& aabb, std::uint64_t categoryBits,
+                                     std::uint64_t userData) {
+    checkBox(aabb, "createProxyDeferred");
+    if (deferred_.size() == deferred_.capacity()) {
+        if (deferred_.size() > 2 * static_cast<std::size_t>(deferredCount_) + 64) {
+            compactDeferred(); // many deferred leaves were destroyed again
+        }
+        // Reserve first so that nothing can throw after the node is taken.
+        deferred_.reserve(std::max<std::size_t>(64, 2 * deferred_.size()));
+    }
+    const int index = allocateNode();
+    Node& node = nodes_[static_cast<std::size_t>(index)];
+    node.aabb = aabb;
+    node.categoryBits = categoryBits;
+    node.userData = userData;
+    node.parent = kDeferredParent;
+    deferred_.push_back(index);
+    ++deferredCount_;
+    ++proxyCount_;
+    return index;
+}
+
+void DynamicTree::compactDeferred() {
+    // Keep the first entry of every leaf still deferred; mark kept ones (parent -3) meanwhile.
+    constexpr int kSeen = -3;
+    std::size_t write = 0;
+    for (const int index : deferred_) {
+        if (isDeferred(index)) {
+            nodes_[static_cast<std::size_t>(index)].parent = kSeen;
+            deferred_[write++] = index;
+        }
+    }
+    deferred_.resize(write);
+    for (const int index : deferred_) {
+        nodes_[static_cast<std::size_t>(index)].parent = kDeferredParent;
+    }
+}
+
+void DynamicTree::insertDeferred() {
+    if (deferredCount_ == 0) {
+        deferred_.clear();
+        return;
+    }
+    if (proxyCount_ >= 3 && 4 * deferredCount_ >= proxyCount_) {
+        rebuildAll(true);
+        return;
+    }
+    // insertLeaf() may reallocate nodes_, never deferred_.
+    for (const int index : deferred_) {
+        if (isDeferred(index)) {
+            nodes_[static_cast<std::size_t>(index)].parent = kNullProxy;
+            insertLeaf(index);
+        }
+    }
+    deferred_.clear();
+    deferredCount_ = 0;
+}
+
 void DynamicTree::destroyProxy(int proxyId) {
     checkProxy(proxyId, "destroyProxy");
-    removeLeaf(proxyId);
+    if (isDeferred(proxyId)) {
+        --deferredCount_; // its entry in deferred_ goes stale
+    } else {
+        removeLeaf(proxyId);
+    }
     freeNode(proxyId);
     --proxyCount_;
 }
@@ -137,6 +201,10 @@ void DynamicTree::destroyProxy(int proxyId) {
 void DynamicTree::moveProxy(int proxyId, const Aabb& aabb) {
     checkProxy(proxyId, "moveProxy");
     checkBox(aabb, "moveProxy");
+    if (isDeferred(proxyId)) {
+        nodes_[static_cast<std::size_t>(proxyId)].aabb = aabb;
+        return;
+    }
     removeLeaf(proxyId);
     nodes_[static_cast<std::size_t>(proxyId)].aabb = aabb;
     insertLeaf(proxyId);
@@ -146,6 +214,9 @@ void DynamicTree::enlargeProxy(int proxyId, const Aabb& aabb) {
     checkProxy(proxyId, "enlargeProxy");
     checkBox(aabb, "enlargeProxy");
     nodes_[static_cast<std::size_t>(proxyId)].aabb = aabb;
+    if (isDeferred(proxyId)) {
+        return;
+    }
     int index = nodes_[static_cast<std::size_t>(proxyId)].parent;
     while (index != kNullProxy) {
         Node& node = nodes_[static_cast<std::size_t>(index)];
@@ -191,6 +262,8 @@ void DynamicTree::clear() {
     freeList_ = 0;
     root_ = kNullProxy;
     proxyCount_ = 0;
+    deferred_.clear();
+    deferredCount_ = 0;
 }
 
 // Branch-and-bound descent for the sibling that minimises the surface-area cost of inserting
@@ -431,14 +504,27 @@ void DynamicTree::removeLeaf(int leaf) {
     refitAncestors(grandParent);
 }
 
-void DynamicTree::rebuild() {
+void DynamicTree::rebuild() { rebuildAll(false); }
+
+void DynamicTree::rebuildAll(bool morton) {
     if (proxyCount_ < 3) {
+        // Nothing to balance: only deferred leaves may need inserting.
+        if (deferredCount_ > 0) {
+            for (const int index : deferred_) {
+                if (isDeferred(index)) {
+                    nodes_[static_cast<std::size_t>(index)].parent = kNullProxy;
+                    insertLeaf(index);
+                }
+            }
+        }
+        deferred_.clear();
+        deferredCount_ = 0;
         return;
     }
-    // Collect the leaves and free every internal node.
+    // Collect the leaves (deferred ones too) and free every internal node.
     std::vector<int> leaves;
     leaves.reserve(static_cast<std::size_t>(proxyCount_));
-    {
+    if (root_ != kNullProxy) {
         detail::TreeStack<128> stack;
         stack.push(root_);
         while (!stack.empty()) {
@@ -453,24 +539,68 @@ void DynamicTree::rebuild() {
             }
         }
     }
+    for (const int index : deferred_) {
+        if (isDeferred(index)) {
+            // No longer deferred: a stale second entry for the same id is skipped.
+            nodes_[static_cast<std::size_t>(index)].parent = kNullProxy;
+            leaves.push_back(index);
+        }
+    }
+    deferred_.clear();
+    deferredCount_ = 0;
+    root_ = kNullProxy;
     // Sorting by id makes the result independent of the old tree's shape.
     std::sort(leaves.begin(), leaves.end());
+    if (morton) {
+        buildMorton(leaves);
+    } else {
+        buildFrom(leaves);
+    }
+}
+
+void DynamicTree::buildFrom(std::vector<int>& leafIds) {
+    // The leaves' boxes and centres, copied once: every level of the build reads them
+    // sequentially instead of gathering nodes.
+    struct Item {
+        Aabb box;
+        Vec2 center;
+        int id;
+    };
+    struct Bounds {
+        Vec2 lower{std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
+        Vec2 upper{-std::numeric_limits<float>::max(), -std::numeric_limits<float>::max()};
+        void add(Vec2 p) {
+            lower = {minOf(lower.x, p.x), minOf(lower.y, p.y)};
+            upper = {maxOf(upper.x, p.x), maxOf(upper.y, p.y)};
+        }
+        void add(const Bounds& b) {
+            lower = {minOf(lower.x, b.lower.x), minOf(lower.y, b.lower.y)};
+            upper = {maxOf(upper.x, b.upper.x), maxOf(upper.y, b.upper.y)};
+        }
+    };
+    std::vector<Item> leaves;
+    leaves.reserve(leafIds.size());
+    Bounds all;
+    for (const int id : leafIds) {
+        const Aabb& box = nodes_[static_cast<std::size_t>(id)].aabb;
+        leaves.push_back({box, centerOf(box), id});
+        all.add(leaves.back().center);
+    }
 
     struct Task {
         int begin;
         int end;
         int parent;
-        int slot; // 1 or 2: which child of parent
+        int slot;       // 1 or 2: which child of parent
+        Bounds centers; // of the leaves in [begin, end)
     };
     std::vector<Task> tasks;
     std::vector<int> internals; // in creation order: parents before children
     internals.reserve(leaves.size());
-    tasks.push_back({0, static_cast<int>(leaves.size()), kNullProxy, 0});
+    tasks.push_back({0, static_cast<int>(leaves.size()), kNullProxy, 0, all});
 
     constexpr int kBins = 16;
-    std::vector<int> binOf(leaves.size());
-    std::vector<int> rightLeaves;
-    rightLeaves.reserve(leaves.size());
+    constexpr int kSamples = 1024;
 
     auto link = [&](int child, int parent, int slot) {
         nodes_[static_cast<std::size_t>(child)].parent = parent;
@@ -488,49 +618,45 @@ void DynamicTree::rebuild() {
         tasks.pop_back();
         const int n = task.end - task.begin;
         if (n == 1) {
-            link(leaves[static_cast<std::size_t>(task.begin)], task.parent, task.slot);
+            link(leaves[static_cast<std::size_t>(task.begin)].id, task.parent, task.slot);
             continue;
         }
-        // No growth: the internal nodes freed above are reused.
+        // Reuses freed internal nodes; grows the node array only for new leaves' parents.
         const int node = allocateNode();
         internals.push_back(node);
         link(node, task.parent, task.slot);
 
         auto first = leaves.begin() + task.begin;
         auto last = leaves.begin() + task.end;
-
-        Vec2 cmin{std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
-        Vec2 cmax = -cmin;
-        for (auto it = first; it != last; ++it) {
-            const Vec2 c = centerOf(nodes_[static_cast<std::size_t>(*it)].aabb);
-            cmin = {std::fmin(cmin.x, c.x), std::fmin(cmin.y, c.y)};
-            cmax = {std::fmax(cmax.x, c.x), std::fmax(cmax.y, c.y)};
-        }
+        const Vec2 cmin = task.centers.lower;
+        const Vec2 cmax = task.centers.upper;
         const int axis = (cmax.x - cmin.x) >= (cmax.y - cmin.y) ? 0 : 1;
         const float lo = axis == 0 ? cmin.x : cmin.y;
         const float extent = axis == 0 ? cmax.x - cmin.x : cmax.y - cmin.y;
-        auto axisCenter = [&](int leaf) {
-            const Vec2 c = centerOf(nodes_[static_cast<std::size_t>(leaf)].aabb);
-            return axis == 0 ? c.x : c.y;
+        auto axisCenter = [axis](const Item& item) {
+            return axis == 0 ? item.center.x : item.center.y;
         };
 
         int mid = task.begin + n / 2;
+        Bounds leftCenters;
+        Bounds rightCenters;
         bool split = false;
         if (extent > 0.0f) {
+            // The bins' boxes and counts from at most kSamples leaves spread evenly over the
+            // range (all of them for small ranges): a big build would otherwise spend most of
+            // its time binning every leaf at every level.
             std::array<Aabb, kBins> binBox{};
             std::array<int, kBins> binCount{};
             const float scale = static_cast<float>(kBins) / extent;
-            for (int i = task.begin; i < task.end; ++i) {
-                const int leaf = leaves[static_cast<std::size_t>(i)];
-                int bin = static_cast<int>((axisCenter(leaf) - lo) * scale);
-                bin = std::clamp(bin, 0, kBins - 1);
-                binOf[static_cast<std::size_t>(i)] = bin;
-                const Aabb& box = nodes_[static_cast<std::size_t>(leaf)].aabb;
-                binBox[static_cast<std::size_t>(bin)] =
-                    binCount[static_cast<std::size_t>(bin)] == 0
-                        ? box
-                        : merge(binBox[static_cast<std::size_t>(bin)], box);
-                ++binCount[static_cast<std::size_t>(bin)];
+            auto binOf = [&](const Item& item) {
+                return std::clamp(static_cast<int>((axisCenter(item) - lo) * scale), 0, kBins - 1);
+            };
+            const int stride = n <= kSamples ? 1 : n / kSamples;
+            for (int i = task.begin; i < task.end; i += stride) {
+                const Item& item = leaves[static_cast<std::size_t>(i)];
+                const auto b = static_cast<std::size_t>(binOf(item));
+                binBox[b] = binCount[b] == 0 ? item.box : merge(binBox[b], item.box);
+                ++binCount[b];
             }
             // Cost of splitting before bin k: perimeter * count on each side.
             std::array<float, kBins> rightCost{};
@@ -566,36 +692,159 @@ void DynamicTree::rebuild() {
                 }
             }
             if (bestSplit > 0) {
-                // Stable partition keeps the order (and so the result) deterministic.
-                int write = task.begin;
-                rightLeaves.clear();
-                for (int i = task.begin; i < task.end; ++i) {
-                    const int leaf = leaves[static_cast<std::size_t>(i)];
-                    if (binOf[static_cast<std::size_t>(i)] < bestSplit) {
-                        leaves[static_cast<std::size_t>(write++)] = leaf;
-                    } else {
-                        rightLeaves.push_back(leaf);
+                // In-place two-way partition that looks at each leaf once and gathers both
+                // sides' centre bounds on the way (deterministic: same input, same order).
+                auto goesLeft = [&](const Item& item) { return binOf(item) < bestSplit; };
+                int i = task.begin;
+                int j = task.end - 1;
+                for (;;) {
+                    while (i <= j && goesLeft(leaves[static_cast<std::size_t>(i)])) {
+                        leftCenters.add(leaves[static_cast<std::size_t>(i)].center);
+                        ++i;
                     }
+                    while (i <= j && !goesLeft(leaves[static_cast<std::size_t>(j)])) {
+                        rightCenters.add(leaves[static_cast<std::size_t>(j)].center);
+                        --j;
+                    }
+                    if (i > j) {
+                        break;
+                    }
+                    std::swap(leaves[static_cast<std::size_t>(i)], leaves[static_cast<std::size_t>(j)]);
+                    leftCenters.add(leaves[static_cast<std::size_t>(i)].center);
+                    rightCenters.add(leaves[static_cast<std::size_t>(j)].center);
+                    ++i;
+                    --j;
                 }
-                std::copy(rightLeaves.begin(), rightLeaves.end(), leaves.begin() + write);
-                if (write > task.begin && write < task.end) {
-                    mid = write;
+                if (i > task.begin && i < task.end) {
+                    mid = i;
                     split = true;
                 }
             }
         }
         if (!split) {
             // Coincident centres (or an unhelpful binning): median split by position, ties by id.
-            std::nth_element(first, leaves.begin() + mid, last, [&](int x, int y) {
+            std::nth_element(first, leaves.begin() + mid, last, [&](const Item& x, const Item& y) {
                 const float cx = axisCenter(x);
                 const float cy = axisCenter(y);
-                return cx < cy || (cx == cy && x < y);
+                return cx < cy || (cx == cy && x.id < y.id);
             });
+            leftCenters = Bounds{};
+            rightCenters = Bounds{};
+            for (int i = task.begin; i < task.end; ++i) {
+                (i < mid ? leftCenters : rightCenters).add(leaves[static_cast<std::size_t>(i)].center);
+            }
+        }
+        tasks.push_back({mid, task.end, node, 2, rightCenters});
+        tasks.push_back({task.begin, mid, node, 1, leftCenters});
+    }
+
+    // Children were created after their parents: refit in reverse creation order.
+    for (auto it = internals.rbegin(); it != internals.rend(); ++it) {
+        refit(*it);
+    }
+}
+
+namespace {
+
+// Spreads the low 16 bits of v to the even bits of the result.
+std::uint32_t spreadBits(std::uint32_t v) {
+    v &= 0xFFFFu;
+    v = (v | (v << 8)) & 0x00FF00FFu;
+    v = (v | (v << 4)) & 0x0F0F0F0Fu;
+    v = (v | (v << 2)) & 0x33333333u;
+    v = (v | (v << 1)) & 0x55555555u;
+    return v;
+}
+
+} // namespace
+
+void DynamicTree::buildMorton(const std::vector<int>& leafIds) {
+    const std::size_t n = leafIds.size();
+    // Centre bounds, then each centre on a 65536 x 65536 grid of square cells over them.
+    Vec2 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
+    Vec2 hi = -lo;
+    for (const int id : leafIds) {
+        const Vec2 c = centerOf(nodes_[static_cast<std::size_t>(id)].aabb);
+        lo = {minOf(lo.x, c.x), minOf(lo.y, c.y)};
+        hi = {maxOf(hi.x, c.x), maxOf(hi.y, c.y)};
+    }
+    const float extent = maxOf(hi.x - lo.x, hi.y - lo.y);
+    const float scale = extent > 0.0f ? 65535.0f / extent : 0.0f;
+    struct Key {
+        std::uint32_t code;
+        int id;
+    };
+    std::vector<Key> keys(n);
+    std::vector<Key> scratch(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const int id = leafIds[i];
+        const Vec2 c = centerOf(nodes_[static_cast<std::size_t>(id)].aabb);
+        // Clamped: (c - lo) * scale may round a hair above 65535.
+        const auto qx = static_cast<std::uint32_t>(minOf((c.x - lo.x) * scale, 65535.0f));
+        const auto qy = static_cast<std::uint32_t>(minOf((c.y - lo.y) * scale, 65535.0f));
+        keys[i] = {spreadBits(qx) | (spreadBits(qy) << 1), id};
+    }
+    // Stable LSD radix sort by code, 8 bits a pass: equal codes keep id order (deterministic).
+    for (int shift = 0; shift < 32; shift += 8) {
+        std::array<std::size_t, 257> start{};
+        for (const Key& k : keys) {
+            ++start[((k.code >> shift) & 0xFFu) + 1];
+        }
+        for (std::size_t b = 1; b < start.size(); ++b) {
+            start[b] += start[b - 1];
+        }
+        for (const Key& k : keys) {
+            scratch[start[(k.code >> shift) & 0xFFu]++] = k;
+        }
+        keys.swap(scratch);
+    }
+
+    // Top-down: a range splits where the highest bit in which its first and last codes differ
+    // flips (the cells of a quadtree level), or in the middle when all codes are equal.
+    struct Task {
+        int begin;
+        int end;
+        int parent;
+        int slot; // 1 or 2: which child of parent
+    };
+    std::vector<Task> tasks;
+    std::vector<int> internals; // in creation order: parents before children
+    internals.reserve(n);
+    tasks.push_back({0, static_cast<int>(n), kNullProxy, 0});
+    auto link = [&](int child, int parent, int slot) {
+        nodes_[static_cast<std::size_t>(child)].parent = parent;
+        if (parent == kNullProxy) {
+            root_ = child;
+        } else if (slot == 1) {
+            nodes_[static_cast<std::size_t>(parent)].child1 = child;
+        } else {
+            nodes_[static_cast<std::size_t>(parent)].child2 = child;
+        }
+    };
+    while (!tasks.empty()) {
+        const Task task = tasks.back();
+        tasks.pop_back();
+        if (task.end - task.begin == 1) {
+            link(keys[static_cast<std::size_t>(task.begin)].id, task.parent, task.slot);
+            continue;
+        }
+        const int node = allocateNode();
+        internals.push_back(node);
+        link(node, task.parent, task.slot);
+        const std::uint32_t first = keys[static_cast<std::size_t>(task.begin)].code;
+        const std::uint32_t last = keys[static_cast<std::size_t>(task.end - 1)].code;
+        int mid = task.begin + (task.end - task.begin) / 2;
+        if (first != last) {
+            const int bit = 31 - std::countl_zero(first ^ last);
+            // First key in the range with `bit` set: the codes share every higher bit.
+            auto it = std::partition_point(
+                keys.begin() + task.begin, keys.begin() + task.end,
+                [bit](const Key& k) { return ((k.code >> bit) & 1u) == 0; });
+            mid = static_cast<int>(it - keys.begin());
         }
         tasks.push_back({mid, task.end, node, 2});
         tasks.push_back({task.begin, mid, node, 1});
     }
-
     // Children were created after their parents: refit in reverse creation order.
     for (auto it = internals.rbegin(); it != internals.rend(); ++it) {
         refit(*it);
@@ -661,7 +910,14 @@ bool DynamicTree::validate() const {
             return false;
         }
     }
-    return leaves == proxyCount_ && reachable + freeCount == static_cast<int>(nodes_.size());
+    int deferred = 0;
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        if (isDeferred(static_cast<int>(i))) {
+            ++deferred;
+        }
+    }
+    return deferred == deferredCount_ && leaves + deferred == proxyCount_ &&
+           reachable + freeCount + deferred == static_cast<int>(nodes_.size());
 }
 
 } // namespace e2d::physics

@@ -360,7 +360,8 @@ void World::setSleepEnabled(BodyId id, bool enabled) {
 
 int World::awakeBodyCount() const {
     int count = 0;
-    for (const detail::Body& b : impl_->bodies) {
+    for (std::size_t i = 0; i < impl_->bodies.size(); ++i) {
+        const detail::Body& b = impl_->bodies[i];
         count += b.alive && b.enabled && b.type != BodyType::Static && b.motion.awake ? 1 : 0;
     }
     return count;

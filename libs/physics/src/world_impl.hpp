@@ -6,6 +6,7 @@
 #include "broad_phase.hpp"
 #include "id_pool.hpp"
 #include "joint_solver.hpp"
+#include "slot_array.hpp"
 #include "simulation.hpp"
 #include "world_hooks.hpp"
 
@@ -74,8 +75,9 @@ struct World::Impl {
     // Written into every id handed out and checked on every use (WorldDef::tag); never 0.
     std::uint16_t tag = 1;
 
-    std::vector<detail::Body> bodies;
-    std::vector<detail::Shape> shapes;
+    // Grown without copies (see SlotArray).
+    detail::SlotArray<detail::Body> bodies;
+    detail::SlotArray<detail::Shape> shapes;
     detail::IdPool bodyIds;
     detail::IdPool shapeIds;
     detail::BroadPhase broadPhase;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "broad_phase.hpp"
+#include "slot_array.hpp"
 
 #include <e2d/core/error.hpp>
 
@@ -344,4 +345,42 @@ TEST(BroadPhase, RejectsBadInput) {
     EXPECT_THROW(bp.moveProxy(key, {{nan, 0}, {1, 1}}), e2d::core::Error);
     EXPECT_EQ(bp.moveCount(), 1);
     EXPECT_TRUE(bp.tree(BodyType::Dynamic).validate());
+}
+
+// The World's slot storage: contents survive growth on the heap, the move to a mapping past
+// 256 KiB and the mapping's growth; new slots are value-initialised; moving hands the block over.
+TEST(SlotArray, KeepsItsContentsThroughEveryKindOfGrowth) {
+    struct Slot {
+        int value = 7;
+        double weight = 0.5;
+        char pad[100] = {};
+    };
+    e2d::physics::detail::SlotArray<Slot> slots;
+    EXPECT_TRUE(slots.empty());
+    constexpr std::size_t kCount = 20000; // 2.2 MB: heap, then mapped, then remapped
+    for (std::size_t i = 0; i < kCount; ++i) {
+        Slot& s = slots.emplace_back();
+        ASSERT_EQ(s.value, 7) << i;
+        ASSERT_EQ(s.weight, 0.5) << i;
+        s.value = static_cast<int>(i);
+        s.pad[99] = static_cast<char>(i & 0x7F);
+        ASSERT_GE(slots.capacity(), slots.size());
+    }
+    ASSERT_EQ(slots.size(), kCount);
+    for (std::size_t i = 0; i < kCount; ++i) {
+        ASSERT_EQ(slots[i].value, static_cast<int>(i));
+        ASSERT_EQ(slots[i].pad[99], static_cast<char>(i & 0x7F));
+    }
+    e2d::physics::detail::SlotArray<Slot> moved(std::move(slots));
+    EXPECT_EQ(moved.size(), kCount);
+    EXPECT_EQ(moved[kCount - 1].value, static_cast<int>(kCount - 1));
+    e2d::physics::detail::SlotArray<Slot> assigned;
+    assigned.reserve(10);
+    assigned = std::move(moved);
+    EXPECT_EQ(assigned.size(), kCount);
+    EXPECT_EQ(assigned[12345].value, 12345);
+    // reserve() beyond the size keeps the contents too.
+    assigned.reserve(3 * kCount);
+    EXPECT_GE(assigned.capacity(), 3 * kCount);
+    EXPECT_EQ(assigned[kCount / 2].value, static_cast<int>(kCount / 2));
 }

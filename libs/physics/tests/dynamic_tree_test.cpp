@@ -569,3 +569,155 @@ TEST(DynamicTree, ClearEmptiesAndReuses) {
     EXPECT_EQ(tree.createProxy({{0, 0}, {1, 1}}, 1, 0), 0);
     EXPECT_TRUE(tree.validate());
 }
+
+namespace {
+
+std::vector<int> bruteIds(const std::map<int, Aabb>& live, const Aabb& box) {
+    std::vector<int> ids;
+    for (const auto& [id, b] : live) {
+        if (overlap(b, box)) {
+            ids.push_back(id);
+        }
+    }
+    return ids; // std::map: sorted by id, as queryIds() sorts
+}
+
+} // namespace
+
+TEST(DynamicTree, DeferredProxiesWaitForInsertDeferred) {
+    DynamicTree tree;
+    const int a = tree.createProxy({{0, 0}, {1, 1}}, 1, 10);
+    const int b = tree.createProxyDeferred({{2, 0}, {3, 1}}, 2, 20);
+    EXPECT_NE(a, b);
+    EXPECT_TRUE(tree.isProxy(b));
+    EXPECT_EQ(tree.proxyCount(), 2);
+    EXPECT_EQ(tree.deferredCount(), 1);
+    EXPECT_EQ(tree.userData(b), 20u);
+    EXPECT_EQ(tree.categoryBits(b), 2u);
+    EXPECT_TRUE(tree.validate());
+    // Not in the hierarchy yet.
+    EXPECT_EQ(queryIds(tree, {{-5, -5}, {5, 5}}, DynamicTree::kAllBits), std::vector<int>{a});
+    // Moving a deferred proxy only changes its box.
+    tree.moveProxy(b, {{4, 0}, {5, 1}});
+    tree.enlargeProxy(b, {{4, -1}, {5, 1}});
+    EXPECT_EQ(tree.aabb(b).lower, (Vec2{4, -1}));
+    EXPECT_TRUE(tree.validate());
+    tree.insertDeferred();
+    EXPECT_EQ(tree.deferredCount(), 0);
+    EXPECT_TRUE(tree.validate());
+    EXPECT_EQ(queryIds(tree, {{3.5f, -2}, {6, 0}}, DynamicTree::kAllBits), std::vector<int>{b});
+    EXPECT_EQ(queryIds(tree, {{3.5f, -2}, {6, 0}}, 1), std::vector<int>{});
+
+    // A deferred proxy destroyed before insertion; its id is reused by the next one.
+    const int c = tree.createProxyDeferred({{7, 7}, {8, 8}}, 1, 30);
+    tree.destroyProxy(c);
+    EXPECT_FALSE(tree.isProxy(c));
+    EXPECT_EQ(tree.deferredCount(), 0);
+    const int d = tree.createProxyDeferred({{9, 9}, {10, 10}}, 1, 40);
+    EXPECT_EQ(d, c);
+    EXPECT_EQ(tree.deferredCount(), 1);
+    EXPECT_TRUE(tree.validate());
+    tree.insertDeferred();
+    EXPECT_TRUE(tree.validate());
+    EXPECT_EQ(tree.proxyCount(), 3);
+    std::vector<int> all{a, b, d};
+    std::sort(all.begin(), all.end());
+    EXPECT_EQ(queryIds(tree, {{-20, -20}, {20, 20}}, DynamicTree::kAllBits), all);
+}
+
+// Deferred creation mixed with every other operation and insertions both ways (a full rebuild
+// when many wait, one by one when few do): the tree stays valid and queries match brute force.
+TEST(DynamicTree, DeferredInsertionMatchesBruteForce) {
+    std::mt19937 rng(77);
+    DynamicTree tree;
+    std::map<int, Aabb> live;
+    int rebuildsOrInserts = 0;
+    for (int round = 0; round < 40; ++round) {
+        // Alternate big batches (rebuild path) and small ones (one by one).
+        const int creates = round % 2 == 0 ? 300 : 5 + uniformInt(rng, 20);
+        for (int i = 0; i < creates; ++i) {
+            const Aabb box = randomBox(rng, 100.0f, 3.0f);
+            const int id = tree.createProxyDeferred(box, 1, static_cast<std::uint64_t>(i));
+            ASSERT_EQ(live.count(id), 0u) << "id handed out twice";
+            live[id] = box;
+        }
+        // Other operations on deferred and inserted proxies alike, before the insertion.
+        for (int k = 0; k < 60 && !live.empty(); ++k) {
+            auto it = live.begin();
+            std::advance(it, uniformInt(rng, static_cast<int>(live.size())));
+            const int kind = uniformInt(rng, 4);
+            if (kind == 0) {
+                tree.destroyProxy(it->first);
+                live.erase(it);
+            } else if (kind == 1) {
+                const Aabb box = randomBox(rng, 100.0f, 3.0f);
+                tree.moveProxy(it->first, box);
+                it->second = box;
+            } else if (kind == 2) {
+                const Aabb box{it->second.lower - Vec2{0.3f, 0.1f}, it->second.upper};
+                tree.enlargeProxy(it->first, box);
+                it->second = box;
+            } else {
+                const Aabb box = randomBox(rng, 100.0f, 3.0f);
+                const int id = tree.createProxy(box, 1, 0);
+                ASSERT_EQ(live.count(id), 0u);
+                live[id] = box;
+            }
+        }
+        ASSERT_TRUE(tree.validate()) << "round " << round;
+        if (tree.deferredCount() > 0) {
+            ++rebuildsOrInserts;
+        }
+        tree.insertDeferred();
+        ASSERT_EQ(tree.deferredCount(), 0);
+        ASSERT_TRUE(tree.validate()) << "round " << round;
+        ASSERT_EQ(tree.proxyCount(), static_cast<int>(live.size()));
+        for (int q = 0; q < 20; ++q) {
+            const Aabb box = randomBox(rng, 105.0f, 10.0f);
+            ASSERT_EQ(queryIds(tree, box, DynamicTree::kAllBits), bruteIds(live, box))
+                << "round " << round << " query " << q;
+        }
+    }
+    EXPECT_EQ(rebuildsOrInserts, 40);
+    const double n = static_cast<double>(live.size());
+    EXPECT_LE(tree.height(), static_cast<int>(2.0 * std::log2(n)) + 1);
+}
+
+// Many deferred proxies created and destroyed again without an insertion in between: the
+// waiting list is compacted, ids are reused, nothing is inserted twice.
+TEST(DynamicTree, DeferredChurnWithoutInsertion) {
+    DynamicTree tree;
+    std::map<int, Aabb> live;
+    std::mt19937 rng(5);
+    for (int i = 0; i < 5000; ++i) {
+        const Aabb box = randomBox(rng, 50.0f, 1.0f);
+        const int id = tree.createProxyDeferred(box, 1, 0);
+        live[id] = box;
+        if (i % 3 != 0) {
+            tree.destroyProxy(id);
+            live.erase(id);
+        }
+    }
+    ASSERT_TRUE(tree.validate());
+    EXPECT_EQ(tree.deferredCount(), static_cast<int>(live.size()));
+    tree.insertDeferred();
+    ASSERT_TRUE(tree.validate());
+    EXPECT_EQ(tree.proxyCount(), static_cast<int>(live.size()));
+    EXPECT_EQ(queryIds(tree, {{-60, -60}, {60, 60}}, 1), bruteIds(live, {{-60, -60}, {60, 60}}));
+}
+
+// The bulk build gives a tree no worse than inserting one by one (a grid, as a level load).
+TEST(DynamicTree, DeferredBulkBuildIsTight) {
+    DynamicTree incremental;
+    DynamicTree bulk;
+    for (int i = 0; i < 4096; ++i) {
+        const Vec2 p{static_cast<float>(i % 64) * 2.0f, static_cast<float>(i / 64) * 2.0f};
+        const Aabb box{p, p + Vec2{1, 1}};
+        incremental.createProxy(box, 1, 0);
+        bulk.createProxyDeferred(box, 1, 0);
+    }
+    bulk.insertDeferred();
+    ASSERT_TRUE(bulk.validate());
+    EXPECT_LE(bulk.areaRatio(), incremental.areaRatio());
+    EXPECT_LE(bulk.height(), 13); // log2(4096) = 12, +1 for an uneven split
+}

@@ -3,6 +3,7 @@
 
 #include "world_random_scene.hpp"
 
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <utility>
@@ -118,6 +119,78 @@ TEST(WorldOverlap, SetTransformMovesTheShapeInTheTree) {
     EXPECT_TRUE(world.overlapPoint({19.52f, -7.0f}).empty());
     EXPECT_EQ(world.overlapPoint({20.54f, -7.0f}), std::vector<ShapeId>{box});
     EXPECT_TRUE(contains(world.shapeFatAabb(box), world.shapeAabb(box)));
+}
+
+// New shapes enter the broad-phase tree in bulk when it is next needed; queries made before any
+// step must still see every shape created so far, whether the tree is built from nothing (many
+// new shapes) or takes a few more one by one, and whatever moved or went meanwhile.
+TEST(WorldOverlap, QueriesSeeShapesCreatedSinceTheLastStep) {
+    World world;
+    constexpr int kSide = 40; // 1600 boxes of 1 m, 2 m apart: (2i, 2j)
+    std::vector<ShapeId> shapes;
+    std::vector<BodyId> bodies;
+    for (int j = 0; j < kSide; ++j) {
+        for (int i = 0; i < kSide; ++i) {
+            BodyDef def;
+            def.type = j % 2 == 0 ? BodyType::Dynamic : BodyType::Static;
+            def.position = {2.0f * static_cast<float>(i), 2.0f * static_cast<float>(j)};
+            bodies.push_back(world.createBody(def));
+            shapes.push_back(world.createShape(bodies.back(), {}, makeBox(0.5f, 0.5f)));
+        }
+    }
+    auto at = [&](int i, int j) { return shapes[static_cast<std::size_t>(j * kSide + i)]; };
+
+    // A ray along row 3 from the left hits its first box at x = -0.5 and all 40 of them.
+    std::optional<RayResult> hit = world.castRayClosest({-10.0f, 6.0f}, {100.0f, 0.0f});
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_EQ(hit->shape, at(0, 3));
+    EXPECT_NEAR(hit->point.x, -0.5f, 1e-4f);
+    EXPECT_EQ(world.castRayAll({-10.0f, 6.0f}, {100.0f, 0.0f}).size(), std::size_t{kSide});
+    // Every box contains its centre; a box query over columns 5..7 of rows 10..11 finds six.
+    for (int j = 0; j < kSide; j += 7) {
+        for (int i = 0; i < kSide; i += 3) {
+            EXPECT_EQ(world.overlapPoint({2.0f * static_cast<float>(i), 2.0f * static_cast<float>(j)}),
+                      std::vector<ShapeId>{at(i, j)});
+        }
+    }
+    std::vector<ShapeId> expected{at(5, 10), at(6, 10), at(7, 10), at(5, 11), at(6, 11), at(7, 11)};
+    std::sort(expected.begin(), expected.end(), [](ShapeId a, ShapeId b) { return a.index1 < b.index1; });
+    EXPECT_EQ(world.overlapAabb({{9.8f, 19.8f}, {14.2f, 22.2f}}), expected);
+
+    // A few more after the tree exists, one moved and one destroyed before any query.
+    std::vector<ShapeId> late;
+    for (int k = 0; k < 5; ++k) {
+        BodyDef def;
+        def.type = BodyType::Dynamic;
+        def.position = {-20.0f - 3.0f * static_cast<float>(k), 0.0f};
+        const BodyId body = world.createBody(def);
+        late.push_back(world.createShape(body, {}, Circle{{0.0f, 0.0f}, 0.5f}));
+        if (k == 1) {
+            world.setTransform(body, {-20.0f, 50.0f}, 0.0f);
+        }
+        if (k == 2) {
+            world.destroyBody(body);
+        }
+    }
+    hit = world.castRayClosest({-40.0f, 0.0f}, {100.0f, 0.0f});
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_EQ(hit->shape, late[4]); // at x = -32, the leftmost of the late ones
+    EXPECT_TRUE(world.overlapPoint({-26.0f, 0.0f}).empty()); // destroyed
+    EXPECT_TRUE(world.overlapPoint({-23.0f, 0.0f}).empty()); // moved away
+    EXPECT_EQ(world.overlapPoint({-20.0f, 50.0f}), std::vector<ShapeId>{late[1]});
+    EXPECT_EQ(world.overlapAabb({{-35.0f, -1.0f}, {-18.0f, 1.0f}}).size(), 3u);
+
+    // A shape created overlapping another touches it after the next step (its pair is found).
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    def.position = {2.5f, 0.0f};
+    def.gravityScale = 0.0f;
+    const ShapeId overlapping = world.createShape(world.createBody(def), {}, makeBox(0.5f, 0.5f));
+    EXPECT_EQ(world.overlapPoint({2.2f, 0.0f}).size(), 2u);
+    world.step(1.0f / 60.0f);
+    EXPECT_EQ(world.candidatePairCount(), 1);
+    EXPECT_EQ(world.contactCount(), 1);
+    EXPECT_TRUE(world.isValid(overlapping));
 }
 
 // A row of ten dynamic balls around the origin, for the callback tests.

@@ -71,6 +71,24 @@ public:
     /// non-finite or inverted box.
     int createProxy(const Aabb& aabb, std::uint64_t categoryBits, std::uint64_t userData);
 
+    /// Adds a proxy like createProxy() but leaves it out of the hierarchy until the next
+    /// insertDeferred(): its id, box and user data are valid at once, moveProxy(),
+    /// enlargeProxy() and destroyProxy() work on it, but query() and rayCast() do not see it
+    /// yet. Creating many proxies this way and inserting them together is much cheaper than one
+    /// by one (a level load); rebuild() and insertDeferred() insert them.
+    int createProxyDeferred(const Aabb& aabb, std::uint64_t categoryBits,
+                            std::uint64_t userData);
+
+    /// Inserts every deferred proxy. When they are at least a quarter of all proxies the whole
+    /// hierarchy is rebuilt top-down along a Z-order curve of the box centres (cheaper than
+    /// rebuild()'s surface-area heuristic, as tight for evenly spread boxes), otherwise they are
+    /// inserted one by one in the order they were created. Does nothing when none is waiting.
+    /// Allocates temporary arrays for a rebuild.
+    void insertDeferred();
+
+    /// Number of live proxies waiting for insertDeferred().
+    [[nodiscard]] int deferredCount() const { return deferredCount_; }
+
     /// Removes the proxy. Its id may be reused by a later createProxy(). Throws core::Error if
     /// `proxyId` is not a live proxy.
     void destroyProxy(int proxyId);
@@ -137,9 +155,10 @@ public:
     /// measure of tree quality (lower is better; 0 for trees with fewer than two proxies).
     [[nodiscard]] float areaRatio() const;
 
-    /// Rebuilds the whole hierarchy top-down with a binned surface-area heuristic. Proxy ids,
-    /// boxes and user data are unchanged; typically lowers areaRatio(), e.g. after a level load
-    /// or many enlargeProxy() calls. Allocates temporary arrays.
+    /// Rebuilds the whole hierarchy top-down with a binned surface-area heuristic, deferred
+    /// proxies included. Proxy ids, boxes and user data are unchanged; typically lowers
+    /// areaRatio(), e.g. after a level load or many enlargeProxy() calls. Allocates temporary
+    /// arrays.
     void rebuild();
 
     /// Removes every proxy. Keeps the node storage.
@@ -168,6 +187,21 @@ private:
     void insertLeaf(int leaf);
     void removeLeaf(int leaf);
     [[nodiscard]] int findBestSibling(const Aabb& box) const;
+    [[nodiscard]] bool isDeferred(int index) const {
+        const Node& node = nodes_[static_cast<std::size_t>(index)];
+        return node.height == 0 && node.parent == kDeferredParent;
+    }
+    void compactDeferred();
+    // Frees every internal node and builds the hierarchy over all leaves, deferred ones
+    // included: binned SAH (rebuild()) or Morton order (insertDeferred()).
+    void rebuildAll(bool morton);
+    // Top-down builds of `leaves` (ids, sorted by id for a result independent of the old tree)
+    // into a fresh hierarchy; every internal node must be free already. buildFrom(): binned
+    // surface-area heuristic, a few passes over the leaves per level. buildMorton(): the leaves
+    // sorted along a Z-order curve of their centres (radix sort) and split where the curve
+    // crosses into the next quadrant: linear after the sort, tight for level-like scenes.
+    void buildFrom(std::vector<int>& leaves);
+    void buildMorton(const std::vector<int>& leaves);
     void refit(int index);
     bool rotate(int index);
     void refitAncestors(int index);
@@ -189,7 +223,14 @@ private:
     [[noreturn]] static void throwBadRay(const RayCastInput& input);
     [[noreturn]] static void throwBadProxy(int proxyId, const char* function);
 
+    // Parent of a deferred leaf (never a node index).
+    static constexpr int kDeferredParent = -2;
+
     std::vector<Node> nodes_;
+    // Leaves created by createProxyDeferred(), in creation order. May hold stale entries (a
+    // deferred leaf destroyed, its id reused): isDeferred() and a first-seen check skip them.
+    std::vector<int> deferred_;
+    int deferredCount_ = 0;
     int root_ = kNullProxy;
     int freeList_ = kNullProxy;
     int proxyCount_ = 0;
