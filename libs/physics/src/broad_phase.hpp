@@ -34,8 +34,10 @@ struct ProxyPair {
 /// The World's broad phase: one DynamicTree per BodyType, fat boxes, a move buffer and a
 /// persistent set of pairs found incrementally.
 ///
-/// The caller gives tight boxes; moving proxies are stored fattened by kAabbMargin (static ones
-/// are not fattened), and a move only touches the tree when the tight box leaves the fat one.
+/// The caller gives tight boxes; moving proxies are stored fattened by kAabbMargin and, when
+/// moved with a displacement, stretched four displacements ahead (static ones are not
+/// fattened); a move only touches the tree when the tight box swept by the displacement leaves
+/// the fat one, or the fat one is far larger than needed.
 /// updatePairs() queries the trees for the proxies moved since the last update only: dynamic
 /// against every tree, kinematic and static against the dynamic tree, so static-static (and
 /// kinematic-kinematic, kinematic-static) pairs are never looked for. Pairs stay in the set
@@ -51,9 +53,12 @@ public:
     /// Removes the proxy and every pair it is part of. Cheap when it has no pairs left (the
     /// World usually removes them first); otherwise one pass over the pair table.
     void destroyProxy(int proxyKey);
-    /// Reports the new tight box. Returns true (and buffers a move) when it left the fat box,
-    /// which is then recomputed around it.
-    bool moveProxy(int proxyKey, const Aabb& aabb);
+    /// Reports the new tight box and the shape's expected displacement over the next step
+    /// (metres; zero for a shape placed by hand). Returns true (and buffers a move) when the box
+    /// swept by the displacement left the fat box, or the fat box is more than four margins
+    /// wider or taller than a new one would be; the fat box is then recomputed: the tight box
+    /// plus kAabbMargin, stretched by four displacements in their direction.
+    bool moveProxy(int proxyKey, const Aabb& aabb, Vec2 displacement = {0.0f, 0.0f});
     /// Buffers the proxy as moved so the next update looks for its pairs again (e.g. after its
     /// filter changed or its body woke up).
     void bufferMove(int proxyKey);

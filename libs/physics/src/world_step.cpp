@@ -511,10 +511,7 @@ void World::Impl::solve(float dt) {
             detail::Shape& sh = shape(si);
             sh.aabb = computeAabb(sh.geometry, b.transform);
             if (sh.proxyKey != kNullIndex) {
-                Aabb swept = sh.aabb;
-                swept.lower += Vec2{std::min(ahead.x, 0.0f), std::min(ahead.y, 0.0f)};
-                swept.upper += Vec2{std::max(ahead.x, 0.0f), std::max(ahead.y, 0.0f)};
-                broadPhase.moveProxy(sh.proxyKey, swept);
+                broadPhase.moveProxy(sh.proxyKey, sh.aabb, ahead);
             }
         }
     }

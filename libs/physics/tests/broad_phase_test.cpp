@@ -110,6 +110,50 @@ TEST(BroadPhase, FattensMovingProxiesOnly) {
     EXPECT_EQ(bp.fatAabb(d).upper.x, 4 + kAabbMargin);
 }
 
+TEST(BroadPhase, AMovingProxysFatBoxReachesFourDisplacementsAhead) {
+    BroadPhase bp;
+    const int d = bp.createProxy({{0, 0}, {1, 1}}, BodyType::Dynamic, 1, 0);
+    bp.updatePairs([](std::uint64_t, std::uint64_t) { return true; });
+    // Moving right by 0.3 m a step: the box swept over the next step leaves the fat box, which
+    // is rebuilt four displacements long to the right and the margin elsewhere.
+    const Vec2 v{0.3f, 0.0f};
+    EXPECT_TRUE(bp.moveProxy(d, {{0.3f, 0}, {1.3f, 1}}, v));
+    const Aabb fat = bp.fatAabb(d);
+    EXPECT_FLOAT_EQ(fat.lower.x, 0.3f - kAabbMargin);
+    EXPECT_FLOAT_EQ(fat.upper.x, 1.3f + 4.0f * 0.3f + kAabbMargin);
+    EXPECT_FLOAT_EQ(fat.lower.y, -kAabbMargin);
+    EXPECT_FLOAT_EQ(fat.upper.y, 1 + kAabbMargin);
+    bp.updatePairs([](std::uint64_t, std::uint64_t) { return true; });
+    // The next steps stay inside it (their box swept one step ahead included) without touching
+    // the tree, until the swept box would reach past it.
+    int steps = 0;
+    for (float x = 0.6f; bp.moveCount() == 0 && steps < 10; x += 0.3f, ++steps) {
+        const Aabb box{{x, 0}, {x + 1, 1}};
+        const bool moved = bp.moveProxy(d, box, v);
+        EXPECT_EQ(moved, box.upper.x + v.x > fat.upper.x) << x;
+    }
+    EXPECT_EQ(steps, 4); // 0.6, 0.9 and 1.2 inside; 1.5 + 0.3 is past 1.3 + 1.2 + 0.1
+    EXPECT_TRUE(holds(bp.fatAabb(d), {{1.5f, 0}, {2.8f, 1}}));
+}
+
+TEST(BroadPhase, AFatBoxFarLargerThanNeededIsShrunk) {
+    BroadPhase bp;
+    const int d = bp.createProxy({{0, 0}, {1, 1}}, BodyType::Dynamic, 1, 0);
+    // Fast to the right, then stopped inside the stretched box.
+    EXPECT_TRUE(bp.moveProxy(d, {{0, 0}, {1, 1}}, {1.0f, 0.0f}));
+    EXPECT_FLOAT_EQ(bp.fatAabb(d).upper.x, 1 + 4.0f + kAabbMargin);
+    bp.updatePairs([](std::uint64_t, std::uint64_t) { return true; });
+    EXPECT_TRUE(bp.moveProxy(d, {{0.1f, 0}, {1.1f, 1}}, {0.0f, 0.0f}));
+    EXPECT_FLOAT_EQ(bp.fatAabb(d).upper.x, 1.1f + kAabbMargin);
+    // No more than four margins wider than it needs: kept.
+    bp.updatePairs([](std::uint64_t, std::uint64_t) { return true; });
+    EXPECT_TRUE(bp.moveProxy(d, {{0.2f, 0}, {1.2f, 1}}, {0.09f, 0.0f}));
+    const Aabb stretched = bp.fatAabb(d);
+    EXPECT_FALSE(bp.moveProxy(d, {{0.25f, 0}, {1.25f, 1}}, {0.0f, 0.0f}));
+    EXPECT_EQ(bp.fatAabb(d).upper.x, stretched.upper.x);
+    EXPECT_EQ(bp.moveCount(), 1);
+}
+
 TEST(BroadPhase, NothingMovedMeansNoQueryAndNoNewPairs) {
     BroadPhase bp;
     for (int i = 0; i < 20; ++i) {
