@@ -94,6 +94,37 @@ struct alignas(64) Joint {
 };
 static_assert(offsetof(Joint, maxMotorForce) + sizeof(float) <= 128, "the solver's fields fit two cache lines");
 
+// A revolute joint with nothing but its point (no spring, motor or limit: a chain's, a net's
+// or a ragdoll's hinge without limits) as the soft step's passes read it: one cache line with
+// the same fields as the joint's, copied from it once a step after prepareJoint() into a
+// contiguous array in pass order, its impulse copied back once after the last pass. The passes
+// run the revolute joint's own arithmetic on it, so the results are the same bits.
+struct alignas(64) PointJoint {
+    int indexA = -1; // BodyState index this step, -1: static or asleep
+    int indexB = -1;
+    float invInertiaA = 0.0f;
+    float invInertiaB = 0.0f;
+    Vec2 invMassA{0.0f, 0.0f};
+    Vec2 invMassB{0.0f, 0.0f};
+    Vec2 anchorA{0.0f, 0.0f};
+    Vec2 anchorB{0.0f, 0.0f};
+    Vec2 deltaCenter{0.0f, 0.0f};
+    Vec2 linearImpulse{0.0f, 0.0f};
+};
+static_assert(sizeof(PointJoint) == 64, "a point joint is one cache line");
+
+// Whether a prepared joint is solved as a PointJoint.
+inline bool isPointJoint(const Joint& j) {
+    return j.type == JointType::Revolute && !j.enableSpring && !j.enableMotor && !j.enableLimit;
+}
+inline PointJoint makePointJoint(const Joint& j) {
+    return {j.indexA, j.indexB, j.invInertiaA, j.invInertiaB, j.invMassA, j.invMassB,
+            j.anchorA, j.anchorB, j.deltaCenter, j.linearImpulse};
+}
+
+// A pass's order entry: k >= 0 is the joint slot joints[k], k < 0 the point joint points[~k].
+inline int pointJointEntry(int pointIndex) { return ~pointIndex; }
+
 // What a pass needs besides the joint and the bodies' states.
 struct JointStep {
     float h = 0.0f; // the (sub-)step the velocities act over
@@ -125,13 +156,16 @@ void solveJoint(Joint& j, std::span<BodyState> states, const JointStep& step, bo
 // reactionForce and reactionTorque from the accumulated impulses of the last (sub-)step.
 void storeJointReaction(Joint& j, std::span<const BodyState> states, float invH);
 
-// The passes over the joints joints[order[k]] in order.
-void warmStartJoints(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states);
-void solveJoints(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
-                 const JointStep& step, bool useBias);
+// The passes over the joints of `order` in order (entries as pointJointEntry() says: slots of
+// `joints` or point joints of `points`).
+void warmStartJoints(std::span<Joint> joints, std::span<PointJoint> points, std::span<const int> order,
+                     std::span<BodyState> states);
+void solveJoints(std::span<Joint> joints, std::span<PointJoint> points, std::span<const int> order,
+                 std::span<BodyState> states, const JointStep& step, bool useBias);
 
 // Classic mode: one non-linear Gauss-Seidel pass over the rigid parts' position errors
-// (joint_position.cpp). True when every error was within the slops before the pass.
+// (joint_position.cpp). True when every error was within the slops before the pass. `order`
+// holds joint slots only (classic mode solves no point joints).
 bool solveJointPositions(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states);
 
 // Per-type passes (joint_<type>.cpp).
@@ -158,7 +192,9 @@ struct JointFrame {
     Vec2 rB;
     Vec2 d; // anchor B minus anchor A, world
 };
-inline JointFrame currentFrame(const Joint& j, const BodyState& a, const BodyState& b) {
+// (J: Joint or PointJoint, here and in pointMatrix() and applyPointImpulse().)
+template <class J>
+inline JointFrame currentFrame(const J& j, const BodyState& a, const BodyState& b) {
     Vec2 rA = rotate(a.deltaRotation, j.anchorA);
     Vec2 rB = rotate(b.deltaRotation, j.anchorB);
     return {rA, rB, (b.deltaPosition - a.deltaPosition) + j.deltaCenter + (rB - rA)};
@@ -180,7 +216,8 @@ struct Mat22 {
     float k12 = 0.0f;
     float k22 = 0.0f;
 };
-inline Mat22 pointMatrix(const Joint& j, Vec2 rA, Vec2 rB) {
+template <class J>
+inline Mat22 pointMatrix(const J& j, Vec2 rA, Vec2 rB) {
     float iA = j.invInertiaA;
     float iB = j.invInertiaB;
     return {j.invMassA.x + j.invMassB.x + iA * rA.y * rA.y + iB * rB.y * rB.y,
@@ -197,7 +234,8 @@ inline Vec2 solve22(const Mat22& k, Vec2 b) {
 }
 
 // Applies impulse p at the anchors (B gets +p, A gets -p) plus angular impulse l about them.
-inline void applyPointImpulse(const Joint& j, BodyState& a, BodyState& b, Vec2 rA, Vec2 rB, Vec2 p,
+template <class J>
+inline void applyPointImpulse(const J& j, BodyState& a, BodyState& b, Vec2 rA, Vec2 rB, Vec2 p,
                               float l = 0.0f) {
     a.linearVelocity -= j.invMassA * p;
     a.angularVelocity -= j.invInertiaA * (cross(rA, p) + l);

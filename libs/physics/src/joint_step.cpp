@@ -3,6 +3,8 @@
 // step's joints, sorting them into the wide solver's blocks and reading their reactions.
 #include "world_impl.hpp"
 
+#include <algorithm>
+
 namespace e2d::physics {
 
 using detail::kNullIndex;
@@ -26,6 +28,8 @@ void World::Impl::prepareJoints(float dt, float h) {
     (void)dt;
     detail::Simulation& s = sim;
     s.activeJoints.clear();
+    s.jointOrder.clear();
+    s.pointJoints.clear();
     s.jointBodies.clear();
     if (joints.empty()) {
         return;
@@ -71,6 +75,66 @@ void World::Impl::prepareJoints(float dt, float h) {
         s.activeJoints.push_back(static_cast<int>(ji));
         s.jointBodies.push_back({j.indexA, j.indexB});
     }
+    orderJoints();
+}
+
+void World::Impl::orderJoints() {
+    detail::Simulation& s = sim;
+    const std::size_t n = s.activeJoints.size();
+    // Levels as the contacts' (ConstraintLevels): a joint goes one level above the last level
+    // of each body it moves, so every body meets its joints in slot order and the passes'
+    // results are those of slot order, bit for bit; but the joints of a level share no body,
+    // so consecutive ones do not wait for each other's velocity writes (a joint net in slot
+    // order is one long chain of them).
+    s.jointBodyLevel.assign(s.states.size(), -1);
+    s.jointLevelStart.assign(1, 0);
+    s.jointLevel.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const detail::Simulation::ConstraintBodies& jb = s.jointBodies[k];
+        // A static or sleeping side (-1) is a fixed state of the joint's own.
+        const int lastA = jb.indexA >= 0 ? s.jointBodyLevel[static_cast<std::size_t>(jb.indexA)] : -1;
+        const int lastB = jb.indexB >= 0 ? s.jointBodyLevel[static_cast<std::size_t>(jb.indexB)] : -1;
+        const int level = std::max(lastA, lastB) + 1;
+        if (jb.indexA >= 0) {
+            s.jointBodyLevel[static_cast<std::size_t>(jb.indexA)] = level;
+        }
+        if (jb.indexB >= 0) {
+            s.jointBodyLevel[static_cast<std::size_t>(jb.indexB)] = level;
+        }
+        s.jointLevel[k] = level;
+        if (static_cast<std::size_t>(level) + 1 >= s.jointLevelStart.size()) {
+            s.jointLevelStart.resize(static_cast<std::size_t>(level) + 2, 0);
+        }
+        ++s.jointLevelStart[static_cast<std::size_t>(level) + 1];
+    }
+    for (std::size_t l = 1; l < s.jointLevelStart.size(); ++l) {
+        s.jointLevelStart[l] += s.jointLevelStart[l - 1];
+    }
+    // Stable counting sort by level; activeJoints and jointBodies follow.
+    s.jointSorted.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        s.jointSorted[static_cast<std::size_t>(s.jointLevelStart[static_cast<std::size_t>(s.jointLevel[k])]++)] =
+            static_cast<int>(k);
+    }
+    s.jointScratch.assign(s.activeJoints.begin(), s.activeJoints.end());
+    s.jointBodiesScratch.assign(s.jointBodies.begin(), s.jointBodies.end());
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t from = static_cast<std::size_t>(s.jointSorted[k]);
+        s.activeJoints[k] = s.jointScratch[from];
+        s.jointBodies[k] = s.jointBodiesScratch[from];
+    }
+    // The soft step's passes read a plain hinge from a compact copy, in pass order (classic
+    // mode's position pass reads the joint slots).
+    for (std::size_t k = 0; k < n; ++k) {
+        const int ji = s.activeJoints[k];
+        const detail::Joint& j = joint(ji);
+        if (s.def.mode == SolverMode::SoftStep && detail::isPointJoint(j)) {
+            s.jointOrder.push_back(detail::pointJointEntry(static_cast<int>(s.pointJoints.size())));
+            s.pointJoints.push_back(detail::makePointJoint(j));
+        } else {
+            s.jointOrder.push_back(ji);
+        }
+    }
 }
 
 void World::Impl::assignJointBlocks() {
@@ -91,13 +155,18 @@ void World::Impl::assignJointBlocks() {
     s.levelNext.assign(s.blockJointStart.begin(), s.blockJointStart.end() - 1);
     for (std::size_t k = 0; k < s.activeJoints.size(); ++k) {
         s.blockJoints[static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(blockOf(k))]++)] =
-            s.activeJoints[k];
+            s.jointOrder[k];
     }
 }
 
 void World::Impl::storeJointReactions(float invH) {
-    for (int ji : sim.activeJoints) {
-        detail::storeJointReaction(joint(ji), sim.states, invH);
+    for (std::size_t k = 0; k < sim.activeJoints.size(); ++k) {
+        detail::Joint& j = joint(sim.activeJoints[k]);
+        const int entry = sim.jointOrder[k];
+        if (entry < 0) {
+            j.linearImpulse = sim.pointJoints[static_cast<std::size_t>(~entry)].linearImpulse;
+        }
+        detail::storeJointReaction(j, sim.states, invH);
     }
 }
 

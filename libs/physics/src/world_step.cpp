@@ -383,7 +383,8 @@ void World::Impl::solve(float dt) {
     const detail::JointStep jointStep{
         integrationStep, 1.0f / integrationStep,
         detail::makeSoftness(detail::kJointHertz, detail::kJointDampingRatio, integrationStep)};
-    detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def, joints, s.activeJoints, jointStep};
+    detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def,
+                            joints, s.jointOrder, jointStep, s.pointJoints};
     if (wide) {
         // Contacts are visited in slot order, twice a block: gathered before it is solved and
         // their impulses stored right after, while its lanes are in cache. A level's contacts
