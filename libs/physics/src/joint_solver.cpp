@@ -181,52 +181,23 @@ void storeJointReaction(Joint& j, std::span<const BodyState> states, float invH)
     j.reactionTorque = invH * torque;
 }
 
-namespace {
-
-// warmStartRevolute() and solveRevolute() of a joint without spring, motor and limit, step
-// for step (its axial impulse is zero: prepareJoint() cleared the spring's, motor's and
-// limits' impulses).
-inline void warmStartPoint(PointJoint& j, std::span<BodyState> states) {
-    BodyState fixedA{};
-    BodyState fixedB{};
-    BodyState& a = j.indexA < 0 ? fixedA : states[static_cast<std::size_t>(j.indexA)];
-    BodyState& b = j.indexB < 0 ? fixedB : states[static_cast<std::size_t>(j.indexB)];
-    const JointFrame f = currentFrame(j, a, b);
-    applyPointImpulse(j, a, b, f.rA, f.rB, j.linearImpulse, 0.0f);
-}
-
-inline void solvePoint(PointJoint& j, std::span<BodyState> states, const Softness& soft) {
-    BodyState fixedA{};
-    BodyState fixedB{};
-    BodyState& a = j.indexA < 0 ? fixedA : states[static_cast<std::size_t>(j.indexA)];
-    BodyState& b = j.indexB < 0 ? fixedB : states[static_cast<std::size_t>(j.indexB)];
-    const JointFrame f = currentFrame(j, a, b);
-    Vec2 Cdot2 = relativeVelocity(a, b, f.rA, f.rB);
-    Vec2 impulse = -soft.massScale * solve22(pointMatrix(j, f.rA, f.rB), Cdot2 + soft.biasRate * f.d) -
-                   soft.impulseScale * j.linearImpulse;
-    j.linearImpulse += impulse;
-    applyPointImpulse(j, a, b, f.rA, f.rB, impulse);
-}
-
-} // namespace
-
-void warmStartJoints(std::span<Joint> joints, std::span<PointJoint> points, std::span<const int> order,
+void warmStartJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
                      std::span<BodyState> states) {
     for (int k : order) {
         if (k < 0) {
-            warmStartPoint(points[static_cast<std::size_t>(~k)], states);
+            warmStartPointQuad(quads[static_cast<std::size_t>(~k)], states);
         } else {
             warmStartJoint(joints[static_cast<std::size_t>(k)], states);
         }
     }
 }
 
-void solveJoints(std::span<Joint> joints, std::span<PointJoint> points, std::span<const int> order,
+void solveJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
                  std::span<BodyState> states, const JointStep& step, bool useBias) {
     const Softness soft = rigidSoftness(step, useBias);
     for (int k : order) {
         if (k < 0) {
-            solvePoint(points[static_cast<std::size_t>(~k)], states, soft);
+            solvePointQuad(quads[static_cast<std::size_t>(~k)], states, soft);
         } else {
             solveJoint(joints[static_cast<std::size_t>(k)], states, step, useBias);
         }

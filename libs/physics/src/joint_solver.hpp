@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 // Joints as the world stores them (one slot each, every type's fields in one struct) and the
 // solver passes over them. The passes mirror the contacts': prepare once per step, then per
@@ -94,36 +95,49 @@ struct alignas(64) Joint {
 };
 static_assert(offsetof(Joint, maxMotorForce) + sizeof(float) <= 128, "the solver's fields fit two cache lines");
 
-// A revolute joint with nothing but its point (no spring, motor or limit: a chain's, a net's
-// or a ragdoll's hinge without limits) as the soft step's passes read it: one cache line with
-// the same fields as the joint's, copied from it once a step after prepareJoint() into a
-// contiguous array in pass order, its impulse copied back once after the last pass. The passes
-// run the revolute joint's own arithmetic on it, so the results are the same bits.
-struct alignas(64) PointJoint {
-    int indexA = -1; // BodyState index this step, -1: static or asleep
-    int indexB = -1;
-    float invInertiaA = 0.0f;
-    float invInertiaB = 0.0f;
-    Vec2 invMassA{0.0f, 0.0f};
-    Vec2 invMassB{0.0f, 0.0f};
-    Vec2 anchorA{0.0f, 0.0f};
-    Vec2 anchorB{0.0f, 0.0f};
-    Vec2 deltaCenter{0.0f, 0.0f};
-    Vec2 linearImpulse{0.0f, 0.0f};
-};
-static_assert(sizeof(PointJoint) == 64, "a point joint is one cache line");
-
-// Whether a prepared joint is solved as a PointJoint.
+// Whether a prepared joint is a plain hinge: a revolute joint with nothing but its point (no
+// spring, motor or limit: a chain's, a net's, or a ragdoll's hinge without limits). The soft
+// step solves those four at a time (PointJointQuad).
 inline bool isPointJoint(const Joint& j) {
     return j.type == JointType::Revolute && !j.enableSpring && !j.enableMotor && !j.enableLimit;
 }
-inline PointJoint makePointJoint(const Joint& j) {
-    return {j.indexA, j.indexB, j.invInertiaA, j.invInertiaB, j.invMassA, j.invMassB,
-            j.anchorA, j.anchorB, j.deltaCenter, j.linearImpulse};
-}
 
-// A pass's order entry: k >= 0 is the joint slot joints[k], k < 0 the point joint points[~k].
-inline int pointJointEntry(int pointIndex) { return ~pointIndex; }
+// Four plain hinges that share no moving body, as the soft step's passes read them: their
+// prepared fields lane by lane (a copy of the joints' own, made once a step by
+// packJointPasses()), solved together with the revolute joint's arithmetic in each lane, so
+// each lane's results are the bits the joint alone would get. Their impulses go back to the
+// joints once after the step (storePointJointQuads()). A lane whose slot is -1 is padding: no
+// bodies, no mass, no impulse.
+struct alignas(64) PointJointQuad {
+    int indexA[4] = {-1, -1, -1, -1}; // BodyState indices this step, -1: static or asleep
+    int indexB[4] = {-1, -1, -1, -1};
+    int slot[4] = {-1, -1, -1, -1}; // the joint slot
+    float invInertiaA[4] = {};
+    float invInertiaB[4] = {};
+    float invMassAx[4] = {};
+    float invMassAy[4] = {};
+    float invMassBx[4] = {};
+    float invMassBy[4] = {};
+    float anchorAx[4] = {};
+    float anchorAy[4] = {};
+    float anchorBx[4] = {};
+    float anchorBy[4] = {};
+    float deltaCenterX[4] = {};
+    float deltaCenterY[4] = {};
+    float impulseX[4] = {};
+    float impulseY[4] = {};
+};
+
+// The passes' order from the prepared joints joints[slots[k]] in order, levels[k] their
+// levels (ascending; joints of one level share no moving body): pass entries appended to
+// `entries`, k >= 0 the joint slot k, k < 0 the quad quads[~k]. With `quadsAllowed`, the plain
+// hinges of each level are packed four at a time into quads appended to `quads` (the last
+// one of a level padded) and go before the level's other joints; a level's joints share no
+// body, so this order gives the same results as slot order.
+void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
+                     bool quadsAllowed, std::vector<PointJointQuad>& quads, std::vector<int>& entries);
+// The quads' accumulated impulses back to their joints.
+void storePointJointQuads(std::span<const PointJointQuad> quads, std::span<Joint> joints);
 
 // What a pass needs besides the joint and the bodies' states.
 struct JointStep {
@@ -156,12 +170,15 @@ void solveJoint(Joint& j, std::span<BodyState> states, const JointStep& step, bo
 // reactionForce and reactionTorque from the accumulated impulses of the last (sub-)step.
 void storeJointReaction(Joint& j, std::span<const BodyState> states, float invH);
 
-// The passes over the joints of `order` in order (entries as pointJointEntry() says: slots of
-// `joints` or point joints of `points`).
-void warmStartJoints(std::span<Joint> joints, std::span<PointJoint> points, std::span<const int> order,
+// The passes over the entries of `order` in order (as packJointPasses() makes them: joint
+// slots, or quads of plain hinges).
+void warmStartJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
                      std::span<BodyState> states);
-void solveJoints(std::span<Joint> joints, std::span<PointJoint> points, std::span<const int> order,
+void solveJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
                  std::span<BodyState> states, const JointStep& step, bool useBias);
+// One quad's passes (joint_point.cpp).
+void warmStartPointQuad(PointJointQuad& q, std::span<BodyState> states);
+void solvePointQuad(PointJointQuad& q, std::span<BodyState> states, const Softness& soft);
 
 // Classic mode: one non-linear Gauss-Seidel pass over the rigid parts' position errors
 // (joint_position.cpp). True when every error was within the slops before the pass. `order`
@@ -192,9 +209,7 @@ struct JointFrame {
     Vec2 rB;
     Vec2 d; // anchor B minus anchor A, world
 };
-// (J: Joint or PointJoint, here and in pointMatrix() and applyPointImpulse().)
-template <class J>
-inline JointFrame currentFrame(const J& j, const BodyState& a, const BodyState& b) {
+inline JointFrame currentFrame(const Joint& j, const BodyState& a, const BodyState& b) {
     Vec2 rA = rotate(a.deltaRotation, j.anchorA);
     Vec2 rB = rotate(b.deltaRotation, j.anchorB);
     return {rA, rB, (b.deltaPosition - a.deltaPosition) + j.deltaCenter + (rB - rA)};
@@ -216,8 +231,7 @@ struct Mat22 {
     float k12 = 0.0f;
     float k22 = 0.0f;
 };
-template <class J>
-inline Mat22 pointMatrix(const J& j, Vec2 rA, Vec2 rB) {
+inline Mat22 pointMatrix(const Joint& j, Vec2 rA, Vec2 rB) {
     float iA = j.invInertiaA;
     float iB = j.invInertiaB;
     return {j.invMassA.x + j.invMassB.x + iA * rA.y * rA.y + iB * rB.y * rB.y,
@@ -234,8 +248,7 @@ inline Vec2 solve22(const Mat22& k, Vec2 b) {
 }
 
 // Applies impulse p at the anchors (B gets +p, A gets -p) plus angular impulse l about them.
-template <class J>
-inline void applyPointImpulse(const J& j, BodyState& a, BodyState& b, Vec2 rA, Vec2 rB, Vec2 p,
+inline void applyPointImpulse(const Joint& j, BodyState& a, BodyState& b, Vec2 rA, Vec2 rB, Vec2 p,
                               float l = 0.0f) {
     a.linearVelocity -= j.invMassA * p;
     a.angularVelocity -= j.invInertiaA * (cross(rA, p) + l);

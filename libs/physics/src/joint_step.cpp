@@ -28,8 +28,9 @@ void World::Impl::prepareJoints(float dt, float h) {
     (void)dt;
     detail::Simulation& s = sim;
     s.activeJoints.clear();
+    s.activeJointLevels.clear();
     s.jointOrder.clear();
-    s.pointJoints.clear();
+    s.pointQuads.clear();
     s.jointBodies.clear();
     if (joints.empty()) {
         return;
@@ -110,7 +111,8 @@ void World::Impl::orderJoints() {
     for (std::size_t l = 1; l < s.jointLevelStart.size(); ++l) {
         s.jointLevelStart[l] += s.jointLevelStart[l - 1];
     }
-    // Stable counting sort by level; activeJoints and jointBodies follow.
+    // Stable counting sort by level; activeJoints and jointBodies follow, activeJointLevels
+    // says each one's level.
     s.jointSorted.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
         s.jointSorted[static_cast<std::size_t>(s.jointLevelStart[static_cast<std::size_t>(s.jointLevel[k])]++)] =
@@ -118,55 +120,75 @@ void World::Impl::orderJoints() {
     }
     s.jointScratch.assign(s.activeJoints.begin(), s.activeJoints.end());
     s.jointBodiesScratch.assign(s.jointBodies.begin(), s.jointBodies.end());
+    s.activeJointLevels.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t from = static_cast<std::size_t>(s.jointSorted[k]);
         s.activeJoints[k] = s.jointScratch[from];
         s.jointBodies[k] = s.jointBodiesScratch[from];
+        s.activeJointLevels[k] = s.jointLevel[from];
     }
-    // The soft step's passes read a plain hinge from a compact copy, in pass order (classic
-    // mode's position pass reads the joint slots).
-    for (std::size_t k = 0; k < n; ++k) {
-        const int ji = s.activeJoints[k];
-        const detail::Joint& j = joint(ji);
-        if (s.def.mode == SolverMode::SoftStep && detail::isPointJoint(j)) {
-            s.jointOrder.push_back(detail::pointJointEntry(static_cast<int>(s.pointJoints.size())));
-            s.pointJoints.push_back(detail::makePointJoint(j));
-        } else {
-            s.jointOrder.push_back(ji);
-        }
-    }
+}
+
+void World::Impl::packJoints() {
+    detail::Simulation& s = sim;
+    s.jointOrder.clear();
+    s.pointQuads.clear();
+    // Classic mode's position pass reads the joint slots: no quads there.
+    detail::packJointPasses(joints, s.activeJoints, s.activeJointLevels, s.def.mode == SolverMode::SoftStep,
+                            s.pointQuads, s.jointOrder);
 }
 
 void World::Impl::assignJointBlocks() {
     detail::Simulation& s = sim;
     const std::size_t blocks = s.blockBodyStart.size() - 1;
+    const std::size_t n = s.activeJoints.size();
     s.blockJointStart.assign(blocks + 1, 0);
-    s.blockJoints.resize(s.activeJoints.size());
     auto blockOf = [&](std::size_t k) {
         const detail::Simulation::ConstraintBodies& jb = s.jointBodies[k];
         return s.bodyBlock[static_cast<std::size_t>(jb.indexA >= 0 ? jb.indexA : jb.indexB)];
     };
-    for (std::size_t k = 0; k < s.activeJoints.size(); ++k) {
+    for (std::size_t k = 0; k < n; ++k) {
         ++s.blockJointStart[static_cast<std::size_t>(blockOf(k)) + 1];
     }
     for (std::size_t b = 0; b < blocks; ++b) {
         s.blockJointStart[b + 1] += s.blockJointStart[b];
     }
+    // Each block's joints in pass order (a stable sort by block keeps the levels ascending),
+    // then packed block by block; blockJointStart becomes the entries' bounds.
     s.levelNext.assign(s.blockJointStart.begin(), s.blockJointStart.end() - 1);
-    for (std::size_t k = 0; k < s.activeJoints.size(); ++k) {
-        s.blockJoints[static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(blockOf(k))]++)] =
-            s.jointOrder[k];
+    s.jointScratch.resize(n);
+    s.jointSorted.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t to = static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(blockOf(k))]++);
+        s.jointScratch[to] = s.activeJoints[k];
+        s.jointSorted[to] = s.activeJointLevels[k];
+    }
+    s.blockJoints.clear();
+    s.pointQuads.clear();
+    int first = 0;
+    for (std::size_t b = 0; b < blocks; ++b) {
+        const int end = s.blockJointStart[b + 1];
+        const auto count = static_cast<std::size_t>(end - first);
+        detail::packJointPasses(joints, std::span<const int>(s.jointScratch).subspan(static_cast<std::size_t>(first), count),
+                                std::span<const int>(s.jointSorted).subspan(static_cast<std::size_t>(first), count),
+                                true, s.pointQuads, s.blockJoints);
+        first = end;
+        s.blockJointStart[b + 1] = static_cast<int>(s.blockJoints.size());
     }
 }
 
 void World::Impl::storeJointReactions(float invH) {
-    for (std::size_t k = 0; k < sim.activeJoints.size(); ++k) {
-        detail::Joint& j = joint(sim.activeJoints[k]);
-        const int entry = sim.jointOrder[k];
-        if (entry < 0) {
-            j.linearImpulse = sim.pointJoints[static_cast<std::size_t>(~entry)].linearImpulse;
+    detail::storePointJointQuads(sim.pointQuads, joints);
+    const bool quads = sim.def.mode == SolverMode::SoftStep;
+    for (int ji : sim.activeJoints) {
+        detail::Joint& j = joint(ji);
+        if (quads && detail::isPointJoint(j)) {
+            // storeJointReaction()'s revolute case without the frame it does not need.
+            j.reactionForce = invH * j.linearImpulse;
+            j.reactionTorque = invH * (j.springImpulse + j.motorImpulse + j.lowerImpulse - j.upperImpulse);
+        } else {
+            detail::storeJointReaction(j, sim.states, invH);
         }
-        detail::storeJointReaction(j, sim.states, invH);
     }
 }
 

@@ -157,15 +157,16 @@ struct Simulation {
     std::vector<ConstraintBodies> lastConstraintBodies;
     std::vector<unsigned char> lastStateRigid;
     // Joints this step (World::Impl::prepareJoints()): the world's joint slots with a moving
-    // side, in pass order (World::Impl::orderJoints(): every body meets its joints in slot
-    // order), and their sides' BodyState indices (-1: static or asleep); last solve's, for the
-    // wide schedule's check; each one's pass order entry (jointOrder, see pointJointEntry():
-    // the slot, or its copy in pointJoints); the wide solver's joints by block: block b's
-    // entries are blockJoints[blockJointStart[b] .. blockJointStart[b + 1]), pass order within
-    // a block. The rest is orderJoints()'s scratch.
+    // side, in pass order (World::Impl::orderJoints(): by level, every body meeting its joints
+    // in slot order) with their levels, and their sides' BodyState indices (-1: static or
+    // asleep); last solve's, for the wide schedule's check; the scalar solvers' pass entries
+    // (jointOrder, packJointPasses(): slots, or quads of pointQuads); the wide solver's by
+    // block: block b's entries are blockJoints[blockJointStart[b] .. blockJointStart[b + 1]).
+    // The rest is scratch.
     std::vector<int> activeJoints;
+    std::vector<int> activeJointLevels;
     std::vector<int> jointOrder;
-    std::vector<PointJoint> pointJoints;
+    std::vector<PointJointQuad> pointQuads;
     std::vector<int> jointBodyLevel;
     std::vector<int> jointLevel;
     std::vector<int> jointLevelStart;

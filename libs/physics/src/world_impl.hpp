@@ -204,17 +204,18 @@ struct World::Impl {
     [[nodiscard]] bool jointBlocksCollision(int bodyA, int bodyB) const;
     // Wakes the sleeping dynamic side of every joint whose other side is awake (before solve()).
     void wakeJointedBodies();
-    // The step's joints: s.activeJoints (joints with a moving side, in pass order), prepared,
-    // s.jointOrder and s.pointJoints (their pass order entries) and s.jointBodies (their
-    // BodyState indices).
+    // The step's joints: s.activeJoints (joints with a moving side, in pass order) and
+    // s.activeJointLevels, prepared, and s.jointBodies (their BodyState indices).
     void prepareJoints(float dt, float h);
-    // Puts the prepared joints in pass order (levels, see there) and fills s.jointOrder and
-    // s.pointJoints (prepareJoints()).
+    // Puts the prepared joints in pass order (levels, see there; prepareJoints()).
     void orderJoints();
-    // The wide solver's joints by block (s.blockJointStart, s.blockJoints), after scheduleWide().
+    // The scalar solvers' pass entries (s.jointOrder, s.pointQuads; packJointPasses()).
+    void packJoints();
+    // The wide solver's pass entries by block (s.blockJointStart, s.blockJoints, s.pointQuads),
+    // after scheduleWide().
     void assignJointBlocks();
-    // Point joints' impulses back to their joints, then the reactions of the active joints
-    // from their impulses (invH: 1 / the sub-step).
+    // The quads' impulses back to their joints, then the reactions of the active joints from
+    // their impulses (invH: 1 / the sub-step).
     void storeJointReactions(float invH);
 };
 

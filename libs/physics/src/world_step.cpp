@@ -337,6 +337,9 @@ void World::Impl::solve(float dt) {
         }
     }
     s.wideScheduleValid = wide;
+    if (!wide && !s.activeJoints.empty()) {
+        packJoints();
+    }
 
     if (wide) {
         // Built block by block right before each block is solved (below).
@@ -384,7 +387,7 @@ void World::Impl::solve(float dt) {
         integrationStep, 1.0f / integrationStep,
         detail::makeSoftness(detail::kJointHertz, detail::kJointDampingRatio, integrationStep)};
     detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def,
-                            joints, s.jointOrder, jointStep, s.pointJoints};
+                            joints, s.jointOrder, jointStep, s.pointQuads};
     if (wide) {
         // Contacts are visited in slot order, twice a block: gathered before it is solved and
         // their impulses stored right after, while its lanes are in cache. A level's contacts
