@@ -46,6 +46,11 @@ struct ProxyPair {
 /// userData is the shape index and must fit in 32 bits; two proxies never share a userData.
 class BroadPhase {
 public:
+    /// updatePairs()'s default query mask: every category.
+    struct AllCategories {
+        std::uint64_t operator()(std::uint64_t) const { return DynamicTree::kAllBits; }
+    };
+
     /// Adds a proxy for the tight box `aabb` and buffers it as moved, so the next
     /// updatePairs() finds its pairs. Returns its proxy key. Throws core::Error on a bad box.
     int createProxy(const Aabb& aabb, BodyType type, std::uint64_t categoryBits,
@@ -78,8 +83,11 @@ public:
     /// `bool shouldPair(std::uint64_t userDataA, std::uint64_t userDataB)` (A < B) about each,
     /// adds the accepted ones to the set and lists them in newPairs(), sorted by (A, B).
     /// Clears the move buffer. With nothing moved it queries nothing.
-    template <class ShouldPair>
-    void updatePairs(ShouldPair&& shouldPair);
+    /// `std::uint64_t queryMask(std::uint64_t userData)` gives the category bits a moved
+    /// proxy's partners must share a bit with (the trees skip the others whole); it must
+    /// admit every partner shouldPair() could accept, from either side (default: all bits).
+    template <class ShouldPair, class QueryMask = AllCategories>
+    void updatePairs(ShouldPair&& shouldPair, QueryMask&& queryMask = QueryMask{});
 
     /// The pairs the last updatePairs() added, sorted; valid until the next updatePairs().
     [[nodiscard]] std::span<const ProxyPair> newPairs() const { return newPairs_; }
@@ -137,8 +145,8 @@ private:
     int queryCount_ = 0;
 };
 
-template <class ShouldPair>
-void BroadPhase::updatePairs(ShouldPair&& shouldPair) {
+template <class ShouldPair, class QueryMask>
+void BroadPhase::updatePairs(ShouldPair&& shouldPair, QueryMask&& queryMask) {
     newPairs_.clear();
     queryCount_ = 0;
     for (const int key : moveBuffer_) {
@@ -149,11 +157,12 @@ void BroadPhase::updatePairs(ShouldPair&& shouldPair) {
         const DynamicTree& own = trees_[treeIndex(key)];
         const Aabb box = own.aabb(proxyIdOf(key));
         const std::uint64_t ud = own.userData(proxyIdOf(key));
+        const std::uint64_t mask = queryMask(ud);
 
         auto queryTree = [&](BodyType otherType) {
             ++queryCount_;
             trees_[static_cast<std::size_t>(otherType)].query(
-                box, DynamicTree::kAllBits, [&](int otherId, std::uint64_t otherUd) {
+                box, mask, [&](int otherId, std::uint64_t otherUd) {
                     const int otherKey = makeProxyKey(otherId, otherType);
                     // When both moved, the one with the lower key reports the pair (the queries
                     // are symmetric: each one's query covers the other's tree).

@@ -148,6 +148,9 @@ struct World::Impl {
     void destroyShapeAt(int shapeIndex);
     // Whether two shapes may become a candidate pair (the broad phase's filter).
     [[nodiscard]] bool shouldPair(int shapeA, int shapeB) const;
+    // The categories a moved shape's broad-phase query looks at: every partner shouldPair()
+    // could accept (BroadPhase::updatePairs()).
+    [[nodiscard]] std::uint64_t pairQueryMask(int shapeIndex) const;
 
     // --- dynamics (world_step.cpp, contact.cpp, island.cpp, world_dynamics.cpp) ---
 
