@@ -10,6 +10,19 @@ namespace e2d::physics {
 using detail::kNullIndex;
 
 void World::Impl::wakeJointedBodies() {
+    // Nothing to wake while every moving body is awake (a scene without sleeping): a pass over
+    // the bodies is cheaper than one over the joints and both their bodies.
+    bool anyAsleep = false;
+    for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
+        const detail::Body& b = bodies[bi];
+        if (b.alive && b.enabled && b.type != BodyType::Static && !b.motion.awake) {
+            anyAsleep = true;
+            break;
+        }
+    }
+    if (!anyAsleep) {
+        return;
+    }
     for (const detail::Joint& j : joints) {
         if (!j.alive || j.type == JointType::Mouse) {
             continue;
