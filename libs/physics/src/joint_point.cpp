@@ -66,11 +66,15 @@ void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, 
     }
 }
 
-void storePointJointQuads(std::span<const PointJointQuad> quads, std::span<Joint> joints) {
+void storePointJointQuads(std::span<const PointJointQuad> quads, std::span<Joint> joints, float invH) {
     for (const PointJointQuad& q : quads) {
         for (int lane = 0; lane < 4; ++lane) {
             if (q.slot[lane] >= 0) {
-                joints[static_cast<std::size_t>(q.slot[lane])].linearImpulse = {q.impulseX[lane], q.impulseY[lane]};
+                Joint& j = joints[static_cast<std::size_t>(q.slot[lane])];
+                j.linearImpulse = {q.impulseX[lane], q.impulseY[lane]};
+                // No frame needed: a revolute joint's force is its point impulse.
+                j.reactionForce = invH * j.linearImpulse;
+                j.reactionTorque = invH * (j.springImpulse + j.motorImpulse + j.lowerImpulse - j.upperImpulse);
             }
         }
     }

@@ -136,8 +136,9 @@ struct alignas(64) PointJointQuad {
 // body, so this order gives the same results as slot order.
 void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
                      bool quadsAllowed, std::vector<PointJointQuad>& quads, std::vector<int>& entries);
-// The quads' accumulated impulses back to their joints.
-void storePointJointQuads(std::span<const PointJointQuad> quads, std::span<Joint> joints);
+// The quads' accumulated impulses back to their joints, and their reactions as
+// storeJointReaction() gives a revolute joint's (invH: 1 / the sub-step).
+void storePointJointQuads(std::span<const PointJointQuad> quads, std::span<Joint> joints, float invH);
 
 // What a pass needs besides the joint and the bodies' states.
 struct JointStep {

@@ -190,17 +190,11 @@ void World::Impl::assignJointBlocks() {
     }
 }
 
-void World::Impl::storeJointReactions(float invH) {
-    detail::storePointJointQuads(sim.pointQuads, joints);
-    const bool quads = sim.def.mode == SolverMode::SoftStep;
-    for (int ji : sim.activeJoints) {
-        detail::Joint& j = joint(ji);
-        if (quads && detail::isPointJoint(j)) {
-            // storeJointReaction()'s revolute case without the frame it does not need.
-            j.reactionForce = invH * j.linearImpulse;
-            j.reactionTorque = invH * (j.springImpulse + j.motorImpulse + j.lowerImpulse - j.upperImpulse);
-        } else {
-            detail::storeJointReaction(j, sim.states, invH);
+void World::Impl::storeJointReactions(float invH, bool wide) {
+    detail::storePointJointQuads(sim.pointQuads, joints, invH);
+    for (int entry : wide ? sim.blockJoints : sim.jointOrder) {
+        if (entry >= 0) {
+            detail::storeJointReaction(joint(entry), sim.states, invH);
         }
     }
 }

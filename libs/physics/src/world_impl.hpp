@@ -219,7 +219,8 @@ struct World::Impl {
     void assignJointBlocks();
     // The quads' impulses back to their joints, then the reactions of the active joints from
     // their impulses (invH: 1 / the sub-step).
-    void storeJointReactions(float invH);
+    // wide: the step's entries are the wide solver's (s.blockJoints), else s.jointOrder.
+    void storeJointReactions(float invH, bool wide);
 };
 
 } // namespace e2d::physics

@@ -474,7 +474,7 @@ void World::Impl::solve(float dt) {
         detail::solveClassic(step);
     }
     if (!s.activeJoints.empty()) {
-        storeJointReactions(1.0f / integrationStep);
+        storeJointReactions(1.0f / integrationStep, wide);
     }
     detail::finalizePositions(s.sims, s.states);
 
