@@ -23,14 +23,23 @@ void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, 
         while (end < n && levels[end] == levels[first]) {
             ++end;
         }
-        // The level's plain hinges four to a quad, then its other joints.
-        int lane = 4;
+        // The level's plain hinges four to a quad, then its other joints. A lone hinge left
+        // over (a chain's levels hold one joint each) is cheaper solved alone than in a quad
+        // of padding.
+        int points = 0;
         for (std::size_t k = first; k < end && quadsAllowed; ++k) {
+            points += isPointJoint(joints[static_cast<std::size_t>(slots[k])]) ? 1 : 0;
+        }
+        const int packed = points % 4 == 1 ? points - 1 : points;
+        int lane = 4;
+        int taken = 0;
+        for (std::size_t k = first; k < end && taken < packed; ++k) {
             const int s = slots[k];
             const Joint& j = joints[static_cast<std::size_t>(s)];
             if (!isPointJoint(j)) {
                 continue;
             }
+            ++taken;
             if (lane == 4) {
                 entries.push_back(~static_cast<int>(quads.size()));
                 quads.emplace_back();
@@ -56,9 +65,10 @@ void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, 
             q.impulseY[lane] = j.linearImpulse.y;
             ++lane;
         }
+        int seen = 0;
         for (std::size_t k = first; k < end; ++k) {
             const int s = slots[k];
-            if (!quadsAllowed || !isPointJoint(joints[static_cast<std::size_t>(s)])) {
+            if (!quadsAllowed || !isPointJoint(joints[static_cast<std::size_t>(s)]) || seen++ >= packed) {
                 entries.push_back(s);
             }
         }

@@ -132,8 +132,8 @@ struct alignas(64) PointJointQuad {
 // levels (ascending; joints of one level share no moving body): pass entries appended to
 // `entries`, k >= 0 the joint slot k, k < 0 the quad quads[~k]. With `quadsAllowed`, the plain
 // hinges of each level are packed four at a time into quads appended to `quads` (the last
-// one of a level padded) and go before the level's other joints; a level's joints share no
-// body, so this order gives the same results as slot order.
+// one of a level padded; a single one left over stays a slot) and go before the level's other
+// joints; a level's joints share no body, so this order gives the same results as slot order.
 void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
                      bool quadsAllowed, std::vector<PointJointQuad>& quads, std::vector<int>& entries);
 // The quads' accumulated impulses back to their joints, and their reactions as
