@@ -35,7 +35,7 @@ struct ProxyPair {
 /// persistent set of pairs found incrementally.
 ///
 /// The caller gives tight boxes; moving proxies are stored fattened by kAabbMargin and, when
-/// moved with a displacement, stretched four displacements ahead (static ones are not
+/// moved with a displacement, stretched two displacements ahead (static ones are not
 /// fattened); a move only touches the tree when the tight box swept by the displacement leaves
 /// the fat one, or the fat one is far larger than needed.
 /// updatePairs() queries the trees for the proxies moved since the last update only: dynamic
@@ -62,7 +62,7 @@ public:
     /// (metres; zero for a shape placed by hand). Returns true (and buffers a move) when the box
     /// swept by the displacement left the fat box, or the fat box is more than four margins
     /// wider or taller than a new one would be; the fat box is then recomputed: the tight box
-    /// plus kAabbMargin, stretched by four displacements in their direction.
+    /// plus kAabbMargin, stretched by two displacements in their direction.
     bool moveProxy(int proxyKey, const Aabb& aabb, Vec2 displacement = {0.0f, 0.0f});
     /// Buffers the proxy as moved so the next update looks for its pairs again (e.g. after its
     /// filter changed or its body woke up).
