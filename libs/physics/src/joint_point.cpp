@@ -94,18 +94,29 @@ void storePointJointQuads(std::span<const PointJointQuad> quads, std::span<Joint
 
 namespace {
 
-// A lane's body: its state, or a fixed one (static, asleep, padding) read as a default
-// BodyState and written to a scratch copy.
+// A fixed side (static, asleep, padding) reads as a default BodyState, as the scalar joint's.
+const BodyState kFixedState{};
+
+// A lane's body: where its state is read from and its velocities written to (a fixed side's
+// go to a sink that is never read).
 struct QuadBodies {
-    BodyState* a[4];
-    BodyState* b[4];
+    const BodyState* readA[4];
+    const BodyState* readB[4];
+    float* writeA[4];
+    float* writeB[4];
 };
 
-inline QuadBodies bodiesOf(const PointJointQuad& q, std::span<BodyState> states, BodyState (&scratch)[8]) {
+inline QuadBodies bodiesOf(const PointJointQuad& q, std::span<BodyState> states, float (&sink)[8][4]) {
     QuadBodies r;
     for (int lane = 0; lane < 4; ++lane) {
-        r.a[lane] = q.indexA[lane] < 0 ? &scratch[lane] : &states[static_cast<std::size_t>(q.indexA[lane])];
-        r.b[lane] = q.indexB[lane] < 0 ? &scratch[4 + lane] : &states[static_cast<std::size_t>(q.indexB[lane])];
+        const int ia = q.indexA[lane];
+        const int ib = q.indexB[lane];
+        BodyState* a = ia < 0 ? nullptr : &states[static_cast<std::size_t>(ia)];
+        BodyState* b = ib < 0 ? nullptr : &states[static_cast<std::size_t>(ib)];
+        r.readA[lane] = a != nullptr ? a : &kFixedState;
+        r.readB[lane] = b != nullptr ? b : &kFixedState;
+        r.writeA[lane] = a != nullptr ? reinterpret_cast<float*>(a) : sink[lane];
+        r.writeB[lane] = b != nullptr ? reinterpret_cast<float*>(b) : sink[4 + lane];
     }
     return r;
 }
@@ -117,7 +128,7 @@ struct Lanes {
 
 static_assert(sizeof(BodyState) == 8 * sizeof(float), "BodyState is two registers of four floats");
 
-inline Lanes load(BodyState* const (&s)[4]) {
+inline Lanes load(const BodyState* const (&s)[4]) {
     Lanes l;
     l.vx = _mm_loadu_ps(reinterpret_cast<const float*>(s[0]));
     l.vy = _mm_loadu_ps(reinterpret_cast<const float*>(s[1]));
@@ -133,12 +144,12 @@ inline Lanes load(BodyState* const (&s)[4]) {
 }
 
 // Writes the velocities back (the flags' bits unchanged: shuffles only).
-inline void storeVelocities(BodyState* const (&s)[4], __m128 vx, __m128 vy, __m128 w, __m128 flags) {
+inline void storeVelocities(float* const (&s)[4], __m128 vx, __m128 vy, __m128 w, __m128 flags) {
     _MM_TRANSPOSE4_PS(vx, vy, w, flags);
-    _mm_storeu_ps(reinterpret_cast<float*>(s[0]), vx);
-    _mm_storeu_ps(reinterpret_cast<float*>(s[1]), vy);
-    _mm_storeu_ps(reinterpret_cast<float*>(s[2]), w);
-    _mm_storeu_ps(reinterpret_cast<float*>(s[3]), flags);
+    _mm_storeu_ps(s[0], vx);
+    _mm_storeu_ps(s[1], vy);
+    _mm_storeu_ps(s[2], w);
+    _mm_storeu_ps(s[3], flags);
 }
 
 struct Frame {
@@ -170,30 +181,30 @@ inline void apply(const PointJointQuad& q, const Frame& f, Lanes& a, Lanes& b, _
     b.w = _mm_add_ps(b.w, _mm_mul_ps(_mm_load_ps(q.invInertiaB), _mm_add_ps(crossB, zero)));
 }
 
-// A's lanes first, then B's: a fixed side's scratch state takes the writes; the lanes' bodies
-// are distinct, so the order of the stores does not matter.
+// A's lanes first, then B's; the lanes' bodies are distinct, so the order of the stores does
+// not matter.
 inline void storeBoth(const QuadBodies& bodies, const Lanes& a, const Lanes& b) {
-    storeVelocities(bodies.a, a.vx, a.vy, a.w, a.flags);
-    storeVelocities(bodies.b, b.vx, b.vy, b.w, b.flags);
+    storeVelocities(bodies.writeA, a.vx, a.vy, a.w, a.flags);
+    storeVelocities(bodies.writeB, b.vx, b.vy, b.w, b.flags);
 }
 
 } // namespace
 
 void warmStartPointQuad(PointJointQuad& q, std::span<BodyState> states) {
-    BodyState scratch[8];
-    const QuadBodies bodies = bodiesOf(q, states, scratch);
-    Lanes a = load(bodies.a);
-    Lanes b = load(bodies.b);
+    float sink[8][4];
+    const QuadBodies bodies = bodiesOf(q, states, sink);
+    Lanes a = load(bodies.readA);
+    Lanes b = load(bodies.readB);
     const Frame f = frameOf(q, a, b);
     apply(q, f, a, b, _mm_load_ps(q.impulseX), _mm_load_ps(q.impulseY));
     storeBoth(bodies, a, b);
 }
 
 void solvePointQuad(PointJointQuad& q, std::span<BodyState> states, const Softness& soft) {
-    BodyState scratch[8];
-    const QuadBodies bodies = bodiesOf(q, states, scratch);
-    Lanes a = load(bodies.a);
-    Lanes b = load(bodies.b);
+    float sink[8][4];
+    const QuadBodies bodies = bodiesOf(q, states, sink);
+    Lanes a = load(bodies.readA);
+    Lanes b = load(bodies.readB);
     const Frame f = frameOf(q, a, b);
     // d = (dpB - dpA) + deltaCenter + (rB - rA)
     const __m128 dx = _mm_add_ps(_mm_add_ps(_mm_sub_ps(b.dpx, a.dpx), _mm_load_ps(q.deltaCenterX)),
