@@ -136,9 +136,9 @@ void solveSoftStep(const SolverStep& step) {
         bool reversePoints = ((i / 2) % 2) == 1;
         // Joints go before the contacts in each pass (Box2D v3's order): the contacts, solved
         // last, win where the two disagree.
-        warmStartJoints(step.joints, step.jointOrder, step.states);
+        warmStartJoints(step.joints, step.pointQuads, step.jointOrder, step.states);
         warmStartContacts(step.constraints, step.states);
-        solveJoints(step.joints, step.jointOrder, step.states, step.jointStep, true);
+        solveJoints(step.joints, step.pointQuads, step.jointOrder, step.states, step.jointStep, true);
         solveContacts(step.constraints, step.states, invH, true, def.contactPushMaxSpeed,
                       backward, reversePoints);
         integratePositions(step.states, h);
@@ -147,7 +147,7 @@ void solveSoftStep(const SolverStep& step) {
         // cards (0.002 x 0.4 m cards) swayed 3-5 mm to one side as its contacts took the load,
         // and each swing slipped the top pair a little at its apex until it fell.
         for (int r = 0; r <= def.relaxIterations; ++r) {
-            solveJoints(step.joints, step.jointOrder, step.states, step.jointStep, false);
+            solveJoints(step.joints, step.pointQuads, step.jointOrder, step.states, step.jointStep, false);
             solveContacts(step.constraints, step.states, invH, false, def.contactPushMaxSpeed,
                           !backward, reversePoints);
         }
@@ -166,14 +166,14 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
         integrateVelocities(step.sims, step.states, bodies, step.gravity, h, def.maxLinearSpeed);
         bool backward = (i % 2) == 1;
         bool reversePoints = ((i / 2) % 2) == 1;
-        warmStartJoints(step.joints, blockJoints, step.states);
+        warmStartJoints(step.joints, step.pointQuads, blockJoints, step.states);
         warmStartWide(wide, firstLevel, endLevel, step.states);
-        solveJoints(step.joints, blockJoints, step.states, step.jointStep, true);
+        solveJoints(step.joints, step.pointQuads, blockJoints, step.states, step.jointStep, true);
         solveWide(wide, firstLevel, endLevel, step.states, invH, true, def.contactPushMaxSpeed,
                   backward, reversePoints);
         integratePositions(step.states, bodies, h);
         for (int r = 0; r <= def.relaxIterations; ++r) {
-            solveJoints(step.joints, blockJoints, step.states, step.jointStep, false);
+            solveJoints(step.joints, step.pointQuads, blockJoints, step.states, step.jointStep, false);
             solveWide(wide, firstLevel, endLevel, step.states, invH, false,
                       def.contactPushMaxSpeed, !backward, reversePoints);
         }
@@ -186,12 +186,12 @@ void solveClassic(const SolverStep& step) {
     float invDt = 1.0f / step.dt;
     integrateVelocities(step.sims, step.states, step.gravity, step.dt, def.maxLinearSpeed);
     prepareClassic(step.constraints, def.restitutionThreshold);
-    warmStartJoints(step.joints, step.jointOrder, step.states);
+    warmStartJoints(step.joints, step.pointQuads, step.jointOrder, step.states);
     warmStartContacts(step.constraints, step.states);
     for (int i = 0; i < def.velocityIterations; ++i) {
         // Box2D 2.4's recipe: velocities only here (a limit not reached yet still stops the
         // bodies at it), position errors in the position iterations below.
-        solveJoints(step.joints, step.jointOrder, step.states, step.jointStep, false);
+        solveJoints(step.joints, step.pointQuads, step.jointOrder, step.states, step.jointStep, false);
         solveVelocitiesClassic(step.constraints, step.states, invDt);
     }
     applyRestitution(step.constraints, step.states, def.restitutionThreshold, step.dt);

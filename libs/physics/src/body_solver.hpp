@@ -21,11 +21,13 @@ struct SolverStep {
     Vec2 gravity{0.0f, 0.0f};
     float dt = 0.0f;
     const SolverDef* def = nullptr;
-    // The step's joints: joints[jointOrder[k]] in order (solveSoftStepBlock() takes its block's
-    // order instead), and the rigid parts' softness at the (sub-)step.
+    // The step's joints: jointOrder's entries in order (packJointPasses(): slots of joints or
+    // quads of plain hinges; solveSoftStepBlock() takes its block's order instead), and the
+    // rigid parts' softness at the (sub-)step.
     std::span<Joint> joints{};
     std::span<const int> jointOrder{};
     JointStep jointStep{};
+    std::span<PointJointQuad> pointQuads{};
 };
 
 // Clamps a body's speed to maxLinearSpeed and its angular speed to what one integration step

@@ -34,8 +34,10 @@ struct ProxyPair {
 /// The World's broad phase: one DynamicTree per BodyType, fat boxes, a move buffer and a
 /// persistent set of pairs found incrementally.
 ///
-/// The caller gives tight boxes; moving proxies are stored fattened by kAabbMargin (static ones
-/// are not fattened), and a move only touches the tree when the tight box leaves the fat one.
+/// The caller gives tight boxes; moving proxies are stored fattened by kAabbMargin and, when
+/// moved with a displacement, stretched two displacements ahead (static ones are not
+/// fattened); a move only touches the tree when the tight box swept by the displacement leaves
+/// the fat one, or the fat one is far larger than needed.
 /// updatePairs() queries the trees for the proxies moved since the last update only: dynamic
 /// against every tree, kinematic and static against the dynamic tree, so static-static (and
 /// kinematic-kinematic, kinematic-static) pairs are never looked for. Pairs stay in the set
@@ -44,6 +46,11 @@ struct ProxyPair {
 /// userData is the shape index and must fit in 32 bits; two proxies never share a userData.
 class BroadPhase {
 public:
+    /// updatePairs()'s default query mask: every category.
+    struct AllCategories {
+        std::uint64_t operator()(std::uint64_t) const { return DynamicTree::kAllBits; }
+    };
+
     /// Adds a proxy for the tight box `aabb` and buffers it as moved, so the next
     /// updatePairs() finds its pairs. Returns its proxy key. Throws core::Error on a bad box.
     /// The proxy enters its tree deferred (DynamicTree::createProxyDeferred()): the trees take
@@ -53,9 +60,12 @@ public:
     /// Removes the proxy and every pair it is part of. Cheap when it has no pairs left (the
     /// World usually removes them first); otherwise one pass over the pair table.
     void destroyProxy(int proxyKey);
-    /// Reports the new tight box. Returns true (and buffers a move) when it left the fat box,
-    /// which is then recomputed around it.
-    bool moveProxy(int proxyKey, const Aabb& aabb);
+    /// Reports the new tight box and the shape's expected displacement over the next step
+    /// (metres; zero for a shape placed by hand). Returns true (and buffers a move) when the box
+    /// swept by the displacement left the fat box, or the fat box is more than four margins
+    /// wider or taller than a new one would be; the fat box is then recomputed: the tight box
+    /// plus kAabbMargin, stretched by two displacements in their direction.
+    bool moveProxy(int proxyKey, const Aabb& aabb, Vec2 displacement = {0.0f, 0.0f});
     /// Buffers the proxy as moved so the next update looks for its pairs again (e.g. after its
     /// filter changed or its body woke up).
     void bufferMove(int proxyKey);
@@ -82,8 +92,11 @@ public:
     /// `bool shouldPair(std::uint64_t userDataA, std::uint64_t userDataB)` (A < B) about each,
     /// adds the accepted ones to the set and lists them in newPairs(), sorted by (A, B).
     /// Clears the move buffer. With nothing moved it queries nothing.
-    template <class ShouldPair>
-    void updatePairs(ShouldPair&& shouldPair);
+    /// `std::uint64_t queryMask(std::uint64_t userData)` gives the category bits a moved
+    /// proxy's partners must share a bit with (the trees skip the others whole); it must
+    /// admit every partner shouldPair() could accept, from either side (default: all bits).
+    template <class ShouldPair, class QueryMask = AllCategories>
+    void updatePairs(ShouldPair&& shouldPair, QueryMask&& queryMask = QueryMask{});
 
     /// The pairs the last updatePairs() added, sorted; valid until the next updatePairs().
     [[nodiscard]] std::span<const ProxyPair> newPairs() const { return newPairs_; }
@@ -142,8 +155,8 @@ private:
     int queryCount_ = 0;
 };
 
-template <class ShouldPair>
-void BroadPhase::updatePairs(ShouldPair&& shouldPair) {
+template <class ShouldPair, class QueryMask>
+void BroadPhase::updatePairs(ShouldPair&& shouldPair, QueryMask&& queryMask) {
     newPairs_.clear();
     queryCount_ = 0;
     for (DynamicTree& t : trees_) {
@@ -157,11 +170,12 @@ void BroadPhase::updatePairs(ShouldPair&& shouldPair) {
         const DynamicTree& own = trees_[treeIndex(key)];
         const Aabb box = own.aabb(proxyIdOf(key));
         const std::uint64_t ud = own.userData(proxyIdOf(key));
+        const std::uint64_t mask = queryMask(ud);
 
         auto queryTree = [&](BodyType otherType) {
             ++queryCount_;
             trees_[static_cast<std::size_t>(otherType)].query(
-                box, DynamicTree::kAllBits, [&](int otherId, std::uint64_t otherUd) {
+                box, mask, [&](int otherId, std::uint64_t otherUd) {
                     const int otherKey = makeProxyKey(otherId, otherType);
                     // When both moved, the one with the lower key reports the pair (the queries
                     // are symmetric: each one's query covers the other's tree).

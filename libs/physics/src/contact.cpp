@@ -115,9 +115,9 @@ void World::Impl::destroyContacts(int shapeIndex) {
 
 void World::Impl::updateContacts(float dt) {
     detail::Simulation& s = sim;
-    broadPhase.updatePairs([this](std::uint64_t a, std::uint64_t b) {
-        return shouldPair(static_cast<int>(a), static_cast<int>(b));
-    });
+    broadPhase.updatePairs(
+        [this](std::uint64_t a, std::uint64_t b) { return shouldPair(static_cast<int>(a), static_cast<int>(b)); },
+        [this](std::uint64_t ud) { return pairQueryMask(static_cast<int>(ud)); });
     for (const detail::ProxyPair& p : broadPhase.newPairs()) {
         createContact(static_cast<int>(p.userDataA), static_cast<int>(p.userDataB));
     }

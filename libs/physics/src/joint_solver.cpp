@@ -181,16 +181,26 @@ void storeJointReaction(Joint& j, std::span<const BodyState> states, float invH)
     j.reactionTorque = invH * torque;
 }
 
-void warmStartJoints(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states) {
+void warmStartJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
+                     std::span<BodyState> states) {
     for (int k : order) {
-        warmStartJoint(joints[static_cast<std::size_t>(k)], states);
+        if (k < 0) {
+            warmStartPointQuad(quads[static_cast<std::size_t>(~k)], states);
+        } else {
+            warmStartJoint(joints[static_cast<std::size_t>(k)], states);
+        }
     }
 }
 
-void solveJoints(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
-                 const JointStep& step, bool useBias) {
+void solveJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
+                 std::span<BodyState> states, const JointStep& step, bool useBias) {
+    const Softness soft = rigidSoftness(step, useBias);
     for (int k : order) {
-        solveJoint(joints[static_cast<std::size_t>(k)], states, step, useBias);
+        if (k < 0) {
+            solvePointQuad(quads[static_cast<std::size_t>(~k)], states, soft);
+        } else {
+            solveJoint(joints[static_cast<std::size_t>(k)], states, step, useBias);
+        }
     }
 }
 

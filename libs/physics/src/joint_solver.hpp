@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 // Joints as the world stores them (one slot each, every type's fields in one struct) and the
 // solver passes over them. The passes mirror the contacts': prepare once per step, then per
@@ -94,6 +95,51 @@ struct alignas(64) Joint {
 };
 static_assert(offsetof(Joint, maxMotorForce) + sizeof(float) <= 128, "the solver's fields fit two cache lines");
 
+// Whether a prepared joint is a plain hinge: a revolute joint with nothing but its point (no
+// spring, motor or limit: a chain's, a net's, or a ragdoll's hinge without limits). The soft
+// step solves those four at a time (PointJointQuad).
+inline bool isPointJoint(const Joint& j) {
+    return j.type == JointType::Revolute && !j.enableSpring && !j.enableMotor && !j.enableLimit;
+}
+
+// Four plain hinges that share no moving body, as the soft step's passes read them: their
+// prepared fields lane by lane (a copy of the joints' own, made once a step by
+// packJointPasses()), solved together with the revolute joint's arithmetic in each lane, so
+// each lane's results are the bits the joint alone would get. Their impulses go back to the
+// joints once after the step (storePointJointQuads()). A lane whose slot is -1 is padding: no
+// bodies, no mass, no impulse.
+struct alignas(64) PointJointQuad {
+    int indexA[4] = {-1, -1, -1, -1}; // BodyState indices this step, -1: static or asleep
+    int indexB[4] = {-1, -1, -1, -1};
+    int slot[4] = {-1, -1, -1, -1}; // the joint slot
+    float invInertiaA[4] = {};
+    float invInertiaB[4] = {};
+    float invMassAx[4] = {};
+    float invMassAy[4] = {};
+    float invMassBx[4] = {};
+    float invMassBy[4] = {};
+    float anchorAx[4] = {};
+    float anchorAy[4] = {};
+    float anchorBx[4] = {};
+    float anchorBy[4] = {};
+    float deltaCenterX[4] = {};
+    float deltaCenterY[4] = {};
+    float impulseX[4] = {};
+    float impulseY[4] = {};
+};
+
+// The passes' order from the prepared joints joints[slots[k]] in order, levels[k] their
+// levels (ascending; joints of one level share no moving body): pass entries appended to
+// `entries`, k >= 0 the joint slot k, k < 0 the quad quads[~k]. With `quadsAllowed`, the plain
+// hinges of each level are packed four at a time into quads appended to `quads` (the last
+// one of a level padded; a single one left over stays a slot) and go before the level's other
+// joints; a level's joints share no body, so this order gives the same results as slot order.
+void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
+                     bool quadsAllowed, std::vector<PointJointQuad>& quads, std::vector<int>& entries);
+// The quads' accumulated impulses back to their joints, and their reactions as
+// storeJointReaction() gives a revolute joint's (invH: 1 / the sub-step).
+void storePointJointQuads(std::span<const PointJointQuad> quads, std::span<Joint> joints, float invH);
+
 // What a pass needs besides the joint and the bodies' states.
 struct JointStep {
     float h = 0.0f; // the (sub-)step the velocities act over
@@ -125,13 +171,19 @@ void solveJoint(Joint& j, std::span<BodyState> states, const JointStep& step, bo
 // reactionForce and reactionTorque from the accumulated impulses of the last (sub-)step.
 void storeJointReaction(Joint& j, std::span<const BodyState> states, float invH);
 
-// The passes over the joints joints[order[k]] in order.
-void warmStartJoints(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states);
-void solveJoints(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
-                 const JointStep& step, bool useBias);
+// The passes over the entries of `order` in order (as packJointPasses() makes them: joint
+// slots, or quads of plain hinges).
+void warmStartJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
+                     std::span<BodyState> states);
+void solveJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
+                 std::span<BodyState> states, const JointStep& step, bool useBias);
+// One quad's passes (joint_point.cpp).
+void warmStartPointQuad(PointJointQuad& q, std::span<BodyState> states);
+void solvePointQuad(PointJointQuad& q, std::span<BodyState> states, const Softness& soft);
 
 // Classic mode: one non-linear Gauss-Seidel pass over the rigid parts' position errors
-// (joint_position.cpp). True when every error was within the slops before the pass.
+// (joint_position.cpp). True when every error was within the slops before the pass. `order`
+// holds joint slots only (classic mode solves no point joints).
 bool solveJointPositions(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states);
 
 // Per-type passes (joint_<type>.cpp).

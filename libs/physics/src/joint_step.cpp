@@ -3,11 +3,26 @@
 // step's joints, sorting them into the wide solver's blocks and reading their reactions.
 #include "world_impl.hpp"
 
+#include <algorithm>
+
 namespace e2d::physics {
 
 using detail::kNullIndex;
 
 void World::Impl::wakeJointedBodies() {
+    // Nothing to wake while every moving body is awake (a scene without sleeping): a pass over
+    // the bodies is cheaper than one over the joints and both their bodies.
+    bool anyAsleep = false;
+    for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
+        const detail::Body& b = bodies[bi];
+        if (b.alive && b.enabled && b.type != BodyType::Static && !b.motion.awake) {
+            anyAsleep = true;
+            break;
+        }
+    }
+    if (!anyAsleep) {
+        return;
+    }
     for (const detail::Joint& j : joints) {
         if (!j.alive || j.type == JointType::Mouse) {
             continue;
@@ -26,6 +41,9 @@ void World::Impl::prepareJoints(float dt, float h) {
     (void)dt;
     detail::Simulation& s = sim;
     s.activeJoints.clear();
+    s.activeJointLevels.clear();
+    s.jointOrder.clear();
+    s.pointQuads.clear();
     s.jointBodies.clear();
     if (joints.empty()) {
         return;
@@ -71,33 +89,113 @@ void World::Impl::prepareJoints(float dt, float h) {
         s.activeJoints.push_back(static_cast<int>(ji));
         s.jointBodies.push_back({j.indexA, j.indexB});
     }
+    orderJoints();
+}
+
+void World::Impl::orderJoints() {
+    detail::Simulation& s = sim;
+    const std::size_t n = s.activeJoints.size();
+    // Levels as the contacts' (ConstraintLevels): a joint goes one level above the last level
+    // of each body it moves, so every body meets its joints in slot order and the passes'
+    // results are those of slot order, bit for bit; but the joints of a level share no body,
+    // so consecutive ones do not wait for each other's velocity writes (a joint net in slot
+    // order is one long chain of them).
+    s.jointBodyLevel.assign(s.states.size(), -1);
+    s.jointLevelStart.assign(1, 0);
+    s.jointLevel.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const detail::Simulation::ConstraintBodies& jb = s.jointBodies[k];
+        // A static or sleeping side (-1) is a fixed state of the joint's own.
+        const int lastA = jb.indexA >= 0 ? s.jointBodyLevel[static_cast<std::size_t>(jb.indexA)] : -1;
+        const int lastB = jb.indexB >= 0 ? s.jointBodyLevel[static_cast<std::size_t>(jb.indexB)] : -1;
+        const int level = std::max(lastA, lastB) + 1;
+        if (jb.indexA >= 0) {
+            s.jointBodyLevel[static_cast<std::size_t>(jb.indexA)] = level;
+        }
+        if (jb.indexB >= 0) {
+            s.jointBodyLevel[static_cast<std::size_t>(jb.indexB)] = level;
+        }
+        s.jointLevel[k] = level;
+        if (static_cast<std::size_t>(level) + 1 >= s.jointLevelStart.size()) {
+            s.jointLevelStart.resize(static_cast<std::size_t>(level) + 2, 0);
+        }
+        ++s.jointLevelStart[static_cast<std::size_t>(level) + 1];
+    }
+    for (std::size_t l = 1; l < s.jointLevelStart.size(); ++l) {
+        s.jointLevelStart[l] += s.jointLevelStart[l - 1];
+    }
+    // Stable counting sort by level; activeJoints and jointBodies follow, activeJointLevels
+    // says each one's level.
+    s.jointSorted.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        s.jointSorted[static_cast<std::size_t>(s.jointLevelStart[static_cast<std::size_t>(s.jointLevel[k])]++)] =
+            static_cast<int>(k);
+    }
+    s.jointScratch.assign(s.activeJoints.begin(), s.activeJoints.end());
+    s.jointBodiesScratch.assign(s.jointBodies.begin(), s.jointBodies.end());
+    s.activeJointLevels.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t from = static_cast<std::size_t>(s.jointSorted[k]);
+        s.activeJoints[k] = s.jointScratch[from];
+        s.jointBodies[k] = s.jointBodiesScratch[from];
+        s.activeJointLevels[k] = s.jointLevel[from];
+    }
+}
+
+void World::Impl::packJoints() {
+    detail::Simulation& s = sim;
+    s.jointOrder.clear();
+    s.pointQuads.clear();
+    // Classic mode's position pass reads the joint slots: no quads there.
+    detail::packJointPasses(joints, s.activeJoints, s.activeJointLevels, s.def.mode == SolverMode::SoftStep,
+                            s.pointQuads, s.jointOrder);
 }
 
 void World::Impl::assignJointBlocks() {
     detail::Simulation& s = sim;
     const std::size_t blocks = s.blockBodyStart.size() - 1;
+    const std::size_t n = s.activeJoints.size();
     s.blockJointStart.assign(blocks + 1, 0);
-    s.blockJoints.resize(s.activeJoints.size());
     auto blockOf = [&](std::size_t k) {
         const detail::Simulation::ConstraintBodies& jb = s.jointBodies[k];
         return s.bodyBlock[static_cast<std::size_t>(jb.indexA >= 0 ? jb.indexA : jb.indexB)];
     };
-    for (std::size_t k = 0; k < s.activeJoints.size(); ++k) {
+    for (std::size_t k = 0; k < n; ++k) {
         ++s.blockJointStart[static_cast<std::size_t>(blockOf(k)) + 1];
     }
     for (std::size_t b = 0; b < blocks; ++b) {
         s.blockJointStart[b + 1] += s.blockJointStart[b];
     }
+    // Each block's joints in pass order (a stable sort by block keeps the levels ascending),
+    // then packed block by block; blockJointStart becomes the entries' bounds.
     s.levelNext.assign(s.blockJointStart.begin(), s.blockJointStart.end() - 1);
-    for (std::size_t k = 0; k < s.activeJoints.size(); ++k) {
-        s.blockJoints[static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(blockOf(k))]++)] =
-            s.activeJoints[k];
+    s.jointScratch.resize(n);
+    s.jointSorted.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t to = static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(blockOf(k))]++);
+        s.jointScratch[to] = s.activeJoints[k];
+        s.jointSorted[to] = s.activeJointLevels[k];
+    }
+    s.blockJoints.clear();
+    s.pointQuads.clear();
+    int first = 0;
+    for (std::size_t b = 0; b < blocks; ++b) {
+        const int end = s.blockJointStart[b + 1];
+        const auto count = static_cast<std::size_t>(end - first);
+        detail::packJointPasses(joints, std::span<const int>(s.jointScratch).subspan(static_cast<std::size_t>(first), count),
+                                std::span<const int>(s.jointSorted).subspan(static_cast<std::size_t>(first), count),
+                                true, s.pointQuads, s.blockJoints);
+        first = end;
+        s.blockJointStart[b + 1] = static_cast<int>(s.blockJoints.size());
     }
 }
 
-void World::Impl::storeJointReactions(float invH) {
-    for (int ji : sim.activeJoints) {
-        detail::storeJointReaction(joint(ji), sim.states, invH);
+void World::Impl::storeJointReactions(float invH, bool wide) {
+    detail::storePointJointQuads(sim.pointQuads, joints, invH);
+    for (int entry : wide ? sim.blockJoints : sim.jointOrder) {
+        if (entry >= 0) {
+            detail::storeJointReaction(joint(entry), sim.states, invH);
+        }
     }
 }
 

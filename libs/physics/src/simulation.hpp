@@ -9,6 +9,7 @@
 #include "constraint_graph.hpp"
 #include "contact_solver.hpp"
 #include "contact_solver_wide.hpp"
+#include "joint_solver.hpp"
 #include "solver_body.hpp"
 
 #include <cstdint>
@@ -156,10 +157,22 @@ struct Simulation {
     std::vector<ConstraintBodies> lastConstraintBodies;
     std::vector<unsigned char> lastStateRigid;
     // Joints this step (World::Impl::prepareJoints()): the world's joint slots with a moving
-    // side, in slot order, and their sides' BodyState indices (-1: static or asleep); last
-    // solve's, for the wide schedule's check; the wide solver's joints by block: block b's are
-    // blockJoints[blockJointStart[b] .. blockJointStart[b + 1]), slot order within a block.
+    // side, in pass order (World::Impl::orderJoints(): by level, every body meeting its joints
+    // in slot order) with their levels, and their sides' BodyState indices (-1: static or
+    // asleep); last solve's, for the wide schedule's check; the scalar solvers' pass entries
+    // (jointOrder, packJointPasses(): slots, or quads of pointQuads); the wide solver's by
+    // block: block b's entries are blockJoints[blockJointStart[b] .. blockJointStart[b + 1]).
+    // The rest is scratch.
     std::vector<int> activeJoints;
+    std::vector<int> activeJointLevels;
+    std::vector<int> jointOrder;
+    std::vector<PointJointQuad> pointQuads;
+    std::vector<int> jointBodyLevel;
+    std::vector<int> jointLevel;
+    std::vector<int> jointLevelStart;
+    std::vector<int> jointSorted;
+    std::vector<int> jointScratch;
+    std::vector<ConstraintBodies> jointBodiesScratch;
     std::vector<ConstraintBodies> jointBodies;
     std::vector<ConstraintBodies> lastJointBodies;
     std::vector<int> blockJointStart;

@@ -184,6 +184,13 @@ void World::Impl::destroyShapeAt(int shapeIndex) {
     updateMass(bodyIndex);
 }
 
+std::uint64_t World::Impl::pairQueryMask(int shapeIndex) const {
+    // shouldCollide(): a shape pairs only with categories in its mask, unless both are in the
+    // same positive group.
+    const Filter& f = shape(shapeIndex).filter;
+    return f.group > 0 ? DynamicTree::kAllBits : f.maskBits;
+}
+
 bool World::Impl::shouldPair(int shapeA, int shapeB) const {
     const detail::Shape& a = shape(shapeA);
     const detail::Shape& b = shape(shapeB);
@@ -191,6 +198,10 @@ bool World::Impl::shouldPair(int shapeA, int shapeB) const {
         return false;
     }
     if (a.isSensor && b.isSensor) {
+        return false;
+    }
+    // Before the bodies are read: a filtered net or pile rejects most of its candidates here.
+    if (!shouldCollide(a.filter, b.filter)) {
         return false;
     }
     // The broad phase already skips these (one tree per body type); this keeps the rule true
@@ -204,9 +215,6 @@ bool World::Impl::shouldPair(int shapeA, int shapeB) const {
         if (!wide || (typeA == BodyType::Static && typeB == BodyType::Static)) {
             return false;
         }
-    }
-    if (!shouldCollide(a.filter, b.filter)) {
-        return false;
     }
     if (body(a.body).jointHead != kNullIndex && body(b.body).jointHead != kNullIndex &&
         jointBlocksCollision(a.body, b.body)) {

@@ -150,6 +150,9 @@ struct World::Impl {
     void destroyShapeAt(int shapeIndex);
     // Whether two shapes may become a candidate pair (the broad phase's filter).
     [[nodiscard]] bool shouldPair(int shapeA, int shapeB) const;
+    // The categories a moved shape's broad-phase query looks at: every partner shouldPair()
+    // could accept (BroadPhase::updatePairs()).
+    [[nodiscard]] std::uint64_t pairQueryMask(int shapeIndex) const;
 
     // --- dynamics (world_step.cpp, contact.cpp, island.cpp, world_dynamics.cpp) ---
 
@@ -206,13 +209,20 @@ struct World::Impl {
     [[nodiscard]] bool jointBlocksCollision(int bodyA, int bodyB) const;
     // Wakes the sleeping dynamic side of every joint whose other side is awake (before solve()).
     void wakeJointedBodies();
-    // The step's joints: s.activeJoints (joints with a moving side, in slot order), prepared,
-    // and s.jointBodies (their BodyState indices).
+    // The step's joints: s.activeJoints (joints with a moving side, in pass order) and
+    // s.activeJointLevels, prepared, and s.jointBodies (their BodyState indices).
     void prepareJoints(float dt, float h);
-    // The wide solver's joints by block (s.blockJointStart, s.blockJoints), after scheduleWide().
+    // Puts the prepared joints in pass order (levels, see there; prepareJoints()).
+    void orderJoints();
+    // The scalar solvers' pass entries (s.jointOrder, s.pointQuads; packJointPasses()).
+    void packJoints();
+    // The wide solver's pass entries by block (s.blockJointStart, s.blockJoints, s.pointQuads),
+    // after scheduleWide().
     void assignJointBlocks();
-    // Reactions of the active joints from their impulses (invH: 1 / the sub-step).
-    void storeJointReactions(float invH);
+    // The quads' impulses back to their joints, then the reactions of the active joints from
+    // their impulses (invH: 1 / the sub-step).
+    // wide: the step's entries are the wide solver's (s.blockJoints), else s.jointOrder.
+    void storeJointReactions(float invH, bool wide);
 };
 
 } // namespace e2d::physics

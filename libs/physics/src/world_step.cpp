@@ -337,6 +337,9 @@ void World::Impl::solve(float dt) {
         }
     }
     s.wideScheduleValid = wide;
+    if (!wide && !s.activeJoints.empty()) {
+        packJoints();
+    }
 
     if (wide) {
         // Built block by block right before each block is solved (below).
@@ -383,7 +386,8 @@ void World::Impl::solve(float dt) {
     const detail::JointStep jointStep{
         integrationStep, 1.0f / integrationStep,
         detail::makeSoftness(detail::kJointHertz, detail::kJointDampingRatio, integrationStep)};
-    detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def, joints, s.activeJoints, jointStep};
+    detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def,
+                            joints, s.jointOrder, jointStep, s.pointQuads};
     if (wide) {
         // Contacts are visited in slot order, twice a block: gathered before it is solved and
         // their impulses stored right after, while its lanes are in cache. A level's contacts
@@ -470,7 +474,7 @@ void World::Impl::solve(float dt) {
         detail::solveClassic(step);
     }
     if (!s.activeJoints.empty()) {
-        storeJointReactions(1.0f / integrationStep);
+        storeJointReactions(1.0f / integrationStep, wide);
     }
     detail::finalizePositions(s.sims, s.states);
 
@@ -511,10 +515,7 @@ void World::Impl::solve(float dt) {
             detail::Shape& sh = shape(si);
             sh.aabb = computeAabb(sh.geometry, b.transform);
             if (sh.proxyKey != kNullIndex) {
-                Aabb swept = sh.aabb;
-                swept.lower += Vec2{std::min(ahead.x, 0.0f), std::min(ahead.y, 0.0f)};
-                swept.upper += Vec2{std::max(ahead.x, 0.0f), std::max(ahead.y, 0.0f)};
-                broadPhase.moveProxy(sh.proxyKey, swept);
+                broadPhase.moveProxy(sh.proxyKey, sh.aabb, ahead);
             }
         }
     }
