@@ -26,6 +26,11 @@ struct SolverStep {
     std::span<Joint> joints{};
     std::span<const int> jointOrder{};
     JointStep jointStep{};
+    // Soft step: biased solve sweeps per sub-step beyond the first, and relax sweeps on top of
+    // def->relaxIterations (kPushOutSolveIterations and kPushOutRelaxIterations while shapes
+    // are pushed apart, see World::Impl::solve()).
+    int extraSolveIterations = 0;
+    int extraRelaxIterations = 0;
 };
 
 // Clamps a body's speed to maxLinearSpeed and its angular speed to what one integration step

@@ -57,6 +57,21 @@ void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyVi
     prepareBlock(c);
 }
 
+bool isPushedApart(const Manifold& m, float linearInvMass, Softness softness) {
+    const float stiffness = softness.massScale * softness.biasRate;
+    if (!(stiffness > 0.0f)) {
+        return false; // not a soft contact: nothing to push apart
+    }
+    const float restPerImpulse = kPushOutRestMargin * softness.impulseScale * linearInvMass / stiffness;
+    for (int i = 0; i < m.pointCount; ++i) {
+        const ManifoldPoint& mp = m.points[i];
+        if (-mp.separation > kLinearSlop + restPerImpulse * mp.normalImpulse) {
+            return true;
+        }
+    }
+    return false;
+}
+
 void warmStartContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states) {
     BodyState dummyA;
     BodyState dummyB;
