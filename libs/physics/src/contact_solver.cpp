@@ -58,9 +58,14 @@ void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyVi
 }
 
 bool isPushedApart(const Manifold& m, float linearInvMass, Softness softness) {
+    // Most contacts overlap less than the slop: no division for them.
+    bool deep = false;
+    for (int i = 0; i < m.pointCount; ++i) {
+        deep = deep || m.points[i].separation < -kLinearSlop;
+    }
     const float stiffness = softness.massScale * softness.biasRate;
-    if (!(stiffness > 0.0f)) {
-        return false; // not a soft contact: nothing to push apart
+    if (!deep || !(stiffness > 0.0f)) {
+        return false; // shallow, or not a soft contact
     }
     const float restPerImpulse = kPushOutRestMargin * softness.impulseScale * linearInvMass / stiffness;
     for (int i = 0; i < m.pointCount; ++i) {

@@ -180,6 +180,37 @@ TEST(ContactSoftness, CapsHertzAtAQuarterOfTheSubStepRate) {
     EXPECT_FLOAT_EQ(s.vsStatic.biasRate, expectedStatic.biasRate);
 }
 
+TEST(PushOut, OverlapBeyondWhatTheLoadExplainsIsPushedApart) {
+    // A soft contact at rest carries lambda = m h w^2 s per sub-step at overlap s (m: the normal
+    // mass; here two unit masses, m = 0.5 kg, the point's rotation left out). 38 Hz, 4 sub-steps.
+    const float h = kDt / 4.0f;
+    const float omega = 2.0f * 3.14159265f * 38.0f;
+    const Softness soft = makeSoftness(38.0f, 12.5f, h);
+    const float invMass = 2.0f; // 1/m_A + 1/m_B
+    auto manifold = [](float separation, float impulse) {
+        Manifold m;
+        m.normal = {0.0f, 1.0f};
+        m.pointCount = 1;
+        m.points[0].separation = separation;
+        m.points[0].normalImpulse = impulse;
+        return m;
+    };
+    // Shallower than the slop: never, whatever it carries.
+    EXPECT_FALSE(isPushedApart(manifold(-0.9f * kLinearSlop, 0.0f), invMass, soft));
+    // Spawned 4 cm deep, carrying nothing: pushed apart.
+    EXPECT_TRUE(isPushedApart(manifold(-0.04f, 0.0f), invMass, soft));
+    // 4 cm deep under the load that rests there: not.
+    const float restImpulse = 0.5f * h * omega * omega * 0.04f;
+    EXPECT_FALSE(isPushedApart(manifold(-0.04f, restImpulse), invMass, soft));
+    // The margin: a load that explains a quarter of the overlap (minus the slop) still does; a
+    // fifth does not.
+    const float quarter = 0.5f * h * omega * omega * (0.04f - kLinearSlop) / kPushOutRestMargin;
+    EXPECT_FALSE(isPushedApart(manifold(-0.04f, 1.01f * quarter), invMass, soft));
+    EXPECT_TRUE(isPushedApart(manifold(-0.04f, 0.8f * quarter), invMass, soft));
+    // A rigid contact (no softness) has nothing to push apart.
+    EXPECT_FALSE(isPushedApart(manifold(-0.04f, 0.0f), invMass, makeSoftness(0.0f, 1.0f, h)));
+}
+
 TEST(IntegrateVelocities, AppliesGravityForceDampingAndSpeedCap) {
     BodySim sim;
     sim.invMass = {0.5f, 0.5f};
