@@ -286,6 +286,10 @@ struct Targets {
 // glyph atlases fill at the first text frame; neither is what a frame costs.
 // (Targets::warmup, --e2d_warmup=N; the short CTest run uses 1.)
 
+// Every engine samples its textures the same way: nearest texel, SFML's default (an
+// sf::Texture that is not smooth), so each draws the same pixels with the same work.
+constexpr TextureDef kSameFilter{.filter = TextureFilter::Nearest};
+
 // e2d's Renderer into an offscreen framebuffer of the hidden window.
 void frameE2d(benchmark::State& state, Targets& targets, Scene scene, const RendererDef& base) {
     targets.activateE2d();
@@ -294,10 +298,10 @@ void frameE2d(benchmark::State& state, Targets& targets, Scene scene, const Rend
     Renderer renderer(*targets.window, def);
     std::vector<TextureId> textures;
     if (scene.sheet) {
-        textures.push_back(renderer.createTexture(Image{kFrame * 8, kFrame, sheetImage()}));
+        textures.push_back(renderer.createTexture(Image{kFrame * 8, kFrame, sheetImage()}, kSameFilter));
     } else {
         for (int t = 0; t < kTextures; ++t) {
-            textures.push_back(renderer.createTexture(Image{16, 16, textureImage(t, 16)}));
+            textures.push_back(renderer.createTexture(Image{16, 16, textureImage(t, 16)}, kSameFilter));
         }
     }
     std::vector<SpriteId> ids;
@@ -514,8 +518,8 @@ void main() { colour = texture(image, uv); })";
     glGenTextures(static_cast<GLsizei>(textures.size()), textures.data());
     for (std::size_t t = 0; t < textures.size(); ++t) {
         glBindTexture(GL_TEXTURE_2D, textures[t]);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         const std::vector<std::uint8_t> rgba = scene.sheet ? sheetImage() : textureImage(static_cast<int>(t), 16);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, scene.sheet ? kFrame * 8 : 16, scene.sheet ? kFrame : 16, 0, GL_RGBA,
                      GL_UNSIGNED_BYTE, rgba.data());

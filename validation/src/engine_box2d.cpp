@@ -12,7 +12,9 @@ namespace {
 
 float skinOf(const b2Fixture* fixture) {
     const b2Shape::Type type = fixture->GetType();
-    return type == b2Shape::e_polygon || type == b2Shape::e_edge ? b2_polygonRadius : 0.0f;
+    return type == b2Shape::e_polygon || type == b2Shape::e_edge || type == b2Shape::e_chain
+               ? b2_polygonRadius
+               : 0.0f;
 }
 
 class Box2DEngine final : public Engine {
@@ -104,7 +106,13 @@ std::string box2DNotes() {
            "(b2_polygonRadius), so boxes placed exactly touching start 0.02 m overlapped and "
            "are pushed apart; linear slop 0.005 m; restitution threshold 1 m/s; at most 2 m of "
            "travel per step (b2_maxTranslation); segments are two-sided b2EdgeShapes; a capsule "
-           "is two circles and a box on one body; penetration is measured between the shapes "
+           "is two circles and a box on one body; a chain is a b2ChainShape (one-sided, like "
+           "e2d's; an open end without a ghost point gets its end segment continued straight on, "
+           "where e2d's end is free and round) or, with a material per segment, its one-sided "
+           "child edges as separate fixtures; wheel and mouse springs take b2LinearStiffness of "
+           "the scene's frequency for the two bodies' masses (e2d's soft springs use the "
+           "constraint's effective mass); revolute and prismatic springs do not exist in 2.4.1, "
+           "so such a scene fails on Box2D with that reason; penetration is measured between the shapes "
            "as the scene gives them (skin excluded), so a resting Box2D box shows a gap of up to "
            "0.015 m, not an overlap. Friction and restitution mix as sqrt(f1 f2) and max(e1, e2).";
 }

@@ -32,6 +32,8 @@ Recorder::Recorder(const scenes::SceneDesc& scene, float settle) {
         const scenes::JointDesc& j = scene.joints[i];
         if (j.kind == scenes::JointKind::Revolute || j.kind == scenes::JointKind::Weld) {
             joints_.push_back({i, -1.0f});
+        } else if (j.kind == scenes::JointKind::Wheel) {
+            joints_.push_back({i, -1.0f, j.bodyA, scene.bodies[std::size_t(j.bodyA)].angle, j.axis});
         } else if (j.kind == scenes::JointKind::Distance && !j.enableSpring && !j.enableLimit) {
             const glm::vec2 d = j.anchorB - j.anchorA;
             joints_.push_back({i, j.length > 0.0f ? j.length : std::sqrt(d.x * d.x + d.y * d.y)});
@@ -68,8 +70,18 @@ void Recorder::record(const Engine& engine, double stepMs) {
         for (const MeasuredJoint& j : joints_) {
             const auto& [a, b] = anchors_[j.index];
             const glm::vec2 d = b - a;
-            const float gap = std::sqrt(d.x * d.x + d.y * d.y);
-            const float error = j.rest < 0.0f ? gap : std::abs(gap - j.rest);
+            float error = 0.0f;
+            if (j.bodyA >= 0) {
+                // Wheel: B's anchor off the axis, which turns with body A.
+                const float turn = states_[static_cast<std::size_t>(j.bodyA)].angle - j.angleA;
+                const float c = std::cos(turn);
+                const float s = std::sin(turn);
+                const glm::vec2 axis{c * j.axis.x - s * j.axis.y, s * j.axis.x + c * j.axis.y};
+                error = std::abs(axis.x * d.y - axis.y * d.x);
+            } else {
+                const float gap = std::sqrt(d.x * d.x + d.y * d.y);
+                error = j.rest < 0.0f ? gap : std::abs(gap - j.rest);
+            }
             // As for speeds: a NaN must reach the check.
             worst = std::isfinite(worst) && !(error <= worst) ? error : worst;
         }

@@ -33,8 +33,9 @@ struct Recording {
     std::vector<glm::vec2> momentum;                   ///< kg m/s, dynamic bodies
     std::vector<float> maxSpeed;                       ///< m/s, fastest dynamic body
     /// m, per instant: the largest joint error, over the revolute and weld joints the distance
-    /// between their two anchors, over rigid distance joints |length - rest length|; empty when
-    /// the scene has none of these.
+    /// between their two anchors, over wheel joints the distance of B's anchor off the axis
+    /// through A's anchor (the axis turning with body A), over rigid distance joints
+    /// |length - rest length|; empty when the scene has none of these.
     std::vector<float> jointError;
     std::vector<float> penetration;                    ///< m, deepest contact
     std::vector<bool> allAsleep;                       ///< every dynamic body asleep
@@ -66,6 +67,11 @@ private:
     struct MeasuredJoint {
         std::size_t index; // in SceneDesc::joints
         float rest;        // rigid distance joint: the length it holds; < 0: a point joint
+        // Wheel joint: body A's index and starting angle, the axis in world axes at the start;
+        // bodyA < 0 for the other kinds.
+        int bodyA = -1;
+        float angleA = 0.0f;
+        glm::vec2 axis{0.0f};
     };
     std::vector<MeasuredJoint> joints_;
     std::vector<std::pair<glm::vec2, glm::vec2>> anchors_;

@@ -23,6 +23,8 @@ const char* shapeKindName(scenes::ShapeKind kind) {
         return "capsule";
     case scenes::ShapeKind::Segment:
         return "segment";
+    case scenes::ShapeKind::Chain:
+        return "chain";
     }
     return "?";
 }

@@ -274,10 +274,71 @@ std::string indexed(const std::string& path, std::size_t i) {
     return path + "[" + std::to_string(i) + "]";
 }
 
+// A chain's points, loop, ghost points and per-segment materials, with e2d's createChain()
+// rules (consecutive points at least kLinearSlop apart, a loop has no ghosts) said here.
+void parseChain(Object& o, scenes::ShapeDesc& shape) {
+    constexpr std::size_t kMaxChainPoints = 10000;
+    shape.kind = scenes::ShapeKind::Chain;
+    shape.loop = o.boolean("loop", false);
+    const json& points = requireArray(o.require("points"), o.at("points"));
+    const std::size_t minimum = shape.loop ? 3 : 2;
+    if (points.size() < minimum || points.size() > kMaxChainPoints) {
+        fail(o.at("points"), std::string(shape.loop ? "a loop" : "a chain") + " needs " +
+                                 std::to_string(minimum) + " to " + std::to_string(kMaxChainPoints) +
+                                 " points, got " + std::to_string(points.size()));
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const glm::vec2 p = Object::toVec2(points[i], indexed(o.at("points"), i));
+        Object::checkWithinE2d(p, indexed(o.at("points"), i));
+        shape.points.push_back(p);
+    }
+    const std::size_t n = shape.points.size();
+    const std::size_t segments = shape.loop ? n : n - 1;
+    for (std::size_t i = 0; i < segments; ++i) {
+        const std::size_t next = (i + 1) % n;
+        const glm::vec2 d = shape.points[next] - shape.points[i];
+        const float gap = std::sqrt(d.x * d.x + d.y * d.y);
+        if (!(gap >= physics::kLinearSlop)) {
+            fail(indexed(o.at("points"), next),
+                 "must be at least physics::kLinearSlop (" + show(physics::kLinearSlop) +
+                     " m) from points[" + std::to_string(i) + "], got " + show(gap));
+        }
+    }
+    for (const char* key : {"ghostBefore", "ghostAfter"}) {
+        if (!o.has(key)) {
+            continue;
+        }
+        if (shape.loop) {
+            fail(o.at(key), "a loop has no ends, so no ghost points");
+        }
+        const glm::vec2 ghost = Object::toVec2(*o.get(key), o.at(key));
+        Object::checkWithinE2d(ghost, o.at(key));
+        (std::string(key) == "ghostBefore" ? shape.ghostBefore : shape.ghostAfter) = ghost;
+    }
+    if (const json* materials = o.get("materials")) {
+        requireArray(*materials, o.at("materials"));
+        if (materials->size() != 1 && materials->size() != segments) {
+            fail(o.at("materials"), "give one material or one per segment (" + std::to_string(segments) +
+                                        "), got " + std::to_string(materials->size()));
+        }
+        for (std::size_t i = 0; i < materials->size(); ++i) {
+            Object m((*materials)[i], indexed(o.at("materials"), i));
+            scenes::ChainMaterial material;
+            material.friction = m.numberAbove("friction", shape.friction, 0.0f, false);
+            material.restitution = m.numberAbove("restitution", shape.restitution, 0.0f, false);
+            if (material.restitution > 1.0f) {
+                fail(m.at("restitution"), "must be in [0, 1] (e2d's limit), got " + show(material.restitution));
+            }
+            m.finish();
+            shape.materials.push_back(material);
+        }
+    }
+}
+
 scenes::ShapeDesc parseShape(const json& value, const std::string& path) {
     Object o(value, path);
     scenes::ShapeDesc shape;
-    const std::string type = o.choice("type", {"box", "polygon", "circle", "capsule", "segment"});
+    const std::string type = o.choice("type", {"box", "polygon", "circle", "capsule", "segment", "chain"});
     shape.density = o.numberAbove("density", 1.0f, 0.0f, false);
     shape.friction = o.numberAbove("friction", 0.6f, 0.0f, false);
     shape.restitution = o.numberAbove("restitution", 0.0f, 0.0f, false);
@@ -334,6 +395,8 @@ scenes::ShapeDesc parseShape(const json& value, const std::string& path) {
         shape.radius = o.requireNumber("radius");
         Object::checkAbove(shape.radius, o.at("radius"), 0.0f, true);
         shape.center = o.vec2("center", {0.0f, 0.0f});
+    } else if (type == "chain") {
+        parseChain(o, shape);
     } else if (type == "capsule" || type == "segment") {
         shape.kind = type == "capsule" ? scenes::ShapeKind::Capsule : scenes::ShapeKind::Segment;
         shape.point1 = Object::toVec2(o.require("point1"), o.at("point1"));
@@ -617,11 +680,12 @@ Check parseCheck(const json& value, const std::string& path, const Scenario& sce
                                           [](const scenes::JointDesc& j) {
                                               return j.kind == scenes::JointKind::Revolute ||
                                                      j.kind == scenes::JointKind::Weld ||
+                                                     j.kind == scenes::JointKind::Wheel ||
                                                      (j.kind == scenes::JointKind::Distance &&
                                                       !j.enableSpring && !j.enableLimit);
                                           });
         if (!measured) {
-            fail(o.at("type"), "the scene has no joint this check measures (revolute, weld or rigid distance)");
+            fail(o.at("type"), "the scene has no joint this check measures (revolute, weld, wheel or rigid distance)");
         }
         break;
     }
@@ -822,10 +886,14 @@ scenes::JointDesc parseJoint(const json& value, const std::string& path, const s
                              std::size_t generated) {
     Object o(value, path);
     scenes::JointDesc j;
-    const std::string type = o.choice("type", {"revolute", "distance", "prismatic", "weld"});
+    const std::string type =
+        o.choice("type", {"revolute", "distance", "prismatic", "weld", "wheel", "motor", "mouse"});
     j.kind = type == "revolute"    ? scenes::JointKind::Revolute
              : type == "distance"  ? scenes::JointKind::Distance
              : type == "prismatic" ? scenes::JointKind::Prismatic
+             : type == "wheel"     ? scenes::JointKind::Wheel
+             : type == "motor"     ? scenes::JointKind::Motor
+             : type == "mouse"     ? scenes::JointKind::Mouse
                                    : scenes::JointKind::Weld;
     j.bodyA = jointBody(o, "bodyA", scene, generated);
     j.bodyB = jointBody(o, "bodyB", scene, generated);
@@ -876,24 +944,77 @@ scenes::JointDesc parseJoint(const json& value, const std::string& path, const s
         Object::checkWithinE2d(j.maxMotor, o.at(maxKey));
         Object::checkWithinE2d(j.motorSpeed, o.at("motorSpeed"));
     };
+    // A spring of `hertz` (> 0) and `dampingRatio` (>= 0), both at most 1000; `required`: the
+    // joint always has one (mouse), with these defaults.
+    auto spring = [&](bool required, float defaultHertz, float defaultRatio) {
+        if (!required && !o.has("hertz")) {
+            if (o.has("dampingRatio")) {
+                fail(o.at("hertz"), "required field is missing (a spring needs hertz; dampingRatio alone does nothing)");
+            }
+            return;
+        }
+        j.enableSpring = true;
+        j.hertz = o.numberAbove("hertz", defaultHertz, 0.0f, true);
+        j.dampingRatio = o.numberAbove("dampingRatio", defaultRatio, 0.0f, false);
+        if (j.hertz > 1000.0f || j.dampingRatio > 1000.0f) {
+            fail(o.at(j.hertz > 1000.0f ? "hertz" : "dampingRatio"), "must be <= 1000");
+        }
+    };
+    auto axis = [&](glm::vec2 fallback) {
+        const glm::vec2 a = o.vec2("axis", fallback);
+        const float length = std::sqrt(a.x * a.x + a.y * a.y);
+        if (!(length > 1.0e-6f)) {
+            fail(o.at("axis"), "must not be [0, 0]");
+        }
+        j.axis = a / length;
+    };
+    const scenes::BodyDesc& bodyA = scene.bodies[std::size_t(j.bodyA)];
+    const scenes::BodyDesc& bodyB = scene.bodies[std::size_t(j.bodyB)];
     switch (j.kind) {
     case scenes::JointKind::Revolute:
         j.anchorA = point("anchor");
         range("lowerAngle", "upperAngle", true);
         motor("maxMotorTorque");
+        spring(false, 0.0f, 0.0f);
         break;
     case scenes::JointKind::Prismatic: {
         j.anchorA = point("anchor");
-        const glm::vec2 axis = o.vec2("axis", {1.0f, 0.0f});
-        const float length = std::sqrt(axis.x * axis.x + axis.y * axis.y);
-        if (!(length > 1.0e-6f)) {
-            fail(o.at("axis"), "must not be [0, 0]");
-        }
-        j.axis = axis / length;
+        axis({1.0f, 0.0f});
         range("lowerTranslation", "upperTranslation", false);
         motor("maxMotorForce");
+        spring(false, 0.0f, 0.0f);
         break;
     }
+    case scenes::JointKind::Wheel:
+        j.anchorA = point("anchor");
+        axis({0.0f, 1.0f});
+        range("lowerTranslation", "upperTranslation", false);
+        motor("maxMotorTorque");
+        spring(false, 0.0f, 0.0f);
+        break;
+    case scenes::JointKind::Motor: {
+        // Defaults: the pose B has relative to A at the start (what Box2D's Initialize() takes).
+        const float c = std::cos(bodyA.angle);
+        const float sn = std::sin(bodyA.angle);
+        const glm::vec2 d = bodyB.position - bodyA.position;
+        j.linearOffset = o.vec2("linearOffset", {c * d.x + sn * d.y, -sn * d.x + c * d.y});
+        Object::checkWithinE2d(j.linearOffset, o.at("linearOffset"));
+        j.angularOffset = o.angle("angularOffset", bodyB.angle - bodyA.angle);
+        Object::checkWithinE2d(j.angularOffset, o.at("angularOffset"));
+        j.maxForce = o.numberAbove("maxForce", 1.0f, 0.0f, false);
+        j.maxTorque = o.numberAbove("maxTorque", 1.0f, 0.0f, false);
+        j.correctionFactor = o.numberAbove("correctionFactor", 0.3f, 0.0f, false);
+        if (j.correctionFactor > 1.0f) {
+            fail(o.at("correctionFactor"), "must be in [0, 1], got " + show(j.correctionFactor));
+        }
+        break;
+    }
+    case scenes::JointKind::Mouse:
+        j.target = point("target");
+        j.anchorA = o.has("anchor") ? point("anchor") : bodyB.position;
+        j.maxForce = o.numberAbove("maxForce", 1000.0f, 0.0f, false);
+        spring(true, 5.0f, 0.7f);
+        break;
     case scenes::JointKind::Weld:
         j.anchorA = point("anchor");
         break;
@@ -913,14 +1034,7 @@ scenes::JointDesc parseJoint(const json& value, const std::string& path, const s
         if (j.enableLimit && j.lower < 0.0f) {
             fail(o.at("minLength"), "must be >= 0, got " + show(j.lower));
         }
-        if (o.has("hertz")) {
-            j.enableSpring = true;
-            j.hertz = o.numberAbove("hertz", 0.0f, 0.0f, true);
-            j.dampingRatio = o.numberAbove("dampingRatio", 0.0f, 0.0f, false);
-            if (j.hertz > 1000.0f || j.dampingRatio > 1000.0f) {
-                fail(o.at(j.hertz > 1000.0f ? "hertz" : "dampingRatio"), "must be <= 1000");
-            }
-        }
+        spring(false, 0.0f, 0.0f);
         break;
     }
     }

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "engine.hpp"
 #include "expectations.hpp"
 #include "metrics.hpp"
 #include "svg_plot.hpp"
@@ -322,6 +323,47 @@ TEST(Evaluate, JointErrorIsTheLargestGapAndFailsOnNaN) {
     r = evaluate(c, rec, 10.0f);
     EXPECT_FALSE(r.passed);
     EXPECT_EQ(r.detail, "non-finite state at t = 1 s");
+}
+
+// An engine that reports the body states and joint anchors it is given, to drive a Recorder.
+class ScriptedEngine final : public Engine {
+public:
+    std::vector<BodyState> bodies;
+    std::vector<std::pair<glm::vec2, glm::vec2>> anchors;
+    void step() override {}
+    [[nodiscard]] int bodyCount() const override { return static_cast<int>(bodies.size()); }
+    void readBodies(std::vector<BodyState>& out) const override { out = bodies; }
+    [[nodiscard]] float maxPenetration() const override { return 0.0f; }
+    void readJointAnchors(std::vector<std::pair<glm::vec2, glm::vec2>>& out) const override { out = anchors; }
+};
+
+// A wheel joint's error is its wheel's anchor off the suspension axis, which turns with body A:
+// travel along the axis is no error; the same offset after A has turned a quarter is one.
+TEST(Recorder, WheelJointErrorIsTheDistanceOffTheTurningAxis) {
+    scenes::SceneDesc scene;
+    scene.bodies.resize(2);
+    scene.bodies[0].angle = 0.5f; // the axis below is given in world axes at this angle
+    scenes::JointDesc wheel;
+    wheel.kind = scenes::JointKind::Wheel;
+    wheel.bodyA = 0;
+    wheel.bodyB = 1;
+    wheel.axis = {0.0f, 1.0f};
+    scene.joints.push_back(wheel);
+    Recorder recorder(scene, 0.0f);
+    ScriptedEngine engine;
+    engine.bodies.resize(2);
+    engine.bodies[0].angle = 0.5f;
+    engine.anchors = {{{1.0f, 1.0f}, {1.0f, 0.7f}}}; // 0.3 m down the axis: the spring at work
+    recorder.record(engine, 0.0);
+    engine.anchors = {{{1.0f, 1.0f}, {1.2f, 0.7f}}}; // and 0.2 m to the side of it
+    recorder.record(engine, 0.0);
+    engine.bodies[0].angle = 0.5f + static_cast<float>(kPi / 2.0); // A turned: the axis is now x
+    recorder.record(engine, 0.0);
+    const std::vector<float>& error = recorder.recording().jointError;
+    ASSERT_EQ(error.size(), 3u);
+    EXPECT_NEAR(error[0], 0.0f, 1e-6f);
+    EXPECT_NEAR(error[1], 0.2f, 1e-6f);
+    EXPECT_NEAR(error[2], 0.3f, 1e-6f); // now the 0.3 m down is off the axis, the 0.2 m along it
 }
 
 TEST(SvgPlot, ParetoFrontKeepsTheUnbeatenPoints) {

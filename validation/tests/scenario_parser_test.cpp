@@ -97,10 +97,10 @@ TEST(ScenarioParser, RejectsOutOfRangeValues) {
     EXPECT_EQ(errorOf(scene("", R"({"type": "polygon", "points": [[0, 0], [1, 0], [2, 0]]})")),
               "bodies[3].shapes[0].points: the points enclose no area");
     EXPECT_EQ(errorOf(scene("", R"({"type": "cirle"})")),
-              "bodies[3].shapes[0].type: expected box, polygon, circle, capsule or segment, got "
+              "bodies[3].shapes[0].type: expected box, polygon, circle, capsule, segment or chain, got "
               "\"cirle\" (did you mean \"circle\"?)");
     EXPECT_EQ(errorOf(scene("", R"({"type": "triangle"})")),
-              "bodies[3].shapes[0].type: expected box, polygon, circle, capsule or segment, got \"triangle\"");
+              "bodies[3].shapes[0].type: expected box, polygon, circle, capsule, segment or chain, got \"triangle\"");
 }
 
 TEST(ScenarioParser, ChecksGeneratorsSettingsAndChecks) {
@@ -154,7 +154,7 @@ TEST(ScenarioParser, SyntaxErrorsAndOverflowsNameTheirPathLineAndColumn) {
 
 TEST(ScenarioParser, MissingFieldsSayMissing) {
     EXPECT_EQ(errorOf(scene("", R"({"radius": 1})")),
-              "bodies[3].shapes[0].type: required field is missing (one of box, polygon, circle, capsule or segment)");
+              "bodies[3].shapes[0].type: required field is missing (one of box, polygon, circle, capsule, segment or chain)");
     EXPECT_EQ(errorOf(R"({"family": "stacking", "generators": [{"count": 3}]})"),
               "generators[0].type: required field is missing (one of verticalStack, pyramid, dominoes or grid)");
     EXPECT_EQ(errorOf(R"({"family": "stacking", "generators": [{"type": "verticalStack"}],
@@ -307,7 +307,7 @@ TEST(ScenarioParser, RejectsBadJoints) {
     EXPECT_EQ(withJoint(R"({"type": "revolute", "bodyA": 0, "bodyB": 2})"),
               "joints[0].anchor: required field is missing");
     EXPECT_THAT(withJoint(R"({"type": "hinge", "bodyA": 0, "bodyB": 2})"),
-                StartsWith("joints[0].type: expected revolute, distance, prismatic or weld, got \"hinge\""));
+                StartsWith("joints[0].type: expected revolute, distance, prismatic, weld, wheel, motor or mouse, got \"hinge\""));
     EXPECT_EQ(withJoint(R"({"type": "revolute", "bodyA": 0, "bodyB": 2, "anchor": [0, 0], "lowerAngle": 1, "upperAngle": 0})"),
               "joints[0].upperAngle: must be >= lowerAngle (1), got 0");
     EXPECT_THAT(withJoint(R"({"type": "revolute", "bodyA": 0, "bodyB": 2, "anchor": [0, 0], "lowerAngle": 1})"),
@@ -322,9 +322,162 @@ TEST(ScenarioParser, RejectsBadJoints) {
                 StartsWith("joints[0].anchor[0]: must be within e2d's limit of 100000"));
     EXPECT_EQ(withJoint(R"({"type": "distance", "bodyA": 0, "bodyB": 2, "anchorA": [0, 0], "anchorB": [1, 0], "hertz": 1})",
                         R"({"type": "jointError", "limit": 0.1})"),
-              "checks[0].type: the scene has no joint this check measures (revolute, weld or rigid distance)");
+              "checks[0].type: the scene has no joint this check measures (revolute, weld, wheel or rigid distance)");
     EXPECT_EQ(withJoint(R"({"type": "weld", "bodyA": 0, "bodyB": 2, "anchor": [0, 0], "lowerAngle": 0})"),
               "joints[0].lowerAngle: unknown field");
+}
+
+// The wheel, motor and mouse joints and revolute and prismatic springs: fields, defaults (the
+// motor joint's offsets are the pose B has relative to A at the start).
+TEST(ScenarioParser, WheelMotorMouseJointsAndSprings) {
+    const Scenario s = parseScenario(R"({"family": "hard", "bodies": [
+          {"type": "static", "position": [0, 0], "shape": {"type": "box", "halfExtents": [0.1, 0.1]}},
+          {"position": [1, 2], "angleDeg": 90, "tag": "car", "shape": {"type": "box"}},
+          {"position": [3, 2], "angle": 2, "tag": "wheel", "shape": {"type": "circle", "radius": 0.3}}],
+        "joints": [
+          {"type": "wheel", "bodyA": "car", "bodyB": "wheel", "anchor": [3, 2], "hertz": 4, "dampingRatio": 0.7,
+           "motorSpeed": -10, "maxMotorTorque": 20, "lowerTranslation": -0.1, "upperTranslation": 0.1},
+          {"type": "motor", "bodyA": "car", "bodyB": "wheel", "maxForce": 5},
+          {"type": "mouse", "bodyA": 0, "bodyB": "wheel", "target": [4, 4]},
+          {"type": "revolute", "bodyA": 0, "bodyB": "car", "anchor": [0, 0], "hertz": 2},
+          {"type": "prismatic", "bodyA": 0, "bodyB": "car", "anchor": [0, 0], "hertz": 1, "dampingRatio": 0.5},
+          {"type": "wheel", "bodyA": 0, "bodyB": "wheel", "anchor": [3, 2], "axis": [2, 0]}],
+        "checks": [{"type": "jointError", "limit": 0.01}]})",
+                                     "joints");
+    ASSERT_EQ(s.scene.joints.size(), 6u);
+    const scenes::JointDesc& w = s.scene.joints[0];
+    EXPECT_EQ(w.kind, scenes::JointKind::Wheel);
+    EXPECT_EQ(w.axis, glm::vec2(0.0f, 1.0f)); // the default axis
+    EXPECT_TRUE(w.enableSpring);
+    EXPECT_FLOAT_EQ(w.hertz, 4.0f);
+    EXPECT_FLOAT_EQ(w.dampingRatio, 0.7f);
+    EXPECT_TRUE(w.enableMotor);
+    EXPECT_FLOAT_EQ(w.motorSpeed, -10.0f);
+    EXPECT_FLOAT_EQ(w.maxMotor, 20.0f);
+    EXPECT_TRUE(w.enableLimit);
+    EXPECT_FLOAT_EQ(w.lower, -0.1f);
+    const scenes::JointDesc& m = s.scene.joints[1];
+    EXPECT_EQ(m.kind, scenes::JointKind::Motor);
+    // B is 2 m to the right of A, whose x axis points up: in A's frame that is (0, -2).
+    EXPECT_NEAR(m.linearOffset.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(m.linearOffset.y, -2.0f, 1e-6f);
+    EXPECT_NEAR(m.angularOffset, 2.0f - 1.5707963f, 1e-6f);
+    EXPECT_FLOAT_EQ(m.maxForce, 5.0f);
+    EXPECT_FLOAT_EQ(m.maxTorque, 1.0f);
+    EXPECT_FLOAT_EQ(m.correctionFactor, 0.3f);
+    const scenes::JointDesc& mouse = s.scene.joints[2];
+    EXPECT_EQ(mouse.kind, scenes::JointKind::Mouse);
+    EXPECT_EQ(mouse.target, glm::vec2(4.0f, 4.0f));
+    EXPECT_EQ(mouse.anchorA, glm::vec2(3.0f, 2.0f)); // body B's origin
+    EXPECT_TRUE(mouse.enableSpring);
+    EXPECT_FLOAT_EQ(mouse.hertz, 5.0f);
+    EXPECT_FLOAT_EQ(mouse.dampingRatio, 0.7f);
+    EXPECT_FLOAT_EQ(mouse.maxForce, 1000.0f);
+    EXPECT_TRUE(s.scene.joints[3].enableSpring);
+    EXPECT_FLOAT_EQ(s.scene.joints[3].hertz, 2.0f);
+    EXPECT_FLOAT_EQ(s.scene.joints[3].dampingRatio, 0.0f);
+    EXPECT_TRUE(s.scene.joints[4].enableSpring);
+    EXPECT_FALSE(s.scene.joints[5].enableSpring);
+    EXPECT_EQ(s.scene.joints[5].axis, glm::vec2(1.0f, 0.0f));
+}
+
+TEST(ScenarioParser, RejectsBadWheelMotorAndMouseJoints) {
+    auto withJoint = [](const std::string& joint) {
+        return errorOf(R"({"family": "hard", "bodies": [
+            {"type": "static", "position": [0, 0], "shape": {"type": "box", "halfExtents": [0.1, 0.1]}},
+            {"position": [1, 0], "tag": "bob", "shape": {"type": "circle", "radius": 0.1}}],
+            "joints": [)" + joint + "]}");
+    };
+    EXPECT_EQ(withJoint(R"({"type": "wheel", "bodyA": 0, "bodyB": 1, "anchor": [1, 0], "dampingRatio": 1})"),
+              "joints[0].hertz: required field is missing (a spring needs hertz; dampingRatio alone does nothing)");
+    EXPECT_EQ(withJoint(R"({"type": "wheel", "bodyA": 0, "bodyB": 1, "anchor": [1, 0], "hertz": 0})"),
+              "joints[0].hertz: must be > 0, got 0");
+    EXPECT_EQ(withJoint(R"({"type": "wheel", "bodyA": 0, "bodyB": 1, "anchor": [1, 0], "axis": [0, 0]})"),
+              "joints[0].axis: must not be [0, 0]");
+    EXPECT_THAT(withJoint(R"({"type": "wheel", "bodyA": 0, "bodyB": 1, "anchor": [1, 0], "motorSpeed": 3})"),
+                StartsWith("joints[0].maxMotorTorque: required field is missing"));
+    EXPECT_EQ(withJoint(R"({"type": "motor", "bodyA": 0, "bodyB": 1, "correctionFactor": 2})"),
+              "joints[0].correctionFactor: must be in [0, 1], got 2");
+    EXPECT_EQ(withJoint(R"({"type": "motor", "bodyA": 0, "bodyB": 1, "maxTorque": -1})"),
+              "joints[0].maxTorque: must be >= 0, got -1");
+    EXPECT_THAT(withJoint(R"({"type": "motor", "bodyA": 0, "bodyB": 1, "linearOffset": [3e5, 0]})"),
+                StartsWith("joints[0].linearOffset[0]: must be within e2d's limit of 100000"));
+    EXPECT_EQ(withJoint(R"({"type": "mouse", "bodyA": 0, "bodyB": 1})"),
+              "joints[0].target: required field is missing");
+    EXPECT_EQ(withJoint(R"({"type": "mouse", "bodyA": 0, "bodyB": 1, "target": [1, 1], "hertz": -2})"),
+              "joints[0].hertz: must be > 0, got -2");
+    EXPECT_EQ(withJoint(R"({"type": "mouse", "bodyA": 0, "bodyB": 1, "target": [1, 1], "maxForce": -1})"),
+              "joints[0].maxForce: must be >= 0, got -1");
+    EXPECT_EQ(withJoint(R"({"type": "mouse", "bodyA": 0, "bodyB": 1, "target": [1, 1], "axis": [1, 0]})"),
+              "joints[0].axis: unknown field");
+    EXPECT_EQ(withJoint(R"({"type": "weld", "bodyA": 0, "bodyB": 1, "anchor": [1, 0], "hertz": 1})"),
+              "joints[0].hertz: unknown field");
+}
+
+// A wheel joint alone is enough for jointError (its error is B's anchor off the axis).
+TEST(ScenarioParser, JointErrorMeasuresWheelJoints) {
+    const Scenario s = parseScenario(R"({"family": "hard", "bodies": [
+          {"type": "static", "position": [0, 0], "shape": {"type": "box", "halfExtents": [0.1, 0.1]}},
+          {"position": [1, 0], "shape": {"type": "circle", "radius": 0.1}}],
+        "joints": [{"type": "wheel", "bodyA": 0, "bodyB": 1, "anchor": [1, 0]}],
+        "checks": [{"type": "jointError", "limit": 0.01}]})",
+                                     "wheel");
+    EXPECT_EQ(s.checks[0].kind, CheckKind::JointError);
+}
+
+TEST(ScenarioParser, ChainShapes) {
+    const Scenario s = parseScenario(R"({"family": "hard", "bodies": [
+          {"type": "static", "shapes": [
+            {"type": "chain", "points": [[2, 0], [1, 0.1], [0, 0]], "ghostBefore": [3, 0], "friction": 0.3,
+             "materials": [{"friction": 0.1}, {"restitution": 0.5}]},
+            {"type": "chain", "points": [[0, 0], [1, 0], [1, 1]], "loop": true, "materials": [{"friction": 2}]}]},
+          {"position": [1, 1], "shape": {"type": "circle", "radius": 0.1}}]})",
+                                     "chains");
+    const scenes::ShapeDesc& open = s.scene.bodies[0].shapes[0];
+    EXPECT_EQ(open.kind, scenes::ShapeKind::Chain);
+    EXPECT_FALSE(open.loop);
+    ASSERT_EQ(open.points.size(), 3u);
+    EXPECT_EQ(open.points[1], glm::vec2(1.0f, 0.1f));
+    ASSERT_TRUE(open.ghostBefore.has_value());
+    EXPECT_EQ(*open.ghostBefore, glm::vec2(3.0f, 0.0f));
+    EXPECT_FALSE(open.ghostAfter.has_value());
+    ASSERT_EQ(open.materials.size(), 2u);
+    EXPECT_FLOAT_EQ(open.materials[0].friction, 0.1f);
+    EXPECT_FLOAT_EQ(open.materials[0].restitution, 0.0f);
+    EXPECT_FLOAT_EQ(open.materials[1].friction, 0.3f); // the shape's
+    EXPECT_FLOAT_EQ(open.materials[1].restitution, 0.5f);
+    const scenes::ShapeDesc& loop = s.scene.bodies[0].shapes[1];
+    EXPECT_TRUE(loop.loop);
+    ASSERT_EQ(loop.materials.size(), 1u);
+    EXPECT_FLOAT_EQ(loop.materials[0].friction, 2.0f);
+}
+
+TEST(ScenarioParser, RejectsBadChains) {
+    auto withChain = [](const std::string& chain) {
+        return errorOf(R"({"family": "hard", "bodies": [{"type": "static", "shape": )" + chain + "}]}");
+    };
+    EXPECT_EQ(withChain(R"({"type": "chain"})"), "bodies[0].shape.points: required field is missing");
+    EXPECT_EQ(withChain(R"({"type": "chain", "points": [[0, 0]]})"),
+              "bodies[0].shape.points: a chain needs 2 to 10000 points, got 1");
+    EXPECT_EQ(withChain(R"({"type": "chain", "points": [[0, 0], [1, 0]], "loop": true})"),
+              "bodies[0].shape.points: a loop needs 3 to 10000 points, got 2");
+    EXPECT_EQ(withChain(R"({"type": "chain", "points": [[0, 0], [1, 0], [1, 0.001]]})"),
+              "bodies[0].shape.points[2]: must be at least physics::kLinearSlop (0.005 m) from points[1], got 0.001");
+    EXPECT_EQ(withChain(R"({"type": "chain", "points": [[0, 0], [1, 0], [0.001, 0.001]], "loop": true})"),
+              "bodies[0].shape.points[0]: must be at least physics::kLinearSlop (0.005 m) from points[2], "
+              "got 0.00141421");
+    EXPECT_EQ(withChain(R"({"type": "chain", "points": [[0, 0], [1, 0], [1, 1]], "loop": true, "ghostAfter": [2, 2]})"),
+              "bodies[0].shape.ghostAfter: a loop has no ends, so no ghost points");
+    EXPECT_EQ(withChain(R"({"type": "chain", "points": [[0, 0], [1, 0], [2, 0]], "materials": [{}, {}, {}]})"),
+              "bodies[0].shape.materials: give one material or one per segment (2), got 3");
+    EXPECT_EQ(withChain(R"({"type": "chain", "points": [[0, 0], [1, 0]], "materials": [{"restitution": 2}]})"),
+              "bodies[0].shape.materials[0].restitution: must be in [0, 1] (e2d's limit), got 2");
+    EXPECT_EQ(withChain(R"({"type": "chain", "points": [[0, 0], [1, 0]], "materials": [{"frcition": 1}]})"),
+              "bodies[0].shape.materials[0].frcition: unknown field (did you mean \"friction\"?)");
+    EXPECT_THAT(withChain(R"({"type": "chain", "points": [[0, 0], [2e5, 0]]})"),
+                StartsWith("bodies[0].shape.points[1][0]: must be within e2d's limit of 100000"));
+    EXPECT_EQ(withChain(R"({"type": "chain", "points": [[0, 0], [1, 0]], "radius": 1})"),
+              "bodies[0].shape.radius: unknown field");
 }
 
 TEST(Generators, PyramidHasTheBox2DLayout) {

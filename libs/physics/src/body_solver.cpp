@@ -145,10 +145,14 @@ void solveSoftStep(const SolverStep& step) {
                           backward, reversePoints);
         }
         integratePositions(step.states, h);
+        // The relax passes sweep the other way: the sweep direction's bias then cancels within
+        // each sub-step, not only over two. Relaxed in the same direction, a five-level house of
+        // cards (0.002 x 0.4 m cards) swayed 3-5 mm to one side as its contacts took the load,
+        // and each swing slipped the top pair a little at its apex until it fell.
         for (int r = 0; r <= relaxIterations; ++r) {
             solveJoints(step.joints, step.jointOrder, step.states, step.jointStep, false);
             solveContacts(step.constraints, step.states, invH, false, def.contactPushMaxSpeed,
-                          backward, reversePoints);
+                          !backward, reversePoints);
         }
     }
     applyRestitution(step.constraints, step.states, def.restitutionThreshold, h);
@@ -177,7 +181,7 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
         for (int r = 0; r <= relaxIterations; ++r) {
             solveJoints(step.joints, blockJoints, step.states, step.jointStep, false);
             solveWide(wide, firstLevel, endLevel, step.states, invH, false,
-                      def.contactPushMaxSpeed, backward, reversePoints);
+                      def.contactPushMaxSpeed, !backward, reversePoints);
         }
     }
     applyRestitutionWide(wide, restitution, step.states, def.restitutionThreshold, h);

@@ -57,8 +57,9 @@ void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyVi
     prepareBlock(c);
 }
 
-bool isPushedApart(const Manifold& m, float linearInvMass, Softness softness) {
-    // Most contacts overlap less than the slop: no division for them.
+bool isPushedApart(const Manifold& m, const ContactBodyView& a, const ContactBodyView& b,
+                   Softness softness) {
+    // Most contacts overlap less than the slop: nothing more to compute for them.
     bool deep = false;
     for (int i = 0; i < m.pointCount; ++i) {
         deep = deep || m.points[i].separation < -kLinearSlop;
@@ -67,10 +68,22 @@ bool isPushedApart(const Manifold& m, float linearInvMass, Softness softness) {
     if (!deep || !(stiffness > 0.0f)) {
         return false; // shallow, or not a soft contact
     }
-    const float restPerImpulse = kPushOutRestMargin * softness.impulseScale * linearInvMass / stiffness;
+    const Vec2 n = m.normal;
+    const float linear = dot(a.invMass + b.invMass, Vec2{n.x * n.x, n.y * n.y});
+    float rnA[2] = {0.0f, 0.0f};
+    float rnB[2] = {0.0f, 0.0f};
     for (int i = 0; i < m.pointCount; ++i) {
-        const ManifoldPoint& mp = m.points[i];
-        if (-mp.separation > kLinearSlop + restPerImpulse * mp.normalImpulse) {
+        rnA[i] = cross(m.points[i].anchorA - a.centerOffset, n);
+        rnB[i] = cross(m.points[i].anchorB - b.centerOffset, n);
+    }
+    const float restPerImpulse = kPushOutRestMargin * softness.impulseScale / stiffness;
+    for (int i = 0; i < m.pointCount; ++i) {
+        float load = 0.0f; // (K lambda)_i
+        for (int j = 0; j < m.pointCount; ++j) {
+            const float k = linear + a.invInertia * rnA[i] * rnA[j] + b.invInertia * rnB[i] * rnB[j];
+            load += k * m.points[j].normalImpulse;
+        }
+        if (-m.points[i].separation > kLinearSlop + restPerImpulse * std::max(load, 0.0f)) {
             return true;
         }
     }
@@ -181,13 +194,17 @@ void solveContactsInOrder(std::span<ContactConstraint> constraints, std::span<Bo
             noteImpact(cp2, vn.y, t2.separation, invH, useBias);
             // One point's soft update, k11 (x - lambda) = -massScale (vn + bias) -
             // impulseScale k11 lambda, written for two: K (x - lambda) = -M (vn + bias) -
-            // I diag(K) lambda, with each point's own mass and impulse scales in the diagonal
-            // M and I (a speculative point's row is rigid). At rest each point then overlaps
-            // as it would alone (diag(K), not K, carries the load), and the block LCP solves it
-            // with vn + bias replaced by this right-hand side.
+            // I K lambda, with each point's own mass and impulse scales in the diagonal M and I
+            // (a speculative point's row is rigid). Both overlapping, this is the soft update of
+            // one two-row constraint (K^-1 its mass): at rest each point overlaps
+            // (K lambda)_i / (h w^2), so a box on a box compresses like a spring on the pair's
+            // reduced mass, not on one corner's normal mass (a 50-box column sags 0.42 m, not
+            // 0.53 m). The block LCP solves it with vn + bias replaced by this right-hand side.
             Vec2 old{cp1.normalImpulse, cp2.normalImpulse};
-            Vec2 rhs{t1.massScale * (vn.x + t1.bias) + t1.impulseScale * (c.blockK.a11 * old.x),
-                     t2.massScale * (vn.y + t2.bias) + t2.impulseScale * (c.blockK.a22 * old.y)};
+            Vec2 rhs{t1.massScale * (vn.x + t1.bias) +
+                         t1.impulseScale * (c.blockK.a11 * old.x + c.blockK.a12 * old.y),
+                     t2.massScale * (vn.y + t2.bias) +
+                         t2.impulseScale * (c.blockK.a12 * old.x + c.blockK.a22 * old.y)};
             Vec2 x = old;
             solveBlock(c, old, rhs, x);
             applyBlock(c, old, x, vA, wA, vB, wB);

@@ -134,17 +134,17 @@ void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyVi
 inline constexpr int kPushOutSolveIterations = 5;
 inline constexpr int kPushOutRelaxIterations = 24;
 // A point counts as pushed apart when it overlaps more than kLinearSlop beyond this many times
-// the overlap its stored normal impulse would rest at (the soft contact is a spring; the
-// estimate leaves the rotation out of the normal mass, which makes the true rest overlap up to
-// 2.5 times larger for a box's corner).
-inline constexpr float kPushOutRestMargin = 4.0f;
+// the overlap its stored normal impulses would rest at.
+inline constexpr float kPushOutRestMargin = 2.0f;
 
-// Whether a point of manifold `m` overlaps deeper than the load it carries explains: spawned
-// inside another shape, or moved into one, rather than pressed by weight. `linearInvMass`:
-// the two sides' inverse masses along the normal, summed; `softness`: the contact's. At rest a
-// point's stored impulse per sub-step is lambda = m_n h w^2 s (s its overlap), which in terms of
-// the softness is s = lambda impulseScale / (m_n massScale biasRate).
-bool isPushedApart(const Manifold& m, float linearInvMass, Softness softness);
+// Whether a point of manifold `m` between sides `a` and `b` overlaps deeper than the load it
+// carries explains: spawned inside another shape, or moved into one, rather than pressed by
+// weight. `softness`: the contact's. At rest point i of the manifold's soft constraint carries
+// impulses lambda per sub-step with (K lambda)_i = h w^2 s_i (K the normal mass matrix of its
+// points, s_i its overlap), which in terms of the softness is
+// s_i = (K lambda)_i impulseScale / (massScale biasRate).
+bool isPushedApart(const Manifold& m, const ContactBodyView& a, const ContactBodyView& b,
+                   Softness softness);
 
 void warmStartContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states);
 // useBias: push overlapping points apart with the soft bias (solve) or not (relax).

@@ -168,8 +168,8 @@ E2D_WIDE_FN void solveBlock(Constraint& c, WideBody& a, WideBody& b, I lanes, F 
     noteImpact(cp2, lanes, vn2, s2, invH, useBias);
     const F acc1 = cp1.normalImpulse;
     const F acc2 = cp2.normalImpulse;
-    F r1 = t1.massScale * (vn1 + t1.bias) + t1.impulseScale * (c.k11 * acc1);
-    F r2 = t2.massScale * (vn2 + t2.bias) + t2.impulseScale * (c.k22 * acc2);
+    F r1 = t1.massScale * (vn1 + t1.bias) + t1.impulseScale * (c.k11 * acc1 + c.k12 * acc2);
+    F r2 = t2.massScale * (vn2 + t2.bias) + t2.impulseScale * (c.k12 * acc1 + c.k22 * acc2);
     F x1 = acc1 - (c.inv11 * r1 + c.inv12 * r2);
     F x2 = acc2 - (c.inv12 * r1 + c.inv22 * r2);
     I okBoth = (x1 >= zero) & (x2 >= zero);

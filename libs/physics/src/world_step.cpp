@@ -297,9 +297,7 @@ void World::Impl::solve(float dt) {
         if (def.mode != SolverMode::SoftStep) {
             return false;
         }
-        const Vec2 n = c.manifold.normal;
-        const Vec2 nn{n.x * n.x, n.y * n.y};
-        return detail::isPushedApart(c.manifold, dot(a.invMass + b.invMass, nn), softnessOf(a, b));
+        return detail::isPushedApart(c.manifold, a, b, softnessOf(a, b));
     };
     bool pushOut = false; // the scalar solvers': any contact in the world
     // One constraint per touching solid contact with a moving side, in contact order.

@@ -11,15 +11,15 @@ namespace {
 
 constexpr const char* kCtor = "render::AnimatedSpriteRenderer";
 
-const std::vector<Rect>& checkedFrames(const AnimatedSpriteRendererDef& def) {
+const std::vector<AnimationFrame>& checkedFrames(const AnimatedSpriteRendererDef& def) {
     if (def.frames.empty()) {
         detail::fail(kCtor, "frames must not be empty");
     }
     for (std::size_t i = 0; i < def.frames.size(); ++i) {
-        const Rect& r = def.frames[i];
+        const Rect& r = def.frames[i].uv;
         if (!detail::isFinite(r.min) || !detail::isFinite(r.size) || r.min.x < 0.0f || r.min.y < 0.0f ||
             r.size.x < 0.0f || r.size.y < 0.0f || r.max().x > 1.0f || r.max().y > 1.0f) {
-            detail::fail(kCtor, "frames[" + std::to_string(i) + "] must lie in [0, 1], got min " +
+            detail::fail(kCtor, "frames[" + std::to_string(i) + "].uv must lie in [0, 1], got min " +
                                     detail::formatVec(r.min) + " size " + detail::formatVec(r.size));
         }
     }
@@ -36,31 +36,27 @@ SpriteRendererDef firstLook(const AnimatedSpriteRendererDef& def) {
     SpriteRendererDef s = def.sprite;
     const int start = def.animation.startFrame;
     if (start >= 0 && static_cast<std::size_t>(start) < def.frames.size()) {
-        s.uv = def.frames[static_cast<std::size_t>(start)];
+        s.uv = def.frames[static_cast<std::size_t>(start)].uv;
+        s.uvRotated = def.frames[static_cast<std::size_t>(start)].rotated;
     }
     return s;
 }
 
 } // namespace
 
-std::vector<Rect> animationUvs(const SpriteSheet& sheet, std::string_view baseName) {
+std::vector<AnimationFrame> animationUvs(const SpriteSheet& sheet, std::string_view baseName) {
     const std::vector<int> indices = sheet.animationFrames(baseName);
     if (indices.empty()) {
         detail::fail("render::animationUvs()",
                      "sheet '" + sheet.name() + "' has no frames named '" + std::string(baseName) + "<number>'");
     }
-    std::vector<Rect> uvs;
-    uvs.reserve(indices.size());
+    std::vector<AnimationFrame> frames;
+    frames.reserve(indices.size());
     for (int index : indices) {
         const SpriteFrame& frame = sheet.frames()[static_cast<std::size_t>(index)];
-        if (frame.rotated) {
-            detail::fail("render::animationUvs()", "sheet '" + sheet.name() + "': frame '" + frame.name +
-                                                       "' is stored rotated, which a sprite's UV rectangle "
-                                                       "cannot show upright");
-        }
-        uvs.push_back(frame.uv);
+        frames.push_back(AnimationFrame{frame.uv, frame.rotated});
     }
-    return uvs;
+    return frames;
 }
 
 AnimatedSpriteRenderer::AnimatedSpriteRenderer(const AnimatedSpriteRendererDef& def)
@@ -72,7 +68,8 @@ void AnimatedSpriteRenderer::update(double dt) {
     animation_.update(dt);
     if (animation_.frame() != shown_) {
         shown_ = animation_.frame();
-        setUv(frames_[static_cast<std::size_t>(shown_)]);
+        const AnimationFrame& frame = frames_[static_cast<std::size_t>(shown_)];
+        setUv(frame.uv, frame.rotated);
     }
 }
 

@@ -93,10 +93,15 @@ struct RendererImpl {
             glEnable(GL_BLEND);
             glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
             glDepthMask(GL_FALSE);
+            // At equal z a translucent quad draws over the opaque ones.
+            glDepthFunc(GL_LEQUAL);
             glUniform1f(alphaCutLocation, 1.0f / 512.0f);
         } else {
             glDisable(GL_BLEND);
             glDepthMask(GL_TRUE);
+            // Strict: the batcher draws the opaque quad that must end on top of an equal-z
+            // pile first, and llvmpipe (like GPUs) rejects the ones under it before shading.
+            glDepthFunc(GL_LESS);
             glUniform1f(alphaCutLocation, 0.5f);
         }
     }
@@ -258,7 +263,7 @@ void Renderer::setScale(SpriteId id, glm::vec2 scale) { impl_->batcher.setScale(
 void Renderer::setRotation(SpriteId id, float radians) { impl_->batcher.setRotation(id, radians); }
 void Renderer::setPivot(SpriteId id, glm::vec2 pivot) { impl_->batcher.setPivot(id, pivot); }
 void Renderer::setTint(SpriteId id, Color tint) { impl_->batcher.setTint(id, tint); }
-void Renderer::setUv(SpriteId id, const Rect& uv) { impl_->batcher.setUv(id, uv); }
+void Renderer::setUv(SpriteId id, const Rect& uv, bool uvRotated) { impl_->batcher.setUv(id, uv, uvRotated); }
 void Renderer::setFlip(SpriteId id, bool flipX, bool flipY) { impl_->batcher.setFlip(id, flipX, flipY); }
 void Renderer::setParallax(SpriteId id, float parallax) { impl_->batcher.setParallax(id, parallax); }
 void Renderer::setHud(SpriteId id, bool hud) { impl_->batcher.setHud(id, hud); }
@@ -325,8 +330,6 @@ void Renderer::render(Camera& camera) {
     glUniform1f(r.depthScaleLocation, 1.0f / r.def.depthRange);
     glActiveTexture(GL_TEXTURE0);
     glEnable(GL_DEPTH_TEST);
-    // LEQUAL: at equal z the later-drawn quad wins, as in the translucent pass (painter's order).
-    glDepthFunc(GL_LEQUAL);
     glEnable(GL_DEPTH_CLAMP);
     glDisable(GL_CULL_FACE);
     r.beginPass(false);

@@ -37,6 +37,13 @@ void validate(const char* function, const SpriteDef& def) {
 
 std::uint16_t unorm16(float v) { return static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 65535.0f)); }
 
+bool isTranslucentKey(std::uint64_t key) { return (key >> 63) != 0; }
+
+// Of two equal keys, whether `a` (created or submitted before `b` when a < b) is drawn first:
+// in the translucent pass the later one is drawn last (painter's order); in the opaque pass
+// first (the strict depth test keeps the first).
+bool tieFirst(std::uint64_t key, std::uint32_t a, std::uint32_t b) { return isTranslucentKey(key) ? a < b : a > b; }
+
 // Monotonic unsigned image of a float: a < b  <=>  bits(a) < bits(b).
 std::uint32_t orderedBits(float z) {
     std::uint32_t bits = std::bit_cast<std::uint32_t>(z == 0.0f ? 0.0f : z);
@@ -84,6 +91,11 @@ bool outside(const glm::vec4& b, const ViewBounds& view) {
     return b.z < view.min.x || b.x > view.max.x || b.w < view.min.y || b.y > view.max.y;
 }
 
+// The same for bounds relative to an instance's origin.
+inline bool outside(const Instance& in, const glm::vec4& b, const ViewBounds& view) {
+    return in.x + b.z < view.min.x || in.x + b.x > view.max.x || in.y + b.w < view.min.y || in.y + b.y > view.max.y;
+}
+
 // World placement of a quad given in local units (world, or camera units for HUD).
 struct Placement {
     glm::vec2 origin;
@@ -112,36 +124,22 @@ SpriteBatcher::SpriteBatcher(const std::vector<TextureFacts>& textures, std::uin
                              std::uint32_t placeholderSlot)
     : textures_(textures), whiteSlot_(whiteSlot), placeholderSlot_(placeholderSlot) {}
 
-SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function) {
-    return const_cast<Slot&>(static_cast<const SpriteBatcher&>(*this).slot(id, function));
+SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function) { return slots_[index(id, function)]; }
+
+const SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function) const {
+    return slots_[index(id, function)];
 }
 
-namespace {
-[[noreturn, gnu::cold, gnu::noinline]] void failBadId(SpriteId id, const char* function) {
+// Every setter's id check inlines (index()); the message is built out of line.
+void SpriteBatcher::failBadId(SpriteId id, const char* function) {
     fail(function, id.isNull() ? std::string("null sprite id")
                                : "stale sprite id (index " + std::to_string(id.index1 - 1) + ", generation " +
                                      std::to_string(id.generation) + ")");
 }
-} // namespace
-
-const SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function) const {
-    // Every setter starts here: the check inlines, the message is built out of line.
-    if (id.index1 == 0 || id.index1 > slots_.size()) [[unlikely]] {
-        failBadId(id, function);
-    }
-    const Slot& s = slots_[id.index1 - 1];
-    if (!s.alive || s.generation != id.generation) [[unlikely]] {
-        failBadId(id, function);
-    }
-    return s;
-}
 
 bool SpriteBatcher::isValid(SpriteId id) const noexcept {
-    if (id.index1 == 0 || id.index1 > slots_.size()) {
-        return false;
-    }
-    const Slot& s = slots_[id.index1 - 1];
-    return s.alive && s.generation == id.generation;
+    const std::uint32_t i = id.index1 - 1;
+    return i < liveGen_.size() && liveGen_[i] == id.generation;
 }
 
 void SpriteBatcher::resolveTexture(Slot& s) const {
@@ -160,8 +158,12 @@ bool SpriteBatcher::opaque(const Slot& s) const { return s.def.tint.a == 255 && 
 std::uint64_t SpriteBatcher::key(float z, std::uint32_t texture, bool isOpaque) const {
     std::uint64_t zBits = orderedBits(z);
     if (isOpaque) {
-        // Pass 0, by texture, then front to back (larger z first).
-        return (static_cast<std::uint64_t>(texture) << 32) | (~zBits & 0xffffffffu);
+        // Pass 0, drawn with a strict depth test, so of equal-z quads the first drawn stays on
+        // top: by texture, last texture first, then front to back (larger z first); equal keys
+        // draw the latest-created first (the comparators). The quad that ends on top is the
+        // same as painter's order would give, and the depth test rejects the quads it covers
+        // before they are shaded.
+        return (static_cast<std::uint64_t>(~texture & 0x7fffffffu) << 32) | (~zBits & 0xffffffffu);
     }
     // Pass 1, back to front (smaller z first), then texture so equal z shares batches.
     return (1ull << 63) | (zBits << 31) | (texture & 0x7fffffffu);
@@ -181,11 +183,17 @@ SpriteId SpriteBatcher::create(const SpriteDef& def) {
         index = static_cast<std::uint32_t>(slots_.size());
         slots_.emplace_back();
         orderPosition_.push_back(kNotDrawn);
+        liveGen_.push_back(0);
+        pos_.emplace_back(0.0f);
+        pivotOffset_.emplace_back(0.0f);
+        dirty_.push_back(0);
     }
     Slot& s = slots_[index];
     s.def = def;
     s.alive = true;
-    s.dirty = 0;
+    liveGen_[index] = s.generation;
+    pos_[index] = def.position;
+    dirty_[index] = 0;
     resolveTexture(s);
     ++alive_;
     markDirty(index, kMoved | kShape | kLook);
@@ -200,7 +208,9 @@ bool SpriteBatcher::destroy(SpriteId id) {
     std::uint32_t index = id.index1 - 1;
     Slot& s = slots_[index];
     s.alive = false;
-    s.dirty = 0;
+    liveGen_[index] = 0;
+    dirty_[index] = 0;
+    orderPosition_[index] = kNotDrawn; // the draw order is rebuilt before the next frame
     ++s.generation;
     if (s.generation == 0) {
         s.generation = 1;
@@ -220,12 +230,17 @@ void SpriteBatcher::destroyAll() {
     dirtyList_.clear();
 }
 
-const SpriteDef& SpriteBatcher::def(SpriteId id, const char* function) const { return slot(id, function).def; }
+const SpriteDef& SpriteBatcher::def(SpriteId id, const char* function) {
+    const std::uint32_t i = index(id, function);
+    slots_[i].def.position = pos_[i];
+    return slots_[i].def;
+}
 
 void SpriteBatcher::set(SpriteId id, const SpriteDef& def, const char* function) {
     Slot& s = slot(id, function);
     validate(function, def);
     s.def = def;
+    pos_[id.index1 - 1] = def.position;
     resolveTexture(s);
     markDirty(id.index1 - 1, kMoved | kShape | kLook);
     orderDirty_ = true;
@@ -233,11 +248,25 @@ void SpriteBatcher::set(SpriteId id, const SpriteDef& def, const char* function)
 
 void SpriteBatcher::setPosition(SpriteId id, glm::vec2 position) {
     constexpr const char* fn = "render::Renderer::setPosition()";
-    Slot& s = slot(id, fn);
+    const std::uint32_t i = index(id, fn);
     requireFinite(fn, "position", position);
-    if (s.def.position != position) {
-        s.def.position = position;
-        markDirty(id.index1 - 1, kMoved);
+    if (pos_[i] != position) {
+        moveTo(i, position);
+    }
+}
+
+void SpriteBatcher::moveTo(std::uint32_t i, glm::vec2 position) {
+    pos_[i] = position;
+    const std::uint32_t at = orderPosition_[i];
+    if (at < kCameraBit && (dirty_[i] & kQueued) == 0) {
+        // Drawn, independent of the camera and not queued for a repack: the origin is all
+        // that changes.
+        Instance& out = orderPacked_[at];
+        out.x = position.x + pivotOffset_[i].x;
+        out.y = position.y + pivotOffset_[i].y;
+        ++movedThrough_;
+    } else {
+        markDirty(i, kMoved);
     }
 }
 
@@ -305,16 +334,18 @@ void SpriteBatcher::setTint(SpriteId id, Color tint) {
     }
 }
 
-void SpriteBatcher::setUv(SpriteId id, const Rect& uv) {
+void SpriteBatcher::setUv(SpriteId id, const Rect& uv, bool uvRotated) {
     constexpr const char* fn = "render::Renderer::setUv()";
     Slot& s = slot(id, fn);
     SpriteDef def = s.def;
     def.uv = uv;
     validate(fn, def);
-    if (s.def.uv != uv) {
+    if (s.def.uv != uv || s.def.uvRotated != uvRotated) {
+        // A turned image turns the quad's edges; the automatic size follows the UV extent.
+        const bool shape = s.def.uvRotated != uvRotated || s.def.size == glm::vec2(0.0f);
         s.def.uv = uv;
-        // The automatic size follows the UV rectangle's extent.
-        markDirty(id.index1 - 1, s.def.size == glm::vec2(0.0f) ? kLook | kShape : kLook);
+        s.def.uvRotated = uvRotated;
+        markDirty(id.index1 - 1, shape ? kLook | kShape : kLook);
     }
 }
 
@@ -379,23 +410,25 @@ void SpriteBatcher::setTransform(SpriteId id, glm::vec2 position, float z, float
     requireFinite(fn, "z", z);
     requireFinite(fn, "rotation", rotation);
     requireFinite(fn, "scale", scale);
-    std::uint8_t bits = 0;
-    if (s.def.position != position || s.def.z != z) {
-        bits |= kMoved;
+    const std::uint32_t i = id.index1 - 1;
+    if (s.def.z == z && s.def.rotation == rotation && s.def.scale == scale) {
+        if (pos_[i] != position) {
+            moveTo(i, position);
+        }
+        return;
     }
+    std::uint8_t bits = kMoved;
     if (s.def.z != z) {
         orderDirty_ = true;
     }
     if (s.def.rotation != rotation || s.def.scale != scale) {
         bits |= kShape;
     }
-    if (bits != 0) {
-        s.def.position = position;
-        s.def.z = z;
-        s.def.rotation = rotation;
-        s.def.scale = scale;
-        markDirty(id.index1 - 1, bits);
-    }
+    pos_[i] = position;
+    s.def.z = z;
+    s.def.rotation = rotation;
+    s.def.scale = scale;
+    markDirty(i, bits);
 }
 
 void SpriteBatcher::submit(const Quad& quad) {
@@ -425,41 +458,64 @@ void SpriteBatcher::clearTransient() noexcept { quads_.clear(); }
 
 void SpriteBatcher::repack(std::uint32_t index, const CameraState& camera) {
     Slot& s = slots_[index];
+    const std::uint8_t dirty = dirty_[index];
+    dirty_[index] = 0;
     const std::uint32_t at = orderPosition_[index];
     if (at == kNotDrawn) {
         // Hidden (or destroyed): sortOrder() marks it dirty again when it is drawn again.
-        s.dirty = 0;
         return;
     }
-    Instance& out = orderPacked_[at];
+    Instance& out = orderPacked_[at & ~kCameraBit];
     const SpriteDef& d = s.def;
-    if ((s.dirty & kShape) != 0) {
+    glm::vec2& pivotOffset = pivotOffset_[index];
+    if ((dirty & kShape) != 0) {
         glm::vec2 size = d.size;
         if (size == glm::vec2(0.0f)) {
             size = textures_[s.texture].size * d.uv.size;
+            if (d.uvRotated) {
+                size = {size.y, size.x};
+            }
         }
-        glm::vec2 extent = size * d.scale;
-        float c = std::cos(d.rotation);
-        float sn = std::sin(d.rotation);
-        s.edgeX = glm::vec2(c, sn) * extent.x;
-        s.edgeY = glm::vec2(-sn, c) * extent.y;
-        s.pivotOffset = -(s.edgeX * d.pivot.x + s.edgeY * d.pivot.y);
+        const glm::vec2 extent = size * d.scale;
+        if (d.rotation == 0.0f) {
+            // Axis-aligned: no sin/cos.
+            s.edgeX = {extent.x, 0.0f};
+            s.edgeY = {0.0f, extent.y};
+        } else {
+            const float c = std::cos(d.rotation);
+            const float sn = std::sin(d.rotation);
+            s.edgeX = glm::vec2(c, sn) * extent.x;
+            s.edgeY = glm::vec2(-sn, c) * extent.y;
+        }
+        pivotOffset = -(s.edgeX * d.pivot.x + s.edgeY * d.pivot.y);
+        if (d.uvRotated) {
+            // The image is stored turned 90 degrees clockwise: the texture's u axis runs up the
+            // shown image and its v axis (down) to the right. The instance maps u along its
+            // edge X and v down along -edge Y, so its corner (0, 0) is the shown image's
+            // bottom-right corner, edge X the image's up edge and edge Y its leftward edge.
+            pivotOffset += s.edgeX;
+            const glm::vec2 up = s.edgeY;
+            s.edgeY = -s.edgeX;
+            s.edgeX = up;
+        }
         if (!d.hud) {
             packEdges(out, s.edgeX, s.edgeY);
+            orderBounds_[at & ~kCameraBit] = boundsOf(glm::vec2(0.0f), s.edgeX, s.edgeY);
         }
     }
-    if ((s.dirty & kLook) != 0) {
-        packLook(out, d.uv, d.flipX, d.flipY, d.tint);
+    if ((dirty & kLook) != 0) {
+        // A turned image mirrors left-right along the texture's v axis, up-down along u.
+        packLook(out, d.uv, d.uvRotated ? d.flipY : d.flipX, d.uvRotated ? d.flipX : d.flipY, d.tint);
     }
-    Placement p = place(d.position, s.pivotOffset, s.edgeX, s.edgeY, d.parallax, d.hud, camera);
+    const Placement p = place(pos_[index], pivotOffset, s.edgeX, s.edgeY, d.parallax, d.hud, camera);
     if (d.hud) {
+        // The camera turns and scales a HUD sprite's edges.
         packEdges(out, p.ex, p.ey);
+        orderBounds_[at & ~kCameraBit] = boundsOf(glm::vec2(0.0f), p.ex, p.ey);
     }
     out.x = p.origin.x;
     out.y = p.origin.y;
     out.z = d.z;
-    orderBounds_[at] = boundsOf(p.origin, p.ex, p.ey);
-    s.dirty = 0;
 }
 
 void SpriteBatcher::sortOrder() {
@@ -482,25 +538,27 @@ void SpriteBatcher::sortOrder() {
     }
     // Ties keep creation (slot) order, so equal keys draw the same way every frame.
     std::sort(order_.begin(), order_.end(),
-              [&](std::uint32_t a, std::uint32_t b) { return keys[a] != keys[b] ? keys[a] < keys[b] : a < b; });
+              [&](std::uint32_t a, std::uint32_t b) { return keys[a] != keys[b] ? keys[a] < keys[b] : tieFirst(keys[a], a, b); });
     // The packed instances live only in draw order: sprites drawn last frame move to their new
     // place; the others (new, shown again) are packed from scratch by prepare().
     std::vector<Instance> oldPacked = std::move(orderPacked_);
     std::vector<glm::vec4> oldBounds = std::move(orderBounds_);
-    std::vector<std::uint32_t> oldPosition = orderPosition_;
+    std::vector<std::uint32_t> oldPosition = std::move(orderPosition_);
+    orderPosition_.assign(oldPosition.size(), kNotDrawn);
     orderPacked_.assign(order_.size(), Instance{});
     orderBounds_.assign(order_.size(), glm::vec4(0.0f));
     orderKeys_.resize(order_.size());
     orderTranslucent_.resize(order_.size());
     orderTexture_.resize(order_.size());
-    std::fill(orderPosition_.begin(), orderPosition_.end(), kNotDrawn);
     for (std::size_t k = 0; k < order_.size(); ++k) {
         const std::uint32_t i = order_[k];
+        const SpriteDef& d = slots_[i].def;
         orderKeys_[k] = keys[i];
         orderTranslucent_[k] = static_cast<std::uint8_t>(orderKeys_[k] >> 63);
         orderTexture_[k] = slots_[i].texture;
-        orderPosition_[i] = static_cast<std::uint32_t>(k);
-        if (const std::uint32_t was = oldPosition[i]; was != kNotDrawn && was < oldPacked.size()) {
+        orderPosition_[i] = static_cast<std::uint32_t>(k) | (d.hud || d.parallax != 1.0f ? kCameraBit : 0u);
+        if (const std::uint32_t was = oldPosition[i] & ~kCameraBit;
+            oldPosition[i] != kNotDrawn && was < oldPacked.size()) {
             orderPacked_[k] = oldPacked[was];
             orderBounds_[k] = oldBounds[was];
         } else {
@@ -511,8 +569,8 @@ void SpriteBatcher::sortOrder() {
 }
 
 std::size_t SpriteBatcher::prepare(const CameraState& camera, const ViewBounds& view, bool& changed) {
-    changed = !emittedOnce_ || orderDirty_ || allDirty_ || !dirtyList_.empty() || !quads_.empty() ||
-              lastHadQuads_ || !(camera == camera_) || !(view == view_);
+    changed = !emittedOnce_ || orderDirty_ || allDirty_ || movedThrough_ != 0 || !dirtyList_.empty() ||
+              !quads_.empty() || lastHadQuads_ || !(camera == camera_) || !(view == view_);
     if (allDirty_) {
         for (std::uint32_t i = 0; i < slots_.size(); ++i) {
             if (slots_[i].alive) {
@@ -532,12 +590,12 @@ std::size_t SpriteBatcher::prepare(const CameraState& camera, const ViewBounds& 
     }
     camera_ = camera;
     view_ = view;
-    rebuiltLast_ = static_cast<int>(dirtyList_.size());
+    rebuiltLast_ = static_cast<int>(dirtyList_.size()) + movedThrough_;
     for (std::uint32_t i : dirtyList_) {
         if (slots_[i].alive) {
             repack(i, camera);
         } else {
-            slots_[i].dirty = 0;
+            dirty_[i] = 0;
         }
     }
     dirtyList_.clear();
@@ -572,7 +630,7 @@ std::size_t SpriteBatcher::prepare(const CameraState& camera, const ViewBounds& 
         quadOrder_[k] = k;
     }
     std::sort(quadOrder_.begin(), quadOrder_.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return quads_[a].key != quads_[b].key ? quads_[a].key < quads_[b].key : a < b;
+        return quads_[a].key != quads_[b].key ? quads_[a].key < quads_[b].key : tieFirst(quads_[a].key, a, b);
     });
     return order_.size() + quads_.size();
 }
@@ -602,7 +660,7 @@ std::size_t SpriteBatcher::emit(Instance* dst, std::vector<Batch>& batches, Buil
         const std::uint32_t* textureOf = orderTexture_.data();
         const std::uint8_t* translucentOf = orderTranslucent_.data();
         for (std::size_t k = 0; k < sprites; ++k) {
-            if (outside(bounds[k], view)) {
+            if (outside(packed[k], bounds[k], view)) {
                 ++culled;
                 continue;
             }
@@ -617,11 +675,14 @@ std::size_t SpriteBatcher::emit(Instance* dst, std::vector<Batch>& batches, Buil
         std::size_t k = 0;
         std::size_t q = 0;
         while (k < sprites || q < quadOrder_.size()) {
+            // At equal keys the later of the two (the quad, submitted after the sprites were
+            // made) is drawn first in the opaque pass and last in the translucent one.
+            const std::uint64_t quadKey = q < quadOrder_.size() ? quads_[quadOrder_[q]].key : 0;
             bool takeSprite = q == quadOrder_.size() ||
-                              (k < sprites && orderKeys_[k] <= quads_[quadOrder_[q]].key);
+                              (k < sprites && (orderKeys_[k] < quadKey || (orderKeys_[k] == quadKey && isTranslucentKey(quadKey))));
             if (takeSprite) {
                 const std::size_t at = k++;
-                if (outside(orderBounds_[at], view)) {
+                if (outside(orderPacked_[at], orderBounds_[at], view)) {
                     ++culled;
                     continue;
                 }
@@ -642,6 +703,7 @@ std::size_t SpriteBatcher::emit(Instance* dst, std::vector<Batch>& batches, Buil
         batches.back().count = n - batches.back().first;
     }
     lastHadQuads_ = !quads_.empty();
+    movedThrough_ = 0;
     quads_.clear();
     emittedOnce_ = true;
     counts.drawn = static_cast<int>(n);

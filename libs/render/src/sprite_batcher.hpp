@@ -44,8 +44,9 @@ struct BuildCounts {
 // Owns the sprites and turns them into sorted, culled, batched instance data. No OpenGL here,
 // so the benchmark can time the CPU side alone.
 //
-// Each sprite keeps its packed Instance and world bounds between frames; a setter marks it
-// dirty and only dirty sprites are repacked (into the slot's copy and the draw-order copy). The draw order (opaque by texture then front to
+// Each sprite keeps its packed Instance and bounds between frames, in draw order; a setter marks
+// it dirty and only dirty sprites are repacked, except a plain move (setPosition() of a drawn
+// sprite that does not depend on the camera), which writes the new origin in place. The draw order (opaque by texture then front to
 // back, translucent back to front) is re-sorted only when something that decides it changed
 // (z, texture, opacity, visibility, HUD/parallax, creation, destruction). A frame copies the
 // packed instances of the sorted, unculled sprites into the destination, merging in the
@@ -69,7 +70,8 @@ public:
             }
         }
     }
-    [[nodiscard]] const SpriteDef& def(SpriteId id, const char* function) const;
+    // Not const: the position lives in a packed array and is copied into the definition here.
+    [[nodiscard]] const SpriteDef& def(SpriteId id, const char* function);
     void set(SpriteId id, const SpriteDef& def, const char* function);
 
     void setPosition(SpriteId id, glm::vec2 position);
@@ -79,7 +81,7 @@ public:
     void setRotation(SpriteId id, float radians);
     void setPivot(SpriteId id, glm::vec2 pivot);
     void setTint(SpriteId id, Color tint);
-    void setUv(SpriteId id, const Rect& uv);
+    void setUv(SpriteId id, const Rect& uv, bool uvRotated);
     void setFlip(SpriteId id, bool flipX, bool flipY);
     void setParallax(SpriteId id, float parallax);
     void setHud(SpriteId id, bool hud);
@@ -108,14 +110,12 @@ private:
         kQueued = 8, // in dirtyList_
     };
 
-    // What a moving sprite's setter and repack touch comes first (one cache line with the
-    // definition's texture, position and z).
-    struct alignas(64) Slot {
+    // The cold part of a sprite: its definition (whose position is kept in pos_ and copied
+    // back by def()) and what repack() derives from its shape.
+    struct Slot {
         std::uint16_t generation = 1;
         bool alive = false;
-        std::uint8_t dirty = 0;
         std::uint32_t texture = 0;         // resolved texture slot
-        glm::vec2 pivotOffset{0.0f, 0.0f}; // origin - position, local units
         glm::vec2 edgeX{0.0f, 0.0f};       // local (world or camera) units, before HUD transform
         glm::vec2 edgeY{0.0f, 0.0f};
         SpriteDef def;
@@ -124,13 +124,24 @@ private:
     Slot& slot(SpriteId id, const char* function);
     const Slot& slot(SpriteId id, const char* function) const;
     void markDirty(std::uint32_t index, std::uint8_t bits) {
-        Slot& s = slots_[index];
-        if ((s.dirty & kQueued) == 0) {
+        std::uint8_t& d = dirty_[index];
+        if ((d & kQueued) == 0) {
             dirtyList_.push_back(index);
-            s.dirty |= kQueued;
+            d |= kQueued;
         }
-        s.dirty |= bits;
+        d |= bits;
     }
+    // The id check every setter starts with: one 2-byte load (liveGen_ holds the generation of
+    // a live slot, 0 for a free one; a valid id's generation is never 0).
+    std::uint32_t index(SpriteId id, const char* function) const {
+        const std::uint32_t i = id.index1 - 1; // a null id wraps to 0xffffffff: out of range
+        if (i >= liveGen_.size() || liveGen_[i] != id.generation) [[unlikely]] {
+            failBadId(id, function);
+        }
+        return i;
+    }
+    [[noreturn, gnu::cold, gnu::noinline]] static void failBadId(SpriteId id, const char* function);
+    void moveTo(std::uint32_t index, glm::vec2 position);
     void resolveTexture(Slot& s) const;
     void repack(std::uint32_t index, const CameraState& camera);
     void sortOrder();
@@ -142,20 +153,32 @@ private:
     std::uint32_t placeholderSlot_;
 
     std::vector<Slot> slots_;
+    // Per slot, what a moving sprite's setPosition() touches, each array walked in slot order:
+    // generation if alive (else 0), position, origin - position (local units), dirty bits.
+    std::vector<std::uint16_t> liveGen_;
+    std::vector<glm::vec2> pos_;
+    std::vector<glm::vec2> pivotOffset_;
+    std::vector<std::uint8_t> dirty_;
     std::vector<std::uint32_t> free_;
     std::vector<std::uint32_t> dirtyList_;
     std::vector<std::uint32_t> cameraDependent_; // visible HUD or parallax != 1 sprites
     std::vector<std::uint32_t> order_;           // visible sprites in draw order
     std::vector<std::uint64_t> orderKeys_;
     std::vector<std::uint8_t> orderTranslucent_;
-    // Per drawn sprite in draw order, kept up to date by repack(), so a frame's emit() reads
-    // them front to back (a streaming copy): the packed instance, its world bounds (min x,
-    // min y, max x, max y) and texture slot.
+    // Per drawn sprite in draw order, kept up to date by repack() and setPosition(), so a
+    // frame's emit() reads them front to back (a streaming copy): the packed instance, its
+    // bounds relative to the instance's origin (min x, min y, max x, max y) and texture slot.
     std::vector<Instance> orderPacked_;
     std::vector<glm::vec4> orderBounds_;
     std::vector<std::uint32_t> orderTexture_;
-    std::vector<std::uint32_t> orderPosition_; // per slot: its index in order_, or kNotDrawn
+    // Per slot: its index in order_; kCameraBit set when it depends on the camera (HUD or
+    // parallax != 1, so a move is repacked by prepare()); kNotDrawn when hidden or dead.
+    // setPosition() of a drawn sprite that does not depend on the camera writes the new origin
+    // straight into orderPacked_: a moving sprite costs no dirty-list entry and no repack.
+    std::vector<std::uint32_t> orderPosition_;
+    static constexpr std::uint32_t kCameraBit = 0x80000000u;
     static constexpr std::uint32_t kNotDrawn = 0xffffffffu;
+    int movedThrough_ = 0; // sprites setPosition() moved in orderPacked_ since the last emit()
     int alive_ = 0;
     bool orderDirty_ = true;
     bool allDirty_ = false;

@@ -23,6 +23,7 @@ SpriteDef toSpriteDef(const SpriteRendererDef& def, TextureId texture) {
     s.pivot = def.pivot;
     s.tint = def.tint;
     s.uv = def.uv;
+    s.uvRotated = def.uvRotated;
     s.flipX = def.flipX;
     s.flipY = def.flipY;
     s.parallax = def.parallax;
@@ -95,11 +96,12 @@ void SpriteRenderer::setTint(Color tint) {
     }
 }
 
-void SpriteRenderer::setUv(const Rect& uv) {
+void SpriteRenderer::setUv(const Rect& uv, bool uvRotated) {
     if (system_ != nullptr) {
-        system_->renderer().setUv(sprite_, uv);
+        system_->renderer().setUv(sprite_, uv, uvRotated);
     }
     def_.uv = uv;
+    def_.uvRotated = uvRotated;
 }
 
 void SpriteRenderer::setFlip(bool flipX, bool flipY) {

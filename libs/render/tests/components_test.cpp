@@ -127,7 +127,7 @@ TEST_F(RenderComponents, AnimatedSpriteShowsTheFrameItsTimeSays) {
         def.sprite.texture = texture;
         def.sprite.size = {16.0f, 16.0f};
         for (int i = 0; i < 4; ++i) {
-            def.frames.push_back(Rect{{i * 0.25f, 0.0f}, {0.25f, 1.0f}});
+            def.frames.push_back(AnimationFrame{Rect{{i * 0.25f, 0.0f}, {0.25f, 1.0f}}});
         }
         def.animation.frameDuration = 0.1;
         def.animation.mode = AnimationMode::PingPong;
@@ -154,13 +154,100 @@ TEST_F(RenderComponents, AnimatedSpriteBadFieldsAreErrors) {
         EXPECT_THAT(error.what(), HasSubstr("render::AnimatedSpriteRenderer: frames must not be empty"));
     }
     AnimatedSpriteRendererDef outside;
-    outside.frames = {Rect{{0.0f, 0.0f}, {0.5f, 1.0f}}, Rect{{0.75f, 0.0f}, {0.5f, 1.0f}}};
+    outside.frames = {AnimationFrame{Rect{{0.0f, 0.0f}, {0.5f, 1.0f}}}, AnimationFrame{Rect{{0.75f, 0.0f}, {0.5f, 1.0f}}}};
     try {
         AnimatedSpriteRenderer bad(outside);
         FAIL() << "expected an error";
     } catch (const core::Error& error) {
-        EXPECT_THAT(error.what(), HasSubstr("frames[1] must lie in [0, 1], got min (0.75, 0) size (0.5, 1)"));
+        EXPECT_THAT(error.what(), HasSubstr("frames[1].uv must lie in [0, 1], got min (0.75, 0) size (0.5, 1)"));
     }
+}
+
+// The display image of the rotated-frame test: 8 x 4 pixels, quadrants of 4 x 2 (rows from the
+// top): red top-left, green top-right, blue bottom-left, white bottom-right.
+Color quadrant(int x, int yDown) {
+    const Color kWhite{255, 255, 255, 255};
+    const Color top[2] = {kRed, kGreen};
+    const Color bottom[2] = {kBlue, kWhite};
+    return yDown < 2 ? top[x / 4] : bottom[x / 4];
+}
+
+// A 16 x 8 texture holding the display image twice: as is at (0, 0), and turned 90 degrees
+// clockwise at (8, 0) (4 wide, 8 tall), as TexturePacker stores a `rotated` frame: display
+// pixel (x, y) lands at (8 + 3 - y, x).
+TextureId uprightAndTurned(Renderer& renderer) {
+    Image image{16, 8, std::vector<std::uint8_t>(16 * 8 * 4, 0)};
+    auto put = [&](int x, int y, Color c) {
+        std::uint8_t* p = &image.pixels[static_cast<std::size_t>((y * 16 + x) * 4)];
+        p[0] = c.r;
+        p[1] = c.g;
+        p[2] = c.b;
+        p[3] = 255;
+    };
+    for (int y = 0; y < 4; ++y) {
+        for (int x = 0; x < 8; ++x) {
+            put(x, y, quadrant(x, y));
+            put(8 + 3 - y, x, quadrant(x, y));
+        }
+    }
+    return renderer.createTexture(image, TextureDef{.filter = TextureFilter::Nearest});
+}
+
+// An animation whose second frame is stored rotated (TexturePacker `rotated: true`) shows it
+// upright: the same pixels as the unrotated first frame, with the automatic size (the stored
+// region's extent swapped), and mirrored the same way by flipX.
+TEST_F(RenderComponents, AnimatedSpriteShowsRotatedSheetFramesUpright) {
+    const TextureId texture = uprightAndTurned(scene.renderer);
+    const SpriteSheet sheet = SpriteSheet::fromString(R"({"frames": {
+      "look1.png": {"frame": {"x": 0, "y": 0, "w": 8, "h": 4}, "rotated": false},
+      "look2.png": {"frame": {"x": 8, "y": 0, "w": 8, "h": 4}, "rotated": true}},
+      "meta": {"image": "looks.png", "size": {"w": 16, "h": 8}}})",
+                                                      "looks.json");
+    AnimatedSpriteRenderer* plain = nullptr;
+    AnimatedSpriteRenderer* mirrored = nullptr;
+    start([&](core::Scene& s) {
+        AnimatedSpriteRendererDef def;
+        def.sprite.texture = texture;
+        def.frames = animationUvs(sheet, "look");
+        def.animation.frameDuration = 0.1;
+        core::GameObject& top = s.createGameObject();
+        top.setPosition(glm::vec2(0.0f, 16.0f));
+        top.setScale(4.0f);
+        plain = top.addComponent<AnimatedSpriteRenderer>(def);
+        core::GameObject& bottom = s.createGameObject();
+        bottom.setPosition(glm::vec2(0.0f, -16.0f));
+        bottom.setScale(4.0f);
+        def.sprite.flipX = true;
+        mirrored = bottom.addComponent<AnimatedSpriteRenderer>(def);
+    });
+    Image upright = frame(0.0, "upright");
+    ASSERT_NE(plain, nullptr);
+    ASSERT_TRUE(plain->frames()[1].rotated);
+    Image turned = frame(0.1, "turned");
+    EXPECT_EQ(plain->animation().frame(), 1);
+    EXPECT_EQ(mirrored->animation().frame(), 1);
+    EXPECT_TRUE(scene.renderer.sprite(plain->sprite()).uvRotated);
+    // Each sprite is 32 x 16 pixels centred at screen (32, 48) and (32, 16); display pixel
+    // (x, yDown) of the 8 x 4 image covers a 4 x 4 block.
+    for (const Image* image : {&upright, &turned}) {
+        int wrong = 0;
+        for (int y = 0; y < 64; ++y) {
+            for (int x = 0; x < 64; ++x) {
+                Color want = kBlack;
+                if (x >= 16 && x < 48 && y >= 40 && y < 56) {
+                    want = quadrant((x - 16) / 4, (55 - y) / 4);
+                } else if (x >= 16 && x < 48 && y >= 8 && y < 24) {
+                    want = quadrant(7 - (x - 16) / 4, (23 - y) / 4);
+                }
+                if (!near(pixel(*image, x, y), want, 0) && ++wrong <= 5) {
+                    ADD_FAILURE() << (image == &upright ? "upright" : "turned") << " pixel (" << x << ", " << y
+                                  << ") is " << str(pixel(*image, x, y)) << ", expected " << str(want);
+                }
+            }
+        }
+        EXPECT_EQ(wrong, 0);
+    }
+    EXPECT_EQ(turned.pixels, upright.pixels);
 }
 
 // A camera component views from its object: the sprite at the camera object's world position
@@ -189,8 +276,9 @@ TEST_F(RenderComponents, CameraComponentViewsFromItsObject) {
     EXPECT_TRUE(near(pixel(own, 32, 32), kBlack, 0));
 }
 
-// Frames of a sheet's animation in natural order; a rotated frame is refused by name.
-TEST(AnimationUvs, NaturalOrderAndRotatedFramesRefused) {
+// Frames of a sheet's animation in natural order; a rotated frame keeps its stored region and
+// says it is rotated.
+TEST(AnimationUvs, NaturalOrderAndRotatedFramesMarked) {
     const SpriteSheet sheet = SpriteSheet::fromString(R"({"frames": {
       "run10.png": {"frame": {"x": 32, "y": 0, "w": 16, "h": 16}, "rotated": false},
       "run2.png": {"frame": {"x": 16, "y": 0, "w": 16, "h": 16}, "rotated": false},
@@ -198,18 +286,19 @@ TEST(AnimationUvs, NaturalOrderAndRotatedFramesRefused) {
       "spin1.png": {"frame": {"x": 0, "y": 16, "w": 16, "h": 8}, "rotated": true}},
       "meta": {"image": "a.png", "size": {"w": 64, "h": 32}}})",
                                                       "anim.json");
-    const std::vector<Rect> uvs = animationUvs(sheet, "run");
-    ASSERT_EQ(uvs.size(), 3u);
-    EXPECT_FLOAT_EQ(uvs[0].min.x, 0.0f);
-    EXPECT_FLOAT_EQ(uvs[1].min.x, 16.0f / 64.0f);
-    EXPECT_FLOAT_EQ(uvs[2].min.x, 32.0f / 64.0f);
-    EXPECT_FLOAT_EQ(uvs[2].size.x, 16.0f / 64.0f);
-    try {
-        static_cast<void>(animationUvs(sheet, "spin"));
-        FAIL() << "expected an error";
-    } catch (const core::Error& error) {
-        EXPECT_THAT(error.what(), HasSubstr("frame 'spin1.png' is stored rotated"));
-    }
+    const std::vector<AnimationFrame> frames = animationUvs(sheet, "run");
+    ASSERT_EQ(frames.size(), 3u);
+    EXPECT_FLOAT_EQ(frames[0].uv.min.x, 0.0f);
+    EXPECT_FLOAT_EQ(frames[1].uv.min.x, 16.0f / 64.0f);
+    EXPECT_FLOAT_EQ(frames[2].uv.min.x, 32.0f / 64.0f);
+    EXPECT_FLOAT_EQ(frames[2].uv.size.x, 16.0f / 64.0f);
+    EXPECT_FALSE(frames[0].rotated || frames[1].rotated || frames[2].rotated);
+    // Shown 16 x 8, stored 8 wide and 16 tall at (0, 16) of the 64 x 32 image.
+    const std::vector<AnimationFrame> spin = animationUvs(sheet, "spin");
+    ASSERT_EQ(spin.size(), 1u);
+    EXPECT_TRUE(spin[0].rotated);
+    EXPECT_EQ(spin[0].uv.min, glm::vec2(0.0f, 0.5f));
+    EXPECT_EQ(spin[0].uv.size, glm::vec2(8.0f / 64.0f, 0.5f));
     EXPECT_THROW(static_cast<void>(animationUvs(sheet, "walk")), core::Error);
 }
 

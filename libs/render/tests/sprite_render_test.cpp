@@ -306,6 +306,190 @@ TEST_P(SpriteRender, CullsOffscreenAndRebuildsOnlyWhatChanged) {
     EXPECT_EQ(again.pixels, image.pixels);
 }
 
+// A moved sprite's instance is written straight away when nothing else about it changed; every
+// other case goes through the repack: a move, a resize and a second move in one frame; a
+// parallax sprite and a HUD sprite under a moving camera; a sprite moved while hidden; a slot
+// reused by a new sprite and moved before the next frame. The whole image is compared with
+// the rectangles the scene says.
+TEST_P(SpriteRender, MovesOfEveryKindOfSpriteLandWhereTheSceneSays) {
+    Scene scene(GetParam(), {64, 64});
+    Camera camera = pixelCamera({64, 64});
+    const Color kWhite{255, 255, 255, 255};
+    const Color kYellow{255, 255, 0, 255};
+    auto def = [](glm::vec2 position, Color tint) {
+        return SpriteDef{.position = position, .size = {4.0f, 4.0f}, .pivot = {0.0f, 0.0f}, .tint = tint};
+    };
+    const SpriteId a = scene.renderer.createSprite(def({-30.0f, 20.0f}, kRed));
+    SpriteDef parallax = def({0.0f, 20.0f}, kGreen);
+    parallax.parallax = 0.5f;
+    const SpriteId b = scene.renderer.createSprite(parallax);
+    SpriteDef hud = def({20.0f, 20.0f}, kBlue);
+    hud.hud = true;
+    const SpriteId c = scene.renderer.createSprite(hud);
+    const SpriteId d = scene.renderer.createSprite(def({-30.0f, -30.0f}, kWhite));
+    const SpriteId e = scene.renderer.createSprite(def({0.0f, -30.0f}, kYellow));
+    scene.frame(camera, "before");
+
+    // Screen rectangles [x0, x1) x [y0, y1) and colours, y up, camera at `cam`.
+    struct Expect {
+        PixelRect rect;
+        Color color;
+    };
+    auto check = [&](const Image& image, const std::vector<Expect>& expected) {
+        int wrong = 0;
+        for (int y = 0; y < 64; ++y) {
+            for (int x = 0; x < 64; ++x) {
+                Color want = kBlack;
+                for (const Expect& ex : expected) {
+                    if (ex.rect.contains(x, y)) {
+                        want = ex.color;
+                    }
+                }
+                if (!near(pixel(image, x, y), want, 0) && ++wrong <= 5) {
+                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") is " << str(pixel(image, x, y)) << ", expected "
+                                  << str(want);
+                }
+            }
+        }
+        EXPECT_EQ(wrong, 0);
+    };
+    // World (wx, wy) with camera at cam: screen 32 + (w - cam).
+    auto at = [](glm::vec2 world, glm::vec2 cam, glm::vec2 size) {
+        const int x0 = 32 + static_cast<int>(world.x - cam.x);
+        const int y0 = 32 + static_cast<int>(world.y - cam.y);
+        return PixelRect{x0, y0, x0 + static_cast<int>(size.x), y0 + static_cast<int>(size.y)};
+    };
+
+    const glm::vec2 cam{4.0f, -2.0f};
+    camera.setPosition(cam);
+    scene.renderer.setPosition(a, {-20.0f, 10.0f});
+    scene.renderer.setSize(a, {6.0f, 6.0f});
+    scene.renderer.setPosition(a, {-26.0f, 12.0f});
+    scene.renderer.setPosition(b, {10.0f, 18.0f});
+    scene.renderer.setPosition(c, {-10.0f, 14.0f});
+    scene.renderer.setVisible(d, false);
+    scene.renderer.setPosition(d, {-20.0f, -24.0f});
+    scene.renderer.destroySprite(e);
+    const SpriteId f = scene.renderer.createSprite(def({0.0f, 0.0f}, kYellow));
+    scene.renderer.setPosition(f, {16.0f, -20.0f});
+    Image moved = scene.frame(camera, "moved");
+    // Parallax 0.5 draws b at cam + 0.5 * (position - cam); the HUD sprite ignores the camera.
+    const glm::vec2 bDrawn = cam + 0.5f * (glm::vec2(10.0f, 18.0f) - cam);
+    check(moved, {{at({-26.0f, 12.0f}, cam, {6.0f, 6.0f}), kRed},
+                  {at(bDrawn, cam, {4.0f, 4.0f}), kGreen},
+                  {at({-10.0f, 14.0f}, {0.0f, 0.0f}, {4.0f, 4.0f}), kBlue},
+                  {at({16.0f, -20.0f}, cam, {4.0f, 4.0f}), kYellow}});
+    EXPECT_EQ(scene.renderer.stats().sprites, 4);
+
+    // Shown again where it was moved while hidden; a plain move of the reused slot's sprite.
+    scene.renderer.setVisible(d, true);
+    scene.renderer.setPosition(f, {20.0f, -26.0f});
+    Image shown = scene.frame(camera, "shown");
+    check(shown, {{at({-26.0f, 12.0f}, cam, {6.0f, 6.0f}), kRed},
+                  {at(bDrawn, cam, {4.0f, 4.0f}), kGreen},
+                  {at({-10.0f, 14.0f}, {0.0f, 0.0f}, {4.0f, 4.0f}), kBlue},
+                  {at({-20.0f, -24.0f}, cam, {4.0f, 4.0f}), kWhite},
+                  {at({20.0f, -26.0f}, cam, {4.0f, 4.0f}), kYellow}});
+    EXPECT_EQ(scene.renderer.stats().rebuilt, 2); // d (shown again) and f (moved)
+    EXPECT_EQ(scene.renderer.sprite(f).position, glm::vec2(20.0f, -26.0f));
+    EXPECT_EQ(scene.renderer.sprite(a).position, glm::vec2(-26.0f, 12.0f));
+}
+
+// Opaque quads at equal z: the later texture on top whatever the creation order, a cut-out
+// (alpha 0) texel of the top one shows the one under it, and a submitted quad lies over a
+// sprite of its texture.
+TEST_P(SpriteRender, EqualZOpaqueOverlapsFollowTextureThenSubmission) {
+    Scene scene(GetParam(), {32, 32});
+    Camera camera = pixelCamera({32, 32});
+    auto solid = [](Color c, bool cutTopRight) {
+        Image image{2, 2, {}};
+        for (int i = 0; i < 4; ++i) {
+            const bool cut = cutTopRight && i == 1; // rows from the top: texel 1 is the top-right
+            image.pixels.insert(image.pixels.end(), {c.r, c.g, c.b, static_cast<std::uint8_t>(cut ? 0 : 255)});
+        }
+        return image;
+    };
+    const TextureDef nearest{.filter = TextureFilter::Nearest};
+    const TextureId red = scene.renderer.createTexture(solid(kRed, false), nearest);
+    const TextureId green = scene.renderer.createTexture(solid(kGreen, true), nearest);
+    // Green (the later texture) made first, red over its right half made second.
+    scene.renderer.createSprite(SpriteDef{.texture = green, .position = {-12.0f, 0.0f}, .size = {8.0f, 8.0f},
+                                          .pivot = {0.0f, 0.0f}});
+    scene.renderer.createSprite(SpriteDef{.texture = red, .position = {-8.0f, 0.0f}, .size = {8.0f, 8.0f},
+                                          .pivot = {0.0f, 0.0f}});
+    // A blue plain sprite and a submitted white quad over its right half.
+    scene.renderer.createSprite(SpriteDef{.position = {4.0f, -8.0f}, .size = {8.0f, 8.0f}, .pivot = {0.0f, 0.0f},
+                                          .tint = kBlue});
+    scene.renderer.submit(Quad{.position = {8.0f, -8.0f}, .size = {8.0f, 8.0f}, .pivot = {0.0f, 0.0f}});
+    Image image = scene.frame(camera, "equal-z");
+    // Green covers screen [4, 12) x [16, 24); red [8, 16) x [16, 24); green's top-right
+    // quarter [8, 12) x [20, 24) is cut out.
+    EXPECT_TRUE(near(pixel(image, 9, 17), kGreen, 0)) << str(pixel(image, 9, 17));   // overlap, uncut
+    EXPECT_TRUE(near(pixel(image, 9, 22), kRed, 0)) << str(pixel(image, 9, 22));     // overlap, cut
+    EXPECT_TRUE(near(pixel(image, 5, 22), kGreen, 0)) << str(pixel(image, 5, 22));   // green alone
+    EXPECT_TRUE(near(pixel(image, 14, 18), kRed, 0)) << str(pixel(image, 14, 18));   // red alone
+    // Blue covers [20, 28) x [8, 16), the quad [24, 32) x [8, 16).
+    EXPECT_TRUE(near(pixel(image, 21, 10), kBlue, 0)) << str(pixel(image, 21, 10));
+    EXPECT_TRUE(near(pixel(image, 25, 10), Color{255, 255, 255, 255}, 0)) << str(pixel(image, 25, 10));
+    EXPECT_EQ(scene.renderer.stats().opaqueBatches, 3);
+}
+
+// A UV region holding its image turned 90 degrees clockwise (SpriteDef::uvRotated) is shown
+// upright with a corner pivot, mirrored by flipY along the image's own vertical, and a plain
+// move (written straight into the instance) keeps it upright.
+TEST_P(SpriteRender, TurnedUvRegionsShowUpright) {
+    Scene scene(GetParam(), {32, 32});
+    Camera camera = pixelCamera({32, 32});
+    // The shown image: 4 x 2 texels, rows from the top: red red green green / blue blue white
+    // white. Stored turned clockwise in a 2 x 4 texture: shown texel (x, y) at (1 - y, x).
+    const Color kWhite{255, 255, 255, 255};
+    auto shown = [&](int x, int yDown) { return yDown == 0 ? (x < 2 ? kRed : kGreen) : (x < 2 ? kBlue : kWhite); };
+    Image image{2, 4, std::vector<std::uint8_t>(2 * 4 * 4, 255)};
+    for (int y = 0; y < 2; ++y) {
+        for (int x = 0; x < 4; ++x) {
+            std::uint8_t* p = &image.pixels[static_cast<std::size_t>((x * 2 + (1 - y)) * 4)];
+            const Color c = shown(x, y);
+            p[0] = c.r;
+            p[1] = c.g;
+            p[2] = c.b;
+        }
+    }
+    const TextureId texture = scene.renderer.createTexture(image, TextureDef{.filter = TextureFilter::Nearest});
+    // 8 x 4 world units: each shown texel a 2 x 2 block.
+    const SpriteId plain = scene.renderer.createSprite(SpriteDef{
+        .texture = texture, .position = {-12.0f, 4.0f}, .size = {8.0f, 4.0f}, .pivot = {0.0f, 0.0f}, .uvRotated = true});
+    const SpriteId flipped = scene.renderer.createSprite(SpriteDef{.texture = texture, .position = {2.0f, -10.0f},
+                                                                   .size = {8.0f, 4.0f}, .pivot = {0.0f, 0.0f},
+                                                                   .uvRotated = true, .flipY = true});
+    auto check = [&](const Image& frame, glm::vec2 plainAt, glm::vec2 flippedAt) {
+        int wrong = 0;
+        for (int y = 0; y < 32; ++y) {
+            for (int x = 0; x < 32; ++x) {
+                Color want = kBlack;
+                const int px = x - (16 + static_cast<int>(plainAt.x));
+                const int py = y - (16 + static_cast<int>(plainAt.y));
+                const int fx = x - (16 + static_cast<int>(flippedAt.x));
+                const int fy = y - (16 + static_cast<int>(flippedAt.y));
+                if (px >= 0 && px < 8 && py >= 0 && py < 4) {
+                    want = shown(px / 2, 1 - py / 2);
+                } else if (fx >= 0 && fx < 8 && fy >= 0 && fy < 4) {
+                    want = shown(fx / 2, fy / 2); // flipY: the bottom row on top
+                }
+                if (!near(pixel(frame, x, y), want, 0) && ++wrong <= 5) {
+                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") is " << str(pixel(frame, x, y)) << ", expected "
+                                  << str(want);
+                }
+            }
+        }
+        EXPECT_EQ(wrong, 0);
+    };
+    check(scene.frame(camera, "turned"), {-12.0f, 4.0f}, {2.0f, -10.0f});
+    scene.renderer.setPosition(plain, {-6.0f, -14.0f});
+    check(scene.frame(camera, "moved"), {-6.0f, -14.0f}, {2.0f, -10.0f});
+    EXPECT_EQ(scene.renderer.stats().rebuilt, 1);
+    EXPECT_TRUE(scene.renderer.sprite(flipped).uvRotated);
+}
+
 // Transient quads share the sprites' batches (same texture, same pass) and last one frame.
 TEST_P(SpriteRender, SubmittedQuadsBatchWithSprites) {
     Scene scene(GetParam(), {32, 32});

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -32,6 +33,48 @@ void addFixture(b2Body* body, const ShapeDesc& desc, const b2Shape& shape) {
     fixture.friction = desc.friction;
     fixture.restitution = desc.restitution;
     body->CreateFixture(&fixture);
+}
+
+// A chain end without a ghost point is free in e2d (round like a segment's); Box2D 2.4's
+// CreateChain() needs one, so it gets the end segment continued straight on.
+b2Vec2 ghostOrExtension(const std::optional<glm::vec2>& ghost, glm::vec2 end, glm::vec2 inner) {
+    return toB2(ghost ? *ghost : end + (end - inner));
+}
+
+// One material for the whole chain: a b2ChainShape. A material per segment: the chain's own
+// child edges (one-sided b2EdgeShapes with the same ghost vertices), each its own fixture, since
+// a Box2D fixture has one friction.
+void addChain(b2Body* body, const ShapeDesc& desc) {
+    std::vector<b2Vec2> points;
+    for (glm::vec2 p : desc.points) {
+        points.push_back(toB2(p));
+    }
+    const auto n = static_cast<int32>(points.size());
+    b2ChainShape chain;
+    if (desc.loop) {
+        chain.CreateLoop(points.data(), n);
+    } else {
+        chain.CreateChain(points.data(), n, ghostOrExtension(desc.ghostBefore, desc.points[0], desc.points[1]),
+                          ghostOrExtension(desc.ghostAfter, desc.points[std::size_t(n) - 1],
+                                           desc.points[std::size_t(n) - 2]));
+    }
+    if (desc.materials.size() <= 1) {
+        ShapeDesc material = desc;
+        if (desc.materials.size() == 1) {
+            material.friction = desc.materials[0].friction;
+            material.restitution = desc.materials[0].restitution;
+        }
+        addFixture(body, material, chain);
+        return;
+    }
+    for (int32 i = 0; i < chain.GetChildCount(); ++i) {
+        b2EdgeShape edge;
+        chain.GetChildEdge(&edge, i);
+        ShapeDesc material = desc;
+        material.friction = desc.materials[std::size_t(i)].friction;
+        material.restitution = desc.materials[std::size_t(i)].restitution;
+        addFixture(body, material, edge);
+    }
 }
 
 void addShape(b2Body* body, const ShapeDesc& desc) {
@@ -85,6 +128,9 @@ void addShape(b2Body* body, const ShapeDesc& desc) {
         addFixture(body, desc, edge);
         break;
     }
+    case ShapeKind::Chain:
+        addChain(body, desc);
+        break;
     }
 }
 
@@ -152,6 +198,18 @@ std::string shapeUnsupported(const ShapeDesc& shape, bool massive) {
         }
         return {};
     }
+    case ShapeKind::Chain: {
+        // b2ChainShape::CreateChain/CreateLoop assert that consecutive vertices are farther
+        // apart than b2_linearSlop (the loop's closing pair is not checked).
+        for (std::size_t i = 0; i + 1 < shape.points.size(); ++i) {
+            const glm::vec2 d = shape.points[i + 1] - shape.points[i];
+            if (!(d.x * d.x + d.y * d.y > b2_linearSlop * b2_linearSlop)) {
+                return "chain points " + std::to_string(i) + " and " + std::to_string(i + 1) +
+                       " are not farther apart than b2_linearSlop (0.005 m; b2ChainShape asserts)";
+            }
+        }
+        return {};
+    }
     case ShapeKind::Circle:
     case ShapeKind::Segment:
         return {};
@@ -197,6 +255,47 @@ b2Joint* createJoint(b2World& world, const JointDesc& j, b2Body* a, b2Body* b) {
         def.collideConnected = j.collideConnected;
         return world.CreateJoint(&def);
     }
+    case JointKind::Wheel: {
+        b2WheelJointDef def;
+        def.Initialize(a, b, toB2(j.anchorA), toB2(j.axis));
+        def.collideConnected = j.collideConnected;
+        def.enableLimit = j.enableLimit;
+        def.lowerTranslation = j.lower;
+        def.upperTranslation = j.upper;
+        def.enableMotor = j.enableMotor;
+        def.motorSpeed = j.motorSpeed;
+        def.maxMotorTorque = j.maxMotor;
+        if (j.enableSpring) {
+            b2LinearStiffness(def.stiffness, def.damping, j.hertz, j.dampingRatio, a, b);
+        }
+        return world.CreateJoint(&def);
+    }
+    case JointKind::Motor: {
+        b2MotorJointDef def;
+        def.bodyA = a;
+        def.bodyB = b;
+        def.collideConnected = j.collideConnected;
+        def.linearOffset = toB2(j.linearOffset);
+        def.angularOffset = j.angularOffset;
+        def.maxForce = j.maxForce;
+        def.maxTorque = j.maxTorque;
+        def.correctionFactor = j.correctionFactor;
+        return world.CreateJoint(&def);
+    }
+    case JointKind::Mouse: {
+        // Box2D 2.4 pulls the point of B that is at the target when the joint is made: make it
+        // at the anchor, then move the target.
+        b2MouseJointDef def;
+        def.bodyA = a;
+        def.bodyB = b;
+        def.collideConnected = j.collideConnected;
+        def.target = toB2(j.anchorA);
+        def.maxForce = j.maxForce;
+        b2LinearStiffness(def.stiffness, def.damping, j.hertz, j.dampingRatio, a, b);
+        auto* mouse = static_cast<b2MouseJoint*>(world.CreateJoint(&def));
+        mouse->SetTarget(toB2(j.target));
+        return mouse;
+    }
     case JointKind::Distance: {
         b2DistanceJointDef def;
         // Rigid: minLength = maxLength = length (Initialize's default).
@@ -223,6 +322,14 @@ b2Joint* createJoint(b2World& world, const JointDesc& j, b2Body* a, b2Body* b) {
 } // namespace
 
 std::string box2DUnsupported(const SceneDesc& scene) {
+    for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+        const JointDesc& j = scene.joints[i];
+        if (j.enableSpring && (j.kind == JointKind::Revolute || j.kind == JointKind::Prismatic)) {
+            return "joint " + std::to_string(i) + ": Box2D 2.4.1's " + jointKindName(j.kind) +
+                   " joint has no spring (b2" + (j.kind == JointKind::Revolute ? "Revolute" : "Prismatic") +
+                   "JointDef has no stiffness; Box2D v3's has one)";
+        }
+    }
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         const BodyDesc& body = scene.bodies[i];
         for (std::size_t j = 0; j < body.shapes.size(); ++j) {

@@ -23,6 +23,12 @@ ph::ShapeGeometry toE2dGeometry(const ShapeDesc& s) {
         return ph::Capsule{s.point1, s.point2, s.radius};
     case ShapeKind::Segment:
         return ph::Segment{s.point1, s.point2};
+    case ShapeKind::Chain: {
+        // One segment of the chain standing alone; buildE2d() makes chains with createChain().
+        ph::ChainSegment g;
+        g.segment = {s.points.front(), s.points.size() > 1 ? s.points[1] : s.points.front()};
+        return g;
+    }
     }
     return ph::Circle{s.center, s.radius};
 }
@@ -63,6 +69,9 @@ ph::JointDef toE2dJoint(const JointDesc& j, const SceneDesc& scene, const ph::Wo
         d.enableMotor = j.enableMotor;
         d.motorSpeed = j.motorSpeed;
         d.maxMotorTorque = j.maxMotor;
+        d.enableSpring = j.enableSpring;
+        d.hertz = j.hertz;
+        d.dampingRatio = j.dampingRatio;
         d.collideConnected = j.collideConnected;
         return d;
     }
@@ -80,6 +89,53 @@ ph::JointDef toE2dJoint(const JointDesc& j, const SceneDesc& scene, const ph::Wo
         d.enableMotor = j.enableMotor;
         d.motorSpeed = j.motorSpeed;
         d.maxMotorForce = j.maxMotor;
+        d.enableSpring = j.enableSpring;
+        d.hertz = j.hertz;
+        d.dampingRatio = j.dampingRatio;
+        d.collideConnected = j.collideConnected;
+        return d;
+    }
+    case JointKind::Wheel: {
+        ph::WheelJointDef d;
+        d.bodyA = a;
+        d.bodyB = b;
+        d.localAnchorA = world.localPoint(a, j.anchorA);
+        d.localAnchorB = world.localPoint(b, j.anchorA);
+        d.localAxisA = world.localVector(a, j.axis);
+        // e2d's def has the spring on by default; the scene says whether there is one.
+        d.enableSpring = j.enableSpring;
+        d.hertz = j.hertz;
+        d.dampingRatio = j.dampingRatio;
+        d.enableLimit = j.enableLimit;
+        d.lowerTranslation = j.lower;
+        d.upperTranslation = j.upper;
+        d.enableMotor = j.enableMotor;
+        d.motorSpeed = j.motorSpeed;
+        d.maxMotorTorque = j.maxMotor;
+        d.collideConnected = j.collideConnected;
+        return d;
+    }
+    case JointKind::Motor: {
+        ph::MotorJointDef d;
+        d.bodyA = a;
+        d.bodyB = b;
+        d.linearOffset = j.linearOffset;
+        d.angularOffset = j.angularOffset;
+        d.maxForce = j.maxForce;
+        d.maxTorque = j.maxTorque;
+        d.correctionFactor = j.correctionFactor;
+        d.collideConnected = j.collideConnected;
+        return d;
+    }
+    case JointKind::Mouse: {
+        ph::MouseJointDef d;
+        d.bodyA = a;
+        d.bodyB = b;
+        d.target = j.target;
+        d.localAnchorB = world.localPoint(b, j.anchorA);
+        d.hertz = j.hertz;
+        d.dampingRatio = j.dampingRatio;
+        d.maxForce = j.maxForce;
         d.collideConnected = j.collideConnected;
         return d;
     }
@@ -134,6 +190,22 @@ E2dScene buildE2d(const SceneDesc& scene, ph::WorldDef def) {
             sd.density = shape.density;
             sd.friction = shape.friction;
             sd.restitution = shape.restitution;
+            if (shape.kind == ShapeKind::Chain) {
+                ph::ChainDef cd;
+                cd.points.assign(shape.points.begin(), shape.points.end());
+                cd.isLoop = shape.loop;
+                cd.ghostBefore = shape.ghostBefore;
+                cd.ghostAfter = shape.ghostAfter;
+                for (const ChainMaterial& m : shape.materials) {
+                    ph::SurfaceMaterial material;
+                    material.friction = m.friction;
+                    material.restitution = m.restitution;
+                    cd.materials.push_back(material);
+                }
+                cd.shape = sd;
+                out.world.createChain(body, cd);
+                continue;
+            }
             out.world.createShape(body, sd, toE2dGeometry(shape));
         }
         out.bodies.push_back(body);

@@ -15,6 +15,12 @@ const char* jointKindName(JointKind kind) {
         return "prismatic";
     case JointKind::Weld:
         return "weld";
+    case JointKind::Wheel:
+        return "wheel";
+    case JointKind::Motor:
+        return "motor";
+    case JointKind::Mouse:
+        return "mouse";
     }
     return "?";
 }

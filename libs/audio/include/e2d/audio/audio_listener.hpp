@@ -7,7 +7,7 @@ namespace e2d::audio {
 
 class AudioSystem;
 
-/// The ears of the scene (seed 2.5.3): every frame it gives the mixer its GameObject's world
+/// The ears of the scene: every frame it gives the mixer its GameObject's world
 /// position and orientation, from which every spatial voice is heard. One listener is active at
 /// a time: a second one that enters the scene while another is active warns once through the
 /// logger and stays inactive (even after the first one goes). Unique per object.

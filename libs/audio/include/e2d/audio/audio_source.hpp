@@ -11,7 +11,7 @@ namespace e2d::audio {
 
 class AudioSystem;
 
-/// How an AudioSource plays (seed 2.5.2). Every field can be changed later through the component.
+/// How an AudioSource plays. Every field can be changed later through the component.
 struct AudioSourceDef {
     /// Path of the sound file. Loaded (and shared through the mixer's cache) when the object
     /// enters the scene. Default empty: the source has nothing to play until setClip().

@@ -18,7 +18,7 @@ class Logger;
 }
 
 /// Sound playback through OpenAL Soft: an owned device and context, a cache of sounds, a fixed
-/// pool of voices with priorities, streaming, fades, buses and the seed's spatial model.
+/// pool of voices with priorities, streaming, fades, buses and a 2D spatial model (spatial.hpp).
 namespace e2d::audio {
 
 /// Where a Mixer sends its sound.
@@ -92,7 +92,7 @@ struct PlayDef {
     float pitch = 1.0f;
     /// Start again at the end, seamlessly (also for streams). Default false.
     bool loop = false;
-    /// Positioned in the world and heard relative to the listener (the seed's 3D sound);
+    /// Positioned in the world and heard relative to the listener (spatial.hpp);
     /// otherwise it ignores positions. Default false.
     bool spatial = false;
     /// World units, for spatial voices. Default (0, 0).

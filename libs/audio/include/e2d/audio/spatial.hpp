@@ -3,7 +3,8 @@
 
 #include <glm/vec2.hpp>
 
-/// The seed's 2D spatial model (report section 2.5.1), as its text describes it.
+/// The 2D spatial model: linear distance attenuation between a minimum and a maximum distance,
+/// and equal-power stereo panning from the horizontal offset to the listener.
 namespace e2d::audio {
 
 /// Distances of the spatial model, in world units, shared by every voice of a mixer.

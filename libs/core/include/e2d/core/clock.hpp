@@ -9,8 +9,7 @@ namespace e2d::core {
 ///
 /// All values are seconds. `unscaledTime()` is real time since construction; `time()` is
 /// scaled time, accumulated piecewise: changing the scale affects only the time that passes
-/// after the change, so `time()` never jumps (the seed multiplied the whole elapsed time by
-/// the current scale, which made it jump). A source that goes backwards is treated as
+/// after the change, so `time()` never jumps. A source that goes backwards is treated as
 /// standing still.
 class Clock {
 public:

@@ -21,7 +21,7 @@ struct FrameInfo {
     bool sceneChanged = false;
 };
 
-/// The frame sequence of the seed's game loop, without any window, so it runs headless.
+/// The frame sequence of a game loop, without any window, so it runs headless.
 ///
 /// `frame()`: apply a pending scene change; `Scene::beginFrame()` (deferred objects and
 /// components); systems' `beginFrame()`; tick the clock (scaled dt); run the fixed steps the

@@ -30,8 +30,7 @@ class Scene;
 ///
 /// Transform: `position()` (x, y in world units; z orders drawing, as the renderer defines),
 /// `scale()` and `orientation()` are relative to the parent (to the world for a root
-/// object). Orientation is in radians, counter-clockwise positive with y pointing up (the seed
-/// used clockwise). The local matrix is T(position) * R(orientation) * S(scale); the world
+/// object). Orientation is in radians, counter-clockwise positive with y pointing up. The local matrix is T(position) * R(orientation) * S(scale); the world
 /// matrix is parent world * local, cached and recomputed only after something on the path to
 /// the root changed.
 ///

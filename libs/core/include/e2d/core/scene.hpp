@@ -28,8 +28,7 @@ class Logger;
 /// Whoever runs the scene (SceneDirector, or a test) calls the public `dispatch*` methods;
 /// each one runs the scene's own handler first, then forwards the event to every game object
 /// in creation order (skipping inactive ones, see GameObject::setActive()), which forwards it
-/// to its components in attachment order (the seed's
-/// order).
+/// to its components in attachment order.
 ///
 /// Creation and destruction of game objects are deferred to `beginFrame()`, the start of the
 /// next frame, so they are safe from inside any event.

@@ -19,7 +19,7 @@ class Logger;
 class SceneRegistry;
 class System;
 
-/// Owns the current scene and changes scenes on request (the scene part of the seed's Game).
+/// Owns the current scene and changes scenes on request.
 ///
 /// `changeToScene()` only records the request; `applyPendingChange()` (called by GameLoop at
 /// the start of a frame) performs it: the old scene is terminated (its objects receive

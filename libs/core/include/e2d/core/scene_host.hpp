@@ -11,7 +11,7 @@ namespace e2d::core {
 class Logger;
 class System;
 
-/// What a Scene needs from whatever runs it (in place of the seed's global Game).
+/// What a Scene needs from whatever runs it.
 /// Implemented by SceneDirector; tests can implement it directly.
 class SceneHost {
 public:

@@ -13,7 +13,7 @@
 
 namespace e2d::core {
 
-/// Creates scenes by name (the seed's SceneManager, owned by the game instead of global).
+/// Creates scenes by name (owned by the game, not global).
 ///
 /// Every `create()` builds a fresh scene, so entering a scene twice starts it from scratch.
 class SceneRegistry {

@@ -31,8 +31,7 @@ public:
 ///
 /// `update(dt)` updates the current state, then checks the current state's transitions in
 /// the order they were added; the first whose condition returns true fires: current
-/// `onExit()`, then target `onEnter()`. At most one transition fires per update. (The seed
-/// kept transitions in a map keyed by pointer, so their order was arbitrary.)
+/// `onExit()`, then target `onEnter()`. At most one transition fires per update.
 class StateMachine {
 public:
     /// A transition guard: true means "take this transition now".
@@ -90,7 +89,7 @@ private:
     State* current_ = nullptr;
 };
 
-/// A StateMachine attached to a GameObject (the seed's StateMachine was a Component): it is
+/// A StateMachine attached to a GameObject: it is
 /// updated with the object's update event and exits its current state on onTerminate.
 /// Build the machine with `machine()` and call `machine().start(...)`.
 class StateMachineComponent : public Component {

@@ -10,23 +10,32 @@
 
 namespace e2d::render {
 
+/// One frame of an animation: where its image lies in the texture.
+struct AnimationFrame {
+    /// UV rectangle, as SpriteDef::uv (fractions, top-left origin, inside [0, 1]). Default empty.
+    Rect uv{};
+    /// The image is stored turned 90 degrees clockwise in `uv` (SpriteFrame::rotated, shown
+    /// upright as SpriteDef::uvRotated). Default false.
+    bool rotated = false;
+};
+
 /// How an AnimatedSpriteRenderer starts (seed 2.4.2.8).
 struct AnimatedSpriteRendererDef {
-    /// The sprite (texture, size, pivot, tint, ...); its `uv` is replaced by the current frame's.
+    /// The sprite (texture, size, pivot, tint, ...); its `uv` and `uvRotated` are replaced by
+    /// the current frame's.
     SpriteRendererDef sprite{};
-    /// The frames' UV rectangles in the texture, in playing order, at least one (each as
-    /// SpriteDef::uv: fractions, top-left origin, inside [0, 1]). Default none.
-    std::vector<Rect> frames;
+    /// The frames in playing order, at least one. Default none.
+    std::vector<AnimationFrame> frames;
     /// Timing; its `frameCount` is ignored (the number of `frames` is used). Default: 0.1 s per
     /// frame, from frame 0, looping, speed 1.
     AnimationDef animation{};
 };
 
-/// The UV rectangles of the animation `baseName` of `sheet` (SpriteSheet::animationFrames(),
-/// natural numeric order), for AnimatedSpriteRendererDef::frames. Throws core::Error naming the
-/// sheet and base name when there is no such frame, and naming the frame when one is stored
-/// rotated (a rotated frame needs a rotated quad, which a sprite's UV rectangle cannot express).
-[[nodiscard]] std::vector<Rect> animationUvs(const SpriteSheet& sheet, std::string_view baseName);
+/// The frames of the animation `baseName` of `sheet` (SpriteSheet::animationFrames(), natural
+/// numeric order) with their UV rectangles and rotation, for AnimatedSpriteRendererDef::frames.
+/// Frames stored rotated are shown upright. Throws core::Error naming the sheet and base name
+/// when there is no such frame.
+[[nodiscard]] std::vector<AnimationFrame> animationUvs(const SpriteSheet& sheet, std::string_view baseName);
 
 /// A SpriteRenderer whose UV rectangle plays a frame-by-frame Animation: every update(dt) of the
 /// scene advances the animation by dt and shows its frame.
@@ -38,12 +47,12 @@ public:
 
     [[nodiscard]] Animation& animation() noexcept { return animation_; }
     [[nodiscard]] const Animation& animation() const noexcept { return animation_; }
-    [[nodiscard]] const std::vector<Rect>& frames() const noexcept { return frames_; }
+    [[nodiscard]] const std::vector<AnimationFrame>& frames() const noexcept { return frames_; }
 
     void update(double dt) override;
 
 private:
-    std::vector<Rect> frames_;
+    std::vector<AnimationFrame> frames_;
     Animation animation_;
     int shown_ = -1;
 };

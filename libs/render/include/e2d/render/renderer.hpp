@@ -28,8 +28,10 @@
 ///
 /// Each frame (render()):
 /// 1. opaque pass: quads whose tint alpha is 255 and whose texture has no texel with alpha
-///    strictly between 0 and 255; depth test and write, texels with alpha < 0.5 discarded,
-///    sorted by texture then front to back (depth does the ordering, so one batch per texture);
+///    strictly between 0 and 255; strict depth test and write, texels with alpha < 0.5
+///    discarded, sorted by texture (last first) then front to back, and of equal-z quads the
+///    one that ends on top first (depth does the ordering, so one batch per texture, and the
+///    quads it covers are rejected before shading);
 /// 2. translucent pass: the rest, blended, depth-tested against the opaque pass, sorted back
 ///    to front by z, a batch broken only where the texture changes in that order.
 /// Each batch is one instanced draw call (FrameStats::drawCalls == FrameStats::batches).
@@ -87,6 +89,10 @@ struct SpriteDef {
     /// Part of the texture shown, fraction of the texture, top-left origin (see Image), each
     /// coordinate in [0, 1], size >= 0. Default the whole texture.
     Rect uv = kFullUv;
+    /// The `uv` region holds the image stored turned 90 degrees clockwise (a TexturePacker
+    /// frame with `rotated: true`): the sprite shows it upright, so the region's height is the
+    /// image's width (the automatic size is the region's extent swapped). Default false.
+    bool uvRotated = false;
     /// Mirror the image (not the quad: the pivot stays where it is). Default false.
     bool flipX = false;
     bool flipY = false;
@@ -229,7 +235,8 @@ public:
     void setRotation(SpriteId id, float radians);
     void setPivot(SpriteId id, glm::vec2 pivot);
     void setTint(SpriteId id, Color tint);
-    void setUv(SpriteId id, const Rect& uv);
+    /// The UV rectangle and whether the image is stored turned in it (SpriteDef::uvRotated).
+    void setUv(SpriteId id, const Rect& uv, bool uvRotated = false);
     void setFlip(SpriteId id, bool flipX, bool flipY);
     void setParallax(SpriteId id, float parallax);
     void setHud(SpriteId id, bool hud);

@@ -28,6 +28,8 @@ struct SpriteRendererDef {
     Color tint{};
     /// Default the whole texture.
     Rect uv = kFullUv;
+    /// See SpriteDef::uvRotated. Default false.
+    bool uvRotated = false;
     bool flipX = false;
     bool flipY = false;
     /// See SpriteDef::parallax. Default 1.
@@ -59,7 +61,8 @@ public:
 
     /// Change the look; applied at once when the sprite exists.
     void setTint(Color tint);
-    void setUv(const Rect& uv);
+    /// The UV rectangle and whether the image is stored turned in it (SpriteDef::uvRotated).
+    void setUv(const Rect& uv, bool uvRotated = false);
     void setFlip(bool flipX, bool flipY);
     void setVisible(bool visible);
     void setTexture(TextureId texture);

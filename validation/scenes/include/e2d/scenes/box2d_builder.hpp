@@ -25,7 +25,10 @@ struct Box2DSettings {
 /// A Box2D 2.4 world built from a SceneDesc. Translation notes: Box2D gives every polygon a
 /// 0.01 m skin (b2_polygonRadius), so boxes placed exactly touching start 0.02 m overlapped and
 /// are pushed apart; segments become two-sided b2EdgeShapes; capsules become a box plus two
-/// circles on one body (Box2D 2.4 has no capsule); restitution threshold stays Box2D's 1 m/s.
+/// circles on one body (Box2D 2.4 has no capsule); a chain is a b2ChainShape (an open end without
+/// a ghost point gets its end segment continued straight on as the ghost), or with a material per
+/// segment its one-sided child edges as separate fixtures; wheel and mouse springs take
+/// b2LinearStiffness of the same frequency; restitution threshold stays Box2D's 1 m/s.
 struct Box2DScene {
     std::unique_ptr<b2World> world;
     std::vector<b2Body*> bodies; ///< in SceneDesc order
@@ -43,8 +46,9 @@ struct Box2DScene {
 /// Why Box2D 2.4 cannot build `scene` (empty when it can). Box2D checks its input with
 /// assertions that abort the process: a polygon whose vertices weld (closer than
 /// 0.5 b2_linearSlop = 0.0025 m) to fewer than three, or a dynamic polygon whose area is not above
-/// b2_epsilon (b2PolygonShape::Set, ComputeMass). The reason names the body and shape
-/// (`bodies[3].shapes[0]: ...`).
+/// b2_epsilon (b2PolygonShape::Set, ComputeMass), chain points not farther apart than
+/// b2_linearSlop (b2ChainShape asserts); and what 2.4.1 lacks: a spring on a revolute or
+/// prismatic joint. The reason names the body and shape (`body 3, shape 0: ...`) or the joint.
 [[nodiscard]] std::string box2DUnsupported(const SceneDesc& scene);
 
 /// Builds `scene` in a new Box2D world. Throws std::invalid_argument with box2DUnsupported()'s

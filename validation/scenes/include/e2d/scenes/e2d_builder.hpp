@@ -29,7 +29,8 @@ E2dScene buildE2d(const SceneDesc& scene, physics::WorldDef def = {});
 physics::JointDef toE2dJoint(const JointDesc& joint, const SceneDesc& scene, const physics::World& world,
                              const std::vector<physics::BodyId>& bodies);
 
-/// The shape a ShapeDesc describes, as e2d geometry.
+/// The shape a ShapeDesc describes, as e2d geometry. A chain is many shapes: this gives its first
+/// segment alone, without neighbours (buildE2d() makes the whole chain with World::createChain()).
 physics::ShapeGeometry toE2dGeometry(const ShapeDesc& shape);
 
 } // namespace e2d::scenes

@@ -4,6 +4,7 @@
 #include <glm/vec2.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,7 +15,13 @@
 namespace e2d::scenes {
 
 enum class BodyKind : std::uint8_t { Static, Kinematic, Dynamic };
-enum class ShapeKind : std::uint8_t { Box, Polygon, Circle, Capsule, Segment };
+enum class ShapeKind : std::uint8_t { Box, Polygon, Circle, Capsule, Segment, Chain };
+
+/// Friction and restitution of one chain segment (ShapeDesc::materials).
+struct ChainMaterial {
+    float friction = 0.6f;    ///< Coulomb coefficient
+    float restitution = 0.0f; ///< 0 inelastic .. 1 elastic
+};
 
 struct ShapeDesc {
     ShapeKind kind = ShapeKind::Box;
@@ -25,6 +32,14 @@ struct ShapeDesc {
     float radius = 0.0f;               ///< Circle/Capsule radius; Polygon rounding, metres
     glm::vec2 point1{0.0f, 0.0f};      ///< Capsule/Segment: first end, local, metres
     glm::vec2 point2{0.0f, 0.0f};      ///< Capsule/Segment: second end, local, metres
+    /// Chain: one-sided segments through `points` (local, metres), hit from the right-hand side
+    /// walking from one point to the next; a loop joins the last point to the first. An open
+    /// chain may give the point before the first and after the last (ghosts, never collided).
+    bool loop = false;
+    std::optional<glm::vec2> ghostBefore;
+    std::optional<glm::vec2> ghostAfter;
+    /// Chain: empty (every segment takes friction and restitution), one, or one per segment.
+    std::vector<ChainMaterial> materials;
     float density = 1.0f;              ///< kg/m^2
     float friction = 0.6f;             ///< Coulomb coefficient
     float restitution = 0.0f;          ///< 0 inelastic .. 1 elastic
@@ -47,7 +62,7 @@ struct BodyDesc {
     std::string tag; ///< names bodies the metrics look at, e.g. "top"; several may share one
 };
 
-enum class JointKind { Revolute, Distance, Prismatic, Weld };
+enum class JointKind { Revolute, Distance, Prismatic, Weld, Wheel, Motor, Mouse };
 
 /// A joint between two bodies of the scene, given in world coordinates at creation (as Box2D's
 /// Initialize() functions take it); each builder turns the anchors and axis into its bodies'
@@ -56,24 +71,36 @@ struct JointDesc {
     JointKind kind = JointKind::Revolute;
     int bodyA = 0;                    ///< index in SceneDesc::bodies
     int bodyB = 0;
-    glm::vec2 anchorA{0.0f, 0.0f};    ///< world, m; revolute, prismatic, weld: the one anchor
+    /// World, m. Revolute, prismatic, weld, wheel: the one anchor; mouse: the point of body B
+    /// pulled (its local point at the start).
+    glm::vec2 anchorA{0.0f, 0.0f};
     glm::vec2 anchorB{0.0f, 0.0f};    ///< world, m; distance only
-    glm::vec2 axis{1.0f, 0.0f};       ///< prismatic: unit axis, world
+    glm::vec2 axis{1.0f, 0.0f};       ///< prismatic, wheel: unit axis, world (fixed in body A)
     bool collideConnected = false;
     /// Revolute: angles (rad); prismatic: translations along the axis (m); distance: the least
     /// and largest length (m, a rope when there is no spring).
     bool enableLimit = false;
     float lower = 0.0f;
     float upper = 0.0f;
-    /// Revolute: rad/s and N m; prismatic: m/s and N.
+    /// Revolute, wheel: rad/s and N m; prismatic: m/s and N.
     bool enableMotor = false;
     float motorSpeed = 0.0f;
     float maxMotor = 0.0f;
-    /// Distance: a spring of `hertz` and `dampingRatio` instead of a rigid rod.
+    /// A spring of `hertz` and `dampingRatio`: distance (instead of a rigid rod), wheel (the
+    /// suspension along the axis), revolute (angular, to the reference angle), prismatic (to
+    /// translation 0), mouse (always on: hertz > 0).
     bool enableSpring = false;
     float hertz = 0.0f;
     float dampingRatio = 0.0f;
     float length = 0.0f;              ///< distance: rest length, m (the anchors' distance if 0)
+    /// Motor joint: body B's origin in A's frame (m) and B's angle minus A's (rad) it drives to.
+    glm::vec2 linearOffset{0.0f, 0.0f};
+    float angularOffset = 0.0f;
+    /// Motor joint: largest force (N) and torque (N m); mouse: largest force (N).
+    float maxForce = 0.0f;
+    float maxTorque = 0.0f;
+    float correctionFactor = 0.3f;    ///< motor joint: in [0, 1]
+    glm::vec2 target{0.0f, 0.0f};     ///< mouse: the world target, m (fixed for the run)
 };
 
 /// The name of a joint kind as in scenario files ("revolute", ...).
