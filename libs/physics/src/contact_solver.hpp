@@ -129,7 +129,7 @@ void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyVi
 // top of a 10-box column spawned half overlapped left at 17 m/s, the corner of a lattice of 255
 // discs overlapping by 0.04 m at 3.35 m/s (the cap is 3). Relax alone (no extra biased sweeps)
 // then slows the push itself: the column still overlapped 9 cm after 2 s. With 5 more biased
-// and 24 more relax sweeps: 2.9 m/s and 0.77 m/s, the column within 1.7 cm after 2 s. Only those
+// and 24 more relax sweeps: 2.8 m/s and 0.81 m/s, the column within 1.7 cm after 2 s. Only those
 // steps pay (31 sweeps instead of 2); a resting pile, however deep its contacts, never does.
 inline constexpr int kPushOutSolveIterations = 5;
 inline constexpr int kPushOutRelaxIterations = 24;
