@@ -80,7 +80,7 @@ protected:
         } else {
             // The error is logged; the image path draws the checker placeholder.
             coin.sprite.texturePath = slime.sprite.texturePath = game.asset("assets/creatures.png").string();
-            coin.frames = slime.frames = {render::kFullUv};
+            coin.frames = slime.frames = {render::AnimationFrame{render::kFullUv}};
             coin.sprite.size = slime.sprite.size = {32.0f, 32.0f};
         }
         coin.animation.frameDuration = slime.animation.frameDuration = 0.08;

@@ -122,6 +122,7 @@ void solveSoftStep(const SolverStep& step) {
     const SolverDef& def = *step.def;
     float h = step.dt / static_cast<float>(def.subSteps);
     float invH = 1.0f / h;
+    const int relaxIterations = def.relaxIterations + step.extraRelaxIterations;
     for (int i = 0; i < def.subSteps; ++i) {
         integrateVelocities(step.sims, step.states, step.gravity, h, def.maxLinearSpeed);
         // Gauss-Seidel's order biases the result, so every group of four sub-steps runs all
@@ -138,15 +139,17 @@ void solveSoftStep(const SolverStep& step) {
         // last, win where the two disagree.
         warmStartJoints(step.joints, step.pointQuads, step.jointOrder, step.states);
         warmStartContacts(step.constraints, step.states);
-        solveJoints(step.joints, step.pointQuads, step.jointOrder, step.states, step.jointStep, true);
-        solveContacts(step.constraints, step.states, invH, true, def.contactPushMaxSpeed,
-                      backward, reversePoints);
+        for (int r = 0; r <= step.extraSolveIterations; ++r) {
+            solveJoints(step.joints, step.pointQuads, step.jointOrder, step.states, step.jointStep, true);
+            solveContacts(step.constraints, step.states, invH, true, def.contactPushMaxSpeed,
+                          backward, reversePoints);
+        }
         integratePositions(step.states, h);
         // The relax passes sweep the other way: the sweep direction's bias then cancels within
         // each sub-step, not only over two. Relaxed in the same direction, a five-level house of
         // cards (0.002 x 0.4 m cards) swayed 3-5 mm to one side as its contacts took the load,
         // and each swing slipped the top pair a little at its apex until it fell.
-        for (int r = 0; r <= def.relaxIterations; ++r) {
+        for (int r = 0; r <= relaxIterations; ++r) {
             solveJoints(step.joints, step.pointQuads, step.jointOrder, step.states, step.jointStep, false);
             solveContacts(step.constraints, step.states, invH, false, def.contactPushMaxSpeed,
                           !backward, reversePoints);
@@ -161,6 +164,7 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
     const SolverDef& def = *step.def;
     float h = step.dt / static_cast<float>(def.subSteps);
     float invH = 1.0f / h;
+    const int relaxIterations = def.relaxIterations + step.extraRelaxIterations;
     // The same passes and orders as solveSoftStep(); a backward sweep is the levels in reverse.
     for (int i = 0; i < def.subSteps; ++i) {
         integrateVelocities(step.sims, step.states, bodies, step.gravity, h, def.maxLinearSpeed);
@@ -168,11 +172,13 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
         bool reversePoints = ((i / 2) % 2) == 1;
         warmStartJoints(step.joints, step.pointQuads, blockJoints, step.states);
         warmStartWide(wide, firstLevel, endLevel, step.states);
-        solveJoints(step.joints, step.pointQuads, blockJoints, step.states, step.jointStep, true);
-        solveWide(wide, firstLevel, endLevel, step.states, invH, true, def.contactPushMaxSpeed,
-                  backward, reversePoints);
+        for (int r = 0; r <= step.extraSolveIterations; ++r) {
+            solveJoints(step.joints, step.pointQuads, blockJoints, step.states, step.jointStep, true);
+            solveWide(wide, firstLevel, endLevel, step.states, invH, true,
+                      def.contactPushMaxSpeed, backward, reversePoints);
+        }
         integratePositions(step.states, bodies, h);
-        for (int r = 0; r <= def.relaxIterations; ++r) {
+        for (int r = 0; r <= relaxIterations; ++r) {
             solveJoints(step.joints, step.pointQuads, blockJoints, step.states, step.jointStep, false);
             solveWide(wide, firstLevel, endLevel, step.states, invH, false,
                       def.contactPushMaxSpeed, !backward, reversePoints);

@@ -28,6 +28,11 @@ struct SolverStep {
     std::span<const int> jointOrder{};
     JointStep jointStep{};
     std::span<PointJointQuad> pointQuads{};
+    // Soft step: biased solve sweeps per sub-step beyond the first, and relax sweeps on top of
+    // def->relaxIterations (kPushOutSolveIterations and kPushOutRelaxIterations while shapes
+    // are pushed apart, see World::Impl::solve()).
+    int extraSolveIterations = 0;
+    int extraRelaxIterations = 0;
 };
 
 // Clamps a body's speed to maxLinearSpeed and its angular speed to what one integration step

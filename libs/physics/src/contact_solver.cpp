@@ -57,6 +57,39 @@ void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyVi
     prepareBlock(c);
 }
 
+bool isPushedApart(const Manifold& m, const ContactBodyView& a, const ContactBodyView& b,
+                   Softness softness) {
+    // Most contacts overlap less than the slop: nothing more to compute for them.
+    bool deep = false;
+    for (int i = 0; i < m.pointCount; ++i) {
+        deep = deep || m.points[i].separation < -kLinearSlop;
+    }
+    const float stiffness = softness.massScale * softness.biasRate;
+    if (!deep || !(stiffness > 0.0f)) {
+        return false; // shallow, or not a soft contact
+    }
+    const Vec2 n = m.normal;
+    const float linear = dot(a.invMass + b.invMass, Vec2{n.x * n.x, n.y * n.y});
+    float rnA[2] = {0.0f, 0.0f};
+    float rnB[2] = {0.0f, 0.0f};
+    for (int i = 0; i < m.pointCount; ++i) {
+        rnA[i] = cross(m.points[i].anchorA - a.centerOffset, n);
+        rnB[i] = cross(m.points[i].anchorB - b.centerOffset, n);
+    }
+    const float restPerImpulse = kPushOutRestMargin * softness.impulseScale / stiffness;
+    for (int i = 0; i < m.pointCount; ++i) {
+        float load = 0.0f; // (K lambda)_i
+        for (int j = 0; j < m.pointCount; ++j) {
+            const float k = linear + a.invInertia * rnA[i] * rnA[j] + b.invInertia * rnB[i] * rnB[j];
+            load += k * m.points[j].normalImpulse;
+        }
+        if (-m.points[i].separation > kLinearSlop + restPerImpulse * std::max(load, 0.0f)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 void warmStartContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states) {
     BodyState dummyA;
     BodyState dummyB;

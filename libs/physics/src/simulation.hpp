@@ -99,6 +99,9 @@ struct Simulation {
         float rollingResistance = 0.0f;
     };
     std::vector<TouchingContact> touchingContacts;
+    // The soft step's relax iterations on top of SolverDef::relaxIterations in the last solve,
+    // the most of any block (detail::kPushOutRelaxIterations while shapes were pushed apart).
+    int extraRelaxIterations = 0;
 
     // Per-step scratch, same order: the awake moving bodies and their world slots.
     std::vector<BodySim> sims;

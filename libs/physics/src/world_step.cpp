@@ -62,6 +62,9 @@ void World::step(float timeStep) {
         w.solve(timeStep);
         s.counters.solverBodies = static_cast<int>(s.sims.size());
         s.counters.contactConstraints = static_cast<int>(s.constraintContacts.size());
+        if (s.def.mode == SolverMode::SoftStep) {
+            s.counters.relaxIterations = 1 + s.def.relaxIterations + s.extraRelaxIterations;
+        }
         w.updateSleep(timeStep);
     }
     w.collectMoveEvents(timeStep);
@@ -286,6 +289,17 @@ void World::Impl::solve(float dt) {
         };
         return -dot(gravityOf(b, c.bodyB) - gravityOf(a, c.bodyA), c.manifold.normal);
     };
+    // Whether a contact overlaps deeper than its load explains (shapes spawned or moved into
+    // each other): the soft step then sweeps more, so that pushing them apart leaves no velocity
+    // behind (detail::kPushOutRelaxIterations).
+    auto pushedApart = [&](const detail::Contact& c, const detail::ContactBodyView& a,
+                           const detail::ContactBodyView& b) {
+        if (def.mode != SolverMode::SoftStep) {
+            return false;
+        }
+        return detail::isPushedApart(c.manifold, a, b, softnessOf(a, b));
+    };
+    bool pushOut = false; // the scalar solvers': any contact in the world
     // One constraint per touching solid contact with a moving side, in contact order.
     bool rolling = false;
     int constraintCount = 0;
@@ -357,6 +371,7 @@ void World::Impl::solve(float dt) {
                                    softnessOf(a, b));
             cc.pressAcceleration = pressOf(c, a, b);
             cc.contactIndex = ci;
+            pushOut = pushOut || pushedApart(c, a, b);
         }
     }
 
@@ -388,6 +403,12 @@ void World::Impl::solve(float dt) {
         detail::makeSoftness(detail::kJointHertz, detail::kJointDampingRatio, integrationStep)};
     detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def,
                             joints, s.jointOrder, jointStep, s.pointQuads};
+    auto pushOutSweeps = [](detail::SolverStep& st, bool on) {
+        st.extraSolveIterations = on ? detail::kPushOutSolveIterations : 0;
+        st.extraRelaxIterations = on ? detail::kPushOutRelaxIterations : 0;
+    };
+    pushOutSweeps(step, pushOut);
+    s.extraRelaxIterations = step.extraRelaxIterations;
     if (wide) {
         // Contacts are visited in slot order, twice a block: gathered before it is solved and
         // their impulses stored right after, while its lanes are in cache. A level's contacts
@@ -409,6 +430,7 @@ void World::Impl::solve(float dt) {
         // sub-steps and store.
         auto buildBlock = [&](auto& in, int firstLevel, int endLevel) {
             constexpr int N = static_cast<int>(sizeof(in.indexA) / sizeof(in.indexA[0]));
+            bool blockPushOut = false;
             s.wideRestitution.clear();
             for (int level = firstLevel; level < endLevel; ++level) {
                 const int levelFirst = s.levelStart[static_cast<std::size_t>(level)];
@@ -430,6 +452,7 @@ void World::Impl::solve(float dt) {
                         const detail::ContactBodyView a = viewOf(c.bodyA, s.slotBodies[at].indexA);
                         const detail::ContactBodyView b = viewOf(c.bodyB, s.slotBodies[at].indexB);
                         in.setLane(lane, c.manifold, a, b, c.friction, softnessOf(a, b));
+                        blockPushOut = blockPushOut || pushedApart(c, a, b);
                         if (c.restitution != 0.0f) {
                             s.wideRestitution.push_back({level, slot - levelFirst, c.manifold.pointCount,
                                                          c.restitution, pressOf(c, a, b),
@@ -444,6 +467,7 @@ void World::Impl::solve(float dt) {
                       [](const detail::WideRestitution& x, const detail::WideRestitution& y) {
                           return x.constraint < y.constraint;
                       });
+            return blockPushOut;
         };
         const std::span<const int> blockBodies = s.blockBodies;
         detail::WideManifoldT<4> lanes4;
@@ -451,13 +475,13 @@ void World::Impl::solve(float dt) {
         for (std::size_t b = 0; b + 1 < s.blockLevelStart.size(); ++b) {
             const int firstLevel = s.blockLevelStart[b];
             const int endLevel = s.blockLevelStart[b + 1];
-            if (s.wideContacts.lanes == 8) {
-                buildBlock(lanes8, firstLevel, endLevel);
-            } else {
-                buildBlock(lanes4, firstLevel, endLevel);
-            }
+            // Only the block holding shapes pushed apart sweeps more.
+            detail::SolverStep blockStep = step;
+            pushOutSweeps(blockStep, s.wideContacts.lanes == 8 ? buildBlock(lanes8, firstLevel, endLevel)
+                                                               : buildBlock(lanes4, firstLevel, endLevel));
+            s.extraRelaxIterations = std::max(s.extraRelaxIterations, blockStep.extraRelaxIterations);
             detail::solveSoftStepBlock(
-                step, s.wideContacts, firstLevel, endLevel,
+                blockStep, s.wideContacts, firstLevel, endLevel,
                 blockBodies.subspan(static_cast<std::size_t>(s.blockBodyStart[b]),
                                     static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b])),
                 s.wideRestitution,

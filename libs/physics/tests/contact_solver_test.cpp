@@ -180,6 +180,39 @@ TEST(ContactSoftness, CapsHertzAtAQuarterOfTheSubStepRate) {
     EXPECT_FLOAT_EQ(s.vsStatic.biasRate, expectedStatic.biasRate);
 }
 
+TEST(PushOut, OverlapBeyondWhatTheLoadExplainsIsPushedApart) {
+    // A soft contact at rest carries lambda = m h w^2 s per sub-step at overlap s (m = 1 / K: two
+    // unit masses that cannot turn, m = 0.5 kg). 38 Hz, 4 sub-steps.
+    const float h = kDt / 4.0f;
+    const float omega = 2.0f * 3.14159265f * 38.0f;
+    const Softness soft = makeSoftness(38.0f, 12.5f, h);
+    ContactBodyView a;
+    a.invMass = {1.0f, 1.0f};
+    ContactBodyView b = a; // K = 1/m_A + 1/m_B = 2 (no rotation)
+    auto manifold = [](float separation, float impulse) {
+        Manifold m;
+        m.normal = {0.0f, 1.0f};
+        m.pointCount = 1;
+        m.points[0].separation = separation;
+        m.points[0].normalImpulse = impulse;
+        return m;
+    };
+    // Shallower than the slop: never, whatever it carries.
+    EXPECT_FALSE(isPushedApart(manifold(-0.9f * kLinearSlop, 0.0f), a, b, soft));
+    // Spawned 4 cm deep, carrying nothing: pushed apart.
+    EXPECT_TRUE(isPushedApart(manifold(-0.04f, 0.0f), a, b, soft));
+    // 4 cm deep under the load that rests there: not.
+    const float restImpulse = 0.5f * h * omega * omega * 0.04f;
+    EXPECT_FALSE(isPushedApart(manifold(-0.04f, restImpulse), a, b, soft));
+    // The margin: a load that explains 1 / kPushOutRestMargin of the overlap beyond the slop
+    // still does; 80 % of that load does not.
+    const float share = 0.5f * h * omega * omega * (0.04f - kLinearSlop) / kPushOutRestMargin;
+    EXPECT_FALSE(isPushedApart(manifold(-0.04f, 1.01f * share), a, b, soft));
+    EXPECT_TRUE(isPushedApart(manifold(-0.04f, 0.8f * share), a, b, soft));
+    // A rigid contact (no softness) has nothing to push apart.
+    EXPECT_FALSE(isPushedApart(manifold(-0.04f, 0.0f), a, b, makeSoftness(0.0f, 1.0f, h)));
+}
+
 TEST(IntegrateVelocities, AppliesGravityForceDampingAndSpeedCap) {
     BodySim sim;
     sim.invMass = {0.5f, 0.5f};

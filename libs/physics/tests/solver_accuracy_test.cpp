@@ -216,9 +216,15 @@ TEST(SolverAccuracy, OverlappedBoxesSeparateGently) {
             fastest = std::max(fastest, length(world.linearVelocity(b)));
         }
     }
-    // The push-out is capped at contactPushMaxSpeed (3 m/s): nothing is shot away.
-    EXPECT_LT(fastest, 10.0f);
-    EXPECT_LT(maxPenetration(world), 0.01f);
+    // The push-out is capped at contactPushMaxSpeed (3 m/s): nothing is shot away, and the top
+    // row stays on the bottom one.
+    EXPECT_LT(fastest, 3.0f + 10.0f * kStep);
+    EXPECT_NEAR(world.transform(boxes.back()).p.y, 1.5f, 0.05f);
+    // The last centimetre of a side overlap is pushed out at biasRate * s (about 0.09 m/s at
+    // 1 cm), below the 0.05 m/s per body at which an island may sleep, and the rows fall asleep
+    // with up to 1.1 cm left between neighbours (3 mm with sleeping off). The boxes used to be
+    // flung apart instead (6.7 m/s) and the top row fell off.
+    EXPECT_LT(maxPenetration(world), 0.015f);
 }
 
 TEST(SolverAccuracy, OverlappedColumnSeparatesGently) {
@@ -241,6 +247,106 @@ TEST(SolverAccuracy, OverlappedColumnSeparatesGently) {
     EXPECT_LT(fastest, 10.0f);
     EXPECT_LT(maxPenetration(world), 0.01f);
     EXPECT_NEAR(world.transform(boxes.back()).p.y, 7.5f, 0.1f);
+}
+
+// The push-out cap (SolverDef::contactPushMaxSpeed) bounds how fast overlapping shapes are
+// pushed apart. Each overlapping pair is capped, but in a chain or a lattice the pushes add up
+// unless relax takes them back out of the velocities: no body may leave faster than the cap
+// (plus the gravity of one step, which the sub-steps add before the contacts act).
+
+// 255 discs of radius 0.28 m on a 0.52 m grid (each overlapping its neighbours by 0.04 m) in a
+// closed 9 x 10 m box without gravity: every speed comes from the push-out. Rolling resistance
+// runs the scalar solver instead of the wide one.
+void expectPackedDiscsStayBelowThePushCap(float rollingResistance) {
+    WorldDef def;
+    def.gravity = {0.0f, 0.0f};
+    World world{def};
+    BodyId walls = world.createBody({});
+    ShapeDef wall;
+    world.createShape(walls, wall, makeOffsetBox(5.5f, 0.5f, {0.0f, -0.5f}, 0.0f));
+    world.createShape(walls, wall, makeOffsetBox(0.5f, 5.5f, {-5.0f, 5.0f}, 0.0f));
+    world.createShape(walls, wall, makeOffsetBox(0.5f, 5.5f, {5.0f, 5.0f}, 0.0f));
+    world.createShape(walls, wall, makeOffsetBox(5.5f, 0.5f, {0.0f, 10.5f}, 0.0f));
+    std::vector<BodyId> discs;
+    for (int row = 0; row < 17; ++row) {
+        for (int column = 0; column < 15; ++column) {
+            BodyDef bd;
+            bd.type = BodyType::Dynamic;
+            bd.position = {-3.64f + 0.52f * static_cast<float>(column), 0.3f + 0.52f * static_cast<float>(row)};
+            BodyId disc = world.createBody(bd);
+            ShapeDef sd;
+            sd.rollingResistance = rollingResistance;
+            world.createShape(disc, sd, Circle{{0.0f, 0.0f}, 0.28f});
+            discs.push_back(disc);
+        }
+    }
+    float fastest = 0.0f;
+    int pushSteps = 0;
+    for (int i = 0; i < 240; ++i) {
+        world.step(kStep);
+        pushSteps += world.stepCounters().relaxIterations > 1 ? 1 : 0;
+        for (BodyId d : discs) {
+            fastest = std::max(fastest, length(world.linearVelocity(d)));
+        }
+    }
+    EXPECT_LT(fastest, def.solver.contactPushMaxSpeed);
+    // They were pushed apart (15 x 0.56 = 8.4 m fit in 9), and only while they overlapped.
+    EXPECT_LT(maxPenetration(world), 0.01f);
+    EXPECT_GT(pushSteps, 0);
+    EXPECT_EQ(world.stepCounters().relaxIterations, 1);
+}
+
+TEST(SolverAccuracy, PackedDiscsArePushedApartBelowTheCap) { expectPackedDiscsStayBelowThePushCap(0.0f); }
+
+TEST(SolverAccuracy, PackedDiscsArePushedApartBelowTheCapScalar) {
+    expectPackedDiscsStayBelowThePushCap(0.01f);
+}
+
+TEST(SolverAccuracy, HalfOverlappedColumnIsPushedApartBelowTheCap) {
+    // Ten unit boxes 0.5 m apart: each overlaps the next by half its height. Pair by pair the
+    // push is capped at 3 m/s; summed up the column's 9 contacts used to throw the top box at
+    // 17 m/s.
+    WorldDef def;
+    def.solver.enableSleep = false;
+    World world{def};
+    addGround(world);
+    std::vector<BodyId> boxes;
+    for (int i = 0; i < 10; ++i) {
+        boxes.push_back(addBox(world, {0.0f, 0.5f + 0.5f * static_cast<float>(i)}, 0.5f));
+    }
+    float fastest = 0.0f;
+    for (int i = 0; i < 240; ++i) {
+        world.step(kStep);
+        for (BodyId b : boxes) {
+            fastest = std::max(fastest, length(world.linearVelocity(b)));
+        }
+    }
+    EXPECT_LT(fastest, def.solver.contactPushMaxSpeed + length(def.gravity) * kStep);
+    // Apart and upright after 4 s: the top box 9.5 m up, less the soft contacts' compression.
+    EXPECT_LT(maxPenetration(world), 0.01f);
+    EXPECT_NEAR(world.transform(boxes.back()).p.x, 0.0f, 0.01f);
+    EXPECT_NEAR(world.transform(boxes.back()).p.y, 9.5f, 0.05f);
+    EXPECT_EQ(world.stepCounters().relaxIterations, 1);
+}
+
+TEST(SolverAccuracy, RestingPilesNeverSweepMore) {
+    // The push-out sweeps are for shapes moved into each other, not for deep resting contacts:
+    // a 20-box tower and a 1:100 box pair, awake, never take them.
+    WorldDef def;
+    def.solver.enableSleep = false;
+    World world{def};
+    addGround(world);
+    for (int i = 0; i < 20; ++i) {
+        addBox(world, {0.0f, 0.5f + static_cast<float>(i)}, 0.5f);
+    }
+    addBox(world, {5.0f, 0.5f}, 0.5f, 0.6f, 1.0f);
+    addBox(world, {5.0f, 1.5f}, 0.5f, 0.6f, 100.0f);
+    for (int i = 0; i < 600; ++i) {
+        world.step(kStep);
+        ASSERT_EQ(world.stepCounters().relaxIterations, 1) << "step " << i;
+    }
+    // (The 1:100 pair overlaps 2.2 cm at rest, more than kLinearSlop.)
+    EXPECT_GT(maxPenetration(world), 0.01f);
 }
 
 TEST(SolverAccuracy, RestingColumnCompressesLikeItsSoftContacts) {

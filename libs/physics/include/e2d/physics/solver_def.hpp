@@ -66,6 +66,11 @@ struct SolverDef {
     /// 9 m/s per metre of overlap, which keeps a column spawned 25 % overlapped below 10 m/s.
     float contactDampingRatio = 12.5f;
     /// Soft step: the fastest overlapping shapes are pushed apart, m/s, finite, > 0. Default 3.
+    /// The cap is per contact; in a step where shapes overlap deeper than their load explains
+    /// (spawned or moved into each other) their island's solve sweeps more
+    /// (StepCounters::relaxIterations), so that the pushes along a column or through a packed
+    /// lattice do not add up to more than this: 255 packed discs leave at 0.81 m/s, a 10-box
+    /// column spawned half overlapped at 2.8 m/s.
     float contactPushMaxSpeed = 3.0f;
     /// Contacts approaching faster than this bounce (restitution), m/s, finite, >= 0.
     /// Default 1.
