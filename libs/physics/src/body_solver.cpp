@@ -181,7 +181,7 @@ void solveClassic(const SolverStep& step) {
     const SolverDef& def = *step.def;
     float invDt = 1.0f / step.dt;
     integrateVelocities(step.sims, step.states, step.gravity, step.dt, def.maxLinearSpeed);
-    prepareClassic(step.constraints, def.restitutionThreshold);
+    prepareClassic(step.constraints, step.states, def.restitutionThreshold);
     warmStartJoints(step.joints, step.jointOrder, step.states);
     warmStartContacts(step.constraints, step.states);
     for (int i = 0; i < def.velocityIterations; ++i) {
@@ -217,6 +217,11 @@ void finalizePositions(std::span<BodySim> sims, std::span<const BodyState> state
         }
         sim.transform.q = q;
         sim.transform.p = sim.center - rotate(q, sim.localCenter);
+        // The next step starts from the centre the float transform gives; what it misses of
+        // center0 + deltaPosition is kept. Near each other (the usual case far away, where it
+        // matters) the two centres subtract exactly.
+        const Vec2 next = transformPoint(sim.transform, sim.localCenter);
+        sim.positionResidual = state.deltaPosition - (next - sim.center0);
     }
 }
 

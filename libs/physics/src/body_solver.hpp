@@ -57,7 +57,8 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
                         std::span<const int> blockJoints = {});
 void solveClassic(const SolverStep& step);
 
-// Moves each sim by its state's deltas (centre, rotation, origin). A body that became
+// Moves each sim by its state's deltas (centre, rotation, origin) and sets its position residual
+// (the part of center0 + deltaPosition the float centre cannot hold). A body that became
 // non-finite is left so; the world checks and disables it.
 void finalizePositions(std::span<BodySim> sims, std::span<const BodyState> states);
 

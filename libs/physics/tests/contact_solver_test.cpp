@@ -463,7 +463,7 @@ TEST(ClassicBlock, BothPointsPushSolvedExactlyInOneIteration) {
     std::vector<BodyState> states(1);
     states[0].linearVelocity = {0.0f, -1.0f};
     states[0].angularVelocity = 0.25f;
-    prepareClassic(cs, 1.0f);
+    prepareClassic(cs, states, 1.0f);
     ASSERT_EQ(cs[0].pointCount, 2);
     EXPECT_TRUE(cs[0].blockSolve);
     solveVelocitiesClassic(cs, states, 60.0f);
@@ -483,7 +483,7 @@ TEST(ClassicBlock, OnlyTheApproachingPointPushes) {
     std::vector<BodyState> states(1);
     states[0].linearVelocity = {0.0f, -1.0f};
     states[0].angularVelocity = 1.0f;
-    prepareClassic(cs, 1.0f);
+    prepareClassic(cs, states, 1.0f);
     solveVelocitiesClassic(cs, states, 60.0f);
     EXPECT_NEAR(cs[0].points[0].normalImpulse, 4.0f / 3.0f, 1e-6f);
     EXPECT_EQ(cs[0].points[1].normalImpulse, 0.0f);
@@ -499,7 +499,7 @@ TEST(ClassicBlock, SeparatingPointsReleaseTheirWarmStart) {
     cs[0].points[1].normalImpulse = 0.25f;
     std::vector<BodyState> states(1);
     states[0].linearVelocity = {0.0f, 1.0f};
-    prepareClassic(cs, 1.0f);
+    prepareClassic(cs, states, 1.0f);
     solveVelocitiesClassic(cs, states, 60.0f);
     EXPECT_EQ(cs[0].points[0].normalImpulse, 0.0f);
     EXPECT_EQ(cs[0].points[1].normalImpulse, 0.0f);
@@ -514,7 +514,7 @@ TEST(ClassicBlock, RedundantPointsFallBackToOne) {
     cs[0].points[1].normalImpulse = 0.375f;
     std::vector<BodyState> states(1);
     states[0].linearVelocity = {0.0f, -1.0f};
-    prepareClassic(cs, 1.0f);
+    prepareClassic(cs, states, 1.0f);
     EXPECT_FALSE(cs[0].blockSolve);
     ASSERT_EQ(cs[0].pointCount, 1);
     EXPECT_EQ(cs[0].points[0].normalImpulse, 0.5f);
@@ -540,7 +540,8 @@ TEST(ClassicBlock, ConditionGuardAtTheThreshold) {
         ContactBodyView body{{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f, {1.0f, 1.0f}, 1.0f, 0};
         std::vector<ContactConstraint> cs(1);
         prepareContact(cs[0], m, {}, body, {}, {});
-        prepareClassic(cs, 1.0f);
+        std::vector<BodyState> states(1);
+        prepareClassic(cs, states, 1.0f);
         return cs[0].blockSolve;
     };
     // halfGap 0.1: k11 = 1.01, det = 0.04, ratio 25.5; halfGap 0.01: k11 ~ 1, det = 4e-4,
@@ -580,7 +581,7 @@ TEST(ClassicBlock, UnderflowingDeterminantIsNotABlock) {
         std::vector<BodyState> states(1);
         states[0].angularVelocity = 10.0f;
         if (classic != 0) {
-            prepareClassic(cs, 1.0f);
+            prepareClassic(cs, states, 1.0f);
             warmStartContacts(cs, states);
             solveVelocitiesClassic(cs, states, 1.0f / kDt);
         } else {
