@@ -239,6 +239,32 @@ TEST(IntegrateVelocities, LockedAxisAndKinematicIgnoreGravity) {
     EXPECT_EQ(states[1].linearVelocity.y, 0.0f);
 }
 
+TEST(IntegratePositions, CapsWhatTheConstraintsAddedBeforeMoving) {
+    // The constraints run between integrateVelocities() and integratePositions() and may leave
+    // any speed (4e7 m/s for a 2e-8 kg body in the fuzzer's tiny-body-out-of-range): no body
+    // moves further than maxLinearSpeed * h, nor turns more than a quarter turn.
+    std::vector<BodyState> states(2);
+    states[0].linearVelocity = {3.0e7f, -4.0e7f};
+    states[0].angularVelocity = 3.0e6f;
+    states[1].linearVelocity = {3.0f, -4.0f}; // under the cap: moved as it is
+    states[1].angularVelocity = 2.0f;
+    const float h = 0.01f;
+    integratePositions(states, h, 400.0f);
+    EXPECT_NEAR(states[0].deltaPosition.x, 400.0f * 0.6f * h, 1e-4f);
+    EXPECT_NEAR(states[0].deltaPosition.y, -400.0f * 0.8f * h, 1e-4f);
+    EXPECT_NEAR(length(states[0].linearVelocity), 400.0f, 1e-2f);
+    EXPECT_NEAR(states[0].angularVelocity, 0.5f * 3.14159265f / h, 1e-2f);
+    EXPECT_EQ(states[1].deltaPosition, Vec2(3.0f * h, -4.0f * h));
+    EXPECT_EQ(states[1].linearVelocity, Vec2(3.0f, -4.0f));
+    EXPECT_EQ(states[1].angularVelocity, 2.0f);
+    // The same for the bodies of one block.
+    std::vector<BodyState> block(3);
+    block[2].linearVelocity = {0.0f, 1.0e9f};
+    const std::vector<int> indices{2};
+    integratePositions(block, indices, h, 100.0f);
+    EXPECT_NEAR(block[2].deltaPosition.y, 100.0f * h, 1e-4f);
+}
+
 TEST(SoftStep, BoxRestsOnTheGround) {
     Harness h;
     h.bodies.push_back(makeBox({0.0f, 0.5f}, 0.5f, 0.5f));
