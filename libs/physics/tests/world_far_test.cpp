@@ -73,6 +73,23 @@ TEST_P(FarPyramid, ComesToRestAsAtTheOrigin) {
     EXPECT_EQ(world.awakeBodyCount(), 0);
 }
 
+TEST_P(FarPyramid, ComesToRestAtTheCoordinateLimit) {
+    // At (0.99, -0.8) kHuge a float step is 3.1 cm: the pile still stands and falls asleep, its
+    // apex within a float step of where it started.
+    const Vec2 origin{0.99f * kHuge, -0.8f * kHuge};
+    World world{worldDef(GetParam(), true)};
+    const Pyramid p = addPyramid(world, origin, 10);
+    const Vec2 start = world.transform(p.top).p;
+    for (int i = 0; i < 1200; ++i) {
+        world.step(kStep);
+    }
+    const Vec2 end = world.transform(p.top).p;
+    const float grid = floatStep(origin.x);
+    EXPECT_LE(length(end - start), grid) << "float step there " << grid << " m";
+    EXPECT_EQ(world.awakeBodyCount(), 0);
+    EXPECT_TRUE(world.outOfRangeBodies().empty());
+}
+
 TEST_P(FarPyramid, MovesAsAtTheOriginWithoutSleeping) {
     // The same pyramid awake at the origin and at (99 000, -80 000): every box ends where its
     // twin at the origin does, within one float step there (8 mm; the reported positions are
