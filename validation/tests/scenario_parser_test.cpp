@@ -166,14 +166,14 @@ TEST(ScenarioParser, MissingFieldsSayMissing) {
 }
 
 TEST(ScenarioParser, ValuesBeyondE2dsLimitsNameTheLimit) {
-    EXPECT_EQ(errorOf(R"({"family": "hard", "bodies": [{"position": [0, 200000],
+    EXPECT_EQ(errorOf(R"({"family": "hard", "bodies": [{"position": [0, 600000],
                           "shape": {"type": "circle", "radius": 1}}]})"),
-              "bodies[0].position[1]: must be within e2d's limit of 100000 (physics::kHuge: metres "
-              "for positions and sizes, kg/m^2 for density), got 200000");
-    EXPECT_THAT(errorOf(scene("", R"({"type": "circle", "radius": 1})", R"(, "halfExtents": [200000, 1])")),
-                StartsWith("bodies[1].shape.halfExtents[0]: must be within e2d's limit of 100000"));
+              "bodies[0].position[1]: must be within e2d's limit of 500000 (physics::kHuge: metres "
+              "for positions and sizes, kg/m^2 for density), got 600000");
+    EXPECT_THAT(errorOf(scene("", R"({"type": "circle", "radius": 1})", R"(, "halfExtents": [600000, 1])")),
+                StartsWith("bodies[1].shape.halfExtents[0]: must be within e2d's limit of 500000"));
     EXPECT_THAT(errorOf(scene("", R"({"type": "circle", "radius": 1, "density": 1e30})")),
-                StartsWith("bodies[3].shapes[0].density: must be within e2d's limit of 100000"));
+                StartsWith("bodies[3].shapes[0].density: must be within e2d's limit of 500000"));
     // Found by fuzz_scenario: e2d refuses a restitution above 1 when the run builds the shape.
     EXPECT_EQ(errorOf(scene("", R"({"type": "circle", "radius": 1, "restitution": 20})")),
               "bodies[3].shapes[0].restitution: must be in [0, 1] (e2d's limit), got 20");
@@ -318,8 +318,8 @@ TEST(ScenarioParser, RejectsBadJoints) {
               "joints[0].axis: must not be [0, 0]");
     EXPECT_THAT(withJoint(R"({"type": "distance", "bodyA": 0, "bodyB": 2, "anchorA": [1, 0], "anchorB": [1, 0.001]})"),
                 StartsWith("joints[0].anchorB: the length must be at least physics::kLinearSlop"));
-    EXPECT_THAT(withJoint(R"({"type": "revolute", "bodyA": 0, "bodyB": 2, "anchor": [200000, 0]})"),
-                StartsWith("joints[0].anchor[0]: must be within e2d's limit of 100000"));
+    EXPECT_THAT(withJoint(R"({"type": "revolute", "bodyA": 0, "bodyB": 2, "anchor": [600000, 0]})"),
+                StartsWith("joints[0].anchor[0]: must be within e2d's limit of 500000"));
     EXPECT_EQ(withJoint(R"({"type": "distance", "bodyA": 0, "bodyB": 2, "anchorA": [0, 0], "anchorB": [1, 0], "hertz": 1})",
                         R"({"type": "jointError", "limit": 0.1})"),
               "checks[0].type: the scene has no joint this check measures (revolute, weld, wheel or rigid distance)");

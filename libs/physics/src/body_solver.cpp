@@ -75,7 +75,12 @@ inline void integrateVelocity(const BodySim& sim, BodyState& state, Vec2 gravity
     state.angularVelocity = w;
 }
 
-inline void integratePosition(BodyState& state, float h) {
+// The speeds are capped again first: the constraints solved since integrateVelocity() can
+// give a body any speed (a 2e-8 kg body next to a 1e6 kg and a 6e9 kg one took 4e7 m/s from
+// the classic velocity iterations and left the coordinate range in one step, the fuzzer's
+// tiny-body-out-of-range). Box2D 2.4 caps the translation at this point too.
+inline void integratePosition(BodyState& state, float h, SpeedCaps caps) {
+    clampVelocity(state.linearVelocity, state.angularVelocity, caps);
     state.deltaRotation = integrateRotation(state.deltaRotation, h * state.angularVelocity);
     state.deltaPosition += h * state.linearVelocity;
 }
@@ -99,15 +104,18 @@ void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> sta
     }
 }
 
-void integratePositions(std::span<BodyState> states, float h) {
+void integratePositions(std::span<BodyState> states, float h, float maxLinearSpeed) {
+    const SpeedCaps caps = speedCaps(maxLinearSpeed, h);
     for (BodyState& state : states) {
-        integratePosition(state, h);
+        integratePosition(state, h, caps);
     }
 }
 
-void integratePositions(std::span<BodyState> states, std::span<const int> indices, float h) {
+void integratePositions(std::span<BodyState> states, std::span<const int> indices, float h,
+                        float maxLinearSpeed) {
+    const SpeedCaps caps = speedCaps(maxLinearSpeed, h);
     for (int i : indices) {
-        integratePosition(states[static_cast<std::size_t>(i)], h);
+        integratePosition(states[static_cast<std::size_t>(i)], h, caps);
     }
 }
 
@@ -144,7 +152,7 @@ void solveSoftStep(const SolverStep& step) {
             solveContacts(step.constraints, step.states, invH, true, def.contactPushMaxSpeed,
                           backward, reversePoints);
         }
-        integratePositions(step.states, h);
+        integratePositions(step.states, h, def.maxLinearSpeed);
         // The relax passes sweep the other way: the sweep direction's bias then cancels within
         // each sub-step, not only over two. Relaxed in the same direction, a five-level house of
         // cards (0.002 x 0.4 m cards) swayed 3-5 mm to one side as its contacts took the load,
@@ -177,7 +185,7 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
             solveWide(wide, firstLevel, endLevel, step.states, invH, true,
                       def.contactPushMaxSpeed, backward, reversePoints);
         }
-        integratePositions(step.states, bodies, h);
+        integratePositions(step.states, bodies, h, def.maxLinearSpeed);
         for (int r = 0; r <= relaxIterations; ++r) {
             solveJoints(step.joints, step.pointQuads, blockJoints, step.states, step.jointStep, false);
             solveWide(wide, firstLevel, endLevel, step.states, invH, false,
@@ -191,7 +199,7 @@ void solveClassic(const SolverStep& step) {
     const SolverDef& def = *step.def;
     float invDt = 1.0f / step.dt;
     integrateVelocities(step.sims, step.states, step.gravity, step.dt, def.maxLinearSpeed);
-    prepareClassic(step.constraints, def.restitutionThreshold);
+    prepareClassic(step.constraints, step.states, def.restitutionThreshold);
     warmStartJoints(step.joints, step.pointQuads, step.jointOrder, step.states);
     warmStartContacts(step.constraints, step.states);
     for (int i = 0; i < def.velocityIterations; ++i) {
@@ -201,7 +209,7 @@ void solveClassic(const SolverStep& step) {
         solveVelocitiesClassic(step.constraints, step.states, invDt);
     }
     applyRestitution(step.constraints, step.states, def.restitutionThreshold, step.dt);
-    integratePositions(step.states, step.dt);
+    integratePositions(step.states, step.dt, def.maxLinearSpeed);
     for (int i = 0; i < def.positionIterations; ++i) {
         // Box2D 2.4's stopping rule: done once nothing overlaps by more than 3 times the
         // allowed penetration (3 slops by default).
@@ -227,6 +235,11 @@ void finalizePositions(std::span<BodySim> sims, std::span<const BodyState> state
         }
         sim.transform.q = q;
         sim.transform.p = sim.center - rotate(q, sim.localCenter);
+        // The next step starts from the centre the float transform gives; what it misses of
+        // center0 + deltaPosition is kept. Near each other (the usual case far away, where it
+        // matters) the two centres subtract exactly.
+        const Vec2 next = transformPoint(sim.transform, sim.localCenter);
+        sim.positionResidual = state.deltaPosition - (next - sim.center0);
     }
 }
 

@@ -41,12 +41,15 @@ void clampVelocity(Vec2& v, float& w, float maxLinearSpeed, float h);
 // Gravity, forces and damping over h seconds; speeds clamped (clampVelocity()).
 void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, Vec2 gravity,
                          float h, float maxLinearSpeed);
-// Accumulates each body's motion over h seconds into its deltaPosition/deltaRotation.
-void integratePositions(std::span<BodyState> states, float h);
+// Accumulates each body's motion over h seconds into its deltaPosition/deltaRotation, its
+// speeds capped first as integrateVelocities() caps them (the constraints may have raised
+// them since): no body moves further than maxLinearSpeed * h.
+void integratePositions(std::span<BodyState> states, float h, float maxLinearSpeed);
 // The same for the bodies states[indices[i]] only.
 void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states,
                          std::span<const int> indices, Vec2 gravity, float h, float maxLinearSpeed);
-void integratePositions(std::span<BodyState> states, std::span<const int> indices, float h);
+void integratePositions(std::span<BodyState> states, std::span<const int> indices, float h,
+                        float maxLinearSpeed);
 
 // Runs the velocity and position stages of one step; positions end in the states' deltas.
 void solveSoftStep(const SolverStep& step);
@@ -64,7 +67,8 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
                         std::span<const int> blockJoints = {});
 void solveClassic(const SolverStep& step);
 
-// Moves each sim by its state's deltas (centre, rotation, origin). A body that became
+// Moves each sim by its state's deltas (centre, rotation, origin) and sets its position residual
+// (the part of center0 + deltaPosition the float centre cannot hold). A body that became
 // non-finite is left so; the world checks and disables it.
 void finalizePositions(std::span<BodySim> sims, std::span<const BodyState> states);
 

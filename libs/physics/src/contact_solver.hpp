@@ -165,7 +165,8 @@ void applyRestitution(std::span<ContactConstraint> constraints, std::span<BodySt
 // ill-conditioned 2-point manifold to one point. solveVelocitiesClassic() then solves both normal
 // impulses of a 2-point manifold as one 2x2 linear complementarity problem
 // (contact_solver_classic.cpp).
-void prepareClassic(std::span<ContactConstraint> constraints, float restitutionThreshold);
+void prepareClassic(std::span<ContactConstraint> constraints, std::span<BodyState> states,
+                    float restitutionThreshold);
 void solveVelocitiesClassic(std::span<ContactConstraint> constraints, std::span<BodyState> states,
                             float invDt);
 // One non-linear Gauss-Seidel pass over the separations; moves deltaPosition/deltaRotation,

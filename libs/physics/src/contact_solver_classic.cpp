@@ -9,11 +9,15 @@
 
 namespace e2d::physics::detail {
 
-void prepareClassic(std::span<ContactConstraint> constraints, float restitutionThreshold) {
+void prepareClassic(std::span<ContactConstraint> constraints, std::span<BodyState> states,
+                    float restitutionThreshold) {
+    BodyState dummyA;
+    BodyState dummyB;
     for (ContactConstraint& c : constraints) {
+        auto [sa, sb] = statesOf(c, states, dummyA, dummyB);
         for (int i = 0; i < c.pointCount; ++i) {
             ContactConstraintPoint& cp = c.points[i];
-            float s = dot(cp.anchorB - cp.anchorA, c.normal) + cp.baseSeparation;
+            float s = currentSeparation(c, cp, *sa, *sb);
             if (s > 0.0f) {
                 // Speculative: velocityBias is set per solve from the gap; a bounce, if the gap
                 // closes this step, comes from applyRestitution() afterwards.
@@ -40,10 +44,11 @@ void prepareClassic(std::span<ContactConstraint> constraints, float restitutionT
 namespace {
 
 // Target normal velocity of a point: close a speculative gap within the step, otherwise the
-// restitution bias.
+// restitution bias. The velocity iterations move no body: the separation is the one at the
+// start of the step (from the states' position residuals, see BodyState::deltaPosition).
 inline float normalTarget(const ContactConstraint& c, const ContactConstraintPoint& cp,
-                          float invDt) {
-    float s = dot(cp.anchorB - cp.anchorA, c.normal) + cp.baseSeparation;
+                          const BodyState& a, const BodyState& b, float invDt) {
+    float s = currentSeparation(c, cp, a, b);
     return s > 0.0f ? -s * invDt : cp.velocityBias;
 }
 
@@ -74,8 +79,8 @@ void solveVelocitiesClassic(std::span<ContactConstraint> constraints, std::span<
             ContactConstraintPoint& cp2 = c.points[1];
             Vec2 dv1 = (vB + cross(wB, cp1.anchorB)) - (vA + cross(wA, cp1.anchorA));
             Vec2 dv2 = (vB + cross(wB, cp2.anchorB)) - (vA + cross(wA, cp2.anchorA));
-            Vec2 vn{dot(dv1, normal) - normalTarget(c, cp1, invDt),
-                    dot(dv2, normal) - normalTarget(c, cp2, invDt)};
+            Vec2 vn{dot(dv1, normal) - normalTarget(c, cp1, *sa, *sb, invDt),
+                    dot(dv2, normal) - normalTarget(c, cp2, *sa, *sb, invDt)};
             Vec2 old{cp1.normalImpulse, cp2.normalImpulse};
             Vec2 x = old;
             solveBlock(c, old, vn, x);
@@ -87,7 +92,7 @@ void solveVelocitiesClassic(std::span<ContactConstraint> constraints, std::span<
                 Vec2 rB = cp.anchorB;
                 Vec2 dv = (vB + cross(wB, rB)) - (vA + cross(wA, rA));
                 float vn = dot(dv, normal);
-                float impulse = -cp.normalMass * (vn - normalTarget(c, cp, invDt));
+                float impulse = -cp.normalMass * (vn - normalTarget(c, cp, *sa, *sb, invDt));
                 float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
                 impulse = newImpulse - cp.normalImpulse;
                 cp.normalImpulse = newImpulse;

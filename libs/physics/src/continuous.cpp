@@ -101,6 +101,7 @@ void World::Impl::solveContinuous(int simIndex) {
         Vec2 c = (1.0f - fraction) * sweep.c1 + fraction * sweep.c2;
         bs.center = c;
         bs.transform = {c - rotate(q, bs.localCenter), q};
+        bs.positionResidual = {0.0f, 0.0f}; // the time of impact is not that precise anyway
     }
 }
 

@@ -32,6 +32,12 @@ struct BodyMotion {
     float linearDamping = 0.0f;
     float angularDamping = 0.0f;
     float gravityScale = 1.0f;
+    // The centre of mass's position below the float resolution at the body's place: the true
+    // centre is transformPoint(transform, localCenter) + positionResidual. Far from the origin
+    // a float step is coarse (8 mm at 100 km) and the small motions of a resting body round
+    // away at every step; kept here, they add up as they do at the origin. Below half a float
+    // step of the centre; zero until the solver moves the body, and after setTransform().
+    Vec2 positionResidual{0.0f, 0.0f};
     float sleepTime = 0.0f;
     // Smallest and largest distance from the centre of mass to the shapes' surfaces, metres:
     // a body that moves more than minExtent in a step may tunnel (continuous collision).

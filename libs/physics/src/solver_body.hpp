@@ -26,6 +26,9 @@ struct BodyState {
     float angularVelocity = 0.0f;
     std::uint32_t flags = 0;
     // Motion since the start of the step; the contact solver recomputes separations from it.
+    // Starts at the body's position residual (BodyMotion::positionResidual): the motion from
+    // the float centre the narrow phase saw, so no sub-step loses what the float centre cannot
+    // hold.
     Vec2 deltaPosition{0.0f, 0.0f};
     Rot deltaRotation{};
 };
@@ -37,6 +40,9 @@ struct BodySim {
     Vec2 center0{0.0f, 0.0f};  // centre of mass at the start of the step
     Rot rotation0{};           // rotation at the start of the step
     Vec2 localCenter{0.0f, 0.0f};
+    // What the float centre at the end of the step cannot hold (BodyMotion::positionResidual),
+    // set by finalizePositions().
+    Vec2 positionResidual{0.0f, 0.0f};
     Vec2 force{0.0f, 0.0f};
     float torque = 0.0f;
     // Per-axis inverse mass: a locked axis has zero.

@@ -318,6 +318,7 @@ void World::setTransform(BodyId id, Vec2 position, float angle) {
     check::requireFinite("setTransform", "angle", angle);
     detail::Body& b = w.body(index);
     b.transform = {position, Rot::fromAngle(angle)};
+    b.motion.positionResidual = {0.0f, 0.0f};
     w.wakeBody(index);
     for (int s = b.headShape; s != kNullIndex; s = w.shape(s).nextShape) {
         detail::Shape& shape = w.shape(s);

@@ -20,7 +20,8 @@ namespace check = detail::world_check;
 namespace {
 
 bool isFiniteState(const detail::BodySim& s, const detail::BodyState& st) {
-    return (st.flags & detail::kNonFinite) == 0 && isFinite(s.center) && isFinite(s.transform.p) && isFinite(s.transform.q.c) &&
+    return (st.flags & detail::kNonFinite) == 0 && isFinite(s.center) && isFinite(s.transform.p) &&
+           isFinite(s.positionResidual) && isFinite(s.transform.q.c) &&
            isFinite(s.transform.q.s) && isFinite(st.linearVelocity) &&
            isFinite(st.angularVelocity);
 }
@@ -239,6 +240,7 @@ void World::Impl::solve(float dt) {
         bs.bodyIndex = static_cast<int>(bi);
         s.stateRigid.push_back(bs.invMass.x == 0.0f && bs.invMass.y == 0.0f && bs.invInertia == 0.0f);
         detail::BodyState& st = s.states.emplace_back();
+        st.deltaPosition = m.positionResidual;
         // A kinematic body keeps its velocity; a locked axis has none.
         st.linearVelocity = {m.lockX && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.x,
                              m.lockY && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.y};
@@ -530,6 +532,7 @@ void World::Impl::solve(float dt) {
             continue;
         }
         b.transform = bs.transform;
+        b.motion.positionResidual = bs.positionResidual;
         b.linearVelocity = st.linearVelocity;
         b.angularVelocity = st.angularVelocity;
         // The broad-phase box also covers where the body will be next step, so the pairs

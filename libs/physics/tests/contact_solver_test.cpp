@@ -272,6 +272,32 @@ TEST(IntegrateVelocities, LockedAxisAndKinematicIgnoreGravity) {
     EXPECT_EQ(states[1].linearVelocity.y, 0.0f);
 }
 
+TEST(IntegratePositions, CapsWhatTheConstraintsAddedBeforeMoving) {
+    // The constraints run between integrateVelocities() and integratePositions() and may leave
+    // any speed (4e7 m/s for a 2e-8 kg body in the fuzzer's tiny-body-out-of-range): no body
+    // moves further than maxLinearSpeed * h, nor turns more than a quarter turn.
+    std::vector<BodyState> states(2);
+    states[0].linearVelocity = {3.0e7f, -4.0e7f};
+    states[0].angularVelocity = 3.0e6f;
+    states[1].linearVelocity = {3.0f, -4.0f}; // under the cap: moved as it is
+    states[1].angularVelocity = 2.0f;
+    const float h = 0.01f;
+    integratePositions(states, h, 400.0f);
+    EXPECT_NEAR(states[0].deltaPosition.x, 400.0f * 0.6f * h, 1e-4f);
+    EXPECT_NEAR(states[0].deltaPosition.y, -400.0f * 0.8f * h, 1e-4f);
+    EXPECT_NEAR(length(states[0].linearVelocity), 400.0f, 1e-2f);
+    EXPECT_NEAR(states[0].angularVelocity, 0.5f * 3.14159265f / h, 1e-2f);
+    EXPECT_EQ(states[1].deltaPosition, Vec2(3.0f * h, -4.0f * h));
+    EXPECT_EQ(states[1].linearVelocity, Vec2(3.0f, -4.0f));
+    EXPECT_EQ(states[1].angularVelocity, 2.0f);
+    // The same for the bodies of one block.
+    std::vector<BodyState> block(3);
+    block[2].linearVelocity = {0.0f, 1.0e9f};
+    const std::vector<int> indices{2};
+    integratePositions(block, indices, h, 100.0f);
+    EXPECT_NEAR(block[2].deltaPosition.y, 100.0f * h, 1e-4f);
+}
+
 TEST(SoftStep, BoxRestsOnTheGround) {
     Harness h;
     h.bodies.push_back(makeBox({0.0f, 0.5f}, 0.5f, 0.5f));
@@ -496,7 +522,7 @@ TEST(ClassicBlock, BothPointsPushSolvedExactlyInOneIteration) {
     std::vector<BodyState> states(1);
     states[0].linearVelocity = {0.0f, -1.0f};
     states[0].angularVelocity = 0.25f;
-    prepareClassic(cs, 1.0f);
+    prepareClassic(cs, states, 1.0f);
     ASSERT_EQ(cs[0].pointCount, 2);
     EXPECT_TRUE(cs[0].blockSolve);
     solveVelocitiesClassic(cs, states, 60.0f);
@@ -516,7 +542,7 @@ TEST(ClassicBlock, OnlyTheApproachingPointPushes) {
     std::vector<BodyState> states(1);
     states[0].linearVelocity = {0.0f, -1.0f};
     states[0].angularVelocity = 1.0f;
-    prepareClassic(cs, 1.0f);
+    prepareClassic(cs, states, 1.0f);
     solveVelocitiesClassic(cs, states, 60.0f);
     EXPECT_NEAR(cs[0].points[0].normalImpulse, 4.0f / 3.0f, 1e-6f);
     EXPECT_EQ(cs[0].points[1].normalImpulse, 0.0f);
@@ -532,7 +558,7 @@ TEST(ClassicBlock, SeparatingPointsReleaseTheirWarmStart) {
     cs[0].points[1].normalImpulse = 0.25f;
     std::vector<BodyState> states(1);
     states[0].linearVelocity = {0.0f, 1.0f};
-    prepareClassic(cs, 1.0f);
+    prepareClassic(cs, states, 1.0f);
     solveVelocitiesClassic(cs, states, 60.0f);
     EXPECT_EQ(cs[0].points[0].normalImpulse, 0.0f);
     EXPECT_EQ(cs[0].points[1].normalImpulse, 0.0f);
@@ -547,7 +573,7 @@ TEST(ClassicBlock, RedundantPointsFallBackToOne) {
     cs[0].points[1].normalImpulse = 0.375f;
     std::vector<BodyState> states(1);
     states[0].linearVelocity = {0.0f, -1.0f};
-    prepareClassic(cs, 1.0f);
+    prepareClassic(cs, states, 1.0f);
     EXPECT_FALSE(cs[0].blockSolve);
     ASSERT_EQ(cs[0].pointCount, 1);
     EXPECT_EQ(cs[0].points[0].normalImpulse, 0.5f);
@@ -573,7 +599,8 @@ TEST(ClassicBlock, ConditionGuardAtTheThreshold) {
         ContactBodyView body{{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f, {1.0f, 1.0f}, 1.0f, 0};
         std::vector<ContactConstraint> cs(1);
         prepareContact(cs[0], m, {}, body, {}, {});
-        prepareClassic(cs, 1.0f);
+        std::vector<BodyState> states(1);
+        prepareClassic(cs, states, 1.0f);
         return cs[0].blockSolve;
     };
     // halfGap 0.1: k11 = 1.01, det = 0.04, ratio 25.5; halfGap 0.01: k11 ~ 1, det = 4e-4,
@@ -613,7 +640,7 @@ TEST(ClassicBlock, UnderflowingDeterminantIsNotABlock) {
         std::vector<BodyState> states(1);
         states[0].angularVelocity = 10.0f;
         if (classic != 0) {
-            prepareClassic(cs, 1.0f);
+            prepareClassic(cs, states, 1.0f);
             warmStartContacts(cs, states);
             solveVelocitiesClassic(cs, states, 1.0f / kDt);
         } else {

@@ -102,9 +102,9 @@ TEST(Hull, NonFiniteAndHugeCoordinatesAreRejected) {
     std::vector<Vec2> withInf{{0, 0}, {1, 0}, {0, -inf}};
     EXPECT_EQ(errorMessage([&] { computeHull(withInf); }),
               "physics::computeHull(): point 2 is not finite, got (0, -inf)");
-    std::vector<Vec2> huge{{0, 0}, {200000, 0}, {0, 1}};
+    std::vector<Vec2> huge{{0, 0}, {600000, 0}, {0, 1}};
     EXPECT_EQ(errorMessage([&] { computeHull(huge); }),
-              "physics::computeHull(): point 1 is beyond kHuge (100000 m), got (200000, 0)");
+              "physics::computeHull(): point 1 is beyond kHuge (500000 m), got (600000, 0)");
 }
 
 std::vector<Vec2> regularPolygon(int n, float radius) {

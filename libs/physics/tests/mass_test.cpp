@@ -135,9 +135,9 @@ TEST(Mass, VariantDispatchesToTheShape) {
 
 TEST(Mass, NegativeOrNonFiniteDensityIsRejected) {
     EXPECT_EQ(errorMessage([] { computeMass(makeBox(1.0f, 1.0f), -1.0f); }),
-              "physics::computeMass(): density must be finite and in [0, kHuge (100000 kg/m^2)], got -1");
+              "physics::computeMass(): density must be finite and in [0, kHuge (500000 kg/m^2)], got -1");
     EXPECT_EQ(errorMessage([] { computeMass(Circle{{0, 0}, 1.0f}, INFINITY); }),
-              "physics::computeMass(): density must be finite and in [0, kHuge (100000 kg/m^2)], got inf");
+              "physics::computeMass(): density must be finite and in [0, kHuge (500000 kg/m^2)], got inf");
 }
 
 } // namespace

@@ -137,7 +137,7 @@ TEST(WorldGameApi, OverlapShapeAgreesWithBruteForce) {
     E2D_EXPECT_ERROR((void)world.overlapShape(Segment{{0.0f, 0.0f}, {1.0f, 0.0f}}, {}),
                      "physics::World::overlapShape(): geometry must be a circle, capsule or polygon");
     E2D_EXPECT_ERROR((void)world.overlapShape(Circle{{0.0f, 0.0f}, -1.0f}, {}),
-                     "circle radius must be finite and in (0, kHuge (100000 m)], got -1");
+                     "circle radius must be finite and in (0, kHuge (500000 m)], got -1");
 }
 
 TEST(WorldGameApi, ExplosionFallsOffWithDistanceAndNothingBlocksIt) {
@@ -257,7 +257,7 @@ TEST(WorldGameApi, DensityGeometryAndMaterialSetters) {
     E2D_EXPECT_ERROR(world.setShapeFriction(shape, NAN), "setShapeFriction(): friction must be finite");
     E2D_EXPECT_ERROR(world.setShapeGeometry(shape, Circle{{0.0f, 0.0f}, 0.0f}),
                      "physics::World::setShapeGeometry(): circle radius must be finite and in "
-                     "(0, kHuge (100000 m)], got 0");
+                     "(0, kHuge (500000 m)], got 0");
     EXPECT_NEAR(world.massData(box).mass, 12.0f, 1e-4f); // unchanged by the rejected calls
 }
 
