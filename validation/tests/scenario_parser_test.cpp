@@ -400,8 +400,8 @@ TEST(ScenarioParser, RejectsBadWheelMotorAndMouseJoints) {
               "joints[0].correctionFactor: must be in [0, 1], got 2");
     EXPECT_EQ(withJoint(R"({"type": "motor", "bodyA": 0, "bodyB": 1, "maxTorque": -1})"),
               "joints[0].maxTorque: must be >= 0, got -1");
-    EXPECT_THAT(withJoint(R"({"type": "motor", "bodyA": 0, "bodyB": 1, "linearOffset": [3e5, 0]})"),
-                StartsWith("joints[0].linearOffset[0]: must be within e2d's limit of 100000"));
+    EXPECT_THAT(withJoint(R"({"type": "motor", "bodyA": 0, "bodyB": 1, "linearOffset": [6e5, 0]})"),
+                StartsWith("joints[0].linearOffset[0]: must be within e2d's limit of 500000"));
     EXPECT_EQ(withJoint(R"({"type": "mouse", "bodyA": 0, "bodyB": 1})"),
               "joints[0].target: required field is missing");
     EXPECT_EQ(withJoint(R"({"type": "mouse", "bodyA": 0, "bodyB": 1, "target": [1, 1], "hertz": -2})"),
@@ -474,8 +474,8 @@ TEST(ScenarioParser, RejectsBadChains) {
               "bodies[0].shape.materials[0].restitution: must be in [0, 1] (e2d's limit), got 2");
     EXPECT_EQ(withChain(R"({"type": "chain", "points": [[0, 0], [1, 0]], "materials": [{"frcition": 1}]})"),
               "bodies[0].shape.materials[0].frcition: unknown field (did you mean \"friction\"?)");
-    EXPECT_THAT(withChain(R"({"type": "chain", "points": [[0, 0], [2e5, 0]]})"),
-                StartsWith("bodies[0].shape.points[1][0]: must be within e2d's limit of 100000"));
+    EXPECT_THAT(withChain(R"({"type": "chain", "points": [[0, 0], [6e5, 0]]})"),
+                StartsWith("bodies[0].shape.points[1][0]: must be within e2d's limit of 500000"));
     EXPECT_EQ(withChain(R"({"type": "chain", "points": [[0, 0], [1, 0]], "radius": 1})"),
               "bodies[0].shape.radius: unknown field");
 }
