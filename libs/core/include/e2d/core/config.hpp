@@ -23,11 +23,10 @@ enum class PhysicsSolver { SoftStep, Classic };
 [[nodiscard]] std::string_view toString(TextureFilteringMode mode) noexcept;
 [[nodiscard]] std::string_view toString(PhysicsSolver solver) noexcept;
 
-/// Everything the game configuration file sets (seed Figure 107, plus e2d's own keys: the
-/// LOOP, INPUT and DEBUG sections and the DISPLAY, PHYSICS and SOUND additions below).
+/// Everything the game configuration file sets, by section: SCENE, DISPLAY, TEXT, PHYSICS,
+/// SOUND, LOOP, INPUT and DEBUG.
 ///
-/// Defaults are the figure's values except where noted: PHYSICS is in metres and seconds
-/// (the seed used pixels), `firstScene` is empty (a game-specific name is no library default)
+/// Lengths in PHYSICS are world units (metres at the default `unitsPerMetre` of 1), `firstScene` is empty (a game-specific name is no library default)
 /// and `windowTitle` is "e2d".
 struct Config {
     // SCENE
@@ -69,7 +68,7 @@ struct Config {
     /// Solver iterations per step (>= 1). Default 4.
     int collisionResolutionSteps = 4;
     /// The contact solver: "softStep" (soft contacts, sub-stepped; e2d's default) or "classic"
-    /// (sequential impulses with position iterations, the seed's kind). Default softStep.
+    /// (sequential impulses with position iterations). Default softStep.
     PhysicsSolver physicsSolver = PhysicsSolver::SoftStep;
     /// Overlap tolerated before position correction, world units (>= 0); used by the classic
     /// solver only. Default 0.005.
@@ -81,7 +80,7 @@ struct Config {
     float minRigidbodySpeed = 0.05f;
     /// World units per physics metre (> 0): the PHYSICS lengths above (gravity, penetration,
     /// speed) are in world units and are divided by it before reaching the physics world,
-    /// which runs in metres. The seed's pixel configs (gravity -1000) say e.g. 100. Default 1.
+    /// which runs in metres. A config written in pixels (gravity -1000) says e.g. 100. Default 1.
     double unitsPerMetre = 1.0;
 
     // SOUND (world units, >= 0)

@@ -12,7 +12,7 @@
 /// through GameSystem.
 namespace e2d::engine {
 
-/// The game's configuration: every key of core::Config (seed Figure 107 plus e2d's keys, see
+/// The game's configuration: every key of core::Config (see
 /// core/config.hpp for each key, its unit and default) and where it was read from.
 struct EngineConfig : core::Config {
     /// The file the configuration was read from; empty when the defaults are used.
@@ -33,7 +33,7 @@ struct EngineConfig : core::Config {
 ///                                       SolverDef's 0.1 m);
 /// - penetrationBiasFactor            -> solver.classicPositionBias (same [0, 1] range; 0
 ///                                       turns the contacts' position correction off).
-/// The last two are the seed's position-correction settings and only the classic solver
+/// The last two are position-correction settings and only the classic solver
 /// (`physicsSolver = classic`) uses them: the default soft-step solver's contacts are springs
 /// with their own settings (see SolverDef). The defaults (0.005 units at 1 unit per metre,
 /// 0.2) are SolverDef's own.

@@ -19,7 +19,7 @@ struct AnimationFrame {
     bool rotated = false;
 };
 
-/// How an AnimatedSpriteRenderer starts (seed 2.4.2.8).
+/// How an AnimatedSpriteRenderer starts.
 struct AnimatedSpriteRendererDef {
     /// The sprite (texture, size, pivot, tint, ...); its `uv` and `uvRotated` are replaced by
     /// the current frame's.

@@ -9,7 +9,7 @@
 namespace e2d::render {
 
 /// How the reference region (what the game was designed to show) is fitted to a screen of
-/// another size (seed 2.4.5, Figure 58). Outside the fitted region the screen is letterboxed
+/// another size. Outside the fitted region the screen is letterboxed
 /// (black).
 enum class ScreenFit {
     /// Stretch the reference region over the whole screen, distorting it if the aspect ratio

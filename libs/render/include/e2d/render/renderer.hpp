@@ -136,7 +136,7 @@ struct RendererDef {
     /// Default 1000.
     float depthRange = 1000.0f;
     /// When set, every texture loaded from a file (loadTexture()) is sampled with this filter,
-    /// whatever its TextureDef says (a game-wide setting such as the seed's
+    /// whatever its TextureDef says (a game-wide setting such as the config's
     /// textureFilteringMode); textures made from memory keep their own. Default unset.
     std::optional<TextureFilter> fileTextureFilter{};
     /// Screen colour inside the camera's region. Default opaque black.

@@ -10,7 +10,7 @@ namespace e2d::render {
 
 class RenderSystem;
 
-/// How a SpriteRenderer starts (seed 2.4.2.7).
+/// How a SpriteRenderer starts.
 struct SpriteRendererDef {
     /// Image file, loaded through the Renderer's cache when the component starts; empty: use
     /// `texture`. Default "".
@@ -94,7 +94,7 @@ struct CameraComponentDef {
     ScreenFit fit = ScreenFit::BestFit;
 };
 
-/// The seed's Camera component: a Camera whose position and rotation follow the game object's
+/// A Camera as a component: its position and rotation follow the game object's
 /// world transform. The RenderSystem draws through the first enabled one.
 class CameraComponent : public core::Component {
 public:

@@ -11,7 +11,7 @@
 
 namespace e2d::render {
 
-/// How a TextLabel starts (seed 2.4.2.9).
+/// How a TextLabel starts.
 struct TextLabelDef {
     /// UTF-8 text; '\n' breaks lines. Default "".
     std::string text;
