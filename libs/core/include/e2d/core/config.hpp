@@ -26,8 +26,8 @@ enum class PhysicsSolver { SoftStep, Classic };
 /// Everything the game configuration file sets, by section: SCENE, DISPLAY, TEXT, PHYSICS,
 /// SOUND, LOOP, INPUT and DEBUG.
 ///
-/// Lengths in PHYSICS are world units (metres at the default `unitsPerMetre` of 1), `firstScene` is empty (a game-specific name is no library default)
-/// and `windowTitle` is "e2d".
+/// Lengths in PHYSICS are world units (metres at the default `unitsPerMetre` of 1),
+/// `firstScene` is empty (a game-specific name is no library default) and `windowTitle` is "e2d".
 struct Config {
     // SCENE
     /// Registry name of the scene to start with. Default "" (none).
