@@ -66,7 +66,9 @@ void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, 
             ++lane;
         }
         int seen = 0;
-        for (std::size_t k = first; k < end; ++k) {
+        // A level of plain hinges only, all in quads (a joint grid's), has no other entries.
+        const bool allPacked = quadsAllowed && static_cast<std::size_t>(packed) == end - first;
+        for (std::size_t k = first; k < end && !allPacked; ++k) {
             const int s = slots[k];
             if (!quadsAllowed || !isPointJoint(joints[static_cast<std::size_t>(s)]) || seen++ >= packed) {
                 entries.push_back(s);
@@ -84,7 +86,9 @@ void storePointJointQuads(std::span<const PointJointQuad> quads, std::span<Joint
                 j.linearImpulse = {q.impulseX[lane], q.impulseY[lane]};
                 // No frame needed: a revolute joint's force is its point impulse.
                 j.reactionForce = invH * j.linearImpulse;
-                j.reactionTorque = invH * (j.springImpulse + j.motorImpulse + j.lowerImpulse - j.upperImpulse);
+                // A plain hinge has no spring, motor or limit, and prepareJoint() zeroed their
+                // impulses: no torque (and no read of the joint's second cache line).
+                j.reactionTorque = 0.0f;
             }
         }
     }

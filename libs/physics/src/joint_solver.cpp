@@ -40,7 +40,10 @@ void prepareJoint(Joint& j, const JointBodyView& a, const JointBodyView& b, cons
     j.axisA = rotate(a.q, j.localAxisA);
     const float angularK = a.invInertia + b.invInertia;
     j.angularMass = inverseOrZero(angularK);
-    j.angle0 = wrapAngle(relativeAngle(a.q, b.q) - j.referenceAngle);
+    // The joint angle at the step start (a revolute joint's is followed through whole turns
+    // below, from the same relative angle).
+    const float relative = wrapAngle(relativeAngle(a.q, b.q) - j.referenceAngle);
+    j.angle0 = relative;
     if (!j.enableMotor) {
         j.motorImpulse = 0.0f;
     }
@@ -83,8 +86,7 @@ void prepareJoint(Joint& j, const JointBodyView& a, const JointBodyView& b, cons
         break;
     case JointType::Revolute: {
         // Followed through whole turns: the turn since the last step is below half a turn.
-        float now = wrapAngle(relativeAngle(a.q, b.q) - j.referenceAngle);
-        j.angle += wrapAngle(now - j.angle);
+        j.angle += wrapAngle(relative - j.angle);
         j.angle0 = j.angle;
         j.axialMass = j.angularMass;
         j.springSoftness = springOf(j.hertz, j.dampingRatio, step.h);

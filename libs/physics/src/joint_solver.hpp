@@ -160,8 +160,12 @@ struct JointBodyView {
 // The angle of rotation b relative to a, radians in [-pi, pi].
 inline float relativeAngle(Rot a, Rot b) { return invMulRot(a, b).angle(); }
 
-// x wrapped into [-pi, pi].
-inline float wrapAngle(float x) { return std::remainder(x, 6.28318530718f); }
+// x wrapped into [-pi, pi]. Within half a turn x is its own remainder, bit for bit, so the
+// common case (a joint angle that has not wrapped) skips the library call.
+inline float wrapAngle(float x) {
+    constexpr float kTurn = 6.28318530718f;
+    return std::fabs(x) < 0.5f * kTurn ? x : std::remainder(x, kTurn);
+}
 
 // Fills the step's fields (anchors, masses, softness) of an alive joint.
 void prepareJoint(Joint& j, const JointBodyView& a, const JointBodyView& b, const JointStep& step);
