@@ -21,11 +21,13 @@ mkdir -p "$logs"
 passed=0
 failed=0
 failures=()
+# Every stage header carries the time since the start, so a CI log shows where the time goes.
+stage() { printf '=== [%d:%02d] %s\n' $((SECONDS / 60)) $((SECONDS % 60)) "$*"; }
 
 # ctest_stage NAME PRESET: configure, build and test one configuration, counting its tests.
 ctest_stage() {
   local name="$1" preset="$2"
-  echo "=== $name: configure and build (preset $preset)"
+  stage "$name: configure and build (preset $preset)"
   if ! cmake --preset "$preset" >"$logs/$preset-configure.log" 2>&1; then
     tail -30 "$logs/$preset-configure.log"
     failures+=("$name: configure failed (see $logs/$preset-configure.log)")
@@ -38,7 +40,7 @@ ctest_stage() {
     failed=$((failed + 1))
     return
   fi
-  echo "=== $name: test"
+  stage "$name: test"
   ctest --preset "$preset" 2>&1 | tee "$logs/$preset-test.log" | grep -vE '^ +Start|Test +#[0-9]+: .* Passed'
   local line
   line=$(grep -E '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$logs/$preset-test.log" | tail -1)
@@ -61,7 +63,7 @@ ctest_stage "asan+ubsan" asan
 # A user's own optimised build of the libraries (CMAKE_BUILD_TYPE=Release, -O3, where GCC
 # warns about things -O2 does not), warnings as errors; Debug and RelWithDebInfo are the two
 # stages above.
-echo "=== Release (-O3): the libraries as a user's dependency build makes them"
+stage "Release (-O3): the libraries as a user's dependency build makes them"
 if cmake -S "$root" -B "$root/build/o3" -G Ninja -DCMAKE_BUILD_TYPE=Release -DE2D_WARNINGS_AS_ERRORS=ON \
      -DE2D_BUILD_TESTS=OFF -DE2D_BUILD_APPS=OFF -DE2D_BUILD_VALIDATION=OFF -DE2D_BUILD_BENCH=OFF \
      >"$logs/o3-configure.log" 2>&1 && cmake --build "$root/build/o3" >"$logs/o3-build.log" 2>&1; then
@@ -73,7 +75,7 @@ else
   failed=$((failed + 1))
 fi
 
-echo "=== fuzz: libFuzzer targets, ${fuzz_seconds}s each"
+stage "fuzz: libFuzzer targets, ${fuzz_seconds}s each"
 if cmake --preset fuzz >"$logs/fuzz-configure.log" 2>&1 && cmake --build --preset fuzz >"$logs/fuzz-build.log" 2>&1; then
   # Every fuzzer: build/fuzz/<dir>/fuzz/fuzz_<name> for <dir> libs/<lib> or validation, seeds in
   # <dir>/fuzz/corpus/fuzz_<name>/ of the source tree (replayed every run). Two run at a time, one
@@ -126,7 +128,7 @@ else
   failed=$((failed + 1))
 fi
 
-echo "=== consumer: find_package(e2d COMPONENTS <each library>) against an install"
+stage "consumer: find_package(e2d COMPONENTS <each library>) against an install"
 if "$root/scripts/check-consumer.sh" "$root/build/release" 2>&1 | tee "$logs/consumer.log"; then
   passed=$((passed + 1))
 else
@@ -135,5 +137,6 @@ else
 fi
 
 for f in "${failures[@]}"; do echo "FAILED: $f"; done
+stage "done"
 echo "e2d tests: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
