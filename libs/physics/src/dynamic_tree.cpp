@@ -558,6 +558,17 @@ void DynamicTree::rebuildAll(bool morton) {
     }
 }
 
+void DynamicTree::attach(int child, int parent, int slot) {
+    nodes_[static_cast<std::size_t>(child)].parent = parent;
+    if (parent == kNullProxy) {
+        root_ = child;
+    } else if (slot == 1) {
+        nodes_[static_cast<std::size_t>(parent)].child1 = child;
+    } else {
+        nodes_[static_cast<std::size_t>(parent)].child2 = child;
+    }
+}
+
 void DynamicTree::buildFrom(std::vector<int>& leafIds) {
     // The leaves' boxes and centres, copied once: every level of the build reads them
     // sequentially instead of gathering nodes.
@@ -602,29 +613,18 @@ void DynamicTree::buildFrom(std::vector<int>& leafIds) {
     constexpr int kBins = 16;
     constexpr int kSamples = 1024;
 
-    auto link = [&](int child, int parent, int slot) {
-        nodes_[static_cast<std::size_t>(child)].parent = parent;
-        if (parent == kNullProxy) {
-            root_ = child;
-        } else if (slot == 1) {
-            nodes_[static_cast<std::size_t>(parent)].child1 = child;
-        } else {
-            nodes_[static_cast<std::size_t>(parent)].child2 = child;
-        }
-    };
-
     while (!tasks.empty()) {
         const Task task = tasks.back();
         tasks.pop_back();
         const int n = task.end - task.begin;
         if (n == 1) {
-            link(leaves[static_cast<std::size_t>(task.begin)].id, task.parent, task.slot);
+            attach(leaves[static_cast<std::size_t>(task.begin)].id, task.parent, task.slot);
             continue;
         }
         // Reuses freed internal nodes; grows the node array only for new leaves' parents.
         const int node = allocateNode();
         internals.push_back(node);
-        link(node, task.parent, task.slot);
+        attach(node, task.parent, task.slot);
 
         auto first = leaves.begin() + task.begin;
         auto last = leaves.begin() + task.end;
@@ -811,26 +811,16 @@ void DynamicTree::buildMorton(const std::vector<int>& leafIds) {
     std::vector<int> internals; // in creation order: parents before children
     internals.reserve(n);
     tasks.push_back({0, static_cast<int>(n), kNullProxy, 0});
-    auto link = [&](int child, int parent, int slot) {
-        nodes_[static_cast<std::size_t>(child)].parent = parent;
-        if (parent == kNullProxy) {
-            root_ = child;
-        } else if (slot == 1) {
-            nodes_[static_cast<std::size_t>(parent)].child1 = child;
-        } else {
-            nodes_[static_cast<std::size_t>(parent)].child2 = child;
-        }
-    };
     while (!tasks.empty()) {
         const Task task = tasks.back();
         tasks.pop_back();
         if (task.end - task.begin == 1) {
-            link(keys[static_cast<std::size_t>(task.begin)].id, task.parent, task.slot);
+            attach(keys[static_cast<std::size_t>(task.begin)].id, task.parent, task.slot);
             continue;
         }
         const int node = allocateNode();
         internals.push_back(node);
-        link(node, task.parent, task.slot);
+        attach(node, task.parent, task.slot);
         const std::uint32_t first = keys[static_cast<std::size_t>(task.begin)].code;
         const std::uint32_t last = keys[static_cast<std::size_t>(task.end - 1)].code;
         int mid = task.begin + (task.end - task.begin) / 2;

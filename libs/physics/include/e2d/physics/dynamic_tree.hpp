@@ -202,6 +202,8 @@ private:
     // crosses into the next quadrant: linear after the sort, tight for level-like scenes.
     void buildFrom(std::vector<int>& leaves);
     void buildMorton(const std::vector<int>& leaves);
+    // Makes `child` the child `slot` (1 or 2) of `parent`, or the root when parent is null.
+    void attach(int child, int parent, int slot);
     void refit(int index);
     bool rotate(int index);
     void refitAncestors(int index);
