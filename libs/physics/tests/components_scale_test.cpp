@@ -15,6 +15,8 @@
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
+#include "setup_scene.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -41,16 +43,7 @@ public:
     std::optional<core::ContactInfo> info;
 };
 
-class SetupScene : public core::Scene {
-public:
-    explicit SetupScene(std::function<void(core::Scene&)> setup) : setup_(std::move(setup)) {}
-
-protected:
-    void onInitialize() override { setup_(*this); }
-
-private:
-    std::function<void(core::Scene&)> setup_;
-};
+using physics::test::SetupScene;
 
 // What one run reads back, in its own world units.
 struct Outcome {

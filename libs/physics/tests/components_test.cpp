@@ -12,6 +12,8 @@
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
+#include "setup_scene.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -49,16 +51,7 @@ public:
     std::vector<Event> events;
 };
 
-class SetupScene : public core::Scene {
-public:
-    explicit SetupScene(std::function<void(core::Scene&)> setup) : setup_(std::move(setup)) {}
-
-protected:
-    void onInitialize() override { setup_(*this); }
-
-private:
-    std::function<void(core::Scene&)> setup_;
-};
+using physics::test::SetupScene;
 
 // A scene run by a director with the physics system plugged in, stepped by hand.
 class ComponentsTest : public ::testing::Test {

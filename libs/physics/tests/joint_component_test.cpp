@@ -11,6 +11,8 @@
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
+#include "setup_scene.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -29,16 +31,7 @@ using physics::Rigidbody;
 
 constexpr double kStep = 1.0 / 60.0;
 
-class SetupScene : public core::Scene {
-public:
-    explicit SetupScene(std::function<void(core::Scene&)> setup) : setup_(std::move(setup)) {}
-
-protected:
-    void onInitialize() override { setup_(*this); }
-
-private:
-    std::function<void(core::Scene&)> setup_;
-};
+using physics::test::SetupScene;
 
 class JointComponentTest : public ::testing::Test {
 protected:
