@@ -218,10 +218,13 @@ void stepE2d(benchmark::State& state, const Case* c) {
             slot.world->step(kTimeStep);
         }
     }
+    double proxyMoves = 0.0;
     for (auto _ : state) {
         slot.world->step(kTimeStep);
+        proxyMoves += slot.world->stepCounters().proxyMoves;
     }
     state.SetItemsProcessed(state.iterations());
+    state.counters["proxy_moves"] = proxyMoves / static_cast<double>(state.iterations());
     state.counters["bodies"] = static_cast<double>(c->scene.bodies.size());
     state.counters["joints"] = static_cast<double>(slot.world->jointCount());
     state.counters["contacts"] = static_cast<double>(slot.world->contactCount());

@@ -542,7 +542,7 @@ void World::Impl::solve(float dt) {
             detail::Shape& sh = shape(si);
             sh.aabb = computeAabb(sh.geometry, b.transform);
             if (sh.proxyKey != kNullIndex) {
-                broadPhase.moveProxy(sh.proxyKey, sh.aabb, ahead);
+                s.counters.proxyMoves += broadPhase.moveProxy(sh.proxyKey, sh.aabb, ahead) ? 1 : 0;
             }
         }
     }

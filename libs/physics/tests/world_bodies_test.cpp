@@ -248,5 +248,30 @@ TEST(WorldBodies, DisabledBodyNeitherMovesNorCollides) {
     EXPECT_LT(world.linearVelocity(box).y, 0.0f);
 }
 
+TEST(WorldBodies, ProxyMovesCountShapesThatLeftTheirFatBoxes) {
+    WorldDef def;
+    def.gravity = {0.0f, 0.0f};
+    World world(def);
+    // 3 m/s: 5 cm a step, so its fat box (a 10 cm margin and two steps ahead) holds it for
+    // a few steps, then it is reinserted.
+    BodyId ball = addBall(world, {0.0f, 0.0f}, 0.25f);
+    world.setLinearVelocity(ball, {3.0f, 0.0f});
+    BodyDef still;
+    still.type = BodyType::Dynamic;
+    still.enableSleep = false;
+    addUnitBox(world, {0.0f, 5.0f}, still);
+    int moves = 0;
+    int steps = 0;
+    for (int i = 0; i < 60; ++i) {
+        world.step(kStep);
+        moves += world.stepCounters().proxyMoves;
+        steps += world.stepCounters().proxyMoves > 0 ? 1 : 0;
+        ASSERT_LE(world.stepCounters().proxyMoves, 1) << "the box at rest moved its proxy, step " << i;
+    }
+    EXPECT_EQ(moves, steps);
+    EXPECT_GE(moves, 5) << "a ball going 3 m in a second left its box only " << moves << " times";
+    EXPECT_LE(moves, 30) << "a steadily moving ball was reinserted nearly every step";
+}
+
 } // namespace
 } // namespace e2d::physics::test

@@ -54,6 +54,9 @@ struct StepCounters {
     int contactConstraints = 0;
     /// Contacts whose manifold the narrow phase recomputed (pairs with an awake body).
     int manifoldUpdates = 0;
+    /// Shapes whose broad-phase box the step moved (a shape that leaves its fat box, or whose
+    /// box grew much larger than it needs, is reinserted into the tree).
+    int proxyMoves = 0;
     /// Soft step: relax sweeps per sub-step, 1 + SolverDef::relaxIterations, and 24 more (with 5
     /// more biased sweeps) where a contact overlaps deeper than its load explains (shapes
     /// spawned or moved into each other), so that pushing them apart leaves no velocity behind:
