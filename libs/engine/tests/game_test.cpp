@@ -44,13 +44,23 @@ using testing::HasSubstr;
 
 const std::filesystem::path kData = E2D_ENGINE_TEST_DATA;
 
+/// This test's folder for the files it writes, engine_test_output/<test> in the test's
+/// working folder (the build tree under ctest): screenshots stay there to look at, and the
+/// next run of the test overwrites them.
 std::filesystem::path tempDir() {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                      ("e2d_engine_game_test_" + std::to_string(::testing::UnitTest::GetInstance()
-                                                                                    ->random_seed()) +
-                                       "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::filesystem::path dir = std::filesystem::current_path() / "engine_test_output" /
+                                      (std::string(info->test_suite_name()) + "." + info->name());
     std::filesystem::create_directories(dir);
     return dir;
+}
+
+/// Where this test's screenshot `name` goes, with any file an earlier run left there removed,
+/// so the test reads only what this run wrote.
+std::filesystem::path shotPath(const std::string& name) {
+    const std::filesystem::path path = tempDir() / name;
+    std::filesystem::remove(path);
+    return path;
 }
 
 std::filesystem::path writeFile(const std::filesystem::path& path, const std::string& text) {
@@ -156,7 +166,7 @@ TEST(Game, HeadlessRunsExactlyNFramesOfOneStepEachAndSavesTheLastFrame) {
             EXPECT_TRUE(gameOf(s).headless());
             ++updates;
         });
-    const std::filesystem::path shot = tempDir() / "shot.png";
+    const std::filesystem::path shot = shotPath("shot.png");
     const GameRun r = run(game, {"--config", writeConfig("Red").string(), "--frames", "120", "--screenshot", shot.string()});
     ASSERT_EQ(r.code, 0) << r.all();
     // 120 frames of exactly 1/60 s with a 1/60 s step: one step each, none dropped.
@@ -195,7 +205,7 @@ TEST(Game, TerminateGameEndsTheRunAndTheLastFrameIsStillSaved) {
                 gameOf(s).terminateGame();
             }
         });
-    const std::filesystem::path shot = tempDir() / "short.png";
+    const std::filesystem::path shot = shotPath("short.png");
     const GameRun r = run(game, {"--config", writeConfig("Short").string(), "--frames", "100", "--screenshot", shot.string()});
     ASSERT_EQ(r.code, 0) << r.all();
     EXPECT_EQ(game.profile().frames, 5);
@@ -353,7 +363,7 @@ TEST(Game, MissingAssetIsReportedOnceAndThePlaceholderIsDrawn) {
             o.addComponent<render::SpriteRenderer>(def);
         }
     });
-    const std::filesystem::path shot = tempDir() / "missing.png.shot.png";
+    const std::filesystem::path shot = shotPath("missing.png.shot.png");
     const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "10", "--screenshot", shot.string()});
     ASSERT_EQ(r.code, 0) << r.all();
     EXPECT_EQ(r.count("missing.png"), 1) << r.all();
@@ -538,7 +548,7 @@ int debugGreenPixels(const std::vector<std::string>& extraArgs, const std::strin
         ground.setPosition(glm::vec2{0.0f, -20.0f});
         ground.addComponent<physics::Collider>(physics::ShapeGeometry{physics::makeBox(50.0f, 10.0f)});
     });
-    const std::filesystem::path shot = tempDir() / "debug.png";
+    const std::filesystem::path shot = shotPath("debug.png");
     std::vector<std::string> args{"--config", writeConfig("A", configExtra).string(), "--frames", "5", "--screenshot",
                                   shot.string()};
     args.insert(args.end(), extraArgs.begin(), extraArgs.end());
@@ -591,7 +601,7 @@ TEST(Game, PhysicsDebugDrawShowsJointsInTheirOwnColour) {
             rope.length = 80.0f;
             b.addComponent<physics::JointComponent>(physics, physics::JointComponentDef{rope, a.id()});
         });
-        const std::filesystem::path shot = tempDir() / (debug ? "joint.png" : "joint_off.png");
+        const std::filesystem::path shot = shotPath(debug ? "joint.png" : "joint_off.png");
         std::vector<std::string> args{"--config", writeConfig("A").string(), "--frames", "5", "--screenshot",
                                       shot.string()};
         if (debug) {
@@ -739,7 +749,7 @@ OverlayRun overlayRun(const std::vector<std::string>& extraArgs, const std::stri
             s.createGameObject().addComponent<render::SpriteRenderer>(def);
         },
         [&on](core::Scene& s) { on = gameOf(s).profileOverlay(); });
-    const std::filesystem::path shot = tempDir() / (name + ".png");
+    const std::filesystem::path shot = shotPath(name + ".png");
     std::vector<std::string> args{"--config", writeConfig("A", configExtra).string(), "--frames", "20",
                                   "--screenshot", shot.string()};
     args.insert(args.end(), extraArgs.begin(), extraArgs.end());
@@ -822,7 +832,7 @@ TEST(Game, ProfileOverlayStaysAfterASceneChange) {
         def.tint = {128, 128, 128, 255};
         s.createGameObject().addComponent<render::SpriteRenderer>(def);
     });
-    const std::filesystem::path shot = tempDir() / "changed.png";
+    const std::filesystem::path shot = shotPath("changed.png");
     const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "20", "--profile",
                                  "--screenshot", shot.string()});
     ASSERT_EQ(r.code, 0) << r.all();
@@ -871,7 +881,7 @@ TEST(Game, InactiveObjectsAreNeitherUpdatedNorDrawnAndObjectsAreFoundByNameAndTa
             s.findByName("blue")->setActive(false);
         },
         [&](core::Scene& s) { EXPECT_EQ(s.findFirstByTag("square"), s.findByName("green")); });
-    const std::filesystem::path shot = tempDir() / "active.png";
+    const std::filesystem::path shot = shotPath("active.png");
     const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "5", "--screenshot", shot.string()});
     ASSERT_EQ(r.code, 0) << r.all();
     EXPECT_EQ(activeUpdates, 5);
