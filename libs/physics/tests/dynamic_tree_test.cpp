@@ -737,7 +737,8 @@ TEST(DynamicTree, RoamingProxiesKeepTheTreeTight) {
         const Vec2 c{uniform(rng, -kWorld, kWorld), uniform(rng, -kWorld, kWorld)};
         boxes.push_back({c - Vec2{0.5f, 0.5f}, c + Vec2{0.5f, 0.5f}});
         velocity.push_back({uniform(rng, -0.2f, 0.2f), uniform(rng, -0.2f, 0.2f)});
-        ids.push_back(tree.createProxy(boxes.back(), 1, static_cast<std::uint64_t>(i)));
+        ids.push_back(tree.createProxy(boxes.back(), std::uint64_t{1} << (i % 3),
+                                       static_cast<std::uint64_t>(i)));
     }
     for (int frame = 0; frame < 600; ++frame) {
         for (std::size_t i = 0; i < ids.size(); ++i) {
@@ -756,18 +757,19 @@ TEST(DynamicTree, RoamingProxiesKeepTheTreeTight) {
     ASSERT_TRUE(tree.validate());
     for (int q = 0; q < 100; ++q) {
         const Aabb box = randomBox(rng, kWorld + 2.0f, 4.0f);
+        const std::uint64_t mask = q % 2 == 0 ? DynamicTree::kAllBits : std::uint64_t{2};
         std::vector<int> expected;
         for (std::size_t i = 0; i < ids.size(); ++i) {
-            if (overlap(boxes[i], box)) {
+            if (overlap(boxes[i], box) && ((std::uint64_t{1} << (i % 3)) & mask) != 0) {
                 expected.push_back(ids[i]);
             }
         }
         std::sort(expected.begin(), expected.end());
-        ASSERT_EQ(queryIds(tree, box, 1), expected);
+        ASSERT_EQ(queryIds(tree, box, mask), expected);
     }
     DynamicTree fresh = tree;
     fresh.rebuild();
-    // Measured: 126.9 against 117.6 for a fresh build (the tree starts at 145.8; reinserting
+    // Measured: 122.5 against 117.6 for a fresh build (the tree starts at 145.8; reinserting
     // from the root: 118.6; a leaf placed beside its old neighbours without a search: 239).
     EXPECT_LE(tree.areaRatio(), 1.15f * fresh.areaRatio());
     EXPECT_LE(tree.height(), 2 * 12 + 1); // 2 log2(3000) + 1
