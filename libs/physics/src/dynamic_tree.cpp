@@ -232,8 +232,10 @@ bool DynamicTree::reinsertNearby(int leaf, const Aabb& box) {
         return true;
     }
     const Node& parentNode = nodes_[static_cast<std::size_t>(parent)];
-    if (contains(parentNode.aabb, box)) {
-        // Still beside its sibling: only boxes shrink above.
+    const int sibling = parentNode.child1 == leaf ? parentNode.child2 : parentNode.child1;
+    if (nodes_[static_cast<std::size_t>(sibling)].isLeaf() && contains(parentNode.aabb, box)) {
+        // Still beside its sibling leaf: only boxes shrink above. (Beside a subtree it may
+        // belong inside that subtree: searched for below.)
         leafNode.aabb = box;
         refitUpward(parent, kNullProxy);
         return true;
@@ -247,7 +249,6 @@ bool DynamicTree::reinsertNearby(int leaf, const Aabb& box) {
     }
     // Splice the parent out: the sibling takes its place under the grandparent.
     const int grand = parentNode.parent;
-    const int sibling = parentNode.child1 == leaf ? parentNode.child2 : parentNode.child1;
     Node& grandNode = nodes_[static_cast<std::size_t>(grand)];
     if (grandNode.child1 == parent) {
         grandNode.child1 = sibling;
