@@ -205,9 +205,121 @@ void DynamicTree::moveProxy(int proxyId, const Aabb& aabb) {
         nodes_[static_cast<std::size_t>(proxyId)].aabb = aabb;
         return;
     }
+    if (reinsertNearby(proxyId, aabb)) {
+        return;
+    }
     removeLeaf(proxyId);
     nodes_[static_cast<std::size_t>(proxyId)].aabb = aabb;
     insertLeaf(proxyId);
+}
+
+// A box that moved a little usually still lies inside an ancestor close above. Then the leaf
+// is reinserted below the lowest such ancestor only: its parent node is spliced out, the
+// branch-and-bound search for the best sibling starts at that ancestor (whose box, and every
+// box above, need not grow), the same parent node is put back above the sibling found, and
+// only the two short paths below the ancestor are refitted (with rotations on the way up, as
+// after an insertion). Above it nothing changes but shrinking boxes and heights, so the climb
+// stops as soon as a node is unchanged and rotates only where heights went out of balance.
+// No node is freed or allocated. Measured on 10 000 boxes swinging about a grid: 20 % less time
+// for the whole broad-phase frame at the same area ratio; on boxes roaming across the scene
+// for 600 frames, an area ratio 4 % above a fresh build's (1 % for reinsertions from the root,
+// about 11 % without the area rotations below the ancestor).
+bool DynamicTree::reinsertNearby(int leaf, const Aabb& box) {
+    Node& leafNode = nodes_[static_cast<std::size_t>(leaf)];
+    const int parent = leafNode.parent;
+    if (parent == kNullProxy) {
+        leafNode.aabb = box; // the only proxy
+        return true;
+    }
+    const Node& parentNode = nodes_[static_cast<std::size_t>(parent)];
+    const int sibling = parentNode.child1 == leaf ? parentNode.child2 : parentNode.child1;
+    if (nodes_[static_cast<std::size_t>(sibling)].isLeaf() && contains(parentNode.aabb, box)) {
+        // Still beside its sibling leaf: only boxes shrink above. (Beside a subtree it may
+        // belong inside that subtree: searched for below.)
+        leafNode.aabb = box;
+        refitUpward(parent, kNullProxy);
+        return true;
+    }
+    int top = parentNode.parent;
+    while (top != kNullProxy && !contains(nodes_[static_cast<std::size_t>(top)].aabb, box)) {
+        top = nodes_[static_cast<std::size_t>(top)].parent;
+    }
+    if (top == kNullProxy) {
+        return false; // the root must grow: a reinsertion from the root
+    }
+    // Splice the parent out: the sibling takes its place under the grandparent.
+    const int grand = parentNode.parent;
+    Node& grandNode = nodes_[static_cast<std::size_t>(grand)];
+    if (grandNode.child1 == parent) {
+        grandNode.child1 = sibling;
+    } else {
+        grandNode.child2 = sibling;
+    }
+    nodes_[static_cast<std::size_t>(sibling)].parent = grand;
+    // Refit the path below `top` (rotating where heights went out of balance); `top` itself is
+    // refitted on the way up after the insertion, where its change decides how far the climb
+    // goes (the search only needs boxes that hold their subtrees, as these still do).
+    for (int index = grand; index != top; index = nodes_[static_cast<std::size_t>(index)].parent) {
+        refit(index);
+        const Node& node = nodes_[static_cast<std::size_t>(index)];
+        const int balance = nodes_[static_cast<std::size_t>(node.child2)].height -
+                            nodes_[static_cast<std::size_t>(node.child1)].height;
+        if (balance > kMaxImbalance || balance < -kMaxImbalance) {
+            rotate(index);
+        }
+    }
+    // Insert below `top` with the same parent node.
+    const int target = findBestSibling(box, top);
+    if (target == top) {
+        refit(top); // the new parent goes above it: the climb starts higher
+    }
+    Node& targetNode = nodes_[static_cast<std::size_t>(target)];
+    const int above = targetNode.parent;
+    Node& newParent = nodes_[static_cast<std::size_t>(parent)];
+    newParent.parent = above;
+    newParent.child1 = target;
+    newParent.child2 = leaf;
+    targetNode.parent = parent;
+    leafNode.parent = parent;
+    leafNode.aabb = box;
+    refit(parent);
+    if (above == kNullProxy) {
+        root_ = parent;
+        return true;
+    }
+    Node& aboveNode = nodes_[static_cast<std::size_t>(above)];
+    if (aboveNode.child1 == target) {
+        aboveNode.child1 = parent;
+    } else {
+        aboveNode.child2 = parent;
+    }
+    // Up to `top` every node changed; above it, only while something changes. When the new
+    // parent went above `top` (the sibling is `top` itself), that climb starts at once.
+    refitUpward(above, target == top ? kNullProxy : top);
+    return true;
+}
+
+void DynamicTree::refitUpward(int index, int mustReach) {
+    bool reached = mustReach == kNullProxy;
+    while (index != kNullProxy) {
+        Node& node = nodes_[static_cast<std::size_t>(index)];
+        const Aabb oldBox = node.aabb;
+        const int oldHeight = node.height;
+        refit(index);
+        const int balance = nodes_[static_cast<std::size_t>(node.child2)].height -
+                            nodes_[static_cast<std::size_t>(node.child1)].height;
+        // Below `mustReach` the structure changed: rotations may also shrink boxes there (as
+        // after an insertion). Above it, only heights out of balance are worth a rotation.
+        const bool below = !reached;
+        reached = reached || index == mustReach;
+        const bool rotated =
+            (below || balance > kMaxImbalance || balance < -kMaxImbalance) && rotate(index);
+        if (reached && !rotated && node.height == oldHeight && node.aabb.lower == oldBox.lower &&
+            node.aabb.upper == oldBox.upper) {
+            break;
+        }
+        index = node.parent;
+    }
 }
 
 void DynamicTree::enlargeProxy(int proxyId, const Aabb& aabb) {
@@ -270,15 +382,15 @@ void DynamicTree::clear() {
 // `box`: the perimeter of the new parent plus the growth of every ancestor. Going down into a
 // subtree can never cost less than the growth already paid plus perimeter(box), which bounds the
 // search; of the two children the one with the lower bound is explored (greedy, as in Box2D v3).
-int DynamicTree::findBestSibling(const Aabb& box) const {
+int DynamicTree::findBestSibling(const Aabb& box, int start) const {
     const float boxArea = perimeter(box);
-    int index = root_;
-    const Node* node = &nodes_[static_cast<std::size_t>(root_)];
+    int index = start;
+    const Node* node = &nodes_[static_cast<std::size_t>(start)];
     float nodeArea = perimeter(node->aabb);
     float directCost = perimeter(merge(node->aabb, box));
     float inheritedCost = 0.0f;
 
-    int best = root_;
+    int best = start;
     float bestCost = directCost;
 
     while (!node->isLeaf()) {
@@ -444,7 +556,7 @@ void DynamicTree::insertLeaf(int leaf) {
         nodes_[static_cast<std::size_t>(leaf)].parent = kNullProxy;
         return;
     }
-    const int sibling = findBestSibling(nodes_[static_cast<std::size_t>(leaf)].aabb);
+    const int sibling = findBestSibling(nodes_[static_cast<std::size_t>(leaf)].aabb, root_);
     // allocateNode() may reallocate the node array: take references only after it.
     const int newParent = allocateNode();
     Node& parentNode = nodes_[static_cast<std::size_t>(newParent)];

@@ -93,8 +93,10 @@ public:
     /// `proxyId` is not a live proxy.
     void destroyProxy(int proxyId);
 
-    /// Gives the proxy a new box and reinserts it (the tree stays tight). Throws core::Error on a
-    /// bad id or box; the tree is unchanged then.
+    /// Gives the proxy a new box and reinserts it (the tree stays tight). The search for its new
+    /// place starts at the lowest ancestor whose box holds the new one (a few levels up after a
+    /// small move), so a small move costs a few node visits instead of a search from the root.
+    /// Throws core::Error on a bad id or box; the tree is unchanged then.
     void moveProxy(int proxyId, const Aabb& aabb);
 
     /// Gives the proxy a new box without reinserting it: its ancestors grow in place to contain
@@ -185,8 +187,17 @@ private:
     int allocateNode();
     void freeNode(int index);
     void insertLeaf(int leaf);
+    // moveProxy()'s cheap path: reinserts the leaf below the lowest ancestor that holds the
+    // new box; false (nothing changed) when even the root does not.
+    bool reinsertNearby(int leaf, const Aabb& box);
+    // Refits from `index` up to the root and stops at the first unchanged node at or above
+    // `mustReach` (anywhere when it is kNullProxy). Nodes below `mustReach` may be rotated for
+    // area or balance, those above only where their children's heights are out of balance.
+    void refitUpward(int index, int mustReach);
     void removeLeaf(int leaf);
-    [[nodiscard]] int findBestSibling(const Aabb& box) const;
+    // The best sibling for a new leaf `box` in the subtree of `start` (the root, or a node whose
+    // box holds `box`).
+    [[nodiscard]] int findBestSibling(const Aabb& box, int start) const;
     [[nodiscard]] bool isDeferred(int index) const {
         const Node& node = nodes_[static_cast<std::size_t>(index)];
         return node.height == 0 && node.parent == kDeferredParent;
