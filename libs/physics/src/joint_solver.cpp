@@ -183,25 +183,31 @@ void storeJointReaction(Joint& j, std::span<const BodyState> states, float invH)
     j.reactionTorque = invH * torque;
 }
 
-void warmStartJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
+void warmStartJoints(std::span<Joint> joints, PointJointGroups& groups, std::span<const int> order,
                      std::span<BodyState> states) {
+    const bool octets = groups.lanes == 8;
     for (int k : order) {
-        if (k < 0) {
-            warmStartPointQuad(quads[static_cast<std::size_t>(~k)], states);
-        } else {
+        if (k >= 0) {
             warmStartJoint(joints[static_cast<std::size_t>(k)], states);
+        } else if (octets) {
+            warmStartPointOctet(groups.octets[static_cast<std::size_t>(~k)], states);
+        } else {
+            warmStartPointQuad(groups.quads[static_cast<std::size_t>(~k)], states);
         }
     }
 }
 
-void solveJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
+void solveJoints(std::span<Joint> joints, PointJointGroups& groups, std::span<const int> order,
                  std::span<BodyState> states, const JointStep& step, bool useBias) {
     const Softness soft = rigidSoftness(step, useBias);
+    const bool octets = groups.lanes == 8;
     for (int k : order) {
-        if (k < 0) {
-            solvePointQuad(quads[static_cast<std::size_t>(~k)], states, soft);
-        } else {
+        if (k >= 0) {
             solveJoint(joints[static_cast<std::size_t>(k)], states, step, useBias);
+        } else if (octets) {
+            solvePointOctet(groups.octets[static_cast<std::size_t>(~k)], states, soft);
+        } else {
+            solvePointQuad(groups.quads[static_cast<std::size_t>(~k)], states, soft);
         }
     }
 }

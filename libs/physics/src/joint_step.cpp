@@ -43,7 +43,7 @@ void World::Impl::prepareJoints(float dt, float h) {
     s.activeJoints.clear();
     s.activeJointLevels.clear();
     s.jointOrder.clear();
-    s.pointQuads.clear();
+    s.pointJoints.clear();
     s.jointBodies.clear();
     if (joints.empty()) {
         return;
@@ -145,10 +145,11 @@ void World::Impl::orderJoints() {
 void World::Impl::packJoints() {
     detail::Simulation& s = sim;
     s.jointOrder.clear();
-    s.pointQuads.clear();
+    s.pointJoints.clear();
+    s.pointJoints.lanes = detail::bestPointJointLanes();
     // Classic mode's position pass reads the joint slots: no quads there.
     detail::packJointPasses(joints, s.activeJoints, s.activeJointLevels, s.def.mode == SolverMode::SoftStep,
-                            s.pointQuads, s.jointOrder);
+                            s.pointJoints, s.jointOrder);
 }
 
 void World::Impl::assignJointBlocks() {
@@ -177,21 +178,22 @@ void World::Impl::assignJointBlocks() {
         s.jointSorted[to] = s.activeJointLevels[k];
     }
     s.blockJoints.clear();
-    s.pointQuads.clear();
+    s.pointJoints.clear();
+    s.pointJoints.lanes = detail::bestPointJointLanes();
     int first = 0;
     for (std::size_t b = 0; b < blocks; ++b) {
         const int end = s.blockJointStart[b + 1];
         const auto count = static_cast<std::size_t>(end - first);
         detail::packJointPasses(joints, std::span<const int>(s.jointScratch).subspan(static_cast<std::size_t>(first), count),
                                 std::span<const int>(s.jointSorted).subspan(static_cast<std::size_t>(first), count),
-                                true, s.pointQuads, s.blockJoints);
+                                true, s.pointJoints, s.blockJoints);
         first = end;
         s.blockJointStart[b + 1] = static_cast<int>(s.blockJoints.size());
     }
 }
 
 void World::Impl::storeJointReactions(float invH, bool wide) {
-    detail::storePointJointQuads(sim.pointQuads, joints, invH);
+    detail::storePointJointGroups(sim.pointJoints, joints, invH);
     for (int entry : wide ? sim.blockJoints : sim.jointOrder) {
         if (entry >= 0) {
             detail::storeJointReaction(joint(entry), sim.states, invH);

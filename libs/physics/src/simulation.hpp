@@ -169,13 +169,13 @@ struct Simulation {
     // side, in pass order (World::Impl::orderJoints(): by level, every body meeting its joints
     // in slot order) with their levels, and their sides' BodyState indices (-1: static or
     // asleep); last solve's, for the wide schedule's check; the scalar solvers' pass entries
-    // (jointOrder, packJointPasses(): slots, or quads of pointQuads); the wide solver's by
+    // (jointOrder, packJointPasses(): slots, or groups of pointJoints); the wide solver's by
     // block: block b's entries are blockJoints[blockJointStart[b] .. blockJointStart[b + 1]).
     // The rest is scratch.
     std::vector<int> activeJoints;
     std::vector<int> activeJointLevels;
     std::vector<int> jointOrder;
-    std::vector<PointJointQuad> pointQuads;
+    PointJointGroups pointJoints;
     std::vector<int> jointBodyLevel;
     std::vector<int> jointLevel;
     std::vector<int> jointLevelStart;

@@ -214,9 +214,9 @@ struct World::Impl {
     void prepareJoints(float dt, float h);
     // Puts the prepared joints in pass order (levels, see there; prepareJoints()).
     void orderJoints();
-    // The scalar solvers' pass entries (s.jointOrder, s.pointQuads; packJointPasses()).
+    // The scalar solvers' pass entries (s.jointOrder, s.pointJoints; packJointPasses()).
     void packJoints();
-    // The wide solver's pass entries by block (s.blockJointStart, s.blockJoints, s.pointQuads),
+    // The wide solver's pass entries by block (s.blockJointStart, s.blockJoints, s.pointJoints),
     // after scheduleWide().
     void assignJointBlocks();
     // The quads' impulses back to their joints, then the reactions of the active joints from
