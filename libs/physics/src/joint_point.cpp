@@ -106,6 +106,30 @@ void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, 
     }
 }
 
+void mapPointJointLanes(const PointJointGroups& groups, std::size_t jointCount, std::vector<int>& laneOf) {
+    laneOf.assign(jointCount, -1);
+    auto map = [&](const auto& list, int lanes) {
+        for (std::size_t g = 0; g < list.size(); ++g) {
+            for (int lane = 0; lane < lanes; ++lane) {
+                const int slot = list[g].slot[lane];
+                if (slot >= 0) {
+                    laneOf[static_cast<std::size_t>(slot)] = static_cast<int>(g) * lanes + lane;
+                }
+            }
+        }
+    };
+    map(groups.quads, 4);
+    map(groups.octets, 8);
+}
+
+void packPointJointLane(PointJointGroups& groups, int at, const Joint& j, int slot) {
+    if (groups.lanes == 8) {
+        packLane(groups.octets[static_cast<std::size_t>(at / 8)], at % 8, j, slot);
+    } else {
+        packLane(groups.quads[static_cast<std::size_t>(at / 4)], at % 4, j, slot);
+    }
+}
+
 void storePointJointGroups(const PointJointGroups& groups, std::span<Joint> joints, float invH) {
     storeGroups<4>(groups.quads, joints, invH);
     storeGroups<8>(groups.octets, joints, invH);

@@ -40,12 +40,20 @@ void World::Impl::wakeJointedBodies() {
 void World::Impl::prepareJoints(float dt, float h) {
     (void)dt;
     detail::Simulation& s = sim;
-    s.activeJoints.clear();
-    s.activeJointLevels.clear();
-    s.jointOrder.clear();
-    s.pointJoints.clear();
-    s.jointBodies.clear();
+    using Key = detail::Simulation::JointKey;
+    s.jointKeys.swap(s.lastJointKeys);
+    s.jointKeys.clear();
+    s.jointsReused = false;
+    auto reset = [&] {
+        s.activeJoints.clear();
+        s.activeJointLevels.clear();
+        s.jointOrder.clear();
+        s.pointJoints.clear();
+        s.jointBodies.clear();
+        s.jointLayout = detail::Simulation::JointLayout::None;
+    };
     if (joints.empty()) {
+        reset();
         return;
     }
     const detail::JointStep step{h, 1.0f / h, detail::makeSoftness(detail::kJointHertz, detail::kJointDampingRatio, h)};
@@ -67,6 +75,10 @@ void World::Impl::prepareJoints(float dt, float h) {
         v.stateIndex = k;
         return v;
     };
+    // Whether every joint so far matches last step's keys, and whether last step's groups can
+    // take their fields.
+    bool same = true;
+    const bool writeLanes = s.jointLayout != detail::Simulation::JointLayout::None;
     for (std::size_t ji = 0; ji < joints.size(); ++ji) {
         detail::Joint& j = joints[ji];
         if (!j.alive) {
@@ -86,8 +98,31 @@ void World::Impl::prepareJoints(float dt, float h) {
             continue; // asleep: keeps the reaction it fell asleep with
         }
         detail::prepareJoint(j, viewOf(a), viewOf(b), step);
-        s.activeJoints.push_back(static_cast<int>(ji));
-        s.jointBodies.push_back({j.indexA, j.indexB});
+        const Key key{static_cast<int>(ji), j.indexA, j.indexB, detail::isPointJoint(j) ? 1 : 0};
+        const std::size_t k = s.jointKeys.size();
+        if (same) {
+            const Key& last = k < s.lastJointKeys.size() ? s.lastJointKeys[k] : Key{};
+            same = last.slot == key.slot && last.indexA == key.indexA && last.indexB == key.indexB &&
+                   last.point == key.point;
+        }
+        // While this step matches the last one so far, the hinge's lane is where it was: its
+        // fields go there now, while the joint is in cache (if the layout is rebuilt after all,
+        // the packing copies them again).
+        if (same && writeLanes && key.point != 0 && ji < s.jointLane.size() && s.jointLane[ji] >= 0) {
+            detail::packPointJointLane(s.pointJoints, s.jointLane[ji], j, key.slot);
+        }
+        s.jointKeys.push_back(key);
+    }
+    if (same && !s.jointKeys.empty() && s.jointKeys.size() == s.lastJointKeys.size()) {
+        // The same joints, sides and kinds as last step: its levels and pass order hold.
+        s.jointBodies = s.lastJointBodies;
+        s.jointsReused = true;
+        return;
+    }
+    reset();
+    for (const Key& key : s.jointKeys) {
+        s.activeJoints.push_back(key.slot);
+        s.jointBodies.push_back({key.indexA, key.indexB});
     }
     orderJoints();
 }
@@ -144,16 +179,27 @@ void World::Impl::orderJoints() {
 
 void World::Impl::packJoints() {
     detail::Simulation& s = sim;
+    // Classic mode's position pass reads the joint slots: no groups there.
+    const bool groups = s.def.mode == SolverMode::SoftStep;
+    const auto layout = groups ? detail::Simulation::JointLayout::Scalar : detail::Simulation::JointLayout::ScalarNoGroups;
+    if (s.jointsReused && s.jointLayout == layout) {
+        return; // last step's entries and groups (prepareJoints() refreshed the lanes)
+    }
+    ++s.counters.jointRepacks;
     s.jointOrder.clear();
     s.pointJoints.clear();
     s.pointJoints.lanes = detail::bestPointJointLanes();
-    // Classic mode's position pass reads the joint slots: no quads there.
-    detail::packJointPasses(joints, s.activeJoints, s.activeJointLevels, s.def.mode == SolverMode::SoftStep,
-                            s.pointJoints, s.jointOrder);
+    detail::packJointPasses(joints, s.activeJoints, s.activeJointLevels, groups, s.pointJoints, s.jointOrder);
+    detail::mapPointJointLanes(s.pointJoints, joints.size(), s.jointLane);
+    s.jointLayout = layout;
 }
 
-void World::Impl::assignJointBlocks() {
+void World::Impl::assignJointBlocks(bool scheduleKept) {
     detail::Simulation& s = sim;
+    if (scheduleKept && s.jointsReused && s.jointLayout == detail::Simulation::JointLayout::Wide) {
+        return; // last step's blocks, entries and groups (prepareJoints() refreshed the lanes)
+    }
+    ++s.counters.jointRepacks;
     const std::size_t blocks = s.blockBodyStart.size() - 1;
     const std::size_t n = s.activeJoints.size();
     s.blockJointStart.assign(blocks + 1, 0);
@@ -190,6 +236,8 @@ void World::Impl::assignJointBlocks() {
         first = end;
         s.blockJointStart[b + 1] = static_cast<int>(s.blockJoints.size());
     }
+    detail::mapPointJointLanes(s.pointJoints, joints.size(), s.jointLane);
+    s.jointLayout = detail::Simulation::JointLayout::Wide;
 }
 
 void World::Impl::storeJointReactions(float invH, bool wide) {

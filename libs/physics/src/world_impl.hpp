@@ -217,8 +217,8 @@ struct World::Impl {
     // The scalar solvers' pass entries (s.jointOrder, s.pointJoints; packJointPasses()).
     void packJoints();
     // The wide solver's pass entries by block (s.blockJointStart, s.blockJoints, s.pointJoints),
-    // after scheduleWide().
-    void assignJointBlocks();
+    // after scheduleWide(); scheduleKept: scheduleWide() kept last step's blocks.
+    void assignJointBlocks(bool scheduleKept);
     // The quads' impulses back to their joints, then the reactions of the active joints from
     // their impulses (invH: 1 / the sub-step).
     // wide: the step's entries are the wide solver's (s.blockJoints), else s.jointOrder.

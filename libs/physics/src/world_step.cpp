@@ -349,7 +349,7 @@ void World::Impl::solve(float dt) {
             scheduleWide(constraintCount);
         }
         if (!s.activeJoints.empty()) {
-            assignJointBlocks();
+            assignJointBlocks(same);
         }
     }
     s.wideScheduleValid = wide;
