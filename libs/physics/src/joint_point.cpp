@@ -4,14 +4,16 @@
 #include "joint_solver.hpp"
 #include "wide_lanes.hpp"
 
+#include <cstddef>
 #include <cstring>
+#include <iterator>
 
 namespace e2d::physics::detail {
 
 namespace {
 
 template <int N>
-void packLane(PointJointLanes<N>& q, int lane, const Joint& j, int slot) {
+__attribute__((always_inline)) inline void packLane(PointJointLanes<N>& q, int lane, const Joint& j, int slot) {
     q.indexA[lane] = j.indexA;
     q.indexB[lane] = j.indexB;
     q.slot[lane] = slot;
@@ -80,7 +82,8 @@ void packPasses(std::span<const Joint> joints, std::span<const int> slots, std::
 
 template <int N>
 void storeGroups(std::span<const PointJointLanes<N>> groups, std::span<Joint> joints, float invH) {
-    for (const PointJointLanes<N>& q : groups) {
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        const PointJointLanes<N>& q = groups[g];
         for (int lane = 0; lane < N; ++lane) {
             if (q.slot[lane] >= 0) {
                 Joint& j = joints[static_cast<std::size_t>(q.slot[lane])];
@@ -106,28 +109,19 @@ void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, 
     }
 }
 
-void mapPointJointLanes(const PointJointGroups& groups, std::size_t jointCount, std::vector<int>& laneOf) {
-    laneOf.assign(jointCount, -1);
-    auto map = [&](const auto& list, int lanes) {
+void refreshPointJointGroups(PointJointGroups& groups, std::span<const Joint> joints) {
+    auto refresh = [&](auto& list) {
         for (std::size_t g = 0; g < list.size(); ++g) {
-            for (int lane = 0; lane < lanes; ++lane) {
-                const int slot = list[g].slot[lane];
-                if (slot >= 0) {
-                    laneOf[static_cast<std::size_t>(slot)] = static_cast<int>(g) * lanes + lane;
+            auto& q = list[g];
+            for (int lane = 0; lane < static_cast<int>(std::size(q.slot)); ++lane) {
+                if (q.slot[lane] >= 0) {
+                    packLane(q, lane, joints[static_cast<std::size_t>(q.slot[lane])], q.slot[lane]);
                 }
             }
         }
     };
-    map(groups.quads, 4);
-    map(groups.octets, 8);
-}
-
-void packPointJointLane(PointJointGroups& groups, int at, const Joint& j, int slot) {
-    if (groups.lanes == 8) {
-        packLane(groups.octets[static_cast<std::size_t>(at / 8)], at % 8, j, slot);
-    } else {
-        packLane(groups.quads[static_cast<std::size_t>(at / 4)], at % 4, j, slot);
-    }
+    refresh(groups.quads);
+    refresh(groups.octets);
 }
 
 void storePointJointGroups(const PointJointGroups& groups, std::span<Joint> joints, float invH) {

@@ -165,11 +165,9 @@ int bestPointJointLanes();
 // same results as slot order.
 void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
                      bool quadsAllowed, PointJointGroups& groups, std::vector<int>& entries);
-// Where each joint slot sits in `groups`: laneOf[slot] = group * groups.lanes + lane, -1 for
-// a joint in no group (laneOf sized to jointCount).
-void mapPointJointLanes(const PointJointGroups& groups, std::size_t jointCount, std::vector<int>& laneOf);
-// Copies a plain hinge's prepared fields into its lane (`at` as mapPointJointLanes() gives).
-void packPointJointLane(PointJointGroups& groups, int at, const Joint& j, int slot);
+// Copies every lane's prepared fields again from its joint: the groups' layout kept, the
+// joints prepared anew.
+void refreshPointJointGroups(PointJointGroups& groups, std::span<const Joint> joints);
 // The groups' accumulated impulses back to their joints, and their reactions as
 // storeJointReaction() gives a revolute joint's (invH: 1 / the sub-step).
 void storePointJointGroups(const PointJointGroups& groups, std::span<Joint> joints, float invH);

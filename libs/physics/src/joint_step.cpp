@@ -4,6 +4,7 @@
 #include "world_impl.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 namespace e2d::physics {
 
@@ -75,10 +76,6 @@ void World::Impl::prepareJoints(float dt, float h) {
         v.stateIndex = k;
         return v;
     };
-    // Whether every joint so far matches last step's keys, and whether last step's groups can
-    // take their fields.
-    bool same = true;
-    const bool writeLanes = s.jointLayout != detail::Simulation::JointLayout::None;
     for (std::size_t ji = 0; ji < joints.size(); ++ji) {
         detail::Joint& j = joints[ji];
         if (!j.alive) {
@@ -98,22 +95,11 @@ void World::Impl::prepareJoints(float dt, float h) {
             continue; // asleep: keeps the reaction it fell asleep with
         }
         detail::prepareJoint(j, viewOf(a), viewOf(b), step);
-        const Key key{static_cast<int>(ji), j.indexA, j.indexB, detail::isPointJoint(j) ? 1 : 0};
-        const std::size_t k = s.jointKeys.size();
-        if (same) {
-            const Key& last = k < s.lastJointKeys.size() ? s.lastJointKeys[k] : Key{};
-            same = last.slot == key.slot && last.indexA == key.indexA && last.indexB == key.indexB &&
-                   last.point == key.point;
-        }
-        // While this step matches the last one so far, the hinge's lane is where it was: its
-        // fields go there now, while the joint is in cache (if the layout is rebuilt after all,
-        // the packing copies them again).
-        if (same && writeLanes && key.point != 0 && ji < s.jointLane.size() && s.jointLane[ji] >= 0) {
-            detail::packPointJointLane(s.pointJoints, s.jointLane[ji], j, key.slot);
-        }
-        s.jointKeys.push_back(key);
+        s.jointKeys.push_back({static_cast<int>(ji), j.indexA, j.indexB, detail::isPointJoint(j) ? 1 : 0});
     }
-    if (same && !s.jointKeys.empty() && s.jointKeys.size() == s.lastJointKeys.size()) {
+    static_assert(sizeof(Key) == 4 * sizeof(int), "JointKey compares as ints");
+    if (!s.jointKeys.empty() && s.jointKeys.size() == s.lastJointKeys.size() &&
+        std::memcmp(s.jointKeys.data(), s.lastJointKeys.data(), s.jointKeys.size() * sizeof(Key)) == 0) {
         // The same joints, sides and kinds as last step: its levels and pass order hold.
         s.jointBodies = s.lastJointBodies;
         s.jointsReused = true;
@@ -183,21 +169,25 @@ void World::Impl::packJoints() {
     const bool groups = s.def.mode == SolverMode::SoftStep;
     const auto layout = groups ? detail::Simulation::JointLayout::Scalar : detail::Simulation::JointLayout::ScalarNoGroups;
     if (s.jointsReused && s.jointLayout == layout) {
-        return; // last step's entries and groups (prepareJoints() refreshed the lanes)
+        // Last step's entries and groups, the lanes' fields from the joints prepared anew.
+        detail::refreshPointJointGroups(s.pointJoints, joints);
+        return;
     }
     ++s.counters.jointRepacks;
     s.jointOrder.clear();
     s.pointJoints.clear();
     s.pointJoints.lanes = detail::bestPointJointLanes();
     detail::packJointPasses(joints, s.activeJoints, s.activeJointLevels, groups, s.pointJoints, s.jointOrder);
-    detail::mapPointJointLanes(s.pointJoints, joints.size(), s.jointLane);
     s.jointLayout = layout;
 }
 
 void World::Impl::assignJointBlocks(bool scheduleKept) {
     detail::Simulation& s = sim;
     if (scheduleKept && s.jointsReused && s.jointLayout == detail::Simulation::JointLayout::Wide) {
-        return; // last step's blocks, entries and groups (prepareJoints() refreshed the lanes)
+        // Last step's blocks, entries and groups, the lanes' fields from the joints prepared
+        // anew.
+        detail::refreshPointJointGroups(s.pointJoints, joints);
+        return;
     }
     ++s.counters.jointRepacks;
     const std::size_t blocks = s.blockBodyStart.size() - 1;
@@ -236,7 +226,6 @@ void World::Impl::assignJointBlocks(bool scheduleKept) {
         first = end;
         s.blockJointStart[b + 1] = static_cast<int>(s.blockJoints.size());
     }
-    detail::mapPointJointLanes(s.pointJoints, joints.size(), s.jointLane);
     s.jointLayout = detail::Simulation::JointLayout::Wide;
 }
 

@@ -189,10 +189,8 @@ struct Simulation {
     // What decides the joints' order and groups (World::Impl::prepareJoints()): each prepared
     // joint's slot, its sides' BodyState indices and whether it is a plain hinge, in slot
     // order; this step's and last step's. While they are equal, the levels, the pass order
-    // and the groups' layout are last step's (jointsReused), and prepareJoints() writes the
-    // plain hinges' prepared fields straight into their lanes: jointLane[slot] is the joint's
-    // group * lanes + lane in pointJoints (-1: not in a group), valid while jointLayout says
-    // which packing built it (JointLayout).
+    // and the groups' layout are last step's (jointsReused; jointLayout: which packing built
+    // them) and only the lanes' fields are copied anew.
     struct JointKey {
         int slot = -1;
         int indexA = -1;
@@ -202,7 +200,6 @@ struct Simulation {
     enum class JointLayout { None, Scalar, ScalarNoGroups, Wide };
     std::vector<JointKey> jointKeys;
     std::vector<JointKey> lastJointKeys;
-    std::vector<int> jointLane;
     JointLayout jointLayout = JointLayout::None;
     bool jointsReused = false;
     std::vector<int> islandParent; // union-find over the awake arrays
