@@ -33,9 +33,8 @@ __attribute__((always_inline)) inline void packLane(PointJointLanes<N>& q, int l
     q.impulseY[lane] = j.linearImpulse.y;
 }
 
-template <int N>
 void packPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
-                bool quadsAllowed, std::vector<PointJointLanes<N>>& groups, std::vector<int>& entries) {
+                bool quadsAllowed, PointJointGroups& groups, std::vector<int>& entries) {
     const std::size_t n = slots.size();
     std::size_t first = 0;
     while (first < n) {
@@ -43,29 +42,44 @@ void packPasses(std::span<const Joint> joints, std::span<const int> slots, std::
         while (end < n && levels[end] == levels[first]) {
             ++end;
         }
-        // The level's plain hinges N to a group, then its other joints. A lone hinge left
-        // over (a chain's levels hold one joint each) is cheaper solved alone than in a group
-        // of padding.
+        // The level's plain hinges in groups, then its other joints: eights while five or more
+        // are left (with eight lanes), then fours. A lone hinge left over (a chain's levels
+        // hold one joint each) is cheaper solved alone than in a group of padding.
         int points = 0;
         for (std::size_t k = first; k < end && quadsAllowed; ++k) {
             points += isPointJoint(joints[static_cast<std::size_t>(slots[k])]) ? 1 : 0;
         }
-        const int packed = points % N == 1 ? points - 1 : points;
-        int lane = N;
-        int taken = 0;
-        for (std::size_t k = first; k < end && taken < packed; ++k) {
+        int left = points;
+        int lane = 0;
+        int width = 0; // the open group's
+        int packed = 0;
+        for (std::size_t k = first; k < end && left > 0; ++k) {
             const int s = slots[k];
             const Joint& j = joints[static_cast<std::size_t>(s)];
             if (!isPointJoint(j)) {
                 continue;
             }
-            ++taken;
-            if (lane == N) {
-                entries.push_back(~static_cast<int>(groups.size()));
-                groups.emplace_back();
+            if (lane == width) {
+                if (left == 1) {
+                    break;
+                }
+                width = groups.lanes == 8 && left >= 5 ? 8 : 4;
                 lane = 0;
+                if (width == 8) {
+                    entries.push_back(PointJointGroups::octetEntry(groups.octets.size()));
+                    groups.octets.emplace_back();
+                } else {
+                    entries.push_back(PointJointGroups::quadEntry(groups.quads.size()));
+                    groups.quads.emplace_back();
+                }
             }
-            packLane(groups.back(), lane++, j, s);
+            if (width == 8) {
+                packLane(groups.octets.back(), lane++, j, s);
+            } else {
+                packLane(groups.quads.back(), lane++, j, s);
+            }
+            --left;
+            ++packed;
         }
         int seen = 0;
         // A level of plain hinges only, all in groups (a joint grid's), has no other entries.
@@ -102,11 +116,7 @@ void storeGroups(std::span<const PointJointLanes<N>> groups, std::span<Joint> jo
 
 void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
                      bool quadsAllowed, PointJointGroups& groups, std::vector<int>& entries) {
-    if (groups.lanes == 8) {
-        packPasses(joints, slots, levels, quadsAllowed, groups.octets, entries);
-    } else {
-        packPasses(joints, slots, levels, quadsAllowed, groups.quads, entries);
-    }
+    packPasses(joints, slots, levels, quadsAllowed, groups, entries);
 }
 
 void refreshPointJointGroups(PointJointGroups& groups, std::span<const Joint> joints) {

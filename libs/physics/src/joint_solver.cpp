@@ -185,14 +185,13 @@ void storeJointReaction(Joint& j, std::span<const BodyState> states, float invH)
 
 void warmStartJoints(std::span<Joint> joints, PointJointGroups& groups, std::span<const int> order,
                      std::span<BodyState> states) {
-    const bool octets = groups.lanes == 8;
     for (int k : order) {
         if (k >= 0) {
             warmStartJoint(joints[static_cast<std::size_t>(k)], states);
-        } else if (octets) {
-            warmStartPointOctet(groups.octets[static_cast<std::size_t>(~k)], states);
+        } else if ((~k & 1) != 0) {
+            warmStartPointOctet(groups.octets[static_cast<std::size_t>(~k >> 1)], states);
         } else {
-            warmStartPointQuad(groups.quads[static_cast<std::size_t>(~k)], states);
+            warmStartPointQuad(groups.quads[static_cast<std::size_t>(~k >> 1)], states);
         }
     }
 }
@@ -200,14 +199,13 @@ void warmStartJoints(std::span<Joint> joints, PointJointGroups& groups, std::spa
 void solveJoints(std::span<Joint> joints, PointJointGroups& groups, std::span<const int> order,
                  std::span<BodyState> states, const JointStep& step, bool useBias) {
     const Softness soft = rigidSoftness(step, useBias);
-    const bool octets = groups.lanes == 8;
     for (int k : order) {
         if (k >= 0) {
             solveJoint(joints[static_cast<std::size_t>(k)], states, step, useBias);
-        } else if (octets) {
-            solvePointOctet(groups.octets[static_cast<std::size_t>(~k)], states, soft);
+        } else if ((~k & 1) != 0) {
+            solvePointOctet(groups.octets[static_cast<std::size_t>(~k >> 1)], states, soft);
         } else {
-            solvePointQuad(groups.quads[static_cast<std::size_t>(~k)], states, soft);
+            solvePointQuad(groups.quads[static_cast<std::size_t>(~k >> 1)], states, soft);
         }
     }
 }

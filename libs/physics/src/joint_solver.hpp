@@ -138,19 +138,21 @@ struct alignas(64) PointJointLanes {
 using PointJointQuad = PointJointLanes<4>;
 using PointJointOctet = PointJointLanes<8>;
 
-// The step's plain hinges in groups of `lanes`: quads (SSE2, or scalar code where there is
-// no SIMD) or octets (AVX2, x86-64 CPUs that have it). The width is the packer's choice
-// (bestPointJointLanes()); pass entries k < 0 name the group ~k of that width's list.
+// The step's plain hinges in groups: quads (SSE2, or scalar code where there is no SIMD) and,
+// where `lanes` is 8 (bestPointJointLanes(): x86-64 CPUs with AVX2), octets too. A pass entry
+// k < 0 names a group: ~k even the quad ~k / 2, odd the octet ~k / 2.
 struct PointJointGroups {
-    int lanes = 4;
-    std::vector<PointJointQuad> quads;   // lanes == 4
-    std::vector<PointJointOctet> octets; // lanes == 8
+    int lanes = 4; // the widest group the packer makes: 4 or 8
+    std::vector<PointJointQuad> quads;
+    std::vector<PointJointOctet> octets;
 
     void clear() {
         quads.clear();
         octets.clear();
     }
-    std::size_t size() const { return lanes == 8 ? octets.size() : quads.size(); }
+    std::size_t size() const { return quads.size() + octets.size(); }
+    static int quadEntry(std::size_t index) { return ~(2 * static_cast<int>(index)); }
+    static int octetEntry(std::size_t index) { return ~(2 * static_cast<int>(index) + 1); }
 };
 
 // 8 on x86-64 CPUs with AVX2, 4 elsewhere.
@@ -158,11 +160,11 @@ int bestPointJointLanes();
 
 // The passes' order from the prepared joints joints[slots[k]] in order, levels[k] their
 // levels (ascending; joints of one level share no moving body): pass entries appended to
-// `entries`, k >= 0 the joint slot k, k < 0 the group ~k of `groups`. With `quadsAllowed`,
-// the plain hinges of each level are packed groups.lanes at a time into groups appended to
-// `groups` (the last one of a level padded; a single one left over stays a slot) and go
-// before the level's other joints; a level's joints share no body, so this order gives the
-// same results as slot order.
+// `entries`, k >= 0 the joint slot k, k < 0 a group of `groups` (PointJointGroups). With
+// `quadsAllowed`, the plain hinges of each level are packed into groups appended to `groups`
+// (eights while five or more are left and groups.lanes is 8, then fours; the last group of a
+// level padded; a single hinge left over stays a slot) and go before the level's other
+// joints; a level's joints share no body, so this order gives the same results as slot order.
 void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
                      bool quadsAllowed, PointJointGroups& groups, std::vector<int>& entries);
 // Copies every lane's prepared fields again from its joint: the groups' layout kept, the

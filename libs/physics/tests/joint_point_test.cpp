@@ -118,12 +118,13 @@ void runPasses(Scene& s, PointJointGroups& groups, std::span<const int> order) {
     }
 }
 
-// The slots of group `index`'s lanes (-1: padding).
-std::vector<int> groupSlots(const PointJointGroups& groups, std::size_t index) {
-    if (groups.lanes == 8) {
-        return {std::begin(groups.octets[index].slot), std::end(groups.octets[index].slot)};
+// The slots of the lanes of the group that pass entry `entry` (< 0) names (-1: padding).
+std::vector<int> groupSlots(const PointJointGroups& groups, int entry) {
+    const auto index = static_cast<std::size_t>(~entry >> 1);
+    if ((~entry & 1) != 0) {
+        return {std::begin(groups.octets.at(index).slot), std::end(groups.octets.at(index).slot)};
     }
-    return {std::begin(groups.quads[index].slot), std::end(groups.quads[index].slot)};
+    return {std::begin(groups.quads.at(index).slot), std::end(groups.quads.at(index).slot)};
 }
 
 // Four lanes everywhere, eight where this CPU has them (bestPointJointLanes()).
@@ -155,7 +156,9 @@ void matchSlotOrder(int lanes) {
         groups.lanes = lanes;
         std::vector<int> entries;
         packJointPasses(packed.joints, slots, levels, true, groups, entries);
-        EXPECT_TRUE(lanes == 8 ? groups.quads.empty() : groups.octets.empty());
+        // Eight lanes: octets, and quads for levels' last two to four hinges.
+        EXPECT_FALSE(groups.quads.empty());
+        EXPECT_EQ(groups.octets.empty(), lanes == 4);
         // Most joints went into groups; every joint is in exactly one entry or lane.
         std::vector<int> seen(packed.joints.size(), 0);
         int slotHinges = 0; // a level's lone leftover hinge stays a slot
@@ -165,7 +168,7 @@ void matchSlotOrder(int lanes) {
                 ++seen[static_cast<std::size_t>(e)];
                 slotHinges += isPointJoint(packed.joints[static_cast<std::size_t>(e)]) ? 1 : 0;
             } else {
-                for (int slot : groupSlots(groups, static_cast<std::size_t>(~e))) {
+                for (int slot : groupSlots(groups, e)) {
                     if (slot >= 0) {
                         ++seen[static_cast<std::size_t>(slot)];
                         inQuad[static_cast<std::size_t>(slot)] = true;
@@ -215,6 +218,54 @@ void matchSlotOrder(int lanes) {
 TEST(PointJointQuads, MatchTheRevoluteJointsPassesInSlotOrderBitForBit) {
     for (int lanes : laneWidths()) {
         matchSlotOrder(lanes);
+    }
+}
+
+// A level of n plain hinges goes into eights while five or more are left (eight lanes), then
+// fours; a lone one left over stays a slot.
+TEST(PointJointQuads, ALevelsHingesFillEightsThenFoursAndLeaveALoneOneAlone) {
+    struct Expected {
+        int octets, quads, slots;
+    };
+    for (int lanes : {4, 8}) {
+        for (int n = 1; n <= 21; ++n) {
+            SCOPED_TRACE(testing::Message() << lanes << " lanes, " << n << " hinges");
+            Scene s;
+            s.states.resize(static_cast<std::size_t>(2 * n));
+            for (int k = 0; k < n; ++k) {
+                Joint j;
+                j.type = JointType::Revolute;
+                j.indexA = 2 * k;
+                j.indexB = 2 * k + 1;
+                s.joints.push_back(j);
+            }
+            std::vector<int> slots;
+            std::vector<int> levels;
+            levelOrder(s, slots, levels);
+            ASSERT_EQ(levels.back(), 0); // one level: the hinges share no body
+            PointJointGroups groups;
+            groups.lanes = lanes;
+            std::vector<int> entries;
+            packJointPasses(s.joints, slots, levels, true, groups, entries);
+            // From first principles: eights while >= 5 are left (the last one padded), then
+            // fours while >= 2 are left, a last single one alone.
+            Expected want{0, 0, 0};
+            int left = n;
+            while (lanes == 8 && left >= 5) {
+                ++want.octets;
+                left -= std::min(left, 8);
+            }
+            while (left >= 2) {
+                ++want.quads;
+                left -= std::min(left, 4);
+            }
+            want.slots = left;
+            EXPECT_EQ(static_cast<int>(groups.octets.size()), want.octets);
+            EXPECT_EQ(static_cast<int>(groups.quads.size()), want.quads);
+            EXPECT_EQ(static_cast<int>(std::count_if(entries.begin(), entries.end(), [](int e) { return e >= 0; })),
+                      want.slots);
+            EXPECT_EQ(entries.size(), groups.size() + static_cast<std::size_t>(want.slots));
+        }
     }
 }
 
