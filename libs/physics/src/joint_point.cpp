@@ -12,11 +12,10 @@ namespace e2d::physics::detail {
 
 namespace {
 
+// A lane's prepared fields: the joint's first cache line only (the layout's indices and slot
+// stay as packed).
 template <int N>
-__attribute__((always_inline)) inline void packLane(PointJointLanes<N>& q, int lane, const Joint& j, int slot) {
-    q.indexA[lane] = j.indexA;
-    q.indexB[lane] = j.indexB;
-    q.slot[lane] = slot;
+__attribute__((always_inline)) inline void refreshLane(PointJointLanes<N>& q, int lane, const Joint& j) {
     q.invInertiaA[lane] = j.invInertiaA;
     q.invInertiaB[lane] = j.invInertiaB;
     q.invMassAx[lane] = j.invMassA.x;
@@ -31,6 +30,14 @@ __attribute__((always_inline)) inline void packLane(PointJointLanes<N>& q, int l
     q.deltaCenterY[lane] = j.deltaCenter.y;
     q.impulseX[lane] = j.linearImpulse.x;
     q.impulseY[lane] = j.linearImpulse.y;
+}
+
+template <int N>
+void packLane(PointJointLanes<N>& q, int lane, const Joint& j, int slot) {
+    q.indexA[lane] = j.indexA;
+    q.indexB[lane] = j.indexB;
+    q.slot[lane] = slot;
+    refreshLane(q, lane, j);
 }
 
 void packPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
@@ -125,7 +132,7 @@ void refreshPointJointGroups(PointJointGroups& groups, std::span<const Joint> jo
             auto& q = list[g];
             for (int lane = 0; lane < static_cast<int>(std::size(q.slot)); ++lane) {
                 if (q.slot[lane] >= 0) {
-                    packLane(q, lane, joints[static_cast<std::size_t>(q.slot[lane])], q.slot[lane]);
+                    refreshLane(q, lane, joints[static_cast<std::size_t>(q.slot[lane])]);
                 }
             }
         }
