@@ -25,11 +25,25 @@ namespace e2d::audio::test {
 /// when it first initialises, so every fixture calls this before touching OpenAL.
 inline void useNullDriver() { ::setenv("ALSOFT_DRIVERS", "null", 0); }
 
-/// A fresh folder per test process for the sound files the tests write.
-inline std::filesystem::path tempDir() {
-    auto dir = std::filesystem::temp_directory_path() / ("e2d_audio_test_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-    return dir;
+/// A fresh folder per test process for the sound files the tests write, removed with
+/// everything in it when the process ends (ctest runs each test in a process of its own, so
+/// thousands of runs used to leave thousands of folders behind).
+inline const std::filesystem::path& tempDir() {
+    struct Owned {
+        std::filesystem::path dir;
+        Owned()
+            : dir(std::filesystem::temp_directory_path() / ("e2d_audio_test_" + std::to_string(::getpid()))) {
+            std::filesystem::create_directories(dir);
+        }
+        Owned(const Owned&) = delete;
+        Owned& operator=(const Owned&) = delete;
+        ~Owned() {
+            std::error_code ignored;
+            std::filesystem::remove_all(dir, ignored);
+        }
+    };
+    static const Owned owned;
+    return owned.dir;
 }
 
 /// `seconds` of a sine wave of `frequency` Hz and `amplitude` at `rate` Hz; stereo gets the same

@@ -23,17 +23,6 @@ using namespace test;
 
 constexpr double kFrame = 0.01;
 
-class SetupScene : public core::Scene {
-public:
-    explicit SetupScene(std::function<void(core::Scene&)> setup) : setup_(std::move(setup)) {}
-
-protected:
-    void onInitialize() override { setup_(*this); }
-
-private:
-    std::function<void(core::Scene&)> setup_;
-};
-
 MixerDef loopbackDef(core::Logger& logger) {
     useNullDriver();
     MixerDef def;
@@ -48,8 +37,8 @@ MixerDef loopbackDef(core::Logger& logger) {
 class AudioComponents : public ::testing::Test {
 protected:
     void start(std::function<void(core::Scene&)> setup, bool withSystem = true) {
-        registry.add("Test", [setup] { return std::make_unique<SetupScene>(setup); });
-        registry.add("Empty", [] { return std::make_unique<SetupScene>([](core::Scene&) {}); });
+        registry.add("Test", core::SceneFunctions{.initialize = setup});
+        registry.add("Empty", core::SceneFunctions{});
         if (withSystem) {
             director.addSystem(audio);
         }

@@ -21,6 +21,10 @@ void SceneRegistry::add(std::string name, Factory factory) {
     factories_.emplace(std::move(name), std::move(factory));
 }
 
+void SceneRegistry::add(std::string name, SceneFunctions functions) {
+    add(std::move(name), [functions = std::move(functions)] { return std::make_unique<FunctionScene>(functions); });
+}
+
 std::unique_ptr<Scene> SceneRegistry::create(std::string_view name) const {
     const auto it = factories_.find(name);
     return it != factories_.end() ? it->second() : nullptr;

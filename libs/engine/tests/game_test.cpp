@@ -68,31 +68,13 @@ std::filesystem::path writeConfig(const std::string& first, const std::string& e
 }
 
 /// A scene running `setup` at initialisation and `each` every frame (update).
-class FnScene : public core::Scene {
-public:
-    FnScene(std::function<void(core::Scene&)> setup, std::function<void(core::Scene&)> each)
-        : setup_(std::move(setup)), each_(std::move(each)) {}
-
-protected:
-    void onInitialize() override {
-        if (setup_) {
-            setup_(*this);
-        }
-    }
-    void update(double) override {
-        if (each_) {
-            each_(*this);
-        }
-    }
-
-private:
-    std::function<void(core::Scene&)> setup_;
-    std::function<void(core::Scene&)> each_;
-};
-
 void addScene(Game& game, const std::string& name, std::function<void(core::Scene&)> setup,
               std::function<void(core::Scene&)> each = {}) {
-    game.scenes().add(name, [setup, each] { return std::make_unique<FnScene>(setup, each); });
+    core::SceneFunctions functions{.initialize = std::move(setup)};
+    if (each) {
+        functions.update = [each = std::move(each)](core::Scene& scene, double) { each(scene); };
+    }
+    game.scenes().add(name, std::move(functions));
 }
 
 struct GameRun {
@@ -265,7 +247,7 @@ TEST(Game, BadConfigurationExitsWith2NamingFileLineAndKey) {
     EXPECT_EQ(missing.code, 2);
     EXPECT_EQ(missing.count("none.txt: cannot read the configuration file"), 1) << missing.all();
 
-    game.scenes().add("B", [] { return std::make_unique<FnScene>(nullptr, nullptr); });
+    game.scenes().add("B", core::SceneFunctions{});
     const GameRun unknown = run(game, {"--config", writeConfig("Nope").string(), "--frames", "1"});
     EXPECT_EQ(unknown.code, 2);
     EXPECT_EQ(unknown.count("firstScene: no scene is registered as 'Nope' (registered: A, B)"), 1) << unknown.all();

@@ -282,7 +282,8 @@ JointId World::createJoint(const JointDef& def) {
     made.bodyB = bodyB;
     const detail::Body& a = w.body(bodyA);
     const detail::Body& b = w.body(bodyB);
-    made.angle = detail::wrapAngle(detail::relativeAngle(a.transform.q, b.transform.q) - made.referenceAngle);
+    made.angleRotation = invMulRot(a.transform.q, b.transform.q);
+    made.angle = detail::wrapAngle(made.angleRotation.angle() - made.referenceAngle);
     if (made.type == JointType::Motor) {
         made.localAnchorB = {0.0f, 0.0f};
     }

@@ -41,8 +41,13 @@ void prepareJoint(Joint& j, const JointBodyView& a, const JointBodyView& b, cons
     const float angularK = a.invInertia + b.invInertia;
     j.angularMass = inverseOrZero(angularK);
     // The joint angle at the step start (a revolute joint's is followed through whole turns
-    // below, from the same relative angle).
-    const float relative = wrapAngle(relativeAngle(a.q, b.q) - j.referenceAngle);
+    // below, from the same relative angle). A plain hinge reads no angle: while it has turned
+    // less than kAngleFollowCos from where its angle was last followed, the angle waits (no
+    // atan2f).
+    const Rot rotation = invMulRot(a.q, b.q);
+    const bool follow = !isPointJoint(j) ||
+                        rotation.c * j.angleRotation.c + rotation.s * j.angleRotation.s < kAngleFollowCos;
+    const float relative = follow ? wrapAngle(rotation.angle() - j.referenceAngle) : j.angle;
     j.angle0 = relative;
     if (!j.enableMotor) {
         j.motorImpulse = 0.0f;
@@ -85,8 +90,12 @@ void prepareJoint(Joint& j, const JointBodyView& a, const JointBodyView& b, cons
         }
         break;
     case JointType::Revolute: {
-        // Followed through whole turns: the turn since the last step is below half a turn.
-        j.angle += wrapAngle(relative - j.angle);
+        // Followed through whole turns: the turn since it was last followed is below half a
+        // turn.
+        if (follow) {
+            j.angle += wrapAngle(relative - j.angle);
+            j.angleRotation = rotation;
+        }
         j.angle0 = j.angle;
         j.axialMass = j.angularMass;
         j.springSoftness = springOf(j.hertz, j.dampingRatio, step.h);

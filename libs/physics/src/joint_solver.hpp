@@ -89,8 +89,11 @@ struct alignas(64) Joint {
     float referenceAngle = 0.0f; // motor: angularOffset
     float dampingRatio = 0.0f;
     float angularDampingRatio = 0.0f;
-    // The joint angle at the last prepare, followed through whole turns (revolute).
+    // The joint angle, followed through whole turns (revolute), as it was when B's rotation
+    // relative to A was `angleRotation` (see prepareJoint(): a plain hinge follows it only
+    // when it has turned more than kAngleFollowTurn from there).
     float angle = 0.0f;
+    Rot angleRotation{};
     Vec2 reactionForce{0.0f, 0.0f};
     float reactionTorque = 0.0f;
 };
@@ -193,6 +196,13 @@ struct JointBodyView {
 
 // The angle of rotation b relative to a, radians in [-pi, pi].
 inline float relativeAngle(Rot a, Rot b) { return invMulRot(a, b).angle(); }
+
+// A plain hinge (no spring, motor or limit reads its angle) follows its angle through whole
+// turns only once its bodies' relative rotation has turned more than this from where it was
+// last followed (cosine of 45 degrees): an atan2f every few steps instead of every step. The
+// angle stays right as long as a joint turns less than 135 degrees in one step (the other
+// joints, and jointValue(), assume half a turn).
+inline constexpr float kAngleFollowCos = 0.70710678f;
 
 // x wrapped into [-pi, pi]. Within half a turn x is its own remainder, bit for bit, so the
 // common case (a joint angle that has not wrapped) skips the library call.

@@ -15,8 +15,6 @@
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
-#include "setup_scene.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -43,8 +41,6 @@ public:
     std::optional<core::ContactInfo> info;
 };
 
-using physics::test::SetupScene;
-
 // What one run reads back, in its own world units.
 struct Outcome {
     std::vector<glm::vec3> poses; // x, y, angle of box, ball and pendulum after every step
@@ -70,39 +66,37 @@ Outcome simulate(float s, int steps) {
     core::GameObject* ball = nullptr;
     core::GameObject* bob = nullptr;
     FirstContact* contact = nullptr;
-    registry.add("Scaled", [&] {
-        return std::make_unique<SetupScene>([&](core::Scene& scene) {
-            core::GameObject& ground = scene.createGameObject();
-            ground.setPosition(glm::vec2{0.0f, -1.0f * s});
-            ground.addComponent<Collider>(physics::makeBox(20.0f * s, 1.0f * s));
+    registry.add("Scaled", core::SceneFunctions{.initialize = [&](core::Scene& scene) {
+        core::GameObject& ground = scene.createGameObject();
+        ground.setPosition(glm::vec2{0.0f, -1.0f * s});
+        ground.addComponent<Collider>(physics::makeBox(20.0f * s, 1.0f * s));
 
-            box = &scene.createGameObject();
-            box->setPosition(glm::vec2{0.5f * s, 3.0f * s});
-            box->setOrientation(0.25f);
-            physics::RigidbodyDef boxDef;
-            boxDef.linearVelocity = {1.0f * s, 0.0f};
-            boxDef.angularVelocity = 0.5f;
-            box->addComponent<Rigidbody>(boxDef);
-            box->addComponent<Collider>(physics::makeBox(0.5f * s, 0.25f * s));
-            contact = box->addComponent<FirstContact>();
+        box = &scene.createGameObject();
+        box->setPosition(glm::vec2{0.5f * s, 3.0f * s});
+        box->setOrientation(0.25f);
+        physics::RigidbodyDef boxDef;
+        boxDef.linearVelocity = {1.0f * s, 0.0f};
+        boxDef.angularVelocity = 0.5f;
+        box->addComponent<Rigidbody>(boxDef);
+        box->addComponent<Collider>(physics::makeBox(0.5f * s, 0.25f * s));
+        contact = box->addComponent<FirstContact>();
 
-            ball = &scene.createGameObject();
-            ball->setPosition(glm::vec2{-4.0f * s, 6.0f * s});
-            ball->addComponent<Rigidbody>();
-            ball->addComponent<Collider>(physics::Circle{{0.0f, 0.0f}, 0.5f * s},
-                                         physics::ColliderDef{.density = 2.0f, .restitution = 0.5f});
+        ball = &scene.createGameObject();
+        ball->setPosition(glm::vec2{-4.0f * s, 6.0f * s});
+        ball->addComponent<Rigidbody>();
+        ball->addComponent<Collider>(physics::Circle{{0.0f, 0.0f}, 0.5f * s},
+                                     physics::ColliderDef{.density = 2.0f, .restitution = 0.5f});
 
-            // A pendulum hung from the world point (6, 5) m, its bob 1 m to the right.
-            bob = &scene.createGameObject();
-            bob->setPosition(glm::vec2{7.0f * s, 5.0f * s});
-            bob->addComponent<Rigidbody>();
-            bob->addComponent<Collider>(physics::Circle{{0.0f, 0.0f}, 0.25f * s});
-            physics::RevoluteJointDef hinge;
-            hinge.localAnchorA = {6.0f * s, 5.0f * s};
-            hinge.localAnchorB = {-1.0f * s, 0.0f};
-            bob->addComponent<physics::JointComponent>(physics, physics::JointComponentDef{hinge, {}});
-        });
-    });
+        // A pendulum hung from the world point (6, 5) m, its bob 1 m to the right.
+        bob = &scene.createGameObject();
+        bob->setPosition(glm::vec2{7.0f * s, 5.0f * s});
+        bob->addComponent<Rigidbody>();
+        bob->addComponent<Collider>(physics::Circle{{0.0f, 0.0f}, 0.25f * s});
+        physics::RevoluteJointDef hinge;
+        hinge.localAnchorA = {6.0f * s, 5.0f * s};
+        hinge.localAnchorB = {-1.0f * s, 0.0f};
+        bob->addComponent<physics::JointComponent>(physics, physics::JointComponentDef{hinge, {}});
+    }});
     director.addSystem(physics);
     EXPECT_TRUE(director.start("Scaled"));
     Outcome run;

@@ -12,8 +12,6 @@
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
-#include "setup_scene.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -51,14 +49,12 @@ public:
     std::vector<Event> events;
 };
 
-using physics::test::SetupScene;
-
 // A scene run by a director with the physics system plugged in, stepped by hand.
 class ComponentsTest : public ::testing::Test {
 protected:
     void start(std::function<void(core::Scene&)> setup) {
-        registry.add("Test", [setup] { return std::make_unique<SetupScene>(setup); });
-        registry.add("Empty", [] { return std::make_unique<SetupScene>([](core::Scene&) {}); });
+        registry.add("Test", core::SceneFunctions{.initialize = setup});
+        registry.add("Empty", core::SceneFunctions{});
         director.addSystem(physics);
         ASSERT_TRUE(director.start("Test"));
     }
@@ -364,23 +360,21 @@ TEST_F(ComponentsTest, BodyDestroyedThroughTheWorldInsideACollisionEventLeavesIt
         PhysicsSystem system;
         core::SceneRegistry reg;
         core::SceneDirector dir{reg, logger};
-        reg.add("Test", [&] {
-            return std::make_unique<SetupScene>([&](core::Scene& s) {
-                // A dynamic floor (so the other object has a Rigidbody too), held by zero gravity.
-                floor = &s.createGameObject();
-                physics::RigidbodyDef still;
-                still.gravityScale = 0.0f;
-                floor->addComponent<Rigidbody>(system, still);
-                floor->addComponent<Collider>(system, physics::makeBox(5.0f, 0.5f));
-                ball = &s.createGameObject();
-                ball->setPosition(glm::vec2{0.0f, 2.0f});
-                physics::RigidbodyDef falling;
-                falling.linearVelocity = {0.0f, -5.0f};
-                ball->addComponent<Rigidbody>(system, falling);
-                ball->addComponent<Collider>(system, physics::Circle{{0.0f, 0.0f}, 0.25f});
-                destroyer = ball->addComponent<BodyDestroyer>(system, own);
-            });
-        });
+        reg.add("Test", core::SceneFunctions{.initialize = [&](core::Scene& s) {
+            // A dynamic floor (so the other object has a Rigidbody too), held by zero gravity.
+            floor = &s.createGameObject();
+            physics::RigidbodyDef still;
+            still.gravityScale = 0.0f;
+            floor->addComponent<Rigidbody>(system, still);
+            floor->addComponent<Collider>(system, physics::makeBox(5.0f, 0.5f));
+            ball = &s.createGameObject();
+            ball->setPosition(glm::vec2{0.0f, 2.0f});
+            physics::RigidbodyDef falling;
+            falling.linearVelocity = {0.0f, -5.0f};
+            ball->addComponent<Rigidbody>(system, falling);
+            ball->addComponent<Collider>(system, physics::Circle{{0.0f, 0.0f}, 0.25f});
+            destroyer = ball->addComponent<BodyDestroyer>(system, own);
+        }});
         dir.addSystem(system);
         ASSERT_TRUE(dir.start("Test"));
         auto run = [&](int n) {
@@ -447,11 +441,9 @@ TEST_F(ComponentsTest, ComponentsMadeFromTheirDefAloneFindTheSystemThroughTheSce
 TEST(ComponentsWithoutSystem, DefOnlyComponentsInASceneWithoutPhysicsNameTheMissingSystem) {
     core::Logger logger{core::LogLevel::Off};
     core::SceneRegistry registry;
-    registry.add("Test", [] {
-        return std::make_unique<SetupScene>([](core::Scene& scene) {
-            scene.createGameObject().addComponent<Rigidbody>(physics::RigidbodyDef{});
-        });
-    });
+    registry.add("Test", core::SceneFunctions{.initialize = [](core::Scene& scene) {
+        scene.createGameObject().addComponent<Rigidbody>(physics::RigidbodyDef{});
+    }});
     core::SceneDirector director{registry, logger};
     try {
         director.start("Test");

@@ -11,8 +11,6 @@
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
-#include "setup_scene.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,12 +29,10 @@ using physics::Rigidbody;
 
 constexpr double kStep = 1.0 / 60.0;
 
-using physics::test::SetupScene;
-
 class JointComponentTest : public ::testing::Test {
 protected:
     void start(std::function<void(core::Scene&)> setup) {
-        registry.add("Test", [setup] { return std::make_unique<SetupScene>(setup); });
+        registry.add("Test", core::SceneFunctions{.initialize = setup});
         director.addSystem(physics);
         ASSERT_TRUE(director.start("Test"));
     }

@@ -158,6 +158,39 @@ TEST_P(RevoluteJoint, AngleCountsWholeTurns) {
     EXPECT_NEAR(world.jointValue(joint), 4.0f * kPi, 0.05f);
 }
 
+// A plain hinge follows its angle only every so many degrees; a limit switched on after
+// whole turns at several speeds (a few degrees a step, and over 45 degrees a step, where it is
+// followed every step) must see the angle through all of them: the disc runs on to the upper
+// limit, a turn and a half further, and stops there.
+TEST_P(RevoluteJoint, ALimitSwitchedOnAfterWholeTurnsSeesThem) {
+    for (const float speed : {1.0f * kPi, 6.0f * kPi, 20.0f * kPi}) {
+        SCOPED_TRACE(speed);
+        World world(worldDef({0.0f, 0.0f}));
+        BodyId ground = addStatic(world);
+        BodyId disc = addDisc(world, {0.0f, 0.0f}, 0.5f);
+        RevoluteJointDef def;
+        def.bodyA = ground;
+        def.bodyB = disc;
+        JointId joint = world.createJoint(def);
+        world.setAngularVelocity(disc, speed);
+        // The disc's turn, followed step by step here (the integration turns a body by a
+        // little less than w h per sub-step).
+        float turned = 0.0f;
+        for (int i = 0; i < 37; ++i) {
+            const Rot before = world.transform(disc).q;
+            world.step(kJointStep);
+            turned += invMulRot(before, world.transform(disc).q).angle();
+        }
+        ASSERT_GT(turned, 0.7f * speed * 37.0f / 60.0f);
+        ASSERT_NEAR(world.jointValue(joint), turned, 1e-3f * turned);
+        world.setJointLimits(joint, -1.0f, turned + 3.0f * kPi);
+        world.enableJointLimit(joint, true);
+        run(world, 4.0f);
+        EXPECT_NEAR(world.jointValue(joint), turned + 3.0f * kPi, 0.05f);
+        EXPECT_NEAR(world.angularVelocity(disc), 0.0f, 0.05f);
+    }
+}
+
 E2D_JOINT_MODES(RevoluteJoint);
 
 } // namespace

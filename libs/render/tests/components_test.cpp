@@ -28,23 +28,12 @@ namespace {
 
 using ::testing::HasSubstr;
 
-class SetupScene : public core::Scene {
-public:
-    explicit SetupScene(std::function<void(core::Scene&)> setup) : setup_(std::move(setup)) {}
-
-protected:
-    void onInitialize() override { setup_(*this); }
-
-private:
-    std::function<void(core::Scene&)> setup_;
-};
-
 // A 64 x 64 offscreen target, one world unit per pixel, world (0, 0) at screen (32, 32).
 class RenderComponents : public ::testing::Test {
 protected:
     void start(std::function<void(core::Scene&)> setup) {
         system.camera().setReferenceSize({64.0f, 64.0f});
-        registry.add("Test", [setup] { return std::make_unique<SetupScene>(setup); });
+        registry.add("Test", core::SceneFunctions{.initialize = setup});
         director.addSystem(system);
         ASSERT_TRUE(director.start("Test"));
     }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <e2d/core/function_scene.hpp>
 #include <e2d/core/scene.hpp>
 
 #include <concepts>
@@ -30,6 +31,10 @@ public:
     /// Registers `factory` under `name`. Throws core::Error for an empty name, an empty
     /// factory or a name already registered.
     void add(std::string name, Factory factory);
+
+    /// Registers a FunctionScene made of `functions` under `name` (each create() makes a new
+    /// one with copies of them). Throws as the factory overload does.
+    void add(std::string name, SceneFunctions functions);
 
     /// A new scene of the type registered as `name`, or nullptr for an unknown name.
     [[nodiscard]] std::unique_ptr<Scene> create(std::string_view name) const;
