@@ -4,9 +4,7 @@
 #include "joint_solver.hpp"
 #include "wide_lanes.hpp"
 
-#include <cstddef>
 #include <cstring>
-#include <iterator>
 
 namespace e2d::physics::detail {
 
@@ -40,8 +38,38 @@ void packLane(PointJointLanes<N>& q, int lane, const Joint& j, int slot) {
     refreshLane(q, lane, j);
 }
 
-void packPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
-                bool quadsAllowed, PointJointGroups& groups, std::vector<int>& entries) {
+template <int N>
+void refreshGroups(std::span<PointJointLanes<N>> groups, std::span<const Joint> joints) {
+    for (PointJointLanes<N>& q : groups) {
+        for (int lane = 0; lane < N; ++lane) {
+            if (q.slot[lane] >= 0) {
+                refreshLane(q, lane, joints[static_cast<std::size_t>(q.slot[lane])]);
+            }
+        }
+    }
+}
+
+template <int N>
+void storeGroups(std::span<const PointJointLanes<N>> groups, std::span<Joint> joints, float invH) {
+    for (const PointJointLanes<N>& q : groups) {
+        for (int lane = 0; lane < N; ++lane) {
+            if (q.slot[lane] >= 0) {
+                Joint& j = joints[static_cast<std::size_t>(q.slot[lane])];
+                j.linearImpulse = {q.impulseX[lane], q.impulseY[lane]};
+                // No frame needed: a revolute joint's force is its point impulse.
+                j.reactionForce = invH * j.linearImpulse;
+                // A plain hinge has no spring, motor or limit, and prepareJoint() zeroed their
+                // impulses: no torque (and no read of the joint's second cache line).
+                j.reactionTorque = 0.0f;
+            }
+        }
+    }
+}
+
+} // namespace
+
+void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
+                     bool quadsAllowed, PointJointGroups& groups, std::vector<int>& entries) {
     const std::size_t n = slots.size();
     std::size_t first = 0;
     while (first < n) {
@@ -101,44 +129,9 @@ void packPasses(std::span<const Joint> joints, std::span<const int> slots, std::
     }
 }
 
-template <int N>
-void storeGroups(std::span<const PointJointLanes<N>> groups, std::span<Joint> joints, float invH) {
-    for (std::size_t g = 0; g < groups.size(); ++g) {
-        const PointJointLanes<N>& q = groups[g];
-        for (int lane = 0; lane < N; ++lane) {
-            if (q.slot[lane] >= 0) {
-                Joint& j = joints[static_cast<std::size_t>(q.slot[lane])];
-                j.linearImpulse = {q.impulseX[lane], q.impulseY[lane]};
-                // No frame needed: a revolute joint's force is its point impulse.
-                j.reactionForce = invH * j.linearImpulse;
-                // A plain hinge has no spring, motor or limit, and prepareJoint() zeroed their
-                // impulses: no torque (and no read of the joint's second cache line).
-                j.reactionTorque = 0.0f;
-            }
-        }
-    }
-}
-
-} // namespace
-
-void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
-                     bool quadsAllowed, PointJointGroups& groups, std::vector<int>& entries) {
-    packPasses(joints, slots, levels, quadsAllowed, groups, entries);
-}
-
 void refreshPointJointGroups(PointJointGroups& groups, std::span<const Joint> joints) {
-    auto refresh = [&](auto& list) {
-        for (std::size_t g = 0; g < list.size(); ++g) {
-            auto& q = list[g];
-            for (int lane = 0; lane < static_cast<int>(std::size(q.slot)); ++lane) {
-                if (q.slot[lane] >= 0) {
-                    refreshLane(q, lane, joints[static_cast<std::size_t>(q.slot[lane])]);
-                }
-            }
-        }
-    };
-    refresh(groups.quads);
-    refresh(groups.octets);
+    refreshGroups<4>(groups.quads, joints);
+    refreshGroups<8>(groups.octets, joints);
 }
 
 void storePointJointGroups(const PointJointGroups& groups, std::span<Joint> joints, float invH) {
