@@ -126,6 +126,22 @@ ContactSoftness makeContactSoftness(const SolverDef& def, float dt) {
             makeSoftness(2.0f * hertz, def.contactDampingRatio, h)};
 }
 
+namespace {
+
+// The joint passes over `order`; a step without joints (order empty) has no groups.
+void warmStartJointsOf(const SolverStep& step, std::span<const int> order) {
+    if (!order.empty()) {
+        warmStartJoints(step.joints, *step.pointJoints, order, step.states);
+    }
+}
+void solveJointsOf(const SolverStep& step, std::span<const int> order, bool useBias) {
+    if (!order.empty()) {
+        solveJoints(step.joints, *step.pointJoints, order, step.states, step.jointStep, useBias);
+    }
+}
+
+} // namespace
+
 void solveSoftStep(const SolverStep& step) {
     const SolverDef& def = *step.def;
     float h = step.dt / static_cast<float>(def.subSteps);
@@ -145,10 +161,10 @@ void solveSoftStep(const SolverStep& step) {
         bool reversePoints = ((i / 2) % 2) == 1;
         // Joints go before the contacts in each pass (Box2D v3's order): the contacts, solved
         // last, win where the two disagree.
-        warmStartJoints(step.joints, step.pointQuads, step.jointOrder, step.states);
+        warmStartJointsOf(step, step.jointOrder);
         warmStartContacts(step.constraints, step.states);
         for (int r = 0; r <= step.extraSolveIterations; ++r) {
-            solveJoints(step.joints, step.pointQuads, step.jointOrder, step.states, step.jointStep, true);
+            solveJointsOf(step, step.jointOrder, true);
             solveContacts(step.constraints, step.states, invH, true, def.contactPushMaxSpeed,
                           backward, reversePoints);
         }
@@ -158,7 +174,7 @@ void solveSoftStep(const SolverStep& step) {
         // cards (0.002 x 0.4 m cards) swayed 3-5 mm to one side as its contacts took the load,
         // and each swing slipped the top pair a little at its apex until it fell.
         for (int r = 0; r <= relaxIterations; ++r) {
-            solveJoints(step.joints, step.pointQuads, step.jointOrder, step.states, step.jointStep, false);
+            solveJointsOf(step, step.jointOrder, false);
             solveContacts(step.constraints, step.states, invH, false, def.contactPushMaxSpeed,
                           !backward, reversePoints);
         }
@@ -178,16 +194,16 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
         integrateVelocities(step.sims, step.states, bodies, step.gravity, h, def.maxLinearSpeed);
         bool backward = (i % 2) == 1;
         bool reversePoints = ((i / 2) % 2) == 1;
-        warmStartJoints(step.joints, step.pointQuads, blockJoints, step.states);
+        warmStartJointsOf(step, blockJoints);
         warmStartWide(wide, firstLevel, endLevel, step.states);
         for (int r = 0; r <= step.extraSolveIterations; ++r) {
-            solveJoints(step.joints, step.pointQuads, blockJoints, step.states, step.jointStep, true);
+            solveJointsOf(step, blockJoints, true);
             solveWide(wide, firstLevel, endLevel, step.states, invH, true,
                       def.contactPushMaxSpeed, backward, reversePoints);
         }
         integratePositions(step.states, bodies, h, def.maxLinearSpeed);
         for (int r = 0; r <= relaxIterations; ++r) {
-            solveJoints(step.joints, step.pointQuads, blockJoints, step.states, step.jointStep, false);
+            solveJointsOf(step, blockJoints, false);
             solveWide(wide, firstLevel, endLevel, step.states, invH, false,
                       def.contactPushMaxSpeed, !backward, reversePoints);
         }
@@ -200,12 +216,12 @@ void solveClassic(const SolverStep& step) {
     float invDt = 1.0f / step.dt;
     integrateVelocities(step.sims, step.states, step.gravity, step.dt, def.maxLinearSpeed);
     prepareClassic(step.constraints, step.states, def.restitutionThreshold);
-    warmStartJoints(step.joints, step.pointQuads, step.jointOrder, step.states);
+    warmStartJointsOf(step, step.jointOrder);
     warmStartContacts(step.constraints, step.states);
     for (int i = 0; i < def.velocityIterations; ++i) {
         // Box2D 2.4's recipe: velocities only here (a limit not reached yet still stops the
         // bodies at it), position errors in the position iterations below.
-        solveJoints(step.joints, step.pointQuads, step.jointOrder, step.states, step.jointStep, false);
+        solveJointsOf(step, step.jointOrder, false);
         solveVelocitiesClassic(step.constraints, step.states, invDt);
     }
     applyRestitution(step.constraints, step.states, def.restitutionThreshold, step.dt);

@@ -22,12 +22,12 @@ struct SolverStep {
     float dt = 0.0f;
     const SolverDef* def = nullptr;
     // The step's joints: jointOrder's entries in order (packJointPasses(): slots of joints or
-    // quads of plain hinges; solveSoftStepBlock() takes its block's order instead), and the
-    // rigid parts' softness at the (sub-)step.
+    // groups of plain hinges in *pointJoints; solveSoftStepBlock() takes its block's order
+    // instead), and the rigid parts' softness at the (sub-)step.
     std::span<Joint> joints{};
     std::span<const int> jointOrder{};
     JointStep jointStep{};
-    std::span<PointJointQuad> pointQuads{};
+    PointJointGroups* pointJoints = nullptr; // set when there are joints
     // Soft step: biased solve sweeps per sub-step beyond the first, and relax sweeps on top of
     // def->relaxIterations (kPushOutSolveIterations and kPushOutRelaxIterations while shapes
     // are pushed apart, see World::Impl::solve()).

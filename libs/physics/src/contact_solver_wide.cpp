@@ -6,161 +6,28 @@
 #include <cstdlib>
 #include <cstring>
 
-#if defined(__x86_64__)
-#include <immintrin.h>
-#endif
-
 namespace e2d::physics::detail {
 
-namespace {
-
-// A static side (index -1) reads a resting state and writes nothing.
-const BodyState kStaticState{};
-
-// BodyState is two 16-byte rows, {vx, vy, w, flags} and {dpx, dpy, qc, qs}: a lane's row is one
-// load, and rows transpose into lane vectors (and back) with shuffles only, which move bits
-// unchanged (flags included).
-static_assert(sizeof(BodyState) == 32, "BodyState must stay two 16-byte rows");
-static_assert(offsetof(BodyState, linearVelocity) == 0 && offsetof(BodyState, angularVelocity) == 8 &&
-                  offsetof(BodyState, deltaPosition) == 16 && offsetof(BodyState, deltaRotation) == 24,
-              "BodyState rows out of order");
-
-inline Float4 loadRow(const BodyState* s, std::size_t offset) {
-    Float4 row;
-    std::memcpy(&row, reinterpret_cast<const unsigned char*>(s) + offset, sizeof row);
-    return row;
-}
-
-inline void storeRow(BodyState& s, Float4 row) {
-    // BodyState is trivially copyable: its first row takes the lane whole.
-    std::memcpy(reinterpret_cast<unsigned char*>(&s), &row, sizeof row);
-}
-
+// The passes of each width, their helpers' names local to this file.
 namespace lanes4 {
-
+namespace {
 #define E2D_WIDE_FN inline
-constexpr int N = 4;
-using F = Float4;
-using I = Int4;
-
-inline F splat(float x) { return F{x, x, x, x}; }
-// mask ? a : b, lane by lane (mask lanes are all ones or all zeros).
-inline F select(I mask, F a, F b) {
-    return std::bit_cast<F>((mask & std::bit_cast<I>(a)) | (~mask & std::bit_cast<I>(b)));
-}
-// std::max(a, b) lane by lane, with its exact semantics (a on ties and NaNs): MAXPS returns
-// its second operand unless the first is greater, which is the same rule with the operands
-// swapped.
-inline F maxOf(F a, F b) {
-#if defined(__x86_64__)
-    return _mm_max_ps(b, a);
-#else
-    return select(a < b, b, a);
-#endif
-}
-inline bool anyLane(I mask) {
-#if defined(__x86_64__)
-    return _mm_movemask_ps(std::bit_cast<__m128>(mask)) != 0;
-#else
-    return (mask[0] | mask[1] | mask[2] | mask[3]) != 0;
-#endif
-}
-inline bool allLanes(I mask) {
-#if defined(__x86_64__)
-    return _mm_movemask_ps(std::bit_cast<__m128>(mask)) == 0xF;
-#else
-    return (mask[0] & mask[1] & mask[2] & mask[3]) == -1;
-#endif
-}
-
-inline void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {
-    F t0 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
-    F t1 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
-    F t2 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
-    F t3 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
-    c0 = __builtin_shufflevector(t0, t1, 0, 1, 4, 5);
-    c1 = __builtin_shufflevector(t0, t1, 2, 3, 6, 7);
-    c2 = __builtin_shufflevector(t2, t3, 0, 1, 4, 5);
-    c3 = __builtin_shufflevector(t2, t3, 2, 3, 6, 7);
-}
-
-inline void loadRows(const BodyState* const (&s)[N], std::size_t offset, F& c0, F& c1, F& c2,
-                     F& c3) {
-    transposeRows(loadRow(s[0], offset), loadRow(s[1], offset), loadRow(s[2], offset),
-                  loadRow(s[3], offset), c0, c1, c2, c3);
-}
-
-inline void storeRows(F c0, F c1, F c2, F c3, BodyState* const (&out)[N]) {
-    F rows[N];
-    transposeRows(c0, c1, c2, c3, rows[0], rows[1], rows[2], rows[3]);
-    for (int i = 0; i < N; ++i) {
-        storeRow(*out[i], rows[i]);
-    }
-}
-
 #include "contact_solver_wide_kernel.inl"
-
 #undef E2D_WIDE_FN
-
+} // namespace
 } // namespace lanes4
 
-#if defined(__x86_64__)
-#define E2D_HAS_WIDE8 1
-
+#if defined(E2D_HAS_WIDE8)
 namespace lanes8 {
-
-// No "fma": a fused multiply-add rounds once where the scalar code rounds twice.
-#define E2D_WIDE_FN __attribute__((target("avx2"))) inline
-constexpr int N = 8;
-using F = Float8;
-using I = Int8;
-
-E2D_WIDE_FN F splat(float x) { return F{x, x, x, x, x, x, x, x}; }
-E2D_WIDE_FN F select(I mask, F a, F b) {
-    return _mm256_blendv_ps(b, a, (__m256)mask);
-}
-E2D_WIDE_FN F maxOf(F a, F b) { return _mm256_max_ps(b, a); }
-E2D_WIDE_FN bool anyLane(I mask) { return _mm256_movemask_ps((__m256)mask) != 0; }
-E2D_WIDE_FN bool allLanes(I mask) { return _mm256_movemask_ps((__m256)mask) == 0xFF; }
-
-// Rows k and k + 4 share a vector (low and high half); the halves transpose independently.
-E2D_WIDE_FN void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {
-    F t0 = __builtin_shufflevector(r0, r1, 0, 8, 1, 9, 4, 12, 5, 13);
-    F t1 = __builtin_shufflevector(r2, r3, 0, 8, 1, 9, 4, 12, 5, 13);
-    F t2 = __builtin_shufflevector(r0, r1, 2, 10, 3, 11, 6, 14, 7, 15);
-    F t3 = __builtin_shufflevector(r2, r3, 2, 10, 3, 11, 6, 14, 7, 15);
-    c0 = __builtin_shufflevector(t0, t1, 0, 1, 8, 9, 4, 5, 12, 13);
-    c1 = __builtin_shufflevector(t0, t1, 2, 3, 10, 11, 6, 7, 14, 15);
-    c2 = __builtin_shufflevector(t2, t3, 0, 1, 8, 9, 4, 5, 12, 13);
-    c3 = __builtin_shufflevector(t2, t3, 2, 3, 10, 11, 6, 7, 14, 15);
-}
-
-E2D_WIDE_FN F joinRows(const BodyState* low, const BodyState* high, std::size_t offset) {
-    return __builtin_shufflevector(loadRow(low, offset), loadRow(high, offset), 0, 1, 2, 3, 4, 5,
-                                   6, 7);
-}
-
-E2D_WIDE_FN void loadRows(const BodyState* const (&s)[N], std::size_t offset, F& c0, F& c1, F& c2,
-                          F& c3) {
-    transposeRows(joinRows(s[0], s[4], offset), joinRows(s[1], s[5], offset),
-                  joinRows(s[2], s[6], offset), joinRows(s[3], s[7], offset), c0, c1, c2, c3);
-}
-
-E2D_WIDE_FN void storeRows(F c0, F c1, F c2, F c3, BodyState* const (&out)[N]) {
-    F rows[4];
-    transposeRows(c0, c1, c2, c3, rows[0], rows[1], rows[2], rows[3]);
-    for (int i = 0; i < 4; ++i) {
-        storeRow(*out[i], __builtin_shufflevector(rows[i], rows[i], 0, 1, 2, 3));
-        storeRow(*out[i + 4], __builtin_shufflevector(rows[i], rows[i], 4, 5, 6, 7));
-    }
-}
-
+namespace {
+#define E2D_WIDE_FN E2D_AVX2_FN
 #include "contact_solver_wide_kernel.inl"
-
 #undef E2D_WIDE_FN
-
+} // namespace
 } // namespace lanes8
 #endif
+
+namespace {
 
 template <int N>
 void packLane(WideConstraintT<N>& w, int lane, const ContactConstraint& c) {

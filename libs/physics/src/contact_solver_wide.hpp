@@ -3,6 +3,7 @@
 
 #include "contact_solver.hpp"
 #include "solver_body.hpp"
+#include "wide_lanes.hpp"
 
 #include <algorithm>
 #include <cstddef>
@@ -22,24 +23,6 @@
 // chosen at run time (the build sets no -march). Multiplies and adds stay separate
 // instructions (no FMA), so every lane width gives the scalar results.
 namespace e2d::physics::detail {
-
-using Float4 = float __attribute__((vector_size(16)));
-using Int4 = std::int32_t __attribute__((vector_size(16)));
-using Float8 = float __attribute__((vector_size(32)));
-using Int8 = std::int32_t __attribute__((vector_size(32)));
-
-template <int N>
-struct WideLanes;
-template <>
-struct WideLanes<4> {
-    using F = Float4;
-    using I = Int4;
-};
-template <>
-struct WideLanes<8> {
-    using F = Float8;
-    using I = Int8;
-};
 
 // Aligned to the vector size by hand: without AVX enabled GCC aligns a 32-byte vector to 16
 // only, while the AVX2 code assumes 32. Every member is a whole number of vectors, so the

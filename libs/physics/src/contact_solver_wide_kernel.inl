@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The wide contact passes for one lane width. Included by contact_solver_wide.cpp once per
 // width, inside a namespace that defines: N (lanes), F and I (float and mask vectors),
-// E2D_WIDE_FN (the function attributes: the instruction set of that width), splat, select,
-// maxOf, anyLane, allLanes, transposeRows, loadRows and storeRows. One text for every width, so they
-// cannot drift apart.
+// E2D_WIDE_FN (the function attributes: the instruction set of that width) and
+// wide_lanes.hpp's helpers of that width (splat, select, maxOf, anyLane, allLanes, lanesOf,
+// transposeRows, loadRows and storeRows). One text for every width, so they cannot drift apart.
 
 using Constraint = WideConstraintT<N>;
 using Point = WidePointT<N>;
@@ -12,18 +12,6 @@ struct WideBody {
     F vx, vy, w, flags;
     F dpx, dpy, qc, qs;
 };
-
-// Where each lane reads its body (a static side: a resting state) and writes it back (a
-// static side: `sink`, never read). Unconditional stores cost less than a branch per lane.
-E2D_WIDE_FN void lanesOf(const int (&index)[N], std::span<BodyState> states, BodyState& sink,
-                         const BodyState* (&in)[N], BodyState* (&out)[N]) {
-    for (int i = 0; i < N; ++i) {
-        const bool moving = index[i] >= 0;
-        BodyState* s = states.data() + (moving ? index[i] : 0);
-        in[i] = moving ? s : &kStaticState;
-        out[i] = moving ? s : &sink;
-    }
-}
 
 E2D_WIDE_FN void scatterVelocities(const WideBody& b, BodyState* const (&out)[N]) {
     storeRows(b.vx, b.vy, b.w, b.flags, out);

@@ -192,25 +192,29 @@ void storeJointReaction(Joint& j, std::span<const BodyState> states, float invH)
     j.reactionTorque = invH * torque;
 }
 
-void warmStartJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
+void warmStartJoints(std::span<Joint> joints, PointJointGroups& groups, std::span<const int> order,
                      std::span<BodyState> states) {
     for (int k : order) {
-        if (k < 0) {
-            warmStartPointQuad(quads[static_cast<std::size_t>(~k)], states);
-        } else {
+        if (k >= 0) {
             warmStartJoint(joints[static_cast<std::size_t>(k)], states);
+        } else if ((~k & 1) != 0) {
+            warmStartPointOctet(groups.octets[static_cast<std::size_t>(~k >> 1)], states);
+        } else {
+            warmStartPointQuad(groups.quads[static_cast<std::size_t>(~k >> 1)], states);
         }
     }
 }
 
-void solveJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
+void solveJoints(std::span<Joint> joints, PointJointGroups& groups, std::span<const int> order,
                  std::span<BodyState> states, const JointStep& step, bool useBias) {
     const Softness soft = rigidSoftness(step, useBias);
     for (int k : order) {
-        if (k < 0) {
-            solvePointQuad(quads[static_cast<std::size_t>(~k)], states, soft);
-        } else {
+        if (k >= 0) {
             solveJoint(joints[static_cast<std::size_t>(k)], states, step, useBias);
+        } else if ((~k & 1) != 0) {
+            solvePointOctet(groups.octets[static_cast<std::size_t>(~k >> 1)], states, soft);
+        } else {
+            solvePointQuad(groups.quads[static_cast<std::size_t>(~k >> 1)], states, soft);
         }
     }
 }

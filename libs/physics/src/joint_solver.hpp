@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <span>
 #include <vector>
 
@@ -100,48 +101,81 @@ static_assert(offsetof(Joint, maxMotorForce) + sizeof(float) <= 128, "the solver
 
 // Whether a prepared joint is a plain hinge: a revolute joint with nothing but its point (no
 // spring, motor or limit: a chain's, a net's, or a ragdoll's hinge without limits). The soft
-// step solves those four at a time (PointJointQuad).
+// step solves those four or eight at a time (PointJointLanes).
 inline bool isPointJoint(const Joint& j) {
     return j.type == JointType::Revolute && !j.enableSpring && !j.enableMotor && !j.enableLimit;
 }
 
-// Four plain hinges that share no moving body, as the soft step's passes read them: their
-// prepared fields lane by lane (a copy of the joints' own, made once a step by
+// N plain hinges (4 or 8) that share no moving body, as the soft step's passes read them:
+// their prepared fields lane by lane (a copy of the joints' own, made once a step by
 // packJointPasses()), solved together with the revolute joint's arithmetic in each lane, so
 // each lane's results are the bits the joint alone would get. Their impulses go back to the
-// joints once after the step (storePointJointQuads()). A lane whose slot is -1 is padding: no
-// bodies, no mass, no impulse.
-struct alignas(64) PointJointQuad {
-    int indexA[4] = {-1, -1, -1, -1}; // BodyState indices this step, -1: static or asleep
-    int indexB[4] = {-1, -1, -1, -1};
-    int slot[4] = {-1, -1, -1, -1}; // the joint slot
-    float invInertiaA[4] = {};
-    float invInertiaB[4] = {};
-    float invMassAx[4] = {};
-    float invMassAy[4] = {};
-    float invMassBx[4] = {};
-    float invMassBy[4] = {};
-    float anchorAx[4] = {};
-    float anchorAy[4] = {};
-    float anchorBx[4] = {};
-    float anchorBy[4] = {};
-    float deltaCenterX[4] = {};
-    float deltaCenterY[4] = {};
-    float impulseX[4] = {};
-    float impulseY[4] = {};
+// joints once after the step (storePointJointGroups()). A lane whose slot is -1 is padding:
+// no bodies, no mass, no impulse.
+template <int N>
+struct alignas(64) PointJointLanes {
+    int indexA[N] = {}; // BodyState indices this step, -1: static or asleep
+    int indexB[N] = {};
+    int slot[N] = {}; // the joint slot
+    float invInertiaA[N] = {};
+    float invInertiaB[N] = {};
+    float invMassAx[N] = {};
+    float invMassAy[N] = {};
+    float invMassBx[N] = {};
+    float invMassBy[N] = {};
+    float anchorAx[N] = {};
+    float anchorAy[N] = {};
+    float anchorBx[N] = {};
+    float anchorBy[N] = {};
+    float deltaCenterX[N] = {};
+    float deltaCenterY[N] = {};
+    float impulseX[N] = {};
+    float impulseY[N] = {};
+
+    PointJointLanes() {
+        std::fill(std::begin(indexA), std::end(indexA), -1);
+        std::fill(std::begin(indexB), std::end(indexB), -1);
+        std::fill(std::begin(slot), std::end(slot), -1);
+    }
 };
+using PointJointQuad = PointJointLanes<4>;
+using PointJointOctet = PointJointLanes<8>;
+
+// The step's plain hinges in groups: quads (SSE2, or scalar code where there is no SIMD) and,
+// where `lanes` is 8 (bestPointJointLanes(): x86-64 CPUs with AVX2), octets too. A pass entry
+// k < 0 names a group: ~k even the quad ~k / 2, odd the octet ~k / 2.
+struct PointJointGroups {
+    int lanes = 4; // the widest group the packer makes: 4 or 8
+    std::vector<PointJointQuad> quads;
+    std::vector<PointJointOctet> octets;
+
+    void clear() {
+        quads.clear();
+        octets.clear();
+    }
+    std::size_t size() const { return quads.size() + octets.size(); }
+    static int quadEntry(std::size_t index) { return ~(2 * static_cast<int>(index)); }
+    static int octetEntry(std::size_t index) { return ~(2 * static_cast<int>(index) + 1); }
+};
+
+// 8 on x86-64 CPUs with AVX2, 4 elsewhere.
+int bestPointJointLanes();
 
 // The passes' order from the prepared joints joints[slots[k]] in order, levels[k] their
 // levels (ascending; joints of one level share no moving body): pass entries appended to
-// `entries`, k >= 0 the joint slot k, k < 0 the quad quads[~k]. With `quadsAllowed`, the plain
-// hinges of each level are packed four at a time into quads appended to `quads` (the last
-// one of a level padded; a single one left over stays a slot) and go before the level's other
+// `entries`, k >= 0 the joint slot k, k < 0 a group of `groups` (PointJointGroups). With
+// `quadsAllowed`, the plain hinges of each level are packed into groups appended to `groups`
+// (eights while five or more are left and groups.lanes is 8, then fours; the last group of a
+// level padded; a single hinge left over stays a slot) and go before the level's other
 // joints; a level's joints share no body, so this order gives the same results as slot order.
 void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
-                     bool quadsAllowed, std::vector<PointJointQuad>& quads, std::vector<int>& entries);
-// The quads' accumulated impulses back to their joints, and their reactions as
+                     bool quadsAllowed, PointJointGroups& groups, std::vector<int>& entries);
+// Copies every lane's prepared fields again from its joint: the groups' layout kept, the
+// joints prepared anew.
+void refreshPointJointGroups(PointJointGroups& groups, std::span<const Joint> joints);
+// The groups' accumulated impulses back to their joints, and their reactions as
 // storeJointReaction() gives a revolute joint's (invH: 1 / the sub-step).
-void storePointJointQuads(std::span<const PointJointQuad> quads, std::span<Joint> joints, float invH);
+void storePointJointGroups(const PointJointGroups& groups, std::span<Joint> joints, float invH);
 
 // What a pass needs besides the joint and the bodies' states.
 struct JointStep {
@@ -186,14 +220,16 @@ void solveJoint(Joint& j, std::span<BodyState> states, const JointStep& step, bo
 void storeJointReaction(Joint& j, std::span<const BodyState> states, float invH);
 
 // The passes over the entries of `order` in order (as packJointPasses() makes them: joint
-// slots, or quads of plain hinges).
-void warmStartJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
+// slots, or groups of plain hinges).
+void warmStartJoints(std::span<Joint> joints, PointJointGroups& groups, std::span<const int> order,
                      std::span<BodyState> states);
-void solveJoints(std::span<Joint> joints, std::span<PointJointQuad> quads, std::span<const int> order,
+void solveJoints(std::span<Joint> joints, PointJointGroups& groups, std::span<const int> order,
                  std::span<BodyState> states, const JointStep& step, bool useBias);
-// One quad's passes (joint_point.cpp).
+// One group's passes (joint_point.cpp); an octet's only where bestPointJointLanes() is 8.
 void warmStartPointQuad(PointJointQuad& q, std::span<BodyState> states);
 void solvePointQuad(PointJointQuad& q, std::span<BodyState> states, const Softness& soft);
+void warmStartPointOctet(PointJointOctet& q, std::span<BodyState> states);
+void solvePointOctet(PointJointOctet& q, std::span<BodyState> states, const Softness& soft);
 
 // Classic mode: one non-linear Gauss-Seidel pass over the rigid parts' position errors
 // (joint_position.cpp). True when every error was within the slops before the pass. `order`

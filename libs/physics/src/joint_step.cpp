@@ -4,6 +4,7 @@
 #include "world_impl.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 namespace e2d::physics {
 
@@ -40,12 +41,20 @@ void World::Impl::wakeJointedBodies() {
 void World::Impl::prepareJoints(float dt, float h) {
     (void)dt;
     detail::Simulation& s = sim;
-    s.activeJoints.clear();
-    s.activeJointLevels.clear();
-    s.jointOrder.clear();
-    s.pointQuads.clear();
-    s.jointBodies.clear();
+    using Key = detail::Simulation::JointKey;
+    s.jointKeys.swap(s.lastJointKeys);
+    s.jointKeys.clear();
+    s.jointsReused = false;
+    auto reset = [&] {
+        s.activeJoints.clear();
+        s.activeJointLevels.clear();
+        s.jointOrder.clear();
+        s.pointJoints.clear();
+        s.jointBodies.clear();
+        s.jointLayout = detail::Simulation::JointLayout::None;
+    };
     if (joints.empty()) {
+        reset();
         return;
     }
     const detail::JointStep step{h, 1.0f / h, detail::makeSoftness(detail::kJointHertz, detail::kJointDampingRatio, h)};
@@ -86,8 +95,20 @@ void World::Impl::prepareJoints(float dt, float h) {
             continue; // asleep: keeps the reaction it fell asleep with
         }
         detail::prepareJoint(j, viewOf(a), viewOf(b), step);
-        s.activeJoints.push_back(static_cast<int>(ji));
-        s.jointBodies.push_back({j.indexA, j.indexB});
+        s.jointKeys.push_back({static_cast<int>(ji), j.indexA, j.indexB, detail::isPointJoint(j) ? 1 : 0});
+    }
+    static_assert(sizeof(Key) == 4 * sizeof(int), "JointKey compares as ints");
+    if (!s.jointKeys.empty() && s.jointKeys.size() == s.lastJointKeys.size() &&
+        std::memcmp(s.jointKeys.data(), s.lastJointKeys.data(), s.jointKeys.size() * sizeof(Key)) == 0) {
+        // The same joints, sides and kinds as last step: its levels and pass order hold.
+        s.jointBodies = s.lastJointBodies;
+        s.jointsReused = true;
+        return;
+    }
+    reset();
+    for (const Key& key : s.jointKeys) {
+        s.activeJoints.push_back(key.slot);
+        s.jointBodies.push_back({key.indexA, key.indexB});
     }
     orderJoints();
 }
@@ -144,15 +165,31 @@ void World::Impl::orderJoints() {
 
 void World::Impl::packJoints() {
     detail::Simulation& s = sim;
+    // Classic mode's position pass reads the joint slots: no groups there.
+    const bool groups = s.def.mode == SolverMode::SoftStep;
+    const auto layout = groups ? detail::Simulation::JointLayout::Scalar : detail::Simulation::JointLayout::ScalarNoGroups;
+    if (s.jointsReused && s.jointLayout == layout) {
+        // Last step's entries and groups, the lanes' fields from the joints prepared anew.
+        detail::refreshPointJointGroups(s.pointJoints, joints);
+        return;
+    }
+    ++s.counters.jointRepacks;
     s.jointOrder.clear();
-    s.pointQuads.clear();
-    // Classic mode's position pass reads the joint slots: no quads there.
-    detail::packJointPasses(joints, s.activeJoints, s.activeJointLevels, s.def.mode == SolverMode::SoftStep,
-                            s.pointQuads, s.jointOrder);
+    s.pointJoints.clear();
+    s.pointJoints.lanes = detail::bestPointJointLanes();
+    detail::packJointPasses(joints, s.activeJoints, s.activeJointLevels, groups, s.pointJoints, s.jointOrder);
+    s.jointLayout = layout;
 }
 
-void World::Impl::assignJointBlocks() {
+void World::Impl::assignJointBlocks(bool scheduleKept) {
     detail::Simulation& s = sim;
+    if (scheduleKept && s.jointsReused && s.jointLayout == detail::Simulation::JointLayout::Wide) {
+        // Last step's blocks, entries and groups, the lanes' fields from the joints prepared
+        // anew.
+        detail::refreshPointJointGroups(s.pointJoints, joints);
+        return;
+    }
+    ++s.counters.jointRepacks;
     const std::size_t blocks = s.blockBodyStart.size() - 1;
     const std::size_t n = s.activeJoints.size();
     s.blockJointStart.assign(blocks + 1, 0);
@@ -177,21 +214,23 @@ void World::Impl::assignJointBlocks() {
         s.jointSorted[to] = s.activeJointLevels[k];
     }
     s.blockJoints.clear();
-    s.pointQuads.clear();
+    s.pointJoints.clear();
+    s.pointJoints.lanes = detail::bestPointJointLanes();
     int first = 0;
     for (std::size_t b = 0; b < blocks; ++b) {
         const int end = s.blockJointStart[b + 1];
         const auto count = static_cast<std::size_t>(end - first);
         detail::packJointPasses(joints, std::span<const int>(s.jointScratch).subspan(static_cast<std::size_t>(first), count),
                                 std::span<const int>(s.jointSorted).subspan(static_cast<std::size_t>(first), count),
-                                true, s.pointQuads, s.blockJoints);
+                                true, s.pointJoints, s.blockJoints);
         first = end;
         s.blockJointStart[b + 1] = static_cast<int>(s.blockJoints.size());
     }
+    s.jointLayout = detail::Simulation::JointLayout::Wide;
 }
 
 void World::Impl::storeJointReactions(float invH, bool wide) {
-    detail::storePointJointQuads(sim.pointQuads, joints, invH);
+    detail::storePointJointGroups(sim.pointJoints, joints, invH);
     for (int entry : wide ? sim.blockJoints : sim.jointOrder) {
         if (entry >= 0) {
             detail::storeJointReaction(joint(entry), sim.states, invH);

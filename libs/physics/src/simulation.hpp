@@ -169,13 +169,13 @@ struct Simulation {
     // side, in pass order (World::Impl::orderJoints(): by level, every body meeting its joints
     // in slot order) with their levels, and their sides' BodyState indices (-1: static or
     // asleep); last solve's, for the wide schedule's check; the scalar solvers' pass entries
-    // (jointOrder, packJointPasses(): slots, or quads of pointQuads); the wide solver's by
+    // (jointOrder, packJointPasses(): slots, or groups of pointJoints); the wide solver's by
     // block: block b's entries are blockJoints[blockJointStart[b] .. blockJointStart[b + 1]).
     // The rest is scratch.
     std::vector<int> activeJoints;
     std::vector<int> activeJointLevels;
     std::vector<int> jointOrder;
-    std::vector<PointJointQuad> pointQuads;
+    PointJointGroups pointJoints;
     std::vector<int> jointBodyLevel;
     std::vector<int> jointLevel;
     std::vector<int> jointLevelStart;
@@ -186,6 +186,22 @@ struct Simulation {
     std::vector<ConstraintBodies> lastJointBodies;
     std::vector<int> blockJointStart;
     std::vector<int> blockJoints;
+    // What decides the joints' order and groups (World::Impl::prepareJoints()): each prepared
+    // joint's slot, its sides' BodyState indices and whether it is a plain hinge, in slot
+    // order; this step's and last step's. While they are equal, the levels, the pass order
+    // and the groups' layout are last step's (jointsReused; jointLayout: which packing built
+    // them) and only the lanes' fields are copied anew.
+    struct JointKey {
+        int slot = -1;
+        int indexA = -1;
+        int indexB = -1;
+        int point = 0;
+    };
+    enum class JointLayout { None, Scalar, ScalarNoGroups, Wide };
+    std::vector<JointKey> jointKeys;
+    std::vector<JointKey> lastJointKeys;
+    JointLayout jointLayout = JointLayout::None;
+    bool jointsReused = false;
     std::vector<int> islandParent; // union-find over the awake arrays
     std::vector<float> islandSleepTime;
     std::vector<int> wakeStack;

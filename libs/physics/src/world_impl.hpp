@@ -214,11 +214,11 @@ struct World::Impl {
     void prepareJoints(float dt, float h);
     // Puts the prepared joints in pass order (levels, see there; prepareJoints()).
     void orderJoints();
-    // The scalar solvers' pass entries (s.jointOrder, s.pointQuads; packJointPasses()).
+    // The scalar solvers' pass entries (s.jointOrder, s.pointJoints; packJointPasses()).
     void packJoints();
-    // The wide solver's pass entries by block (s.blockJointStart, s.blockJoints, s.pointQuads),
-    // after scheduleWide().
-    void assignJointBlocks();
+    // The wide solver's pass entries by block (s.blockJointStart, s.blockJoints, s.pointJoints),
+    // after scheduleWide(); scheduleKept: scheduleWide() kept last step's blocks.
+    void assignJointBlocks(bool scheduleKept);
     // The quads' impulses back to their joints, then the reactions of the active joints from
     // their impulses (invH: 1 / the sub-step).
     // wide: the step's entries are the wide solver's (s.blockJoints), else s.jointOrder.

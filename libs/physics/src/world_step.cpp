@@ -349,7 +349,7 @@ void World::Impl::solve(float dt) {
             scheduleWide(constraintCount);
         }
         if (!s.activeJoints.empty()) {
-            assignJointBlocks();
+            assignJointBlocks(same);
         }
     }
     s.wideScheduleValid = wide;
@@ -404,7 +404,7 @@ void World::Impl::solve(float dt) {
         integrationStep, 1.0f / integrationStep,
         detail::makeSoftness(detail::kJointHertz, detail::kJointDampingRatio, integrationStep)};
     detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def,
-                            joints, s.jointOrder, jointStep, s.pointQuads};
+                            joints, s.jointOrder, jointStep, &s.pointJoints};
     auto pushOutSweeps = [](detail::SolverStep& st, bool on) {
         st.extraSolveIterations = on ? detail::kPushOutSolveIterations : 0;
         st.extraRelaxIterations = on ? detail::kPushOutRelaxIterations : 0;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Plain hinges solved four at a time (PointJointQuad) against the revolute joint's own passes
-// in slot order: the same bits.
+// Plain hinges solved four or eight at a time (PointJointLanes) against the revolute joint's
+// own passes in slot order: the same bits.
 #include "../src/joint_solver.hpp"
 
 #include <gtest/gtest.h>
@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <iterator>
 #include <random>
 #include <vector>
 
@@ -106,19 +107,38 @@ void levelOrder(const Scene& s, std::vector<int>& slots, std::vector<int>& level
 }
 
 // A soft step's joint passes: warm start, solve, two relaxations, twice.
-void runPasses(Scene& s, std::span<PointJointQuad> quads, std::span<const int> order) {
+void runPasses(Scene& s, PointJointGroups& groups, std::span<const int> order) {
     const float h = 1.0f / 240.0f;
     const JointStep step{h, 1.0f / h, makeSoftness(kJointHertz, kJointDampingRatio, h)};
     for (int sub = 0; sub < 2; ++sub) {
-        warmStartJoints(s.joints, quads, order, s.states);
-        solveJoints(s.joints, quads, order, s.states, step, true);
-        solveJoints(s.joints, quads, order, s.states, step, false);
-        solveJoints(s.joints, quads, order, s.states, step, false);
+        warmStartJoints(s.joints, groups, order, s.states);
+        solveJoints(s.joints, groups, order, s.states, step, true);
+        solveJoints(s.joints, groups, order, s.states, step, false);
+        solveJoints(s.joints, groups, order, s.states, step, false);
     }
 }
 
-TEST(PointJointQuads, MatchTheRevoluteJointsPassesInSlotOrderBitForBit) {
+// The slots of the lanes of the group that pass entry `entry` (< 0) names (-1: padding).
+std::vector<int> groupSlots(const PointJointGroups& groups, int entry) {
+    const auto index = static_cast<std::size_t>(~entry >> 1);
+    if ((~entry & 1) != 0) {
+        return {std::begin(groups.octets.at(index).slot), std::end(groups.octets.at(index).slot)};
+    }
+    return {std::begin(groups.quads.at(index).slot), std::end(groups.quads.at(index).slot)};
+}
+
+// Four lanes everywhere, eight where this CPU has them (bestPointJointLanes()).
+std::vector<int> laneWidths() {
+    std::vector<int> widths{4};
+    if (bestPointJointLanes() == 8) {
+        widths.push_back(8);
+    }
+    return widths;
+}
+
+void matchSlotOrder(int lanes) {
     for (std::uint32_t seed : {1u, 2u, 3u, 4u}) {
+        SCOPED_TRACE(testing::Message() << lanes << " lanes, seed " << seed);
         Scene reference = randomScene(seed, 60, 150);
         Scene packed = reference;
 
@@ -126,15 +146,20 @@ TEST(PointJointQuads, MatchTheRevoluteJointsPassesInSlotOrderBitForBit) {
         for (std::size_t k = 0; k < slotOrder.size(); ++k) {
             slotOrder[k] = static_cast<int>(k);
         }
-        runPasses(reference, {}, slotOrder);
+        PointJointGroups none;
+        runPasses(reference, none, slotOrder);
 
         std::vector<int> slots;
         std::vector<int> levels;
         levelOrder(packed, slots, levels);
-        std::vector<PointJointQuad> quads;
+        PointJointGroups groups;
+        groups.lanes = lanes;
         std::vector<int> entries;
-        packJointPasses(packed.joints, slots, levels, true, quads, entries);
-        // Most joints went into quads; every joint is in exactly one entry or lane.
+        packJointPasses(packed.joints, slots, levels, true, groups, entries);
+        // Eight lanes: octets, and quads for levels' last two to four hinges.
+        EXPECT_FALSE(groups.quads.empty());
+        EXPECT_EQ(groups.octets.empty(), lanes == 4);
+        // Most joints went into groups; every joint is in exactly one entry or lane.
         std::vector<int> seen(packed.joints.size(), 0);
         int slotHinges = 0; // a level's lone leftover hinge stays a slot
         std::vector<bool> inQuad(packed.joints.size(), false);
@@ -143,7 +168,7 @@ TEST(PointJointQuads, MatchTheRevoluteJointsPassesInSlotOrderBitForBit) {
                 ++seen[static_cast<std::size_t>(e)];
                 slotHinges += isPointJoint(packed.joints[static_cast<std::size_t>(e)]) ? 1 : 0;
             } else {
-                for (int slot : quads[static_cast<std::size_t>(~e)].slot) {
+                for (int slot : groupSlots(groups, e)) {
                     if (slot >= 0) {
                         ++seen[static_cast<std::size_t>(slot)];
                         inQuad[static_cast<std::size_t>(slot)] = true;
@@ -154,10 +179,10 @@ TEST(PointJointQuads, MatchTheRevoluteJointsPassesInSlotOrderBitForBit) {
         }
         EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
         EXPECT_LE(slotHinges, levels.back() + 1);
-        EXPECT_GT(quads.size(), packed.joints.size() / 8);
+        EXPECT_GT(std::count(inQuad.begin(), inQuad.end(), true), static_cast<long>(packed.joints.size() / 2));
 
-        runPasses(packed, quads, entries);
-        storePointJointQuads(quads, packed.joints, 240.0f);
+        runPasses(packed, groups, entries);
+        storePointJointGroups(groups, packed.joints, 240.0f);
 
         for (std::size_t i = 0; i < reference.states.size(); ++i) {
             EXPECT_EQ(std::memcmp(&reference.states[i], &packed.states[i], sizeof(BodyState)), 0)
@@ -188,16 +213,85 @@ TEST(PointJointQuads, MatchTheRevoluteJointsPassesInSlotOrderBitForBit) {
     }
 }
 
+} // namespace
+
+TEST(PointJointQuads, MatchTheRevoluteJointsPassesInSlotOrderBitForBit) {
+    for (int lanes : laneWidths()) {
+        matchSlotOrder(lanes);
+    }
+}
+
+// A level of n plain hinges goes into eights while five or more are left (eight lanes), then
+// fours; a lone one left over stays a slot.
+TEST(PointJointQuads, ALevelsHingesFillEightsThenFoursAndLeaveALoneOneAlone) {
+    struct Expected {
+        int octets, quads, slots;
+    };
+    for (int lanes : {4, 8}) {
+        for (int n = 1; n <= 21; ++n) {
+            SCOPED_TRACE(testing::Message() << lanes << " lanes, " << n << " hinges");
+            Scene s;
+            s.states.resize(static_cast<std::size_t>(2 * n));
+            for (int k = 0; k < n; ++k) {
+                Joint j;
+                j.type = JointType::Revolute;
+                j.indexA = 2 * k;
+                j.indexB = 2 * k + 1;
+                s.joints.push_back(j);
+            }
+            std::vector<int> slots;
+            std::vector<int> levels;
+            levelOrder(s, slots, levels);
+            ASSERT_EQ(levels.back(), 0); // one level: the hinges share no body
+            PointJointGroups groups;
+            groups.lanes = lanes;
+            std::vector<int> entries;
+            packJointPasses(s.joints, slots, levels, true, groups, entries);
+            // From first principles: eights while >= 5 are left (the last one padded), then
+            // fours while >= 2 are left, a last single one alone.
+            Expected want{0, 0, 0};
+            int left = n;
+            while (lanes == 8 && left >= 5) {
+                ++want.octets;
+                left -= std::min(left, 8);
+            }
+            while (left >= 2) {
+                ++want.quads;
+                left -= std::min(left, 4);
+            }
+            want.slots = left;
+            EXPECT_EQ(static_cast<int>(groups.octets.size()), want.octets);
+            EXPECT_EQ(static_cast<int>(groups.quads.size()), want.quads);
+            EXPECT_EQ(static_cast<int>(std::count_if(entries.begin(), entries.end(), [](int e) { return e >= 0; })),
+                      want.slots);
+            EXPECT_EQ(entries.size(), groups.size() + static_cast<std::size_t>(want.slots));
+        }
+    }
+}
+
+TEST(PointJointQuads, EightLanesWhereTheCpuHasAvx2) {
+#if defined(__x86_64__)
+    EXPECT_EQ(bestPointJointLanes(), __builtin_cpu_supports("avx2") ? 8 : 4);
+#else
+    EXPECT_EQ(bestPointJointLanes(), 4);
+#endif
+}
+
+namespace {
+
 TEST(PointJointQuads, WithoutQuadsThePassesAreTheSlotsInOrder) {
     Scene s = randomScene(9, 30, 60);
     std::vector<int> slots;
     std::vector<int> levels;
     levelOrder(s, slots, levels);
-    std::vector<PointJointQuad> quads;
-    std::vector<int> entries;
-    packJointPasses(s.joints, slots, levels, false, quads, entries);
-    EXPECT_TRUE(quads.empty());
-    EXPECT_EQ(entries, slots);
+    for (int lanes : laneWidths()) {
+        PointJointGroups groups;
+        groups.lanes = lanes;
+        std::vector<int> entries;
+        packJointPasses(s.joints, slots, levels, false, groups, entries);
+        EXPECT_EQ(groups.size(), 0u);
+        EXPECT_EQ(entries, slots);
+    }
 }
 
 } // namespace

@@ -57,6 +57,10 @@ struct StepCounters {
     /// Shapes whose broad-phase box the step moved (a shape that leaves its fat box, or whose
     /// box grew much larger than it needs, is reinserted into the tree).
     int proxyMoves = 0;
+    /// Times the step sorted its joints into levels and packed them for the solver: 0 while
+    /// the joints with a moving side, their bodies and their kinds (a plain hinge or not) are
+    /// the last step's, whose order the step then keeps.
+    int jointRepacks = 0;
     /// Soft step: relax sweeps per sub-step, 1 + SolverDef::relaxIterations, and 24 more (with 5
     /// more biased sweeps) where a contact overlaps deeper than its load explains (shapes
     /// spawned or moved into each other), so that pushing them apart leaves no velocity behind:

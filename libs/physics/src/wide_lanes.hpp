@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "solver_body.hpp"
+
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <span>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
+// Lane vectors for the passes that solve several constraints at a time (contacts, plain
+// hinges): the vector types of four and eight lanes and, per width, splat, select, maxOf,
+// anyLane, allLanes, lanesOf (where each lane reads and writes its body), transposeRows, and
+// loadRows/storeRows, which gather BodyStates into lane vectors and scatter them back with
+// shuffles only. Four lanes everywhere (SSE2 on x86-64,
+// NEON on ARM64, plain scalar code where the target has no SIMD); eight on x86-64 (AVX2,
+// E2D_HAS_WIDE8), for code that checked the CPU at run time. No "fma" in the target: a fused
+// multiply-add rounds once where the scalar code rounds twice, so every width gives the
+// scalar results.
+namespace e2d::physics::detail {
+
+using Float4 = float __attribute__((vector_size(16)));
+using Int4 = std::int32_t __attribute__((vector_size(16)));
+using Float8 = float __attribute__((vector_size(32)));
+using Int8 = std::int32_t __attribute__((vector_size(32)));
+
+template <int N>
+struct WideLanes;
+template <>
+struct WideLanes<4> {
+    using F = Float4;
+    using I = Int4;
+};
+template <>
+struct WideLanes<8> {
+    using F = Float8;
+    using I = Int8;
+};
+
+// A static side (index -1) reads a resting state and writes nothing.
+inline const BodyState kStaticState{};
+
+// BodyState is two 16-byte rows, {vx, vy, w, flags} and {dpx, dpy, qc, qs}: a lane's row is one
+// load, and rows transpose into lane vectors (and back) with shuffles only, which move bits
+// unchanged (flags included).
+static_assert(sizeof(BodyState) == 32, "BodyState must stay two 16-byte rows");
+static_assert(offsetof(BodyState, linearVelocity) == 0 && offsetof(BodyState, angularVelocity) == 8 &&
+                  offsetof(BodyState, deltaPosition) == 16 && offsetof(BodyState, deltaRotation) == 24,
+              "BodyState rows out of order");
+
+inline Float4 loadRow(const BodyState* s, std::size_t offset) {
+    Float4 row;
+    std::memcpy(&row, reinterpret_cast<const unsigned char*>(s) + offset, sizeof row);
+    return row;
+}
+
+inline void storeRow(BodyState& s, Float4 row) {
+    // BodyState is trivially copyable: its first row takes the lane whole.
+    std::memcpy(reinterpret_cast<unsigned char*>(&s), &row, sizeof row);
+}
+
+namespace lanes4 {
+
+constexpr int N = 4;
+using F = Float4;
+using I = Int4;
+
+inline F splat(float x) { return F{x, x, x, x}; }
+// mask ? a : b, lane by lane (mask lanes are all ones or all zeros).
+inline F select(I mask, F a, F b) {
+    return std::bit_cast<F>((mask & std::bit_cast<I>(a)) | (~mask & std::bit_cast<I>(b)));
+}
+// std::max(a, b) lane by lane, with its exact semantics (a on ties and NaNs): MAXPS returns
+// its second operand unless the first is greater, which is the same rule with the operands
+// swapped.
+inline F maxOf(F a, F b) {
+#if defined(__x86_64__)
+    return _mm_max_ps(b, a);
+#else
+    return select(a < b, b, a);
+#endif
+}
+inline bool anyLane(I mask) {
+#if defined(__x86_64__)
+    return _mm_movemask_ps(std::bit_cast<__m128>(mask)) != 0;
+#else
+    return (mask[0] | mask[1] | mask[2] | mask[3]) != 0;
+#endif
+}
+inline bool allLanes(I mask) {
+#if defined(__x86_64__)
+    return _mm_movemask_ps(std::bit_cast<__m128>(mask)) == 0xF;
+#else
+    return (mask[0] & mask[1] & mask[2] & mask[3]) == -1;
+#endif
+}
+
+inline void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {
+    F t0 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
+    F t1 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
+    F t2 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
+    F t3 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
+    c0 = __builtin_shufflevector(t0, t1, 0, 1, 4, 5);
+    c1 = __builtin_shufflevector(t0, t1, 2, 3, 6, 7);
+    c2 = __builtin_shufflevector(t2, t3, 0, 1, 4, 5);
+    c3 = __builtin_shufflevector(t2, t3, 2, 3, 6, 7);
+}
+
+inline void loadRows(const BodyState* const (&s)[N], std::size_t offset, F& c0, F& c1, F& c2,
+                     F& c3) {
+    transposeRows(loadRow(s[0], offset), loadRow(s[1], offset), loadRow(s[2], offset),
+                  loadRow(s[3], offset), c0, c1, c2, c3);
+}
+
+inline void storeRows(F c0, F c1, F c2, F c3, BodyState* const (&out)[N]) {
+    F rows[N];
+    transposeRows(c0, c1, c2, c3, rows[0], rows[1], rows[2], rows[3]);
+    for (int i = 0; i < N; ++i) {
+        storeRow(*out[i], rows[i]);
+    }
+}
+
+// Where each lane reads its body (a static side: a resting state) and writes it back (a
+// static side: `sink`, never read). Unconditional stores cost less than a branch per lane.
+inline void lanesOf(const int (&index)[N], std::span<BodyState> states, BodyState& sink,
+                    const BodyState* (&in)[N], BodyState* (&out)[N]) {
+    for (int i = 0; i < N; ++i) {
+        const bool moving = index[i] >= 0;
+        BodyState* s = states.data() + (moving ? index[i] : 0);
+        in[i] = moving ? s : &kStaticState;
+        out[i] = moving ? s : &sink;
+    }
+}
+
+} // namespace lanes4
+
+#if defined(__x86_64__)
+#define E2D_HAS_WIDE8 1
+#define E2D_AVX2_FN __attribute__((target("avx2"))) inline
+
+namespace lanes8 {
+
+constexpr int N = 8;
+using F = Float8;
+using I = Int8;
+
+E2D_AVX2_FN F splat(float x) { return F{x, x, x, x, x, x, x, x}; }
+E2D_AVX2_FN F select(I mask, F a, F b) {
+    return _mm256_blendv_ps(b, a, (__m256)mask);
+}
+E2D_AVX2_FN F maxOf(F a, F b) { return _mm256_max_ps(b, a); }
+E2D_AVX2_FN bool anyLane(I mask) { return _mm256_movemask_ps((__m256)mask) != 0; }
+E2D_AVX2_FN bool allLanes(I mask) { return _mm256_movemask_ps((__m256)mask) == 0xFF; }
+
+// Rows k and k + 4 share a vector (low and high half); the halves transpose independently.
+E2D_AVX2_FN void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {
+    F t0 = __builtin_shufflevector(r0, r1, 0, 8, 1, 9, 4, 12, 5, 13);
+    F t1 = __builtin_shufflevector(r2, r3, 0, 8, 1, 9, 4, 12, 5, 13);
+    F t2 = __builtin_shufflevector(r0, r1, 2, 10, 3, 11, 6, 14, 7, 15);
+    F t3 = __builtin_shufflevector(r2, r3, 2, 10, 3, 11, 6, 14, 7, 15);
+    c0 = __builtin_shufflevector(t0, t1, 0, 1, 8, 9, 4, 5, 12, 13);
+    c1 = __builtin_shufflevector(t0, t1, 2, 3, 10, 11, 6, 7, 14, 15);
+    c2 = __builtin_shufflevector(t2, t3, 0, 1, 8, 9, 4, 5, 12, 13);
+    c3 = __builtin_shufflevector(t2, t3, 2, 3, 10, 11, 6, 7, 14, 15);
+}
+
+E2D_AVX2_FN F joinRows(const BodyState* low, const BodyState* high, std::size_t offset) {
+    return __builtin_shufflevector(loadRow(low, offset), loadRow(high, offset), 0, 1, 2, 3, 4, 5,
+                                   6, 7);
+}
+
+E2D_AVX2_FN void loadRows(const BodyState* const (&s)[N], std::size_t offset, F& c0, F& c1, F& c2,
+                          F& c3) {
+    transposeRows(joinRows(s[0], s[4], offset), joinRows(s[1], s[5], offset),
+                  joinRows(s[2], s[6], offset), joinRows(s[3], s[7], offset), c0, c1, c2, c3);
+}
+
+E2D_AVX2_FN void storeRows(F c0, F c1, F c2, F c3, BodyState* const (&out)[N]) {
+    F rows[4];
+    transposeRows(c0, c1, c2, c3, rows[0], rows[1], rows[2], rows[3]);
+    for (int i = 0; i < 4; ++i) {
+        storeRow(*out[i], __builtin_shufflevector(rows[i], rows[i], 0, 1, 2, 3));
+        storeRow(*out[i + 4], __builtin_shufflevector(rows[i], rows[i], 4, 5, 6, 7));
+    }
+}
+
+// Where each lane reads its body (a static side: a resting state) and writes it back (a
+// static side: `sink`, never read). Unconditional stores cost less than a branch per lane.
+E2D_AVX2_FN void lanesOf(const int (&index)[N], std::span<BodyState> states, BodyState& sink,
+                         const BodyState* (&in)[N], BodyState* (&out)[N]) {
+    for (int i = 0; i < N; ++i) {
+        const bool moving = index[i] >= 0;
+        BodyState* s = states.data() + (moving ? index[i] : 0);
+        in[i] = moving ? s : &kStaticState;
+        out[i] = moving ? s : &sink;
+    }
+}
+
+} // namespace lanes8
+#endif
+
+} // namespace e2d::physics::detail
