@@ -220,14 +220,18 @@ void stepE2d(benchmark::State& state, const Case* c) {
     }
     double proxyMoves = 0.0;
     double jointRepacks = 0.0;
+    double relaxSweeps = 0.0;
     for (auto _ : state) {
         slot.world->step(kTimeStep);
         proxyMoves += slot.world->stepCounters().proxyMoves;
         jointRepacks += slot.world->stepCounters().jointRepacks;
+        relaxSweeps += slot.world->stepCounters().relaxIterations;
     }
     state.SetItemsProcessed(state.iterations());
     state.counters["proxy_moves"] = proxyMoves / static_cast<double>(state.iterations());
     state.counters["joint_repacks"] = jointRepacks / static_cast<double>(state.iterations());
+    // Relax sweeps per sub-step (2 when no contact needed the push-out sweeps).
+    state.counters["relax_sweeps"] = relaxSweeps / static_cast<double>(state.iterations());
     state.counters["bodies"] = static_cast<double>(c->scene.bodies.size());
     state.counters["joints"] = static_cast<double>(slot.world->jointCount());
     state.counters["contacts"] = static_cast<double>(slot.world->contactCount());

@@ -164,7 +164,9 @@ void solveSoftStep(const SolverStep& step) {
         warmStartJointsOf(step, step.jointOrder);
         warmStartContacts(step.constraints, step.states);
         for (int r = 0; r <= step.extraSolveIterations; ++r) {
-            solveJointsOf(step, step.jointOrder, true);
+            if (r == 0) { // the extra sweeps are the contacts' (SolverStep)
+                solveJointsOf(step, step.jointOrder, true);
+            }
             solveContacts(step.constraints, step.states, invH, true, def.contactPushMaxSpeed,
                           backward, reversePoints);
         }
@@ -174,7 +176,9 @@ void solveSoftStep(const SolverStep& step) {
         // cards (0.002 x 0.4 m cards) swayed 3-5 mm to one side as its contacts took the load,
         // and each swing slipped the top pair a little at its apex until it fell.
         for (int r = 0; r <= relaxIterations; ++r) {
-            solveJointsOf(step, step.jointOrder, false);
+            if (r <= def.relaxIterations) {
+                solveJointsOf(step, step.jointOrder, false);
+            }
             solveContacts(step.constraints, step.states, invH, false, def.contactPushMaxSpeed,
                           !backward, reversePoints);
         }
@@ -197,13 +201,17 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
         warmStartJointsOf(step, blockJoints);
         warmStartWide(wide, firstLevel, endLevel, step.states);
         for (int r = 0; r <= step.extraSolveIterations; ++r) {
-            solveJointsOf(step, blockJoints, true);
+            if (r == 0) { // the extra sweeps are the contacts' (SolverStep)
+                solveJointsOf(step, blockJoints, true);
+            }
             solveWide(wide, firstLevel, endLevel, step.states, invH, true,
                       def.contactPushMaxSpeed, backward, reversePoints);
         }
         integratePositions(step.states, bodies, h, def.maxLinearSpeed);
         for (int r = 0; r <= relaxIterations; ++r) {
-            solveJointsOf(step, blockJoints, false);
+            if (r <= def.relaxIterations) {
+                solveJointsOf(step, blockJoints, false);
+            }
             solveWide(wide, firstLevel, endLevel, step.states, invH, false,
                       def.contactPushMaxSpeed, !backward, reversePoints);
         }

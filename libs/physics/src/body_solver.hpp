@@ -30,7 +30,11 @@ struct SolverStep {
     PointJointGroups* pointJoints = nullptr; // set when there are joints
     // Soft step: biased solve sweeps per sub-step beyond the first, and relax sweeps on top of
     // def->relaxIterations (kPushOutSolveIterations and kPushOutRelaxIterations while shapes
-    // are pushed apart, see World::Impl::solve()).
+    // are pushed apart, see World::Impl::solve()). They are the contacts' only: the joints are
+    // solved and relaxed once per sub-step (plus def->relaxIterations) either way. A folding
+    // 400-link chain pushed some self-overlap apart in about one step in seven, and solving
+    // its joints in all 31 sweeps then doubled the chain's joint time, with no effect on any
+    // joint scenario of the validation (ragdoll, car, bridge: the same joint gaps).
     int extraSolveIterations = 0;
     int extraRelaxIterations = 0;
 };
