@@ -174,7 +174,9 @@ struct World::Impl {
     void destroyContact(int contactIndex, bool reportEnd);
     void solve(float dt);
     void scheduleWide(int constraintCount);
-    void solveContinuous(int simIndex);
+    // Time of impact for this step's fast bodies and bullets (continuous.cpp).
+    void solveContinuous();
+    void sweepBody(int simIndex);
     void updateSleep(float dt);
     // Fills hooks.moveEvents from this step's solver bodies (world_hooks.cpp).
     void collectMoveEvents(float dt);
