@@ -552,7 +552,7 @@ void World::Impl::solve(float dt) {
             }
         }
         // Field by field: a braced temporary is built on the stack and copied out in 16-byte
-        // loads that wait for its 4-byte stores (a store-forwarding stall, 2 % of the step).
+        // loads that wait for its 4-byte stores (a store-forwarding stall, about 1.5 % of the joint grid's step).
         BodyMoveEvent& event = moveEvents.emplace_back();
         event.body = bodyId(bs.bodyIndex);
         event.transform = b.transform;
