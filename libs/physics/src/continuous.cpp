@@ -24,21 +24,30 @@ Rot nlerp(Rot q1, Rot q2, float t) {
 
 } // namespace
 
-void World::Impl::solveContinuous(int simIndex) {
+void World::Impl::solveContinuous() {
+    // Decided from the step's own arrays (the extents and bullet flag copied at the start of
+    // the step), so the bodies that stay slow, nearly all of them, never read their world slot.
+    const std::size_t n = sim.sims.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        const detail::BodySim& bs = sim.sims[k];
+        if ((bs.flags & detail::kIsBullet) == 0) {
+            // Slow enough that no shape can pass through a static one within a step: the
+            // speculative contacts already cover it (Box2D v3's rule, safety factor 0.5).
+            float travel = length(bs.center - bs.center0) +
+                           std::abs(sim.states[k].deltaRotation.s) * bs.maxExtent;
+            if (travel < 0.5f * bs.minExtent) {
+                continue;
+            }
+        }
+        sweepBody(static_cast<int>(k));
+    }
+}
+
+void World::Impl::sweepBody(int simIndex) {
     detail::BodySim& bs = sim.sims[static_cast<std::size_t>(simIndex)];
-    const detail::BodyState& state = sim.states[static_cast<std::size_t>(simIndex)];
-    detail::Body& b = body(bs.bodyIndex);
+    const detail::Body& b = body(bs.bodyIndex);
     if (b.type != BodyType::Dynamic || b.headShape == kNullIndex) {
         return;
-    }
-    if (!b.motion.isBullet) {
-        // Slow enough that no shape can pass through a static one within a step: the
-        // speculative contacts already cover it (Box2D v3's rule, safety factor 0.5).
-        float travel = length(bs.center - bs.center0) +
-                       std::abs(state.deltaRotation.s) * b.motion.maxExtent;
-        if (travel < 0.5f * b.motion.minExtent) {
-            return;
-        }
     }
     if (!isFinite(bs.center) || !isFinite(bs.center0)) {
         return;

@@ -57,6 +57,7 @@ void World::Impl::wakeBody(int bodyIndex) {
 void World::Impl::updateSleep(float dt) {
     detail::Simulation& s = sim;
     const SolverDef& def = s.def;
+    s.sleptSims.clear();
     if (!def.enableSleep) {
         return;
     }
@@ -120,6 +121,7 @@ void World::Impl::updateSleep(float dt) {
         b.motion.awake = false;
         b.linearVelocity = {0.0f, 0.0f};
         b.angularVelocity = 0.0f;
+        s.sleptSims.push_back(i);
     }
 }
 

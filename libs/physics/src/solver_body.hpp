@@ -51,8 +51,10 @@ struct BodySim {
     float linearDamping = 0.0f;
     float angularDamping = 0.0f;
     float gravityScale = 1.0f;
-    // Largest distance from the centre of mass to a shape's surface, for continuous collision.
+    // Largest and smallest distance from the centre of mass to a shape's surface, for
+    // continuous collision (BodyMotion::maxExtent, minExtent).
     float maxExtent = 0.0f;
+    float minExtent = 0.0f;
     int bodyIndex = -1; // the world's body slot
     std::uint32_t flags = 0;
 };

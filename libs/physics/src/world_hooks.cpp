@@ -21,16 +21,25 @@ namespace check = detail::world_check;
 
 void World::Impl::collectMoveEvents(float dt) {
     std::vector<BodyMoveEvent>& events = hooks.moveEvents;
-    events.clear();
     if (dt <= 0.0f) {
+        events.clear();
         return;
     }
-    for (const detail::BodySim& bs : sim.sims) {
-        const detail::Body& b = body(bs.bodyIndex);
-        if (!b.alive || !b.enabled) {
-            continue; // disabled: reported in nonFiniteBodies() or outOfRangeBodies()
+    // solve() wrote one event per solver body it left enabled, in solver order (the disabled
+    // ones are reported in nonFiniteBodies() or outOfRangeBodies()); the bodies updateSleep()
+    // put to sleep are marked here. A solver body's event is its index less the disabled
+    // bodies before it.
+    const std::vector<int>& disabled = sim.disabledSims;
+    for (const int k : sim.sleptSims) {
+        std::size_t event = static_cast<std::size_t>(k);
+        if (!disabled.empty()) {
+            const auto at = std::lower_bound(disabled.begin(), disabled.end(), k);
+            if (at != disabled.end() && *at == k) {
+                continue;
+            }
+            event -= static_cast<std::size_t>(at - disabled.begin());
         }
-        events.push_back({bodyId(bs.bodyIndex), b.transform, !b.motion.awake});
+        events[event].fellAsleep = true;
     }
 }
 

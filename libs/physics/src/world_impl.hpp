@@ -174,9 +174,14 @@ struct World::Impl {
     void destroyContact(int contactIndex, bool reportEnd);
     void solve(float dt);
     void scheduleWide(int constraintCount);
-    void solveContinuous(int simIndex);
+    // Time of impact for this step's fast bodies and bullets (continuous.cpp): solveContinuous()
+    // picks them from the solver arrays, sweepBody() sweeps one (index in sims).
+    void solveContinuous();
+    void sweepBody(int simIndex);
+    // Puts resting islands to sleep; lists them in sim.sleptSims (island.cpp).
     void updateSleep(float dt);
-    // Fills hooks.moveEvents from this step's solver bodies (world_hooks.cpp).
+    // Completes hooks.moveEvents, which solve()'s write-back filled: marks the bodies
+    // updateSleep() put to sleep; clears them after a step of zero (world_hooks.cpp).
     void collectMoveEvents(float dt);
     // Re-mixes the materials and event switches of the shape's contacts after a setter.
     void refreshContactMaterials(int shapeIndex);

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <vector>
 
 namespace e2d::physics {
@@ -284,6 +285,46 @@ TEST(WorldHooks, MoveEventsListTheBodiesThatMovedWithTheirTransforms) {
         EXPECT_NE(e.body, resting);
     }
     (void)falling;
+}
+
+TEST(WorldHooks, MoveEventsSkipDisabledBodiesAndMarkSleepersInTheSameStep) {
+    // Resting bodies falling asleep interleaved with runaways leaving the coordinate range
+    // (one a step, so some leave in the step the others fall asleep): the events list the
+    // bodies awake before the step and still enabled after it, in creation order, each with
+    // its transform and whether it is asleep now.
+    World world{WorldDef{.gravity = {0.0f, 0.0f}}};
+    const float perStep = 400.0f * kDt;
+    std::vector<BodyId> bodies;
+    for (int j = 0; j < 60; ++j) {
+        bodies.push_back(makeBox(world, {3.0f * static_cast<float>(j), 0.0f}));
+        bodies.push_back(makeBox(world, {kHuge - (static_cast<float>(j) + 0.5f) * perStep,
+                                         2.0f * static_cast<float>(j)},
+                                 {400.0f, 0.0f}));
+    }
+    bool sawBoth = false;
+    for (int i = 0; i < 60; ++i) {
+        std::vector<BodyId> expected;
+        for (BodyId b : bodies) {
+            if (world.isBodyEnabled(b) && world.isAwake(b)) {
+                expected.push_back(b);
+            }
+        }
+        world.step(kDt);
+        std::erase_if(expected, [&](BodyId b) { return !world.isBodyEnabled(b); });
+        const std::span<const BodyMoveEvent> events = world.bodyMoveEvents();
+        ASSERT_EQ(events.size(), expected.size()) << i;
+        int asleep = 0;
+        for (std::size_t k = 0; k < events.size(); ++k) {
+            const BodyMoveEvent& e = events[k];
+            EXPECT_EQ(e.body, expected[k]) << i;
+            EXPECT_EQ(e.transform.p, world.transform(e.body).p) << i;
+            EXPECT_EQ(e.transform.q.s, world.transform(e.body).q.s) << i;
+            EXPECT_EQ(e.fellAsleep, !world.isAwake(e.body)) << i;
+            asleep += e.fellAsleep ? 1 : 0;
+        }
+        sawBoth = sawBoth || (asleep > 0 && !world.outOfRangeBodies().empty());
+    }
+    EXPECT_TRUE(sawBoth);
 }
 
 } // namespace
