@@ -132,6 +132,14 @@ float solvePositionsClassic(std::span<ContactConstraint> constraints, std::span<
             float k = effectiveMass(normal, prA, prB, c);
             float impulse = -correction * k;
             Vec2 p = impulse * normal;
+            // No body moves more than kMaxCorrection for one point. With an axis locked and no
+            // rotation, k can be huge while the free axis takes the whole shift: a normal a
+            // millionth of a radian off the locked axis asked for a slide of the overlap times
+            // a million (8 000 km in one step, a fuzz finding).
+            const float shift = std::max(length(scale(c.invMassA, p)), length(scale(c.invMassB, p)));
+            if (shift > kMaxCorrection) {
+                p *= kMaxCorrection / shift;
+            }
             sa->deltaPosition -= scale(c.invMassA, p);
             sa->deltaRotation = integrateRotation(sa->deltaRotation,
                                                   -c.invInertiaA * cross(prA, p));
