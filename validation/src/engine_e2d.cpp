@@ -128,7 +128,8 @@ std::string e2dNotes() {
         << " m/s; friction mixed as " << rule(d.frictionMixing) << ", restitution as "
         << rule(d.restitutionMixing) << "; soft step: contact stiffness " << d.contactHertz
         << " Hz, damping ratio " << d.contactDampingRatio << ", push-out at most "
-        << d.contactPushMaxSpeed << " m/s; linear speed capped at " << d.maxLinearSpeed
+        << d.contactPushMaxSpeed << " m/s, joints' rigid rows " << d.jointHertz << " Hz, damping ratio "
+        << d.jointDampingRatio << "; linear speed capped at " << d.maxLinearSpeed
         << " m/s; sleep after " << d.timeToSleep << " s below " << d.linearSleepTolerance
         << " m/s.";
     return out.str();

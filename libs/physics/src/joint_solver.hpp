@@ -20,12 +20,6 @@
 // joint_<type>.cpp.
 namespace e2d::physics::detail {
 
-// The rigid parts of every joint (a revolute's point, a limit reached, a prismatic's sideways
-// and angular constraints) are soft constraints of this stiffness and damping ratio at the
-// sub-step rate, as Box2D v3's.
-inline constexpr float kJointHertz = 60.0f;
-inline constexpr float kJointDampingRatio = 2.0f;
-
 // Laid out for the solver: what the per-sub-step passes read and write sits in the first two
 // cache lines (128 bytes), the definition and what prepareJoint() alone reads after them. A
 // big joint grid is bound by memory traffic, so this halves the lines each pass touches.
@@ -181,7 +175,10 @@ void storePointJointGroups(const PointJointGroups& groups, std::span<Joint> join
 struct JointStep {
     float h = 0.0f; // the (sub-)step the velocities act over
     float invH = 0.0f;
-    Softness jointSoftness{}; // the rigid parts' (kJointHertz) at h
+    // The rigid parts of every joint (a revolute's point, a limit reached, a prismatic's
+    // sideways and angular rows) are soft constraints of SolverDef::jointHertz and
+    // jointDampingRatio at the sub-step h, as Box2D v3's.
+    Softness jointSoftness{};
 };
 
 // One side of a joint at the step start, as prepareJoint() reads it.

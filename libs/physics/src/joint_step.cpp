@@ -57,7 +57,7 @@ void World::Impl::prepareJoints(float dt, float h) {
         reset();
         return;
     }
-    const detail::JointStep step{h, 1.0f / h, detail::makeSoftness(detail::kJointHertz, detail::kJointDampingRatio, h)};
+    const detail::JointStep step{h, 1.0f / h, detail::makeSoftness(s.def.jointHertz, s.def.jointDampingRatio, h)};
     auto viewOf = [&](const detail::Body& b) {
         detail::JointBodyView v;
         const int k = b.motion.solverIndex;

@@ -69,6 +69,8 @@ void validate(const SolverDef& def) {
     requireInterval("classicPositionBias", def.classicPositionBias, 0.0f, 1.0f);
     requirePositive("contactHertz", def.contactHertz);
     requireNonNegative("contactDampingRatio", def.contactDampingRatio);
+    requirePositive("jointHertz", def.jointHertz);
+    requireNonNegative("jointDampingRatio", def.jointDampingRatio);
     requirePositive("contactPushMaxSpeed", def.contactPushMaxSpeed);
     requireNonNegative("restitutionThreshold", def.restitutionThreshold);
     requirePositive("maxLinearSpeed", def.maxLinearSpeed);

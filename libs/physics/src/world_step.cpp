@@ -404,7 +404,7 @@ void World::Impl::solve(float dt) {
 
     const detail::JointStep jointStep{
         integrationStep, 1.0f / integrationStep,
-        detail::makeSoftness(detail::kJointHertz, detail::kJointDampingRatio, integrationStep)};
+        detail::makeSoftness(def.jointHertz, def.jointDampingRatio, integrationStep)};
     detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def,
                             joints, s.jointOrder, jointStep, &s.pointJoints};
     auto pushOutSweeps = [](detail::SolverStep& st, bool on) {

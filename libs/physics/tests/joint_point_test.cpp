@@ -3,6 +3,8 @@
 // own passes in slot order: the same bits.
 #include "../src/joint_solver.hpp"
 
+#include <e2d/physics/solver_def.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -109,7 +111,7 @@ void levelOrder(const Scene& s, std::vector<int>& slots, std::vector<int>& level
 // A soft step's joint passes: warm start, solve, two relaxations, twice.
 void runPasses(Scene& s, PointJointGroups& groups, std::span<const int> order) {
     const float h = 1.0f / 240.0f;
-    const JointStep step{h, 1.0f / h, makeSoftness(kJointHertz, kJointDampingRatio, h)};
+    const JointStep step{h, 1.0f / h, makeSoftness(physics::SolverDef{}.jointHertz, physics::SolverDef{}.jointDampingRatio, h)};
     for (int sub = 0; sub < 2; ++sub) {
         warmStartJoints(s.joints, groups, order, s.states);
         solveJoints(s.joints, groups, order, s.states, step, true);

@@ -191,6 +191,45 @@ TEST_P(RevoluteJoint, ALimitSwitchedOnAfterWholeTurnsSeesThem) {
     }
 }
 
+// The soft step's rigid joint rows are springs of SolverDef::jointHertz: a 5 kg ball hung
+// from a 0.05 kg link stretches their joint by about its load / (m (2 pi hertz)^2), m the
+// pair's reduced mass, so doubling the stiffness divides the stretch by four.
+TEST(RevoluteJointSoftness, JointHertzSetsTheStretchUnderLoad) {
+    auto stretchAt = [](float hertz) {
+        WorldDef def;
+        def.gravity = {0.0f, -10.0f};
+        def.solver.subSteps = 8;
+        def.solver.jointHertz = hertz;
+        World world(def);
+        BodyId top = addStatic(world, {0.0f, 0.0f});
+        BodyId link = addDisc(world, {0.0f, -0.5f}, 0.05f);
+        world.setMassData(link, {0.05f, {0.0f, 0.0f}, 1.0e-4f});
+        BodyId ball = addDisc(world, {0.0f, -1.0f}, 0.2f);
+        world.setMassData(ball, {5.0f, {0.0f, 0.0f}, 0.1f});
+        RevoluteJointDef upper;
+        upper.bodyA = top;
+        upper.bodyB = link;
+        upper.localAnchorB = {0.0f, 0.5f};
+        world.createJoint(upper);
+        RevoluteJointDef lower;
+        lower.bodyA = link;
+        lower.bodyB = ball;
+        lower.localAnchorA = {0.0f, -0.5f};
+        world.createJoint(lower);
+        run(world, 3.0f);
+        // The lower joint's gap: the link's bottom to the ball's centre.
+        const Vec2 linkEnd = transformPoint(world.transform(link), {0.0f, -0.5f});
+        return length(world.transform(ball).p - linkEnd);
+    };
+    const float reduced = 0.05f * 5.0f / 5.05f;
+    for (const float hertz : {60.0f, 120.0f}) {
+        const float omega = 2.0f * kPi * hertz;
+        const float expected = 5.0f * 10.0f / (reduced * omega * omega);
+        EXPECT_NEAR(stretchAt(hertz), expected, 0.05f * expected) << hertz << " Hz";
+    }
+    EXPECT_GT(stretchAt(60.0f), 3.0f * stretchAt(120.0f));
+}
+
 E2D_JOINT_MODES(RevoluteJoint);
 
 } // namespace

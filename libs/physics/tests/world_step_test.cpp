@@ -68,6 +68,13 @@ TEST(WorldStep, RejectsBadInputAndChangesNothing) {
     E2D_EXPECT_ERROR(World{def},
                      "physics::World::World(): def.solver.contactHertz must be finite and > 0, got -5");
     def = {};
+    def.solver.jointHertz = 0.0f;
+    E2D_EXPECT_ERROR(World{def},
+                     "physics::World::World(): def.solver.jointHertz must be finite and > 0, got 0");
+    def = {};
+    def.solver.jointDampingRatio = kNan;
+    E2D_EXPECT_ERROR(World{def}, "def.solver.jointDampingRatio must be finite and >= 0");
+    def = {};
     def.solver.timeToSleep = kNan;
     E2D_EXPECT_ERROR(World{def}, "def.solver.timeToSleep must be finite and > 0");
     BodyDef bd;
