@@ -176,6 +176,10 @@ void DynamicTree::insertDeferred() {
         rebuildAll(true);
         return;
     }
+    insertDeferredOneByOne();
+}
+
+void DynamicTree::insertDeferredOneByOne() {
     // insertLeaf() may reallocate nodes_, never deferred_.
     for (const int index : deferred_) {
         if (isDeferred(index)) {
@@ -621,16 +625,7 @@ void DynamicTree::rebuild() { rebuildAll(false); }
 void DynamicTree::rebuildAll(bool morton) {
     if (proxyCount_ < 3) {
         // Nothing to balance: only deferred leaves may need inserting.
-        if (deferredCount_ > 0) {
-            for (const int index : deferred_) {
-                if (isDeferred(index)) {
-                    nodes_[static_cast<std::size_t>(index)].parent = kNullProxy;
-                    insertLeaf(index);
-                }
-            }
-        }
-        deferred_.clear();
-        deferredCount_ = 0;
+        insertDeferredOneByOne();
         return;
     }
     // Collect the leaves (deferred ones too) and free every internal node.

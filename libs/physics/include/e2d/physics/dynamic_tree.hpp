@@ -203,6 +203,8 @@ private:
         return node.height == 0 && node.parent == kDeferredParent;
     }
     void compactDeferred();
+    // Inserts the deferred leaves one by one (insertLeaf()) and empties the deferred list.
+    void insertDeferredOneByOne();
     // Frees every internal node and builds the hierarchy over all leaves, deferred ones
     // included: binned SAH (rebuild()) or Morton order (insertDeferred()).
     void rebuildAll(bool morton);
