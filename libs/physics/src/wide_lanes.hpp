@@ -45,6 +45,21 @@ struct WideLanes<8> {
 // A static side (index -1) reads a resting state and writes nothing.
 inline const BodyState kStaticState{};
 
+// Where each of N lanes reads its body (a static side: a resting state) and writes it back
+// (a static side: `sink`, never read). Unconditional stores cost less than a branch per lane.
+// Plain code for every width: it inlines into the AVX2 kernels as into the others.
+template <int N>
+__attribute__((always_inline)) inline void lanesOf(const int (&index)[N], std::span<BodyState> states,
+                                                   BodyState& sink, const BodyState* (&in)[N],
+                                                   BodyState* (&out)[N]) {
+    for (int i = 0; i < N; ++i) {
+        const bool moving = index[i] >= 0;
+        BodyState* s = states.data() + (moving ? index[i] : 0);
+        in[i] = moving ? s : &kStaticState;
+        out[i] = moving ? s : &sink;
+    }
+}
+
 // BodyState is two 16-byte rows, {vx, vy, w, flags} and {dpx, dpy, qc, qs}: a lane's row is one
 // load, and rows transpose into lane vectors (and back) with shuffles only, which move bits
 // unchanged (flags included).
@@ -125,18 +140,6 @@ inline void storeRows(F c0, F c1, F c2, F c3, BodyState* const (&out)[N]) {
     }
 }
 
-// Where each lane reads its body (a static side: a resting state) and writes it back (a
-// static side: `sink`, never read). Unconditional stores cost less than a branch per lane.
-inline void lanesOf(const int (&index)[N], std::span<BodyState> states, BodyState& sink,
-                    const BodyState* (&in)[N], BodyState* (&out)[N]) {
-    for (int i = 0; i < N; ++i) {
-        const bool moving = index[i] >= 0;
-        BodyState* s = states.data() + (moving ? index[i] : 0);
-        in[i] = moving ? s : &kStaticState;
-        out[i] = moving ? s : &sink;
-    }
-}
-
 } // namespace lanes4
 
 #if defined(__x86_64__)
@@ -186,18 +189,6 @@ E2D_AVX2_FN void storeRows(F c0, F c1, F c2, F c3, BodyState* const (&out)[N]) {
     for (int i = 0; i < 4; ++i) {
         storeRow(*out[i], __builtin_shufflevector(rows[i], rows[i], 0, 1, 2, 3));
         storeRow(*out[i + 4], __builtin_shufflevector(rows[i], rows[i], 4, 5, 6, 7));
-    }
-}
-
-// Where each lane reads its body (a static side: a resting state) and writes it back (a
-// static side: `sink`, never read). Unconditional stores cost less than a branch per lane.
-E2D_AVX2_FN void lanesOf(const int (&index)[N], std::span<BodyState> states, BodyState& sink,
-                         const BodyState* (&in)[N], BodyState* (&out)[N]) {
-    for (int i = 0; i < N; ++i) {
-        const bool moving = index[i] >= 0;
-        BodyState* s = states.data() + (moving ? index[i] : 0);
-        in[i] = moving ? s : &kStaticState;
-        out[i] = moving ? s : &sink;
     }
 }
 
