@@ -144,16 +144,26 @@ TEST_P(RevoluteJoint, SpringOscillatesAtItsFrequency) {
     EXPECT_NEAR(period, 1.0, 0.02);
 }
 
-// A joint angle is followed through whole turns.
-TEST_P(RevoluteJoint, AngleCountsWholeTurns) {
-    World world(worldDef({0.0f, 0.0f}));
+// A disc hinged at its centre to the ground (no gravity), spinning at `speed` rad/s.
+struct SpinningDisc {
+    BodyId disc;
+    JointId joint;
+};
+SpinningDisc addSpinningDisc(World& world, float speed) {
     BodyId ground = addStatic(world);
     BodyId disc = addDisc(world, {0.0f, 0.0f}, 0.5f);
     RevoluteJointDef def;
     def.bodyA = ground;
     def.bodyB = disc;
     JointId joint = world.createJoint(def);
-    world.setAngularVelocity(disc, 2.0f * kPi);
+    world.setAngularVelocity(disc, speed);
+    return {disc, joint};
+}
+
+// A joint angle is followed through whole turns.
+TEST_P(RevoluteJoint, AngleCountsWholeTurns) {
+    World world(worldDef({0.0f, 0.0f}));
+    const JointId joint = addSpinningDisc(world, 2.0f * kPi).joint;
     run(world, 2.0f);
     EXPECT_NEAR(world.jointValue(joint), 4.0f * kPi, 0.05f);
 }
@@ -166,13 +176,7 @@ TEST_P(RevoluteJoint, ALimitSwitchedOnAfterWholeTurnsSeesThem) {
     for (const float speed : {1.0f * kPi, 6.0f * kPi, 20.0f * kPi}) {
         SCOPED_TRACE(speed);
         World world(worldDef({0.0f, 0.0f}));
-        BodyId ground = addStatic(world);
-        BodyId disc = addDisc(world, {0.0f, 0.0f}, 0.5f);
-        RevoluteJointDef def;
-        def.bodyA = ground;
-        def.bodyB = disc;
-        JointId joint = world.createJoint(def);
-        world.setAngularVelocity(disc, speed);
+        const auto [disc, joint] = addSpinningDisc(world, speed);
         // The disc's turn, followed step by step here (the integration turns a body by a
         // little less than w h per sub-step).
         float turned = 0.0f;
