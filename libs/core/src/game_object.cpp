@@ -23,30 +23,82 @@ Logger* GameObject::logger() const noexcept {
 
 // Transform ------------------------------------------------------------------------------
 
-void GameObject::setPosition(glm::vec3 position) noexcept {
+std::string GameObject::describe() const {
+    if (!name_.empty()) {
+        return "object " + detail::quoted(name_);
+    }
+    if (!tag_.empty()) {
+        return "object tagged " + detail::quoted(tag_);
+    }
+    return "object " + std::to_string(id_.index);
+}
+
+namespace {
+
+bool finite(glm::vec2 v) noexcept {
+    return std::isfinite(v.x) && std::isfinite(v.y);
+}
+
+std::string formatVector(glm::vec2 v) {
+    return "(" + detail::formatNumber(v.x) + ", " + detail::formatNumber(v.y) + ")";
+}
+
+} // namespace
+
+void GameObject::refuseNonFinite(const char* function, const char* what, const std::string& value) const {
+    throw Error(std::string("core::GameObject::") + function + "(): " + describe() + " got " + what + " " + value +
+                "; it must be finite");
+}
+
+void GameObject::setPosition(glm::vec3 position) {
+    if (!finite(glm::vec2(position)) || !std::isfinite(position.z)) {
+        refuseNonFinite("setPosition", "position",
+                        "(" + detail::formatNumber(position.x) + ", " + detail::formatNumber(position.y) + ", " +
+                            detail::formatNumber(position.z) + ")");
+    }
     position_ = position;
     localDirty_ = true;
     markWorldDirty();
 }
 
-void GameObject::setPosition(glm::vec2 position) noexcept {
+void GameObject::setPosition(glm::vec2 position) {
+    if (!finite(position)) {
+        refuseNonFinite("setPosition", "position", formatVector(position));
+    }
     setPosition(glm::vec3(position, position_.z));
 }
 
-void GameObject::translate(glm::vec2 delta) noexcept {
-    setPosition(glm::vec3(position_.x + delta.x, position_.y + delta.y, position_.z));
+void GameObject::translate(glm::vec2 delta) {
+    const glm::vec2 moved(position_.x + delta.x, position_.y + delta.y);
+    if (!finite(moved)) {
+        refuseNonFinite("translate", "delta", formatVector(delta) + " (new position " + formatVector(moved) + ")");
+    }
+    setPosition(glm::vec3(moved, position_.z));
 }
 
-void GameObject::setScale(glm::vec2 scale) noexcept {
+void GameObject::setScale(glm::vec2 scale) {
+    if (!finite(scale)) {
+        refuseNonFinite("setScale", "scale", formatVector(scale));
+    }
     scale_ = scale;
     localDirty_ = true;
     markWorldDirty();
 }
 
-void GameObject::setOrientation(float radians) noexcept {
+void GameObject::setOrientation(float radians) {
+    if (!std::isfinite(radians)) {
+        refuseNonFinite("setOrientation", "orientation", detail::formatNumber(radians));
+    }
     orientation_ = radians;
     localDirty_ = true;
     markWorldDirty();
+}
+
+void GameObject::rotate(float radians) {
+    if (!std::isfinite(orientation_ + radians)) {
+        refuseNonFinite("rotate", "angle", detail::formatNumber(radians));
+    }
+    setOrientation(orientation_ + radians);
 }
 
 void GameObject::markWorldDirty() const noexcept {
@@ -104,8 +156,7 @@ bool GameObject::isAncestorOf(const GameObject& other) const noexcept {
 
 void GameObject::addChild(GameObject& child) {
     if (&child == this) {
-        throw Error("core::GameObject::addChild(): object " + std::to_string(id_.index) +
-                    " cannot be its own child");
+        throw Error("core::GameObject::addChild(): " + describe() + " cannot be its own child");
     }
     if (child.scene_ != scene_) {
         throw Error("core::GameObject::addChild(): object " + std::to_string(child.id_.index) +

@@ -7,6 +7,7 @@
 #include "format.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 
 namespace e2d::core {
@@ -24,7 +25,11 @@ private:
     Scene& scene_;
 };
 
-Scene::Scene() = default;
+Scene::Scene() {
+    // Only needs to differ from the tag of the scene that ran before in the same place.
+    const auto address = reinterpret_cast<std::uintptr_t>(this);
+    tag_ = static_cast<std::uint32_t>((address >> 4) ^ (address >> 36)) | 0x80000000u;
+}
 
 Scene::~Scene() = default;
 
@@ -40,7 +45,7 @@ GameObject& Scene::createGameObject() {
         slots_.emplace_back();
     }
     Slot& slot = slots_[index];
-    slot.object.reset(new GameObject(*this, GameObjectId{index, slot.generation}));
+    slot.object.reset(new GameObject(*this, GameObjectId{index, slot.generation, tag_}));
     pendingAdd_.push_back(slot.object.get());
     return *slot.object;
 }
@@ -66,7 +71,7 @@ bool Scene::destroyGameObject(GameObjectId id) {
 }
 
 GameObject* Scene::find(GameObjectId id) const noexcept {
-    if (id.isNull() || id.index >= slots_.size()) {
+    if (id.isNull() || id.scene != tag_ || id.index >= slots_.size()) {
         return nullptr;
     }
     const Slot& slot = slots_[id.index];
@@ -137,6 +142,14 @@ void Scene::freeSlot(GameObject& object) {
 void Scene::attachHost(SceneHost* host, std::string name) {
     host_ = host;
     name_ = std::move(name);
+    if (host != nullptr) {
+        tag_ = host->nextSceneTag();
+        for (Slot& slot : slots_) {
+            if (slot.object) {
+                slot.object->id_.scene = tag_;
+            }
+        }
+    }
 }
 
 Logger* Scene::logger() const noexcept {

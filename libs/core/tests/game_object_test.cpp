@@ -10,6 +10,8 @@
 
 #include <glm/vec4.hpp>
 
+#include <cmath>
+#include <limits>
 #include <numbers>
 
 using e2d::core::Component;
@@ -208,6 +210,50 @@ TEST(GameObjectTransform, ReparentingKeepsTheLocalTransform) {
     first.addChild(child);
     child.setParent(nullptr);
     expectNear(glm::vec2(child.worldPosition()), {1.0f, 0.0f});
+}
+
+TEST(GameObjectTransform, NonFiniteValuesAreRefusedAtTheSetterNamingTheObject) {
+    constexpr float kNan = std::numeric_limits<float>::quiet_NaN();
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    Scene scene;
+    GameObject& crate = scene.createGameObject();
+    crate.setName("crate");
+    crate.setPosition(glm::vec3(1.0f, 2.0f, 3.0f));
+    crate.setScale(glm::vec2(2.0f, 0.5f));
+    crate.setOrientation(0.25f);
+
+    EXPECT_THAT([&] { crate.setPosition(glm::vec2(kNan, 0.0f)); },
+                ThrowsMessage<Error>("core::GameObject::setPosition(): object 'crate' got position (nan, 0); "
+                                     "it must be finite"));
+    EXPECT_THAT([&] { crate.setPosition(glm::vec3(0.0f, 0.0f, -kInf)); },
+                ThrowsMessage<Error>("core::GameObject::setPosition(): object 'crate' got position (0, 0, -inf); "
+                                     "it must be finite"));
+    EXPECT_THAT([&] { crate.translate({kInf, 1.0f}); },
+                ThrowsMessage<Error>("core::GameObject::translate(): object 'crate' got delta (inf, 1) "
+                                     "(new position (inf, 3)); it must be finite"));
+    // A scale is reported as a scale, not as a bad rotation further down.
+    EXPECT_THAT([&] { crate.setScale(kNan); },
+                ThrowsMessage<Error>("core::GameObject::setScale(): object 'crate' got scale (nan, nan); "
+                                     "it must be finite"));
+    EXPECT_THAT([&] { crate.setOrientation(kInf); },
+                ThrowsMessage<Error>("core::GameObject::setOrientation(): object 'crate' got orientation inf; "
+                                     "it must be finite"));
+    EXPECT_THAT([&] { crate.rotate(kNan); },
+                ThrowsMessage<Error>("core::GameObject::rotate(): object 'crate' got angle nan; it must be finite"));
+    // Nothing changed.
+    expectNear(crate.position(), {1.0f, 2.0f, 3.0f});
+    expectNear(crate.scale(), {2.0f, 0.5f});
+    EXPECT_FLOAT_EQ(crate.orientation(), 0.25f);
+    EXPECT_TRUE(std::isfinite(crate.worldTransform()[3][0]));
+
+    // Without a name the tag names the object, without either its index.
+    GameObject& coin = scene.createGameObject();
+    coin.setTag("coin");
+    EXPECT_THAT([&] { coin.setScale({1.0f, kInf}); },
+                ThrowsMessage<Error>(HasSubstr("core::GameObject::setScale(): object tagged 'coin' got scale (1, inf)")));
+    GameObject& plain = scene.createGameObject();
+    EXPECT_THAT([&] { plain.setPosition(glm::vec2(kNan)); },
+                ThrowsMessage<Error>(HasSubstr("core::GameObject::setPosition(): object 2 got position (nan, nan)")));
 }
 
 // Hierarchy ------------------------------------------------------------------------------

@@ -185,3 +185,23 @@ TEST_F(SceneDirectorTest, ScenesFindTheirSystemsByType) {
     EXPECT_EQ(hostless.findSystem<ClearCounter>(), nullptr);
     EXPECT_THROW(static_cast<void>(hostless.system<ClearCounter>()), e2d::core::Error);
 }
+
+TEST_F(SceneDirectorTest, IdKeptFromThePreviousSceneIsRefusedByTheNextOne) {
+    director.start("Menu");
+    ASSERT_EQ(director.scene()->gameObjects().size(), 1u);
+    const e2d::core::GameObjectId kept = director.scene()->gameObjects()[0]->id();
+    director.changeToScene("Level");
+    director.applyPendingChange();
+    Scene& level = *director.scene();
+    // The level's first object has the same slot and generation as the menu's did...
+    ASSERT_EQ(level.gameObjects().size(), 1u);
+    const e2d::core::GameObjectId fresh = level.gameObjects()[0]->id();
+    EXPECT_EQ(fresh.index, kept.index);
+    EXPECT_EQ(fresh.generation, kept.generation);
+    // ...but the old id is refused like a stale one.
+    EXPECT_NE(fresh, kept);
+    EXPECT_EQ(level.find(kept), nullptr);
+    EXPECT_FALSE(level.destroyGameObject(kept));
+    EXPECT_FALSE(level.gameObjects()[0]->isPendingDestroy());
+    EXPECT_EQ(level.find(fresh), level.gameObjects()[0]);
+}

@@ -306,8 +306,30 @@ TEST(Scene, NullAndOutOfRangeIdsFindNothing) {
     scene.createGameObject();
     EXPECT_TRUE(GameObjectId{}.isNull());
     EXPECT_EQ(scene.find(GameObjectId{}), nullptr);
-    EXPECT_EQ(scene.find(GameObjectId{57, 1}), nullptr);
+    EXPECT_EQ(scene.find(GameObjectId{57, 1, scene.tag()}), nullptr);
     EXPECT_FALSE(scene.destroyGameObject(GameObjectId{}));
+}
+
+TEST(Scene, IdOfAnotherSceneIsRefused) {
+    TestHost host;
+    Scene one;
+    one.attachHost(&host, "one");
+    const GameObjectId early = one.createGameObject().id(); // created before the next scene's host
+    Scene two;
+    GameObject& before = two.createGameObject(); // retagged by attachHost
+    two.attachHost(&host, "two");
+    EXPECT_NE(one.tag(), two.tag());
+    EXPECT_EQ(early.index, before.id().index);
+    EXPECT_EQ(early.generation, before.id().generation);
+    EXPECT_EQ(two.find(early), nullptr);
+    EXPECT_FALSE(two.destroyGameObject(early));
+    EXPECT_EQ(two.find(before.id()), &before);
+    EXPECT_NE(one.find(early), nullptr);
+
+    Scene bare; // no host: a tag of its own all the same
+    EXPECT_NE(bare.tag(), 0u);
+    EXPECT_EQ(bare.find(bare.createGameObject().id())->scene().tag(), bare.tag());
+    EXPECT_EQ(bare.find(early), nullptr);
 }
 
 TEST(Scene, DestroyRejectsObjectsOfAnotherScene) {

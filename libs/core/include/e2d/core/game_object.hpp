@@ -77,23 +77,28 @@ public:
 
     // Transform ---------------------------------------------------------------------------
 
+    // The setters refuse NaN and infinite values with core::Error naming the object (its
+    // name, else its tag, else its index), the setter and the value, so a bad value fails
+    // where it is made instead of later in the renderer or physics. The object is unchanged.
+
     /// Position relative to the parent; z is the draw order. Default (0, 0, 0).
     [[nodiscard]] glm::vec3 position() const noexcept { return position_; }
-    void setPosition(glm::vec3 position) noexcept;
+    void setPosition(glm::vec3 position);
     /// Sets x and y, keeps z.
-    void setPosition(glm::vec2 position) noexcept;
+    void setPosition(glm::vec2 position);
     /// Adds `delta` to x and y.
-    void translate(glm::vec2 delta) noexcept;
+    void translate(glm::vec2 delta);
 
-    /// Scale relative to the parent. Default (1, 1).
+    /// Scale relative to the parent. Default (1, 1). Zero and negative scales are allowed
+    /// (negative mirrors).
     [[nodiscard]] glm::vec2 scale() const noexcept { return scale_; }
-    void setScale(glm::vec2 scale) noexcept;
-    void setScale(float uniform) noexcept { setScale(glm::vec2(uniform)); }
+    void setScale(glm::vec2 scale);
+    void setScale(float uniform) { setScale(glm::vec2(uniform)); }
 
     /// Radians, counter-clockwise positive, relative to the parent. Default 0.
     [[nodiscard]] float orientation() const noexcept { return orientation_; }
-    void setOrientation(float radians) noexcept;
-    void rotate(float radians) noexcept { setOrientation(orientation_ + radians); }
+    void setOrientation(float radians);
+    void rotate(float radians);
 
     /// T(position) * R(orientation) * S(scale).
     [[nodiscard]] const glm::mat4& localTransform() const;
@@ -121,6 +126,10 @@ public:
     void setParent(GameObject* parent);
     /// True if `other` is below this object in the hierarchy (not counting itself).
     [[nodiscard]] bool isAncestorOf(const GameObject& other) const noexcept;
+
+    /// "object 'name'", else "object tagged 'tag'", else "object <index>": how messages
+    /// about this object name it.
+    [[nodiscard]] std::string describe() const;
 
     // Components --------------------------------------------------------------------------
 
@@ -174,6 +183,7 @@ private:
     // Tells the scene this object has queued component changes, so beginFrame() visits
     // only such objects.
     void queueComponentChange();
+    [[noreturn]] void refuseNonFinite(const char* function, const char* what, const std::string& value) const;
     void markWorldDirty() const noexcept;
     void detachFromParent() noexcept;
 

@@ -68,8 +68,13 @@ public:
 
     // Host services -----------------------------------------------------------------------
 
-    /// Set by the runner before `dispatchInitialize()`. `name` is the registry name.
+    /// Set by the runner before `dispatchInitialize()`. `name` is the registry name. Takes a
+    /// new tag from the host (SceneHost::nextSceneTag()), also for objects already created.
     void attachHost(SceneHost* host, std::string name = {});
+    /// Written into every GameObjectId of this scene; `find()` refuses ids with another tag.
+    /// A scene run by a host numbers its scenes 1, 2, 3, ...; a scene without a host has a tag
+    /// derived from its address with the top bit set (never 0, no global counter).
+    [[nodiscard]] std::uint32_t tag() const noexcept { return tag_; }
     [[nodiscard]] SceneHost* host() const noexcept { return host_; }
     [[nodiscard]] const std::string& name() const noexcept { return name_; }
     /// The host's logger, or nullptr without a host.
@@ -204,6 +209,7 @@ private:
 
     SceneHost* host_ = nullptr;
     std::string name_;
+    std::uint32_t tag_ = 0;
     std::vector<Slot> slots_;
     std::vector<std::uint32_t> freeSlots_;
     std::vector<GameObject*> objects_;

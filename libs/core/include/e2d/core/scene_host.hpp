@@ -3,6 +3,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <cstdint>
 #include <span>
 #include <string_view>
 
@@ -32,10 +33,17 @@ public:
     /// find through `Scene::system<T>()`. None by default.
     [[nodiscard]] virtual std::span<System* const> systems() const { return {}; }
 
+    /// A tag for the next scene attached to this host (1, 2, 3, ...), which Scene::attachHost()
+    /// writes into the ids of its objects so that ids of one scene are refused by the next.
+    [[nodiscard]] std::uint32_t nextSceneTag() noexcept { return ++scenesAttached_; }
+
 protected:
     SceneHost() = default;
     SceneHost(const SceneHost&) = default;
     SceneHost& operator=(const SceneHost&) = default;
+
+private:
+    std::uint32_t scenesAttached_ = 0;
 };
 
 } // namespace e2d::core
