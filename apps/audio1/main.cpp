@@ -12,6 +12,7 @@
 #include <e2d/core/scene.hpp>
 #include <e2d/engine/game.hpp>
 #include <e2d/engine/game_system.hpp>
+#include <e2d/input/event.hpp>
 #include <e2d/render/drawer.hpp>
 #include <e2d/render/renderer.hpp>
 #include <e2d/render/sprite_renderer.hpp>
@@ -50,7 +51,8 @@ void drawDistances(render::Drawer& draw, const audio::SpatialDef& spatial, glm::
     draw.circle(listener, 8.0f, kGrey, 2.0f);
 }
 
-class Audio1Scene : public core::Scene {
+class Audio1Scene : public core::Scene,
+                    public core::Handles<input::MouseButtonDown, input::MouseButtonUp, input::MouseMoved> {
 protected:
     void onInitialize() override {
         auto& game = system<engine::GameSystem>();
@@ -78,22 +80,18 @@ protected:
         info_ = info.addComponent<render::TextLabel>(label);
     }
 
-    void onMouseButtonDown(int button, glm::vec2 screen, glm::vec2 world) override {
-        static_cast<void>(screen);
+    void on(const input::MouseButtonDown& click) override {
         const glm::vec2 at{source_->position()};
-        if (button == 0 && glm::distance(world, at) <= kSourceRadius * 1.5f) {
+        if (click.button == input::MouseButton::Left && glm::distance(click.world, at) <= kSourceRadius * 1.5f) {
             dragging_ = true;
-            grab_ = at - world;
+            grab_ = at - click.world;
         }
     }
-    void onMouseButtonUp(int button, glm::vec2 screen, glm::vec2 world) override {
-        static_cast<void>(screen);
-        static_cast<void>(world);
-        if (button == 0) dragging_ = false;
+    void on(const input::MouseButtonUp& release) override {
+        if (release.button == input::MouseButton::Left) dragging_ = false;
     }
-    void onMouseMove(glm::vec2 screen, glm::vec2 world) override {
-        static_cast<void>(screen);
-        if (dragging_) source_->setPosition(world + grab_);
+    void on(const input::MouseMoved& mouse) override {
+        if (dragging_) source_->setPosition(mouse.world + grab_);
     }
 
     void update(double dt) override {

@@ -34,8 +34,9 @@ public:
         static_cast<void>(dt);
         auto& game = scene()->system<engine::GameSystem>();
         render::Drawer& draw = game.renderer().drawer();
-        const glm::vec2 origin{gameObject()->worldPosition()};
-        const float angle = gameObject()->worldOrientation();
+        // Where the object is drawn this frame (between physics steps), as its sprites are.
+        const glm::vec2 origin{gameObject()->renderPosition()};
+        const float angle = gameObject()->renderOrientation();
         const float c = std::cos(angle);
         const float s = std::sin(angle);
         // Collider geometry is in the object's frame, in world units.

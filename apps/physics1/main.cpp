@@ -13,6 +13,7 @@
 #include <e2d/engine/game.hpp>
 #include <e2d/engine/game_system.hpp>
 #include <e2d/input/actions.hpp>
+#include <e2d/input/event.hpp>
 #include <e2d/physics/collider.hpp>
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
@@ -46,7 +47,7 @@ constexpr Mass kMasses[] = {
     {"heavy", 10.0f, {0.15f, 0.25f, 0.7f, 1.0f}},
 };
 
-class Physics1Scene : public core::Scene {
+class Physics1Scene : public core::Scene, public core::Handles<input::MouseMoved> {
 protected:
     void onInitialize() override {
         auto& camera = createGameObject();
@@ -86,10 +87,7 @@ protected:
     }
 
     // The mouse's world position: where new polygons go and where the cannon aims.
-    void onMouseMove(glm::vec2 screen, glm::vec2 world) override {
-        static_cast<void>(screen);
-        aim_ = world;
-    }
+    void on(const input::MouseMoved& mouse) override { aim_ = mouse.world; }
 
     void update(double dt) override {
         auto& game = system<engine::GameSystem>();

@@ -13,6 +13,7 @@
 #include <e2d/engine/game.hpp>
 #include <e2d/engine/game_system.hpp>
 #include <e2d/input/actions.hpp>
+#include <e2d/input/event.hpp>
 #include <e2d/physics/collider.hpp>
 #include <e2d/physics/rigidbody.hpp>
 #include <e2d/render/sprite_renderer.hpp>
@@ -42,7 +43,7 @@ constexpr Material kMaterials[] = {
     {"rough", 1.0f, 0.0f, {0.75f, 0.45f, 0.2f, 1.0f}, false},
 };
 
-class Physics2Scene : public core::Scene {
+class Physics2Scene : public core::Scene, public core::Handles<input::MouseMoved> {
 protected:
     void onInitialize() override {
         auto& camera = createGameObject();
@@ -101,10 +102,7 @@ protected:
         info_ = info.addComponent<render::TextLabel>(label);
     }
 
-    void onMouseMove(glm::vec2 screen, glm::vec2 world) override {
-        static_cast<void>(screen);
-        mouse_ = world;
-    }
+    void on(const input::MouseMoved& mouse) override { mouse_ = mouse.world; }
 
     void update(double dt) override {
         static_cast<void>(dt);

@@ -49,6 +49,7 @@ FrameInfo GameLoop::frame() {
     }
 
     if (scene != nullptr) {
+        scene->setFrameAlpha(stepper_.alpha()); // where objects are drawn (renderTransform())
         scene->dispatchUpdate(info.dt);
     }
     for (System* system : systems) {

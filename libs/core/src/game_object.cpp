@@ -9,11 +9,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 namespace e2d::core {
 
-GameObject::GameObject(Scene& scene, GameObjectId id) : scene_(&scene), id_(id) {}
+GameObject::GameObject(Scene& scene, GameObjectId id, std::uint32_t serial)
+    : scene_(&scene), id_(id), serial_(serial) {}
 
 GameObject::~GameObject() = default;
 
@@ -56,9 +58,13 @@ void GameObject::setPosition(glm::vec3 position) {
                         "(" + detail::formatNumber(position.x) + ", " + detail::formatNumber(position.y) + ", " +
                             detail::formatNumber(position.z) + ")");
     }
+    notePoseChange();
     position_ = position;
     localDirty_ = true;
     markWorldDirty();
+    if (!scene_->inFixedSteps_) {
+        snapRenderPose();
+    }
 }
 
 void GameObject::setPosition(glm::vec2 position) {
@@ -80,18 +86,27 @@ void GameObject::setScale(glm::vec2 scale) {
     if (!finite(scale)) {
         refuseNonFinite("setScale", "scale", formatVector(scale));
     }
+    notePoseChange();
     scale_ = scale;
     localDirty_ = true;
     markWorldDirty();
+    if (!scene_->inFixedSteps_) {
+        snapRenderPose();
+    }
 }
 
 void GameObject::setOrientation(float radians) {
     if (!std::isfinite(radians)) {
         refuseNonFinite("setOrientation", "orientation", detail::formatNumber(radians));
     }
+    notePoseChange();
     orientation_ = radians;
     localDirty_ = true;
     markWorldDirty();
+    // A change outside the fixed steps shows at once: nothing to draw in between.
+    if (!scene_->inFixedSteps_) {
+        snapRenderPose();
+    }
 }
 
 void GameObject::rotate(float radians) {
@@ -99,6 +114,69 @@ void GameObject::rotate(float radians) {
         refuseNonFinite("rotate", "angle", detail::formatNumber(radians));
     }
     setOrientation(orientation_ + radians);
+}
+
+// Drawing between fixed steps --------------------------------------------------------------
+
+void GameObject::notePoseChange() noexcept {
+    // The first change in a step keeps the pose the step started from.
+    if (stepStamp_ != scene_->fixedSteps_) {
+        stepStamp_ = scene_->fixedSteps_;
+        stepStartPosition_ = position_;
+        stepStartScale_ = scale_;
+        stepStartOrientation_ = orientation_;
+    }
+}
+
+void GameObject::snapRenderPose() noexcept {
+    stepStamp_ = scene_->fixedSteps_;
+    stepStartPosition_ = position_;
+    stepStartScale_ = scale_;
+    stepStartOrientation_ = orientation_;
+}
+
+bool GameObject::isInterpolated() const noexcept {
+    return stepStamp_ == scene_->fixedSteps_ && scene_->frameAlpha_ < 1.0 &&
+           (stepStartPosition_ != position_ || stepStartScale_ != scale_ || stepStartOrientation_ != orientation_);
+}
+
+glm::mat4 GameObject::renderTransform() const {
+    bool anyInterpolated = false;
+    for (const GameObject* o = this; o != nullptr && !anyInterpolated; o = o->parent_) {
+        anyInterpolated = o->isInterpolated();
+    }
+    if (!anyInterpolated) {
+        return worldTransform();
+    }
+    glm::mat4 local = localTransform();
+    if (isInterpolated()) {
+        const float a = static_cast<float>(scene_->frameAlpha_);
+        const glm::vec3 position = stepStartPosition_ + (position_ - stepStartPosition_) * a;
+        const glm::vec2 scale = stepStartScale_ + (scale_ - stepStartScale_) * a;
+        // The short way round: a body turning through +-pi does not spin back the long way.
+        const float turn = std::remainder(orientation_ - stepStartOrientation_, 2.0f * std::numbers::pi_v<float>);
+        local = composeLocal(position, stepStartOrientation_ + turn * a, scale);
+    }
+    return parent_ != nullptr ? parent_->renderTransform() * local : local;
+}
+
+glm::mat4 GameObject::composeLocal(glm::vec3 position, float orientation, glm::vec2 scale) noexcept {
+    const float c = std::cos(orientation);
+    const float s = std::sin(orientation);
+    glm::mat4 m(1.0f);
+    m[0] = glm::vec4(c * scale.x, s * scale.x, 0.0f, 0.0f);
+    m[1] = glm::vec4(-s * scale.y, c * scale.y, 0.0f, 0.0f);
+    m[3] = glm::vec4(position, 1.0f);
+    return m;
+}
+
+glm::vec3 GameObject::renderPosition() const {
+    return glm::vec3(renderTransform()[3]);
+}
+
+float GameObject::renderOrientation() const {
+    const glm::mat4 m = renderTransform();
+    return std::atan2(m[0][1], m[0][0]);
 }
 
 void GameObject::markWorldDirty() const noexcept {
@@ -115,12 +193,7 @@ void GameObject::markWorldDirty() const noexcept {
 
 const glm::mat4& GameObject::localTransform() const {
     if (localDirty_) {
-        const float c = std::cos(orientation_);
-        const float s = std::sin(orientation_);
-        local_ = glm::mat4(1.0f);
-        local_[0] = glm::vec4(c * scale_.x, s * scale_.x, 0.0f, 0.0f);
-        local_[1] = glm::vec4(-s * scale_.y, c * scale_.y, 0.0f, 0.0f);
-        local_[3] = glm::vec4(position_, 1.0f);
+        local_ = composeLocal(position_, orientation_, scale_);
         localDirty_ = false;
     }
     return local_;
@@ -251,6 +324,7 @@ void GameObject::applyPendingComponents() {
             component->initialized_ = false;
             component->onTerminate();
         }
+        scene_->removeReceivers(*component);
         component->onRemovedFromGameObject();
         components_.erase(std::find_if(components_.begin(), components_.end(), owns));
     }
@@ -258,6 +332,7 @@ void GameObject::applyPendingComponents() {
     for (auto& owned : additions) {
         Component* component = owned.get();
         components_.push_back(std::move(owned));
+        scene_->addReceivers(*component, serial_);
         component->onAddedToGameObject();
         if (initialized_) {
             component->initialized_ = true;
@@ -268,6 +343,8 @@ void GameObject::applyPendingComponents() {
 
 void GameObject::initialize() {
     initialized_ = true;
+    snapRenderPose(); // a new object appears where it was put
+
     for (const auto& component : components_) {
         if (!component->initialized_) {
             component->initialized_ = true;
@@ -287,22 +364,6 @@ void GameObject::terminate() {
             component->onTerminate();
         }
     }
-}
-
-void GameObject::dispatchCollisionEnter(const ContactInfo& contact) {
-    forEachComponent([&contact](Component& c) { c.onCollisionEnter(contact); });
-}
-
-void GameObject::dispatchCollisionExit(const ContactInfo& contact) {
-    forEachComponent([&contact](Component& c) { c.onCollisionExit(contact); });
-}
-
-void GameObject::dispatchTriggerEnter(const ContactInfo& contact) {
-    forEachComponent([&contact](Component& c) { c.onTriggerEnter(contact); });
-}
-
-void GameObject::dispatchTriggerExit(const ContactInfo& contact) {
-    forEachComponent([&contact](Component& c) { c.onTriggerExit(contact); });
 }
 
 bool GameObject::isActiveInHierarchy() const noexcept {

@@ -12,19 +12,6 @@
 
 namespace e2d::core {
 
-// Marks the scene as busy dispatching, so beginFrame()/dispatchTerminate() cannot run from
-// inside an event and change the lists being iterated.
-class Scene::DispatchGuard {
-public:
-    explicit DispatchGuard(Scene& scene) : scene_(scene) { ++scene_.dispatchDepth_; }
-    ~DispatchGuard() { --scene_.dispatchDepth_; }
-    DispatchGuard(const DispatchGuard&) = delete;
-    DispatchGuard& operator=(const DispatchGuard&) = delete;
-
-private:
-    Scene& scene_;
-};
-
 Scene::Scene() {
     // Only needs to differ from the tag of the scene that ran before in the same place.
     const auto address = reinterpret_cast<std::uintptr_t>(this);
@@ -45,7 +32,7 @@ GameObject& Scene::createGameObject() {
         slots_.emplace_back();
     }
     Slot& slot = slots_[index];
-    slot.object.reset(new GameObject(*this, GameObjectId{index, slot.generation, tag_}));
+    slot.object.reset(new GameObject(*this, GameObjectId{index, slot.generation, tag_}, objectsCreated_++));
     pendingAdd_.push_back(slot.object.get());
     return *slot.object;
 }
@@ -253,6 +240,9 @@ void Scene::destroyPending() {
         }
     }
     for (GameObject* object : batch) {
+        for (const auto& component : object->components_) {
+            removeReceivers(*component);
+        }
         freeSlot(*object);
     }
 }
@@ -262,6 +252,7 @@ void Scene::beginFrame() {
         throw Error("core::Scene::beginFrame(): called from inside an event of scene '" + name_ + "'");
     }
     DispatchGuard guard(*this);
+    inFixedSteps_ = false;
 
     destroyPending();
 
@@ -283,97 +274,113 @@ void Scene::beginFrame() {
     for (GameObject* object : joining) {
         object->initialize();
     }
+    compactChannels();
 }
 
-template <class SceneHandler, class ComponentHandler>
-void Scene::broadcast(SceneHandler&& sceneHandler, ComponentHandler&& componentHandler) {
+void Scene::dispatchFixedUpdate(double step) {
+    ++fixedSteps_;
+    inFixedSteps_ = true;
     DispatchGuard guard(*this);
-    sceneHandler();
-    for (GameObject* object : objects_) {
-        if (object->isActiveInHierarchy()) {
-            object->forEachComponent(componentHandler);
+    fixedUpdate(step);
+    deliver(fixedUpdates_, [step](const Receiver& r) { r.component->fixedUpdate(step); });
+}
+
+void Scene::setFrameAlpha(double alpha) noexcept {
+    frameAlpha_ = alpha > 0.0 ? std::min(alpha, 1.0) : 0.0; // NaN: 0
+}
+
+void Scene::dispatchUpdate(double dt) {
+    inFixedSteps_ = false;
+    DispatchGuard guard(*this);
+    update(dt);
+    deliver(updates_, [dt](const Receiver& r) { r.component->update(dt); });
+}
+
+// Receivers ------------------------------------------------------------------------------
+
+const Scene::Channel* Scene::findChannel(std::type_index event) const noexcept {
+    for (const Channel& channel : channels_) {
+        if (channel.event == event) {
+            return &channel;
+        }
+    }
+    return nullptr;
+}
+
+namespace {
+
+template <class Channel, class Receiver>
+void insertSorted(Channel& channel, const Receiver& receiver) {
+    auto& list = channel.receivers;
+    // Usually at the end: objects and components are attached in the order they get serials.
+    const auto at = std::upper_bound(list.begin(), list.end(), receiver.order,
+                                     [](std::uint64_t order, const Receiver& r) { return order < r.order; });
+    list.insert(at, receiver);
+}
+
+template <class Channel>
+void clearSlot(Channel& channel, std::uint64_t order) {
+    auto& list = channel.receivers;
+    const auto at = std::lower_bound(list.begin(), list.end(), order,
+                                     [](const auto& r, std::uint64_t o) { return r.order < o; });
+    if (at != list.end() && at->order == order && at->component != nullptr) {
+        at->component = nullptr;
+        channel.hasHoles = true;
+    }
+}
+
+} // namespace
+
+void Scene::addReceivers(Component& component, std::uint32_t objectSerial) {
+    component.deliveryOrder_ = (static_cast<std::uint64_t>(objectSerial) << 32) | componentsAttached_++;
+    const std::uint64_t order = component.deliveryOrder_;
+    if (component.hasUpdate_) {
+        insertSorted(updates_, Receiver{order, &component, &component});
+    }
+    if (component.hasFixedUpdate_) {
+        insertSorted(fixedUpdates_, Receiver{order, &component, &component});
+    }
+    for (const HandlerTable::Entry& entry : component.handledEvents()) {
+        auto channel = std::find_if(channels_.begin(), channels_.end(),
+                                    [&entry](const Channel& c) { return c.event == entry.event; });
+        if (channel == channels_.end()) {
+            channel = channels_.insert(channels_.end(), Channel{entry.event, {}, false});
+        }
+        insertSorted(*channel, Receiver{order, &component, entry.handler});
+    }
+}
+
+void Scene::removeReceivers(Component& component) {
+    const std::uint64_t order = component.deliveryOrder_;
+    if (component.hasUpdate_) {
+        clearSlot(updates_, order);
+    }
+    if (component.hasFixedUpdate_) {
+        clearSlot(fixedUpdates_, order);
+    }
+    for (const HandlerTable::Entry& entry : component.handledEvents()) {
+        for (Channel& channel : channels_) {
+            if (channel.event == entry.event) {
+                clearSlot(channel, order);
+            }
         }
     }
 }
 
-void Scene::dispatchFixedUpdate(double step) {
-    broadcast([&] { fixedUpdate(step); }, [&](Component& c) { c.fixedUpdate(step); });
-}
-
-void Scene::dispatchUpdate(double dt) {
-    broadcast([&] { update(dt); }, [&](Component& c) { c.update(dt); });
-}
-
-void Scene::dispatchButtonDown(int key) {
-    broadcast([&] { onButtonDown(key); }, [&](Component& c) { c.onButtonDown(key); });
-}
-
-void Scene::dispatchButtonUp(int key) {
-    broadcast([&] { onButtonUp(key); }, [&](Component& c) { c.onButtonUp(key); });
-}
-
-void Scene::dispatchControllerButtonDown(int controller, int button) {
-    broadcast([&] { onControllerButtonDown(controller, button); },
-              [&](Component& c) { c.onControllerButtonDown(controller, button); });
-}
-
-void Scene::dispatchControllerButtonUp(int controller, int button) {
-    broadcast([&] { onControllerButtonUp(controller, button); },
-              [&](Component& c) { c.onControllerButtonUp(controller, button); });
-}
-
-void Scene::dispatchMouseButtonDown(int button, glm::vec2 screen, glm::vec2 world) {
-    broadcast([&] { onMouseButtonDown(button, screen, world); },
-              [&](Component& c) { c.onMouseButtonDown(button, screen, world); });
-}
-
-void Scene::dispatchMouseButtonUp(int button, glm::vec2 screen, glm::vec2 world) {
-    broadcast([&] { onMouseButtonUp(button, screen, world); },
-              [&](Component& c) { c.onMouseButtonUp(button, screen, world); });
-}
-
-void Scene::dispatchMouseMove(glm::vec2 screen, glm::vec2 world) {
-    broadcast([&] { onMouseMove(screen, world); }, [&](Component& c) { c.onMouseMove(screen, world); });
-}
-
-void Scene::dispatchKeyDown(int key, int mods) {
-    broadcast([&] { onKeyDown(key, mods); }, [&](Component& c) { c.onKeyDown(key, mods); });
-}
-
-void Scene::dispatchKeyUp(int key, int mods) {
-    broadcast([&] { onKeyUp(key, mods); }, [&](Component& c) { c.onKeyUp(key, mods); });
-}
-
-void Scene::dispatchKeyRepeat(int key, int mods) {
-    broadcast([&] { onKeyRepeat(key, mods); }, [&](Component& c) { c.onKeyRepeat(key, mods); });
-}
-
-void Scene::dispatchTextInput(char32_t codepoint) {
-    broadcast([&] { onTextInput(codepoint); }, [&](Component& c) { c.onTextInput(codepoint); });
-}
-
-void Scene::dispatchScroll(glm::vec2 offset, glm::vec2 screen, glm::vec2 world) {
-    broadcast([&] { onScroll(offset, screen, world); },
-              [&](Component& c) { c.onScroll(offset, screen, world); });
-}
-
-void Scene::dispatchFocusChanged(bool focused) {
-    broadcast([&] { onFocusChanged(focused); }, [&](Component& c) { c.onFocusChanged(focused); });
-}
-
-void Scene::dispatchControllerConnected(int controller) {
-    broadcast([&] { onControllerConnected(controller); },
-              [&](Component& c) { c.onControllerConnected(controller); });
-}
-
-void Scene::dispatchControllerDisconnected(int controller) {
-    broadcast([&] { onControllerDisconnected(controller); },
-              [&](Component& c) { c.onControllerDisconnected(controller); });
-}
-
-void Scene::dispatchControllerAxis(int controller, int axis, float value) {
-    broadcast([&] { onControllerAxis(controller, axis, value); },
-              [&](Component& c) { c.onControllerAxis(controller, axis, value); });
+void Scene::compactChannels() {
+    const auto compact = [](Channel& channel) {
+        if (channel.hasHoles) {
+            auto& list = channel.receivers;
+            list.erase(std::remove_if(list.begin(), list.end(), [](const Receiver& r) { return r.component == nullptr; }),
+                       list.end());
+            channel.hasHoles = false;
+        }
+    };
+    compact(updates_);
+    compact(fixedUpdates_);
+    for (Channel& channel : channels_) {
+        compact(channel);
+    }
 }
 
 void Scene::dispatchTerminate() {
@@ -391,6 +398,9 @@ void Scene::dispatchTerminate() {
     pendingAdd_.clear();
     pendingDestroy_.clear();
     componentChanges_.clear();
+    updates_.receivers.clear();
+    fixedUpdates_.receivers.clear();
+    channels_.clear();
     for (Slot& slot : slots_) {
         if (slot.object) {
             freeSlot(*slot.object);

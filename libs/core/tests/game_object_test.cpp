@@ -256,6 +256,71 @@ TEST(GameObjectTransform, NonFiniteValuesAreRefusedAtTheSetterNamingTheObject) {
                 ThrowsMessage<Error>(HasSubstr("core::GameObject::setPosition(): object 2 got position (nan, nan)")));
 }
 
+TEST(GameObjectRenderPose, ChangesDuringFixedStepsAreDrawnBetweenStatesAndChildrenFollow) {
+    // Moves its object 10 units per fixed step, as a body's write-back does.
+    struct Mover : Component {
+        void fixedUpdate(double) override { gameObject()->translate({10.0f, 0.0f}); }
+    };
+    Scene scene;
+    GameObject& body = scene.createGameObject();
+    body.addComponent<Mover>();
+    GameObject& label = scene.createGameObject();
+    label.setPosition(glm::vec2{0.0f, 5.0f});
+    body.addChild(label);
+    GameObject& still = scene.createGameObject();
+    still.setPosition(glm::vec2{-3.0f, 0.0f});
+    scene.beginFrame();
+
+    scene.dispatchFixedUpdate(0.1); // body 0 -> 10
+    scene.setFrameAlpha(0.25);
+    expectNear(body.renderPosition(), {2.5f, 0.0f, 0.0f});
+    expectNear(label.renderPosition(), {2.5f, 5.0f, 0.0f}); // the child from the same pose
+    expectNear(still.renderPosition(), {-3.0f, 0.0f, 0.0f});
+    expectNear(body.worldPosition(), {10.0f, 0.0f, 0.0f}); // the object itself is where the step put it
+
+    scene.dispatchUpdate(0.1);
+    scene.dispatchFixedUpdate(0.1); // 10 -> 20
+    scene.dispatchFixedUpdate(0.1); // 20 -> 30: between the last two states only
+    scene.setFrameAlpha(0.5);
+    expectNear(label.renderPosition(), {25.0f, 5.0f, 0.0f});
+
+    // A frame without a step keeps interpolating the same two states.
+    scene.dispatchUpdate(0.1);
+    scene.setFrameAlpha(0.75);
+    expectNear(body.renderPosition(), {27.5f, 0.0f, 0.0f});
+
+    // Moved outside the steps (update, input): shown at once, children too.
+    body.setPosition(glm::vec2{100.0f, 0.0f});
+    expectNear(body.renderPosition(), {100.0f, 0.0f, 0.0f});
+    expectNear(label.renderPosition(), {100.0f, 5.0f, 0.0f});
+
+    // A step in which it does not move: drawn where it is.
+    body.removeComponent(body.getComponent<Mover>());
+    scene.beginFrame();
+    scene.dispatchFixedUpdate(0.1);
+    scene.setFrameAlpha(0.5);
+    expectNear(body.renderPosition(), {100.0f, 0.0f, 0.0f});
+}
+
+TEST(GameObjectRenderPose, RotationTakesTheShortWayAndAlphaOneIsTheWorldTransform) {
+    struct Turner : Component {
+        void fixedUpdate(double) override { gameObject()->setOrientation(-3.0f); }
+    };
+    Scene scene;
+    GameObject& o = scene.createGameObject();
+    o.setOrientation(3.0f);
+    o.addComponent<Turner>();
+    scene.beginFrame();
+    scene.dispatchFixedUpdate(0.1); // 3 -> -3: 0.28 rad through pi, not 6 rad back
+    scene.setFrameAlpha(0.5);
+    EXPECT_NEAR(std::abs(o.renderOrientation()), std::numbers::pi_v<float>, 1e-4f);
+    scene.setFrameAlpha(1.0);
+    EXPECT_EQ(o.renderTransform(), o.worldTransform());
+    o.snapRenderPose();
+    scene.setFrameAlpha(0.0);
+    EXPECT_EQ(o.renderTransform(), o.worldTransform());
+}
+
 // Hierarchy ------------------------------------------------------------------------------
 
 TEST(GameObjectHierarchy, RefusesCyclesAndSelf) {
@@ -483,41 +548,3 @@ TEST(GameObjectComponents, AddAndRemoveFromInsideUpdateAreSafe) {
     EXPECT_EQ(mutator->updates, 2);
 }
 
-TEST(GameObjectComponents, CollisionEventsReachEveryComponent) {
-    struct Listener : Component {
-        int enters = 0;
-        int exits = 0;
-        int triggerEnters = 0;
-        int triggerExits = 0;
-        const e2d::core::ContactInfo* last = nullptr;
-        void onCollisionEnter(const e2d::core::ContactInfo& c) override {
-            ++enters;
-            last = &c;
-        }
-        void onCollisionExit(const e2d::core::ContactInfo&) override { ++exits; }
-        void onTriggerEnter(const e2d::core::ContactInfo&) override { ++triggerEnters; }
-        void onTriggerExit(const e2d::core::ContactInfo&) override { ++triggerExits; }
-    };
-    Scene scene;
-    GameObject& o = scene.createGameObject();
-    GameObject& other = scene.createGameObject();
-    auto* a = o.addComponent<Listener>();
-    auto* b = o.addComponent<Listener>();
-    scene.beginFrame();
-
-    e2d::core::ContactInfo contact;
-    contact.pointCount = 1;
-    contact.points[0] = {{1.0f, 2.0f}, {0.0f, -1.0f}, -0.01f};
-    contact.other = &other;
-    o.dispatchCollisionEnter(contact);
-    o.dispatchCollisionExit(contact);
-    o.dispatchTriggerEnter(contact);
-    o.dispatchTriggerExit(contact);
-    for (const Listener* l : {a, b}) {
-        EXPECT_EQ(l->enters, 1);
-        EXPECT_EQ(l->exits, 1);
-        EXPECT_EQ(l->triggerEnters, 1);
-        EXPECT_EQ(l->triggerExits, 1);
-        EXPECT_EQ(l->last, &contact);
-    }
-}

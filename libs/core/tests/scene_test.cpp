@@ -17,6 +17,8 @@ using e2d::core::GameObject;
 using e2d::core::GameObjectId;
 using e2d::core::Scene;
 using e2d::core::test::EventLog;
+using e2d::core::test::Ping;
+using e2d::core::test::Pong;
 using e2d::core::test::Recorder;
 using e2d::core::test::TestHost;
 using testing::ElementsAre;
@@ -27,7 +29,7 @@ using testing::ThrowsMessage;
 namespace {
 
 // A scene that records its own events, and builds two objects in onInitialize.
-class RecordingScene : public Scene {
+class RecordingScene : public Scene, public e2d::core::Handles<Ping> {
 public:
     explicit RecordingScene(EventLog& log) : log_(log) {}
     GameObject* first = nullptr;
@@ -45,7 +47,7 @@ protected:
     void onTerminate() override { log_.add("scene", "term"); }
     void update(double) override { log_.add("scene", "update"); }
     void fixedUpdate(double) override { log_.add("scene", "fixed"); }
-    void onButtonDown(int) override { log_.add("scene", "buttonDown"); }
+    void on(const Ping&) override { log_.add("scene", "ping"); }
 
 private:
     EventLog& log_;
@@ -69,85 +71,105 @@ TEST(Scene, EventsGoSceneFirstThenObjectsThenComponentsInOrder) {
     log.clear();
     scene.dispatchFixedUpdate(0.01);
     scene.dispatchUpdate(0.02);
-    scene.dispatchButtonDown(32);
-    EXPECT_THAT(log.events, ElementsAre("scene:fixed", "a1:fixed", "a2:fixed", "b1:fixed",          //
-                                        "scene:update", "a1:update", "a2:update", "b1:update",      //
-                                        "scene:buttonDown", "a1:buttonDown", "a2:buttonDown", "b1:buttonDown"));
+    scene.dispatch(Ping{32});
+    EXPECT_THAT(log.events, ElementsAre("scene:fixed", "a1:fixed", "a2:fixed", "b1:fixed",     //
+                                        "scene:update", "a1:update", "a2:update", "b1:update", //
+                                        "scene:ping", "a1:ping", "a2:ping", "b1:ping"));
 }
 
-TEST(Scene, EveryInputEventIsForwarded) {
-    struct Input : Component {
-        std::vector<std::string> seen;
-        void onButtonUp(int key) override { seen.push_back("up" + std::to_string(key)); }
-        void onControllerButtonDown(int c, int b) override { seen.push_back("cdown" + std::to_string(c) + std::to_string(b)); }
-        void onControllerButtonUp(int c, int b) override { seen.push_back("cup" + std::to_string(c) + std::to_string(b)); }
-        void onMouseButtonDown(int b, glm::vec2 s, glm::vec2 w) override {
-            seen.push_back("mdown" + std::to_string(b) + std::to_string(int(s.x)) + std::to_string(int(w.y)));
-        }
-        void onMouseButtonUp(int b, glm::vec2, glm::vec2) override { seen.push_back("mup" + std::to_string(b)); }
-        void onMouseMove(glm::vec2 s, glm::vec2 w) override {
-            seen.push_back("move" + std::to_string(int(s.y)) + std::to_string(int(w.x)));
+TEST(Scene, AnEventReachesTheSceneThenOnlyTheComponentsThatHandleItsType) {
+    struct Both : Component, e2d::core::Handles<Ping, Pong> {
+        explicit Both(std::vector<std::string>& s) : seen(s) {}
+        std::vector<std::string>& seen;
+        void on(const Ping& p) override { seen.push_back("both:ping" + std::to_string(p.value)); }
+        void on(const Pong& p) override { seen.push_back("both:pong" + std::to_string(p.value)); }
+    };
+    // Two Handles bases on one class share one table.
+    struct Split : Component, e2d::core::Handles<Pong>, e2d::core::Handles<Ping> {
+        explicit Split(std::vector<std::string>& s) : seen(s) {}
+        std::vector<std::string>& seen;
+        void on(const Ping& p) override { seen.push_back("split:ping" + std::to_string(p.value)); }
+        void on(const Pong& p) override { seen.push_back("split:pong" + std::to_string(p.value)); }
+    };
+    struct PongOnly : Component, e2d::core::Handles<Pong> {
+        explicit PongOnly(std::vector<std::string>& s) : seen(s) {}
+        std::vector<std::string>& seen;
+        void on(const Pong& p) override { seen.push_back("pong:" + std::to_string(p.value)); }
+    };
+    struct PongScene : Scene, e2d::core::Handles<Pong> {
+        explicit PongScene(std::vector<std::string>& s) : seen(s) {}
+        std::vector<std::string>& seen;
+        void on(const Pong& p) override { seen.push_back("scene:pong" + std::to_string(p.value)); }
+    };
+    std::vector<std::string> seen;
+    PongScene scene(seen);
+    GameObject& first = scene.createGameObject();
+    first.addComponent<PongOnly>(seen);
+    first.addComponent<Component>(); // handles nothing
+    GameObject& second = scene.createGameObject();
+    second.addComponent<Both>(seen);
+    scene.beginFrame();
+    // Attached later, but its object came first: delivered in object order, then attachment.
+    first.addComponent<Split>(seen);
+    scene.beginFrame();
+
+    scene.dispatch(Ping{1});
+    scene.dispatch(Pong{2});
+    EXPECT_THAT(seen, ElementsAre("split:ping1", "both:ping1", //
+                                  "scene:pong2", "pong:2", "split:pong2", "both:pong2"));
+
+    // A removed component and a destroyed object receive nothing any more.
+    seen.clear();
+    first.removeComponent(first.getComponent<PongOnly>());
+    scene.destroyGameObject(second);
+    scene.beginFrame();
+    scene.dispatch(Pong{3});
+    EXPECT_THAT(seen, ElementsAre("scene:pong3", "split:pong3"));
+}
+
+TEST(Scene, AnObjectsOwnEventReachesItsHandlingComponentsOnly) {
+    struct Counter : Component, e2d::core::Handles<Ping> {
+        int pings = 0;
+        int last = 0;
+        void on(const Ping& p) override {
+            ++pings;
+            last = p.value;
         }
     };
     Scene scene;
-    auto* input = scene.createGameObject().addComponent<Input>();
+    GameObject& o = scene.createGameObject();
+    GameObject& other = scene.createGameObject();
+    auto* a = o.addComponent<Counter>();
+    o.addComponent<Component>();
+    auto* b = o.addComponent<Counter>();
+    auto* elsewhere = other.addComponent<Counter>();
     scene.beginFrame();
-    scene.dispatchButtonUp(7);
-    scene.dispatchControllerButtonDown(1, 2);
-    scene.dispatchControllerButtonUp(3, 4);
-    scene.dispatchMouseButtonDown(0, {5.0f, 6.0f}, {7.0f, 8.0f});
-    scene.dispatchMouseButtonUp(1, {}, {});
-    scene.dispatchMouseMove({1.0f, 2.0f}, {3.0f, 4.0f});
-    EXPECT_THAT(input->seen, ElementsAre("up7", "cdown12", "cup34", "mdown058", "mup1", "move23"));
+    o.dispatch(Ping{7});
+    o.setActive(false); // an object's own events (collisions) reach it even while inactive
+    o.dispatch(Ping{8});
+    EXPECT_EQ(a->pings, 2);
+    EXPECT_EQ(b->pings, 2);
+    EXPECT_EQ(a->last, 8);
+    EXPECT_EQ(elsewhere->pings, 0);
 }
 
-TEST(Scene, TheNewerInputEventsAreForwardedToTheSceneAndItsComponents) {
-    struct Seen {
-        std::vector<std::string> events;
+TEST(Scene, UpdateReachesOverridesInheritedFromAnIntermediateClass) {
+    struct Moving : Component {
+        int updates = 0;
+        int steps = 0;
+        void update(double) override { ++updates; }
+        void fixedUpdate(double) override { ++steps; }
     };
-    struct Input : Component {
-        explicit Input(Seen& s) : seen(s) {}
-        Seen& seen;
-        void onKeyDown(int k, int m) override { seen.events.push_back("c:kdown" + std::to_string(k) + "/" + std::to_string(m)); }
-        void onKeyUp(int k, int m) override { seen.events.push_back("c:kup" + std::to_string(k) + "/" + std::to_string(m)); }
-        void onKeyRepeat(int k, int m) override { seen.events.push_back("c:krep" + std::to_string(k) + "/" + std::to_string(m)); }
-        void onTextInput(char32_t cp) override { seen.events.push_back("c:text" + std::to_string(std::uint32_t(cp))); }
-        void onScroll(glm::vec2 o, glm::vec2 s, glm::vec2 w) override {
-            seen.events.push_back("c:scroll" + std::to_string(int(o.y)) + "," + std::to_string(int(s.x)) + "," +
-                                  std::to_string(int(w.y)));
-        }
-        void onFocusChanged(bool f) override { seen.events.push_back(std::string("c:focus") + (f ? "1" : "0")); }
-        void onControllerConnected(int c) override { seen.events.push_back("c:conn" + std::to_string(c)); }
-        void onControllerDisconnected(int c) override { seen.events.push_back("c:disc" + std::to_string(c)); }
-        void onControllerAxis(int c, int a, float v) override {
-            seen.events.push_back("c:axis" + std::to_string(c) + "," + std::to_string(a) + "," + std::to_string(int(v * 4)));
-        }
-    };
-    struct InputScene : Scene {
-        explicit InputScene(Seen& s) : seen(s) {}
-        Seen& seen;
-        void onKeyDown(int k, int) override { seen.events.push_back("s:kdown" + std::to_string(k)); }
-        void onTextInput(char32_t cp) override { seen.events.push_back("s:text" + std::to_string(std::uint32_t(cp))); }
-        void onControllerAxis(int c, int a, float) override {
-            seen.events.push_back("s:axis" + std::to_string(c) + "," + std::to_string(a));
-        }
-    };
-    Seen seen;
-    InputScene scene(seen);
-    scene.createGameObject().addComponent<Input>(seen);
+    struct Ship : Moving {}; // inherits both
+    Scene scene;
+    auto* ship = scene.createGameObject().addComponent<Ship>();
+    scene.createGameObject().addComponent<Component>();
     scene.beginFrame();
-    scene.dispatchKeyDown(65, 1);
-    scene.dispatchKeyRepeat(65, 3);
-    scene.dispatchKeyUp(65, 0);
-    scene.dispatchTextInput(U'\u00e9');
-    scene.dispatchScroll({0.0f, -2.0f}, {10.0f, 20.0f}, {30.0f, 40.0f});
-    scene.dispatchFocusChanged(false);
-    scene.dispatchControllerConnected(15);
-    scene.dispatchControllerDisconnected(3);
-    scene.dispatchControllerAxis(2, 5, 0.75f);
-    EXPECT_THAT(seen.events, ElementsAre("s:kdown65", "c:kdown65/1", "c:krep65/3", "c:kup65/0", "s:text233", "c:text233",
-                                         "c:scroll-2,10,40", "c:focus0", "c:conn15", "c:disc3", "s:axis2,5",
-                                         "c:axis2,5,3"));
+    scene.dispatchUpdate(0.1);
+    scene.dispatchFixedUpdate(0.1);
+    scene.dispatchFixedUpdate(0.1);
+    EXPECT_EQ(ship->updates, 1);
+    EXPECT_EQ(ship->steps, 2);
 }
 
 TEST(Scene, CreatedObjectJoinsAtTheStartOfTheNextFrame) {
@@ -465,9 +487,8 @@ TEST(Scene, InactiveObjectsAndTheirDescendantsGetNoFrameOrInputEvents) {
     EXPECT_FALSE(child.isActiveInHierarchy());
     scene.dispatchUpdate(0.02);
     scene.dispatchFixedUpdate(0.01);
-    scene.dispatchButtonDown(65);
-    EXPECT_THAT(log.events, ElementsAre("scene:update", "b1:update", "scene:fixed", "b1:fixed", "scene:buttonDown",
-                                        "b1:buttonDown"));
+    scene.dispatch(Ping{65});
+    EXPECT_THAT(log.events, ElementsAre("scene:update", "b1:update", "scene:fixed", "b1:fixed", "scene:ping", "b1:ping"));
 
     log.clear();
     scene.first->setActive(true);

@@ -19,8 +19,17 @@ struct EventLog {
     void clear() { events.clear(); }
 };
 
-/// Records its lifecycle and update events into an EventLog.
-class Recorder : public Component {
+/// A test event: any struct can be one (see handles.hpp).
+struct Ping {
+    int value = 0;
+};
+/// Another, that Recorder does not handle.
+struct Pong {
+    int value = 0;
+};
+
+/// Records its lifecycle, update and Ping events into an EventLog.
+class Recorder : public Component, public Handles<Ping> {
 public:
     Recorder(EventLog& log, std::string tag) : log_(log), tag_(std::move(tag)) {}
     ~Recorder() override { log_.add(tag_, "destroyed"); }
@@ -30,7 +39,7 @@ public:
     void onTerminate() override { log_.add(tag_, "term"); }
     void update(double) override { log_.add(tag_, "update"); }
     void fixedUpdate(double) override { log_.add(tag_, "fixed"); }
-    void onButtonDown(int) override { log_.add(tag_, "buttonDown"); }
+    void on(const Ping&) override { log_.add(tag_, "ping"); }
 
 private:
     EventLog& log_;

@@ -23,7 +23,6 @@
 
 #include "debug_draw.hpp"
 #include "game_state.hpp"
-#include "interpolator.hpp"
 #include "profile_overlay.hpp"
 
 #include <GLFW/glfw3.h>
@@ -228,7 +227,6 @@ struct Running {
     GameSystem game;
     core::SceneDirector director;
     input::InputSystem inputSystem;
-    detail::Interpolator interpolator;
     detail::ProfileOverlay overlay;
 
     Running(detail::GameState& state, const render::WindowDef& windowDef, const render::RendererDef& rendererDef,
@@ -402,7 +400,6 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
     state.physics = &r.physics;
     state.random = &r.random;
     state.director = &r.director;
-    state.interpolator = &r.interpolator;
     state.overlay = &r.overlay;
     r.overlay.setVisible(config.showProfile || options.profile);
 
@@ -434,7 +431,6 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
                              static_cast<float>(config.referenceWindowHeight)});
     camera.setFit(toScreenFit(config.screenFitMode));
     // The engine's own hooks (GameSystem::clear() adds them again after a scene change).
-    r.renderSystem.addHook(r.interpolator);
     r.renderSystem.addHook(r.overlay);
 
     r.director.addSystem(r.inputSystem);
@@ -454,8 +450,6 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
     int exitCode = kExitOk;
 
     const auto drawFrame = [&](double alpha) {
-        core::Scene* scene = r.director.scene();
-        r.interpolator.setFrame(scene, alpha);
         if (state.debugDraw) {
             detail::drawPhysics(r.physics.world(), r.renderSystem.activeCamera(), config.unitsPerMetre,
                                 r.renderer.drawer());
@@ -546,11 +540,11 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
                         system->fixedUpdate(stepper.step());
                     }
                 }
-                if (scene != nullptr) {
-                    r.interpolator.record(*scene);
-                }
             }
             times.fixedSteps = msSince(t);
+            if (scene != nullptr) {
+                scene->setFrameAlpha(stepper.alpha()); // where objects are drawn (renderTransform())
+            }
             profile_.fixedSteps += steps;
 
             // Update.

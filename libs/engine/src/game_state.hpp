@@ -29,7 +29,6 @@ class Window;
 
 namespace e2d::engine::detail {
 
-class Interpolator;
 class ProfileOverlay;
 
 /// Everything a running Game owns, as GameSystem reaches it. Filled in by Game::run() (which
@@ -47,7 +46,6 @@ struct GameState {
     core::Random* random = nullptr;
     core::SceneDirector* director = nullptr;
     FrameProfile* profile = nullptr;
-    Interpolator* interpolator = nullptr;
     ProfileOverlay* overlay = nullptr;
     /// Textures released by the last scene change.
     int texturesReleased = 0;

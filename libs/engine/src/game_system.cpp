@@ -8,7 +8,6 @@
 #include <e2d/render/renderer.hpp>
 
 #include "game_state.hpp"
-#include "interpolator.hpp"
 #include "profile_overlay.hpp"
 
 namespace e2d::engine {
@@ -52,10 +51,6 @@ void GameSystem::clear() {
     // of the old scene is left, and the render system dropped its hooks.
     state_.texturesReleased = state_.renderSystem->releaseUnusedTextures();
     // The engine's own hooks go back, before the new scene's components add theirs.
-    if (state_.interpolator != nullptr) {
-        state_.interpolator->clear();
-        state_.renderSystem->addHook(*state_.interpolator);
-    }
     if (state_.overlay != nullptr) {
         state_.renderSystem->addHook(*state_.overlay);
     }

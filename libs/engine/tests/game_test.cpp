@@ -15,16 +15,19 @@
 #include <e2d/physics/joint_component.hpp>
 #include <e2d/physics/rigidbody.hpp>
 #include <e2d/physics/world.hpp>
+#include <e2d/render/drawer.hpp>
 #include <e2d/render/image.hpp>
 #include <e2d/render/render_system.hpp>
 #include <e2d/render/renderer.hpp>
 #include <e2d/render/sprite_renderer.hpp>
+#include <e2d/render/text_label.hpp>
 
 #include <GLFW/glfw3.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -377,20 +380,20 @@ TEST(Game, InputScriptPressesActionsAndKeysOnTheirFrames) {
     struct Seen {
         std::vector<std::int64_t> jumpPressed, jumpHeld, jumpReleased, keyDown, keyUp, mouseDown;
     } seen;
-    struct KeyLog : core::Component {
+    struct KeyLog : core::Component, core::Handles<input::KeyDown, input::KeyUp, input::MouseButtonDown> {
         explicit KeyLog(Seen& s) : seen(s) {}
-        void onKeyDown(int key, int) override {
-            if (key == GLFW_KEY_A) {
+        void on(const input::KeyDown& e) override {
+            if (e.key == input::Key::A) {
                 seen.keyDown.push_back(scene()->system<GameSystem>().frame());
             }
         }
-        void onKeyUp(int key, int) override {
-            if (key == GLFW_KEY_A) {
+        void on(const input::KeyUp& e) override {
+            if (e.key == input::Key::A) {
                 seen.keyUp.push_back(scene()->system<GameSystem>().frame());
             }
         }
-        void onMouseButtonDown(int button, glm::vec2, glm::vec2) override {
-            if (button == GLFW_MOUSE_BUTTON_LEFT) {
+        void on(const input::MouseButtonDown& e) override {
+            if (e.button == input::MouseButton::Left) {
                 seen.mouseDown.push_back(scene()->system<GameSystem>().frame());
             }
         }
@@ -515,6 +518,82 @@ TEST(Game, BodiesAreDrawnBetweenTheirLastTwoStatesSoConstantSpeedLooksEven) {
         EXPECT_GE(samples[i].drawn, samples[i].object - 1.0f - 1e-4f);
     }
     EXPECT_EQ(objectMoves, 16);
+}
+
+// The box of pixels within `tolerance` of a colour: {minX, minY, maxX, maxY}, or all -1.
+std::array<int, 4> colourBox(const render::Image& image, int r, int g, int b, int tolerance) {
+    std::array<int, 4> box{-1, -1, -1, -1};
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            if (near(image.at(x, y), r, g, b, tolerance)) {
+                box = box[0] < 0 ? std::array<int, 4>{x, y, x, y}
+                                 : std::array<int, 4>{std::min(box[0], x), std::min(box[1], y), std::max(box[2], x),
+                                                      std::max(box[3], y)};
+            }
+        }
+    }
+    return box;
+}
+
+TEST(Game, ABodysSpriteChildLabelLineAndCameraAreDrawnFromOnePose) {
+    // Headless frames are exactly one step long, so bodies are drawn a whole step behind their
+    // physics state (alpha 0): 8 px at 480 units/s. Whatever is drawn for the body (its red
+    // sprite, a green label on a child, a blue Drawer line at its render position, the camera
+    // on a child) must come from that same pose: with the camera riding along, the picture of
+    // a moving body is the picture of a body standing still, to the pixel.
+    struct Line : core::Component {
+        void update(double) override {
+            const glm::vec2 at{gameObject()->renderPosition()};
+            scene()->system<GameSystem>().renderer().drawer().line(at + glm::vec2{-30.0f, -25.0f},
+                                                                    at + glm::vec2{30.0f, -25.0f},
+                                                                    {0.0f, 0.0f, 1.0f, 1.0f}, 2.0f);
+        }
+    };
+    const auto shoot = [](float speed, const std::string& name) {
+        Game game;
+        addScene(game, "A", [speed](core::Scene& s) {
+            core::GameObject& body = s.createGameObject();
+            render::SpriteRendererDef sprite;
+            sprite.size = {20.0f, 20.0f};
+            sprite.tint = {255, 0, 0, 255};
+            body.addComponent<render::SpriteRenderer>(sprite);
+            physics::RigidbodyDef def;
+            def.type = physics::BodyType::Kinematic;
+            def.linearVelocity = {speed, 0.0f};
+            body.addComponent<physics::Rigidbody>(def);
+            body.addComponent<Line>();
+
+            core::GameObject& label = s.createGameObject();
+            label.setPosition(glm::vec2{0.0f, 30.0f});
+            render::TextLabelDef text;
+            text.text = "HI";
+            text.pixelSize = 20;
+            text.color = {0, 255, 0, 255};
+            label.addComponent<render::TextLabel>(text);
+            body.addChild(label);
+
+            core::GameObject& camera = s.createGameObject();
+            render::CameraComponentDef view;
+            view.referenceSize = {160.0f, 120.0f};
+            camera.addComponent<render::CameraComponent>(view);
+            body.addChild(camera);
+        });
+        const std::filesystem::path shot = shotPath(name);
+        const GameRun r = run(game, {"--config", writeConfig("A", "gravityY = 0\n").string(), "--frames", "10",
+                                     "--screenshot", shot.string()});
+        EXPECT_EQ(r.code, 0) << r.all();
+        return render::loadImage(shot);
+    };
+    const render::Image still = shoot(0.0f, "still.png");
+    const render::Image moving = shoot(480.0f, "moving.png");
+    const std::array<std::array<int, 3>, 3> colours{{{255, 0, 0}, {0, 255, 0}, {0, 0, 255}}};
+    for (const auto& [r, g, b] : colours) {
+        const std::array<int, 4> expected = colourBox(still, r, g, b, 100);
+        ASSERT_GE(expected[0], 0) << r << "," << g << "," << b << " is not drawn";
+        EXPECT_EQ(colourBox(moving, r, g, b, 100), expected) << r << "," << g << "," << b;
+    }
+    // And the body sits at the centre of the view: 20 x 20 px around (80, 60).
+    EXPECT_EQ(colourBox(moving, 255, 0, 0, 0), (std::array<int, 4>{70, 50, 89, 69}));
 }
 
 TEST(Game, AFrameTimeSpikeIsClampedAndCounted) {
@@ -650,19 +729,22 @@ TEST(Game, PhysicsDebugDrawShowsJointsInTheirOwnColour) {
 }
 
 TEST(Game, InputScriptMovesTheMouseClicksAndDrivesGamepads) {
-    struct Seen : core::Component {
+    struct Seen : core::Component,
+                  core::Handles<input::MouseButtonDown, input::GamepadConnected, input::GamepadButtonDown,
+                                input::GamepadButtonUp> {
         explicit Seen(std::vector<std::string>& out) : events(out) {}
         std::vector<std::string>& events;
-        void onMouseButtonDown(int button, glm::vec2, glm::vec2 world) override {
-            events.push_back("mouse " + std::to_string(button) + " at " + std::to_string(static_cast<int>(world.x)) +
-                             "," + std::to_string(static_cast<int>(world.y)));
+        void on(const input::MouseButtonDown& e) override {
+            events.push_back("mouse " + std::to_string(static_cast<int>(e.button)) + " at " +
+                             std::to_string(static_cast<int>(e.world.x)) + "," +
+                             std::to_string(static_cast<int>(e.world.y)));
         }
-        void onControllerConnected(int pad) override { events.push_back("connected " + std::to_string(pad)); }
-        void onControllerButtonDown(int pad, int button) override {
-            events.push_back("down " + std::to_string(pad) + ":" + std::to_string(button));
+        void on(const input::GamepadConnected& e) override { events.push_back("connected " + std::to_string(e.gamepad)); }
+        void on(const input::GamepadButtonDown& e) override {
+            events.push_back("down " + std::to_string(e.gamepad) + ":" + std::to_string(static_cast<int>(e.button)));
         }
-        void onControllerButtonUp(int pad, int button) override {
-            events.push_back("up " + std::to_string(pad) + ":" + std::to_string(button));
+        void on(const input::GamepadButtonUp& e) override {
+            events.push_back("up " + std::to_string(e.gamepad) + ":" + std::to_string(static_cast<int>(e.button)));
         }
     };
     std::vector<std::string> seen;
@@ -893,9 +975,9 @@ TEST(Game, InactiveObjectsAreNeitherUpdatedNorDrawnAndObjectsAreFoundByNameAndTa
 
 TEST(Game, MouseEventsCarryWorldPositionsThroughTheActiveCamera) {
     std::vector<glm::vec2> world;
-    struct Mouse : core::Component {
+    struct Mouse : core::Component, core::Handles<input::MouseMoved> {
         explicit Mouse(std::vector<glm::vec2>& w) : seen(w) {}
-        void onMouseMove(glm::vec2, glm::vec2 at) override { seen.push_back(at); }
+        void on(const input::MouseMoved& e) override { seen.push_back(e.world); }
         std::vector<glm::vec2>& seen;
     };
     Game game;

@@ -4,6 +4,7 @@
 #include <e2d/core/scene.hpp>
 #include <e2d/core/scene_director.hpp>
 #include <e2d/input/actions.hpp>
+#include <e2d/input/event.hpp>
 #include <e2d/input/input.hpp>
 
 #include <GLFW/glfw3.h>
@@ -38,28 +39,27 @@ void InputSystem::beginFrame() {
 }
 
 void InputSystem::dispatch(const Event& e, core::Scene& scene) {
+    const auto key = static_cast<Key>(e.code);
+    const auto button = static_cast<MouseButton>(e.code);
+    const auto padButton = static_cast<GamepadButton>(e.code);
     switch (e.type) {
-    case EventType::KeyDown:
-        scene.dispatchButtonDown(e.code);
-        scene.dispatchKeyDown(e.code, e.mods);
+    case EventType::KeyDown: scene.dispatch(KeyDown{key, e.scancode, e.mods}); break;
+    case EventType::KeyUp: scene.dispatch(KeyUp{key, e.scancode, e.mods}); break;
+    case EventType::KeyRepeat: scene.dispatch(KeyRepeat{key, e.scancode, e.mods}); break;
+    case EventType::Text: scene.dispatch(TextEntered{static_cast<char32_t>(e.code)}); break;
+    case EventType::MouseButtonDown: scene.dispatch(MouseButtonDown{button, e.mods, e.screen, e.world}); break;
+    case EventType::MouseButtonUp: scene.dispatch(MouseButtonUp{button, e.mods, e.screen, e.world}); break;
+    case EventType::MouseMove: scene.dispatch(MouseMoved{e.screen, e.world, e.delta}); break;
+    case EventType::Scroll: scene.dispatch(MouseScrolled{e.delta, e.screen, e.world}); break;
+    case EventType::FocusGained: scene.dispatch(FocusGained{}); break;
+    case EventType::FocusLost: scene.dispatch(FocusLost{}); break;
+    case EventType::GamepadConnected: scene.dispatch(GamepadConnected{e.gamepad}); break;
+    case EventType::GamepadDisconnected: scene.dispatch(GamepadDisconnected{e.gamepad}); break;
+    case EventType::GamepadButtonDown: scene.dispatch(GamepadButtonDown{e.gamepad, padButton}); break;
+    case EventType::GamepadButtonUp: scene.dispatch(GamepadButtonUp{e.gamepad, padButton}); break;
+    case EventType::GamepadAxis:
+        scene.dispatch(GamepadAxisMoved{e.gamepad, static_cast<GamepadAxis>(e.code), e.value});
         break;
-    case EventType::KeyUp:
-        scene.dispatchButtonUp(e.code);
-        scene.dispatchKeyUp(e.code, e.mods);
-        break;
-    case EventType::KeyRepeat: scene.dispatchKeyRepeat(e.code, e.mods); break;
-    case EventType::Text: scene.dispatchTextInput(static_cast<char32_t>(e.code)); break;
-    case EventType::MouseButtonDown: scene.dispatchMouseButtonDown(e.code, e.screen, e.world); break;
-    case EventType::MouseButtonUp: scene.dispatchMouseButtonUp(e.code, e.screen, e.world); break;
-    case EventType::MouseMove: scene.dispatchMouseMove(e.screen, e.world); break;
-    case EventType::Scroll: scene.dispatchScroll(e.delta, e.screen, e.world); break;
-    case EventType::FocusGained: scene.dispatchFocusChanged(true); break;
-    case EventType::FocusLost: scene.dispatchFocusChanged(false); break;
-    case EventType::GamepadConnected: scene.dispatchControllerConnected(e.gamepad); break;
-    case EventType::GamepadDisconnected: scene.dispatchControllerDisconnected(e.gamepad); break;
-    case EventType::GamepadButtonDown: scene.dispatchControllerButtonDown(e.gamepad, e.code); break;
-    case EventType::GamepadButtonUp: scene.dispatchControllerButtonUp(e.gamepad, e.code); break;
-    case EventType::GamepadAxis: scene.dispatchControllerAxis(e.gamepad, e.code, e.value); break;
     case EventType::JoystickConnected:
     case EventType::JoystickDisconnected: break;
     }

@@ -29,7 +29,10 @@ namespace {
 
 using ::testing::ElementsAre;
 
-class Listener : public core::Component {
+class Listener : public core::Component,
+                 public core::Handles<KeyDown, KeyUp, KeyRepeat, TextEntered, MouseButtonDown, MouseButtonUp,
+                                      MouseMoved, MouseScrolled, FocusGained, FocusLost, GamepadConnected,
+                                      GamepadDisconnected, GamepadButtonDown, GamepadButtonUp, GamepadAxisMoved> {
 public:
     explicit Listener(std::vector<std::string>& log) : log_(log) {}
     void onInitialize() override {
@@ -41,29 +44,25 @@ public:
             log_.push_back("jump pressed");
         }
     }
-    void onButtonDown(int key) override { log_.push_back("buttonDown " + std::to_string(key)); }
-    void onKeyDown(int key, int mods) override { log_.push_back("keyDown " + std::to_string(key) + " " + std::to_string(mods)); }
-    void onButtonUp(int key) override { log_.push_back("buttonUp " + std::to_string(key)); }
-    void onKeyUp(int key, int) override { log_.push_back("keyUp " + std::to_string(key)); }
-    void onKeyRepeat(int key, int) override { log_.push_back("keyRepeat " + std::to_string(key)); }
-    void onTextInput(char32_t c) override { log_.push_back("text " + std::to_string(std::uint32_t(c))); }
-    void onMouseButtonDown(int b, glm::vec2 s, glm::vec2 w) override {
-        log_.push_back("mouseDown " + std::to_string(b) + " " + std::to_string(int(s.x)) + " " + std::to_string(int(w.x)));
+    static std::string n(auto code) { return std::to_string(static_cast<int>(code)); }
+    void on(const KeyDown& e) override { log_.push_back("keyDown " + n(e.key) + " " + n(e.scancode) + " " + n(e.mods)); }
+    void on(const KeyUp& e) override { log_.push_back("keyUp " + n(e.key)); }
+    void on(const KeyRepeat& e) override { log_.push_back("keyRepeat " + n(e.key)); }
+    void on(const TextEntered& e) override { log_.push_back("text " + std::to_string(std::uint32_t(e.codepoint))); }
+    void on(const MouseButtonDown& e) override {
+        log_.push_back("mouseDown " + n(e.button) + " " + n(e.screen.x) + " " + n(e.world.x));
     }
-    void onMouseButtonUp(int b, glm::vec2, glm::vec2) override { log_.push_back("mouseUp " + std::to_string(b)); }
-    void onMouseMove(glm::vec2 s, glm::vec2 w) override {
-        log_.push_back("move " + std::to_string(int(s.y)) + " " + std::to_string(int(w.y)));
-    }
-    void onScroll(glm::vec2 o, glm::vec2, glm::vec2) override { log_.push_back("scroll " + std::to_string(int(o.y))); }
-    void onFocusChanged(bool f) override { log_.push_back(std::string("focus ") + (f ? "in" : "out")); }
-    void onControllerConnected(int c) override { log_.push_back("padConnected " + std::to_string(c)); }
-    void onControllerDisconnected(int c) override { log_.push_back("padDisconnected " + std::to_string(c)); }
-    void onControllerButtonDown(int c, int b) override {
-        log_.push_back("padDown " + std::to_string(c) + " " + std::to_string(b));
-    }
-    void onControllerButtonUp(int c, int b) override { log_.push_back("padUp " + std::to_string(c) + " " + std::to_string(b)); }
-    void onControllerAxis(int c, int a, float v) override {
-        log_.push_back("padAxis " + std::to_string(c) + " " + std::to_string(a) + " " + std::to_string(int(v * 100)));
+    void on(const MouseButtonUp& e) override { log_.push_back("mouseUp " + n(e.button)); }
+    void on(const MouseMoved& e) override { log_.push_back("move " + n(e.screen.y) + " " + n(e.world.y)); }
+    void on(const MouseScrolled& e) override { log_.push_back("scroll " + n(e.offset.y)); }
+    void on(const FocusGained&) override { log_.push_back("focus in"); }
+    void on(const FocusLost&) override { log_.push_back("focus out"); }
+    void on(const GamepadConnected& e) override { log_.push_back("padConnected " + n(e.gamepad)); }
+    void on(const GamepadDisconnected& e) override { log_.push_back("padDisconnected " + n(e.gamepad)); }
+    void on(const GamepadButtonDown& e) override { log_.push_back("padDown " + n(e.gamepad) + " " + n(e.button)); }
+    void on(const GamepadButtonUp& e) override { log_.push_back("padUp " + n(e.gamepad) + " " + n(e.button)); }
+    void on(const GamepadAxisMoved& e) override {
+        log_.push_back("padAxis " + n(e.gamepad) + " " + n(e.axis) + " " + n(e.value * 100));
     }
 
 private:
@@ -114,8 +113,8 @@ TEST(InputSystem, EventsReachComponentsInOrderThroughCoreEvents) {
     pad.buttons[GLFW_GAMEPAD_BUTTON_B] = GLFW_PRESS;
     input.handleJoystick(5, pad);
     loop.frame();
-    EXPECT_THAT(log, ElementsAre("buttonDown 32", "keyDown 32 2", "keyRepeat 32", "text 32", "move 4 40",
-                                 "mouseDown 1 3 30", "scroll -2", "buttonUp 32", "keyUp 32", "padConnected 5",
+    EXPECT_THAT(log, ElementsAre("keyDown 32 65 2", "keyRepeat 32", "text 32", "move 4 40", "mouseDown 1 3 30",
+                                 "scroll -2", "keyUp 32", "padConnected 5",
                                  "padDown 5 1", "padAxis 5 1 100", "jump pressed"));
     log.clear();
 
@@ -143,12 +142,50 @@ TEST(InputSystem, KeyRepeatCanBeKeptFromTheScene) {
     input.handleKey(GLFW_KEY_A, 38, GLFW_REPEAT, 0);
     input.handleKey(GLFW_KEY_A, 38, GLFW_RELEASE, 0);
     system.beginFrame();
-    EXPECT_THAT(log, ElementsAre("buttonDown 65", "keyDown 65 0", "buttonUp 65", "keyUp 65"));
+    EXPECT_THAT(log, ElementsAre("keyDown 65 38 0", "keyUp 65"));
     // Polling still sees the repeats.
     EXPECT_EQ(std::count_if(input.events().begin(), input.events().end(),
                             [](const Event& e) { return e.type == EventType::KeyRepeat; }),
               2);
     director.stop();
+}
+
+TEST(InputSystem, EventsCarryTypedKeysButtonsAndAxes) {
+    // The enums are GLFW's codes under names.
+    static_assert(static_cast<int>(Key::Space) == GLFW_KEY_SPACE);
+    static_assert(static_cast<int>(Key::A) == GLFW_KEY_A);
+    static_assert(static_cast<int>(Key::Escape) == GLFW_KEY_ESCAPE);
+    static_assert(static_cast<int>(Key::KeypadEnter) == GLFW_KEY_KP_ENTER);
+    static_assert(static_cast<int>(Key::Menu) == GLFW_KEY_LAST);
+    static_assert(static_cast<int>(MouseButton::Middle) == GLFW_MOUSE_BUTTON_MIDDLE);
+    static_assert(static_cast<int>(GamepadButton::DpadLeft) == GLFW_GAMEPAD_BUTTON_DPAD_LEFT);
+    static_assert(static_cast<int>(GamepadButton::LeftTrigger) == kGamepadButtonLeftTrigger);
+    static_assert(static_cast<int>(GamepadAxis::RightTrigger) == GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER);
+
+    struct Typed : core::Scene, core::Handles<KeyDown, MouseButtonUp, GamepadAxisMoved> {
+        std::vector<std::string> seen;
+        void on(const KeyDown& e) override {
+            if (e.key == Key::Escape && (e.mods & kModShift) != 0) seen.push_back("shift+escape");
+        }
+        void on(const MouseButtonUp& e) override {
+            if (e.button == MouseButton::Middle) seen.push_back("middle up");
+        }
+        void on(const GamepadAxisMoved& e) override {
+            if (e.axis == GamepadAxis::LeftTrigger) seen.push_back("left trigger");
+        }
+    } scene;
+    Input input;
+    input.handleKey(GLFW_KEY_ESCAPE, 9, GLFW_PRESS, GLFW_MOD_SHIFT);
+    input.handleMouseButton(GLFW_MOUSE_BUTTON_MIDDLE, GLFW_PRESS, 0);
+    input.handleMouseButton(GLFW_MOUSE_BUTTON_MIDDLE, GLFW_RELEASE, 0);
+    JoystickSnapshot pad;
+    pad.present = true;
+    pad.gamepad = true;
+    pad.axes = {0.0f, 0.0f, 0.0f, 0.0f, 1.0f, -1.0f};
+    input.handleJoystick(0, pad);
+    InputSystem system(input, [&scene] { return static_cast<core::Scene*>(&scene); });
+    system.beginFrame();
+    EXPECT_THAT(scene.seen, ElementsAre("shift+escape", "middle up", "left trigger"));
 }
 
 TEST(InputSystem, WithoutASceneEventsAreStillDeliveredToPolling) {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/physics/physics_system.hpp>
 
-#include <e2d/core/contact_info.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/physics/collider.hpp>
+#include <e2d/physics/contact_info.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
 #include "object_pose.hpp"
@@ -91,7 +91,7 @@ void PhysicsSystem::unregisterStaticCollider(Collider& collider) noexcept {
 void PhysicsSystem::fixedUpdate(double step) {
     if (dispatching_) {
         throw core::Error("physics::PhysicsSystem::fixedUpdate(): called from inside an event "
-                          "callback (onCollisionEnter/Exit, onTriggerEnter/Exit) of the same "
+                          "handler (CollisionEnter/Exit, TriggerEnter/Exit) of the same "
                           "system");
     }
     forgetDestroyedBodies();
@@ -173,14 +173,14 @@ void PhysicsSystem::pushBodyTransforms() {
 namespace {
 
 // The contact as the receiving object sees it: normals point away from it.
-core::ContactInfo contactFor(const Manifold* manifold, bool receiverIsA, core::GameObject* other,
-                             core::Component* otherCollider, float unitsPerMetre) {
-    core::ContactInfo info;
+ContactInfo contactFor(const Manifold* manifold, bool receiverIsA, core::GameObject* other, Collider* otherCollider,
+                       float unitsPerMetre) {
+    ContactInfo info;
     info.other = other;
     info.otherCollider = otherCollider;
     if (manifold != nullptr) {
         const Vec2 normal = receiverIsA ? manifold->normal : -manifold->normal;
-        info.pointCount = std::min(manifold->pointCount, core::ContactInfo::kMaxPoints);
+        info.pointCount = std::min(manifold->pointCount, ContactInfo::kMaxPoints);
         for (int i = 0; i < info.pointCount; ++i) {
             const ManifoldPoint& mp = manifold->points[i];
             info.points[static_cast<std::size_t>(i)] = {mp.point * unitsPerMetre, normal,
@@ -215,40 +215,40 @@ void PhysicsSystem::dispatchEvents() {
         Collider* a = collider(e.shapeA);
         Collider* b = collider(e.shapeB);
         if (a != nullptr) {
-            a->gameObject()->dispatchCollisionEnter(contact(&e.manifold, true, b));
+            a->gameObject()->dispatch(CollisionEnter{contact(&e.manifold, true, b)});
         }
         if (b != nullptr) {
-            b->gameObject()->dispatchCollisionEnter(contact(&e.manifold, false, a));
+            b->gameObject()->dispatch(CollisionEnter{contact(&e.manifold, false, a)});
         }
     }
     for (const ContactEndTouchEvent& e : endEvents_) {
         Collider* a = collider(e.shapeA);
         Collider* b = collider(e.shapeB);
         if (a != nullptr) {
-            a->gameObject()->dispatchCollisionExit(contact(nullptr, true, b));
+            a->gameObject()->dispatch(CollisionExit{contact(nullptr, true, b)});
         }
         if (b != nullptr) {
-            b->gameObject()->dispatchCollisionExit(contact(nullptr, false, a));
+            b->gameObject()->dispatch(CollisionExit{contact(nullptr, false, a)});
         }
     }
     for (const SensorBeginTouchEvent& e : sensorBeginEvents_) {
         Collider* sensor = collider(e.sensorShape);
         Collider* visitor = collider(e.visitorShape);
         if (sensor != nullptr) {
-            sensor->gameObject()->dispatchTriggerEnter(contact(nullptr, true, visitor));
+            sensor->gameObject()->dispatch(TriggerEnter{contact(nullptr, true, visitor)});
         }
         if (visitor != nullptr) {
-            visitor->gameObject()->dispatchTriggerEnter(contact(nullptr, true, sensor));
+            visitor->gameObject()->dispatch(TriggerEnter{contact(nullptr, true, sensor)});
         }
     }
     for (const SensorEndTouchEvent& e : sensorEndEvents_) {
         Collider* sensor = collider(e.sensorShape);
         Collider* visitor = collider(e.visitorShape);
         if (sensor != nullptr) {
-            sensor->gameObject()->dispatchTriggerExit(contact(nullptr, true, visitor));
+            sensor->gameObject()->dispatch(TriggerExit{contact(nullptr, true, visitor)});
         }
         if (visitor != nullptr) {
-            visitor->gameObject()->dispatchTriggerExit(contact(nullptr, true, sensor));
+            visitor->gameObject()->dispatch(TriggerExit{contact(nullptr, true, sensor)});
         }
     }
 }

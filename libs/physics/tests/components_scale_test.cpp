@@ -3,7 +3,7 @@
 // 100 units per metre, with every length, speed, force and torque 100 (or 100^2) times larger,
 // must move exactly as the same scene at 1 unit per metre, its positions 100 times larger.
 #include <e2d/core/component.hpp>
-#include <e2d/core/contact_info.hpp>
+#include <e2d/physics/contact_info.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/log.hpp>
@@ -31,14 +31,14 @@ using physics::Rigidbody;
 
 constexpr double kStep = 1.0 / 60.0;
 
-class FirstContact : public core::Component {
+class FirstContact : public core::Component, public core::Handles<physics::CollisionEnter> {
 public:
-    void onCollisionEnter(const core::ContactInfo& c) override {
+    void on(const physics::CollisionEnter& c) override {
         if (!info) {
             info = c;
         }
     }
-    std::optional<core::ContactInfo> info;
+    std::optional<physics::ContactInfo> info;
 };
 
 // What one run reads back, in its own world units.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Rigidbody, Collider and PhysicsSystem driving game objects of a real scene.
 #include <e2d/core/component.hpp>
-#include <e2d/core/contact_info.hpp>
+#include <e2d/physics/contact_info.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/log.hpp>
@@ -29,16 +29,18 @@ using physics::Rigidbody;
 constexpr double kStep = 1.0 / 60.0;
 
 // Records the physics events its object receives.
-class Recorder : public core::Component {
+class Recorder : public core::Component,
+                 public core::Handles<physics::CollisionEnter, physics::CollisionExit, physics::TriggerEnter,
+                                      physics::TriggerExit> {
 public:
     struct Event {
         std::string kind;
-        core::ContactInfo info;
+        physics::ContactInfo info;
     };
-    void onCollisionEnter(const core::ContactInfo& c) override { events.push_back({"enter", c}); }
-    void onCollisionExit(const core::ContactInfo& c) override { events.push_back({"exit", c}); }
-    void onTriggerEnter(const core::ContactInfo& c) override { events.push_back({"trigger-enter", c}); }
-    void onTriggerExit(const core::ContactInfo& c) override { events.push_back({"trigger-exit", c}); }
+    void on(const physics::CollisionEnter& c) override { events.push_back({"enter", c}); }
+    void on(const physics::CollisionExit& c) override { events.push_back({"exit", c}); }
+    void on(const physics::TriggerEnter& c) override { events.push_back({"trigger-enter", c}); }
+    void on(const physics::TriggerExit& c) override { events.push_back({"trigger-exit", c}); }
     int count(const std::string& kind) const {
         int n = 0;
         for (const Event& e : events) {
@@ -137,12 +139,12 @@ TEST_F(ComponentsTest, CollisionEnterAndExitReachBothObjectsWithNormalsAwayFromE
     frames(60);
     ASSERT_EQ(boxEvents->count("enter"), 1);
     ASSERT_EQ(groundEvents->count("enter"), 1);
-    const core::ContactInfo& onBox = boxEvents->events[0].info;
+    const physics::ContactInfo& onBox = boxEvents->events[0].info;
     EXPECT_EQ(onBox.other, g);
     EXPECT_EQ(onBox.otherCollider, g->getComponent<Collider>());
     ASSERT_GE(onBox.pointCount, 1);
     EXPECT_NEAR(onBox.points[0].normal.y, -1.0f, 1e-4f) << "from the box towards the ground";
-    const core::ContactInfo& onGround = groundEvents->events[0].info;
+    const physics::ContactInfo& onGround = groundEvents->events[0].info;
     EXPECT_EQ(onGround.other, b);
     EXPECT_NEAR(onGround.points[0].normal.y, 1.0f, 1e-4f) << "from the ground towards the box";
 
@@ -333,10 +335,10 @@ TEST_F(ComponentsTest, DestroyingAnObjectRemovesItsBodyAndShapes) {
 
 // Destroys, through the World, the body of the object it collides with (or its own) on the
 // first collision: what a game does to a projectile that hits something.
-class BodyDestroyer : public core::Component {
+class BodyDestroyer : public core::Component, public core::Handles<physics::CollisionEnter> {
 public:
     BodyDestroyer(PhysicsSystem& physics, bool own) : physics_(physics), own_(own) {}
-    void onCollisionEnter(const core::ContactInfo& c) override {
+    void on(const physics::CollisionEnter& c) override {
         core::GameObject* target = own_ ? gameObject() : c.other;
         Rigidbody* rb = target != nullptr ? target->getComponent<Rigidbody>() : nullptr;
         if (rb != nullptr && physics_.world().isValid(rb->body())) {

@@ -7,6 +7,7 @@
 #include <e2d/core/scene_director.hpp>
 #include <e2d/core/scene_registry.hpp>
 #include <e2d/physics/collider.hpp>
+#include <e2d/physics/contact_info.hpp>
 #include <e2d/physics/joint_component.hpp>
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
@@ -151,9 +152,9 @@ TEST_F(JointComponentTest, JointGoesWithEitherRigidbodyOrTheComponent) {
 }
 
 // Breaks its object's joint when something hits the object.
-class BreakOnHit : public core::Component {
+class BreakOnHit : public core::Component, public core::Handles<physics::CollisionEnter> {
 public:
-    void onCollisionEnter(const core::ContactInfo&) override {
+    void on(const physics::CollisionEnter&) override {
         if (JointComponent* joint = gameObject()->getComponent<JointComponent>()) {
             joint->disconnect();
             ++breaks;

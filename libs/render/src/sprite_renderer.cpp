@@ -153,9 +153,10 @@ void CameraComponent::syncTransform() {
     if (gameObject() == nullptr) {
         return;
     }
-    glm::vec3 position = gameObject()->worldPosition();
-    camera_.setPosition({position.x, position.y});
-    camera_.setRotation(gameObject()->worldOrientation());
+    // Drawn from the same pose as the sprites, so a camera on a moving body keeps it still.
+    const detail::WorldPose pose = detail::worldPose(*gameObject());
+    camera_.setPosition(pose.position);
+    camera_.setRotation(pose.rotation);
 }
 
 } // namespace e2d::render

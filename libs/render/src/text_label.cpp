@@ -5,7 +5,9 @@
 #include <e2d/core/scene.hpp>
 
 #include "error_format.hpp"
+#include "world_pose.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -61,15 +63,13 @@ void TextLabel::beforeRender(Renderer&) {
     if (system_ == nullptr || font_ == nullptr || !def_.visible || def_.text.empty()) {
         return;
     }
-    const glm::mat4& m = gameObject()->worldTransform();
-    const glm::vec2 xAxis(m[0][0], m[0][1]);
-    const glm::vec2 yAxis(m[1][0], m[1][1]);
+    const detail::WorldPose pose = detail::worldPose(*gameObject());
     TextDraw where;
-    where.position = {m[3][0], m[3][1]};
-    where.z = m[3][2] + def_.zOffset;
-    where.rotation = gameObject()->worldOrientation();
+    where.position = pose.position;
+    where.z = pose.z + def_.zOffset;
+    where.rotation = pose.rotation;
     // Text is never mirrored: the object's scale magnitudes multiply the label's.
-    where.scale = def_.scale * glm::vec2(glm::length(xAxis), glm::length(yAxis));
+    where.scale = def_.scale * glm::abs(pose.scale);
     where.color = def_.color;
     where.hud = def_.hud;
     if (where.scale.x <= 0.0f || where.scale.y <= 0.0f) {

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <e2d/core/component.hpp>
-#include <e2d/core/contact_info.hpp>
 #include <e2d/core/game_object_id.hpp>
 
 #include <glm/mat4x4.hpp>
@@ -11,6 +10,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <type_traits>
 #include <typeinfo>
@@ -113,6 +113,24 @@ public:
     /// True when the cached world transform is out of date (it is rebuilt on the next read).
     [[nodiscard]] bool isTransformDirty() const noexcept { return worldDirty_; }
 
+    // Where the object is drawn ----------------------------------------------------------
+
+    /// The world transform to draw this frame: what renderers, cameras, labels and debug lines
+    /// use, so everything drawn for an object and its children agrees. Changes made during the
+    /// scene's fixed steps (fixedUpdate, physics) are drawn between the pose the last step
+    /// started from and the current one, at Scene::frameAlpha() (rendering runs between two
+    /// steps); changes made anywhere else (update, input events, creation) show at once.
+    /// Composed through the parents' render transforms. Equals worldTransform() when nothing
+    /// on the way to the root moved during the last step, or with frameAlpha() 1.
+    [[nodiscard]] glm::mat4 renderTransform() const;
+    /// Translation column of renderTransform().
+    [[nodiscard]] glm::vec3 renderPosition() const;
+    /// Angle of renderTransform()'s x axis, as worldOrientation().
+    [[nodiscard]] float renderOrientation() const;
+    /// Draws the object where it is from now on, without the in-between pose of the last step
+    /// (for a teleport made inside fixedUpdate; changes outside the steps do this already).
+    void snapRenderPose() noexcept;
+
     // Hierarchy ---------------------------------------------------------------------------
 
     [[nodiscard]] GameObject* parent() const noexcept { return parent_; }
@@ -161,17 +179,19 @@ public:
     /// Number of attached components (queued ones not counted).
     [[nodiscard]] std::size_t componentCount() const noexcept { return components_.size(); }
 
-    // Physics events (sent by the physics components to every component of this object) --
+    // Events -----------------------------------------------------------------------------
 
-    void dispatchCollisionEnter(const ContactInfo& contact);
-    void dispatchCollisionExit(const ContactInfo& contact);
-    void dispatchTriggerEnter(const ContactInfo& contact);
-    void dispatchTriggerExit(const ContactInfo& contact);
+    /// Delivers `event` to this object's attached components that handle its type (derive
+    /// from `Handles<Event>`), in attachment order, active or not: how a library sends an
+    /// object its own events (physics: collisions and triggers). See Scene::dispatch() for
+    /// scene-wide events.
+    template <class Event>
+    void dispatch(const Event& event);
 
 private:
     friend class Scene;
 
-    GameObject(Scene& scene, GameObjectId id);
+    GameObject(Scene& scene, GameObjectId id, std::uint32_t serial);
 
     // True if an attached (not leaving) or queued (not cancelled) component satisfies it.
     template <class Predicate>
@@ -185,6 +205,9 @@ private:
     void queueComponentChange();
     [[noreturn]] void refuseNonFinite(const char* function, const char* what, const std::string& value) const;
     void markWorldDirty() const noexcept;
+    void notePoseChange() noexcept;
+    [[nodiscard]] bool isInterpolated() const noexcept;
+    static glm::mat4 composeLocal(glm::vec3 position, float orientation, glm::vec2 scale) noexcept;
     void detachFromParent() noexcept;
 
     // Called by Scene at the start of a frame and for lifecycle events.
@@ -200,6 +223,7 @@ private:
 
     Scene* scene_;
     GameObjectId id_;
+    std::uint32_t serial_; // creation order in the scene, for the order events are delivered in
     GameObject* parent_ = nullptr;
     std::vector<GameObject*> children_;
 
@@ -210,6 +234,12 @@ private:
     mutable glm::mat4 world_{1.0f};
     mutable bool localDirty_ = false;
     mutable bool worldDirty_ = false;
+    // The local pose when the scene's fixed step number stepStamp_ started, kept by the first
+    // change in that step: what renderTransform() draws from.
+    glm::vec3 stepStartPosition_{0.0f};
+    glm::vec2 stepStartScale_{1.0f};
+    float stepStartOrientation_ = 0.0f;
+    std::uint64_t stepStamp_ = 0;
 
     bool initialized_ = false;
     bool pendingDestroy_ = false;
@@ -251,9 +281,22 @@ T* GameObject::addComponent(Args&&... args) {
     if constexpr (T::kUnique) {
         base->isSameUniqueKind_ = [](const Component& c) { return dynamic_cast<const T*>(&c) != nullptr; };
     }
+    // &T::update names Component::update unless a class on the way to T declares its own.
+    base->hasUpdate_ = !std::is_same_v<decltype(&T::update), void (Component::*)(double)>;
+    base->hasFixedUpdate_ = !std::is_same_v<decltype(&T::fixedUpdate), void (Component::*)(double)>;
     pendingAdd_.push_back(std::move(component));
     queueComponentChange();
     return raw;
+}
+
+template <class Event>
+void GameObject::dispatch(const Event& event) {
+    // Indexed: a handler may queue components (attached next frame), never attach them now.
+    for (std::size_t i = 0; i < components_.size(); ++i) {
+        if (Handler<Event>* handler = components_[i]->template handlerOf<Event>()) {
+            handler->on(event);
+        }
+    }
 }
 
 template <class Predicate>

@@ -2,16 +2,16 @@
 #pragma once
 
 #include <e2d/core/game_object.hpp>
+#include <e2d/core/handles.hpp>
 #include <e2d/core/game_object_id.hpp>
 #include <e2d/core/scene_host.hpp>
 #include <e2d/core/system.hpp>
-
-#include <glm/vec2.hpp>
 
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <typeindex>
 #include <typeinfo>
 #include <vector>
 
@@ -21,18 +21,19 @@ class Logger;
 
 /// A level, menu or screen: a set of game objects plus the scene's own event handlers.
 ///
-/// Users derive from Scene and override the protected event methods (all no-ops by default);
-/// `onInitialize` is the usual place to create the scene's objects. Register the type in a
-/// SceneRegistry so a SceneDirector can create it by name.
+/// Users derive from Scene and override the protected lifecycle methods (all no-ops by
+/// default); `onInitialize` is the usual place to create the scene's objects. A scene takes
+/// other events as components do, by deriving from `Handles<Event...>` (handles.hpp).
+/// Register the type in a SceneRegistry so a SceneDirector can create it by name.
 ///
 /// Whoever runs the scene (SceneDirector, or a test) calls the public `dispatch*` methods;
-/// each one runs the scene's own handler first, then forwards the event to every game object
-/// in creation order (skipping inactive ones, see GameObject::setActive()), which forwards it
-/// to its components in attachment order.
+/// each one runs the scene's own handler first, then reaches the components that take the
+/// event, of objects active in the hierarchy (see GameObject::setActive()), in object
+/// creation order then attachment order.
 ///
 /// Creation and destruction of game objects are deferred to `beginFrame()`, the start of the
 /// next frame, so they are safe from inside any event.
-class Scene {
+class Scene : public virtual detail::HandlerTable {
 public:
     Scene();
     /// Destroys the remaining objects without sending events; call `dispatchTerminate()`
@@ -110,24 +111,23 @@ public:
     /// by these events waits for the next call. Throws core::Error if called from inside an
     /// event of this scene.
     void beginFrame();
+    /// One fixed step: the scene's fixedUpdate, then the components that override it. Pose
+    /// changes from here until the next `dispatchUpdate()` / `beginFrame()` (the systems'
+    /// fixed steps included) are drawn interpolated (GameObject::renderTransform()).
     void dispatchFixedUpdate(double step);
     void dispatchUpdate(double dt);
-    void dispatchButtonDown(int key);
-    void dispatchButtonUp(int key);
-    void dispatchControllerButtonDown(int controller, int button);
-    void dispatchControllerButtonUp(int controller, int button);
-    void dispatchMouseButtonDown(int button, glm::vec2 screen, glm::vec2 world);
-    void dispatchMouseButtonUp(int button, glm::vec2 screen, glm::vec2 world);
-    void dispatchMouseMove(glm::vec2 screen, glm::vec2 world);
-    void dispatchKeyDown(int key, int mods);
-    void dispatchKeyUp(int key, int mods);
-    void dispatchKeyRepeat(int key, int mods);
-    void dispatchTextInput(char32_t codepoint);
-    void dispatchScroll(glm::vec2 offset, glm::vec2 screen, glm::vec2 world);
-    void dispatchFocusChanged(bool focused);
-    void dispatchControllerConnected(int controller);
-    void dispatchControllerDisconnected(int controller);
-    void dispatchControllerAxis(int controller, int axis, float value);
+    /// Where between the last two fixed steps this frame is drawn, in [0, 1] (0: the pose the
+    /// last step started from, 1: the current one). Set by the loop after the frame's fixed
+    /// steps (GameLoop: FixedStepper::alpha()). Default 1: no interpolation.
+    void setFrameAlpha(double alpha) noexcept;
+    [[nodiscard]] double frameAlpha() const noexcept { return frameAlpha_; }
+    /// Delivers `event` (any struct: `input::KeyDown`, a game's own) to the scene if it
+    /// handles its type (derives from `Handles<Event>`), then to every attached component that
+    /// handles it, of objects active in the hierarchy, in object creation order then
+    /// attachment order. Components that do not handle the type are not visited: the scene
+    /// lists the receivers of each type when components are attached.
+    template <class Event>
+    void dispatch(const Event& event);
     /// Runs onTerminate on the scene, then on every object (and its components) that was
     /// initialised, then destroys every object: all ids become stale.
     void dispatchTerminate();
@@ -139,58 +139,6 @@ protected:
     virtual void onTerminate() {}
     virtual void update(double dt) { static_cast<void>(dt); }
     virtual void fixedUpdate(double step) { static_cast<void>(step); }
-    virtual void onButtonDown(int key) { static_cast<void>(key); }
-    virtual void onButtonUp(int key) { static_cast<void>(key); }
-    virtual void onControllerButtonDown(int controller, int button) {
-        static_cast<void>(controller);
-        static_cast<void>(button);
-    }
-    virtual void onControllerButtonUp(int controller, int button) {
-        static_cast<void>(controller);
-        static_cast<void>(button);
-    }
-    virtual void onMouseButtonDown(int button, glm::vec2 screen, glm::vec2 world) {
-        static_cast<void>(button);
-        static_cast<void>(screen);
-        static_cast<void>(world);
-    }
-    virtual void onMouseButtonUp(int button, glm::vec2 screen, glm::vec2 world) {
-        static_cast<void>(button);
-        static_cast<void>(screen);
-        static_cast<void>(world);
-    }
-    virtual void onMouseMove(glm::vec2 screen, glm::vec2 world) {
-        static_cast<void>(screen);
-        static_cast<void>(world);
-    }
-    /// See the Component events of the same names.
-    virtual void onKeyDown(int key, int mods) {
-        static_cast<void>(key);
-        static_cast<void>(mods);
-    }
-    virtual void onKeyUp(int key, int mods) {
-        static_cast<void>(key);
-        static_cast<void>(mods);
-    }
-    virtual void onKeyRepeat(int key, int mods) {
-        static_cast<void>(key);
-        static_cast<void>(mods);
-    }
-    virtual void onTextInput(char32_t codepoint) { static_cast<void>(codepoint); }
-    virtual void onScroll(glm::vec2 offset, glm::vec2 screen, glm::vec2 world) {
-        static_cast<void>(offset);
-        static_cast<void>(screen);
-        static_cast<void>(world);
-    }
-    virtual void onFocusChanged(bool focused) { static_cast<void>(focused); }
-    virtual void onControllerConnected(int controller) { static_cast<void>(controller); }
-    virtual void onControllerDisconnected(int controller) { static_cast<void>(controller); }
-    virtual void onControllerAxis(int controller, int axis, float value) {
-        static_cast<void>(controller);
-        static_cast<void>(axis);
-        static_cast<void>(value);
-    }
-
 private:
     friend class GameObject;
 
@@ -198,10 +146,40 @@ private:
         std::unique_ptr<GameObject> object;
         std::uint32_t generation = 1;
     };
-    class DispatchGuard;
+    // Marks the scene as busy dispatching, so beginFrame()/dispatchTerminate() cannot run
+    // from inside an event and change the lists being iterated.
+    class DispatchGuard {
+    public:
+        explicit DispatchGuard(Scene& scene) : scene_(scene) { ++scene_.dispatchDepth_; }
+        ~DispatchGuard() { --scene_.dispatchDepth_; }
+        DispatchGuard(const DispatchGuard&) = delete;
+        DispatchGuard& operator=(const DispatchGuard&) = delete;
 
-    template <class SceneHandler, class ComponentHandler>
-    void broadcast(SceneHandler&& sceneHandler, ComponentHandler&& componentHandler);
+    private:
+        Scene& scene_;
+    };
+    // The attached components that take one event type (or update / fixedUpdate), sorted by
+    // Component::deliveryOrder_. A detached component leaves a null entry until the end of
+    // beginFrame(), so nothing moves while a dispatch walks the list.
+    struct Receiver {
+        std::uint64_t order = 0;
+        Component* component = nullptr;
+        void* handler = nullptr; // Handler<E>* for the channel's event type
+    };
+    struct Channel {
+        std::type_index event = typeid(void);
+        std::vector<Receiver> receivers;
+        bool hasHoles = false;
+    };
+
+    // Calls `deliver(receiver)` for each live receiver of an object active in the hierarchy.
+    template <class Deliver>
+    void deliver(const Channel& channel, Deliver&& deliver);
+    [[nodiscard]] const Channel* findChannel(std::type_index event) const noexcept;
+    // Called by GameObject when a component joins / leaves it.
+    void addReceivers(Component& component, std::uint32_t objectSerial);
+    void removeReceivers(Component& component);
+    void compactChannels();
     SceneHost& requireHost(const char* function) const;
     [[noreturn]] static void throwNoSystem(const std::type_info& type);
     void destroyPending();
@@ -217,7 +195,36 @@ private:
     std::vector<GameObject*> pendingDestroy_;
     std::vector<GameObject*> componentChanges_; // objects with queued component changes
     int dispatchDepth_ = 0;
+    std::uint64_t fixedSteps_ = 1;  // number of the current fixed step (GameObject's stamps)
+    bool inFixedSteps_ = false;     // between dispatchFixedUpdate() and dispatchUpdate()
+    double frameAlpha_ = 1.0;
+    std::uint32_t objectsCreated_ = 0;     // the serial of the next object
+    std::uint32_t componentsAttached_ = 0; // the serial of the next attached component
+    Channel updates_;
+    Channel fixedUpdates_;
+    std::vector<Channel> channels_; // one per event type some component handles
 };
+
+template <class Deliver>
+void Scene::deliver(const Channel& channel, Deliver&& deliver) {
+    // The list does not change during a dispatch: attachment waits for beginFrame().
+    for (const Receiver& receiver : channel.receivers) {
+        if (receiver.component != nullptr && receiver.component->gameObject()->isActiveInHierarchy()) {
+            deliver(receiver);
+        }
+    }
+}
+
+template <class Event>
+void Scene::dispatch(const Event& event) {
+    DispatchGuard guard(*this);
+    if (Handler<Event>* own = handlerOf<Event>()) {
+        own->on(event);
+    }
+    if (const Channel* channel = findChannel(typeid(Event))) {
+        deliver(*channel, [&event](const Receiver& r) { static_cast<Handler<Event>*>(r.handler)->on(event); });
+    }
+}
 
 template <class T>
 T* Scene::findSystem() const noexcept {

@@ -31,8 +31,10 @@ namespace e2d::engine {
 /// input-script events are fed, input is polled and delivered to the scene (mouse positions
 /// converted to world units through the active camera), the frame time (1/60 s with
 /// `--frames`, else the clock's, clamped to maxFrameTime) runs whole fixed steps (scene, then
-/// physics), then the scene's and systems' update, then drawing: bodies are drawn
-/// interpolated between their last two physics states, the physics debug draw on top.
+/// physics), then the scene's and systems' update, then drawing: objects moved during the
+/// fixed steps (bodies, and anything moved in fixedUpdate) are drawn between their last two
+/// states, children and cameras with them (core::GameObject::renderTransform()), the physics
+/// debug draw on top.
 ///
 /// Exit codes: 0 success; 1 an error while running (an exception out of a scene: its message
 /// is logged); 2 bad command line or configuration (the message names the argument or the

@@ -21,28 +21,18 @@ struct InputSystemDef {
     /// Call glfwPollEvents() at the start of beginFrame() (when the Input is attached to a
     /// window). Turn off when something else (the window owner) already polls. Default true.
     bool pollWindowEvents = true;
-    /// Send KeyRepeat events (the system's auto-repeat of a held key) to the scene as
-    /// onKeyRepeat. Off: they still reach polling and `Input::events()`, not the scene.
+    /// Send KeyRepeat events (the system's auto-repeat of a held key) to the scene. Off: they still reach polling and `Input::events()`, not the scene.
     /// Default true.
     bool keyRepeat = true;
 };
 
 /// Plugs an Input (and optionally an ActionMap) into the core loop: `beginFrame()` polls
 /// GLFW, delivers the frame's events (Input::beginFrame), updates the actions, then sends each
-/// event, in order, to the current scene and through it to every component:
-///
-/// | Input event               | core events                                              |
-/// |---------------------------|----------------------------------------------------------|
-/// | KeyDown / KeyUp           | onButtonDown/Up(key), then onKeyDown/Up(key, mods)        |
-/// | KeyRepeat                 | onKeyRepeat(key, mods)                                   |
-/// | Text                      | onTextInput(code point)                                  |
-/// | MouseButtonDown / Up      | onMouseButtonDown/Up(button, screen, world)              |
-/// | MouseMove                 | onMouseMove(screen, world)                               |
-/// | Scroll                    | onScroll(offset, screen, world)                          |
-/// | FocusGained / FocusLost   | onFocusChanged(true / false)                             |
-/// | GamepadConnected / Disc.  | onControllerConnected / onControllerDisconnected(slot)   |
-/// | GamepadButtonDown / Up    | onControllerButtonDown / Up(slot, button)                |
-/// | GamepadAxis               | onControllerAxis(slot, axis, value)                      |
+/// event, in order, to the current scene with `Scene::dispatch()` as one of the structs of
+/// event.hpp (KeyDown, KeyUp, KeyRepeat, TextEntered, MouseButtonDown/Up, MouseMoved,
+/// MouseScrolled, FocusGained, FocusLost, GamepadConnected/Disconnected, GamepadButtonDown/Up,
+/// GamepadAxisMoved): the scene and the components that derive from `core::Handles<...>` of
+/// that type receive it.
 ///
 /// Joystick events (mapped or not) are not sent; components poll through
 /// `scene()->system<InputSystem>().input()`. Input and ActionMap are not owned.
@@ -61,7 +51,7 @@ public:
     [[nodiscard]] ActionMap* actions() const noexcept { return actions_; }
     void setActions(ActionMap* actions) noexcept { actions_ = actions; }
 
-    /// Sends one event to `scene` as the table above says.
+    /// Sends one recorded event to `scene` as its event struct.
     static void dispatch(const Event& event, core::Scene& scene);
 
 private:

@@ -21,7 +21,7 @@ struct ColliderDef {
     float restitution = 0.0f;
     /// Rolling resistance, world units, >= 0. Default 0.
     float rollingResistance = 0.0f;
-    /// A trigger detects overlaps (onTriggerEnter/Exit) but is not solid. Default false.
+    /// A trigger detects overlaps (TriggerEnter/Exit events) but is not solid. Default false.
     bool isTrigger = false;
     /// What this collider is (a core::Mask). Default: the first mask bit.
     core::Mask category{1};

@@ -28,8 +28,8 @@ class Rigidbody;
 /// Each fixed step: game objects that were moved by hand since the last step are teleported in
 /// the world (their bodies' transforms follow the object), the world steps, every Rigidbody writes
 /// its body's position and angle back to its object (z and scale untouched), and the step's
-/// events are dispatched as onCollisionEnter/Exit and onTriggerEnter/Exit to the objects of both
-/// shapes, with core::ContactInfo normals pointing away from the receiving object.
+/// events are dispatched as CollisionEnter/Exit and TriggerEnter/Exit (contact_info.hpp) to the objects of both
+/// shapes, with ContactInfo normals pointing away from the receiving object.
 /// On a scene change (clear()) the world is emptied.
 ///
 /// Units. The World runs in metres; game objects live in world units, `unitsPerMetre()` of
@@ -37,7 +37,7 @@ class Rigidbody;
 /// give is in world units, converted here in one place: object positions, collider geometry,
 /// Rigidbody velocities (units/s), forces (kg*units/s^2) and impulses (kg*units/s), torques
 /// and angular impulses (kg*units^2/s^2, kg*units^2/s), JointComponent anchors, lengths and
-/// forces, contact points and separations in core::ContactInfo, and the ray casts below.
+/// forces, contact points and separations in ContactInfo, and the ray casts below.
 /// Angles are radians, masses kg and densities kg/m^2 whatever the scale (so a scene and the
 /// same scene drawn 100 times larger at 100 units per metre weigh and move alike). The
 /// WorldDef and whatever is done through world() directly stay in metres: toMetres() and

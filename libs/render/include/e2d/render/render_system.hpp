@@ -43,9 +43,11 @@ protected:
 /// Draws the scene every frame. Refers to a Renderer (and optionally the Window to swap),
 /// both owned by the caller and outliving the system.
 ///
-/// render(alpha): every SpriteRenderer copies its object's world transform (parent chain
-/// included) to its sprite, the active CameraComponent (the first one registered and enabled,
-/// else the system's own camera()) copies its object's, every RenderHook runs, the Renderer
+/// render(alpha): every SpriteRenderer copies its object's render transform (the world
+/// transform, parent chain included, interpolated between fixed steps: see
+/// core::GameObject::renderTransform()) to its sprite, the active CameraComponent (the first
+/// one registered and enabled, else the system's own camera()) copies its object's, every
+/// RenderHook runs (TextLabel draws at its object's render transform too), the Renderer
 /// draws, and the window (if given) swaps buffers. clear() (scene change) destroys every sprite left in the Renderer.
 /// Components find the system with `scene()->system<RenderSystem>()`.
 class RenderSystem : public core::System {
