@@ -196,42 +196,34 @@ enum class GamepadAxis : int {
 //         void on(const input::KeyDown& e) override { if (e.key == input::Key::Space) jump(); }
 //     };
 
-/// A key was pressed. `mods` are Mod bits; `scancode` is the platform's.
-struct KeyDown {
+/// What the key events carry. `mods` are Mod bits; `scancode` is the platform's.
+struct KeyEvent {
     Key key = Key::Unknown;
     int scancode = 0;
     int mods = 0;
 };
+/// A key was pressed.
+struct KeyDown : KeyEvent {};
 /// A key was released.
-struct KeyUp {
-    Key key = Key::Unknown;
-    int scancode = 0;
-    int mods = 0;
-};
+struct KeyUp : KeyEvent {};
 /// A held key auto-repeated (only with InputSystemDef::keyRepeat).
-struct KeyRepeat {
-    Key key = Key::Unknown;
-    int scancode = 0;
-    int mods = 0;
-};
+struct KeyRepeat : KeyEvent {};
 /// Text was typed: one Unicode code point (UTF-32), after keyboard layout and modifiers.
 struct TextEntered {
     char32_t codepoint = 0;
 };
-/// A mouse button was pressed at `screen` (pixels, origin top left) / `world` (world units).
-struct MouseButtonDown {
+/// What the mouse button events carry: the button, Mod bits, and the cursor at `screen`
+/// (pixels, origin top left) / `world` (world units).
+struct MouseButtonEvent {
     MouseButton button = MouseButton::Left;
     int mods = 0;
     glm::vec2 screen{0.0f};
     glm::vec2 world{0.0f};
 };
+/// A mouse button was pressed.
+struct MouseButtonDown : MouseButtonEvent {};
 /// A mouse button was released.
-struct MouseButtonUp {
-    MouseButton button = MouseButton::Left;
-    int mods = 0;
-    glm::vec2 screen{0.0f};
-    glm::vec2 world{0.0f};
-};
+struct MouseButtonUp : MouseButtonEvent {};
 /// The cursor moved to `screen` / `world`, by `delta` pixels.
 struct MouseMoved {
     glm::vec2 screen{0.0f};
@@ -258,16 +250,15 @@ struct GamepadConnected {
 struct GamepadDisconnected {
     int gamepad = 0;
 };
+/// What the gamepad button events carry: the slot (0..15) and the button.
+struct GamepadButtonEvent {
+    int gamepad = 0;
+    GamepadButton button = GamepadButton::A;
+};
 /// A gamepad button was pressed.
-struct GamepadButtonDown {
-    int gamepad = 0;
-    GamepadButton button = GamepadButton::A;
-};
+struct GamepadButtonDown : GamepadButtonEvent {};
 /// A gamepad button was released.
-struct GamepadButtonUp {
-    int gamepad = 0;
-    GamepadButton button = GamepadButton::A;
-};
+struct GamepadButtonUp : GamepadButtonEvent {};
 /// A gamepad axis changed to `value` (after the dead zone).
 struct GamepadAxisMoved {
     int gamepad = 0;
