@@ -6,21 +6,21 @@
 #include <array>
 
 namespace e2d::core {
+class Component;
 class GameObject;
 } // namespace e2d::core
 
 namespace e2d::physics {
 
-class Collider;
-
-/// One point of contact between two colliders, in world space (world units, see
-/// PhysicsSystem's unitsPerMetre).
+/// One point of contact between two colliders, in world space and world units (the physics
+/// system converts from its metres), as the shapes are after the fixed step that reported it.
 struct ContactPoint {
     /// Where the colliders touch.
     glm::vec2 point{0.0f};
     /// Unit normal pointing away from the object receiving the event, towards `other`.
     glm::vec2 normal{0.0f};
-    /// Signed distance along the normal; negative means overlap.
+    /// Signed distance along the normal, world units; negative means overlap (about zero for
+    /// shapes resting on each other).
     float separation = 0.0f;
 };
 
@@ -34,8 +34,9 @@ struct ContactInfo {
     int pointCount = 0;
     /// The object on the other side of the contact (nullptr if it has none).
     core::GameObject* other = nullptr;
-    /// The other object's collider (nullptr if it has none).
-    Collider* otherCollider = nullptr;
+    /// The other object's collider component: a Collider, or the CharacterController of a
+    /// character (nullptr if it has none).
+    core::Component* otherCollider = nullptr;
 };
 
 // The events PhysicsSystem delivers after each step to the components of the two objects
