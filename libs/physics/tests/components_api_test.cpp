@@ -181,7 +181,7 @@ TEST_F(ComponentsApiTest, CollisionEnterReportsTheManifoldAfterTheStepInWorldUni
     ASSERT_EQ(c.pointCount, 2);
     const float bottom = box->position().y - 20.0f;
     for (int i = 0; i < 2; ++i) {
-        const core::ContactPoint& p = c.points[static_cast<std::size_t>(i)];
+        const physics::ContactPoint& p = c.points[static_cast<std::size_t>(i)];
         EXPECT_NEAR(p.normal.y, -1.0f, 1e-4f) << "away from the box";
         EXPECT_NEAR(p.separation, 0.0f, 1.5f) << "world units, after the step";
         EXPECT_NEAR(p.point.y, 10.0f, 1.5f);
