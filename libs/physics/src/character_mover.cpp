@@ -105,8 +105,13 @@ MoveResult CharacterMover::move(const World& world, Vec2 displacement) {
         for (const MoverContact& plane : planes_) {
             detail::MoverConstraint c;
             c.normal = plane.normal;
-            // Keep `skin` clear; an overlap is left by at most the push-out budget.
+            // Keep `skin` clear; an overlap is left by at most the push-out budget. A dynamic
+            // body only blocks (no deeper): resting on the mover's head it must not press the
+            // mover into the floor.
             c.need = std::min(def_.skin - plane.separation, budget);
+            if (world.bodyType(plane.body) == BodyType::Dynamic) {
+                c.need = std::min(c.need, 0.0f);
+            }
             used = std::max(used, c.need);
             // Ground lifts the mover straight up (it does not slide down a slope it stands on and
             // keeps its speed along one it walks up); a slope too steep to stand on pushes

@@ -146,6 +146,27 @@ TEST(CharacterMover, StandsStillOnAWalkableSlopeUnderGravity) {
     EXPECT_NEAR(mover.position().y, start.y, kTol);
 }
 
+TEST(CharacterMover, FollowsASlopeDownWithGroundSnapping) {
+    World world;
+    addRamp(world, 30.0f);
+    const float angle = 30.0f * 3.14159265f / 180.0f;
+    const Vec2 top{9.0f, 0.5f + 9.0f * std::tan(angle) + 0.31f / std::cos(angle)};
+    // Walking down at 0.1 m per move with a little gravity: the slope drops 5.8 cm per move.
+    const auto groundedMoves = [&](float snap) {
+        CharacterMoverDef def = moverAt(top);
+        def.groundSnapDistance = snap;
+        CharacterMover mover(def);
+        mover.move(world, {0.0f, -0.01f});
+        int count = 0;
+        for (int i = 0; i < 50; ++i) {
+            count += mover.move(world, {-0.1f, -0.01f}).grounded ? 1 : 0;
+        }
+        return count;
+    };
+    EXPECT_EQ(groundedMoves(0.1f), 50);
+    EXPECT_LT(groundedMoves(0.0f), 30); // without it the feet leave the slope every other move
+}
+
 TEST(CharacterMover, DoesNotWalkUpASlopeAboveTheLimitAndSlidesDownIt) {
     World world;
     addFloor(world);

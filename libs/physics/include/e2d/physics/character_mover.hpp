@@ -59,7 +59,9 @@ struct CharacterMoverDef {
     /// instead of leaving the ground for a frame. Metres, finite, >= 0; 0 turns it off.
     /// Default 0.05.
     float groundSnapDistance = 0.05f;
-    /// Which shapes block it (QueryFilter rules; sensors never do). Default everything.
+    /// Which shapes block it (QueryFilter rules; sensors never do). Default everything. Shapes
+    /// of dynamic bodies block it but never push it (a crate resting on its head does not press
+    /// it into the floor); to push them, give the character a body (CharacterController does).
     QueryFilter filter{};
     /// A body whose shapes never block it (the mover's own body, if the game gives it one so
     /// that others see it; CharacterController does). Default none.
