@@ -25,22 +25,68 @@ ShapeProxy capsuleProxy(const Capsule& capsule, Vec2 position, float radius) {
     return proxy;
 }
 
-void gatherCandidates(const MoverQuery& query, Aabb box, std::vector<ShapeId>& candidates) {
+// A shape near the mover that may block it.
+struct Candidate {
+    ShapeId id;
+    BodyId body;
+    const ShapeGeometry* geometry = nullptr;
+    Transform transform{};
+    // A chain segment's front normal (not normalised; only signs are read), else zero.
+    Vec2 front{0.0f, 0.0f};
+};
+
+// Calls `visit(candidate)` for each shape whose box meets `box` and that can block the mover:
+// seen by the filter, not a sensor, not on the ignored body, and not a one-sided chain segment
+// the mover's centre is behind.
+template <class Visit>
+void forEachCandidate(const MoverQuery& query, const Aabb& box, Vec2 center,
+                      std::vector<ShapeId>& candidates, Visit&& visit) {
+    const World& world = *query.world;
     candidates.clear();
     QueryFilter filter = query.filter;
     filter.includeSensors = false;
-    query.world->overlapAabb(box, filter, [&](ShapeId id) {
+    world.overlapAabb(box, filter, [&](ShapeId id) {
         candidates.push_back(id);
         return true;
     });
+    for (ShapeId id : candidates) {
+        Candidate c{id, world.shapeBody(id)};
+        if (c.body == query.ignoreBody) {
+            continue;
+        }
+        c.geometry = &world.shapeGeometry(id);
+        c.transform = world.transform(c.body);
+        if (const auto* chain = std::get_if<ChainSegment>(c.geometry)) {
+            const Segment& seg = chain->segment;
+            c.front = rotate(c.transform.q, rightPerp(seg.point2 - seg.point1));
+            if (dot(center - transformPoint(c.transform, seg.point1), c.front) < 0.0f) {
+                continue;
+            }
+        }
+        visit(c);
+    }
 }
 
-// A chain segment is solid on its front only: whether `point` is behind it, and its front
-// normal (not normalised; only signs are read).
-bool behindChain(const ChainSegment& chain, const Transform& xf, Vec2 point, Vec2* front) {
+// Whether a contact on a chain segment is one at an end of it, beyond its face (the normal
+// leans past the end), where the chain goes on flat or turns up (towards its front): the
+// neighbouring segment's face already holds the mover there, and the corner's tilted normal would
+// make it bump over every seam. Where the chain turns down (a hilltop) the corner is real and kept.
+bool coveredByNeighbour(const ChainSegment& chain, const Transform& xf, const MoverContact& contact) {
     const Segment& seg = chain.segment;
-    *front = rotate(xf.q, rightPerp(seg.point2 - seg.point1));
-    return dot(point - transformPoint(xf, seg.point1), *front) < 0.0f;
+    const Vec2 edge = seg.point2 - seg.point1;
+    const Vec2 normal = invRotate(xf.q, contact.normal);
+    const float past = dot(normal, edge) / length(edge); // < 0 beyond point1, > 0 beyond point2
+    constexpr float kLean = 1.0e-4f;
+    constexpr float kStraight = 1.0e-3f; // sine of the turn below which the chain goes on flat
+    if (past < -kLean && chain.hasGhost1) {
+        const Vec2 before = seg.point1 - chain.ghost1;
+        return cross(before, edge) <= kStraight * length(before) * length(edge);
+    }
+    if (past > kLean && chain.hasGhost2) {
+        const Vec2 after = chain.ghost2 - seg.point2;
+        return cross(edge, after) <= kStraight * length(edge) * length(after);
+    }
+    return false;
 }
 
 bool accepted(const MoverQuery& query, ShapeId shape, Vec2 normal) {
@@ -53,30 +99,17 @@ bool accepted(const MoverQuery& query, ShapeId shape, Vec2 normal) {
 void collideMover(const MoverQuery& query, Vec2 position, float reach,
                   std::vector<MoverContact>& planes, std::vector<ShapeId>& candidates) {
     planes.clear();
-    const World& world = *query.world;
     Aabb box = computeAabb(query.capsule, Transform{position, {}});
     box.lower -= Vec2(reach, reach);
     box.upper += Vec2(reach, reach);
-    gatherCandidates(query, box, candidates);
     const Vec2 center = position + 0.5f * (query.capsule.center1 + query.capsule.center2);
 
     DistanceInput input;
     input.proxyB = capsuleProxy(query.capsule, position, query.capsule.radius);
     input.useRadii = false;
-    for (ShapeId id : candidates) {
-        const BodyId body = world.shapeBody(id);
-        if (body == query.ignoreBody) {
-            continue;
-        }
-        const ShapeGeometry& geometry = world.shapeGeometry(id);
-        input.transformA = world.transform(body);
-        if (const auto* chain = std::get_if<ChainSegment>(&geometry)) {
-            Vec2 front;
-            if (behindChain(*chain, input.transformA, center, &front)) {
-                continue;
-            }
-        }
-        input.proxyA = makeProxy(geometry);
+    forEachCandidate(query, box, center, candidates, [&](const Candidate& candidate) {
+        input.transformA = candidate.transform;
+        input.proxyA = makeProxy(*candidate.geometry);
         const float radii = input.proxyA.radius + query.capsule.radius;
         MoverContact contact;
         const DistanceOutput cores = shapeDistance(input);
@@ -93,25 +126,26 @@ void collideMover(const MoverQuery& query, Vec2 position, float reach,
             contact.normal = deep.normal;
             contact.point = deep.pointA;
         }
-        if (contact.separation > reach || !accepted(query, id, contact.normal)) {
-            continue;
+        if (const auto* chain = std::get_if<ChainSegment>(candidate.geometry);
+            chain != nullptr && coveredByNeighbour(*chain, candidate.transform, contact)) {
+            return;
         }
-        contact.shape = id;
-        contact.body = body;
-        planes.push_back(contact);
-    }
+        if (contact.separation <= reach && accepted(query, candidate.id, contact.normal)) {
+            contact.shape = candidate.id;
+            contact.body = candidate.body;
+            planes.push_back(contact);
+        }
+    });
 }
 
 float castMover(const MoverQuery& query, Vec2 position, Vec2 translation,
                 std::vector<ShapeId>& candidates) {
-    const World& world = *query.world;
     const Capsule& capsule = query.capsule;
     const Aabb start = computeAabb(capsule, Transform{position, {}});
     const float margin = query.skin + kLinearSlop;
     Aabb box = unionOf(start, {start.lower + translation, start.upper + translation});
     box.lower -= Vec2(margin, margin);
     box.upper += Vec2(margin, margin);
-    gatherCandidates(query, box, candidates);
     const Vec2 center = position + 0.5f * (capsule.center1 + capsule.center2);
 
     float best = 1.0f;
@@ -120,21 +154,12 @@ float castMover(const MoverQuery& query, Vec2 position, Vec2 translation,
     gap.useRadii = false;
     ShapeCastPairInput cast;
     cast.translationB = translation;
-    for (ShapeId id : candidates) {
-        const BodyId body = world.shapeBody(id);
-        if (body == query.ignoreBody) {
-            continue;
+    forEachCandidate(query, box, center, candidates, [&](const Candidate& candidate) {
+        if (dot(translation, candidate.front) > 0.0f) {
+            return; // leaving a chain segment's front
         }
-        const ShapeGeometry& geometry = world.shapeGeometry(id);
-        const Transform xf = world.transform(body);
-        if (const auto* chain = std::get_if<ChainSegment>(&geometry)) {
-            Vec2 front;
-            if (behindChain(*chain, xf, center, &front) || dot(translation, front) >= 0.0f) {
-                continue;
-            }
-        }
-        gap.proxyA = makeProxy(geometry);
-        gap.transformA = xf;
+        gap.proxyA = makeProxy(*candidate.geometry);
+        gap.transformA = candidate.transform;
         const float cores = shapeDistance(gap).distance;
         const float shapeRadius = gap.proxyA.radius;
         const float separation = cores - shapeRadius - capsule.radius;
@@ -143,23 +168,23 @@ float castMover(const MoverQuery& query, Vec2 position, Vec2 translation,
         if (separation < query.skin + kEncroachGap) {
             radius = cores - shapeRadius - kEncroachGap;
             if (radius < 0.0f) {
-                continue; // too deep to cast from; the planes push it out
+                return; // too deep to cast from; the planes push it out
             }
         }
         cast.proxyA = gap.proxyA;
-        cast.transformA = xf;
+        cast.transformA = candidate.transform;
         cast.proxyB = capsuleProxy(capsule, position, radius);
         cast.maxFraction = best;
         const CastOutput out = shapeCast(cast);
         if (out.hit) {
-            if (out.fraction < best && accepted(query, id, out.normal)) {
+            if (out.fraction < best && accepted(query, candidate.id, out.normal)) {
                 best = out.fraction;
             }
         } else if (out.iterations >= kMaxShapeCastIterations) {
             // A grazing approach that did not converge: only this much is known to be free.
             best = std::min(best, out.fraction);
         }
-    }
+    });
     return best;
 }
 

@@ -255,6 +255,30 @@ TEST(CharacterMover, NeverTunnelsThroughAThinSegmentAtAnySpeed) {
     EXPECT_TRUE(fast.lastMove().touchingWall);
 }
 
+TEST(CharacterMover, WalksAChainTerrainSmoothlyAndPassesThroughItsBack) {
+    World world;
+    // A floor of 1 m chain segments (listed right to left: solid from above), top at y = 0.
+    ChainDef chain;
+    for (int x = 20; x >= -20; --x) {
+        chain.points.push_back({static_cast<float>(x), 0.0f});
+    }
+    const BodyId ground = world.createBody({});
+    world.createChain(ground, chain);
+    CharacterMover mover(moverAt({-10.0f, kRest}));
+    for (int i = 0; i < 150; ++i) {
+        const MoveResult r = mover.move(world, {0.13f, -0.01f});
+        ASSERT_TRUE(r.grounded) << "move " << i;
+        ASSERT_NEAR(r.translation.x, 0.13f, 1e-4f) << "move " << i; // no catching on the seams
+        ASSERT_NEAR(r.position.y, kRest, kTol) << "move " << i;
+    }
+    // From below, the chain's back side lets it through.
+    CharacterMover below(moverAt({0.3f, -2.0f}));
+    for (int i = 0; i < 10; ++i) {
+        below.move(world, {0.0f, 0.5f});
+    }
+    EXPECT_NEAR(below.position().y, 3.0f, kTol);
+}
+
 TEST(CharacterMover, LandsFromAFallGroundedWithoutSinking) {
     World world;
     const BodyId floor = addFloor(world);
