@@ -4,11 +4,14 @@
 #include <e2d/core/error.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/scene.hpp>
+#include <e2d/core/contact_info.hpp>
+#include <e2d/physics/collider.hpp>
 #include <e2d/physics/physics_system.hpp>
 
 #include "error_format.hpp"
 #include "object_pose.hpp"
 
+#include <algorithm>
 #include <string>
 #include <string_view>
 
@@ -47,6 +50,14 @@ void validate(const CharacterControllerDef& def) {
         }
         throw core::Error(message);
     }
+}
+
+// The capsule as a shape the World takes: one whose centres (nearly) coincide is a Circle.
+ShapeGeometry worldGeometry(const Capsule& capsule) {
+    if (distance(capsule.center1, capsule.center2) < kLinearSlop) {
+        return Circle{0.5f * (capsule.center1 + capsule.center2), capsule.radius};
+    }
+    return capsule;
 }
 
 MoveResult inUnits(MoveResult r, float unitsPerMetre) {
@@ -90,9 +101,12 @@ void CharacterController::onInitialize() {
         bd.fixedRotation = true;
         body_ = system.world().createBody(bd);
         ShapeDef sd;
+        // move() reports the character's contacts and sensor overlaps itself (see the header).
+        sd.enableContactEvents = false;
+        sd.enableSensorEvents = false;
         sd.filter.categoryBits = def_.category.bits();
         sd.filter.maskBits = def_.mask.bits();
-        shape_ = system.world().createShape(body_, sd, mover_->def().capsule);
+        shape_ = system.world().createShape(body_, sd, worldGeometry(mover_->def().capsule));
         mover_->setIgnoredBody(body_);
     }
     last_ = inUnits(mover_->lastMove(), upm);
@@ -105,6 +119,8 @@ void CharacterController::onTerminate() {
     body_ = {};
     shape_ = {};
     mover_.reset();
+    touching_.clear();
+    sensors_.clear();
 }
 
 CharacterMover& CharacterController::mover() {
@@ -135,7 +151,93 @@ const MoveResult& CharacterController::move(Vec2 motion) {
         system.world().setTransform(body_, r.position, 0.0f);
     }
     last_ = inUnits(r, upm);
+    dispatchContactEvents();
+    dispatchSensorEvents();
     return last_;
+}
+
+namespace {
+
+bool contains(const std::vector<ShapeId>& shapes, ShapeId shape) {
+    return std::find(shapes.begin(), shapes.end(), shape) != shapes.end();
+}
+
+core::ContactInfo infoAbout(Collider* other, core::Component* otherComponent,
+                            core::GameObject* otherObject) {
+    core::ContactInfo info;
+    info.other = other != nullptr ? other->gameObject() : otherObject;
+    info.otherCollider = other != nullptr ? other : otherComponent;
+    return info;
+}
+
+} // namespace
+
+// Shapes that started or stopped touching the capsule since the last move.
+void CharacterController::dispatchContactEvents() {
+    PhysicsSystem& system = sys();
+    const float upm = system.unitsPerMetre();
+    scratch_.clear();
+    for (const MoverContact& contact : mover_->contacts()) {
+        if (contains(scratch_, contact.shape)) {
+            continue;
+        }
+        scratch_.push_back(contact.shape);
+        if (contains(touching_, contact.shape)) {
+            continue;
+        }
+        Collider* other = system.collider(contact.shape);
+        core::ContactInfo mine = infoAbout(other, nullptr, nullptr);
+        mine.pointCount = 1;
+        mine.points[0] = {contact.point * upm, -contact.normal, contact.separation * upm};
+        gameObject()->dispatchCollisionEnter(mine);
+        if (other != nullptr) {
+            core::ContactInfo theirs = infoAbout(nullptr, this, gameObject());
+            theirs.pointCount = 1;
+            theirs.points[0] = {contact.point * upm, contact.normal, contact.separation * upm};
+            other->gameObject()->dispatchCollisionEnter(theirs);
+        }
+    }
+    for (ShapeId shape : touching_) {
+        if (!contains(scratch_, shape)) {
+            Collider* other = system.collider(shape);
+            gameObject()->dispatchCollisionExit(infoAbout(other, nullptr, nullptr));
+            if (other != nullptr) {
+                other->gameObject()->dispatchCollisionExit(infoAbout(nullptr, this, gameObject()));
+            }
+        }
+    }
+    touching_.swap(scratch_);
+}
+
+// Sensors the capsule started or stopped overlapping since the last move.
+void CharacterController::dispatchSensorEvents() {
+    PhysicsSystem& system = sys();
+    const World& world = system.world();
+    QueryFilter filter;
+    filter.categoryBits = def_.category.bits();
+    filter.maskBits = def_.mask.bits();
+    filter.includeSensors = true;
+    scratch_ = world.overlapShape(worldGeometry(mover_->worldCapsule()), Transform{}, filter);
+    std::erase_if(scratch_, [&](ShapeId shape) { return !world.isSensor(shape); });
+    for (ShapeId shape : scratch_) {
+        if (!contains(sensors_, shape)) {
+            Collider* sensor = system.collider(shape);
+            gameObject()->dispatchTriggerEnter(infoAbout(sensor, nullptr, nullptr));
+            if (sensor != nullptr) {
+                sensor->gameObject()->dispatchTriggerEnter(infoAbout(nullptr, this, gameObject()));
+            }
+        }
+    }
+    for (ShapeId shape : sensors_) {
+        if (!contains(scratch_, shape)) {
+            Collider* sensor = system.collider(shape);
+            gameObject()->dispatchTriggerExit(infoAbout(sensor, nullptr, nullptr));
+            if (sensor != nullptr) {
+                sensor->gameObject()->dispatchTriggerExit(infoAbout(nullptr, this, gameObject()));
+            }
+        }
+    }
+    sensors_.swap(scratch_);
 }
 
 Vec2 CharacterController::clipVelocity(Vec2 velocity) const {

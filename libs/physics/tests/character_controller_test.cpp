@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // CharacterController on game objects of a real scene, in pixels (100 world units per metre).
+#include <e2d/core/component.hpp>
+#include <e2d/core/contact_info.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/log.hpp>
@@ -15,6 +17,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -163,6 +166,75 @@ TEST_F(CharacterControllerTest, AnObjectMovedByHandTeleportsTheCharacter) {
     controller->move({10.0f, 0.0f});
     EXPECT_NEAR(player->position().x, 710.0f, 1e-2f);
     EXPECT_NEAR(controller->mover().position().x, 7.1f, 1e-4f);
+}
+
+// Records the physics events its object receives.
+class Recorder : public core::Component {
+public:
+    struct Event {
+        std::string kind;
+        core::ContactInfo info;
+    };
+    void onCollisionEnter(const core::ContactInfo& c) override { events.push_back({"enter", c}); }
+    void onCollisionExit(const core::ContactInfo& c) override { events.push_back({"exit", c}); }
+    void onTriggerEnter(const core::ContactInfo& c) override { events.push_back({"trigger-enter", c}); }
+    void onTriggerExit(const core::ContactInfo& c) override { events.push_back({"trigger-exit", c}); }
+    [[nodiscard]] std::vector<std::string> kinds() const {
+        std::vector<std::string> out;
+        for (const Event& e : events) {
+            out.push_back(e.kind);
+        }
+        return out;
+    }
+    std::vector<Event> events;
+};
+
+TEST_F(CharacterControllerTest, TellsBothObjectsAboutWallsAndStaticTriggers) {
+    core::GameObject* player = nullptr;
+    core::GameObject* coin = nullptr;
+    core::GameObject* wall = nullptr;
+    CharacterController* controller = nullptr;
+    Recorder* playerLog = nullptr;
+    Recorder* coinLog = nullptr;
+    Recorder* wallLog = nullptr;
+    start([&](core::Scene& s) {
+        floor(s);
+        coin = &s.createGameObject();
+        coin->setPosition(glm::vec2{200.0f, 100.0f});
+        physics::ColliderDef sensor;
+        sensor.isTrigger = true;
+        coin->addComponent<Collider>(physics::Circle{{0.0f, 0.0f}, 20.0f}, sensor);
+        coinLog = coin->addComponent<Recorder>();
+        wall = &s.createGameObject();
+        wall->setPosition(glm::vec2{500.0f, 200.0f});
+        wall->addComponent<Collider>(physics::makeBox(50.0f, 200.0f)); // face at x = 450
+        wallLog = wall->addComponent<Recorder>();
+        player = &s.createGameObject();
+        player->setPosition(glm::vec2{0.0f, kRest});
+        controller = player->addComponent<CharacterController>(pixelCharacter());
+        playerLog = player->addComponent<Recorder>();
+    });
+    frames(*controller, 1, 0.0f);
+    // Standing on the floor: one collision enter, with the floor's object.
+    ASSERT_EQ(playerLog->kinds(), std::vector<std::string>{"enter"});
+    EXPECT_NEAR(playerLog->events[0].info.points[0].normal.y, -1.0f, 1e-4f); // towards the floor
+    playerLog->events.clear();
+
+    frames(*controller, 90, 300.0f); // through the coin (x 200) and on to the wall (x 450)
+    EXPECT_NEAR(player->position().x, 450.0f - 31.0f, 0.5f);
+    ASSERT_EQ(coinLog->kinds(), (std::vector<std::string>{"trigger-enter", "trigger-exit"}));
+    EXPECT_EQ(coinLog->events[0].info.other, player);
+    EXPECT_EQ(coinLog->events[0].info.otherCollider, controller);
+    ASSERT_EQ(wallLog->kinds(), std::vector<std::string>{"enter"});
+    EXPECT_EQ(wallLog->events[0].info.other, player);
+    EXPECT_NEAR(wallLog->events[0].info.points[0].normal.x, -1.0f, 1e-4f); // towards the player
+    EXPECT_NEAR(wallLog->events[0].info.points[0].point.x, 450.0f, 0.1f); // world units
+    ASSERT_EQ(playerLog->kinds(), (std::vector<std::string>{"trigger-enter", "trigger-exit", "enter"}));
+    EXPECT_EQ(playerLog->events[0].info.other, coin);
+    EXPECT_EQ(playerLog->events[2].info.other, wall);
+
+    frames(*controller, 10, -300.0f); // and away from it
+    EXPECT_EQ(wallLog->kinds(), (std::vector<std::string>{"enter", "exit"}));
 }
 
 TEST(CharacterControllerErrors, NameTheComponentTheFieldAndTheValue) {

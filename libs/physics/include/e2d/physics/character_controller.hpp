@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <optional>
+#include <vector>
 
 namespace e2d::physics {
 
@@ -36,10 +37,10 @@ struct CharacterControllerDef {
     /// bit; everything.
     core::Mask category{1};
     core::Mask mask = core::Mask::all();
-    /// Give the character a kinematic body carrying its capsule, moved with it, so that the rest
-    /// of the world sees it: dynamic bodies are pushed by it and collide with it, ray casts hit
-    /// it, and trigger Colliders on dynamic bodies (or on any body, with
-    /// ShapeDef::sensorSeesNonDynamic) overlap it. Default true.
+    /// Give the character a kinematic body carrying its capsule, teleported with it at each
+    /// move(), so that the rest of the world sees it: dynamic bodies collide with it and rest on
+    /// it, ray casts and queries find it. Sensors are found by move() itself either way (see
+    /// the class comment). Default true.
     bool hasBody = true;
     /// See CharacterMoverDef::contactFilter (one-way platforms). Default none.
     std::function<bool(ShapeId shape, Vec2 normal)> contactFilter{};
@@ -65,6 +66,13 @@ struct CharacterControllerDef {
 ///
 /// The object is moved at once (its world position; its angle is left alone, the capsule does
 /// not turn). Moving the object by hand teleports the character there at the next move().
+///
+/// Events, from move(), to both objects (as PhysicsSystem does for bodies): onCollisionEnter
+/// when the character starts touching a solid shape (a wall, the ground, a crate; one point,
+/// normal pointing away from the receiver, world units) and onCollisionExit when it stops;
+/// onTriggerEnter/Exit when its capsule starts/stops overlapping a sensor Collider, whatever
+/// the sensor's body type. Its own body reports no contact or sensor events through the
+/// PhysicsSystem (they would name no Collider for it).
 class CharacterController : public core::Component {
 public:
     static constexpr bool kUnique = true;
@@ -105,6 +113,8 @@ public:
 
 private:
     PhysicsSystem& sys() const;
+    void dispatchContactEvents();
+    void dispatchSensorEvents();
 
     CharacterControllerDef def_;
     mutable PhysicsSystem* system_ = nullptr;
@@ -113,6 +123,10 @@ private:
     BodyId body_{};
     ShapeId shape_{};
     Vec2 writtenPosition_{0.0f, 0.0f}; // metres, where move() last put the object
+    // What the character touched and overlapped after the previous move, for enter/exit events.
+    std::vector<ShapeId> touching_;
+    std::vector<ShapeId> sensors_;
+    std::vector<ShapeId> scratch_;
 };
 
 } // namespace e2d::physics
