@@ -33,8 +33,10 @@ class World;
 /// How a CharacterMover is made. The constructor validates every field.
 struct CharacterMoverDef {
     /// The character's shape, relative to its position, metres: a capsule (center1 == center2
-    /// makes a disc), radius finite and > 0, centres finite. A round bottom slides over seams
-    /// and steps smoothly. Default a 1.6 m tall capsule of radius 0.3 standing on its position
+    /// makes a disc), radius finite and > 0, centres finite. The round bottom slides over seams,
+    /// and walks over a step whose edge it meets within maxSlopeAngle of up (lower than
+    /// radius * (1 - cos(maxSlopeAngle)), 0.29 radius at 45 degrees); there is no separate
+    /// step-up for higher ones. Default a 1.6 m tall capsule of radius 0.3 standing on its position
     /// minus 0.8 m: centres (0, -0.5) and (0, 0.5).
     Capsule capsule{{0.0f, -0.5f}, {0.0f, 0.5f}, 0.3f};
     /// Where the mover starts, metres, finite, within kHuge. Default (0, 0).
