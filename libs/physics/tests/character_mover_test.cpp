@@ -193,6 +193,26 @@ TEST(CharacterMover, DoesNotWalkUpASlopeAboveTheLimitAndSlidesDownIt) {
     EXPECT_EQ(groundedMoves, 0);
 }
 
+TEST(CharacterMover, WalksOverALowStepAndNotOverAHighOne) {
+    // Steps up at x = 1: 0.05 m is below radius * (1 - cos 45) = 0.088 m, 0.15 m is above.
+    const auto walk = [](float height) {
+        World world;
+        addFloor(world);
+        addBody(world, {6.0f, 0.5f * height}, makeBox(5.0f, 0.5f * height));
+        CharacterMover mover(moverAt({0.0f, kRest}));
+        for (int i = 0; i < 30; ++i) {
+            mover.move(world, {0.1f, -0.02f});
+        }
+        return mover.position();
+    };
+    const Vec2 low = walk(0.05f);
+    EXPECT_GT(low.x, 2.9f);
+    EXPECT_NEAR(low.y, 0.05f + kRest, kTol);
+    const Vec2 high = walk(0.15f);
+    EXPECT_LT(high.x, 1.0f);
+    EXPECT_NEAR(high.y, kRest, kTol);
+}
+
 TEST(CharacterMover, RestsInACornerWithoutJitter) {
     World world;
     addFloor(world);
