@@ -73,7 +73,7 @@ void CharacterMover::setPosition(Vec2 position) {
     contacts_.clear();
 }
 
-void CharacterMover::setContactFilter(std::function<bool(ShapeId, Vec2)> filter) {
+void CharacterMover::setContactFilter(MoverContactFilter filter) {
     def_.contactFilter = std::move(filter);
 }
 
@@ -87,8 +87,9 @@ MoveResult CharacterMover::move(const World& world, Vec2 displacement) {
                      "displacement must be finite and keep the mover within kHuge, got " +
                          detail::formatVec(displacement));
     }
-    const detail::MoverQuery query{&world, def_.capsule, def_.skin, def_.filter, def_.ignoreBody,
-                                   &def_.contactFilter};
+    const detail::MoverQuery query{&world,        def_.capsule, def_.skin,
+                                   def_.filter,   def_.ignoreBody, def_.up,
+                                   cosMaxSlope_, &def_.contactFilter};
     const Vec2 up = def_.up;
     // Surfaces this close count as touched (for the solver and for the contacts reported).
     const float reach = def_.skin + std::max(def_.skin, kLinearSlop);
@@ -118,7 +119,7 @@ MoveResult CharacterMover::move(const World& world, Vec2 displacement) {
             // sideways (it cannot be climbed); walls and ceilings push along their normal.
             const float facing = dot(plane.normal, up);
             c.direction = plane.normal;
-            if (facing >= cosMaxSlope_) {
+            if (plane.surface == MoverSurface::Ground) {
                 c.direction = up;
             } else if (facing > 0.0f) {
                 const Vec2 side = plane.normal - facing * up;
@@ -149,16 +150,11 @@ MoveResult CharacterMover::move(const World& world, Vec2 displacement) {
             break;
         }
     }
-    result.pushedOut = std::max(result.pushedOut, 0.0f);
 
     const auto findContacts = [&](Vec2 at) {
         detail::collideMover(query, at, reach, contacts_, candidates_);
         bool ground = false;
-        for (MoverContact& contact : contacts_) {
-            const float facing = dot(contact.normal, up);
-            contact.surface = facing >= cosMaxSlope_    ? MoverSurface::Ground
-                              : facing <= -cosMaxSlope_ ? MoverSurface::Ceiling
-                                                        : MoverSurface::Wall;
+        for (const MoverContact& contact : contacts_) {
             ground = ground || contact.surface == MoverSurface::Ground;
         }
         return ground;

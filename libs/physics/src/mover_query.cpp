@@ -89,12 +89,19 @@ bool coveredByNeighbour(const ChainSegment& chain, const Transform& xf, const Mo
     return false;
 }
 
-bool accepted(const MoverQuery& query, ShapeId shape, Vec2 normal) {
+bool accepted(const MoverQuery& query, const MoverContact& contact) {
     return query.contactFilter == nullptr || !*query.contactFilter ||
-           (*query.contactFilter)(shape, normal);
+           (*query.contactFilter)(contact);
 }
 
 } // namespace
+
+MoverSurface surfaceOf(const MoverQuery& query, Vec2 normal) {
+    const float facing = dot(normal, query.up);
+    return facing >= query.cosMaxSlope    ? MoverSurface::Ground
+           : facing <= -query.cosMaxSlope ? MoverSurface::Ceiling
+                                          : MoverSurface::Wall;
+}
 
 void collideMover(const MoverQuery& query, Vec2 position, float reach,
                   std::vector<MoverContact>& planes, std::vector<ShapeId>& candidates) {
@@ -130,9 +137,10 @@ void collideMover(const MoverQuery& query, Vec2 position, float reach,
             chain != nullptr && coveredByNeighbour(*chain, candidate.transform, contact)) {
             return;
         }
-        if (contact.separation <= reach && accepted(query, candidate.id, contact.normal)) {
-            contact.shape = candidate.id;
-            contact.body = candidate.body;
+        contact.shape = candidate.id;
+        contact.body = candidate.body;
+        contact.surface = surfaceOf(query, contact.normal);
+        if (contact.separation <= reach && accepted(query, contact)) {
             planes.push_back(contact);
         }
     });
@@ -177,7 +185,9 @@ float castMover(const MoverQuery& query, Vec2 position, Vec2 translation,
         cast.maxFraction = best;
         const CastOutput out = shapeCast(cast);
         if (out.hit) {
-            if (out.fraction < best && accepted(query, candidate.id, out.normal)) {
+            const MoverContact met{candidate.id, candidate.body, out.point, out.normal, 0.0f,
+                                   surfaceOf(query, out.normal)};
+            if (out.fraction < best && accepted(query, met)) {
                 best = out.fraction;
             }
         } else if (out.iterations >= kMaxShapeCastIterations) {

@@ -18,12 +18,17 @@ struct MoverQuery {
     float skin = 0.0f;   ///< metres
     QueryFilter filter{};
     BodyId ignoreBody{};
-    const std::function<bool(ShapeId, Vec2)>* contactFilter = nullptr;
+    Vec2 up{0.0f, 1.0f};
+    float cosMaxSlope = 0.0f;
+    const MoverContactFilter* contactFilter = nullptr;
 };
+
+/// Ground, wall or ceiling, by the normal against up.
+MoverSurface surfaceOf(const MoverQuery& query, Vec2 normal);
 
 /// Fills `planes` (cleared first) with one contact per shape whose surface is within `reach`
 /// of the capsule placed at `position` (separation <= reach; overlaps have a negative one).
-/// The `surface` field is left to the caller. `candidates` is scratch.
+/// Shapes the contact filter refuses are left out. `candidates` is scratch.
 void collideMover(const MoverQuery& query, Vec2 position, float reach,
                   std::vector<MoverContact>& planes, std::vector<ShapeId>& candidates);
 

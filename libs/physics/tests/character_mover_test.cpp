@@ -412,8 +412,8 @@ TEST(CharacterMover, AContactFilterMakesAOneWayPlatform) {
     addFloor(world);
     const BodyId platform = addBody(world, {0.0f, 3.0f}, makeBox(2.0f, 0.1f)); // top at 3.1
     CharacterMoverDef def = moverAt({0.0f, kRest});
-    def.contactFilter = [&](ShapeId shape, Vec2 normal) {
-        return world.shapeBody(shape) != platform || normal.y > 0.7f;
+    def.contactFilter = [&](const MoverContact& c) {
+        return c.body != platform || (c.surface == MoverSurface::Ground && c.separation > -0.05f);
     };
     CharacterMover mover(def);
     // Jump up through it from below, then fall back onto it.

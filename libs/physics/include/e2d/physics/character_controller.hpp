@@ -42,8 +42,9 @@ struct CharacterControllerDef {
     /// it, ray casts and queries find it. Sensors are found by move() itself either way (see
     /// the class comment). Default true.
     bool hasBody = true;
-    /// See CharacterMoverDef::contactFilter (one-way platforms). Default none.
-    std::function<bool(ShapeId shape, Vec2 normal)> contactFilter{};
+    /// See CharacterMoverDef::contactFilter (one-way platforms); its contact's point and
+    /// separation are in metres. Default none.
+    MoverContactFilter contactFilter{};
 };
 
 /// A character moved by the game, not by forces: Unity's CharacterController, on e2d's

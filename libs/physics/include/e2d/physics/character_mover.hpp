@@ -30,6 +30,26 @@ namespace e2d::physics {
 
 class World;
 
+/// What a surface is to the mover, by its normal against CharacterMoverDef::up.
+enum class MoverSurface : std::uint8_t {
+    Ground,  ///< faces up within maxSlopeAngle: the mover stands on it
+    Wall,    ///< anything between (walls and slopes too steep to stand on)
+    Ceiling, ///< faces down within maxSlopeAngle
+};
+
+/// A surface the mover touches after a move() (within twice the skin).
+struct MoverContact {
+    ShapeId shape;
+    BodyId body;
+    Vec2 point{0.0f, 0.0f};    ///< on the shape's surface, metres
+    Vec2 normal{0.0f, 0.0f};   ///< unit, from the shape towards the mover
+    float separation = 0.0f;   ///< gap between the surfaces, metres (negative: overlap)
+    MoverSurface surface = MoverSurface::Wall;
+};
+
+/// Decides whether a shape blocks the mover (CharacterMoverDef::contactFilter).
+using MoverContactFilter = std::function<bool(const MoverContact& contact)>;
+
 /// How a CharacterMover is made. The constructor validates every field.
 struct CharacterMoverDef {
     /// The character's shape, relative to its position, metres: a capsule (center1 == center2
@@ -68,11 +88,14 @@ struct CharacterMoverDef {
     /// A body whose shapes never block it (the mover's own body, if the game gives it one so
     /// that others see it; CharacterController does). Default none.
     BodyId ignoreBody{};
-    /// Asked for each shape before it blocks the mover, with the contact normal (unit, pointing
-    /// from the shape to the mover); false lets the mover pass (a one-way platform: block only
-    /// when the normal points up). Called from move(), outside any world lock. Default none:
+    /// Asked for each shape before it blocks the mover, with the contact as it would be
+    /// reported (shape, body, point, normal from the shape to the mover, surface, and the
+    /// separation: negative when overlapping, 0 for a shape met while moving); false lets the
+    /// mover pass through. A one-way platform that holds what lands on it and lets through what
+    /// jumps up into it: `return c.shape != platform || (c.surface == MoverSurface::Ground &&
+    /// c.separation > -0.05f);`. Called from move(), outside any world lock. Default none:
     /// every shape the filter sees blocks.
-    std::function<bool(ShapeId shape, Vec2 normal)> contactFilter{};
+    MoverContactFilter contactFilter{};
 };
 
 namespace detail {
@@ -85,23 +108,6 @@ struct MoverConstraint {
     float push = 0.0f;
 };
 } // namespace detail
-
-/// What a surface is to the mover, by its normal against CharacterMoverDef::up.
-enum class MoverSurface : std::uint8_t {
-    Ground,  ///< faces up within maxSlopeAngle: the mover stands on it
-    Wall,    ///< anything between (walls and slopes too steep to stand on)
-    Ceiling, ///< faces down within maxSlopeAngle
-};
-
-/// A surface the mover touches after a move() (within twice the skin).
-struct MoverContact {
-    ShapeId shape;
-    BodyId body;
-    Vec2 point{0.0f, 0.0f};    ///< on the shape's surface, metres
-    Vec2 normal{0.0f, 0.0f};   ///< unit, from the shape towards the mover
-    float separation = 0.0f;   ///< gap between the surfaces, metres (negative: overlap)
-    MoverSurface surface = MoverSurface::Wall;
-};
 
 /// What one move() did and what the mover touches afterwards.
 struct MoveResult {
@@ -173,7 +179,7 @@ public:
     /// The body whose shapes never block the mover (CharacterMoverDef::ignoreBody).
     void setIgnoredBody(BodyId body) noexcept { def_.ignoreBody = body; }
     /// Replaces CharacterMoverDef::contactFilter (an empty function: every shape blocks).
-    void setContactFilter(std::function<bool(ShapeId shape, Vec2 normal)> filter);
+    void setContactFilter(MoverContactFilter filter);
 
 private:
     CharacterMoverDef def_;
