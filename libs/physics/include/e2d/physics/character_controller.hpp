@@ -52,7 +52,8 @@ struct CharacterControllerDef {
 /// own fixedUpdate(): the object goes as far as the world's shapes allow, sliding along walls,
 /// walking up slopes up to maxSlopeAngle, never passing through anything, and isGrounded(),
 /// groundVelocity() and lastMove() say what it touches afterwards. Unique per object; do not
-/// give the object a Rigidbody or a solid Collider too (they would push each other).
+/// give the object a Rigidbody too (they would both move it). Colliders on the same object
+/// never block its character.
 ///
 /// The game owns the rules: gravity, jumping, and the forgiving ones players expect, coyote
 /// time (a jump still starts for a moment, ~0.1 s, after running off an edge: remember when
