@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace e2d::physics {
 
@@ -92,7 +93,16 @@ void CharacterController::onInitialize() {
     PhysicsSystem& system = sys();
     const float upm = system.unitsPerMetre();
     const detail::Pose pose = detail::worldPose(*gameObject(), upm);
-    mover_.emplace(moverDef(def_, upm, pose.position));
+    CharacterMoverDef md = moverDef(def_, upm, pose.position);
+    // The object's own Colliders never block its character.
+    md.contactFilter = [this, user = def_.contactFilter](const MoverContact& contact) {
+        const Collider* own = sys().collider(contact.shape);
+        if (own != nullptr && own->gameObject() == gameObject()) {
+            return false;
+        }
+        return !user || user(contact);
+    };
+    mover_.emplace(std::move(md));
     writtenPosition_ = pose.position;
     if (def_.hasBody) {
         BodyDef bd;

@@ -164,8 +164,10 @@ TEST_F(CharacterControllerTest, AnObjectMovedByHandTeleportsTheCharacter) {
     frames(*controller, 2, 0.0f);
     // A solid Collider on the same object does not block its own character.
     player->addComponent<Collider>(physics::makeBox(40.0f, 40.0f));
-    frames(*controller, 1, 0.0f);
+    frames(*controller, 3, 0.0f);
+    EXPECT_NEAR(player->position().x, 0.0f, 1e-3f);
     EXPECT_NEAR(player->position().y, kRest, 0.5f);
+    EXPECT_NEAR(controller->lastMove().pushedOut, 0.0f, 1e-3f);
     player->setPosition(glm::vec2{700.0f, kRest});
     controller->move({10.0f, 0.0f});
     EXPECT_NEAR(player->position().x, 710.0f, 1e-2f);
