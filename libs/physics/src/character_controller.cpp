@@ -166,54 +166,57 @@ const MoveResult& CharacterController::move(Vec2 motion) {
     return last_;
 }
 
+Vec2 CharacterController::clipVelocity(Vec2 velocity) const {
+    return mover_ ? mover_->clipVelocity(velocity) : velocity;
+}
+
 namespace {
 
 bool contains(const std::vector<ShapeId>& shapes, ShapeId shape) {
     return std::find(shapes.begin(), shapes.end(), shape) != shapes.end();
 }
 
-core::ContactInfo infoAbout(Collider* other, core::Component* otherComponent,
-                            core::GameObject* otherObject) {
-    core::ContactInfo info;
-    info.other = other != nullptr ? other->gameObject() : otherObject;
-    info.otherCollider = other != nullptr ? other : otherComponent;
-    return info;
-}
+using Dispatch = void (core::GameObject::*)(const core::ContactInfo&);
 
 } // namespace
 
+// One event to both sides: the character's object hears of the shape's Collider (if the shape
+// has one), the Collider's object of the character. `contact` gives the point (enter events of
+// solid shapes only).
+void CharacterController::tellBoth(ShapeId shape, Dispatch dispatch, const MoverContact* contact) {
+    const float upm = sys().unitsPerMetre();
+    Collider* other = sys().collider(shape);
+    core::ContactInfo mine;
+    mine.other = other != nullptr ? other->gameObject() : nullptr;
+    mine.otherCollider = other;
+    core::ContactInfo theirs;
+    theirs.other = gameObject();
+    theirs.otherCollider = this;
+    if (contact != nullptr) {
+        mine.pointCount = theirs.pointCount = 1;
+        mine.points[0] = {contact->point * upm, -contact->normal, contact->separation * upm};
+        theirs.points[0] = {contact->point * upm, contact->normal, contact->separation * upm};
+    }
+    (gameObject()->*dispatch)(mine);
+    if (other != nullptr) {
+        (other->gameObject()->*dispatch)(theirs);
+    }
+}
+
 // Shapes that started or stopped touching the capsule since the last move.
 void CharacterController::dispatchContactEvents() {
-    PhysicsSystem& system = sys();
-    const float upm = system.unitsPerMetre();
     scratch_.clear();
     for (const MoverContact& contact : mover_->contacts()) {
-        if (contains(scratch_, contact.shape)) {
-            continue;
-        }
-        scratch_.push_back(contact.shape);
-        if (contains(touching_, contact.shape)) {
-            continue;
-        }
-        Collider* other = system.collider(contact.shape);
-        core::ContactInfo mine = infoAbout(other, nullptr, nullptr);
-        mine.pointCount = 1;
-        mine.points[0] = {contact.point * upm, -contact.normal, contact.separation * upm};
-        gameObject()->dispatchCollisionEnter(mine);
-        if (other != nullptr) {
-            core::ContactInfo theirs = infoAbout(nullptr, this, gameObject());
-            theirs.pointCount = 1;
-            theirs.points[0] = {contact.point * upm, contact.normal, contact.separation * upm};
-            other->gameObject()->dispatchCollisionEnter(theirs);
+        if (!contains(scratch_, contact.shape)) {
+            scratch_.push_back(contact.shape);
+            if (!contains(touching_, contact.shape)) {
+                tellBoth(contact.shape, &core::GameObject::dispatchCollisionEnter, &contact);
+            }
         }
     }
     for (ShapeId shape : touching_) {
         if (!contains(scratch_, shape)) {
-            Collider* other = system.collider(shape);
-            gameObject()->dispatchCollisionExit(infoAbout(other, nullptr, nullptr));
-            if (other != nullptr) {
-                other->gameObject()->dispatchCollisionExit(infoAbout(nullptr, this, gameObject()));
-            }
+            tellBoth(shape, &core::GameObject::dispatchCollisionExit, nullptr);
         }
     }
     touching_.swap(scratch_);
@@ -221,8 +224,7 @@ void CharacterController::dispatchContactEvents() {
 
 // Sensors the capsule started or stopped overlapping since the last move.
 void CharacterController::dispatchSensorEvents() {
-    PhysicsSystem& system = sys();
-    const World& world = system.world();
+    const World& world = sys().world();
     QueryFilter filter;
     filter.categoryBits = def_.category.bits();
     filter.maskBits = def_.mask.bits();
@@ -231,27 +233,15 @@ void CharacterController::dispatchSensorEvents() {
     std::erase_if(scratch_, [&](ShapeId shape) { return !world.isSensor(shape); });
     for (ShapeId shape : scratch_) {
         if (!contains(sensors_, shape)) {
-            Collider* sensor = system.collider(shape);
-            gameObject()->dispatchTriggerEnter(infoAbout(sensor, nullptr, nullptr));
-            if (sensor != nullptr) {
-                sensor->gameObject()->dispatchTriggerEnter(infoAbout(nullptr, this, gameObject()));
-            }
+            tellBoth(shape, &core::GameObject::dispatchTriggerEnter, nullptr);
         }
     }
     for (ShapeId shape : sensors_) {
         if (!contains(scratch_, shape)) {
-            Collider* sensor = system.collider(shape);
-            gameObject()->dispatchTriggerExit(infoAbout(sensor, nullptr, nullptr));
-            if (sensor != nullptr) {
-                sensor->gameObject()->dispatchTriggerExit(infoAbout(nullptr, this, gameObject()));
-            }
+            tellBoth(shape, &core::GameObject::dispatchTriggerExit, nullptr);
         }
     }
     sensors_.swap(scratch_);
-}
-
-Vec2 CharacterController::clipVelocity(Vec2 velocity) const {
-    return mover_ ? mover_->clipVelocity(velocity) : velocity;
 }
 
 } // namespace e2d::physics

@@ -115,6 +115,8 @@ public:
 
 private:
     PhysicsSystem& sys() const;
+    void tellBoth(ShapeId shape, void (core::GameObject::*dispatch)(const core::ContactInfo&),
+                  const MoverContact* contact);
     void dispatchContactEvents();
     void dispatchSensorEvents();
 
