@@ -101,6 +101,12 @@ MoveResult CharacterMover::move(const World& world, Vec2 displacement) {
     for (int pass = 0; pass < kMaxMoverPasses; ++pass) {
         result.passes = pass + 1;
         detail::collideMover(query, position_, reach, planes_, candidates_);
+        // Static planes are solved last: when the planes cannot all be met (a platform pressing
+        // the mover onto the floor) the answer meets theirs, and the mover is never pushed into
+        // the level.
+        std::stable_partition(planes_.begin(), planes_.end(), [&](const MoverContact& plane) {
+            return world.bodyType(plane.body) != BodyType::Static;
+        });
         constraints_.clear();
         float used = 0.0f;
         for (const MoverContact& plane : planes_) {

@@ -407,6 +407,24 @@ TEST(CharacterMover, LeavesAnOverlapGentlyWithoutLaunching) {
     EXPECT_NEAR(buried.position().y, kRest, kTol);
 }
 
+TEST(CharacterMover, SqueezedByAPlatformItStaysAboveTheFloorAndFinite) {
+    World world;
+    addFloor(world);
+    // A kinematic slab coming down at 1 m/s onto the mover's head (head top at 1.61 m).
+    const BodyId slab = addBody(world, {0.0f, 2.0f}, makeBox(2.0f, 0.2f), BodyType::Kinematic,
+                                {0.0f, -1.0f});
+    CharacterMover mover(moverAt({0.0f, kRest}));
+    for (int i = 0; i < 40; ++i) {
+        world.step(kDt);
+        const MoveResult r = mover.move(world, {0.0f, -0.01f});
+        ASSERT_TRUE(isFinite(r.position)) << "move " << i;
+        ASSERT_GT(r.position.y, kRest - kTol) << "move " << i; // never pushed into the floor
+        ASSERT_LT(r.position.y, kRest + kTol) << "move " << i; // nor thrown up
+        ASSERT_NEAR(r.position.x, 0.0f, 1e-4f) << "move " << i;
+    }
+    EXPECT_LT(world.transform(slab).p.y, 1.5f); // it did come down into the mover
+}
+
 TEST(CharacterMover, AContactFilterMakesAOneWayPlatform) {
     World world;
     addFloor(world);
