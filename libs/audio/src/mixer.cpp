@@ -65,6 +65,9 @@ void checkDef(const MixerDef& def) {
     if (l.maxFrames < 1) {
         throwInvalid(kCtor, "limits.maxFrames", ">= 1", l.maxFrames);
     }
+    if (!(l.maxSampleMagnitude >= 1.0f) || !std::isfinite(l.maxSampleMagnitude)) {
+        throwInvalid(kCtor, "limits.maxSampleMagnitude", "finite and >= 1", l.maxSampleMagnitude);
+    }
     if (!(def.streamChunkSeconds >= 0.01 && def.streamChunkSeconds <= 1.0)) {
         throwInvalid(kCtor, "streamChunkSeconds", "in 0.01..1", def.streamChunkSeconds);
     }
@@ -333,6 +336,14 @@ SoundId Mixer::add(SoundData data, std::string name) {
     }
     if (data.frames() < 1 || data.samples.size() % static_cast<std::size_t>(data.channels) != 0) {
         throwInvalid(fn, "data.samples.size()", "a positive multiple of channels", data.samples.size());
+    }
+    const float limit = m.def.limits.maxSampleMagnitude;
+    for (std::size_t i = 0; i < data.samples.size(); ++i) {
+        if (!(std::abs(data.samples[i]) <= limit)) {
+            throwInvalid(fn, "data.samples[" + std::to_string(i) + "]",
+                         "finite and within +-" + detail::formatValue(limit) + " (limits.maxSampleMagnitude)",
+                         data.samples[i]);
+        }
     }
     detail::Sound sound;
     sound.info.path = std::move(name);

@@ -29,6 +29,7 @@ struct Sound {
     std::vector<float> right; // empty for mono
     ALuint bufferLeft = 0;
     ALuint bufferRight = 0; // 0 for mono
+    bool streamErrorLogged = false; // a stream of it met damaged data (logged once per sound)
 };
 
 /// A streaming voice's decoder and its queue of buffers (one per channel for stereo).

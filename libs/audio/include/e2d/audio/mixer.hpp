@@ -174,10 +174,13 @@ public:
     /// A file that cannot be loaded gives a sound all the same: its SoundInfo carries the
     /// error, which is logged once as an error, and it plays nothing. Whole sounds are
     /// decoded at once; streamed ones are opened and checked here, decoded while they play.
+    /// Damaged and truncated files are refused by the rule of decodeSoundFile() in both modes;
+    /// a stream that meets damage while playing stops there, and the error is logged once per
+    /// sound.
     SoundId load(const std::filesystem::path& path, LoadMode mode = LoadMode::Whole);
     /// Adds decoded samples as a sound (not cached by path; `name` is for messages). Throws
-    /// core::Error for 0 or more than 2 channels, a sample rate outside the limits, or no
-    /// frames.
+    /// core::Error for 0 or more than 2 channels, a sample rate outside the limits, no frames,
+    /// or a sample that is not finite or beyond `limits.maxSampleMagnitude`.
     SoundId add(SoundData data, std::string name = "<memory>");
     /// The sound's description; throws core::Error for a null or unknown id.
     [[nodiscard]] const SoundInfo& soundInfo(SoundId sound) const;
