@@ -98,6 +98,7 @@ Mixer::Impl::~Impl() {
 
 bool Mixer::Impl::openOutput(bool reopening) {
     std::string error;
+    std::vector<std::string> libraryLines;
     const int sources = 2 * def.voiceCount;
     if (def.output == Output::Loopback) {
         device = detail::Device::openLoopback(def.loopbackSampleRate, sources,
@@ -106,10 +107,14 @@ bool Mixer::Impl::openOutput(bool reopening) {
         error = "no output requested (Output::None)";
     } else {
         // Reopening goes to the default device: the named one may be the one that went away.
-        device = detail::Device::openDevice(reopening ? std::string() : def.deviceName, sources, error);
+        device = detail::Device::openDevice(reopening ? std::string() : def.deviceName, sources, error, libraryLines);
     }
     if (!device) {
-        goSilent(error);
+        goSilent(error, def.output == Output::Device ? " (ALSOFT_DRIVERS=null chooses silence without looking for a device)"
+                                                     : "");
+        for (const std::string& line : libraryLines) {
+            logger->debug("audio::Mixer: while opening the device: " + line);
+        }
         return false;
     }
     createDeviceObjects();
@@ -123,9 +128,9 @@ bool Mixer::Impl::openOutput(bool reopening) {
     return true;
 }
 
-void Mixer::Impl::goSilent(const std::string& why) {
+void Mixer::Impl::goSilent(const std::string& why, std::string_view hint) {
     if (!silentReported) {
-        logger->warning("audio::Mixer: " + why + "; running silent");
+        logger->warning("audio::Mixer: " + why + "; running silent" + std::string(hint));
         silentReported = true;
     }
 }

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -96,7 +97,8 @@ struct Mixer::Impl {
 
     // Device (mixer.cpp)
     bool openOutput(bool reopening);
-    void goSilent(const std::string& why);
+    // Logs, once until a device opens again, that the mixer runs silent and why.
+    void goSilent(const std::string& why, std::string_view hint = {});
     void releaseDeviceObjects();
     void createDeviceObjects();
     void uploadSound(detail::Sound& sound);
