@@ -140,6 +140,9 @@ struct MixerStats {
 /// Without a device (none found, Output::None, or lost while running) the mixer runs silent:
 /// it says so once through the logger, every call still works, voices still start, fade and
 /// end on time (their positions advance with update()), and `reopen()` tries the device again.
+/// With no sound card, that is one warning with OpenAL Soft's reason; what OpenAL Soft and ALSA
+/// print to stderr while the device fails to open goes to the logger's debug level instead.
+/// `ALSOFT_DRIVERS=null` in the environment gives OpenAL Soft's silent device: no warning.
 ///
 /// Call `update(dt)` once per frame: it advances fades, applies the spatial model, keeps
 /// streams fed and retires voices that ended.
