@@ -248,6 +248,9 @@ LineCheck checkLine(std::string_view line) {
     if (elements == 0) {
         return fail("no button or axis fields");
     }
+    if (line.back() != ',') {
+        check.kept.pop_back(); // no longer than the line, so within GLFW's limit
+    }
     return check;
 }
 
