@@ -3,14 +3,14 @@
 # Xvfb): M picks the heavy mass, a left click at pixel (900, 200) (world (9.7, 12) m) creates a
 # polygon there, which falls onto the empty ground on the right. Then checks the last frame:
 # the heavy (dark blue) polygon rests on the ground below the click.
-#   click.sh <e2d_physics1> <e2d_image_check> <screenshot.png>   (run through with-display.sh)
+#   click.sh <e2d_physics_polygons> <e2d_image_check> <screenshot.png>   (run through with-display.sh)
 set -euo pipefail
 app="$1"; checker="$2"; shot="$3"
 rm -f "$shot"
 # Enough frames (a few ms each) for the click to happen early and the fall (1.6 s) to end.
 "$app" --frames 1800 --show --screenshot "$shot" >/dev/null 2>&1 &
 pid=$!
-wid=$("$(dirname "$0")/../../tools/focus_window.sh" "e2d physics 1")
+wid=$("$(dirname "$0")/../../tools/focus_window.sh" "e2d physics polygons")
 # Let it settle (focus_window.sh focused it: no window manager here).
 sleep 1
 xdotool key m

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Assets of the seed's demos (apps/sprites, apps/parallax, apps/audio1, apps/audio2).
+// Assets of the seed's demos (apps/sprites, apps/parallax, apps/audio_spatial, apps/audio_listener).
 #include "asset_set.hpp"
 #include "canvas.hpp"
 #include "sheet.hpp"

@@ -2,7 +2,7 @@
 # Drags the blue source with a real mouse (xdotool against the visible window under Xvfb):
 # press on the source at pixel (732, 270), move to (300, 500), release. Then checks the last
 # frame: the source where the mouse left it, nothing where it was.
-#   drag.sh <e2d_audio1> <e2d_image_check> <screenshot.png>   (run through with-display.sh)
+#   drag.sh <e2d_audio_spatial> <e2d_image_check> <screenshot.png>   (run through with-display.sh)
 set -euo pipefail
 app="$1"; checker="$2"; shot="$3"
 rm -f "$shot"
@@ -38,7 +38,7 @@ for attempt in 1 2 3; do
   if ! kill -0 "$pid" 2>/dev/null; then
     break
   fi
-  wid=$("$focus" "e2d audio 1") || break
+  wid=$("$focus" "e2d audio spatial") || break
   # Let it settle (focus_window.sh focused it: no window manager here).
   sleep 0.5
   if drag "$wid"; then
