@@ -337,9 +337,10 @@ struct Targets {
         (void)sfml.setActive(false);
         window->makeCurrent();
     }
-    // SDL's renderer assumes its context is current when it last made it so.
+    // SDL skips SDL_GL_MakeCurrent() when it believes its context is still current, which it
+    // is not after GLFW or SFML made theirs current: release it first, then take it.
     void activateSdl() {
-        (void)sfml.setActive(false);
+        SDL_GL_MakeCurrent(sdl.window, nullptr);
         SDL_GL_MakeCurrent(sdl.window, sdl.context);
     }
 };

@@ -44,16 +44,15 @@ struct Source {
     const char* name = "";
 };
 
-class Audio2Scene : public core::Scene {
+class AudioListenerScene : public core::Scene {
 protected:
     void onInitialize() override {
         auto& game = system<engine::GameSystem>();
 
         // The listener rides on the camera, so what is heard is what is in the middle.
         camera_ = &createGameObject();
-        render::CameraComponentDef view;
-        view.referenceSize = {kWidth, kHeight};
-        camera_->addComponent<render::CameraComponent>(view);
+        camera_->addComponent<render::CameraComponent>(
+            render::CameraComponentDef{.referenceSize = {kWidth, kHeight}});
         camera_->addComponent<audio::AudioListener>();
 
         sources_[0] = {addSource(glm::vec2{-230.0f, 100.0f}, game.asset("assets/beeps.wav").string()),
@@ -63,10 +62,8 @@ protected:
 
         auto& info = createGameObject();
         info.setPosition(glm::vec3{-kWidth / 2 + 12, kHeight / 2 - 10, 10.0f});
-        render::TextLabelDef label;
-        label.pixelSize = 20;
-        label.hud = true;
-        info_ = info.addComponent<render::TextLabel>(label);
+        info_ = info.addComponent<render::TextLabel>(
+            render::TextLabelDef{.pixelSize = 20, .hud = true});
     }
 
     void update(double dt) override {
@@ -110,11 +107,8 @@ private:
     core::GameObject* addSource(glm::vec2 at, const std::string& clip) {
         auto& object = createGameObject();
         object.setPosition(at);
-        audio::AudioSourceDef sound;
-        sound.clip = clip;
-        sound.loop = true;
-        sound.spatial = true;
-        object.addComponent<audio::AudioSource>(sound);
+        object.addComponent<audio::AudioSource>(
+            audio::AudioSourceDef{.clip = clip, .loop = true, .spatial = true});
         return &object;
     }
 
@@ -127,6 +121,6 @@ private:
 
 int main(int argc, char** argv) {
     engine::Game game;
-    E2D_REGISTER_SCENE(game.scenes(), Audio2Scene);
+    E2D_REGISTER_SCENE(game.scenes(), AudioListenerScene);
     return game.run(argc, argv, "config.txt");
 }

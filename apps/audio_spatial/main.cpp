@@ -50,32 +50,26 @@ void drawDistances(render::Drawer& draw, const audio::SpatialDef& spatial, glm::
     draw.circle(listener, 8.0f, kGrey, 2.0f);
 }
 
-class Audio1Scene : public core::Scene {
+class AudioSpatialScene : public core::Scene {
 protected:
     void onInitialize() override {
         auto& game = system<engine::GameSystem>();
 
         // The camera carries the listener: world (0, 0) at the centre of the view.
         auto& camera = createGameObject();
-        render::CameraComponentDef view;
-        view.referenceSize = {kWidth, kHeight};
-        camera.addComponent<render::CameraComponent>(view);
+        camera.addComponent<render::CameraComponent>(
+            render::CameraComponentDef{.referenceSize = {kWidth, kHeight}});
         camera.addComponent<audio::AudioListener>();
 
         source_ = &createGameObject();
         source_->setPosition(glm::vec2{220.0f, 90.0f});
-        audio::AudioSourceDef sound;
-        sound.clip = game.asset("assets/beeps.wav").string();
-        sound.loop = true;
-        sound.spatial = true;
-        source_->addComponent<audio::AudioSource>(sound);
+        source_->addComponent<audio::AudioSource>(audio::AudioSourceDef{
+            .clip = game.asset("assets/beeps.wav").string(), .loop = true, .spatial = true});
 
         auto& info = createGameObject();
         info.setPosition(glm::vec3{-kWidth / 2 + 12, kHeight / 2 - 10, 10.0f});
-        render::TextLabelDef label;
-        label.pixelSize = 18;
-        label.hud = true;
-        info_ = info.addComponent<render::TextLabel>(label);
+        info_ = info.addComponent<render::TextLabel>(
+            render::TextLabelDef{.pixelSize = 18, .hud = true});
     }
 
     void onMouseButtonDown(int button, glm::vec2 screen, glm::vec2 world) override {
@@ -137,6 +131,6 @@ private:
 
 int main(int argc, char** argv) {
     engine::Game game;
-    E2D_REGISTER_SCENE(game.scenes(), Audio1Scene);
+    E2D_REGISTER_SCENE(game.scenes(), AudioSpatialScene);
     return game.run(argc, argv, "config.txt");
 }

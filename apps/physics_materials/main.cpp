@@ -42,14 +42,13 @@ constexpr Material kMaterials[] = {
     {"rough", 1.0f, 0.0f, {0.75f, 0.45f, 0.2f, 1.0f}, false},
 };
 
-class Physics2Scene : public core::Scene {
+class PhysicsMaterialsScene : public core::Scene {
 protected:
     void onInitialize() override {
         auto& camera = createGameObject();
         camera.setPosition(glm::vec2{0.0f, kViewHeight / 2 - 1.0f});
-        render::CameraComponentDef view;
-        view.referenceSize = {kViewWidth, kViewHeight};
-        camera.addComponent<render::CameraComponent>(view);
+        camera.addComponent<render::CameraComponent>(
+            render::CameraComponentDef{.referenceSize = {kViewWidth, kViewHeight}});
 
         // Three bays: floor, side walls, dividers.
         const glm::vec4 grey{0.35f, 0.35f, 0.4f, 1.0f};
@@ -79,15 +78,14 @@ protected:
             auto& title = createGameObject();
             title.setPosition(glm::vec3{-8.53f + 8.53f * static_cast<float>(i), 15.5f, 5.0f});
             title.setScale(1.0f / 40.0f); // font pixels to metres: 40 px per metre on screen
-            render::TextLabelDef def;
-            def.text = kMaterials[i].name;
-            def.pixelSize = 36;
-            def.style.horizontal = render::HorizontalAlign::Center;
-            def.style.vertical = render::VerticalAlign::Center;
-            def.color = {static_cast<std::uint8_t>(kMaterials[i].colour.r * 255),
-                         static_cast<std::uint8_t>(kMaterials[i].colour.g * 255),
-                         static_cast<std::uint8_t>(kMaterials[i].colour.b * 255), 255};
-            title.addComponent<render::TextLabel>(def);
+            const glm::vec4 colour = kMaterials[i].colour * 255.0f;
+            title.addComponent<render::TextLabel>(render::TextLabelDef{
+                .text = kMaterials[i].name,
+                .pixelSize = 36,
+                .style = {.horizontal = render::HorizontalAlign::Center,
+                          .vertical = render::VerticalAlign::Center},
+                .color = {static_cast<std::uint8_t>(colour.r), static_cast<std::uint8_t>(colour.g),
+                          static_cast<std::uint8_t>(colour.b), 255}});
         }
 
         auto& info = createGameObject();
@@ -95,10 +93,8 @@ protected:
         // one font pixel one screen pixel (40 px per metre).
         info.setPosition(glm::vec3{-kViewWidth / 2 + 0.7f, kViewHeight / 2 - 0.2f, 10.0f});
         info.setScale(1.0f / 40.0f);
-        render::TextLabelDef label;
-        label.pixelSize = 18;
-        label.hud = true;
-        info_ = info.addComponent<render::TextLabel>(label);
+        info_ = info.addComponent<render::TextLabel>(
+            render::TextLabelDef{.pixelSize = 18, .hud = true});
     }
 
     void onMouseMove(glm::vec2 screen, glm::vec2 world) override {
@@ -162,6 +158,6 @@ private:
 
 int main(int argc, char** argv) {
     engine::Game game;
-    E2D_REGISTER_SCENE(game.scenes(), Physics2Scene);
+    E2D_REGISTER_SCENE(game.scenes(), PhysicsMaterialsScene);
     return game.run(argc, argv, "config.txt");
 }

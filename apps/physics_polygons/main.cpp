@@ -46,14 +46,13 @@ constexpr Mass kMasses[] = {
     {"heavy", 10.0f, {0.15f, 0.25f, 0.7f, 1.0f}},
 };
 
-class Physics1Scene : public core::Scene {
+class PhysicsPolygonsScene : public core::Scene {
 protected:
     void onInitialize() override {
         auto& camera = createGameObject();
         camera.setPosition(glm::vec2{0.0f, kViewHeight / 2 - 1.0f});
-        render::CameraComponentDef view;
-        view.referenceSize = {kViewWidth, kViewHeight};
-        camera.addComponent<render::CameraComponent>(view);
+        camera.addComponent<render::CameraComponent>(
+            render::CameraComponentDef{.referenceSize = {kViewWidth, kViewHeight}});
 
         // Ground and walls: colliders without a Rigidbody are static.
         addStatic({0.0f, -0.5f}, 13.0f, 0.5f);
@@ -79,10 +78,8 @@ protected:
         // one font pixel one screen pixel (40 px per metre).
         info.setPosition(glm::vec3{-kViewWidth / 2 + 0.7f, kViewHeight / 2 - 0.2f, 10.0f});
         info.setScale(1.0f / 40.0f);
-        render::TextLabelDef label;
-        label.pixelSize = 18;
-        label.hud = true;
-        info_ = info.addComponent<render::TextLabel>(label);
+        info_ = info.addComponent<render::TextLabel>(
+            render::TextLabelDef{.pixelSize = 18, .hud = true});
     }
 
     // The mouse's world position: where new polygons go and where the cannon aims.
@@ -200,6 +197,6 @@ private:
 
 int main(int argc, char** argv) {
     engine::Game game;
-    E2D_REGISTER_SCENE(game.scenes(), Physics1Scene);
+    E2D_REGISTER_SCENE(game.scenes(), PhysicsPolygonsScene);
     return game.run(argc, argv, "config.txt");
 }
