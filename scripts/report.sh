@@ -36,7 +36,7 @@ echo "=== sprite batching benchmark: whole frames of e2d, SFML 2.5 and SDL2 in o
 # is 1). The naive and OpenGL 3.3 variants are left to the full run (bench/README.md).
 "$root/scripts/with-display.sh" "$root/build/release/bench/e2d_bench_batching" \
   --benchmark_filter='^frame/.*/(e2d|sfml_vertexarray|sfml_sprite|sdl_geometry|sdl_copy)/' \
-  --benchmark_min_time=0.05 --e2d_warmup=2 --e2d_shots="$out/batching_frames" \
+  --benchmark_min_time=0.05 --e2d_warmup=1 --e2d_shots="$out/batching_frames" \
   --benchmark_out="$out/bench_batching.json" --benchmark_out_format=json \
   --e2d_table="$out/bench_batching.md" || echo "e2d_bench_batching: exit status $? (see above)"
 
