@@ -121,15 +121,16 @@ protected:
     }
 
 private:
+    static physics::ColliderDef colliderOf(const Material& material) {
+        return {.friction = material.friction, .restitution = material.restitution};
+    }
+
     void addStatic(glm::vec2 centre, float angle, float hx, float hy, const Material& material,
                    glm::vec4 colour) {
         auto& object = createGameObject();
         object.setPosition(centre);
         object.setOrientation(angle);
-        physics::ColliderDef def;
-        def.friction = material.friction;
-        def.restitution = material.restitution;
-        object.addComponent<physics::Collider>(physics::makeBox(hx, hy), def);
+        object.addComponent<physics::Collider>(physics::makeBox(hx, hy), colliderOf(material));
         object.addComponent<apps::ShapeView>(colour);
     }
 
@@ -138,13 +139,12 @@ private:
         object.setPosition(at);
         object.setOrientation(angle);
         object.addComponent<physics::Rigidbody>();
-        physics::ColliderDef def;
-        def.friction = material.friction;
-        def.restitution = material.restitution;
         if (material.ball) {
-            object.addComponent<physics::Collider>(physics::Circle{{0.0f, 0.0f}, 0.5f}, def);
+            object.addComponent<physics::Collider>(physics::Circle{{0.0f, 0.0f}, 0.5f},
+                                                   colliderOf(material));
         } else {
-            object.addComponent<physics::Collider>(physics::makeBox(0.5f, 0.5f), def);
+            object.addComponent<physics::Collider>(physics::makeBox(0.5f, 0.5f),
+                                                   colliderOf(material));
         }
         object.addComponent<apps::ShapeView>(material.colour);
     }

@@ -137,10 +137,9 @@ private:
         object.setPosition(at);
         object.setOrientation(angle);
         object.addComponent<physics::Rigidbody>();
-        physics::ColliderDef material;
-        material.density = mass.density;
-        material.friction = 0.5f;
-        object.addComponent<physics::Collider>(apps::regularPolygon(sides, radius), material);
+        object.addComponent<physics::Collider>(
+            apps::regularPolygon(sides, radius),
+            physics::ColliderDef{.density = mass.density, .friction = 0.5f});
         object.addComponent<apps::ShapeView>(mass.colour);
         ++bodies_;
         return object;
@@ -153,10 +152,9 @@ private:
         body.bullet = true;
         body.linearVelocity = aimDirection() * kProjectileSpeed;
         object.addComponent<physics::Rigidbody>(body);
-        physics::ColliderDef material;
-        material.density = 8.0f;
-        material.restitution = 0.3f;
-        object.addComponent<physics::Collider>(physics::Circle{{0.0f, 0.0f}, 0.2f}, material);
+        object.addComponent<physics::Collider>(
+            physics::Circle{{0.0f, 0.0f}, 0.2f},
+            physics::ColliderDef{.density = 8.0f, .restitution = 0.3f});
         object.addComponent<apps::ShapeView>(glm::vec4{1.0f, 0.4f, 0.2f, 1.0f});
         ++bodies_;
     }
