@@ -57,7 +57,7 @@ struct MixerDef {
     /// Default Device.
     Output output = Output::Device;
     /// OpenAL device name for Output::Device; empty means the default device. Default empty.
-    std::string deviceName;
+    std::string deviceName{};
     /// Hz, for Output::Loopback; 8000..192000. Default 48000.
     int loopbackSampleRate = 48000;
     /// For Output::Loopback: a loopback device the caller opened with OpenAL Soft's
@@ -74,9 +74,9 @@ struct MixerDef {
     float masterGain = 1.0f;
     /// Distances of the spatial model. Default: see SpatialDef. Need 0 <= min < max for both
     /// pairs.
-    SpatialDef spatial;
+    SpatialDef spatial{};
     /// Limits on the files the mixer loads. Default: see DecodeLimits.
-    DecodeLimits limits;
+    DecodeLimits limits{};
     /// Seconds of sound per stream buffer; 0.01..1. Default 0.1.
     double streamChunkSeconds = 0.1;
     /// Buffers queued per streaming voice; 3..16. All but one must hold at least 0.25 s, so a
