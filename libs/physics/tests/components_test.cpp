@@ -162,7 +162,7 @@ TEST_F(ComponentsTest, TriggerReportsEnterAndExitAndDoesNotStopTheBody) {
         core::GameObject& zone = s.createGameObject();
         zone.setPosition(glm::vec2{0.0f, 5.0f});
         physics::ColliderDef trigger;
-        trigger.isTrigger = true;
+        trigger.isSensor = true;
         zone.addComponent<Collider>(physics, physics::makeBox(2.0f, 0.5f), trigger);
         zoneEvents = zone.addComponent<Recorder>();
         ball = &s.createGameObject();
@@ -236,8 +236,8 @@ TEST_F(ComponentsTest, ImpulseAndFreezeFlagsActThroughTheComponent) {
         o = &s.createGameObject();
         physics::RigidbodyDef def;
         def.gravityScale = 0.0f;
-        def.freezePositionY = true;
-        def.freezeRotation = true;
+        def.lockY = true;
+        def.fixedRotation = true;
         rb = o->addComponent<Rigidbody>(physics, def);
         o->addComponent<Collider>(physics, box(0.5f)); // 1 m^2 at density 1: 1 kg
     });
@@ -403,7 +403,7 @@ TEST_F(ComponentsTest, BodyDestroyedThroughTheWorldInsideACollisionEventLeavesIt
             ADD_FAILURE() << "no error";
         } catch (const core::Error& e) {
             EXPECT_NE(std::string(e.what()).find("physics::Rigidbody::setLinearVelocity(): the "
-                                                 "Rigidbody has no body"),
+                                                 "Rigidbody on object #"),
                       std::string::npos)
                 << e.what();
         }

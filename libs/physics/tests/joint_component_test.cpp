@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -194,23 +196,75 @@ TEST_F(JointComponentTest, BadDefsAndMissingRigidbodiesAreClearErrors) {
     r.lowerAngle = 1.0f;
     r.upperAngle = -1.0f;
     try {
-        JointComponent bad(physics, JointComponentDef{r, {}});
+        JointComponent bad(JointComponentDef{r, {}});
         FAIL() << "no error";
     } catch (const core::Error& e) {
-        EXPECT_STREQ(e.what(), "physics::JointComponent::JointComponent(): def.joint: revolute def.lowerAngle "
-                               "must be <= def.upperAngle, got 1 > -1");
+        EXPECT_STREQ(e.what(), "physics::JointComponent::JointComponent(): def.joint.lowerAngle "
+                               "must be <= def.joint.upperAngle, got 1 > -1");
+    }
+    physics::DistanceJointDef d;
+    d.length = -2.0f;
+    try {
+        JointComponent bad(JointComponentDef{d, {}});
+        FAIL() << "no error";
+    } catch (const core::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("physics::JointComponent::JointComponent(): def.joint.length must be"),
+                  std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("-2"), std::string::npos) << "the value as given: " << e.what();
     }
     core::GameObject* lonely = nullptr;
-    start([&](core::Scene& s) { lonely = &s.createGameObject(); });
-    lonely->addComponent<JointComponent>(physics);
+    core::GameObject* selfish = nullptr;
+    start([&](core::Scene& s) {
+        lonely = &s.createGameObject();
+        lonely->setName("lonely");
+        selfish = &s.createGameObject();
+        selfish->setTag("rope");
+        selfish->addComponent<Rigidbody>();
+    });
+    lonely->addComponent<JointComponent>();
     try {
         frames(1);
         FAIL() << "no error";
     } catch (const core::Error& e) {
-        EXPECT_NE(std::string(e.what()).find("physics::JointComponent::onInitialize(): the object has no Rigidbody"),
-                  std::string::npos)
-            << e.what();
+        EXPECT_STREQ(e.what(), "physics::JointComponent::onInitialize(): the object 'lonely' has no Rigidbody "
+                               "to connect");
     }
+    lonely->removeComponent(lonely->getComponent<JointComponent>());
+    selfish->addComponent<JointComponent>(JointComponentDef{physics::RevoluteJointDef{}, selfish->id()});
+    try {
+        frames(1);
+        FAIL() << "no error";
+    } catch (const core::Error& e) {
+        EXPECT_STREQ(e.what(), "physics::JointComponent::onInitialize(): def.connectedObject is the object "
+                               "tagged 'rope' itself");
+    }
+}
+
+// A def-only component (the system found through the scene) hangs a ball from a wall: an object
+// with a Collider and no Rigidbody, the anchor in the wall's own frame.
+TEST_F(JointComponentTest, DefOnlyJointHangsABallFromAWallWithoutARigidbody) {
+    core::GameObject* bob = nullptr;
+    JointComponent* hinge = nullptr;
+    start([&](core::Scene& s) {
+        core::GameObject& wall = s.createGameObject();
+        wall.setPosition(glm::vec2{5.0f, 3.0f});
+        wall.addComponent<Collider>(physics::makeBox(0.5f, 2.0f));
+        bob = &s.createGameObject();
+        bob->setPosition(glm::vec2{6.5f, 3.0f});
+        bob->addComponent<Rigidbody>();
+        bob->addComponent<Collider>(physics::Circle{{0.0f, 0.0f}, 0.25f});
+        physics::DistanceJointDef rope;
+        rope.localAnchorA = {1.0f, 0.0f}; // the wall's right face, at its centre height
+        rope.length = 0.5f;
+        hinge = bob->addComponent<JointComponent>(JointComponentDef{rope, wall.id()});
+    });
+    frames(240);
+    ASSERT_TRUE(hinge->isConnected());
+    EXPECT_EQ(&hinge->system(), &physics);
+    const glm::vec2 anchor{6.0f, 3.0f};
+    EXPECT_NEAR(glm::length(glm::vec2(bob->position()) - anchor), 0.5f, 0.02f) << "held on its rope";
+    EXPECT_LT(bob->position().y, 2.7f) << "hanging below the anchor";
 }
 
 } // namespace
