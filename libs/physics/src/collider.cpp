@@ -104,7 +104,7 @@ void Collider::attach() {
         body_ = owner_->ensureBody();
     } else {
         const detail::Pose pose = detail::worldPose(object, upm);
-        detail::component_check::requireInRange(object, "Collider", pose.position, upm);
+        detail::component_check::requireInRange(object, "Collider", upm);
         BodyDef def;
         def.type = BodyType::Static;
         def.position = pose.position;

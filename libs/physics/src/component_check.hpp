@@ -54,16 +54,18 @@ inline std::string describe(const core::GameObject& object) {
     throw core::Error("physics::" + std::string(component) + " on " + describe(object) + ": " + what);
 }
 
-// The object's world position (given in world units, `metres` after the division) must be
-// within the World's range, kHuge metres, reported in the user's units.
-inline void requireInRange(const core::GameObject& object, std::string_view component, Vec2 metres,
-                           float unitsPerMetre) {
+// The object's world position must be within the World's range (kHuge metres), reported in
+// the world units the user gave.
+inline void requireInRange(const core::GameObject& object, std::string_view component, float unitsPerMetre) {
+    const glm::vec3 p = object.worldPosition();
+    const Vec2 units{p.x, p.y};
+    const Vec2 metres = units / unitsPerMetre;
     if (std::isfinite(metres.x) && std::isfinite(metres.y) && std::fabs(metres.x) <= kHuge &&
         std::fabs(metres.y) <= kHuge) {
         return;
     }
     failOn(object, component,
-           "world position " + formatVec(metres * unitsPerMetre) +
+           "world position " + formatVec(units) +
                " world units is out of the physics range (finite, |x| and |y| <= " +
                formatFloat(kHuge * unitsPerMetre) + " world units: " + formatFloat(kHuge) +
                " m at " + formatFloat(unitsPerMetre) + " units per metre)");

@@ -300,8 +300,7 @@ void PhysicsSystem::pullMovedObjects(float step) {
     for (Rigidbody* rb : rigidbodies_) {
         const detail::Pose pose = detail::worldPose(*rb->gameObject(), unitsPerMetre_);
         if (detail::movedApart(pose, rb->writtenPosition_, rb->writtenAngle_)) {
-            detail::component_check::requireInRange(*rb->gameObject(), "Rigidbody", pose.position,
-                                                    unitsPerMetre_);
+            detail::component_check::requireInRange(*rb->gameObject(), "Rigidbody", unitsPerMetre_);
             world_.setTransform(rb->body_, pose.position, pose.angle);
             rb->writtenPosition_ = pose.position;
             rb->writtenAngle_ = pose.angle;
@@ -313,8 +312,7 @@ void PhysicsSystem::pullMovedObjects(float step) {
     for (Collider* c : staticColliders_) {
         const detail::Pose pose = detail::worldPose(*c->gameObject(), unitsPerMetre_);
         if (detail::movedApart(pose, c->writtenPosition_, c->writtenAngle_)) {
-            detail::component_check::requireInRange(*c->gameObject(), "Collider", pose.position,
-                                                    unitsPerMetre_);
+            detail::component_check::requireInRange(*c->gameObject(), "Collider", unitsPerMetre_);
             world_.setTransform(c->ownBody_, pose.position, pose.angle);
             c->writtenPosition_ = pose.position;
             c->writtenAngle_ = pose.angle;

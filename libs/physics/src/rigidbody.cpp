@@ -73,7 +73,7 @@ BodyId Rigidbody::ensureBody() {
     }
     const float upm = sys().unitsPerMetre();
     const detail::Pose pose = detail::worldPose(*gameObject(), upm);
-    detail::component_check::requireInRange(*gameObject(), "Rigidbody", pose.position, upm);
+    detail::component_check::requireInRange(*gameObject(), "Rigidbody", upm);
     BodyDef def;
     def.type = def_.type;
     def.position = pose.position;
