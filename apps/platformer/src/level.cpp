@@ -3,6 +3,7 @@
 
 #include <e2d/core/component.hpp>
 #include <e2d/core/contact_info.hpp>
+#include <e2d/physics/character_controller.hpp>
 #include <e2d/physics/collider.hpp>
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
@@ -25,8 +26,6 @@ constexpr e2d::core::Mask kPlayer{2};
 constexpr e2d::core::Mask kTrigger{4};
 
 constexpr float kGravity = -25.0f * kTile;
-// The ground probes reach this far below the feet.
-constexpr float kProbeDepth = 0.08f * kTile;
 
 // Tells the level which sensors the player's object entered.
 class SensorRelay final : public e2d::core::Component {
@@ -75,7 +74,6 @@ glm::vec2 MovingPlatform::positionAt(double t) const {
 
 Level::Level(e2d::core::Scene& scene, const PlayerTuning& tuning)
     : physics_(scene.system<ph::PhysicsSystem>()), controller_(tuning) {
-    physics_.setGravity({0.0f, kGravity});
     const ph::ColliderDef solid{.friction = 0.0f, .category = kWorld};
     const ph::ColliderDef sensor{.isSensor = true, .category = kTrigger, .mask = kPlayer};
 
@@ -126,8 +124,8 @@ Level::Level(e2d::core::Scene& scene, const PlayerTuning& tuning)
     ph::ColliderDef oneWay = solid;
     oneWay.oneWay = true;
     oneWay_ = {glm::vec2{23.0f, 7.9f} * kTile, glm::vec2{4.0f, 0.1f} * kTile};
-    oneWayCollider_ = place(scene, "one-way platform", oneWay_.center)
-                          .addComponent<ph::Collider>(ph::makeBox(oneWay_.half.x, oneWay_.half.y), oneWay);
+    place(scene, "one-way platform", oneWay_.center)
+        .addComponent<ph::Collider>(ph::makeBox(oneWay_.half.x, oneWay_.half.y), oneWay);
 
     // The lift in front of the cliff: waits at the bottom, rises above the ledge, waits, returns.
     MovingPlatform lift;
@@ -153,20 +151,28 @@ Level::Level(e2d::core::Scene& scene, const PlayerTuning& tuning)
                                                     platform.oneWay ? oneWay : solid);
     }
 
-    // The player: a rounded box that never turns, frictionless so it does not stick to walls
-    // (the controller sets its horizontal speed).
+    // The player: a capsule moved by a CharacterController (the rules below give it gravity
+    // and jumps); one-way platforms block it only from above.
     player_ = &place(scene, "player", {1.0f * kTile, playerHalfSize().y + 0.01f * kTile});
-    body_ = player_->addComponent<ph::Rigidbody>(ph::RigidbodyDef{.fixedRotation = true, .enableSleep = false});
-    const float radius = 0.08f * kTile;
-    player_->addComponent<ph::Collider>(
-        ph::makeRoundedBox(playerHalfSize().x - radius, playerHalfSize().y - radius, radius),
-        ph::ColliderDef{.friction = 0.0f, .category = kPlayer, .mask = kWorld | kTrigger});
+    const glm::vec2 half = playerHalfSize();
+    ph::CharacterControllerDef character;
+    character.capsule = {{0.0f, -(half.y - half.x)}, {0.0f, half.y - half.x}, half.x};
+    character.skin = 0.01f * kTile;
+    character.maxPushOut = 0.1f * kTile;
+    character.groundSnapDistance = 0.05f * kTile;
+    character.category = kPlayer;
+    character.mask = kWorld | kTrigger;
+    character.contactFilter = [this](ph::ShapeId shape, glm::vec2 normal) {
+        const ph::Collider* collider = physics_.collider(shape);
+        return collider == nullptr || !collider->def().oneWay || normal.y >= 0.7f;
+    };
+    character_ = player_->addComponent<ph::CharacterController>(character);
     player_->addComponent<SensorRelay>([this](const GameObject* other) { touches_.push_back(other); });
 }
 
 glm::vec2 Level::playerPosition() const { return glm::vec2(player_->position()); }
 
-glm::vec2 Level::playerVelocity() const { return body_->linearVelocity(); }
+glm::vec2 Level::playerVelocity() const { return velocity_; }
 
 void Level::fixedUpdate(const PlayerInput& input, float dt) {
     events_ = {};
@@ -181,7 +187,7 @@ void Level::fixedUpdate(const PlayerInput& input, float dt) {
         events_.died = true;
     }
     if (won_ || dead_) {
-        body_->setLinearVelocity({0.0f, 0.0f});
+        velocity_ = {0.0f, 0.0f};
         for (const MovingPlatform& platform : platforms_) {
             platform.object->getComponent<ph::Rigidbody>()->setLinearVelocity({0.0f, 0.0f});
         }
@@ -189,7 +195,7 @@ void Level::fixedUpdate(const PlayerInput& input, float dt) {
     }
     movePlatforms(dt);
     const bool wasGrounded = grounded_;
-    probeGround();
+    readGround();
     events_.landed = grounded_ && !wasGrounded;
     if (grounded_ && onMoving_) {
         ++stepsOnMoving_;
@@ -197,8 +203,17 @@ void Level::fixedUpdate(const PlayerInput& input, float dt) {
     if (grounded_ && onOneWay_) {
         ++stepsOnOneWay_;
     }
-    const PlayerStep step = controller_.step(input, playerVelocity(), grounded_, groundVelocity_, dt);
-    body_->setLinearVelocity(step.velocity);
+    const PlayerStep step = controller_.step(input, velocity_, grounded_, groundVelocity_, dt);
+    // Gravity is the game's: on the ground the player goes with it, in the air it falls.
+    glm::vec2 velocity = step.velocity;
+    if (grounded_ && !step.jumped) {
+        velocity.y = groundVelocity_.y;
+    } else {
+        velocity.y += kGravity * dt;
+    }
+    character_->move(velocity * dt);
+    // No speed piles up against walls, ceilings or the ground it was stopped by.
+    velocity_ = character_->clipVelocity(velocity - groundVelocity_) + groundVelocity_;
     if (step.jumped) {
         ++jumps_;
         events_.jumped = true;
@@ -232,34 +247,14 @@ void Level::movePlatforms(float dt) {
     }
 }
 
-void Level::probeGround() {
-    // Three short rays down from just inside the feet: grounded when one hits a surface facing
-    // up. Rays ignore back faces, so the one-way platform is seen only from above.
-    const glm::vec2 p = playerPosition();
-    const glm::vec2 half = playerHalfSize();
-    ph::QueryFilter filter;
-    filter.categoryBits = kPlayer.bits();
-    filter.maskBits = kWorld.bits();
-    grounded_ = false;
-    onMoving_ = false;
-    onOneWay_ = false;
-    groundVelocity_ = {0.0f, 0.0f};
-    float best = 2.0f;
-    const float inset = 0.1f * kTile;
-    for (float dx : {-half.x + 0.05f * kTile, 0.0f, half.x - 0.05f * kTile}) {
-        const glm::vec2 origin{p.x + dx, p.y - half.y + inset};
-        auto hit = physics_.castRayClosest(origin, {0.0f, -(inset + kProbeDepth)}, filter);
-        if (!hit || hit->normal.y < 0.7f || hit->fraction >= best) {
-            continue;
-        }
-        best = hit->fraction;
-        grounded_ = true;
-        const ph::Collider* ground = physics_.collider(hit->shape);
-        const ph::Rigidbody* moving = ground != nullptr ? ground->rigidbody() : nullptr;
-        groundVelocity_ = moving != nullptr ? moving->linearVelocity() : glm::vec2{0.0f, 0.0f};
-        onMoving_ = moving != nullptr && moving->type() == ph::BodyType::Kinematic;
-        onOneWay_ = ground == oneWayCollider_;
-    }
+void Level::readGround() {
+    // What the character stood on after its last move.
+    grounded_ = character_->isGrounded();
+    groundVelocity_ = grounded_ ? character_->groundVelocity() : glm::vec2{0.0f, 0.0f};
+    const ph::Collider* ground = grounded_ ? physics_.collider(character_->lastMove().groundShape) : nullptr;
+    const ph::Rigidbody* moving = ground != nullptr ? ground->rigidbody() : nullptr;
+    onMoving_ = moving != nullptr && moving->type() == ph::BodyType::Kinematic;
+    onOneWay_ = ground != nullptr && ground->def().oneWay && moving == nullptr;
 }
 
 } // namespace platformer

@@ -11,13 +11,14 @@
 #include <vector>
 
 namespace e2d::physics {
+class CharacterController;
 class Collider;
 class PhysicsSystem;
 class Rigidbody;
 } // namespace e2d::physics
 
 /// The platformer's one level and its rules, as game objects with physics components
-/// (Rigidbody, Collider) in a scene with a physics::PhysicsSystem and nothing else (no window,
+/// (Rigidbody, Collider, CharacterController) in a scene with a physics::PhysicsSystem and nothing else (no window,
 /// no sound, no input device), so the whole game can be played by a test at the fixed step.
 /// World units (reference pixels), seconds, y up; the level is laid out on a grid of kTile
 /// units (a tile is a metre to the physics: the game's unitsPerMetre is kTile). The scenes
@@ -114,7 +115,7 @@ public:
 private:
     void touched(const e2d::core::GameObject* other);
     void movePlatforms(float dt);
-    void probeGround();
+    void readGround();
 
     e2d::physics::PhysicsSystem& physics_;
     PlayerController controller_;
@@ -125,10 +126,10 @@ private:
     std::vector<MovingPlatform> platforms_;
     Box oneWay_;
     Box goal_;
-    const e2d::physics::Collider* oneWayCollider_ = nullptr;
     const e2d::core::GameObject* goalObject_ = nullptr;
     e2d::core::GameObject* player_ = nullptr;
-    e2d::physics::Rigidbody* body_ = nullptr;
+    e2d::physics::CharacterController* character_ = nullptr;
+    glm::vec2 velocity_{0.0f, 0.0f}; // the player's, world units/s
     std::vector<const e2d::core::GameObject*> touches_; // sensors entered since the last step
     StepEvents events_;
     double time_ = 0.0;
