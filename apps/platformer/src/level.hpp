@@ -18,8 +18,9 @@ class Rigidbody;
 } // namespace e2d::physics
 
 /// The platformer's one level and its rules, as game objects with physics components
-/// (Rigidbody, Collider, CharacterController) in a scene with a physics::PhysicsSystem and nothing else (no window,
-/// no sound, no input device), so the whole game can be played by a test at the fixed step.
+/// (Rigidbody, Collider, CharacterController) in a scene with a physics::PhysicsSystem and
+/// nothing else (no window, no sound, no input device), so the whole game can be played by a
+/// test at the fixed step.
 /// World units (reference pixels), seconds, y up; the level is laid out on a grid of kTile
 /// units (a tile is a metre to the physics: the game's unitsPerMetre is kTile). The scenes
 /// (scenes.cpp) give its objects sprites, play its sounds and feed it input.

@@ -11,6 +11,8 @@
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
+#include "component_scene.hpp"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -29,22 +31,9 @@ using physics::JointComponentDef;
 using physics::PhysicsSystem;
 using physics::Rigidbody;
 
-constexpr double kStep = 1.0 / 60.0;
 
-class JointComponentTest : public ::testing::Test {
+class JointComponentTest : public ::testing::Test, public physics::test::ComponentScene {
 protected:
-    void start(std::function<void(core::Scene&)> setup) {
-        registry.add("Test", core::SceneFunctions{.initialize = setup});
-        director.addSystem(physics);
-        ASSERT_TRUE(director.start("Test"));
-    }
-    void frames(int n) {
-        for (int i = 0; i < n; ++i) {
-            director.applyPendingChange();
-            director.scene()->beginFrame();
-            physics.fixedUpdate(kStep);
-        }
-    }
     core::GameObject& ball(core::Scene& s, glm::vec2 at, float radius = 0.25f) {
         core::GameObject& o = s.createGameObject();
         o.setPosition(at);
@@ -52,11 +41,6 @@ protected:
         o.addComponent<Collider>(physics, physics::Circle{{0.0f, 0.0f}, radius});
         return o;
     }
-
-    core::Logger logger{core::LogLevel::Off};
-    core::SceneRegistry registry;
-    core::SceneDirector director{registry, logger};
-    PhysicsSystem physics{};
 };
 
 // A ball hung from the world by a revolute joint 1 m above it: it stays 1 m from the pivot and
