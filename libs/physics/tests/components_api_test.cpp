@@ -235,4 +235,12 @@ TEST_F(ComponentsApiTest, QueriesTakeAndGiveWorldUnits) {
     EXPECT_NEAR(cast->fraction, 0.27f, 0.002f);
 }
 
+// Gravity is given to the World in m/s^2 and read and set through the system in world units.
+TEST(PhysicsSystemUnits, GravityInWorldUnitsIsTheWorldsTimesUnitsPerMetre) {
+    physics::PhysicsSystem system{physics::WorldDef{.gravity = {0.0f, -9.81f}}, 100.0f};
+    EXPECT_FLOAT_EQ(system.gravity().y, -981.0f);
+    system.setGravity({0.0f, -500.0f});
+    EXPECT_FLOAT_EQ(system.world().gravity().y, -5.0f);
+}
+
 } // namespace
