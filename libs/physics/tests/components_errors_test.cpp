@@ -11,7 +11,6 @@
 
 #include <cmath>
 #include <functional>
-#include <limits>
 #include <string>
 #include <utility>
 
@@ -64,17 +63,21 @@ TEST(ComponentErrors, AStaticColliderMovedFarOutByHandNamesItsObjectByTag) {
                           "units per metre)");
 }
 
-TEST(ComponentErrors, ANonFiniteScaleUnderAColliderNamesTheObjectAndTheScale) {
+// Finite scales whose product overflows (the setters refuse only non-finite values).
+TEST(ComponentErrors, AScaleThatOverflowsUnderAColliderNamesTheObjectAndItsScale) {
     ComponentScene s;
     EXPECT_EQ(errorOf(s,
                       [&](core::Scene& scene) {
+                          core::GameObject& giant = scene.createGameObject();
+                          giant.setScale(1e20f);
                           core::GameObject& coin = scene.createGameObject();
                           coin.setName("coin");
-                          coin.setScale(glm::vec2{std::numeric_limits<float>::infinity(), 1.0f});
+                          giant.addChild(coin);
+                          coin.setScale(glm::vec2{1e20f, 1.0f});
                           coin.addComponent<Collider>(physics::makeBox(1.0f, 1.0f));
                       }),
-              "physics::Collider on object 'coin': the object's scale, orientation or position "
-                          "relative to its body is not finite (scale (inf, 1), orientation 0)");
+              "physics::Collider on object 'coin': the object's scale, orientation or position relative to its "
+              "body is not finite (scale (1e+20, 1), orientation 0)");
 }
 
 } // namespace
