@@ -149,7 +149,7 @@ private:
         auto& object = createGameObject();
         object.setPosition(kCannon + aimDirection() * 1.2f);
         physics::RigidbodyDef body;
-        body.bullet = true;
+        body.isBullet = true;
         body.linearVelocity = aimDirection() * kProjectileSpeed;
         object.addComponent<physics::Rigidbody>(body);
         object.addComponent<physics::Collider>(

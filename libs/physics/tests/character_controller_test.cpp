@@ -208,7 +208,7 @@ TEST_F(CharacterControllerTest, TellsBothObjectsAboutWallsAndStaticTriggers) {
         coin = &s.createGameObject();
         coin->setPosition(glm::vec2{200.0f, 100.0f});
         physics::ColliderDef sensor;
-        sensor.isTrigger = true;
+        sensor.isSensor = true;
         coin->addComponent<Collider>(physics::Circle{{0.0f, 0.0f}, 20.0f}, sensor);
         coinLog = coin->addComponent<Recorder>();
         wall = &s.createGameObject();
