@@ -100,19 +100,17 @@ private:
     std::string name_;
 };
 
-class GameLoopTest : public testing::Test {
+// A director with the two scenes and a physics-like system, on a manual clock.
+class LoopParts : public testing::Test {
 protected:
-    GameLoopTest()
-        : logger(LogLevel::Off), director(registry, logger), stepper(0.25, 3), clock([this] { return now; }),
-          loop(director, stepper, clock, e2d::core::GameLoopDef{.maxFrameTime = 100.0}) {
+    LoopParts() : logger(LogLevel::Off), director(registry, logger), stepper(0.25, 3), clock([this] { return now; }) {
         gCalls = &calls;
         FirstScene::leaveOnUpdate = false;
         registry.add<FirstScene>("First");
         registry.add<SecondScene>("Second");
         director.addSystem(physics);
-        director.addSystem(renderer);
     }
-    ~GameLoopTest() override { gCalls = nullptr; }
+    ~LoopParts() override { gCalls = nullptr; }
 
     std::vector<std::string> calls;
     double now = 0.0;
@@ -122,8 +120,14 @@ protected:
     FixedStepper stepper;
     Clock clock;
     TracingSystem physics{"physics"};
+};
+
+class GameLoopTest : public LoopParts {
+protected:
+    GameLoopTest() { director.addSystem(renderer); }
+
     TracingSystem renderer{"renderer"};
-    GameLoop loop;
+    GameLoop loop{director, stepper, clock, e2d::core::GameLoopDef{.maxFrameTime = 100.0}};
 };
 
 } // namespace
@@ -241,26 +245,10 @@ public:
 };
 
 // A loop like an engine's: headless frames, a spike clamp, a frame limit, an observer.
-class EngineLoopTest : public testing::Test {
+class EngineLoopTest : public LoopParts {
 protected:
-    EngineLoopTest() : logger(LogLevel::Off), director(registry, logger), stepper(0.25, 3), clock([this] { return now; }) {
-        gCalls = &calls;
-        registry.add<SecondScene>("Second");
-        registry.add<FirstScene>("First");
-        FirstScene::leaveOnUpdate = false;
-        director.addSystem(physics);
-        observer.watched = &physics;
-    }
-    ~EngineLoopTest() override { gCalls = nullptr; }
+    EngineLoopTest() { observer.watched = &physics; }
 
-    std::vector<std::string> calls;
-    double now = 0.0;
-    Logger logger;
-    SceneRegistry registry;
-    SceneDirector director;
-    FixedStepper stepper;
-    Clock clock;
-    TracingSystem physics{"physics"};
     TracingObserver observer;
 };
 
