@@ -43,7 +43,7 @@ struct InputDef {
     GLFWwindow* window = nullptr;
     /// Screen (pixels, origin top left) to world units, for mouse events; the engine passes
     /// the active camera's. Empty (default): world positions equal screen positions.
-    std::function<glm::vec2(glm::vec2)> screenToWorld;
+    std::function<glm::vec2(glm::vec2)> screenToWorld{};
     /// Read GLFW's 16 joystick slots in beginFrame() (only while attached to a window, since
     /// GLFW must be initialised). Default true.
     bool pollGamepads = true;

@@ -62,7 +62,7 @@ struct WindowDef {
     /// Ask for an OpenGL debug context. Default false.
     bool debugContext = false;
     /// The GLFW library to use; null: the window creates its own instance. Default null.
-    std::shared_ptr<GlfwInstance> glfw;
+    std::shared_ptr<GlfwInstance> glfw{};
     /// Where the window logs (context version, warnings); null: nowhere. Default null.
     core::Logger* logger = nullptr;
 };
