@@ -102,18 +102,19 @@ void checkOrder(EngineConfig& c, core::ConfigReport& report, std::string_view fi
 
 } // namespace
 
+// The PHYSICS keys are SI already: the World runs in metres, and the PhysicsSystem converts
+// what the components see by unitsPerMetre.
 physics::WorldDef makeWorldDef(const EngineConfig& config) {
-    const auto metres = [&config](double units) { return static_cast<float>(units / config.unitsPerMetre); };
     physics::WorldDef def;
-    def.gravity = {metres(config.gravityX), metres(config.gravityY)};
+    def.gravity = {config.gravityX, config.gravityY};
     def.solver.mode = config.physicsSolver;
     def.solver.subSteps = std::min(config.collisionResolutionSteps, 64);
     def.solver.velocityIterations = std::min(config.collisionResolutionSteps, 256);
-    def.solver.linearSleepTolerance = metres(config.minRigidbodySpeed);
+    def.solver.linearSleepTolerance = config.minRigidbodySpeed;
     // Both keys are already checked by the reader (>= 0, and [0, 1]); only the physics' upper
     // bound on the overlap is left, a cap like the sub-steps' above rather than an error.
     def.solver.classicAllowedPenetration =
-        std::min(metres(config.allowedPenetration), physics::kMaxClassicAllowedPenetration);
+        std::min(config.allowedPenetration, physics::kMaxClassicAllowedPenetration);
     def.solver.classicPositionBias = config.penetrationBiasFactor;
     return def;
 }

@@ -49,14 +49,14 @@ TEST(EngineConfig, EveryKeyOfTheFileIsRead) {
     EXPECT_FALSE(c.vsync);
     EXPECT_EQ(c.msaaSamples, 4);
     EXPECT_EQ(c.fontSize, 32);
-    EXPECT_EQ(c.gravityX, 50.0f);
-    EXPECT_EQ(c.gravityY, -1000.0f);
+    EXPECT_EQ(c.gravityX, 0.5f);
+    EXPECT_EQ(c.gravityY, -10.0f);
     EXPECT_EQ(c.fixedTimestep, 0.005);
     EXPECT_EQ(c.collisionResolutionSteps, 10);
     EXPECT_EQ(c.physicsSolver, physics::SolverMode::Classic);
-    EXPECT_EQ(c.allowedPenetration, 0.1f);
+    EXPECT_EQ(c.allowedPenetration, 0.001f);
     EXPECT_EQ(c.penetrationBiasFactor, 0.1f);
-    EXPECT_EQ(c.minRigidbodySpeed, 5.0f);
+    EXPECT_EQ(c.minRigidbodySpeed, 0.05f);
     EXPECT_EQ(c.unitsPerMetre, 100.0);
     EXPECT_EQ(c.minAttenuationDistance, 100.0f);
     EXPECT_EQ(c.maxAttenuationDistance, 900.0f);
@@ -76,17 +76,17 @@ TEST(EngineConfig, EveryKeyOfTheFileIsRead) {
     EXPECT_EQ(c.profileKey, "f5");
 }
 
-TEST(EngineConfig, PhysicsKeysFeedTheWorldInMetres) {
+TEST(EngineConfig, PhysicsKeysAreSIWhateverTheUnitsPerMetre) {
     const EngineConfigResult r = loadEngineConfig(kData / "every_key.txt", true);
     const physics::WorldDef def = engine::makeWorldDef(r.config);
-    // 100 units per metre: -1000 units/s^2 is -10 m/s^2, 5 units/s is 0.05 m/s.
+    // At 100 units per metre as at any other scale: m/s^2, m/s and m, as written.
     EXPECT_FLOAT_EQ(def.gravity.x, 0.5f);
     EXPECT_FLOAT_EQ(def.gravity.y, -10.0f);
     EXPECT_EQ(def.solver.mode, physics::SolverMode::Classic);
     EXPECT_EQ(def.solver.subSteps, 10);
     EXPECT_EQ(def.solver.velocityIterations, 10);
     EXPECT_FLOAT_EQ(def.solver.linearSleepTolerance, 0.05f);
-    // 0.1 units of allowed penetration is 1 mm; the bias factor has no unit.
+    // 1 mm of allowed penetration; the bias factor has no unit.
     EXPECT_FLOAT_EQ(def.solver.classicAllowedPenetration, 0.001f);
     EXPECT_FLOAT_EQ(def.solver.classicPositionBias, 0.1f);
 
@@ -104,7 +104,7 @@ TEST(EngineConfig, PhysicsKeysFeedTheWorldInMetres) {
     // position correction) reaches the world as 0.
     engine::EngineConfig loose;
     loose.unitsPerMetre = 100.0;
-    loose.allowedPenetration = 50.0f; // 0.5 m
+    loose.allowedPenetration = 0.5f; // m
     loose.penetrationBiasFactor = 0.0f;
     const physics::WorldDef looseDef = engine::makeWorldDef(loose);
     EXPECT_EQ(looseDef.solver.classicAllowedPenetration, physics::kMaxClassicAllowedPenetration);
@@ -121,14 +121,34 @@ TEST(EngineConfig, PhysicsKeysFeedTheWorldInMetres) {
     EXPECT_NO_THROW(physics::World{engine::makeWorldDef(r.config)});
 }
 
+// The obvious pixel game, written with the defaults: world units are reference pixels, a crate
+// dropped from the top of a 624-px view must fall like one (it used to fall 9 px in 80 frames:
+// 9.81 units/s^2 at 1 unit per metre).
+TEST(EngineConfig, DefaultsMakeAPixelCrateFallAsItLooks) {
+    const engine::EngineConfig defaults;
+    physics::World world{engine::makeWorldDef(defaults)};
+    physics::BodyDef crate;
+    crate.type = physics::BodyType::Dynamic;
+    const physics::BodyId body = world.createBody(crate);
+    world.createShape(body, {}, physics::makeBox(0.16f, 0.16f)); // 32 px at 100 px per metre
+    for (int i = 0; i < 80; ++i) {
+        world.step(1.0f / 60.0f);
+    }
+    const float fallenPixels = -world.transform(body).p.y * static_cast<float>(defaults.unitsPerMetre);
+    // 1/2 g t^2 with g = 9.81 m/s^2 = 981 px/s^2 and t = 80/60 s: about 872 px.
+    EXPECT_NEAR(fallenPixels, 0.5f * 981.0f * (80.0f / 60.0f) * (80.0f / 60.0f), 15.0f);
+    EXPECT_EQ(defaults.unitsPerMetre, 100.0);
+    EXPECT_FLOAT_EQ(defaults.gravityY, -9.81f);
+}
+
 TEST(EngineConfig, PenetrationKeysTuneAClassicWorld) {
     // A unit box spawned 10 cm into the ground of a classic-solver world made from a config:
-    // the position iterations lift it until the allowed penetration is left, 2 units = 2 cm
-    // at 100 units per metre; with a bias factor of 0 it is not lifted at all.
+    // the position iterations lift it until the allowed penetration is left (2 cm, whatever
+    // the units per metre); with a bias factor of 0 it is not lifted at all.
     const auto overlapAfter = [](float allowedPenetration, float biasFactor, int steps) {
         engine::EngineConfig config;
         config.unitsPerMetre = 100.0;
-        config.gravityY = -1000.0f;
+        config.gravityY = -10.0f;
         config.allowedPenetration = allowedPenetration;
         config.penetrationBiasFactor = biasFactor;
         config.physicsSolver = physics::SolverMode::Classic;
@@ -145,11 +165,11 @@ TEST(EngineConfig, PenetrationKeysTuneAClassicWorld) {
         }
         return 0.5f - world.transform(box).p.y; // metres; the ground's top is y = 0
     };
-    EXPECT_NEAR(overlapAfter(2.0f, 0.2f, 300), 0.02f, 1e-3f);
-    EXPECT_NEAR(overlapAfter(0.5f, 0.2f, 300), 0.005f, 1e-3f);
+    EXPECT_NEAR(overlapAfter(0.02f, 0.2f, 300), 0.02f, 1e-3f);
+    EXPECT_NEAR(overlapAfter(0.005f, 0.2f, 300), 0.005f, 1e-3f);
     // A smaller factor corrects more slowly; 0 leaves the overlap as it was.
-    EXPECT_GT(overlapAfter(0.5f, 0.05f, 6), overlapAfter(0.5f, 0.2f, 6) + 0.02f);
-    EXPECT_NEAR(overlapAfter(0.5f, 0.0f, 6), 0.1f, 1e-5f);
+    EXPECT_GT(overlapAfter(0.005f, 0.05f, 6), overlapAfter(0.005f, 0.2f, 6) + 0.02f);
+    EXPECT_NEAR(overlapAfter(0.005f, 0.0f, 6), 0.1f, 1e-5f);
 }
 
 TEST(EngineConfig, BadValuesAreErrorsNamingFileLineAndKey) {

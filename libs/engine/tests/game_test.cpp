@@ -977,7 +977,8 @@ TEST(Game, GameSystemGivesTheConfigAssetsAndEverySubsystem) {
         EXPECT_NE(g.text().font(render::kDefaultFontPath, 12), nullptr);
         EXPECT_FALSE(g.input().isKeyDown(GLFW_KEY_A));
         EXPECT_EQ(g.mixer().voiceCount(), 32);
-        EXPECT_FLOAT_EQ(g.world().gravity().y, static_cast<float>(engine::EngineConfig{}.gravityY / 32.0));
+        // Gravity is m/s^2 whatever the scale.
+        EXPECT_FLOAT_EQ(g.world().gravity().y, engine::EngineConfig{}.gravityY);
         EXPECT_FALSE(g.debugDraw());
         g.setDebugDraw(true);
         EXPECT_TRUE(g.debugDraw());

@@ -22,8 +22,9 @@ namespace e2d::engine {
 /// read by its own name). The settings use the libraries' own types (render::ScreenFit,
 /// physics::SolverMode, ...); a new key is a field here and a line in engine_config.cpp.
 ///
-/// Lengths in PHYSICS are world units (metres at the default `unitsPerMetre` of 1),
-/// `firstScene` is empty (a game-specific name is no library default) and `windowTitle` is "e2d".
+/// PHYSICS values are SI (gravity m/s^2, lengths m, speeds m/s) whatever `unitsPerMetre`,
+/// which only says how many world units make a metre (default 100: a pixel game feels right
+/// as it is), `firstScene` is empty (a game-specific name is no library default) and `windowTitle` is "e2d".
 struct EngineConfig {
     // SCENE
     /// Registry name of the scene to start with. Default "" (none).
@@ -58,7 +59,8 @@ struct EngineConfig {
     int fontSize = 100;
 
     // PHYSICS
-    /// Gravity in world units/s^2. Default (0, -9.81).
+    /// Gravity in m/s^2 (the physics system gives it to the components in world units/s^2:
+    /// times unitsPerMetre). Default (0, -9.81).
     float gravityX = 0.0f;
     float gravityY = -9.81f;
     /// Seconds per physics step, > 0 and <= 1. Default 1/60.
@@ -68,18 +70,19 @@ struct EngineConfig {
     /// The contact solver: softStep (soft contacts, sub-stepped; e2d's default) or classic
     /// (sequential impulses with position iterations). Default softStep.
     physics::SolverMode physicsSolver = physics::SolverMode::SoftStep;
-    /// Overlap tolerated before position correction, world units (>= 0); used by the classic
+    /// Overlap tolerated before position correction, metres (>= 0); used by the classic
     /// solver only. Default 0.005.
     float allowedPenetration = 0.005f;
     /// Fraction of the overlap corrected per position iteration, in [0, 1]; used by the
     /// classic solver only. Default 0.2.
     float penetrationBiasFactor = 0.2f;
-    /// Speed below which a body may rest, world units/s (>= 0). Default 0.05.
+    /// Speed below which a body may rest, m/s (>= 0). Default 0.05.
     float minRigidbodySpeed = 0.05f;
-    /// World units per physics metre (> 0): the PHYSICS lengths above (gravity, penetration,
-    /// speed) are in world units and are divided by it before reaching the physics world,
-    /// which runs in metres. A config written in pixels (gravity -1000) says e.g. 100. Default 1.
-    double unitsPerMetre = 1.0;
+    /// World units per physics metre (> 0). The engine's world unit is a reference pixel
+    /// (the camera shows referenceWindowWidth of them), so the default, 100, makes the obvious
+    /// pixel game fall as it looks (981 px/s^2, a 32-px crate is 0.32 m; Godot's 980 px/s^2 and
+    /// Unity's 100 pixels per unit agree); a game laid out in metres says 1. Default 100.
+    double unitsPerMetre = 100.0;
 
     // SOUND (world units, >= 0; each min at most its max)
     /// Default 256.
@@ -137,18 +140,17 @@ struct EngineConfig {
 /// The physics world a configuration asks for. The PHYSICS lengths are world units and are
 /// divided by `unitsPerMetre` (the world runs in metres):
 /// - physicsSolver (softStep|classic) -> solver.mode;
-/// - gravityX / gravityY (units/s^2)  -> WorldDef::gravity (m/s^2);
+/// - gravityX / gravityY (m/s^2)      -> WorldDef::gravity (m/s^2);
 /// - collisionResolutionSteps         -> solver.subSteps (soft step, capped at 64) and
 ///                                       solver.velocityIterations (classic solver);
-/// - minRigidbodySpeed (units/s)      -> solver.linearSleepTolerance (m/s);
-/// - allowedPenetration (units)       -> solver.classicAllowedPenetration (m, capped at
+/// - minRigidbodySpeed (m/s)          -> solver.linearSleepTolerance (m/s);
+/// - allowedPenetration (m)           -> solver.classicAllowedPenetration (m, capped at
 ///                                       SolverDef's 0.1 m);
 /// - penetrationBiasFactor            -> solver.classicPositionBias (same [0, 1] range; 0
 ///                                       turns the contacts' position correction off).
 /// The last two are position-correction settings and only the classic solver
 /// (`physicsSolver = classic`) uses them: the default soft-step solver's contacts are springs
-/// with their own settings (see SolverDef). The defaults (0.005 units at 1 unit per metre,
-/// 0.2) are SolverDef's own.
+/// with their own settings (see SolverDef). The defaults (0.005 m, 0.2) are SolverDef's own.
 [[nodiscard]] physics::WorldDef makeWorldDef(const EngineConfig& config);
 
 /// The result of reading a configuration file for a Game.
