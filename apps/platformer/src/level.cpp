@@ -162,9 +162,9 @@ Level::Level(e2d::core::Scene& scene, const PlayerTuning& tuning)
     character.groundSnapDistance = 0.05f * kTile;
     character.category = kPlayer;
     character.mask = kWorld | kTrigger;
-    character.contactFilter = [this](ph::ShapeId shape, glm::vec2 normal) {
-        const ph::Collider* collider = physics_.collider(shape);
-        return collider == nullptr || !collider->def().oneWay || normal.y >= 0.7f;
+    character.contactFilter = [this](const ph::MoverContact& contact) {
+        const ph::Collider* collider = physics_.collider(contact.shape);
+        return collider == nullptr || !collider->def().oneWay || contact.normal.y >= 0.7f;
     };
     character_ = player_->addComponent<ph::CharacterController>(character);
     player_->addComponent<SensorRelay>([this](const GameObject* other) { touches_.push_back(other); });
