@@ -14,6 +14,7 @@
 #include "runner.hpp"
 #include "scenario_parser.hpp"
 
+#include <e2d/core/printable.hpp>
 #include <e2d/core/utf8.hpp>
 
 #include <cmath>

@@ -4,7 +4,7 @@
 #include "generators.hpp"
 
 #include <e2d/core/json_scan.hpp>
-#include <e2d/core/utf8.hpp>
+#include <e2d/core/printable.hpp>
 #include <e2d/physics/constants.hpp>
 
 #include <nlohmann/json.hpp>

@@ -570,7 +570,7 @@ TEST(ScenarioParser, BytesQuotedFromTheFileAreEscapedWhenNotPrintable) {
     // Ill-formed UTF-8 in a string: nlohmann's reason quotes the raw bytes.
     const std::string bad = errorOf("{\"family\": \"\xFF\xC0\"}");
     EXPECT_THAT(bad, StartsWith("family: not valid JSON at line 1, column 13: "));
-    EXPECT_THAT(bad, HasSubstr("\\xFF"));
+    EXPECT_THAT(bad, HasSubstr("\\xff"));
     EXPECT_EQ(bad.find('\xFF'), std::string::npos) << bad;
     // A key JSON escapes a NUL and a control into: named whole, escaped.
     EXPECT_EQ(errorOf(scene(R"(, "a\u0000b\u0007": 1)", R"({"type": "circle", "radius": 1})")),

@@ -49,48 +49,14 @@ char32_t decodeUtf8(std::string_view text, std::size_t& pos) noexcept {
     return value;
 }
 
-namespace {
-
-// Whether the sequence text[start, end) that decoded to `c` may be quoted as it is.
-bool printsAsItIs(std::string_view text, std::size_t start, std::size_t end, char32_t c) {
-    // U+FFFD written in the text is kept; one made by the decoder stands for bad bytes.
-    const bool wellFormed = c != kReplacementCharacter || text.substr(start, end - start) == "\xEF\xBF\xBD";
-    const bool control = c < 0x20 || (c >= 0x7F && c <= 0x9F);
-    return wellFormed && !control;
-}
-
-} // namespace
-
-std::string printable(std::string_view text) {
-    static constexpr char kHex[] = "0123456789ABCDEF";
-    std::string out;
-    out.reserve(text.size());
-    std::size_t pos = 0;
-    while (pos < text.size()) {
-        const std::size_t start = pos;
-        const char32_t c = decodeUtf8(text, pos);
-        if (c == U'\\') {
-            out += "\\\\";
-        } else if (printsAsItIs(text, start, pos, c)) {
-            out.append(text.substr(start, pos - start));
-        } else {
-            for (std::size_t i = start; i < pos; ++i) {
-                const auto b = static_cast<unsigned char>(text[i]);
-                out += "\\x";
-                out += kHex[b >> 4];
-                out += kHex[b & 0xF];
-            }
-        }
-    }
-    return out;
-}
-
 bool isPrintable(std::string_view text) noexcept {
     std::size_t pos = 0;
     while (pos < text.size()) {
         const std::size_t start = pos;
         const char32_t c = decodeUtf8(text, pos);
-        if (!printsAsItIs(text, start, pos, c)) {
+        // U+FFFD written in the text is text; one made by the decoder stands for bad bytes.
+        if (c < 0x20 || c == 0x7F ||
+            (c == kReplacementCharacter && text.substr(start, pos - start) != "\xEF\xBF\xBD")) {
             return false;
         }
     }

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <e2d/core/printable.hpp>
 #include <e2d/core/utf8.hpp>
 
 #include <gmock/gmock.h>
@@ -48,19 +49,7 @@ TEST(Utf8, EveryIllFormedSequenceGivesReplacementAndMovesOn) {
                 testing::ElementsAre(U'\x7F', U'\u07FF', U'\uFFFF', U'\U0010FFFF'));
 }
 
-TEST(Printable, KeepsPrintableUtf8AndEscapesEveryOtherByte) {
-    EXPECT_EQ(printable("jump \xC3\xA9t\xC3\xA9 \xE2\x82\xAC"), "jump \xC3\xA9t\xC3\xA9 \xE2\x82\xAC");
-    // Controls, DEL, a NUL (which would cut what() short), ill-formed bytes, a C1 control.
-    EXPECT_EQ(printable(std::string_view("a\tb\nc\x7F\0d", 8)), "a\\x09b\\x0Ac\\x7F\\x00d");
-    EXPECT_EQ(printable("\xFF\xFE{\xC0\xAF}"), "\\xFF\\xFE{\\xC0\\xAF}");
-    EXPECT_EQ(printable("\xC2\x85"), "\\xC2\\x85");
-    // A U+FFFD written in the text is kept; a backslash doubles.
-    EXPECT_EQ(printable("\xEF\xBF\xBD"), "\xEF\xBF\xBD");
-    EXPECT_EQ(printable("a\\x41"), "a\\\\x41");
-    EXPECT_EQ(printable(""), "");
-}
-
-TEST(Printable, IsPrintableTellsWhetherTextNeedsEscaping) {
+TEST(Utf8, IsPrintableTellsWhetherTextNeedsEscaping) {
     using e2d::core::isPrintable;
     EXPECT_TRUE(isPrintable("caf\xC3\xA9 \\ \xEF\xBF\xBD"));
     EXPECT_FALSE(isPrintable("a\tb"));

@@ -5,6 +5,7 @@
 // stack overflow, no other exception). Seeds in corpus/fuzz_sprite_sheet/ nest near and past the
 // depth limit and are cut mid-file; fuzz_sprite_sheet.dict holds the format's tokens.
 #include <e2d/core/error.hpp>
+#include <e2d/core/printable.hpp>
 #include <e2d/core/utf8.hpp>
 #include <e2d/render/sprite_sheet.hpp>
 

@@ -3,7 +3,7 @@
 
 #include <e2d/core/error.hpp>
 #include <e2d/core/json_scan.hpp>
-#include <e2d/core/utf8.hpp>
+#include <e2d/core/printable.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -16,14 +16,9 @@ inline constexpr char32_t kReplacementCharacter = 0xFFFD;
 /// (Unicode's "maximal subpart" practice), so decoding always moves on. `pos` < text.size().
 char32_t decodeUtf8(std::string_view text, std::size_t& pos) noexcept;
 
-/// `text` made safe to quote in a message: well-formed UTF-8 that prints is kept as it is;
-/// every other byte (controls, DEL, C1 controls, ill-formed UTF-8, NUL) becomes `\xNN`, and a
-/// backslash becomes `\\`, so the result is printable, holds no NUL and reads back unambiguously.
-/// `printable("k\xFF\ty")` is `k\xFF\x09y`.
-[[nodiscard]] std::string printable(std::string_view text);
-
-/// True when every byte of `text` is part of well-formed UTF-8 that prints (no control
-/// character, no NUL): what printable() returns always is.
+/// True when `text` holds no control byte (below 0x20, or 0x7F; NUL included) and is
+/// well-formed UTF-8: what core::printable() (printable.hpp) returns always is. For checks
+/// that a message quotes nothing raw.
 [[nodiscard]] bool isPrintable(std::string_view text) noexcept;
 
 } // namespace e2d::core
