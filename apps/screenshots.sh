@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Remakes the README gallery of the seed's demos and the platformer: each app's own --screenshot, headless.
+# Remakes the README gallery of the examples and the platformer: each app's own --screenshot, headless.
 #   apps/screenshots.sh [build dir, default build/dev]
 # Writes docs/screenshots/<app>.png. Needs the apps built (ninja -C <build dir> e2d_<app>).
 set -euo pipefail
@@ -13,11 +13,12 @@ shoot() { # app, then the app's arguments
      --screenshot "$out/$app.png" >/dev/null 2>&1) || { echo "e2d_$app failed" >&2; exit 1; }
   echo "$out/$app.png"
 }
+shoot hello --frames 60
 shoot sprites --frames 30
 shoot parallax --frames 240
 shoot text --frames 60
-shoot audio1 --frames 60
-shoot audio2 --frames 60
-shoot physics1 --frames 75 --input-script "$root/apps/physics1/tests/gallery.script"
-shoot physics2 --frames 150
+shoot audio_spatial --frames 60
+shoot audio_listener --frames 60
+shoot physics_polygons --frames 75 --input-script "$root/apps/physics_polygons/tests/gallery.script"
+shoot physics_materials --frames 150
 shoot platformer --frames 120 --input-script "$root/apps/platformer/tests/win.script"

@@ -9,8 +9,11 @@
 //  frame/<scene>/<engine>        whole frames into a 1024 x 720 offscreen target under Mesa
 //                                llvmpipe, glFinish() included, ms per frame: e2d's Renderer,
 //                                SFML 2.5 with one sf::Sprite draw per sprite, SFML with one
-//                                sf::VertexArray per texture, and a naive OpenGL path (one
-//                                glDrawArrays per sprite with per-sprite uniforms, as the seed did).
+//                                sf::VertexArray per texture, SDL2's renderer on its OpenGL
+//                                backend with one SDL_RenderCopyF per sprite (SDL batches them)
+//                                and with one SDL_RenderGeometry per texture, and a naive OpenGL
+//                                path (one glDrawArrays per sprite with per-sprite uniforms, as
+//                                the seed did).
 //  text/<case>/<engine>          the same ~1 000-glyph string (alternating with a same-length
 //                                variant, so each frame lays it out anew) laid out, batched and
 //                                drawn: e2d's TextRenderer vs sf::Text; ns per glyph.
@@ -28,6 +31,7 @@
 #include "sprite_batcher.hpp"
 
 #include <GL/glew.h>
+#include <SDL.h>
 #include <SFML/Graphics.hpp>
 #include <benchmark/benchmark.h>
 
@@ -239,11 +243,64 @@ void buildCase(benchmark::State& state, int count, int movingPercent, bool pan) 
 // ---------------------------------------------------------------------------------------------
 // Whole frames.
 
-// What every frame engine shares: the e2d window (its context also runs the naive path) and the
-// SFML render texture (SFML's own context).
+// SDL2's renderer on its OpenGL backend, drawing into a render-target texture of a hidden
+// window (its own GL context, as SFML has its own).
+struct SdlTarget {
+    SDL_Window* window = nullptr;
+    SDL_Renderer* renderer = nullptr;
+    SDL_GLContext context = nullptr;
+    SDL_Texture* target = nullptr;
+
+    SdlTarget() = default;
+    SdlTarget(const SdlTarget&) = delete;
+    SdlTarget& operator=(const SdlTarget&) = delete;
+    ~SdlTarget() {
+        if (target != nullptr) {
+            SDL_DestroyTexture(target);
+        }
+        if (renderer != nullptr) {
+            SDL_DestroyRenderer(renderer);
+        }
+        if (window != nullptr) {
+            SDL_DestroyWindow(window);
+        }
+        SDL_Quit();
+    }
+
+    // Empty, or why SDL's OpenGL renderer is not available.
+    std::string create() {
+        SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+        SDL_SetHint(SDL_HINT_RENDER_DRIVER, "opengl");
+        SDL_SetHint(SDL_HINT_RENDER_BATCHING, "1");
+        if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+            return std::string("SDL_Init: ") + SDL_GetError();
+        }
+        window = SDL_CreateWindow("e2d batching bench (SDL2)", 0, 0, kWidth, kHeight,
+                                  SDL_WINDOW_OPENGL | SDL_WINDOW_HIDDEN);
+        if (window == nullptr) {
+            return std::string("SDL_CreateWindow: ") + SDL_GetError();
+        }
+        renderer = SDL_CreateRenderer(window, -1, SDL_RENDERER_ACCELERATED | SDL_RENDERER_TARGETTEXTURE);
+        SDL_RendererInfo info{};
+        if (renderer == nullptr || SDL_GetRendererInfo(renderer, &info) != 0 || std::string(info.name) != "opengl") {
+            return std::string("no SDL OpenGL renderer: ") + SDL_GetError();
+        }
+        context = SDL_GL_GetCurrentContext();
+        // ABGR8888 is R, G, B, A in memory on little-endian machines: Image's byte order.
+        target = SDL_CreateTexture(renderer, SDL_PIXELFORMAT_ABGR8888, SDL_TEXTUREACCESS_TARGET, kWidth, kHeight);
+        if (target == nullptr || SDL_SetRenderTarget(renderer, target) != 0) {
+            return std::string("SDL render target: ") + SDL_GetError();
+        }
+        return {};
+    }
+};
+
+// What every frame engine shares: the e2d window (its context also runs the naive path), the
+// SFML render texture (SFML's own context) and SDL's renderer (SDL's own context).
 struct Targets {
     std::unique_ptr<Window> window;
     sf::RenderTexture sfml;
+    SdlTarget sdl;
     std::string error;
     std::string shots;   // --e2d_shots=DIR: each frame case's last frame as DIR/<case>.png
     std::string running; // the case being run
@@ -279,6 +336,12 @@ struct Targets {
     void activateE2d() {
         (void)sfml.setActive(false);
         window->makeCurrent();
+    }
+    // SDL skips SDL_GL_MakeCurrent() when it believes its context is still current, which it
+    // is not after GLFW or SFML made theirs current: release it first, then take it.
+    void activateSdl() {
+        SDL_GL_MakeCurrent(sdl.window, nullptr);
+        SDL_GL_MakeCurrent(sdl.window, sdl.context);
     }
 };
 
@@ -463,6 +526,125 @@ void frameSfmlVertexArrays(benchmark::State& state, Targets& targets, Scene scen
     };
     targets.run(state, frame);
     finishSfml(state, targets);
+}
+
+// SDL2: textures as SDL makes them, nearest sampling and alpha blending as the other engines.
+std::vector<SDL_Texture*> sdlTextures(SDL_Renderer* renderer, const Scene& scene) {
+    std::vector<SDL_Texture*> textures;
+    const int count = scene.sheet ? 1 : kTextures;
+    for (int t = 0; t < count; ++t) {
+        const int w = scene.sheet ? kFrame * 8 : 16;
+        const int h = scene.sheet ? kFrame : 16;
+        SDL_Texture* texture = SDL_CreateTexture(renderer, SDL_PIXELFORMAT_ABGR8888, SDL_TEXTUREACCESS_STATIC, w, h);
+        const std::vector<std::uint8_t> rgba = scene.sheet ? sheetImage() : textureImage(t, 16);
+        SDL_UpdateTexture(texture, nullptr, rgba.data(), w * 4);
+        SDL_SetTextureScaleMode(texture, SDL_ScaleModeNearest);
+        SDL_SetTextureBlendMode(texture, SDL_BLENDMODE_BLEND);
+        textures.push_back(texture);
+    }
+    return textures;
+}
+
+// SDL's pixels: origin at the target's top-left, y down; the scene's: centre, y up.
+SDL_FPoint sdlPoint(glm::vec2 p) { return {p.x + kWidth * 0.5f, kHeight * 0.5f - p.y}; }
+
+// Reads the target back (rows from the top), frees the textures, reports `lit`.
+void finishSdl(benchmark::State& state, Targets& targets, std::vector<SDL_Texture*>& textures) {
+    Image image{kWidth, kHeight, std::vector<std::uint8_t>(static_cast<std::size_t>(kWidth * kHeight * 4))};
+    if (SDL_RenderReadPixels(targets.sdl.renderer, nullptr, SDL_PIXELFORMAT_ABGR8888, image.pixels.data(), kWidth * 4) != 0) {
+        state.SkipWithError("SDL_RenderReadPixels failed");
+    }
+    state.counters["lit"] = litFraction(image.pixels.data(), image.pixels.size() / 4);
+    targets.shot(state, std::move(image));
+    for (SDL_Texture* texture : textures) {
+        SDL_DestroyTexture(texture);
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+
+// One SDL_RenderCopyF per sprite in the scene's order, as sf::Sprite: SDL queues them and
+// draws the queue at the flush.
+void frameSdlCopy(benchmark::State& state, Targets& targets, Scene scene) {
+    targets.activateSdl();
+    SDL_Renderer* renderer = targets.sdl.renderer;
+    std::vector<SDL_Texture*> textures = sdlTextures(renderer, scene);
+    const float size = static_cast<float>(scene.spriteSize);
+    const int source = scene.sheet ? kFrame : 16;
+    int frameNumber = 0;
+    auto frame = [&] {
+        step(scene, frameNumber, [](int) {}, [](int) {});
+        SDL_SetRenderDrawColor(renderer, 0, 0, 0, 255);
+        SDL_RenderClear(renderer);
+        for (const SceneSprite& s : scene.sprites) {
+            const SDL_Rect from{scene.sheet ? s.frame * kFrame : 0, 0, source, source};
+            const SDL_FPoint at = sdlPoint(s.position);
+            const SDL_FRect to{at.x - size * 0.5f, at.y - size * 0.5f, size, size};
+            SDL_RenderCopyF(renderer, textures[static_cast<std::size_t>(s.texture)], &from, &to);
+        }
+        SDL_RenderFlush(renderer);
+        glFinish();
+        ++frameNumber;
+    };
+    targets.run(state, frame);
+    finishSdl(state, targets, textures);
+}
+
+// One SDL_RenderGeometry per texture over all of its sprites (two triangles each), vertices
+// kept between frames and updated where sprites moved or animated, as sf::VertexArray.
+void frameSdlGeometry(benchmark::State& state, Targets& targets, Scene scene) {
+    targets.activateSdl();
+    SDL_Renderer* renderer = targets.sdl.renderer;
+    std::vector<SDL_Texture*> textures = sdlTextures(renderer, scene);
+    std::vector<std::vector<SDL_Vertex>> vertices(textures.size());
+    std::vector<std::vector<int>> indices(textures.size());
+    std::vector<std::size_t> slot(scene.sprites.size()); // first vertex of each sprite's quad
+    for (std::size_t i = 0; i < scene.sprites.size(); ++i) {
+        std::vector<SDL_Vertex>& v = vertices[static_cast<std::size_t>(scene.sprites[i].texture)];
+        std::vector<int>& index = indices[static_cast<std::size_t>(scene.sprites[i].texture)];
+        slot[i] = v.size();
+        const int first = static_cast<int>(v.size());
+        index.insert(index.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+        v.resize(v.size() + 4, SDL_Vertex{{0.0f, 0.0f}, {255, 255, 255, 255}, {0.0f, 0.0f}});
+    }
+    const float half = static_cast<float>(scene.spriteSize) * 0.5f;
+    auto place = [&](std::size_t i) {
+        const SceneSprite& s = scene.sprites[i];
+        SDL_Vertex* v = &vertices[static_cast<std::size_t>(s.texture)][slot[i]];
+        const SDL_FPoint c = sdlPoint(s.position);
+        v[0].position = {c.x - half, c.y - half};
+        v[1].position = {c.x + half, c.y - half};
+        v[2].position = {c.x + half, c.y + half};
+        v[3].position = {c.x - half, c.y + half};
+    };
+    auto look = [&](std::size_t i) {
+        const SceneSprite& s = scene.sprites[i];
+        const Rect uv = scene.sheet ? frameUv(s.frame) : kFullUv;
+        SDL_Vertex* v = &vertices[static_cast<std::size_t>(s.texture)][slot[i]];
+        v[0].tex_coord = {uv.min.x, uv.min.y};
+        v[1].tex_coord = {uv.max().x, uv.min.y};
+        v[2].tex_coord = {uv.max().x, uv.max().y};
+        v[3].tex_coord = {uv.min.x, uv.max().y};
+    };
+    for (std::size_t i = 0; i < scene.sprites.size(); ++i) {
+        place(i);
+        look(i);
+    }
+    int frameNumber = 0;
+    auto frame = [&] {
+        step(scene, frameNumber, [&](int i) { place(static_cast<std::size_t>(i)); },
+             [&](int i) { look(static_cast<std::size_t>(i)); });
+        SDL_SetRenderDrawColor(renderer, 0, 0, 0, 255);
+        SDL_RenderClear(renderer);
+        for (std::size_t t = 0; t < textures.size(); ++t) {
+            SDL_RenderGeometry(renderer, textures[t], vertices[t].data(), static_cast<int>(vertices[t].size()),
+                               indices[t].data(), static_cast<int>(indices[t].size()));
+        }
+        SDL_RenderFlush(renderer);
+        glFinish();
+        ++frameNumber;
+    };
+    targets.run(state, frame);
+    finishSdl(state, targets, textures);
 }
 
 // The naive path: one draw call per sprite, its rectangle, UV and texture set by uniforms and
@@ -737,6 +919,9 @@ int main(int argc, char** argv) {
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
         return 2;
     }
+    if (!shots.empty()) {
+        std::filesystem::create_directories(shots);
+    }
     Targets targets;
     targets.shots = shots;
     targets.warmup = warmup;
@@ -785,6 +970,8 @@ int main(int argc, char** argv) {
         targets.error = e.what();
     }
     const bool gl = targets.window != nullptr && targets.sfml.create(kWidth, kHeight);
+    const std::string sdlError = gl ? targets.sdl.create() : std::string("no OpenGL");
+    const bool sdl = sdlError.empty();
     // The seed's demo (12 000 animated sprites from one sheet, 32 x 32, static positions) and
     // 100 000 8 x 8 sprites over 8 textures, 10 % of them moving. Live until the runs are done.
     const Scene demo = makeScene(12000, 0, true, 32);
@@ -823,6 +1010,20 @@ int main(int argc, char** argv) {
         }
         unit(add("text/1000_glyphs/sfml_text", [&targets](benchmark::State& s) { textSfml(s, targets); }),
              benchmark::kMicrosecond, true);
+        // SDL's context last, after SFML's.
+        if (sdl) {
+            for (const Frame& f : frames) {
+                const std::string base = f.name;
+                const Scene& scene = *f.scene;
+                unit(add(base + "/sdl_geometry",
+                         [&targets, &scene](benchmark::State& s) { frameSdlGeometry(s, targets, scene); }),
+                     benchmark::kMillisecond, true);
+                unit(add(base + "/sdl_copy", [&targets, &scene](benchmark::State& s) { frameSdlCopy(s, targets, scene); }),
+                     benchmark::kMillisecond, true);
+            }
+        } else {
+            std::fprintf(stderr, "batching: no SDL2 OpenGL renderer (%s): SDL cases skipped\n", sdlError.c_str());
+        }
     } else {
         std::fprintf(stderr, "batching: no OpenGL (%s): frame and text cases skipped\n", targets.error.c_str());
     }
@@ -839,7 +1040,7 @@ int main(int argc, char** argv) {
     const std::vector<Group> groups{
         {"build/", "CPU: per-frame instance data", "ns per sprite", 1.0, {"e2d"}},
         {"frame/", "Whole frames, 1024 x 720, llvmpipe", "ms per frame", 1e6,
-         {"e2d", "e2d_gl33", "sfml_vertexarray", "sfml_sprite", "naive"}},
+         {"e2d", "e2d_gl33", "sfml_vertexarray", "sfml_sprite", "sdl_geometry", "sdl_copy", "naive"}},
         {"text/", "Text laid out, batched and drawn", "ns per glyph", 1.0, {"e2d", "sfml_text"}},
     };
     std::ostringstream quiet;

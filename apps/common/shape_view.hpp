@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // ShapeView: draws the colliders of its game object as filled shapes with an outline, through
-// the renderer's Drawer, every frame. Shared by the physics demos (apps/physics1, physics2),
-// which show bodies as their shapes; the engine's physics debug draw (AABBs, contacts,
-// normals) goes on top when it is switched on.
+// the renderer's Drawer, every frame. Shared by the physics demos (apps/physics_polygons,
+// apps/physics_materials), which show bodies as their shapes; the engine's physics debug draw
+// (AABBs, contacts, normals) goes on top when it is switched on.
 #pragma once
 
 #include <e2d/core/component.hpp>

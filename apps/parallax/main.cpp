@@ -60,13 +60,19 @@ protected:
 
         auto& camera = createGameObject();
         camera.setPosition(glm::vec2{0.0f, 0.0f});
-        render::CameraComponentDef view;
-        view.referenceSize = {kWidth, kHeight};
-        camera.addComponent<render::CameraComponent>(view);
+        camera.addComponent<render::CameraComponent>(
+            render::CameraComponentDef{.referenceSize = {kWidth, kHeight}});
         camera.addComponent<CameraMover>();
 
         core::Random& random = game.random();
         const std::string circle = game.asset("assets/circle.png").string();
+        // A circle of `size` world units drawn in its layer's colour, at its layer's parallax.
+        auto circleOf = [&circle](const Layer& layer, float size) {
+            return render::SpriteRendererDef{.texturePath = circle,
+                                             .size = {size, size},
+                                             .tint = layer.tint,
+                                             .parallax = layer.parallax};
+        };
         for (const Layer& layer : kLayers) {
             // Spread each layer over a strip much wider than the view, so the glide lasts.
             for (int i = 0; i < layer.count; ++i) {
@@ -75,12 +81,7 @@ protected:
                 auto& object = createGameObject();
                 object.setPosition(glm::vec3{random.range(-kWidth, 4 * kWidth),
                                              random.range(-280.0f + size / 2, kHeight / 2), layer.z});
-                render::SpriteRendererDef def;
-                def.texturePath = circle;
-                def.size = {size, size};
-                def.tint = layer.tint;
-                def.parallax = layer.parallax;
-                object.addComponent<render::SpriteRenderer>(def);
+                object.addComponent<render::SpriteRenderer>(circleOf(layer, size));
             }
         }
 
@@ -91,22 +92,16 @@ protected:
         for (const Layer& layer : kLayers) {
             auto& marker = createGameObject();
             marker.setPosition(glm::vec3{0.0f, kMarkerY / layer.parallax, layer.z});
-            render::SpriteRendererDef def;
-            def.texturePath = circle;
-            def.size = {36.0f, 36.0f};
-            def.tint = layer.tint;
-            def.parallax = layer.parallax;
-            marker.addComponent<render::SpriteRenderer>(def);
+            marker.addComponent<render::SpriteRenderer>(circleOf(layer, 36.0f));
         }
 
         auto& help = createGameObject();
         help.setPosition(glm::vec3{-kWidth / 2 + 12, kHeight / 2 - 10, 10.0f});
-        render::TextLabelDef label;
-        label.text = "Parallax: four layers of translucent circles. Arrow keys move the camera.\n"
-                     "The four circles at the bottom were lined up when the camera started.";
-        label.pixelSize = 20;
-        label.hud = true;
-        help.addComponent<render::TextLabel>(label);
+        help.addComponent<render::TextLabel>(render::TextLabelDef{
+            .text = "Parallax: four layers of translucent circles. Arrow keys move the camera.\n"
+                    "The four circles at the bottom were lined up when the camera started.",
+            .pixelSize = 20,
+            .hud = true});
     }
 };
 

@@ -43,14 +43,14 @@ if(E2D_BUILD_TESTS)
       ENVIRONMENT "ALSOFT_DRIVERS=null;MESA_SHADER_CACHE_DISABLE=true")
   endfunction()
   platformer_run(win 540 win.script
-    "scene=WinScene score=3/4 coin_voices=3 jumps=3 runs=1 deaths=0 wins=1 steps_on_moving_platform=[1-9][0-9]+ steps_on_one_way=[1-9][0-9]* music_streaming=1 level_bodies=4"
+    "scene=WinScene score=3/4 coin_voices=3 jumps=3 runs=1 deaths=0 wins=1 steps_on_moving_platform=[1-9][0-9]+ steps_on_one_way=[1-9][0-9]* music_streaming=1 level_bodies=19"
     "colour:340,140,600,110:120,240,120:40:3|ink:200,260,880,120:1")
   platformer_run(game_over 180 spikes.script
     "scene=GameOverScene score=1/4 coin_voices=1 jumps=0 runs=1 deaths=1 wins=0"
     "colour:340,140,600,110:255,90,80:40:3|ink:200,260,880,120:1")
-  # Game over, then a second run: the new level finds the world holding only its own 4 bodies
+  # Game over, then a second run: the new level finds the world holding only its own 19 bodies
   # (the first run's went with its scene); the coin counter is back, yellow, top left.
   platformer_run(retry 300 retry.script
-    "scene=LevelScene score=1/4 coin_voices=2 jumps=1 runs=2 deaths=1 wins=0 .* level_bodies=4"
+    "scene=LevelScene score=1/4 coin_voices=2 jumps=1 runs=2 deaths=1 wins=0 .* level_bodies=19"
     "colour:10,10,200,40:255,230,90:60:3")
 endif()

@@ -65,25 +65,27 @@ protected:
         // World units are pixels: (0, 0) at the bottom-left corner of a 1024 x 720 view.
         auto& camera = createGameObject();
         camera.setPosition(glm::vec2{kWidth / 2, kHeight / 2});
-        render::CameraComponentDef view;
-        view.referenceSize = {kWidth, kHeight};
-        camera.addComponent<render::CameraComponent>(view);
+        camera.addComponent<render::CameraComponent>(
+            render::CameraComponentDef{.referenceSize = {kWidth, kHeight}});
 
         // One parse of the sheet for every sprite; its frames' UV rectangles per animation.
+        // Without the sheet (the error is logged) the image path draws the checker placeholder.
         const render::SpriteSheet* sheet = game.renderSystem().sheet(game.asset("assets/creatures.json"));
-        render::AnimatedSpriteRendererDef coin;
-        render::AnimatedSpriteRendererDef slime;
-        if (sheet != nullptr) {
-            coin.sprite.texturePath = slime.sprite.texturePath = sheet->imagePath().string();
-            coin.frames = render::animationUvs(*sheet, "coin");
-            slime.frames = render::animationUvs(*sheet, "slime");
-        } else {
-            // The error is logged; the image path draws the checker placeholder.
-            coin.sprite.texturePath = slime.sprite.texturePath = game.asset("assets/creatures.png").string();
-            coin.frames = slime.frames = {render::AnimationFrame{render::kFullUv}};
-            coin.sprite.size = slime.sprite.size = {32.0f, 32.0f};
-        }
-        coin.animation.frameDuration = slime.animation.frameDuration = 0.08;
+        auto creature = [&](const char* animation) {
+            if (sheet == nullptr) {
+                return render::AnimatedSpriteRendererDef{
+                    .sprite = {.texturePath = game.asset("assets/creatures.png").string(),
+                               .size = {32.0f, 32.0f}},
+                    .frames = {render::AnimationFrame{render::kFullUv}},
+                    .animation = {.frameDuration = 0.08}};
+            }
+            return render::AnimatedSpriteRendererDef{
+                .sprite = {.texturePath = sheet->imagePath().string()},
+                .frames = render::animationUvs(*sheet, animation),
+                .animation = {.frameDuration = 0.08}};
+        };
+        render::AnimatedSpriteRendererDef coin = creature("coin");
+        render::AnimatedSpriteRendererDef slime = creature("slime");
 
         core::Random& random = game.random();
         for (int i = 0; i < kSprites; ++i) {
@@ -102,12 +104,11 @@ protected:
         // toggled with F2): where each frame's milliseconds go.
         auto& fps = createGameObject();
         fps.setPosition(glm::vec3{kWidth / 2 - 12, kHeight / 2 - 10, 10.0f});
-        render::TextLabelDef label;
-        label.text = "measuring...";
-        label.pixelSize = 24;
-        label.style.horizontal = render::HorizontalAlign::Right;
-        label.hud = true;
-        fps.addComponent<render::TextLabel>(label);
+        fps.addComponent<render::TextLabel>(
+            render::TextLabelDef{.text = "measuring...",
+                                 .pixelSize = 24,
+                                 .style = {.horizontal = render::HorizontalAlign::Right},
+                                 .hud = true});
         fps.addComponent<FpsCounter>();
     }
 };

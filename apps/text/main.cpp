@@ -34,25 +34,22 @@ class TextScene : public core::Scene {
 protected:
     void onInitialize() override {
         auto& camera = createGameObject();
-        render::CameraComponentDef view;
-        view.referenceSize = {kWidth, kHeight};
-        camera.addComponent<render::CameraComponent>(view); // world (0, 0) at the centre
+        camera.addComponent<render::CameraComponent>( // world (0, 0) at the centre
+            render::CameraComponentDef{.referenceSize = {kWidth, kHeight}});
 
         auto& text = createGameObject();
-        render::TextLabelDef def;
-        def.text = "e2d draws text\nwith FreeType, kerned,\naligned as you like";
-        def.pixelSize = 44;
-        def.color = {255, 230, 140, 255};
-        label_ = text.addComponent<render::TextLabel>(def);
+        label_ = text.addComponent<render::TextLabel>(render::TextLabelDef{
+            .text = "e2d draws text\nwith FreeType, kerned,\naligned as you like",
+            .pixelSize = 44,
+            .color = {255, 230, 140, 255}});
 
         auto& help = createGameObject();
         help.setPosition(glm::vec3{-kWidth / 2 + 12, -kHeight / 2 + 12, 10.0f});
-        render::TextLabelDef helpDef;
-        helpDef.pixelSize = 20;
-        helpDef.hud = true;
-        helpDef.style.vertical = render::VerticalAlign::Bottom;
-        helpDef.color = {180, 200, 255, 255};
-        help_ = help.addComponent<render::TextLabel>(helpDef);
+        help_ = help.addComponent<render::TextLabel>(
+            render::TextLabelDef{.pixelSize = 20,
+                                 .style = {.vertical = render::VerticalAlign::Bottom},
+                                 .color = {180, 200, 255, 255},
+                                 .hud = true});
         apply();
     }
 

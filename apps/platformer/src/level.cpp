@@ -1,23 +1,48 @@
 // SPDX-License-Identifier: MIT
 #include "level.hpp"
 
+#include <e2d/core/component.hpp>
+#include <e2d/core/contact_info.hpp>
+#include <e2d/physics/character_controller.hpp>
+#include <e2d/physics/collider.hpp>
+#include <e2d/physics/physics_system.hpp>
+#include <e2d/physics/rigidbody.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <utility>
 
 namespace platformer {
 
 namespace ph = e2d::physics;
+using e2d::core::GameObject;
 
 namespace {
 
 // Collision categories.
-constexpr std::uint64_t kWorldBit = 1;
-constexpr std::uint64_t kPlayerBit = 2;
-constexpr std::uint64_t kTriggerBit = 4;
+constexpr e2d::core::Mask kWorld{1};
+constexpr e2d::core::Mask kPlayer{2};
+constexpr e2d::core::Mask kTrigger{4};
 
-constexpr float kGravity = -25.0f;
-// The ground probes reach this far below the feet, metres.
-constexpr float kProbeDepth = 0.08f;
+constexpr float kGravity = -25.0f * kTile;
+
+// Tells the level which sensors the player's object entered.
+class SensorRelay final : public e2d::core::Component {
+public:
+    explicit SensorRelay(std::function<void(const GameObject*)> entered) : entered_(std::move(entered)) {}
+    void onTriggerEnter(const e2d::core::ContactInfo& contact) override { entered_(contact.other); }
+
+private:
+    std::function<void(const GameObject*)> entered_;
+};
+
+GameObject& place(e2d::core::Scene& scene, const char* name, glm::vec2 at) {
+    GameObject& object = scene.createGameObject();
+    object.setName(name);
+    object.setPosition(at);
+    return object;
+}
 
 } // namespace
 
@@ -47,170 +72,130 @@ glm::vec2 MovingPlatform::positionAt(double t) const {
     return blend(1.0 - u / travel);
 }
 
-Level::Level(ph::World& world, const PlayerTuning& tuning) : world_(world), controller_(tuning) {
-    world_.setGravity({0.0f, kGravity});
+Level::Level(e2d::core::Scene& scene, const PlayerTuning& tuning)
+    : physics_(scene.system<ph::PhysicsSystem>()), controller_(tuning) {
+    const ph::ColliderDef solid{.friction = 0.0f, .category = kWorld};
+    const ph::ColliderDef sensor{.isSensor = true, .category = kTrigger, .mask = kPlayer};
 
-    // Terrain: one chain along the level's surface, listed right to left so that every segment
-    // faces into the level (a chain is solid from its right-hand side).
-    terrain_ = {{36.0f, 24.0f}, {36.0f, 6.0f}, {14.0f, 6.0f}, {14.0f, 0.0f}, {9.0f, 0.0f},
-                {9.0f, -3.0f},  {6.0f, -3.0f}, {6.0f, 0.0f},  {-4.0f, 0.0f}, {-4.0f, 24.0f}};
-    ph::BodyId ground = world_.createBody({});
-    bodies_.push_back(ground);
-    ph::ChainDef chain;
-    chain.points = terrain_;
-    chain.shape.friction = 0.0f;
-    chain.shape.filter.categoryBits = kWorldBit;
-    world_.createChain(ground, chain);
+    // Terrain: one-sided segments along the level's surface, listed right to left so that each
+    // faces into the level, each with its neighbours as ghosts so nothing catches on the joints.
+    for (glm::vec2 tile : {glm::vec2{36, 24}, glm::vec2{36, 6}, glm::vec2{14, 6}, glm::vec2{14, 0},
+                           glm::vec2{9, 0}, glm::vec2{9, -3}, glm::vec2{6, -3}, glm::vec2{6, 0},
+                           glm::vec2{-4, 0}, glm::vec2{-4, 24}}) {
+        terrain_.push_back(tile * kTile);
+    }
+    GameObject& ground = place(scene, "terrain", {0.0f, 0.0f});
+    for (std::size_t i = 0; i + 1 < terrain_.size(); ++i) {
+        ph::ChainSegment segment;
+        segment.segment = {terrain_[i], terrain_[i + 1]};
+        segment.hasGhost1 = i > 0;
+        segment.ghost1 = segment.hasGhost1 ? terrain_[i - 1] : terrain_[i];
+        segment.hasGhost2 = i + 2 < terrain_.size();
+        segment.ghost2 = segment.hasGhost2 ? terrain_[i + 2] : terrain_[i + 1];
+        ground.addComponent<ph::Collider>(segment, solid);
+    }
 
     // Spikes at the bottom of the pit.
-    ph::ShapeDef sensor;
-    sensor.isSensor = true;
-    sensor.filter.categoryBits = kTriggerBit;
-    sensor.filter.maskBits = kPlayerBit;
-    hazards_.push_back({{7.5f, -2.6f}, {1.5f, 0.4f}});
+    hazards_.push_back({glm::vec2{7.5f, -2.6f} * kTile, glm::vec2{1.5f, 0.4f} * kTile});
     for (const Box& hazard : hazards_) {
-        hazardShapes_.push_back(world_.createShape(
-            ground, sensor, ph::makeOffsetBox(hazard.half.x, hazard.half.y, hazard.center, 0.0f)));
+        GameObject& spikes = place(scene, "spikes", hazard.center);
+        spikes.addComponent<ph::Collider>(ph::makeBox(hazard.half.x, hazard.half.y), sensor);
+        hazardObjects_.push_back(&spikes);
     }
 
     // Coins: on the start ground, in the lift's shaft, on the one-way platform, and a bonus
     // high above the goal that only the shuttle reaches.
-    for (glm::vec2 at : {glm::vec2{3.0f, 0.8f}, glm::vec2{13.3f, 3.5f}, glm::vec2{23.0f, 8.7f},
-                         glm::vec2{32.2f, 11.0f}}) {
+    for (glm::vec2 tile : {glm::vec2{3.0f, 0.8f}, glm::vec2{13.3f, 3.5f}, glm::vec2{23.0f, 8.7f},
+                           glm::vec2{32.2f, 11.0f}}) {
         Coin coin;
-        coin.position = at;
-        ph::Circle circle;
-        circle.center = at;
-        circle.radius = 0.35f;
-        coin.shape = world_.createShape(ground, sensor, circle);
+        coin.position = tile * kTile;
+        coin.object = &place(scene, "coin", coin.position);
+        coin.object->addComponent<ph::Collider>(ph::Circle{{0.0f, 0.0f}, 0.35f * kTile}, sensor);
         coins_.push_back(coin);
     }
 
     // The goal flag.
-    goal_ = {{31.0f, 7.5f}, {0.5f, 1.5f}};
-    goalShape_ = world_.createShape(
-        ground, sensor, ph::makeOffsetBox(goal_.half.x, goal_.half.y, goal_.center, 0.0f));
+    goal_ = {glm::vec2{31.0f, 7.5f} * kTile, glm::vec2{0.5f, 1.5f} * kTile};
+    GameObject& flag = place(scene, "goal", goal_.center);
+    flag.addComponent<ph::Collider>(ph::makeBox(goal_.half.x, goal_.half.y), sensor);
+    goalObject_ = &flag;
 
-    // The one-way platform: solid from above only (see the pre-solve callback below).
-    oneWay_ = {{23.0f, 7.9f}, {4.0f, 0.1f}};
-    ph::ShapeDef solid;
-    solid.friction = 0.0f;
-    solid.filter.categoryBits = kWorldBit;
-    oneWayShape_ = world_.createShape(
-        ground, solid, ph::makeOffsetBox(oneWay_.half.x, oneWay_.half.y, oneWay_.center, 0.0f));
-    oneWayShapes_.push_back(oneWayShape_);
+    // The one-way platform: solid from above only.
+    ph::ColliderDef oneWay = solid;
+    oneWay.oneWay = true;
+    oneWay_ = {glm::vec2{23.0f, 7.9f} * kTile, glm::vec2{4.0f, 0.1f} * kTile};
+    place(scene, "one-way platform", oneWay_.center)
+        .addComponent<ph::Collider>(ph::makeBox(oneWay_.half.x, oneWay_.half.y), oneWay);
 
     // The lift in front of the cliff: waits at the bottom, rises above the ledge, waits, returns.
     MovingPlatform lift;
-    lift.half = {1.5f, 0.25f};
-    lift.from = {12.35f, 0.75f};
-    lift.to = {12.35f, 6.05f};
+    lift.half = glm::vec2{1.5f, 0.25f} * kTile;
+    lift.from = glm::vec2{12.35f, 0.75f} * kTile;
+    lift.to = glm::vec2{12.35f, 6.05f} * kTile;
     lift.dwell = 2.5f;
     lift.travel = 2.65f;
     platforms_.push_back(lift);
     // The shuttle above the end of the one-way platform, one-way itself: jump up through it
     // from the platform while it waits there, ride it to the bonus coin above the goal.
     MovingPlatform shuttle;
-    shuttle.half = {1.5f, 0.2f};
-    shuttle.from = {26.5f, 9.8f};
-    shuttle.to = {32.5f, 9.8f};
+    shuttle.from = glm::vec2{26.5f, 9.8f} * kTile;
+    shuttle.to = glm::vec2{32.5f, 9.8f} * kTile;
     shuttle.dwell = 1.5f;
     shuttle.travel = 2.0f;
     shuttle.oneWay = true;
     platforms_.push_back(shuttle);
     for (MovingPlatform& platform : platforms_) {
-        ph::BodyDef def;
-        def.type = ph::BodyType::Kinematic;
-        def.position = platform.positionAt(0.0);
-        platform.body = world_.createBody(def);
-        bodies_.push_back(platform.body);
-        const ph::ShapeId shape =
-            world_.createShape(platform.body, solid, ph::makeBox(platform.half.x, platform.half.y));
-        if (platform.oneWay) {
-            oneWayShapes_.push_back(shape);
-        }
+        platform.object = &place(scene, platform.oneWay ? "shuttle" : "lift", platform.positionAt(0.0));
+        platform.object->addComponent<ph::Rigidbody>(ph::RigidbodyDef{.type = ph::BodyType::Kinematic});
+        platform.object->addComponent<ph::Collider>(ph::makeBox(platform.half.x, platform.half.y),
+                                                    platform.oneWay ? oneWay : solid);
     }
 
-    // The player: a rounded box that never turns, frictionless so it does not stick to walls
-    // (the controller sets its horizontal speed).
-    ph::BodyDef playerDef;
-    playerDef.type = ph::BodyType::Dynamic;
-    playerDef.position = {1.0f, playerHalfSize().y + 0.01f};
-    playerDef.fixedRotation = true;
-    playerDef.enableSleep = false;
-    player_ = world_.createBody(playerDef);
-    bodies_.push_back(player_);
-    ph::ShapeDef playerShape;
-    playerShape.friction = 0.0f;
-    playerShape.density = 1.0f;
-    playerShape.filter.categoryBits = kPlayerBit;
-    playerShape.filter.maskBits = kWorldBit | kTriggerBit;
-    const float radius = 0.08f;
-    playerShape_ = world_.createShape(
-        player_, playerShape,
-        ph::makeRoundedBox(playerHalfSize().x - radius, playerHalfSize().y - radius, radius));
-
-    world_.setPreSolveCallback([this](ph::ShapeId a, ph::ShapeId b, const ph::Manifold& m) {
-        const auto isOneWay = [this](ph::ShapeId shape) {
-            return std::find(oneWayShapes_.begin(), oneWayShapes_.end(), shape) !=
-                   oneWayShapes_.end();
-        };
-        const bool aOneWay = isOneWay(a);
-        if (!aOneWay && !isOneWay(b)) {
-            return true;
-        }
-        // Solid only for something above it coming down: the normal from the platform to the
-        // other shape points up, and the other shape has not sunk into it from below.
-        const float up = aOneWay ? m.normal.y : -m.normal.y;
-        if (up < 0.7f) {
-            return false;
-        }
-        for (int i = 0; i < m.pointCount; ++i) {
-            if (m.points[i].separation < -0.05f) {
-                return false;
-            }
-        }
-        return true;
-    });
+    // The player: a capsule moved by a CharacterController (the rules below give it gravity
+    // and jumps); one-way platforms block it only from above.
+    player_ = &place(scene, "player", {1.0f * kTile, playerHalfSize().y + 0.01f * kTile});
+    const glm::vec2 half = playerHalfSize();
+    ph::CharacterControllerDef character;
+    character.capsule = {{0.0f, -(half.y - half.x)}, {0.0f, half.y - half.x}, half.x};
+    character.skin = 0.01f * kTile;
+    character.maxPushOut = 0.1f * kTile;
+    character.groundSnapDistance = 0.05f * kTile;
+    character.category = kPlayer;
+    character.mask = kWorld | kTrigger;
+    character.contactFilter = [this](const ph::MoverContact& contact) {
+        const ph::Collider* collider = physics_.collider(contact.shape);
+        return collider == nullptr || !collider->def().oneWay || contact.normal.y >= 0.7f;
+    };
+    character_ = player_->addComponent<ph::CharacterController>(character);
+    player_->addComponent<SensorRelay>([this](const GameObject* other) { touches_.push_back(other); });
 }
 
-Level::~Level() {
-    world_.setPreSolveCallback({});
-    for (auto it = bodies_.rbegin(); it != bodies_.rend(); ++it) {
-        if (world_.isValid(*it)) {
-            world_.destroyBody(*it);
-        }
-    }
-}
+glm::vec2 Level::playerPosition() const { return glm::vec2(player_->position()); }
 
-glm::vec2 Level::playerPosition() const { return world_.transform(player_).p; }
-
-glm::vec2 Level::playerVelocity() const { return world_.linearVelocity(player_); }
-
-glm::vec2 Level::platformPosition(std::size_t index) const {
-    return world_.transform(platforms_.at(index).body).p;
-}
+glm::vec2 Level::playerVelocity() const { return velocity_; }
 
 void Level::fixedUpdate(const PlayerInput& input, float dt) {
     events_ = {};
     if (won_ || dead_) {
         return;
     }
-    readSensorEvents();
+    for (const GameObject* other : std::exchange(touches_, {})) {
+        touched(other);
+    }
     if (playerPosition().y < killPlaneY()) {
         dead_ = true;
         events_.died = true;
     }
     if (won_ || dead_) {
-        world_.setLinearVelocity(player_, {0.0f, 0.0f});
+        velocity_ = {0.0f, 0.0f};
         for (const MovingPlatform& platform : platforms_) {
-            world_.setLinearVelocity(platform.body, {0.0f, 0.0f});
+            platform.object->getComponent<ph::Rigidbody>()->setLinearVelocity({0.0f, 0.0f});
         }
         return;
     }
     movePlatforms(dt);
     const bool wasGrounded = grounded_;
-    probeGround();
+    readGround();
     events_.landed = grounded_ && !wasGrounded;
     if (grounded_ && onMoving_) {
         ++stepsOnMoving_;
@@ -218,9 +203,17 @@ void Level::fixedUpdate(const PlayerInput& input, float dt) {
     if (grounded_ && onOneWay_) {
         ++stepsOnOneWay_;
     }
-    const PlayerStep step =
-        controller_.step(input, playerVelocity(), grounded_, groundVelocity_, dt);
-    world_.setLinearVelocity(player_, step.velocity);
+    const PlayerStep step = controller_.step(input, velocity_, grounded_, groundVelocity_, dt);
+    // Gravity is the game's: on the ground the player goes with it, in the air it falls.
+    glm::vec2 velocity = step.velocity;
+    if (grounded_ && !step.jumped) {
+        velocity.y = groundVelocity_.y;
+    } else {
+        velocity.y += kGravity * dt;
+    }
+    character_->move(velocity * dt);
+    // No speed piles up against walls, ceilings or the ground it was stopped by.
+    velocity_ = character_->clipVelocity(velocity - groundVelocity_) + groundVelocity_;
     if (step.jumped) {
         ++jumps_;
         events_.jumped = true;
@@ -228,27 +221,20 @@ void Level::fixedUpdate(const PlayerInput& input, float dt) {
     time_ += dt;
 }
 
-void Level::readSensorEvents() {
-    for (const ph::SensorBeginTouchEvent& event : world_.sensorBeginEvents()) {
-        if (event.visitorShape != playerShape_) {
-            continue;
-        }
-        if (event.sensorShape == goalShape_) {
-            won_ = true;
-            events_.won = true;
-        }
-        for (ph::ShapeId hazard : hazardShapes_) {
-            if (event.sensorShape == hazard && !won_) {
-                dead_ = true;
-                events_.died = true;
-            }
-        }
-        for (Coin& coin : coins_) {
-            if (event.sensorShape == coin.shape && !coin.collected) {
-                coin.collected = true;
-                ++score_;
-                ++events_.coinsCollected;
-            }
+void Level::touched(const GameObject* other) {
+    if (other == goalObject_) {
+        won_ = true;
+        events_.won = true;
+    }
+    if (std::find(hazardObjects_.begin(), hazardObjects_.end(), other) != hazardObjects_.end() && !won_) {
+        dead_ = true;
+        events_.died = true;
+    }
+    for (Coin& coin : coins_) {
+        if (other == coin.object && !coin.collected) {
+            coin.collected = true;
+            ++score_;
+            ++events_.coinsCollected;
         }
     }
 }
@@ -257,36 +243,18 @@ void Level::movePlatforms(float dt) {
     // Velocities that reach the timetable's position at the end of the step: the platform
     // never drifts from it, and pushes and carries the player like any moving body.
     for (const MovingPlatform& platform : platforms_) {
-        world_.setTargetTransform(platform.body, platform.positionAt(time_ + dt), 0.0f, dt);
+        platform.object->getComponent<ph::Rigidbody>()->setTargetTransform(platform.positionAt(time_ + dt), 0.0f);
     }
 }
 
-void Level::probeGround() {
-    // Three short rays down from just inside the feet: grounded when one hits a surface facing
-    // up. Rays ignore back faces, so the one-way platform is seen only from above.
-    const glm::vec2 p = playerPosition();
-    const glm::vec2 half = playerHalfSize();
-    ph::QueryFilter filter;
-    filter.categoryBits = kPlayerBit;
-    filter.maskBits = kWorldBit;
-    grounded_ = false;
-    onMoving_ = false;
-    onOneWay_ = false;
-    groundVelocity_ = {0.0f, 0.0f};
-    float best = 2.0f;
-    for (float dx : {-half.x + 0.05f, 0.0f, half.x - 0.05f}) {
-        const glm::vec2 origin{p.x + dx, p.y - half.y + 0.1f};
-        auto hit = world_.castRayClosest(origin, {0.0f, -(0.1f + kProbeDepth)}, filter);
-        if (!hit || hit->normal.y < 0.7f || hit->fraction >= best) {
-            continue;
-        }
-        best = hit->fraction;
-        grounded_ = true;
-        const ph::BodyId body = world_.shapeBody(hit->shape);
-        groundVelocity_ = world_.linearVelocity(body);
-        onMoving_ = world_.bodyType(body) == ph::BodyType::Kinematic;
-        onOneWay_ = hit->shape == oneWayShape_;
-    }
+void Level::readGround() {
+    // What the character stood on after its last move.
+    grounded_ = character_->isGrounded();
+    groundVelocity_ = grounded_ ? character_->groundVelocity() : glm::vec2{0.0f, 0.0f};
+    const ph::Collider* ground = grounded_ ? physics_.collider(character_->lastMove().groundShape) : nullptr;
+    const ph::Rigidbody* moving = ground != nullptr ? ground->rigidbody() : nullptr;
+    onMoving_ = moving != nullptr && moving->type() == ph::BodyType::Kinematic;
+    onOneWay_ = ground != nullptr && ground->def().oneWay && moving == nullptr;
 }
 
 } // namespace platformer

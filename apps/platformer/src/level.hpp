@@ -3,15 +3,27 @@
 
 #include "player_controller.hpp"
 
-#include <e2d/physics/world.hpp>
+#include <e2d/core/game_object.hpp>
+#include <e2d/core/scene.hpp>
 
 #include <glm/vec2.hpp>
 
 #include <vector>
 
-/// The platformer's one level and its rules, on a physics::World and nothing else (no window,
-/// no sound, no input device), so the whole game can be played by a test at the fixed step.
-/// Metres, seconds, y up. The scenes (scenes.cpp) draw it, play its sounds and feed it input.
+namespace e2d::physics {
+class CharacterController;
+class Collider;
+class PhysicsSystem;
+class Rigidbody;
+} // namespace e2d::physics
+
+/// The platformer's one level and its rules, as game objects with physics components
+/// (Rigidbody, Collider, CharacterController) in a scene with a physics::PhysicsSystem and
+/// nothing else (no window, no sound, no input device), so the whole game can be played by a
+/// test at the fixed step.
+/// World units (reference pixels), seconds, y up; the level is laid out on a grid of kTile
+/// units (a tile is a metre to the physics: the game's unitsPerMetre is kTile). The scenes
+/// (scenes.cpp) give its objects sprites, play its sounds and feed it input.
 ///
 /// Layout, left to right: the start ground with a coin, a spike pit to jump over, a lift (a
 /// kinematic platform going up and down) in front of a cliff too high to jump, a coin in the
@@ -20,7 +32,7 @@
 /// the goal flag before the end wall.
 namespace platformer {
 
-/// An axis-aligned rectangle, metres.
+/// An axis-aligned rectangle, world units.
 struct Box {
     glm::vec2 center{0.0f, 0.0f};
     glm::vec2 half{0.0f, 0.0f};
@@ -29,14 +41,15 @@ struct Box {
 struct Coin {
     glm::vec2 position{0.0f, 0.0f};
     bool collected = false;
-    e2d::physics::ShapeId shape{};
+    /// The coin's sensor object (a sprite goes on a child of it).
+    e2d::core::GameObject* object = nullptr;
 };
 
 /// A kinematic platform following a timetable: it waits `dwell` seconds at `from`, travels to
 /// `to` in `travel` seconds, waits there, travels back; `phase` seconds of that cycle have passed
 /// at level time 0.
 struct MovingPlatform {
-    glm::vec2 half{1.5f, 0.2f};
+    glm::vec2 half{1.5f * kTile, 0.2f * kTile};
     glm::vec2 from{0.0f, 0.0f};
     glm::vec2 to{0.0f, 0.0f};
     float dwell = 2.0f;
@@ -44,7 +57,8 @@ struct MovingPlatform {
     float phase = 0.0f;
     /// Solid from above only, like the one-way platform. Default false.
     bool oneWay = false;
-    e2d::physics::BodyId body{};
+    /// Its object (Rigidbody, kinematic, and Collider).
+    e2d::core::GameObject* object = nullptr;
     /// Where the timetable puts the platform's centre at level time `t`.
     [[nodiscard]] glm::vec2 positionAt(double t) const;
 };
@@ -60,16 +74,13 @@ struct StepEvents {
 
 class Level {
 public:
-    /// Builds the level into `world` (gravity, terrain chain, platforms, sensors, the player) and
-    /// installs the world's pre-solve callback for the one-way platform. The level must outlive
-    /// nothing it built: its destructor destroys its bodies (those still valid) and removes the
-    /// callback.
-    explicit Level(e2d::physics::World& world, const PlayerTuning& tuning = {});
-    ~Level();
+    /// Builds the level's objects into `scene`, whose PhysicsSystem it sets the gravity of.
+    /// The objects are the scene's: they go with it.
+    explicit Level(e2d::core::Scene& scene, const PlayerTuning& tuning = {});
     Level(const Level&) = delete;
     Level& operator=(const Level&) = delete;
 
-    /// One fixed step before World::step(): reads the sensor events of the world's last step
+    /// One fixed step, before the PhysicsSystem's: takes the sensor events of the last step
     /// (coins, hazards, goal), moves the platforms along their timetables, and sets the player's
     /// velocity from `input`. Does nothing more once the player won or died.
     void fixedUpdate(const PlayerInput& input, float dt);
@@ -90,38 +101,37 @@ public:
     [[nodiscard]] int stepsOnMovingPlatform() const noexcept { return stepsOnMoving_; }
     [[nodiscard]] int stepsOnOneWay() const noexcept { return stepsOnOneWay_; }
 
-    // Layout, for drawing -----------------------------------------------------------------
-    [[nodiscard]] static glm::vec2 playerHalfSize() noexcept { return {0.35f, 0.6f}; }
+    // Layout and objects, for drawing -----------------------------------------------------
+    [[nodiscard]] static glm::vec2 playerHalfSize() noexcept { return glm::vec2{0.35f, 0.6f} * kTile; }
+    [[nodiscard]] e2d::core::GameObject& player() const noexcept { return *player_; }
     [[nodiscard]] const std::vector<glm::vec2>& terrain() const noexcept { return terrain_; }
     [[nodiscard]] const std::vector<Coin>& coins() const noexcept { return coins_; }
     [[nodiscard]] const std::vector<Box>& hazards() const noexcept { return hazards_; }
     [[nodiscard]] const std::vector<MovingPlatform>& platforms() const noexcept { return platforms_; }
-    [[nodiscard]] glm::vec2 platformPosition(std::size_t index) const;
     [[nodiscard]] const Box& oneWay() const noexcept { return oneWay_; }
     [[nodiscard]] const Box& goal() const noexcept { return goal_; }
     /// The lowest y the player may reach before falling out of the world counts as death.
-    [[nodiscard]] static float killPlaneY() noexcept { return -12.0f; }
+    [[nodiscard]] static float killPlaneY() noexcept { return -12.0f * kTile; }
 
 private:
-    void readSensorEvents();
+    void touched(const e2d::core::GameObject* other);
     void movePlatforms(float dt);
-    void probeGround();
+    void readGround();
 
-    e2d::physics::World& world_;
+    e2d::physics::PhysicsSystem& physics_;
     PlayerController controller_;
-    std::vector<e2d::physics::BodyId> bodies_;
     std::vector<glm::vec2> terrain_;
     std::vector<Coin> coins_;
     std::vector<Box> hazards_;
-    std::vector<e2d::physics::ShapeId> hazardShapes_;
+    std::vector<const e2d::core::GameObject*> hazardObjects_;
     std::vector<MovingPlatform> platforms_;
     Box oneWay_;
     Box goal_;
-    e2d::physics::ShapeId oneWayShape_{};
-    std::vector<e2d::physics::ShapeId> oneWayShapes_; // the platform and the shuttle
-    e2d::physics::ShapeId goalShape_{};
-    e2d::physics::BodyId player_{};
-    e2d::physics::ShapeId playerShape_{};
+    const e2d::core::GameObject* goalObject_ = nullptr;
+    e2d::core::GameObject* player_ = nullptr;
+    e2d::physics::CharacterController* character_ = nullptr;
+    glm::vec2 velocity_{0.0f, 0.0f}; // the player's, world units/s
+    std::vector<const e2d::core::GameObject*> touches_; // sensors entered since the last step
     StepEvents events_;
     double time_ = 0.0;
     int score_ = 0;

@@ -29,7 +29,8 @@ PlayerStep PlayerController::step(const PlayerInput& input, glm::vec2 velocity, 
     }
     // A body still rising from its own jump is not grounded, whatever the feet touch: otherwise
     // the first step of a jump next to a ledge would count as a landing and allow a double jump.
-    const bool onGround = grounded && !(rising_ && velocity.y > groundVelocity.y + 0.5f);
+    // ("rising": faster than the ground by a twentieth of a jump's start.)
+    const bool onGround = grounded && !(rising_ && velocity.y > groundVelocity.y + 0.05f * tuning_.jumpSpeed);
     if (onGround) {
         airTime_ = 0.0f;
         jumpUsed_ = false;

@@ -10,6 +10,10 @@
 /// (a jump pressed a moment before landing happens on landing).
 namespace platformer {
 
+/// World units (reference pixels) per tile of the level's grid; the game's unitsPerMetre makes
+/// a tile a metre to the physics.
+inline constexpr float kTile = 48.0f;
+
 /// What the player asks for during one fixed step.
 struct PlayerInput {
     /// -1 (left) .. 1 (right). Default 0.
@@ -20,16 +24,18 @@ struct PlayerInput {
     bool jumpHeld = false;
 };
 
-/// Tuning of PlayerController. Units: metres, seconds.
+/// Tuning of PlayerController. Units: world units, seconds.
 struct PlayerTuning {
-    /// Top running speed, m/s. Default 7.
-    float runSpeed = 7.0f;
-    /// How fast the horizontal speed approaches the wanted one on the ground, m/s^2. Default 60.
-    float groundAcceleration = 60.0f;
-    /// The same in the air, m/s^2. Default 35.
-    float airAcceleration = 35.0f;
-    /// Upward speed a jump starts with, m/s. Default 11 (2.4 m high under 25 m/s^2).
-    float jumpSpeed = 11.0f;
+    /// Top running speed, units/s. Default 7 tiles/s.
+    float runSpeed = 7.0f * kTile;
+    /// How fast the horizontal speed approaches the wanted one on the ground, units/s^2.
+    /// Default 60 tiles/s^2.
+    float groundAcceleration = 60.0f * kTile;
+    /// The same in the air, units/s^2. Default 35 tiles/s^2.
+    float airAcceleration = 35.0f * kTile;
+    /// Upward speed a jump starts with, units/s. Default 11 tiles/s (2.4 tiles high under the
+    /// level's 25 tiles/s^2).
+    float jumpSpeed = 11.0f * kTile;
     /// Releasing jump while rising multiplies the upward speed by this. Default 0.5.
     float jumpCut = 0.5f;
     /// A jump still starts this long after the feet left the ground, s. Default 0.1.
@@ -40,7 +46,7 @@ struct PlayerTuning {
 
 /// What the controller decides for one step.
 struct PlayerStep {
-    glm::vec2 velocity{0.0f, 0.0f}; ///< the body's new velocity, m/s
+    glm::vec2 velocity{0.0f, 0.0f}; ///< the body's new velocity, units/s
     bool jumped = false;            ///< a jump started this step
 };
 

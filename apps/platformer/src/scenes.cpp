@@ -232,8 +232,8 @@ private:
     }
 };
 
-// The level: the rules (Level) on the engine's physics world, drawn with sprites, heard
-// through the mixer, driven by input actions.
+// The level: the rules (Level) as game objects on the engine's physics components, drawn with
+// sprites on those objects, heard through the mixer, driven by input actions.
 class LevelScene final : public e2d::core::Scene {
 public:
     explicit LevelScene(Session& session) : session_(session) {}
@@ -242,11 +242,8 @@ private:
     void onInitialize() override {
         GameSystem& game = system<GameSystem>();
         ensureBindings(game);
-        // The level runs on the bare World, in metres; the game's PhysicsSystem knows the
-        // config's unitsPerMetre (48 reference pixels per metre here) and converts for drawing.
-        physics_ = &game.physics();
-        level_ = std::make_unique<Level>(game.world());
-        session_.levelBodies = game.world().bodyCount();
+        level_ = std::make_unique<Level>(*this);
+        session_.levelBodies = 0; // counted once the level's objects joined the scene
         session_.lastScene = name();
         session_.runs += 1;
         session_.score = 0;
@@ -260,7 +257,7 @@ private:
         camera_ = &camera;
 
         // Designed for the camera's height at the start (player on the ground).
-        addBackground(*this, game, game.renderer().whiteTexture(), px({0.0f, 2.1f}).y);
+        addBackground(*this, game, game.renderer().whiteTexture(), 2.1f * kTile);
         buildTerrain(game);
         buildProps(game);
         buildPlayer(game);
@@ -268,16 +265,10 @@ private:
         followPlayer(1.0);
     }
 
-    void onTerminate() override {
-        // Bodies first (the world outlives the scene); sprites and voices are the scene's
-        // objects and the mixer's, released by the engine at the scene change.
-        level_.reset();
-    }
-
     void buildTerrain(GameSystem& game) {
         const render::TextureId white = game.renderer().whiteTexture();
         const std::vector<glm::vec2>& t = level_->terrain();
-        constexpr float kBottom = -14.0f;
+        constexpr float kBottom = -14.0f * kTile;
         // Floors (horizontal runs of the chain, listed right to left): earth below, grass on top.
         for (std::size_t i = 0; i + 1 < t.size(); ++i) {
             const glm::vec2 a = t[i];
@@ -286,51 +277,56 @@ private:
                 continue;
             }
             const glm::vec2 size{a.x - b.x, a.y - kBottom};
-            makeSprite(*this, tinted(white, px(size), {110, 72, 44, 255}),
-                       px({(a.x + b.x) * 0.5f, (a.y + kBottom) * 0.5f}), kZGround);
-            for (float x = b.x; x < a.x - 0.01f; x += 1.0f) {
-                makeSprite(*this, textured(game, "grass.png", px({1.0f, 0.5f})),
-                           px({x + 0.5f, a.y - 0.25f}), kZGround + 0.1f);
+            makeSprite(*this, tinted(white, size, {110, 72, 44, 255}),
+                       {(a.x + b.x) * 0.5f, (a.y + kBottom) * 0.5f}, kZGround);
+            for (float x = b.x; x < a.x - 0.01f * kTile; x += kTile) {
+                makeSprite(*this, textured(game, "grass.png", glm::vec2{1.0f, 0.5f} * kTile),
+                           {x + 0.5f * kTile, a.y - 0.25f * kTile}, kZGround + 0.1f);
             }
         }
         // The end walls (first and last segments of the chain).
         for (glm::vec2 top : {t.front(), t.back()}) {
             const float outward = top.x > 0.0f ? 1.0f : -1.0f;
-            makeSprite(*this, tinted(white, px({2.0f, top.y - kBottom}), {92, 60, 38, 255}),
-                       px({top.x + outward, (top.y + kBottom) * 0.5f}), kZGround);
+            makeSprite(*this, tinted(white, {2.0f * kTile, top.y - kBottom}, {92, 60, 38, 255}),
+                       {top.x + outward * kTile, (top.y + kBottom) * 0.5f}, kZGround);
         }
     }
 
     void buildProps(GameSystem& game) {
         for (const Box& hazard : level_->hazards()) {
-            for (float x = hazard.center.x - hazard.half.x; x < hazard.center.x + hazard.half.x - 0.01f;
-                 x += 1.0f) {
-                makeSprite(*this, textured(game, "spikes.png", px({1.0f, 2.0f * hazard.half.y})),
-                           px({x + 0.5f, hazard.center.y}), kZProps);
+            for (float x = hazard.center.x - hazard.half.x; x < hazard.center.x + hazard.half.x - 0.01f * kTile;
+                 x += kTile) {
+                makeSprite(*this, textured(game, "spikes.png", {kTile, 2.0f * hazard.half.y}),
+                           {x + 0.5f * kTile, hazard.center.y}, kZProps);
             }
         }
         const Box& oneWay = level_->oneWay();
-        for (float x = oneWay.center.x - oneWay.half.x; x < oneWay.center.x + oneWay.half.x - 0.01f;
-             x += 1.0f) {
-            makeSprite(*this, textured(game, "plank.png", px({1.0f, 0.3f})),
-                       px({x + 0.5f, oneWay.center.y + oneWay.half.y - 0.15f}), kZProps);
+        for (float x = oneWay.center.x - oneWay.half.x; x < oneWay.center.x + oneWay.half.x - 0.01f * kTile;
+             x += kTile) {
+            makeSprite(*this, textured(game, "plank.png", glm::vec2{1.0f, 0.3f} * kTile),
+                       {x + 0.5f * kTile, oneWay.center.y + oneWay.half.y - 0.15f * kTile}, kZProps);
         }
+        // The platforms' and coins' sprites go on their objects, and move with them.
         for (const MovingPlatform& platform : level_->platforms()) {
-            platforms_.push_back(&makeSprite(
-                *this, textured(game, "platform.png", px(2.0f * platform.half)),
-                px(platform.from), kZProps));
+            platform.object->setPosition(glm::vec3(platform.object->position().x, platform.object->position().y, kZProps));
+            platform.object->addComponent<render::SpriteRenderer>(
+                textured(game, "platform.png", 2.0f * platform.half));
         }
         for (const Coin& coin : level_->coins()) {
-            coins_.push_back(&makeSprite(*this, textured(game, "coin.png", px({0.7f, 0.7f})),
-                                         px(coin.position), kZProps));
+            // On a child, which bobs and spins while the coin's sensor stays put.
+            GameObject& sprite = createGameObject();
+            coin.object->addChild(sprite);
+            sprite.setPosition(glm::vec3(0.0f, 0.0f, kZProps));
+            sprite.addComponent<render::SpriteRenderer>(textured(game, "coin.png", glm::vec2{0.7f, 0.7f} * kTile));
+            coins_.push_back(&sprite);
         }
         const Box& goal = level_->goal();
-        makeSprite(*this, textured(game, "flag.png", px(2.0f * goal.half)), px(goal.center), kZProps);
+        makeSprite(*this, textured(game, "flag.png", 2.0f * goal.half), goal.center, kZProps);
     }
 
     void buildPlayer(GameSystem& game) {
         render::SpriteRendererDef def;
-        def.size = px(2.0f * Level::playerHalfSize()) * glm::vec2(1.4f, 1.1f);
+        def.size = 2.0f * Level::playerHalfSize() * glm::vec2(1.4f, 1.1f);
         def.pivot = {0.5f, 0.45f};
         try {
             sheet_ = render::SpriteSheet::fromFile(game.asset("assets/player.json"));
@@ -347,7 +343,9 @@ private:
             def.texture = game.renderer().whiteTexture();
             def.tint = {240, 120, 60, 255};
         }
-        player_ = &makeSprite(*this, def, px(level_->playerPosition()), kZPlayer);
+        player_ = &level_->player();
+        player_->setPosition(glm::vec3(level_->playerPosition(), kZPlayer));
+        player_->addComponent<render::SpriteRenderer>(def);
         setPose(Pose::Idle);
     }
 
@@ -408,11 +406,8 @@ private:
             sprite->setVisible(!coin.collected);
             // A gentle bob and a spin (scaling x) so coins catch the eye.
             const double phase = level_->time() * 3.0 + static_cast<double>(i);
-            coins_[i]->setPosition(px(coin.position + glm::vec2(0.0f, 0.08f * std::sin(phase))));
+            coins_[i]->setPosition(glm::vec3(0.0f, 0.08f * kTile * static_cast<float>(std::sin(phase)), kZProps));
             coins_[i]->setScale({static_cast<float>(std::abs(std::cos(phase * 0.7))) * 0.8f + 0.2f, 1.0f});
-        }
-        for (std::size_t i = 0; i < platforms_.size(); ++i) {
-            platforms_[i]->setPosition(px(level_->platformPosition(i)));
         }
         followPlayer(dt);
         hudText(game, "Coins " + std::to_string(level_->score()) + " / " +
@@ -435,6 +430,10 @@ private:
         input.jumpHeld = actions.held("jump");
         input.jumpPressed = jumpLatch_;
         jumpLatch_ = false;
+        if (session_.levelBodies == 0) {
+            // The level's objects joined the scene at the start of this frame.
+            session_.levelBodies = game.world().bodyCount();
+        }
         const bool wasOver = level_->won() || level_->dead();
         level_->fixedUpdate(input, static_cast<float>(step));
         const StepEvents& events = level_->events();
@@ -471,12 +470,11 @@ private:
         Pose pose = Pose::Idle;
         if (!level_->grounded()) {
             pose = v.y > 0.0f ? Pose::Jump : Pose::Fall;
-        } else if (std::abs(v.x - 0.0f) > 0.5f) {
+        } else if (std::abs(v.x) > 0.5f * kTile) {
             pose = Pose::Run;
         }
         setPose(pose);
         animation_->update(dt);
-        player_->setPosition(px(level_->playerPosition()));
         auto* sprite = player_->getComponent<render::SpriteRenderer>();
         sprite->setFlip(level_->facing() < 0, false);
         const std::span<const int> frames = framesOf(pose_);
@@ -488,27 +486,21 @@ private:
 
     void followPlayer(double dt) {
         // The camera eases towards a point a little ahead of the player, kept inside the level.
-        const glm::vec2 target = px(level_->playerPosition() + glm::vec2(3.0f, 1.5f));
+        const glm::vec2 target = level_->playerPosition() + glm::vec2(3.0f, 1.5f) * kTile;
         glm::vec2 at = glm::vec2(camera_->position());
         const float k = 1.0f - static_cast<float>(std::exp(-6.0 * dt));
         at += (target - at) * k;
         const float halfWidth = kReference.x * 0.5f;
-        at.x = std::clamp(at.x, px({-4.0f, 0.0f}).x + halfWidth - 96.0f,
-                          px({36.0f, 0.0f}).x - halfWidth + 96.0f);
-        at.y = std::max(at.y, px({0.0f, -3.5f}).y + kReference.y * 0.5f - 200.0f);
+        at.x = std::clamp(at.x, -4.0f * kTile + halfWidth - 96.0f, 36.0f * kTile - halfWidth + 96.0f);
+        at.y = std::max(at.y, -3.5f * kTile + kReference.y * 0.5f - 200.0f);
         camera_->setPosition(at);
     }
 
-    // Metres to world units (reference pixels), by the engine's one scale.
-    [[nodiscard]] glm::vec2 px(glm::vec2 metres) const { return physics_->toUnits(metres); }
-
     Session& session_;
-    const e2d::physics::PhysicsSystem* physics_ = nullptr;
     std::unique_ptr<Level> level_;
     GameObject* camera_ = nullptr;
     GameObject* player_ = nullptr;
-    std::vector<GameObject*> coins_;
-    std::vector<GameObject*> platforms_;
+    std::vector<GameObject*> coins_; // the coins' sprites
     std::optional<render::SpriteSheet> sheet_;
     std::vector<std::vector<int>> frames_;
     std::optional<render::Animation> animation_;

@@ -24,8 +24,9 @@ struct Session {
     int stepsOnMovingPlatform = 0;
     int stepsOnOneWay = 0;
     bool musicStreaming = false; ///< the level's music was playing as a stream
-    /// Bodies in the physics world once the last run's level was built (the level makes 4:
-    /// terrain, lift, shuttle, player; more means an earlier run left some behind).
+    /// Bodies in the physics world once the last run's level joined its scene (the level
+    /// makes 19: a static body per static collider (9 terrain segments, spikes, 4 coins, goal,
+    /// one-way platform), lift, shuttle, player; more means an earlier run left some behind).
     int levelBodies = 0;
 };
 

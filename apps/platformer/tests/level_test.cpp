@@ -1,17 +1,25 @@
 // SPDX-License-Identifier: MIT
-// The platformer's level played by scripts at the fixed step, on a bare physics::World: the same
-// rules the game runs, without window, sound or input devices.
+// The platformer's level played by scripts at the fixed step, in a real scene with the game's
+// PhysicsSystem (48 units per metre) and no window, sound or input device: the same rules the
+// game runs.
 #include "level.hpp"
+
+#include <e2d/core/log.hpp>
+#include <e2d/core/scene_director.hpp>
+#include <e2d/core/scene_registry.hpp>
+#include <e2d/physics/physics_system.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <vector>
 
 namespace {
 
+using platformer::kTile;
 using platformer::Level;
 using platformer::PlayerController;
 using platformer::PlayerInput;
@@ -38,9 +46,33 @@ struct Outcome {
     glm::vec2 end{0.0f, 0.0f};
 };
 
+// The level in a scene of its own, stepped as the engine does: the scene's fixed update (the
+// level's), then the physics system's.
+class LevelRun {
+public:
+    LevelRun() {
+        registry.add("Level", e2d::core::SceneFunctions{
+                                  .initialize = [this](e2d::core::Scene& s) { level = std::make_unique<Level>(s); }});
+        director.addSystem(physics);
+        director.start("Level");
+    }
+    void step(const PlayerInput& input) {
+        director.applyPendingChange();
+        director.scene()->beginFrame();
+        level->fixedUpdate(input, kDt);
+        physics.fixedUpdate(kDt);
+    }
+
+    e2d::core::Logger logger{e2d::core::LogLevel::Off};
+    e2d::core::SceneRegistry registry;
+    e2d::core::SceneDirector director{registry, logger};
+    e2d::physics::PhysicsSystem physics{{}, kTile};
+    std::unique_ptr<Level> level;
+};
+
 Outcome play(const std::vector<Hold>& script, double limit, double timeOffset = 0.0) {
-    e2d::physics::World world;
-    Level level(world);
+    LevelRun game;
+    Level& level = *game.level;
     Outcome run;
     bool jumpWasHeld = false;
     for (int i = 0; i < static_cast<int>(limit / kDt); ++i) {
@@ -56,19 +88,17 @@ Outcome play(const std::vector<Hold>& script, double limit, double timeOffset = 
         input.jumpHeld = now.jump;
         input.jumpPressed = now.jump && !jumpWasHeld;
         jumpWasHeld = now.jump;
-        level.fixedUpdate(input, kDt);
+        game.step(input);
         run.coinEvents += level.events().coinsCollected;
         if (level.won() || level.dead()) {
             break;
         }
-        world.step(kDt);
         run.maxY = std::max(run.maxY, level.playerPosition().y);
         if (std::getenv("TRACE") && i % 6 == 0) {
             std::printf("t=%.2f p=(%.2f,%.2f) v=(%.2f,%.2f) g=%d lift=%.2f score=%d\n", t,
-                        level.playerPosition().x, level.playerPosition().y,
-                        level.playerVelocity().x, level.playerVelocity().y, level.grounded(),
-                        level.platformPosition(0).y, level.score());
-            std::printf("   shuttle x=%.2f\n", level.platformPosition(1).x);
+                        level.playerPosition().x / kTile, level.playerPosition().y / kTile,
+                        level.playerVelocity().x / kTile, level.playerVelocity().y / kTile, level.grounded(),
+                        level.platforms()[0].object->position().y / kTile, level.score());
         }
     }
     run.won = level.won();
@@ -106,7 +136,7 @@ TEST(PlatformerLevel, ScriptedRunCollectsEveryCoinRidesTheLiftAndReachesTheGoal)
     EXPECT_EQ(run.coinEvents, 3); // each coin counted once
     EXPECT_GT(run.stepsOnMoving, 30); // stood on the lift while it rose
     EXPECT_GT(run.stepsOnOneWay, 5);  // jumped up through the one-way platform and landed on it
-    EXPECT_GT(run.maxY, 8.0f + Level::playerHalfSize().y - 0.05f);
+    EXPECT_GT(run.maxY, 8.0f * kTile + Level::playerHalfSize().y - 0.05f * kTile);
     EXPECT_EQ(run.jumps, 3);
 }
 
@@ -117,7 +147,7 @@ TEST(PlatformerLevel, TheShuttleCarriesThePlayerToTheBonusCoin) {
         EXPECT_EQ(run.score, 4) << "shift " << shift;
         EXPECT_EQ(run.jumps, 4) << "shift " << shift;
         // Stood on the shuttle (top at 10 m).
-        EXPECT_GT(run.maxY, 10.0f + Level::playerHalfSize().y - 0.05f) << "shift " << shift;
+        EXPECT_GT(run.maxY, 10.0f * kTile + Level::playerHalfSize().y - 0.05f * kTile) << "shift " << shift;
     }
 }
 
@@ -134,9 +164,9 @@ TEST(PlatformerLevel, RunningRightWithoutJumpingEndsOnTheSpikes) {
     EXPECT_TRUE(run.dead);
     EXPECT_FALSE(run.won);
     EXPECT_EQ(run.score, 1); // the coin on the start ground
-    EXPECT_GT(run.end.x, 6.0f);
-    EXPECT_LT(run.end.x, 9.0f);
-    EXPECT_LT(run.end.y, -1.0f);
+    EXPECT_GT(run.end.x, 6.0f * kTile);
+    EXPECT_LT(run.end.x, 9.0f * kTile);
+    EXPECT_LT(run.end.y, -1.0f * kTile);
 }
 
 TEST(PlatformerLevel, StandingStillNothingHappens) {
@@ -144,8 +174,8 @@ TEST(PlatformerLevel, StandingStillNothingHappens) {
     EXPECT_FALSE(run.dead);
     EXPECT_FALSE(run.won);
     EXPECT_EQ(run.score, 0);
-    EXPECT_NEAR(run.end.x, 1.0f, 1e-3f);
-    EXPECT_NEAR(run.end.y, Level::playerHalfSize().y, 0.03f);
+    EXPECT_NEAR(run.end.x, 1.0f * kTile, 1e-3f * kTile);
+    EXPECT_NEAR(run.end.y, Level::playerHalfSize().y, 0.03f * kTile);
 }
 
 TEST(PlatformerLevel, TheOneWayPlatformHoldsFromAboveOnly) {
@@ -155,20 +185,18 @@ TEST(PlatformerLevel, TheOneWayPlatformHoldsFromAboveOnly) {
     Outcome run = play(script, 20.0);
     EXPECT_TRUE(run.won);
     EXPECT_EQ(run.stepsOnOneWay, 0);
-    EXPECT_LT(run.maxY, 7.9f);
+    EXPECT_LT(run.maxY, 7.9f * kTile);
     EXPECT_EQ(run.score, 2); // the coin on top of it is missed
 }
 
 TEST(PlatformerLevel, TheLiftFollowsItsTimetable) {
-    e2d::physics::World world;
-    Level level(world);
-    const platformer::MovingPlatform& lift = level.platforms().at(0);
+    LevelRun game;
+    const platformer::MovingPlatform& lift = game.level->platforms().at(0);
     for (int i = 0; i < 900; ++i) {
-        level.fixedUpdate({}, kDt);
-        world.step(kDt);
+        game.step({});
         const glm::vec2 expected = lift.positionAt((i + 1) * kDt);
-        ASSERT_NEAR(level.platformPosition(0).x, expected.x, 1e-3f) << i;
-        ASSERT_NEAR(level.platformPosition(0).y, expected.y, 1e-3f) << i;
+        ASSERT_NEAR(lift.object->position().x, expected.x, 1e-3f * kTile) << i;
+        ASSERT_NEAR(lift.object->position().y, expected.y, 1e-3f * kTile) << i;
     }
     // The timetable: waits at `from`, arrives at `to` after dwell + travel, back after a cycle.
     EXPECT_EQ(lift.positionAt(0.0), lift.from);

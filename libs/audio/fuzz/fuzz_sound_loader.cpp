@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Random bytes into the sound loader (libsndfile reading from memory): either a sound within
-// the limits or an error naming the input; never a crash, a leak or an unbounded allocation.
+// the limits (finite samples within maxSampleMagnitude included) or an error naming the input;
+// never a crash, a leak or an unbounded allocation.
 #include <e2d/audio/sound_data.hpp>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -31,6 +33,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                        sound.sampleRate >= limits.minSampleRate && sound.sampleRate <= limits.maxSampleRate &&
                        sound.frames() >= 1 && sound.frames() <= limits.maxFrames &&
                        sound.samples.size() == static_cast<std::size_t>(sound.frames() * sound.channels);
+    for (float s : sound.samples) {
+        if (!(std::abs(s) <= limits.maxSampleMagnitude)) {
+            std::fprintf(stderr, "a sample that is not finite or beyond the limit: %g\n", static_cast<double>(s));
+            std::abort();
+        }
+    }
     if (!valid) {
         std::fprintf(stderr, "sound outside the limits: %d channels, %d Hz, %lld frames\n", sound.channels,
                      sound.sampleRate, static_cast<long long>(sound.frames()));

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "al_device.hpp"
 
+#include "stderr_capture.hpp"
+
+#include <string_view>
 
 namespace e2d::audio::detail {
 
@@ -16,13 +19,57 @@ Fn alProc(const char* name) {
     return reinterpret_cast<Fn>(alGetProcAddress(name));
 }
 
+// What OpenAL Soft and the ALSA library it loads printed while a device failed to open: their
+// lines go to `lines` (for the mixer's debug log), the reason OpenAL Soft gave (its last error
+// line, without its prefix and function name) is returned, and lines from anyone else are
+// written back to standard error.
+std::string sortFailureOutput(const std::string& text, std::vector<std::string>& lines) {
+    std::string reason;
+    std::string others;
+    for (std::size_t begin = 0; begin < text.size();) {
+        std::size_t end = text.find('\n', begin);
+        end = end == std::string::npos ? text.size() : end;
+        const std::string_view line(text.data() + begin, end - begin);
+        begin = end + 1;
+        // OpenAL Soft 1.19 writes "AL lib: (EE) function: message", later ones "[ALSOFT] (EE) message".
+        const bool openal = line.starts_with("AL lib: ") || line.starts_with("[ALSOFT] ");
+        if (!openal && !line.starts_with("ALSA lib ")) {
+            others.append(line).append("\n");
+            continue;
+        }
+        lines.emplace_back(line);
+        if (const std::size_t at = line.find("(EE) "); openal && at != std::string_view::npos) {
+            std::string_view message = line.substr(at + 5);
+            if (const std::size_t colon = message.find(": "); colon != std::string_view::npos &&
+                                                               message.substr(0, colon).find(' ') == std::string_view::npos) {
+                message.remove_prefix(colon + 2);
+            }
+            reason = message;
+        }
+    }
+    writeToStderr(others);
+    return reason;
+}
+
 } // namespace
 
-std::unique_ptr<Device> Device::openDevice(const std::string& name, int sources, std::string& error) {
+std::unique_ptr<Device> Device::openDevice(const std::string& name, int sources, std::string& error,
+                                           std::vector<std::string>& libraryLines) {
     std::unique_ptr<Device> device(new Device());
+    // Without a sound card, ALSA and OpenAL Soft print eight lines and more to stderr here; one
+    // line of the mixer's log says it (their lines go to its debug level). When a device opens,
+    // whatever they printed is passed on untouched.
+    StderrCapture capture;
     device->device_ = alcOpenDevice(name.empty() ? nullptr : name.c_str());
-    if (device->device_ == nullptr) {
+    const std::string printed = capture.finish();
+    if (device->device_ != nullptr) {
+        writeToStderr(printed);
+    } else {
+        const std::string reason = sortFailureOutput(printed, libraryLines);
         error = name.empty() ? "no default audio device" : "no audio device named '" + name + "'";
+        if (!reason.empty()) {
+            error += " (OpenAL Soft: " + reason + ")";
+        }
         return nullptr;
     }
     const ALCchar* opened = alcGetString(device->device_, ALC_ALL_DEVICES_SPECIFIER);

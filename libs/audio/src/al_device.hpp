@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace e2d::audio::detail {
 
@@ -16,8 +17,11 @@ namespace e2d::audio::detail {
 class Device {
 public:
     /// Opens the device `name` (empty: the default one) with room for `sources` mono sources.
-    /// Null, and `error` says why, when there is no such device or no context.
-    static std::unique_ptr<Device> openDevice(const std::string& name, int sources, std::string& error);
+    /// Null, and `error` says why in one line, when there is no such device or no context;
+    /// then `libraryLines` gets what OpenAL Soft and ALSA printed to stderr meanwhile (kept off
+    /// stderr: see StderrCapture).
+    static std::unique_ptr<Device> openDevice(const std::string& name, int sources, std::string& error,
+                                              std::vector<std::string>& libraryLines);
     /// A loopback device mixing stereo floats at `sampleRate` Hz: `given` (not owned: never
     /// closed here) or, when null, one opened (and closed) here.
     static std::unique_ptr<Device> openLoopback(int sampleRate, int sources, ALCdevice* given, std::string& error);

@@ -65,6 +65,9 @@ void checkDef(const MixerDef& def) {
     if (l.maxFrames < 1) {
         throwInvalid(kCtor, "limits.maxFrames", ">= 1", l.maxFrames);
     }
+    if (!(l.maxSampleMagnitude >= 1.0f) || !std::isfinite(l.maxSampleMagnitude)) {
+        throwInvalid(kCtor, "limits.maxSampleMagnitude", "finite and >= 1", l.maxSampleMagnitude);
+    }
     if (!(def.streamChunkSeconds >= 0.01 && def.streamChunkSeconds <= 1.0)) {
         throwInvalid(kCtor, "streamChunkSeconds", "in 0.01..1", def.streamChunkSeconds);
     }
@@ -95,6 +98,7 @@ Mixer::Impl::~Impl() {
 
 bool Mixer::Impl::openOutput(bool reopening) {
     std::string error;
+    std::vector<std::string> libraryLines;
     const int sources = 2 * def.voiceCount;
     if (def.output == Output::Loopback) {
         device = detail::Device::openLoopback(def.loopbackSampleRate, sources,
@@ -103,10 +107,14 @@ bool Mixer::Impl::openOutput(bool reopening) {
         error = "no output requested (Output::None)";
     } else {
         // Reopening goes to the default device: the named one may be the one that went away.
-        device = detail::Device::openDevice(reopening ? std::string() : def.deviceName, sources, error);
+        device = detail::Device::openDevice(reopening ? std::string() : def.deviceName, sources, error, libraryLines);
     }
     if (!device) {
-        goSilent(error);
+        goSilent(error, def.output == Output::Device ? " (ALSOFT_DRIVERS=null chooses silence without looking for a device)"
+                                                     : "");
+        for (const std::string& line : libraryLines) {
+            logger->debug("audio::Mixer: while opening the device: " + line);
+        }
         return false;
     }
     createDeviceObjects();
@@ -120,9 +128,9 @@ bool Mixer::Impl::openOutput(bool reopening) {
     return true;
 }
 
-void Mixer::Impl::goSilent(const std::string& why) {
+void Mixer::Impl::goSilent(const std::string& why, std::string_view hint) {
     if (!silentReported) {
-        logger->warning("audio::Mixer: " + why + "; running silent");
+        logger->warning("audio::Mixer: " + why + "; running silent" + std::string(hint));
         silentReported = true;
     }
 }
@@ -333,6 +341,14 @@ SoundId Mixer::add(SoundData data, std::string name) {
     }
     if (data.frames() < 1 || data.samples.size() % static_cast<std::size_t>(data.channels) != 0) {
         throwInvalid(fn, "data.samples.size()", "a positive multiple of channels", data.samples.size());
+    }
+    const float limit = m.def.limits.maxSampleMagnitude;
+    for (std::size_t i = 0; i < data.samples.size(); ++i) {
+        if (!(std::abs(data.samples[i]) <= limit)) {
+            throwInvalid(fn, "data.samples[" + std::to_string(i) + "]",
+                         "finite and within +-" + detail::formatValue(limit) + " (limits.maxSampleMagnitude)",
+                         data.samples[i]);
+        }
     }
     detail::Sound sound;
     sound.info.path = std::move(name);

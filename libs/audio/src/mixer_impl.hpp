@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -29,6 +30,7 @@ struct Sound {
     std::vector<float> right; // empty for mono
     ALuint bufferLeft = 0;
     ALuint bufferRight = 0; // 0 for mono
+    bool streamErrorLogged = false; // a stream of it met damaged data (logged once per sound)
 };
 
 /// A streaming voice's decoder and its queue of buffers (one per channel for stereo).
@@ -95,7 +97,8 @@ struct Mixer::Impl {
 
     // Device (mixer.cpp)
     bool openOutput(bool reopening);
-    void goSilent(const std::string& why);
+    // Logs, once until a device opens again, that the mixer runs silent and why.
+    void goSilent(const std::string& why, std::string_view hint = {});
     void releaseDeviceObjects();
     void createDeviceObjects();
     void uploadSound(detail::Sound& sound);

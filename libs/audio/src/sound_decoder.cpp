@@ -1,10 +1,17 @@
 // SPDX-License-Identifier: MIT
 #include "sound_decoder.hpp"
 
+#include "ogg_pages.hpp"
+
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <limits>
+#include <sstream>
 #include <utility>
+#include <vector>
 
 namespace e2d::audio::detail {
 
@@ -56,10 +63,28 @@ sf_count_t vioWrite(const void*, sf_count_t, void*) { return 0; }
 
 sf_count_t vioTell(void* user) { return static_cast<MemoryCursor*>(user)->position; }
 
+// The bytes of a file; empty if it cannot be read.
+std::vector<std::byte> fileBytes(const std::filesystem::path& path) {
+    std::ifstream file(path, std::ios::binary | std::ios::ate);
+    const std::streamoff size = file ? static_cast<std::streamoff>(file.tellg()) : 0;
+    std::vector<std::byte> bytes(static_cast<std::size_t>(std::max<std::streamoff>(size, 0)));
+    file.seekg(0);
+    if (!file.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()))) {
+        bytes.clear();
+    }
+    return bytes;
+}
+
+std::string seconds(std::int64_t frames, int rate) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.2f s", static_cast<double>(frames) / rate);
+    return text;
+}
+
 } // namespace
 
 std::unique_ptr<Decoder> Decoder::open(const std::filesystem::path& path, const DecodeLimits& limits,
-                                       std::string& error) {
+                                       std::string& error, bool checked) {
     std::unique_ptr<Decoder> decoder(new Decoder());
     decoder->name_ = path.string();
     std::error_code ec;
@@ -71,8 +96,9 @@ std::unique_ptr<Decoder> Decoder::open(const std::filesystem::path& path, const 
         error = "'" + decoder->name_ + "': is a directory";
         return nullptr;
     }
+    decoder->path_ = path;
     decoder->file_ = sf_open(decoder->name_.c_str(), SFM_READ, &decoder->info_);
-    if (!decoder->finishOpen(limits, error)) {
+    if (!decoder->finishOpen(limits, error, checked)) {
         return nullptr;
     }
     return decoder;
@@ -85,13 +111,13 @@ std::unique_ptr<Decoder> Decoder::open(std::span<const std::byte> bytes, std::st
     decoder->memory_ = Memory{bytes, 0};
     SF_VIRTUAL_IO io{vioLength, vioSeek, vioRead, vioWrite, vioTell};
     decoder->file_ = sf_open_virtual(&io, SFM_READ, &decoder->info_, &decoder->memory_);
-    if (!decoder->finishOpen(limits, error)) {
+    if (!decoder->finishOpen(limits, error, false)) {
         return nullptr;
     }
     return decoder;
 }
 
-bool Decoder::finishOpen(const DecodeLimits& limits, std::string& error) {
+bool Decoder::finishOpen(const DecodeLimits& limits, std::string& error, bool checked) {
     const std::string prefix = "'" + name_ + "': ";
     if (file_ == nullptr) {
         error = prefix + sf_strerror(nullptr);
@@ -124,12 +150,20 @@ bool Decoder::finishOpen(const DecodeLimits& limits, std::string& error) {
         }
         begin = end + 1;
     }
+    if ((info_.format & SF_FORMAT_TYPEMASK) == SF_FORMAT_OGG && !checked) {
+        const std::vector<std::byte> fromFile = path_.empty() ? std::vector<std::byte>() : fileBytes(path_);
+        if (std::string problem = checkOggPages(path_.empty() ? memory_.bytes : fromFile); !problem.empty()) {
+            error = prefix + problem;
+            return false;
+        }
+    }
     // libsndfile says SF_COUNT_MAX when the length is unknown.
     headerFrames_ = info_.frames == SF_COUNT_MAX ? -1 : static_cast<std::int64_t>(info_.frames);
     if (headerFrames_ == 0 || headerFrames_ < -1) {
         error = prefix + "no audio frames";
         return false;
     }
+    maxMagnitude_ = limits.maxSampleMagnitude;
     return true;
 }
 
@@ -144,10 +178,45 @@ void Decoder::setError(std::string_view reason) {
     error_ += reason;
 }
 
+std::string Decoder::where(std::int64_t frame) const {
+    return seconds(frame, info_.samplerate) + " (frame " + std::to_string(frame) + ")";
+}
+
 std::int64_t Decoder::read(float* out, std::int64_t frames) {
-    const sf_count_t got = sf_readf_float(file_, out, static_cast<sf_count_t>(frames));
-    if (sf_error(file_) != SF_ERR_NO_ERROR) {
-        setError(sf_strerror(file_));
+    // libsndfile may return fewer frames than asked before the end: only 0 means the end.
+    std::int64_t got = 0;
+    while (got < frames) {
+        const sf_count_t n = sf_readf_float(file_, out + got * info_.channels, static_cast<sf_count_t>(frames - got));
+        if (sf_error(file_) != SF_ERR_NO_ERROR) {
+            setError("damaged or truncated: decoding stopped at " + where(position_ + got) + " (libsndfile: " +
+                     sf_strerror(file_) + ")");
+            return -1;
+        }
+        if (n <= 0) {
+            break;
+        }
+        got += n;
+    }
+    const std::int64_t values = got * info_.channels;
+    for (std::int64_t i = 0; i < values; ++i) {
+        const float v = out[i];
+        if (!(std::abs(v) <= maxMagnitude_)) {
+            std::ostringstream problem;
+            problem << "damaged: sample " << v << " at " << where(position_ + i / info_.channels) << " is ";
+            if (std::isfinite(v)) {
+                problem << "beyond +-" << maxMagnitude_ << " (DecodeLimits::maxSampleMagnitude)";
+            } else {
+                problem << "not finite";
+            }
+            setError(problem.str());
+            return -1;
+        }
+    }
+    position_ += got;
+    if (got < frames && headerFrames_ > 0 && position_ < headerFrames_) {
+        setError("damaged or truncated: the header announces " + std::to_string(headerFrames_) + " frames (" +
+                 seconds(headerFrames_, info_.samplerate) + "), the data ends after " + std::to_string(position_) +
+                 " (" + seconds(position_, info_.samplerate) + ")");
         return -1;
     }
     return got;
@@ -158,6 +227,7 @@ bool Decoder::seek(std::int64_t frame) {
         setError(std::string("cannot seek: ") + sf_strerror(file_));
         return false;
     }
+    position_ = frame;
     return true;
 }
 
@@ -196,11 +266,6 @@ DecodeResult Decoder::readAll(std::int64_t maxFrames) {
     samples.resize(static_cast<std::size_t>(total * channels));
     if (total == 0) {
         result.error = "'" + name_ + "': no audio frames";
-        return result;
-    }
-    if (headerFrames_ > 0 && total < headerFrames_) {
-        result.error = "'" + name_ + "': truncated: the header announces " + std::to_string(headerFrames_) +
-                       " frames, the data holds " + std::to_string(total);
         return result;
     }
     result.data.channels = channels;

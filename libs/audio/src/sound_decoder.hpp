@@ -20,9 +20,11 @@ namespace e2d::audio::detail {
 class Decoder {
 public:
     /// Opens `path` and checks its header against `limits` (channels, sample rate, at least one
-    /// frame). Returns null and sets `error` ("'<name>': <reason>") when that fails.
+    /// frame) and, for Ogg, every page of the container (checkOggPages). Returns null and sets
+    /// `error` ("'<name>': <reason>") when that fails. `checked`: the file passed this check
+    /// before (a streaming voice reopening a loaded sound), so the pages are not read again.
     static std::unique_ptr<Decoder> open(const std::filesystem::path& path, const DecodeLimits& limits,
-                                         std::string& error);
+                                         std::string& error, bool checked = false);
     /// Same over bytes that must outlive the decoder.
     static std::unique_ptr<Decoder> open(std::span<const std::byte> bytes, std::string_view name,
                                          const DecodeLimits& limits, std::string& error);
@@ -37,7 +39,10 @@ public:
     [[nodiscard]] const std::string& name() const noexcept { return name_; }
 
     /// Reads up to `frames` interleaved frames into `out` (frames * channels floats). Returns
-    /// the frames read, 0 at the end, or -1 on a decoding error (then `error()` says why).
+    /// the frames read (fewer only at the end of the data), 0 at the end, or -1 when the data is
+    /// damaged (then `error()` says why and where): a decoding error, a sample that is not
+    /// finite or beyond DecodeLimits::maxSampleMagnitude, or data that ends before the length
+    /// the header announces.
     std::int64_t read(float* out, std::int64_t frames);
     /// Moves to `frame`; false (and `error()`) when the file cannot seek there.
     bool seek(std::int64_t frame);
@@ -55,13 +60,18 @@ public:
 private:
 
     Decoder() = default;
-    bool finishOpen(const DecodeLimits& limits, std::string& error);
+    bool finishOpen(const DecodeLimits& limits, std::string& error, bool checked);
     void setError(std::string_view reason);
+    // "1.25 s (frame 55125)": where in the sound `frame` is, for messages.
+    [[nodiscard]] std::string where(std::int64_t frame) const;
 
     SNDFILE* file_ = nullptr;
     SF_INFO info_{};
     Memory memory_;
     std::int64_t headerFrames_ = -1;
+    std::int64_t position_ = 0; // the frame read next
+    float maxMagnitude_ = 0.0f;
+    std::filesystem::path path_; // empty when reading memory
     std::string name_;
     std::string error_;
 };

@@ -247,7 +247,7 @@ bool Mixer::Impl::openStream(Voice& voice, double startFrame) {
     detail::Stream& stream = *voice.stream;
     std::string error;
     if (!stream.decoder) {
-        stream.decoder = detail::Decoder::open(sound.info.path, def.limits, error);
+        stream.decoder = detail::Decoder::open(sound.info.path, def.limits, error, true);
     }
     auto start = static_cast<std::int64_t>(std::floor(startFrame));
     if (sound.info.frames > 0) {
@@ -292,7 +292,11 @@ bool Mixer::Impl::fillChunk(Voice& voice, ALuint left, ALuint right) {
     while (filled < chunk && !stream.exhausted) {
         const std::int64_t got = stream.decoder->read(stream.interleaved.data() + filled * channels, chunk - filled);
         if (got < 0) {
-            logger->error("audio::Mixer: stream stopped: " + stream.decoder->error());
+            detail::Sound& damaged = sounds[voice.sound.index1 - 1];
+            if (!damaged.streamErrorLogged) {
+                logger->error("audio::Mixer: stream stopped: " + stream.decoder->error());
+                damaged.streamErrorLogged = true;
+            }
             stream.exhausted = true;
             break;
         }

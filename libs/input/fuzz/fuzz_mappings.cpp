@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Arbitrary bytes as a gamepad mapping text: every line is accepted, counted as another
-// platform's, or reported once with its line number; an accepted line is accepted again on its
-// own and holds nothing GLFW would split or cut (no control characters, < 1024 bytes).
+// Arbitrary bytes as a gamepad mapping text: every line is accepted (perhaps with warnings),
+// counted as another platform's, or reported once with its line number; an accepted line, as
+// handed to GLFW, is accepted again on its own with no warning and holds nothing GLFW would split,
+// cut or refuse (no control characters, < 1024 bytes, no output modifier).
 #include <e2d/input/gamepad_mappings.hpp>
 
 #include <algorithm>
@@ -33,12 +34,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(e.message.starts_with("fuzz:" + std::to_string(e.line) + ": "));
         previous = e.line;
     }
+    previous = 0;
+    for (const e2d::input::MappingError& w : result.warnings) {
+        check(w.line >= previous && w.line <= lineCount);
+        check(w.message.starts_with("fuzz:" + std::to_string(w.line) + ": "));
+        previous = w.line;
+    }
     for (const std::string& line : result.lines) {
         check(line.size() < 1024);
         check(std::none_of(line.begin(), line.end(),
                            [](char c) { return static_cast<unsigned char>(c) < 0x20 && c != '\t'; }));
+        // No field after the GUID and the name starts with an output modifier (a name may).
+        const std::string_view fields = std::string_view(line).substr(line.find(',', line.find(',') + 1));
+        check(fields.find(",+") == std::string_view::npos && fields.find(",-") == std::string_view::npos);
         const e2d::input::MappingParseResult again = e2d::input::parseGamepadMappings(line);
-        check(again.errors.empty() && again.lines.size() == 1 && again.lines[0] == line);
+        check(again.errors.empty() && again.warnings.empty() && again.lines.size() == 1 && again.lines[0] == line);
     }
     return 0;
 }

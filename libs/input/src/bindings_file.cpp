@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Bindings files: `name = binding, binding, ...`, one action per line.
+#include "text_file.hpp"
+
 #include <e2d/input/actions.hpp>
 
 #include <e2d/core/error.hpp>
 
 #include <algorithm>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <utility>
 
@@ -42,6 +43,7 @@ bool validName(std::string_view name) {
 void ActionMap::loadFromString(std::string_view text, std::string_view source) {
     // Parse everything first, so an error leaves the map unchanged.
     std::vector<std::pair<std::string, std::vector<Binding>>> parsed;
+    text = detail::withoutByteOrderMark(text);
     int lineNumber = 0;
     const auto fail = [&](const std::string& what) {
         throw core::Error(std::string(source) + ":" + std::to_string(lineNumber) + ": " + what);
@@ -99,13 +101,7 @@ void ActionMap::loadFromString(std::string_view text, std::string_view source) {
 }
 
 void ActionMap::load(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) {
-        throw core::Error("input::ActionMap::load(): cannot read '" + path.string() + "'");
-    }
-    std::ostringstream text;
-    text << file.rdbuf();
-    loadFromString(text.str(), path.string());
+    loadFromString(detail::readTextFile(path, "input::ActionMap::load()"), path.string());
 }
 
 std::string ActionMap::toString() const {

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // SDL gamepad mapping lines: checked here, then handed to GLFW's database.
+#include "text_file.hpp"
+
 #include <e2d/input/gamepad_mappings.hpp>
 
 #include <e2d/core/error.hpp>
@@ -9,8 +11,8 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <fstream>
-#include <sstream>
+#include <string>
+#include <vector>
 
 namespace e2d::input {
 
@@ -23,11 +25,16 @@ constexpr std::size_t kMaxName = 127;
 constexpr std::array<std::string_view, 21> kElementFields = {
     "a", "b", "x", "y", "back", "start", "guide", "leftshoulder", "rightshoulder", "leftstick", "rightstick",
     "dpup", "dpright", "dpdown", "dpleft", "lefttrigger", "righttrigger", "leftx", "lefty", "rightx", "righty"};
-// SDL fields GLFW has no use for; their elements are still checked.
-constexpr std::array<std::string_view, 6> kIgnoredElementFields = {"misc1", "paddle1", "paddle2",
-                                                                   "paddle3", "paddle4", "touchpad"};
+// SDL fields GLFW has no use for (and skips); their elements are still checked.
+constexpr std::array<std::string_view, 11> kIgnoredElementFields = {
+    "misc1", "misc2", "misc3", "misc4", "misc5", "misc6", "paddle1", "paddle2", "paddle3", "paddle4", "touchpad"};
 // SDL fields with free-form values.
 constexpr std::array<std::string_view, 4> kTextFields = {"crc", "hint", "sdk>=", "sdk<="};
+// The axes an SDL output modifier can name (+leftx: the element drives the positive half only).
+constexpr std::array<std::string_view, 6> kSplitAxes = {"leftx", "lefty", "rightx", "righty", "lefttrigger",
+                                                        "righttrigger"};
+// SDL's platform names (the database's "platform:" values).
+constexpr std::array<std::string_view, 5> kPlatforms = {"Windows", "Mac OS X", "Linux", "Android", "iOS"};
 
 constexpr std::string_view kPlatform = "Linux";
 
@@ -124,40 +131,73 @@ std::string checkElement(std::string_view value) {
     return {};
 }
 
-// Checks one non-comment line. Returns the problem, or empty; sets otherPlatform.
-std::string checkLine(std::string_view line, bool& otherPlatform) {
-    otherPlatform = false;
+// What one non-comment line holds.
+struct LineCheck {
+    std::string problem;               // why the line cannot be used; empty if it can
+    std::vector<std::string> warnings; // what was left out of it
+    std::string kept;                  // the line as handed to GLFW
+    bool otherPlatform = false;
+};
+
+// The value of the line's platform field, or empty.
+std::string_view platformOf(std::string_view line) {
+    constexpr std::string_view kKey = ",platform:";
+    const std::size_t at = line.find(kKey);
+    if (at == std::string_view::npos) {
+        return {};
+    }
+    const std::string_view value = line.substr(at + kKey.size());
+    return value.substr(0, value.find(','));
+}
+
+LineCheck checkLine(std::string_view line) {
+    LineCheck check;
+    const auto fail = [&](std::string problem) {
+        check.problem = std::move(problem);
+        return check;
+    };
     if (line.size() > kMaxLine) {
-        return "line is " + std::to_string(line.size()) + " bytes, GLFW takes at most " + std::to_string(kMaxLine);
+        return fail("line is " + std::to_string(line.size()) + " bytes, GLFW takes at most " + std::to_string(kMaxLine));
     }
     // GLFW reads C strings and splits lines at '\r' as well as '\n'.
     for (char c : line) {
         if (static_cast<unsigned char>(c) < 0x20 && c != '\t') {
-            return "control character " + std::to_string(static_cast<int>(c)) + " in the line";
+            return fail("control character " + std::to_string(static_cast<int>(c)) + " in the line");
         }
+    }
+    // Another platform's line is not for GLFW here, whatever it holds (Windows lines may name
+    // the "xinput" GUID, which GLFW cannot parse).
+    if (const std::string_view platform = platformOf(line); !platform.empty() && platform != kPlatform) {
+        if (!contains(kPlatforms, platform)) {
+            return fail("unknown platform " + quoted(platform) + " (SDL's are Windows, Mac OS X, Linux, Android, iOS)");
+        }
+        check.otherPlatform = true;
+        return check;
     }
     const std::size_t guidEnd = line.find(',');
     const std::string_view guid = line.substr(0, guidEnd);
     if (guid.size() != 32 || !std::all_of(guid.begin(), guid.end(), isHex)) {
-        return "GUID must be 32 hex digits, got " + quoted(guid);
+        return fail("GUID must be 32 hex digits, got " + quoted(guid));
     }
     if (guidEnd == std::string_view::npos) {
-        return "expected a name after the GUID";
+        return fail("expected a name after the GUID");
     }
     std::string_view rest = line.substr(guidEnd + 1);
     const std::size_t nameEnd = rest.find(',');
     const std::string_view name = rest.substr(0, nameEnd);
     if (name.empty()) {
-        return "the name is empty";
+        return fail("the name is empty");
     }
     if (name.size() > kMaxName) {
-        return "name is " + std::to_string(name.size()) + " bytes, GLFW takes at most " + std::to_string(kMaxName);
+        return fail("name is " + std::to_string(name.size()) + " bytes, GLFW takes at most " + std::to_string(kMaxName));
     }
     if (nameEnd == std::string_view::npos) {
-        return "expected fields after the name";
+        return fail("expected fields after the name");
     }
+    check.kept = std::string(line.substr(0, guidEnd + 1 + nameEnd + 1));
     rest.remove_prefix(nameEnd + 1);
     int elements = 0;
+    std::vector<std::string> dropped;
     while (!rest.empty()) {
         const std::size_t end = rest.find(',');
         const std::string_view field = rest.substr(0, end);
@@ -167,40 +207,63 @@ std::string checkLine(std::string_view line, bool& otherPlatform) {
         }
         const std::size_t colon = field.find(':');
         if (colon == std::string_view::npos) {
-            return "field " + quoted(field) + " has no ':'";
+            return fail("field " + quoted(field) + " has no ':'");
         }
         std::string_view key = field.substr(0, colon);
         const std::string_view value = field.substr(colon + 1);
-        if (key == "platform") {
-            if (value != kPlatform) {
-                otherPlatform = true;
+        const bool modifier = !key.empty() && (key.front() == '+' || key.front() == '-');
+        if (modifier) {
+            key.remove_prefix(1);
+            if (!contains(kSplitAxes, key)) {
+                return fail("an output modifier (+/-) applies to an axis (leftx ... righttrigger), got " + quoted(field));
             }
+        } else if (key == "platform" || contains(kTextFields, key)) {
+            check.kept.append(field).append(",");
             continue;
-        }
-        if (contains(kTextFields, key)) {
+        } else if (!contains(kElementFields, key) && !contains(kIgnoredElementFields, key)) {
+            // GLFW skips fields it does not know, and so does the mapping here.
+            check.warnings.push_back("unknown field " + quoted(key) + " ignored (SDL's gamepad fields are a, b, x, y, "
+                                     "back, start, guide, dp*, left*, right*, misc1-6, paddle1-4, touchpad)");
             continue;
-        }
-        if (!key.empty() && (key.front() == '+' || key.front() == '-')) {
-            return "output modifier in " + quoted(field) + " is not supported by GLFW 3.3";
-        }
-        if (!contains(kElementFields, key) && !contains(kIgnoredElementFields, key)) {
-            return "unknown field " + quoted(key) + " (expected an SDL gamepad field such as a, leftx, platform)";
         }
         if (std::string problem = checkElement(value); !problem.empty()) {
-            return "field '" + std::string(key) + "': " + problem + ", got " + quoted(value);
+            return fail("field '" + std::string(field.substr(0, colon)) + "': " + problem + ", got " + quoted(value));
         }
+        if (modifier) {
+            // GLFW 3.3 refuses a whole mapping that holds one (it has no half-axis outputs).
+            dropped.push_back(quoted(field));
+            continue;
+        }
+        check.kept.append(field).append(",");
         ++elements;
     }
-    if (elements == 0) {
-        return "no button or axis fields";
+    if (!dropped.empty()) {
+        std::string list;
+        for (const std::string& d : dropped) {
+            list += (list.empty() ? "" : ", ") + d;
+        }
+        check.warnings.push_back("output modifier" + std::string(dropped.size() > 1 ? "s " : " ") + list +
+                                 " left out (GLFW 3.3 has no half-axis outputs)");
     }
-    return {};
+    if (elements == 0) {
+        return fail("no button or axis fields");
+    }
+    if (line.back() != ',') {
+        check.kept.pop_back(); // no longer than the line, so within GLFW's limit
+    }
+    return check;
 }
 
 } // namespace
 
 MappingParseResult parseGamepadMappings(std::string_view text, std::string_view source) {
     MappingParseResult result;
+    text = detail::withoutByteOrderMark(text);
+    const auto where = [&](int line) { return std::string(source) + ":" + std::to_string(line) + ": "; };
+    // Every mapping line so far ended with ',' / had a platform field (SDL's database: all do).
+    bool allClosed = true;
+    bool allWithPlatform = true;
+    int mappingLines = 0;
     int lineNumber = 0;
     while (!text.empty()) {
         ++lineNumber;
@@ -216,16 +279,34 @@ MappingParseResult parseGamepadMappings(std::string_view text, std::string_view 
         if (line.empty() || line.front() == '#') {
             continue;
         }
-        bool otherPlatform = false;
-        std::string problem = checkLine(line, otherPlatform);
-        if (!problem.empty()) {
-            result.errors.push_back(
-                MappingError{lineNumber, std::string(source) + ":" + std::to_string(lineNumber) + ": " + problem});
-        } else if (otherPlatform) {
-            ++result.otherPlatform;
-        } else {
-            result.lines.emplace_back(line);
+        const bool closed = line.back() == ',';
+        const bool withPlatform = !platformOf(line).empty();
+        // A file cut short ends inside its last line: no newline after it, and without the
+        // closing ',' or the platform field that every line before it has.
+        if (end == std::string_view::npos && mappingLines > 0 &&
+            ((allClosed && !closed) || (allWithPlatform && !withPlatform))) {
+            result.errors.push_back(MappingError{
+                lineNumber, where(lineNumber) + "the text ends inside this line (no newline after it, and no " +
+                                (allClosed && !closed ? "',' closing its last field" : "platform field") +
+                                " as every line before it has): cut short?"});
+            break;
         }
+        ++mappingLines;
+        allClosed = allClosed && closed;
+        allWithPlatform = allWithPlatform && withPlatform;
+        LineCheck check = checkLine(line);
+        if (!check.problem.empty()) {
+            result.errors.push_back(MappingError{lineNumber, where(lineNumber) + check.problem});
+            continue;
+        }
+        if (check.otherPlatform) {
+            ++result.otherPlatform;
+            continue;
+        }
+        for (const std::string& warning : check.warnings) {
+            result.warnings.push_back(MappingError{lineNumber, where(lineNumber) + warning});
+        }
+        result.lines.push_back(std::move(check.kept));
     }
     return result;
 }
@@ -235,6 +316,7 @@ MappingLoadResult loadGamepadMappings(std::string_view text, std::string_view so
     MappingLoadResult result;
     result.otherPlatform = parsed.otherPlatform;
     result.errors = std::move(parsed.errors);
+    result.warnings = std::move(parsed.warnings);
     std::string joined;
     for (const std::string& line : parsed.lines) {
         joined += line;
@@ -249,13 +331,7 @@ MappingLoadResult loadGamepadMappings(std::string_view text, std::string_view so
 }
 
 MappingLoadResult loadGamepadMappingsFile(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) {
-        throw core::Error("input::loadGamepadMappingsFile(): cannot read '" + path.string() + "'");
-    }
-    std::ostringstream text;
-    text << file.rdbuf();
-    return loadGamepadMappings(text.str(), path.string());
+    return loadGamepadMappings(detail::readTextFile(path, "input::loadGamepadMappingsFile()"), path.string());
 }
 
 std::string makeGamepadMapping(std::string_view guid, std::string_view name, std::string_view fields) {
@@ -263,9 +339,12 @@ std::string makeGamepadMapping(std::string_view guid, std::string_view name, std
     if (line.find('\n') != std::string::npos) {
         throw core::Error("input::makeGamepadMapping(): the mapping must be one line");
     }
-    bool otherPlatform = false;
-    if (std::string problem = checkLine(line, otherPlatform); !problem.empty()) {
-        throw core::Error("input::makeGamepadMapping(): " + problem);
+    const LineCheck check = checkLine(line);
+    if (!check.problem.empty()) {
+        throw core::Error("input::makeGamepadMapping(): " + check.problem);
+    }
+    if (!check.warnings.empty()) {
+        throw core::Error("input::makeGamepadMapping(): " + check.warnings.front());
     }
     return line;
 }

@@ -99,10 +99,22 @@ TEST(BindingsFile, MalformedLinesNameFileAndLineAndChangeNothing) {
     EXPECT_THAT(actions.bindings(jump), ElementsAre(Binding::key(GLFW_KEY_W)));
 }
 
+// Editors on Windows start a UTF-8 file with a byte order mark; it used to become part of the
+// first action's name ("action name must be letters... got 'jump'", the mark invisible).
+TEST(BindingsFile, AByteOrderMarkIsSkipped) {
+    ActionMap actions;
+    actions.loadFromString("\xEF\xBB\xBFjump = key:space\nfire = key:f\n", "controls.txt");
+    EXPECT_FALSE(actions.find("jump").isNull());
+    EXPECT_EQ(actions.size(), 2u);
+}
+
 TEST(BindingsFile, UnreadableAndUnwritableFilesAreNamed) {
     ActionMap actions;
     EXPECT_EQ(errorOf([&] { actions.load("/nonexistent/e2d/controls.txt"); }),
               "input::ActionMap::load(): cannot read '/nonexistent/e2d/controls.txt'");
+    // A directory opens as a stream that reads nothing: it loaded zero actions with no error.
+    const std::string dir = ::testing::TempDir();
+    EXPECT_EQ(errorOf([&] { actions.load(dir); }), "input::ActionMap::load(): cannot read '" + dir + "': it is a directory");
     EXPECT_EQ(errorOf([&] { actions.save("/nonexistent/e2d/controls.txt"); }),
               "input::ActionMap::save(): cannot write '/nonexistent/e2d/controls.txt'");
     // A file error names the file path as the source.

@@ -94,6 +94,21 @@ TEST_F(Glfw, AMappingMadeAtRunTimeForAnUnmappedJoystickLoads) {
     EXPECT_EQ(lastGlfwError(), GLFW_NO_ERROR);
 }
 
+// A line GLFW can use once its output modifiers are left out loads, and warnings do not make
+// the load fail.
+TEST_F(Glfw, WarningsAreCountedApartFromErrors) {
+    const std::string joyCon = "050000007e0500000620000001800000,Joy-Con (L),a:b0,b:b1,+leftx:h0.2,-leftx:h0.8,"
+                               "misc2:b12,zz:b3,platform:Linux,";
+    const MappingLoadResult r = loadGamepadMappings(joyCon + "\n" + kGood + "\n", "db.txt");
+    EXPECT_TRUE(r.ok());
+    EXPECT_EQ(r.loaded, 2);
+    EXPECT_TRUE(r.errors.empty());
+    ASSERT_EQ(r.warnings.size(), 2u);
+    EXPECT_EQ(r.warnings[0].line, 1);
+    EXPECT_EQ(r.warnings[1].line, 1);
+    EXPECT_EQ(lastGlfwError(), GLFW_NO_ERROR);
+}
+
 TEST(GlfwMissing, LoadingWithoutGlfwIsAClearError) {
     try {
         static_cast<void>(loadGamepadMappings(kGood));

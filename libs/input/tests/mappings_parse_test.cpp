@@ -6,6 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 namespace e2d::input {
@@ -53,13 +54,12 @@ TEST(MappingParse, EachBadLineIsReportedWithItsNumberAndTheGoodOnesKept) {
                              "0300000,bad guid,a:b0\n"       // 2
                              "# fine\n"                      // 3
                              + kPad + "\n"                   // 4 good
-                             "03000000de280000ff11000001000000,Name,zz:b1\n"; // 5
+                             "03000000de280000ff11000001000000,Name,a:q1\n"; // 5
     const MappingParseResult r = parseGamepadMappings(text, "pads.txt");
     EXPECT_EQ(r.lines.size(), 2u);
     EXPECT_THAT(lines(r), ElementsAre(2, 5));
     EXPECT_EQ(r.errors[0].message, "pads.txt:2: GUID must be 32 hex digits, got '0300000'");
-    EXPECT_EQ(r.errors[1].message,
-              "pads.txt:5: unknown field 'zz' (expected an SDL gamepad field such as a, leftx, platform)");
+    EXPECT_EQ(r.errors[1].message, "pads.txt:5: field 'a': expected bN, aN or hH.B, got 'q1'");
 }
 
 TEST(MappingParse, TheMistakesGlfwWouldSwallowAreCaught) {
@@ -67,7 +67,8 @@ TEST(MappingParse, TheMistakesGlfwWouldSwallowAreCaught) {
     // GLFW takes these without an error (measured with GLFW 3.3.8): the checker does not.
     EXPECT_EQ(problem(g + "Name,a:q0,"), "t:1: field 'a': expected bN, aN or hH.B, got 'q0'");
     EXPECT_EQ(problem(g + "Name,a:b999999,"), "t:1: field 'a': button index must be 0..255, got 'b999999'");
-    EXPECT_EQ(problem(g + "Name,+a:b0,"), "t:1: output modifier in '+a:b0' is not supported by GLFW 3.3");
+    EXPECT_EQ(problem(g + "Name,+a:b0,"), "t:1: an output modifier (+/-) applies to an axis (leftx ... righttrigger), got '+a:b0'");
+    EXPECT_EQ(problem(g + "Name,+leftx:q0,"), "t:1: field '+leftx': expected bN, aN or hH.B, got 'q0'");
     EXPECT_EQ(problem(g + "Name,dpup:h0.3,"), "t:1: field 'dpup': hat bit must be 1, 2, 4 or 8, got 'h0.3'");
     EXPECT_EQ(problem(g + "Name,dpup:h16.1,"), "t:1: field 'dpup': hat index must be 0..15, got 'h16.1'");
     EXPECT_EQ(problem(g + "Name,a:+b0,"), "t:1: field 'a': a half-axis prefix (+/-) applies to axes only, got '+b0'");
@@ -83,6 +84,82 @@ TEST(MappingParse, TheMistakesGlfwWouldSwallowAreCaught) {
     EXPECT_EQ(problem(g + std::string("Na\0me", 5) + ",a:b0"), "t:1: control character 0 in the line");
     // SDL extras are accepted.
     EXPECT_EQ(problem(g + "Name,a:b0,misc1:b15,paddle1:b16,touchpad:b17,crc:ab12,hint:!SDL_X:=1,sdk>=:33,"), "ok");
+    EXPECT_EQ(problem(g + "Name,a:b0,misc2:b13,misc6:b14,"), "ok");
+    EXPECT_EQ(problem(g + "Name,a:b0,platform:Linx,"),
+              "t:1: unknown platform 'Linx' (SDL's are Windows, Mac OS X, Linux, Android, iOS)");
+}
+
+// Lines of SDL's community database that GLFW 3.3 can use, written here in its format: each
+// was refused whole before. GLFW refuses a line with an output modifier, so that field is left
+// out; it skips unknown fields itself.
+TEST(MappingParse, EveryMappingGlfwCanUseIsKeptWithWarningsApartFromErrors) {
+    const std::string g = "050000007e0500000620000001800000,";
+    // A Joy-Con held sideways: its stick is a hat, each direction half an axis.
+    const std::string joyCon = g + "Joy-Con (L),a:b0,b:b1,start:b9,+leftx:h0.2,-leftx:h0.8,+lefty:h0.4,-lefty:h0.1,"
+                                   "leftshoulder:b4,platform:Linux,";
+    // C buttons of an N64 pad as half axes, and a misc2 button (SDL 3).
+    const std::string n64 = "03000000c82d00000290000011010000,N64 Adapter,a:b1,b:b0,+rightx:b9,-rightx:b8,"
+                            "misc2:b12,platform:Linux,";
+    const std::string future = "03000000c82d00000290000011020000,Future Pad,a:b0,misc9:b20,face:abxy,platform:Linux,";
+    const std::string xinput = "xinput,XInput Controller,a:b0,b:b1,platform:Windows,";
+    const MappingParseResult r =
+        parseGamepadMappings(joyCon + "\n" + n64 + "\n" + future + "\n" + xinput + "\n", "db.txt");
+    EXPECT_TRUE(r.errors.empty()) << r.errors[0].message;
+    EXPECT_EQ(r.otherPlatform, 1);
+    EXPECT_THAT(r.lines, ElementsAre(g + "Joy-Con (L),a:b0,b:b1,start:b9,leftshoulder:b4,platform:Linux,",
+                                     "03000000c82d00000290000011010000,N64 Adapter,a:b1,b:b0,misc2:b12,platform:Linux,",
+                                     "03000000c82d00000290000011020000,Future Pad,a:b0,platform:Linux,"));
+    ASSERT_EQ(r.warnings.size(), 4u);
+    EXPECT_EQ(r.warnings[0].message, "db.txt:1: output modifiers '+leftx:h0.2', '-leftx:h0.8', '+lefty:h0.4', "
+                                     "'-lefty:h0.1' left out (GLFW 3.3 has no half-axis outputs)");
+    EXPECT_EQ(r.warnings[1].message,
+              "db.txt:2: output modifiers '+rightx:b9', '-rightx:b8' left out (GLFW 3.3 has no half-axis outputs)");
+    EXPECT_THAT(r.warnings[2].message, HasSubstr("db.txt:3: unknown field 'misc9' ignored"));
+    EXPECT_THAT(r.warnings[3].message, HasSubstr("db.txt:3: unknown field 'face' ignored"));
+}
+
+// A database cut short (a download that stopped) ends inside its last line. Cut anywhere, that
+// line lacks the ',' that closes each of SDL's lines or the platform field that ends them.
+TEST(MappingParse, ACutLastLineIsAnErrorNotAMapping) {
+    const std::string text = "# Game Controller DB\n" + kPad + "\n" + kPad + "\n";
+    const std::size_t lastStart = text.size() - kPad.size() - 1;
+    int refused = 0;
+    for (std::size_t cut = lastStart + 1; cut < text.size() - 1; ++cut) {
+        const MappingParseResult r = parseGamepadMappings(text.substr(0, cut), "db.txt");
+        EXPECT_EQ(r.lines.size(), 1u) << "cut at " << cut;
+        ASSERT_EQ(r.errors.size(), 1u) << "cut at " << cut;
+        EXPECT_EQ(r.errors[0].line, 3);
+        EXPECT_THAT(r.errors[0].message, HasSubstr("db.txt:3: the text ends inside this line (no newline after it"));
+        refused += 1;
+    }
+    EXPECT_EQ(refused, static_cast<int>(kPad.size()) - 1);
+    EXPECT_THAT(parseGamepadMappings(text.substr(0, text.size() - 40)).errors[0].message,
+                HasSubstr("and no ',' closing its last field as every line before it has): cut short?"));
+    EXPECT_THAT(parseGamepadMappings(text.substr(0, text.find(",platform:Linux,", lastStart) + 1)).errors[0].message,
+                HasSubstr("and no platform field as every line before it has): cut short?"));
+    // Whole, with or without the last newline, it is two mappings.
+    EXPECT_EQ(parseGamepadMappings(text).lines.size(), 2u);
+    EXPECT_EQ(parseGamepadMappings(text.substr(0, text.size() - 1)).lines.size(), 2u);
+    // One line written in code needs neither, and is handed to GLFW as it is.
+    EXPECT_THAT(parseGamepadMappings("03000000de280000ff11000001000000,Pad,a:b0,leftx:a0").lines,
+                ElementsAre("03000000de280000ff11000001000000,Pad,a:b0,leftx:a0"));
+}
+
+TEST(MappingParse, AByteOrderMarkIsSkipped) {
+    const MappingParseResult r = parseGamepadMappings("\xEF\xBB\xBF" + kPad + "\n");
+    EXPECT_TRUE(r.errors.empty());
+    EXPECT_THAT(r.lines, ElementsAre(kPad));
+}
+
+TEST(MappingParse, ADirectoryIsAnErrorLikeAMissingFile) {
+    const auto dir = std::filesystem::temp_directory_path();
+    try {
+        static_cast<void>(loadGamepadMappingsFile(dir));
+        FAIL() << "no error";
+    } catch (const core::Error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "input::loadGamepadMappingsFile(): cannot read '" + dir.string() + "': it is a directory");
+    }
 }
 
 TEST(MappingParse, MakeMappingBuildsAValidLineOrSaysWhatIsWrong) {

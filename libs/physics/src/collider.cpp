@@ -10,9 +10,6 @@
 #include "component_check.hpp"
 #include "object_pose.hpp"
 
-#include <glm/mat4x4.hpp>
-
-#include <cmath>
 #include <string>
 
 namespace e2d::physics {
@@ -45,24 +42,69 @@ PhysicsSystem& Collider::sys() const {
     return *system_;
 }
 
-void Collider::onInitialize() { attach(); }
+void Collider::onInitialize() {
+    sys().registerCollider(*this);
+    attach();
+}
 
-void Collider::onTerminate() { detach(); }
+void Collider::onTerminate() {
+    detach();
+    sys().unregisterCollider(*this);
+}
+
+Rigidbody* Collider::findOwner() const {
+    for (const core::GameObject* o = gameObject(); o != nullptr; o = o->parent()) {
+        if (Rigidbody* rb = o->getComponent<Rigidbody>(); rb != nullptr && !rb->leaving_) {
+            return rb;
+        }
+    }
+    return nullptr;
+}
+
+Collider::Placement Collider::placementOn(const Rigidbody* owner) const {
+    Placement p;
+    if (owner == nullptr || owner->gameObject() == gameObject()) {
+        p.linear = detail::worldScale(*gameObject());
+    } else {
+        detail::relativePlacement(*owner->gameObject(), *gameObject(), p.linear, p.offset);
+    }
+    return p;
+}
+
+bool Collider::isOutOfDate() const {
+    Rigidbody* owner = findOwner();
+    if (owner != owner_) {
+        return true;
+    }
+    const Placement now = placementOn(owner);
+    return detail::placementsDiffer(now.linear, now.offset, placed_.linear, placed_.offset);
+}
 
 void Collider::attach() {
     detach();
+    attached_ = true;
     core::GameObject& object = *gameObject();
-    // The world matrix's basis vectors carry the scale of the object and all its parents.
-    const glm::mat4& m = object.worldTransform();
-    const glm::vec2 scale{std::hypot(m[0][0], m[0][1]), std::hypot(m[1][0], m[1][1])};
-    // The geometry is in world units, the world in metres.
+    owner_ = findOwner();
+    placed_ = placementOn(owner_);
     const float upm = sys().unitsPerMetre();
-    const ShapeGeometry scaled = detail::scaledGeometry(geometry_, scale, upm);
-    BodyId body{};
-    if (Rigidbody* rb = object.getComponent<Rigidbody>(); rb != nullptr && !rb->leaving_) {
-        body = rb->ensureBody();
+    if (owner_ != nullptr && owner_->state_ == Rigidbody::State::Gone) {
+        return; // its body was destroyed through the World: no shape (see PhysicsSystem)
+    }
+    // The geometry is in world units on the object, the world in metres on the body.
+    std::optional<ShapeGeometry> placed;
+    try {
+        placed = detail::placedGeometry(geometry_, placed_.linear, placed_.offset, upm);
+    } catch (const core::Error&) {
+        // The geometry was valid when the component was made: its scale made it degenerate.
+        // No shape until the scale grows (see the class comment).
+        detail::component_check::requireFinitePlacement(object, "Collider", placed_.linear, placed_.offset);
+        return;
+    }
+    if (owner_ != nullptr) {
+        body_ = owner_->ensureBody();
     } else {
         const detail::Pose pose = detail::worldPose(object, upm);
+        detail::component_check::requireInRange(object, "Collider", upm);
         BodyDef def;
         def.type = BodyType::Static;
         def.position = pose.position;
@@ -70,7 +112,7 @@ void Collider::attach() {
         ownBody_ = sys().world().createBody(def);
         writtenPosition_ = pose.position;
         writtenAngle_ = pose.angle;
-        body = ownBody_;
+        body_ = ownBody_;
         sys().registerStaticCollider(*this);
     }
     ShapeDef def;
@@ -78,16 +120,20 @@ void Collider::attach() {
     def.friction = def_.friction;
     def.restitution = def_.restitution;
     def.rollingResistance = def_.rollingResistance / upm;
-    def.isSensor = def_.isTrigger;
+    def.isSensor = def_.isSensor;
+    def.sensorSeesNonDynamic = def_.sensorSeesNonDynamic;
     def.filter.categoryBits = def_.category.bits();
     def.filter.maskBits = def_.mask.bits();
-    shape_ = sys().world().createShape(body, def, scaled);
-    sys().registerCollider(shape_, *this);
+    shape_ = sys().world().createShape(body_, def, *placed);
+    sys().registerShape(shape_, *this);
 }
 
 void Collider::detach() noexcept {
+    attached_ = false;
+    owner_ = nullptr;
+    body_ = {};
     if (!shape_.isNull()) {
-        sys().unregisterCollider(shape_);
+        sys().unregisterShape(shape_);
         if (sys().world().isValid(shape_)) {
             sys().world().destroyShape(shape_);
         }

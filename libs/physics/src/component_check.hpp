@@ -2,11 +2,16 @@
 #pragma once
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/game_object.hpp>
+#include <e2d/physics/constants.hpp>
+
+#include <glm/mat2x2.hpp>
 
 #include "error_format.hpp"
 
 #include <cmath>
 #include <string>
+#include <string_view>
 
 // Checks of the components' definition structs: "physics::<function>(): def.<field> ...".
 namespace e2d::physics::detail::component_check {
@@ -29,6 +34,55 @@ inline void requireUnitInterval(const char* function, const char* field, float v
     if (!std::isfinite(value) || value < 0.0f || value > 1.0f) {
         throw core::Error(std::string("physics::") + function + "(): def." + field +
                           " must be finite and in [0, 1], got " + formatFloat(value));
+    }
+}
+
+// How an error names a game object: by name, else by tag, else by id.
+inline std::string describe(const core::GameObject& object) {
+    if (!object.name().empty()) {
+        return "object '" + object.name() + "'";
+    }
+    if (!object.tag().empty()) {
+        return "object tagged '" + object.tag() + "'";
+    }
+    return "object #" + std::to_string(object.id().index) + " (no name or tag)";
+}
+
+// "physics::Rigidbody on object 'crate': ..."
+[[noreturn]] inline void failOn(const core::GameObject& object, std::string_view component,
+                                const std::string& what) {
+    throw core::Error("physics::" + std::string(component) + " on " + describe(object) + ": " + what);
+}
+
+// The object's world position must be within the World's range (kHuge metres), reported in
+// the world units the user gave.
+inline void requireInRange(const core::GameObject& object, std::string_view component, float unitsPerMetre) {
+    const glm::vec3 p = object.worldPosition();
+    const Vec2 units{p.x, p.y};
+    const Vec2 metres = units / unitsPerMetre;
+    if (std::isfinite(metres.x) && std::isfinite(metres.y) && std::fabs(metres.x) <= kHuge &&
+        std::fabs(metres.y) <= kHuge) {
+        return;
+    }
+    failOn(object, component,
+           "world position " + formatVec(units) +
+               " world units is out of the physics range (finite, |x| and |y| <= " +
+               formatFloat(kHuge * unitsPerMetre) + " world units: " + formatFloat(kHuge) +
+               " m at " + formatFloat(unitsPerMetre) + " units per metre)");
+}
+
+// A collider's placement on its body (its object's scale and pose relative to the body) must
+// be finite; a degenerate but finite one only leaves the collider without a shape.
+inline void requireFinitePlacement(const core::GameObject& object, std::string_view component,
+                                   const glm::mat2& linear, glm::vec2 offset) {
+    const bool finite = std::isfinite(linear[0][0]) && std::isfinite(linear[0][1]) &&
+                        std::isfinite(linear[1][0]) && std::isfinite(linear[1][1]) &&
+                        std::isfinite(offset.x) && std::isfinite(offset.y);
+    if (!finite) {
+        failOn(object, component,
+               "the object's scale, orientation or position relative to its body is not finite "
+               "(scale " + formatVec(object.scale()) + ", orientation " +
+                   formatFloat(object.orientation()) + ")");
     }
 }
 

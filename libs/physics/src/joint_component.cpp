@@ -7,7 +7,9 @@
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
+#include "component_check.hpp"
 #include "error_format.hpp"
+#include "object_pose.hpp"
 #include "joint_def_check.hpp"
 
 #include <string>
@@ -82,45 +84,94 @@ JointDef withBodies(JointDef def, BodyId a, BodyId b) {
     throw core::Error(std::string("physics::JointComponent::") + function + "(): " + what);
 }
 
+// World::createJoint()'s message about `def` ("physics::World::createJoint(): revolute
+// def.lowerAngle must be <= def.upperAngle, got 1 > -1") in the component's words, which name
+// the fields it takes: "def.joint.lowerAngle must be <= def.joint.upperAngle, got 1 > -1".
+std::string inComponentTerms(std::string what) {
+    if (what.rfind(kCreatePrefix, 0) == 0) {
+        what.erase(0, kCreatePrefix.size());
+    }
+    // The joint type's name before the first field ("revolute def.").
+    if (const auto first = what.find(" def."); first != std::string::npos && what.find(' ') == first) {
+        what.erase(0, first + 1);
+    }
+    std::string out;
+    for (std::size_t at = 0;;) {
+        const std::size_t next = what.find("def.", at);
+        if (next == std::string::npos) {
+            out.append(what, at, std::string::npos);
+            break;
+        }
+        out.append(what, at, next - at).append("def.joint.");
+        at = next + 4;
+    }
+    return out;
+}
+
+// Validates the joint def, reporting in the component's terms; `note` follows the message.
+void validate(const JointDef& def, const char* function, const std::string& note) {
+    try {
+        detail::validateJointDef(def);
+    } catch (const core::Error& e) {
+        fail(function, inComponentTerms(e.what()) + note);
+    }
+}
+
 } // namespace
 
-JointComponent::JointComponent(PhysicsSystem& system, const JointComponentDef& def)
-    : system_(system), def_(def), metres_(inMetres(def.joint, system.unitsPerMetre())) {
-    try {
-        detail::validateJointDef(metres_);
-    } catch (const core::Error& e) {
-        std::string what = e.what();
-        if (what.rfind(kCreatePrefix, 0) == 0) {
-            what.erase(0, kCreatePrefix.size());
-        }
-        if (system.unitsPerMetre() != 1.0f) {
-            what += " (in metres: the def's world units divided by unitsPerMetre " +
-                    detail::formatFloat(system.unitsPerMetre()) + ")";
-        }
-        fail("JointComponent", "def.joint: " + what);
-    }
+JointComponent::JointComponent(PhysicsSystem& system, const JointComponentDef& def) : JointComponent(def) {
+    system_ = &system;
+    static_cast<void>(validateInMetres("JointComponent"));
+}
+
+// Checked as given (world units taken for metres: every sign, order and finiteness rule
+// holds at any scale); the scale-dependent rules are checked again in metres on attach.
+JointComponent::JointComponent(const JointComponentDef& def) : def_(def) {
+    validate(def.joint, "JointComponent", "");
 }
 
 JointComponent::~JointComponent() = default;
 
-bool JointComponent::isConnected() const { return !joint_.isNull() && system_.world().isValid(joint_); }
+JointDef JointComponent::validateInMetres(const char* function) const {
+    const float upm = system().unitsPerMetre();
+    JointDef metres = inMetres(def_.joint, upm);
+    validate(metres, function,
+             upm != 1.0f ? " (in metres: the def's world units divided by unitsPerMetre " +
+                               detail::formatFloat(upm) + ")"
+                         : std::string());
+    return metres;
+}
+
+PhysicsSystem& JointComponent::system() const {
+    if (system_ == nullptr) {
+        if (scene() == nullptr) {
+            throw core::Error("physics::JointComponent::system(): the JointComponent has no PhysicsSystem "
+                              "(it was made without one and its object is not in a scene)");
+        }
+        system_ = &scene()->system<PhysicsSystem>();
+    }
+    return *system_;
+}
+
+bool JointComponent::isConnected() const { return !joint_.isNull() && system().world().isValid(joint_); }
 
 Vec2 JointComponent::reactionForce() const {
-    return isConnected() ? system_.toUnits(system_.world().jointReactionForce(joint_)) : Vec2{0.0f, 0.0f};
+    return isConnected() ? system().toUnits(system().world().jointReactionForce(joint_)) : Vec2{0.0f, 0.0f};
 }
 
 float JointComponent::reactionTorque() const {
-    const float upm = system_.unitsPerMetre();
-    return isConnected() ? system_.world().jointReactionTorque(joint_) * upm * upm : 0.0f;
+    const float upm = system().unitsPerMetre();
+    return isConnected() ? system().world().jointReactionTorque(joint_) * upm * upm : 0.0f;
 }
 
 void JointComponent::disconnect() {
+    World& world = system().world();
     if (isConnected()) {
-        system_.world().destroyJoint(joint_);
+        world.destroyJoint(joint_);
     }
     joint_ = {};
-    if (!anchor_.isNull() && system_.world().isValid(anchor_)) {
-        system_.world().destroyBody(anchor_);
+    if (!anchor_.isNull() && world.isValid(anchor_)) {
+        world.destroyBody(anchor_);
     }
     anchor_ = {};
 }
@@ -129,29 +180,47 @@ void JointComponent::onInitialize() {
     if (isConnected()) {
         return;
     }
+    PhysicsSystem& sys = system();
+    const float upm = sys.unitsPerMetre();
+    const JointDef metres = validateInMetres("onInitialize");
     core::GameObject& self = *gameObject();
     Rigidbody* own = self.getComponent<Rigidbody>();
     if (own == nullptr) {
-        fail("onInitialize", "the object has no Rigidbody to connect");
+        fail("onInitialize", "the " + detail::component_check::describe(self) + " has no Rigidbody to connect");
     }
-    BodyId bodyA;
-    if (def_.connectedObject == core::GameObjectId{}) {
-        anchor_ = system_.world().createBody(BodyDef{});
-        bodyA = anchor_;
-    } else {
+    // Body A: the connected object's Rigidbody, or a static anchor where it is (or at the origin).
+    Rigidbody* theirs = nullptr;
+    detail::Pose anchorPose;
+    if (def_.connectedObject != core::GameObjectId{}) {
         core::GameObject* other = self.scene().find(def_.connectedObject);
         if (other == nullptr) {
             fail("onInitialize", "def.connectedObject names no object of the scene");
         }
-        Rigidbody* theirs = other->getComponent<Rigidbody>();
-        if (theirs == nullptr) {
-            fail("onInitialize", "def.connectedObject has no Rigidbody");
+        if (other == &self) {
+            fail("onInitialize", "def.connectedObject is the " + detail::component_check::describe(self) +
+                                     " itself");
         }
+        theirs = other->getComponent<Rigidbody>();
+        anchorPose = detail::worldPose(*other, upm);
+    }
+    const bool ownMoves = own->type() == BodyType::Dynamic;
+    if (!ownMoves && (theirs == nullptr || theirs->type() != BodyType::Dynamic)) {
+        fail("onInitialize", "neither the Rigidbody of the " + detail::component_check::describe(self) +
+                                 " nor def.connectedObject's is dynamic: no force would move the joint");
+    }
+    BodyId bodyA;
+    if (theirs != nullptr) {
         bodyA = theirs->ensureBody();
+    } else {
+        BodyDef anchor;
+        anchor.position = anchorPose.position;
+        anchor.angle = anchorPose.angle;
+        anchor_ = sys.world().createBody(anchor);
+        bodyA = anchor_;
     }
     const BodyId bodyB = own->ensureBody();
     try {
-        joint_ = system_.world().createJoint(withBodies(metres_, bodyA, bodyB));
+        joint_ = sys.world().createJoint(withBodies(metres, bodyA, bodyB));
     } catch (...) {
         disconnect();
         throw;

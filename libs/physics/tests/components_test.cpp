@@ -12,11 +12,14 @@
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
+#include "component_scene.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -26,50 +29,18 @@ using physics::Collider;
 using physics::PhysicsSystem;
 using physics::Rigidbody;
 
-constexpr double kStep = 1.0 / 60.0;
+using physics::test::kStep;
 
-// Records the physics events its object receives.
-class Recorder : public core::Component {
-public:
-    struct Event {
-        std::string kind;
-        core::ContactInfo info;
-    };
-    void onCollisionEnter(const core::ContactInfo& c) override { events.push_back({"enter", c}); }
-    void onCollisionExit(const core::ContactInfo& c) override { events.push_back({"exit", c}); }
-    void onTriggerEnter(const core::ContactInfo& c) override { events.push_back({"trigger-enter", c}); }
-    void onTriggerExit(const core::ContactInfo& c) override { events.push_back({"trigger-exit", c}); }
-    int count(const std::string& kind) const {
-        int n = 0;
-        for (const Event& e : events) {
-            n += e.kind == kind ? 1 : 0;
-        }
-        return n;
-    }
-    std::vector<Event> events;
-};
+using Recorder = physics::test::EventLog;
 
-// A scene run by a director with the physics system plugged in, stepped by hand.
-class ComponentsTest : public ::testing::Test {
+// A scene run by a director with the physics system plugged in, stepped by hand; "Empty" is the
+// scene a scene change goes to.
+class ComponentsTest : public ::testing::Test, public physics::test::ComponentScene {
 protected:
     void start(std::function<void(core::Scene&)> setup) {
-        registry.add("Test", core::SceneFunctions{.initialize = setup});
         registry.add("Empty", core::SceneFunctions{});
-        director.addSystem(physics);
-        ASSERT_TRUE(director.start("Test"));
+        ComponentScene::start(std::move(setup));
     }
-    void frames(int n) {
-        for (int i = 0; i < n; ++i) {
-            director.applyPendingChange();
-            director.scene()->beginFrame();
-            physics.fixedUpdate(kStep);
-        }
-    }
-
-    core::Logger logger{core::LogLevel::Off};
-    core::SceneRegistry registry;
-    core::SceneDirector director{registry, logger};
-    PhysicsSystem physics{};
 };
 
 physics::Polygon box(float half) { return physics::makeBox(half, half); }
@@ -162,7 +133,7 @@ TEST_F(ComponentsTest, TriggerReportsEnterAndExitAndDoesNotStopTheBody) {
         core::GameObject& zone = s.createGameObject();
         zone.setPosition(glm::vec2{0.0f, 5.0f});
         physics::ColliderDef trigger;
-        trigger.isTrigger = true;
+        trigger.isSensor = true;
         zone.addComponent<Collider>(physics, physics::makeBox(2.0f, 0.5f), trigger);
         zoneEvents = zone.addComponent<Recorder>();
         ball = &s.createGameObject();
@@ -236,8 +207,8 @@ TEST_F(ComponentsTest, ImpulseAndFreezeFlagsActThroughTheComponent) {
         o = &s.createGameObject();
         physics::RigidbodyDef def;
         def.gravityScale = 0.0f;
-        def.freezePositionY = true;
-        def.freezeRotation = true;
+        def.lockY = true;
+        def.fixedRotation = true;
         rb = o->addComponent<Rigidbody>(physics, def);
         o->addComponent<Collider>(physics, box(0.5f)); // 1 m^2 at density 1: 1 kg
     });
@@ -403,7 +374,7 @@ TEST_F(ComponentsTest, BodyDestroyedThroughTheWorldInsideACollisionEventLeavesIt
             ADD_FAILURE() << "no error";
         } catch (const core::Error& e) {
             EXPECT_NE(std::string(e.what()).find("physics::Rigidbody::setLinearVelocity(): the "
-                                                 "Rigidbody has no body"),
+                                                 "Rigidbody on object #"),
                       std::string::npos)
                 << e.what();
         }

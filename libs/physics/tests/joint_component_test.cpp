@@ -11,7 +11,11 @@
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
+#include "component_scene.hpp"
+
 #include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <functional>
@@ -27,22 +31,9 @@ using physics::JointComponentDef;
 using physics::PhysicsSystem;
 using physics::Rigidbody;
 
-constexpr double kStep = 1.0 / 60.0;
 
-class JointComponentTest : public ::testing::Test {
+class JointComponentTest : public ::testing::Test, public physics::test::ComponentScene {
 protected:
-    void start(std::function<void(core::Scene&)> setup) {
-        registry.add("Test", core::SceneFunctions{.initialize = setup});
-        director.addSystem(physics);
-        ASSERT_TRUE(director.start("Test"));
-    }
-    void frames(int n) {
-        for (int i = 0; i < n; ++i) {
-            director.applyPendingChange();
-            director.scene()->beginFrame();
-            physics.fixedUpdate(kStep);
-        }
-    }
     core::GameObject& ball(core::Scene& s, glm::vec2 at, float radius = 0.25f) {
         core::GameObject& o = s.createGameObject();
         o.setPosition(at);
@@ -50,11 +41,6 @@ protected:
         o.addComponent<Collider>(physics, physics::Circle{{0.0f, 0.0f}, radius});
         return o;
     }
-
-    core::Logger logger{core::LogLevel::Off};
-    core::SceneRegistry registry;
-    core::SceneDirector director{registry, logger};
-    PhysicsSystem physics{};
 };
 
 // A ball hung from the world by a revolute joint 1 m above it: it stays 1 m from the pivot and
@@ -194,23 +180,75 @@ TEST_F(JointComponentTest, BadDefsAndMissingRigidbodiesAreClearErrors) {
     r.lowerAngle = 1.0f;
     r.upperAngle = -1.0f;
     try {
-        JointComponent bad(physics, JointComponentDef{r, {}});
+        JointComponent bad(JointComponentDef{r, {}});
         FAIL() << "no error";
     } catch (const core::Error& e) {
-        EXPECT_STREQ(e.what(), "physics::JointComponent::JointComponent(): def.joint: revolute def.lowerAngle "
-                               "must be <= def.upperAngle, got 1 > -1");
+        EXPECT_STREQ(e.what(), "physics::JointComponent::JointComponent(): def.joint.lowerAngle "
+                               "must be <= def.joint.upperAngle, got 1 > -1");
+    }
+    physics::DistanceJointDef d;
+    d.length = -2.0f;
+    try {
+        JointComponent bad(JointComponentDef{d, {}});
+        FAIL() << "no error";
+    } catch (const core::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("physics::JointComponent::JointComponent(): def.joint.length must be"),
+                  std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("-2"), std::string::npos) << "the value as given: " << e.what();
     }
     core::GameObject* lonely = nullptr;
-    start([&](core::Scene& s) { lonely = &s.createGameObject(); });
-    lonely->addComponent<JointComponent>(physics);
+    core::GameObject* selfish = nullptr;
+    start([&](core::Scene& s) {
+        lonely = &s.createGameObject();
+        lonely->setName("lonely");
+        selfish = &s.createGameObject();
+        selfish->setTag("rope");
+        selfish->addComponent<Rigidbody>();
+    });
+    lonely->addComponent<JointComponent>();
     try {
         frames(1);
         FAIL() << "no error";
     } catch (const core::Error& e) {
-        EXPECT_NE(std::string(e.what()).find("physics::JointComponent::onInitialize(): the object has no Rigidbody"),
-                  std::string::npos)
-            << e.what();
+        EXPECT_STREQ(e.what(), "physics::JointComponent::onInitialize(): the object 'lonely' has no Rigidbody "
+                               "to connect");
     }
+    lonely->removeComponent(lonely->getComponent<JointComponent>());
+    selfish->addComponent<JointComponent>(JointComponentDef{physics::RevoluteJointDef{}, selfish->id()});
+    try {
+        frames(1);
+        FAIL() << "no error";
+    } catch (const core::Error& e) {
+        EXPECT_STREQ(e.what(), "physics::JointComponent::onInitialize(): def.connectedObject is the object "
+                               "tagged 'rope' itself");
+    }
+}
+
+// A def-only component (the system found through the scene) hangs a ball from a wall: an object
+// with a Collider and no Rigidbody, the anchor in the wall's own frame.
+TEST_F(JointComponentTest, DefOnlyJointHangsABallFromAWallWithoutARigidbody) {
+    core::GameObject* bob = nullptr;
+    JointComponent* hinge = nullptr;
+    start([&](core::Scene& s) {
+        core::GameObject& wall = s.createGameObject();
+        wall.setPosition(glm::vec2{5.0f, 3.0f});
+        wall.addComponent<Collider>(physics::makeBox(0.5f, 2.0f));
+        bob = &s.createGameObject();
+        bob->setPosition(glm::vec2{6.5f, 3.0f});
+        bob->addComponent<Rigidbody>();
+        bob->addComponent<Collider>(physics::Circle{{0.0f, 0.0f}, 0.25f});
+        physics::DistanceJointDef rope;
+        rope.localAnchorA = {1.0f, 0.0f}; // the wall's right face, at its centre height
+        rope.length = 0.5f;
+        hinge = bob->addComponent<JointComponent>(JointComponentDef{rope, wall.id()});
+    });
+    frames(240);
+    ASSERT_TRUE(hinge->isConnected());
+    EXPECT_EQ(&hinge->system(), &physics);
+    const glm::vec2 anchor{6.0f, 3.0f};
+    EXPECT_NEAR(glm::length(glm::vec2(bob->position()) - anchor), 0.5f, 0.02f) << "held on its rope";
+    EXPECT_LT(bob->position().y, 2.7f) << "hanging below the anchor";
 }
 
 } // namespace

@@ -15,7 +15,7 @@ class AudioSystem;
 struct AudioSourceDef {
     /// Path of the sound file. Loaded (and shared through the mixer's cache) when the object
     /// enters the scene. Default empty: the source has nothing to play until setClip().
-    std::string clip;
+    std::string clip{};
     /// Stream the file while it plays instead of decoding it whole (music). Default false.
     bool stream = false;
     /// Start playing when the object enters the scene. Default true.

@@ -57,7 +57,7 @@ struct MixerDef {
     /// Default Device.
     Output output = Output::Device;
     /// OpenAL device name for Output::Device; empty means the default device. Default empty.
-    std::string deviceName;
+    std::string deviceName{};
     /// Hz, for Output::Loopback; 8000..192000. Default 48000.
     int loopbackSampleRate = 48000;
     /// For Output::Loopback: a loopback device the caller opened with OpenAL Soft's
@@ -74,9 +74,9 @@ struct MixerDef {
     float masterGain = 1.0f;
     /// Distances of the spatial model. Default: see SpatialDef. Need 0 <= min < max for both
     /// pairs.
-    SpatialDef spatial;
+    SpatialDef spatial{};
     /// Limits on the files the mixer loads. Default: see DecodeLimits.
-    DecodeLimits limits;
+    DecodeLimits limits{};
     /// Seconds of sound per stream buffer; 0.01..1. Default 0.1.
     double streamChunkSeconds = 0.1;
     /// Buffers queued per streaming voice; 3..16. All but one must hold at least 0.25 s, so a
@@ -140,6 +140,9 @@ struct MixerStats {
 /// Without a device (none found, Output::None, or lost while running) the mixer runs silent:
 /// it says so once through the logger, every call still works, voices still start, fade and
 /// end on time (their positions advance with update()), and `reopen()` tries the device again.
+/// With no sound card, that is one warning with OpenAL Soft's reason; what OpenAL Soft and ALSA
+/// print to stderr while the device fails to open goes to the logger's debug level instead.
+/// `ALSOFT_DRIVERS=null` in the environment gives OpenAL Soft's silent device: no warning.
 ///
 /// Call `update(dt)` once per frame: it advances fades, applies the spatial model, keeps
 /// streams fed and retires voices that ended.
@@ -174,10 +177,13 @@ public:
     /// A file that cannot be loaded gives a sound all the same: its SoundInfo carries the
     /// error, which is logged once as an error, and it plays nothing. Whole sounds are
     /// decoded at once; streamed ones are opened and checked here, decoded while they play.
+    /// Damaged and truncated files are refused by the rule of decodeSoundFile() in both modes;
+    /// a stream that meets damage while playing stops there, and the error is logged once per
+    /// sound.
     SoundId load(const std::filesystem::path& path, LoadMode mode = LoadMode::Whole);
     /// Adds decoded samples as a sound (not cached by path; `name` is for messages). Throws
-    /// core::Error for 0 or more than 2 channels, a sample rate outside the limits, or no
-    /// frames.
+    /// core::Error for 0 or more than 2 channels, a sample rate outside the limits, no frames,
+    /// or a sample that is not finite or beyond `limits.maxSampleMagnitude`.
     SoundId add(SoundData data, std::string name = "<memory>");
     /// The sound's description; throws core::Error for a null or unknown id.
     [[nodiscard]] const SoundInfo& soundInfo(SoundId sound) const;

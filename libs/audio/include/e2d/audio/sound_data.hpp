@@ -24,9 +24,15 @@ struct DecodeLimits {
     /// Frames (samples per channel) a sound decoded whole may have. Default 2^25 (about 11.6
     /// minutes at 48 kHz, 256 MiB of stereo floats). Streamed sounds are not limited.
     std::int64_t maxFrames = std::int64_t{1} << 25;
+    /// Largest |sample| a sound may hold. A sample above it, NaN or infinite means damaged data
+    /// (a float file whose bytes were overwritten decodes to values like 4e12): the sound is
+    /// refused, as a truncated one is. Default 16 (+24 dB over full scale, far above what any
+    /// encoder writes from real audio; float files may legitimately exceed 1 a little).
+    float maxSampleMagnitude = 16.0f;
 };
 
-/// A decoded sound: interleaved samples in [-1, 1] (float files may exceed it).
+/// A decoded sound: interleaved samples, finite, in [-1, 1] (float files may exceed it, up to
+/// DecodeLimits::maxSampleMagnitude).
 struct SoundData {
     int channels = 0;          ///< 1 or 2
     int sampleRate = 0;        ///< Hz
@@ -52,8 +58,17 @@ struct DecodeResult {
 
 /// Decodes the whole file at `path`. Never throws for a bad file: every problem (missing,
 /// unreadable, unsupported format, more than `limits.maxChannels` channels, a sample rate
-/// outside the limits, zero frames, more than `limits.maxFrames` frames, data shorter than its
-/// header says) is an error in the result.
+/// outside the limits, zero frames, more than `limits.maxFrames` frames, a damaged or truncated
+/// file) is an error in the result.
+///
+/// Damaged and truncated files follow one rule in every format, here and for streamed sounds
+/// (Mixer::load): the error names the file and what is missing or wrong, e.g.
+/// `"'music.ogg': truncated: the Ogg stream has no end-of-stream page ..."` or
+/// `"'hit.wav': damaged: sample 4e+12 at 0.25 s (frame 11025) is beyond +-16"`. Problems the
+/// file shows when opened (a cut WAV or Ogg file) refuse it whole in both modes; damage found
+/// while decoding (data that ends before the length its header announces, a decoder that loses
+/// sync, non-finite samples) refuses a whole sound and stops a stream at that point, with the
+/// same message.
 [[nodiscard]] DecodeResult decodeSoundFile(const std::filesystem::path& path,
                                            const DecodeLimits& limits = {});
 

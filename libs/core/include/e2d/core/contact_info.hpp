@@ -10,13 +10,15 @@ namespace e2d::core {
 class Component;
 class GameObject;
 
-/// One point of contact between two colliders, in world space (metres).
+/// One point of contact between two colliders, in world space and world units (the physics
+/// system converts from its metres), as the shapes are after the fixed step that reported it.
 struct ContactPoint {
     /// Where the colliders touch.
     glm::vec2 point{0.0f};
     /// Unit normal pointing away from the object receiving the event, towards `other`.
     glm::vec2 normal{0.0f};
-    /// Signed distance along the normal; negative means overlap.
+    /// Signed distance along the normal, world units; negative means overlap (about zero for
+    /// shapes resting on each other).
     float separation = 0.0f;
 };
 

@@ -98,7 +98,8 @@ enum class ListenMode : std::uint8_t {
 ///
 /// Bindings file: one action per line, `name = binding, binding, ...` (binding text form in
 /// Binding; `#` starts a comment line; blank lines are ignored; an action may have no
-/// bindings). Names are letters, digits, `_`, `-`, `.`.
+/// bindings; a UTF-8 byte order mark at the start is skipped). Names are letters, digits, `_`,
+/// `-`, `.`.
 class ActionMap {
 public:
     /// Throws core::Error naming the field for a value out of range.
@@ -151,7 +152,8 @@ public:
     /// missing); other actions are untouched. On any error throws core::Error
     /// `"<source>:<line>: ..."` and changes nothing.
     void loadFromString(std::string_view text, std::string_view source = "<string>");
-    /// Same from a file (the message names the file); throws if it cannot be read.
+    /// Same from a file (the message names the file); throws if it cannot be read (a directory
+    /// included).
     void load(const std::filesystem::path& path);
     /// Every action in creation order, in the file format.
     [[nodiscard]] std::string toString() const;

@@ -7,6 +7,7 @@
 #include <e2d/physics/world.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -25,30 +26,40 @@ class Rigidbody;
 
 /// Owns the World of a running game and connects it to game objects.
 ///
-/// Each fixed step: game objects that were moved by hand since the last step are teleported in
-/// the world (their bodies' transforms follow the object), the world steps, every Rigidbody writes
-/// its body's position and angle back to its object (z and scale untouched), and the step's
-/// events are dispatched as onCollisionEnter/Exit and onTriggerEnter/Exit to the objects of both
-/// shapes, with core::ContactInfo normals pointing away from the receiving object.
-/// On a scene change (clear()) the world is emptied.
+/// Each fixed step: colliders whose object was reparented, moved relative to its body or
+/// rescaled are rebuilt (see Collider), game objects that were moved by hand since the last
+/// step are teleported in the world (their bodies' transforms follow the object), kinematic
+/// targets (Rigidbody::setTargetTransform()) set their bodies' velocities, the world steps,
+/// every Rigidbody writes its body's position and angle back to its object (z and scale
+/// untouched), and the step's events are dispatched as onCollisionEnter/Exit and
+/// onTriggerEnter/Exit to the object of each collider (and to its Rigidbody's object too, when
+/// the collider is on a child of it), with core::ContactInfo normals pointing away from the
+/// receiving collider. On a scene change (clear()) the world is emptied.
 ///
 /// Units. The World runs in metres; game objects live in world units, `unitsPerMetre()` of
 /// them to a metre (default 1: a world unit is a metre). Everything the components take and
 /// give is in world units, converted here in one place: object positions, collider geometry,
 /// Rigidbody velocities (units/s), forces (kg*units/s^2) and impulses (kg*units/s), torques
 /// and angular impulses (kg*units^2/s^2, kg*units^2/s), JointComponent anchors, lengths and
-/// forces, contact points and separations in core::ContactInfo, and the ray casts below.
+/// forces, contact points and separations in core::ContactInfo, and the queries below.
 /// Angles are radians, masses kg and densities kg/m^2 whatever the scale (so a scene and the
 /// same scene drawn 100 times larger at 100 units per metre weigh and move alike). The
-/// WorldDef and whatever is done through world() directly stay in metres: toMetres() and
-/// toUnits() convert.
+/// WorldDef (gravity in m/s^2) and whatever is done through world() directly stay in metres:
+/// toMetres() and toUnits() convert.
+///
+/// Contacts. A ContactInfo of onCollisionEnter holds the manifold after the step that began
+/// the touch (where the shapes are when the event arrives, not where the narrow phase found
+/// them before solving): points in world units, separations in world units (about zero, or
+/// slightly negative, for shapes resting on each other).
 ///
 /// Event callbacks may change the world through world(): create, move or destroy bodies and
 /// shapes (events are dispatched from a copy, after the step). A Rigidbody's or static
 /// Collider's body destroyed through the world is noticed at the start of the next
 /// fixedUpdate(): the components then have no body and no shapes (Rigidbody::body() and
 /// Collider::shape() are null) and the object keeps its last pose. Calling fixedUpdate() from
-/// inside an event callback throws core::Error.
+/// inside an event callback throws core::Error. The system installs the World's pre-solve
+/// callback while a Collider has a oneWay or preSolve rule; replacing it through world()
+/// turns those rules off.
 class PhysicsSystem : public core::System {
 public:
     /// `def` is in metres (gravity m/s^2). `unitsPerMetre`: world units per metre, finite and
@@ -71,13 +82,34 @@ public:
     [[nodiscard]] Vec2 toUnits(Vec2 metres) const noexcept { return metres * unitsPerMetre_; }
     [[nodiscard]] float toUnits(float metres) const noexcept { return metres * unitsPerMetre_; }
 
-    /// World::castRayClosest() in world units: `origin` and `translation` are world units, and
-    /// so is the result's point (normal and fraction need no scale).
+    /// Gravity, world units/s^2 (the World's m/s^2 times unitsPerMetre()).
+    [[nodiscard]] Vec2 gravity() const { return toUnits(world_.gravity()); }
+    /// World units/s^2, finite.
+    void setGravity(Vec2 gravity) { world_.setGravity(toMetres(gravity)); }
+
+    // Queries in world units: the World's (see there for the rules), with every point, length
+    // and geometry in world units; ShapeIds are the colliders' (collider() finds them).
+
+    /// World::castRayClosest(): `origin`, `translation` and the result's point in world units
+    /// (normal and fraction need no scale).
     [[nodiscard]] std::optional<RayResult> castRayClosest(Vec2 origin, Vec2 translation,
                                                           const QueryFilter& filter = {}) const;
     /// World::castRayAll() in world units.
     [[nodiscard]] std::vector<RayResult> castRayAll(Vec2 origin, Vec2 translation,
                                                     const QueryFilter& filter = {}) const;
+    /// World::castShape(): `geometry` (world units) at `position` (world units) turned by
+    /// `angle`, moved by `translation` (world units); the result's point in world units.
+    [[nodiscard]] std::optional<RayResult> castShape(const ShapeGeometry& geometry, Vec2 position,
+                                                     float angle, Vec2 translation,
+                                                     const QueryFilter& filter = {}) const;
+    /// World::overlapPoint(): the shapes containing `point` (world units).
+    [[nodiscard]] std::vector<ShapeId> overlapPoint(Vec2 point, const QueryFilter& filter = {}) const;
+    /// World::overlapAabb(): the shapes whose box overlaps `box` (world units).
+    [[nodiscard]] std::vector<ShapeId> overlapAabb(const Aabb& box, const QueryFilter& filter = {}) const;
+    /// World::overlapShape(): the shapes `geometry` (world units) at `position` (world units)
+    /// turned by `angle` overlaps.
+    [[nodiscard]] std::vector<ShapeId> overlapShape(const ShapeGeometry& geometry, Vec2 position,
+                                                    float angle, const QueryFilter& filter = {}) const;
 
     /// The collider that owns `shape`, or nullptr (not a component's shape, or stale).
     [[nodiscard]] Collider* collider(ShapeId shape) const noexcept;
@@ -89,15 +121,25 @@ private:
     friend class Collider;
     friend class Rigidbody;
 
-    void registerCollider(ShapeId shape, Collider& collider);
-    void unregisterCollider(ShapeId shape) noexcept;
+    void registerCollider(Collider& collider);
+    void unregisterCollider(Collider& collider) noexcept;
+    void registerShape(ShapeId shape, Collider& collider);
+    void unregisterShape(ShapeId shape) noexcept;
     void registerRigidbody(Rigidbody& body);
     void unregisterRigidbody(Rigidbody& body) noexcept;
     void registerStaticCollider(Collider& collider);
     void unregisterStaticCollider(Collider& collider) noexcept;
+    /// Colliders riding on `body`.
+    [[nodiscard]] std::vector<Collider*> collidersOn(const Rigidbody* body) const;
+    /// Attaches again every collider `which` picks.
+    void reattachColliders(const std::function<bool(const Collider&)>& which);
+    /// Installs or removes the World's pre-solve callback as colliders with rules come and go.
+    void updatePreSolve();
+    [[nodiscard]] bool preSolve(ShapeId a, ShapeId b, const Manifold& manifold) const;
 
     void forgetDestroyedBodies();
-    void pullMovedObjects();
+    void syncColliders();
+    void pullMovedObjects(float step);
     void pushBodyTransforms();
     void dispatchEvents();
 
@@ -109,9 +151,12 @@ private:
     WorldDef def_;
     float unitsPerMetre_ = 1.0f;
     World world_;
+    std::vector<Collider*> allColliders_;  // every initialized collider, shape or not
     std::vector<ColliderSlot> colliders_; // indexed by ShapeId::index1 - 1
     std::vector<Rigidbody*> rigidbodies_;
     std::vector<Collider*> staticColliders_; // colliders with a static body of their own
+    int ruledColliders_ = 0;                 // colliders with oneWay or preSolve
+    bool preSolveInstalled_ = false;
     // The last step's events, copied before dispatch (capacity reused from step to step).
     std::vector<ContactBeginTouchEvent> beginEvents_;
     std::vector<ContactEndTouchEvent> endEvents_;

@@ -25,7 +25,7 @@ struct AnimatedSpriteRendererDef {
     /// the current frame's.
     SpriteRendererDef sprite{};
     /// The frames in playing order, at least one. Default none.
-    std::vector<AnimationFrame> frames;
+    std::vector<AnimationFrame> frames{};
     /// Timing; its `frameCount` is ignored (the number of `frames` is used). Default: 0.1 s per
     /// frame, from frame 0, looping, speed 1.
     AnimationDef animation{};

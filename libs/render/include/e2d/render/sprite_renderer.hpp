@@ -14,7 +14,7 @@ class RenderSystem;
 struct SpriteRendererDef {
     /// Image file, loaded through the Renderer's cache when the component starts; empty: use
     /// `texture`. Default "".
-    std::string texturePath;
+    std::string texturePath{};
     /// Texture when `texturePath` is empty; null: plain white (tinted). Default null.
     TextureId texture{};
     /// Filtering and mipmaps for `texturePath`. Default linear, no mipmaps.

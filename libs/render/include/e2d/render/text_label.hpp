@@ -14,7 +14,7 @@ namespace e2d::render {
 /// How a TextLabel starts.
 struct TextLabelDef {
     /// UTF-8 text; '\n' breaks lines. Default "".
-    std::string text;
+    std::string text{};
     /// Font file; an unreadable one falls back to the default font (see TextRenderer::font()).
     /// Default kDefaultFontPath.
     std::filesystem::path fontPath = kDefaultFontPath;

@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: MIT
+// Damaged and truncated sound files: one rule for every format, decoded whole and streamed.
+// The files are written here with libsndfile and then cut or overwritten.
+#include "audio_test_support.hpp"
+
+#include <e2d/audio/sound_data.hpp>
+#include <e2d/core/error.hpp>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <limits>
+
+namespace e2d::audio {
+namespace {
+
+using ::testing::HasSubstr;
+using namespace test;
+
+constexpr int kRate = 22050;
+constexpr double kSeconds = 4.0;
+
+std::filesystem::path oggTone(const std::string& name) {
+    return writeSound(name, SF_FORMAT_OGG | SF_FORMAT_VORBIS, 1, kRate, sine(440.0, kSeconds, kRate, 0.5f));
+}
+
+// Byte offsets of the Ogg pages ("OggS") of a file.
+std::vector<std::size_t> oggPages(const std::vector<char>& bytes) {
+    std::vector<std::size_t> pages;
+    for (std::size_t i = 0; i + 4 <= bytes.size(); ++i) {
+        if (std::memcmp(bytes.data() + i, "OggS", 4) == 0) {
+            pages.push_back(i);
+        }
+    }
+    return pages;
+}
+
+std::filesystem::path cutCopy(const std::filesystem::path& from, const std::string& name, std::size_t size) {
+    auto bytes = readBytes(from);
+    bytes.resize(size);
+    return writeBytes(name, bytes);
+}
+
+// The same bytes with `count` of them from `at` overwritten.
+std::filesystem::path damagedCopy(const std::filesystem::path& from, const std::string& name, std::size_t at,
+                                  std::size_t count) {
+    auto bytes = readBytes(from);
+    for (std::size_t i = at; i < at + count && i < bytes.size(); ++i) {
+        bytes[i] = '\x5a';
+    }
+    return writeBytes(name, bytes);
+}
+
+void expectRefused(const DecodeResult& result, const std::string& name, const std::string& reason) {
+    EXPECT_FALSE(result.ok());
+    EXPECT_TRUE(result.data.samples.empty());
+    EXPECT_THAT(result.error, HasSubstr(name));
+    EXPECT_THAT(result.error, HasSubstr(reason));
+}
+
+// libsndfile decodes a cut Ogg file as a shorter sound with no error (cut between two pages, it
+// even reports the shorter length as the file's): only the missing end-of-stream page shows it.
+// A damaged page makes it report the last page's length (0.37 s of 4 s here), and decode that.
+TEST(DamagedOgg, CutFilesAreRefusedWholeAndFromMemory) {
+    const auto full = oggTone("full.ogg");
+    const auto bytes = readBytes(full);
+    const auto pages = oggPages(bytes);
+    ASSERT_GE(pages.size(), 4u);
+    ASSERT_TRUE(decodeSoundFile(full).ok()) << decodeSoundFile(full).error;
+    const auto insidePage = cutCopy(full, "cut_inside.ogg", bytes.size() * 47 / 100);
+    expectRefused(decodeSoundFile(insidePage), insidePage.string(), "truncated: the file ends inside Ogg page");
+    const auto betweenPages = cutCopy(full, "cut_between.ogg", pages[pages.size() / 2]);
+    expectRefused(decodeSoundFile(betweenPages), betweenPages.string(),
+                  "truncated: the Ogg stream has no end-of-stream page (the file ends after page " +
+                      std::to_string(pages.size() / 2) + ", at byte " + std::to_string(pages[pages.size() / 2]) + ")");
+    const auto cut = readBytes(betweenPages);
+    expectRefused(decodeSoundMemory(std::as_bytes(std::span(cut)), "cut-in-memory.ogg"), "cut-in-memory.ogg",
+                  "end-of-stream");
+    // A tag some tool appended after the last page is no damage.
+    auto tagged = bytes;
+    tagged.insert(tagged.end(), 128, 'T');
+    EXPECT_TRUE(decodeSoundMemory(std::as_bytes(std::span(tagged)), "tagged.ogg").ok());
+}
+
+TEST(DamagedOgg, ADamagedMiddleIsRefusedWhole) {
+    const auto full = oggTone("full_mid.ogg");
+    const auto size = readBytes(full).size();
+    const auto damaged = damagedCopy(full, "damaged_mid.ogg", size / 2, 200);
+    const DecodeResult result = decodeSoundFile(damaged);
+    expectRefused(result, damaged.string(), "damaged: Ogg page 3 at byte 3446 fails its checksum");
+}
+
+TEST(DamagedStream, CutAndDamagedOggAreRefusedWhenLoadedAsStreams) {
+    Rig rig;
+    const auto full = oggTone("stream_full.ogg");
+    const auto size = readBytes(full).size();
+    const auto cut = cutCopy(full, "stream_cut.ogg", size * 47 / 100);
+    const auto damaged = damagedCopy(full, "stream_damaged.ogg", size / 2, 200);
+    const SoundId a = rig.mixer.load(cut, LoadMode::Stream);
+    const SoundId b = rig.mixer.load(damaged, LoadMode::Stream);
+    EXPECT_THAT(rig.mixer.soundInfo(a).error, HasSubstr("truncated: the file ends inside Ogg page"));
+    EXPECT_THAT(rig.mixer.soundInfo(b).error, HasSubstr("damaged: Ogg page 3 at byte 3446 fails its checksum"));
+    EXPECT_TRUE(rig.mixer.play(a).isNull());
+    EXPECT_TRUE(rig.mixer.play(b).isNull());
+    EXPECT_EQ(rig.count(core::LogLevel::Error, cut.string()), 1);
+    EXPECT_EQ(rig.count(core::LogLevel::Error, damaged.string()), 1);
+}
+
+// Damage a format shows only while decoding (FLAC frames after a damaged one) is found while the
+// stream plays: it stops there, logged once per sound however many voices meet it.
+TEST(DamagedStream, DamageFoundWhilePlayingStopsTheStreamWithOneMessage) {
+    Rig rig;
+    const auto full = writeSound("stream_full.flac", SF_FORMAT_FLAC | SF_FORMAT_PCM_16, 1, kRate,
+                                 sine(440.0, kSeconds, kRate, 0.5f));
+    const auto damaged = damagedCopy(full, "stream_damaged.flac", readBytes(full).size() / 2, 2000);
+    const SoundId music = rig.mixer.load(damaged, LoadMode::Stream);
+    ASSERT_TRUE(rig.mixer.soundInfo(music).ok()) << rig.mixer.soundInfo(music).error;
+    const VoiceId a = rig.mixer.play(music);
+    const VoiceId b = rig.mixer.play(music);
+    ASSERT_FALSE(a.isNull());
+    ASSERT_FALSE(b.isNull());
+    const auto out = rig.render(kSeconds + 0.5, 0.05);
+    EXPECT_EQ(rig.mixer.state(a), VoiceState::Stopped);
+    EXPECT_EQ(rig.count(core::LogLevel::Error, "stream stopped: '" + damaged.string() + "': damaged or truncated"), 1);
+    EXPECT_EQ(rig.messages.size(), 1u);
+    // It played up to the damage, then nothing.
+    EXPECT_GT(rms(out, 0, kRate).left, 0.1);
+    EXPECT_EQ(rms(out, out.size() / 2 - 4800, out.size() / 2).left, 0.0);
+    // Whole, the same file is refused with the same words.
+    expectRefused(decodeSoundFile(damaged), damaged.string(), "damaged or truncated");
+}
+
+// The rule is the one WAV and FLAC already followed: the same files cut, whole and streamed.
+TEST(DamagedStream, CutWavAndFlacFollowTheSameRule) {
+    for (const int format : {SF_FORMAT_WAV | SF_FORMAT_PCM_16, SF_FORMAT_FLAC | SF_FORMAT_PCM_16}) {
+        Rig rig;
+        const std::string ext = (format & SF_FORMAT_TYPEMASK) == SF_FORMAT_WAV ? ".wav" : ".flac";
+        const auto full = writeSound("full" + ext, format, 1, kRate, sine(440.0, kSeconds, kRate, 0.5f));
+        const auto cut = cutCopy(full, "cut" + ext, readBytes(full).size() / 2);
+        expectRefused(decodeSoundFile(cut), cut.string(), "truncated");
+        const SoundId stream = rig.mixer.load(cut, LoadMode::Stream);
+        if (rig.mixer.soundInfo(stream).ok()) {
+            rig.mixer.play(stream);
+            rig.render(kSeconds, 0.05);
+        }
+        EXPECT_EQ(rig.count(core::LogLevel::Error, cut.string()), 1) << ext;
+        EXPECT_EQ(rig.count(core::LogLevel::Error, "truncated"), 1) << ext;
+    }
+}
+
+// Float samples: a float WAV whose bytes were overwritten decodes to values like 4e12, and NaN or
+// infinity make the whole mix non-finite. Such data is refused like a truncated file.
+std::vector<float> toneWith(float bad, std::size_t at) {
+    auto samples = sine(440.0, 1.0, kRate, 0.5f);
+    samples[at] = bad;
+    return samples;
+}
+
+TEST(DamagedFloat, HugeAndNonFiniteSamplesAreRefusedWhole) {
+    const float kInf = std::numeric_limits<float>::infinity();
+    const float kNan = std::numeric_limits<float>::quiet_NaN();
+    const auto huge = writeSound("huge.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, kRate, toneWith(4e12f, 11025));
+    expectRefused(decodeSoundFile(huge), huge.string(), "damaged: sample 4e+12 at 0.50 s (frame 11025) is beyond +-16");
+    const auto nan = writeSound("nan.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, kRate, toneWith(kNan, 100));
+    expectRefused(decodeSoundFile(nan), nan.string(), "(frame 100) is not finite");
+    const auto inf = writeSound("inf.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, kRate, toneWith(-kInf, 7));
+    expectRefused(decodeSoundFile(inf), inf.string(), "damaged: sample -inf at 0.00 s (frame 7) is not finite");
+    // Float files may go a little over full scale: that is not damage.
+    const auto hot = writeSound("hot.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, kRate, toneWith(1.5f, 11025));
+    EXPECT_TRUE(decodeSoundFile(hot).ok()) << decodeSoundFile(hot).error;
+    DecodeLimits strict;
+    strict.maxSampleMagnitude = 1.0f;
+    EXPECT_THAT(decodeSoundFile(hot, strict).error, HasSubstr("beyond +-1 (DecodeLimits::maxSampleMagnitude)"));
+}
+
+TEST(DamagedFloat, AStreamStopsAtTheDamageAndTheMixStaysFinite) {
+    Rig rig;
+    const auto path = writeSound("nan_stream.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, kRate,
+                                 toneWith(std::numeric_limits<float>::quiet_NaN(), 15000));
+    const SoundId sound = rig.mixer.load(path, LoadMode::Stream);
+    ASSERT_TRUE(rig.mixer.soundInfo(sound).ok());
+    rig.mixer.play(sound);
+    const auto out = rig.render(1.2, 0.05);
+    for (float s : out) {
+        ASSERT_TRUE(std::isfinite(s));
+    }
+    EXPECT_EQ(rig.count(core::LogLevel::Error, "stream stopped: '" + path.string() + "': damaged: sample nan"), 1);
+}
+
+TEST(DamagedFloat, AddRefusesSamplesThatAreNotFinite) {
+    Rig rig;
+    SoundData data{1, kRate, toneWith(std::numeric_limits<float>::quiet_NaN(), 3)};
+    try {
+        rig.mixer.add(std::move(data), "generated");
+        FAIL() << "expected core::Error";
+    } catch (const core::Error& e) {
+        EXPECT_STREQ(e.what(), "audio::Mixer::add(): data.samples[3] must be finite and within +-16 "
+                               "(limits.maxSampleMagnitude), got nan");
+    }
+    MixerDef def;
+    def.limits.maxSampleMagnitude = 0.5f;
+    EXPECT_THROW(Rig strict(def), core::Error);
+}
+
+} // namespace
+} // namespace e2d::audio
