@@ -1062,7 +1062,7 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     if (s.name.empty()) {
         fail("name", "must not be empty");
     }
-    s.family = root.choice("family", {"stacking", "friction", "restitution", "conservation", "hard"});
+    s.family = root.choice("family", {"stacking", "friction", "restitution", "conservation", "joints", "hard"});
     s.description = root.string("description", "");
     s.measures = root.string("measures", "");
     s.duration = root.numberAbove("duration", 5.0f, 0.0f, true);

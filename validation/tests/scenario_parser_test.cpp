@@ -135,7 +135,7 @@ TEST(ScenarioParser, RejectsBadDocuments) {
               "family: not valid JSON at line 1, column 12: syntax error while parsing value - "
               "unexpected end of input; expected '[', '{', or a literal");
     EXPECT_EQ(errorOf(R"({"bodies": [{"shape": {"type": "circle", "radius": 1}}]})"),
-              "family: required field is missing (one of stacking, friction, restitution, conservation or hard)");
+              "family: required field is missing (one of stacking, friction, restitution, conservation, joints or hard)");
     EXPECT_EQ(errorOf(R"({"family": "hard"})"),
               "bodies: the scene has no bodies (give bodies or generators)");
     EXPECT_EQ(errorOf(R"({"family": "hard", "bodies": [{"angle": 1, "angleDeg": 2,
