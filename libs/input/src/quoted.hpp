@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <e2d/core/utf8.hpp>
+#include <e2d/core/printable.hpp>
 
 #include <cstddef>
 #include <string>
