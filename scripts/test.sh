@@ -95,7 +95,10 @@ if cmake --preset fuzz >"$logs/fuzz-configure.log" 2>&1 && cmake --build --prese
     [ -d "$root/$dir/fuzz/corpus/$target" ] && seeds+=("$root/$dir/fuzz/corpus/$target")
     # The scenario reader's fuzzers also start from every shipped scenario.
     [ "$dir" = validation ] && seeds+=("$root/validation/scenarios")
-    "$fuzzer" -max_total_time="$fuzz_seconds" -print_final_stats=1 \
+    # A dictionary of the format's tokens, when the fuzzer has one (<dir>/fuzz/fuzz_<name>.dict).
+    local -a dict=()
+    [ -f "$root/$dir/fuzz/$target.dict" ] && dict=(-dict="$root/$dir/fuzz/$target.dict")
+    "$fuzzer" -max_total_time="$fuzz_seconds" -print_final_stats=1 "${dict[@]}" \
       -artifact_prefix="$logs/$target-" "$corpus" "${seeds[@]}" >"$logs/$target.log" 2>&1
     echo $? >"$logs/$target.status"
   }

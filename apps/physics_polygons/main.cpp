@@ -146,10 +146,8 @@ private:
     void fire() {
         auto& object = createGameObject();
         object.setPosition(kCannon + aimDirection() * 1.2f);
-        physics::RigidbodyDef body;
-        body.isBullet = true;
-        body.linearVelocity = aimDirection() * kProjectileSpeed;
-        object.addComponent<physics::Rigidbody>(body);
+        object.addComponent<physics::Rigidbody>(physics::RigidbodyDef{
+            .linearVelocity = aimDirection() * kProjectileSpeed, .isBullet = true});
         object.addComponent<physics::Collider>(
             physics::Circle{{0.0f, 0.0f}, 0.2f},
             physics::ColliderDef{.density = 8.0f, .restitution = 0.3f});

@@ -56,7 +56,7 @@ private:
 int main() {
     const std::filesystem::path config = std::filesystem::temp_directory_path() / "e2d_consumer_engine.txt";
     std::ofstream(config) << "firstScene = FallScene\nwindowWidth = 64\nwindowHeight = 64\n"
-                             "referenceWindowWidth = 16\nreferenceWindowHeight = 16\n";
+                             "referenceWindowWidth = 16\nreferenceWindowHeight = 16\nunitsPerMetre = 1\n";
     e2d::engine::Game game;
     bool failed = false;
     game.scenes().add("FallScene", [&failed] { return std::make_unique<FallScene>(failed); });

@@ -3,7 +3,7 @@
 // for scenes small enough to step in a fuzzer (at most kMaxFuzzBodies bodies and kMaxFuzzSteps steps),
 // one baseline run on Box2D and on each e2d mode, the checks evaluated and both reports written.
 // What must hold, else abort:
-// - the reader throws ScenarioError and nothing else, with a message that names a place;
+// - the reader throws ScenarioError and nothing else, with a printable message that names a place;
 // - a scene the reader accepts is one e2d builds and steps: an e2d run never fails (the schema
 //   refuses what e2d would refuse, naming the limit), and a Box2D run fails only with the
 //   harness's own "cannot build" reason, never by an abort inside Box2D;
@@ -13,6 +13,9 @@
 #include "report.hpp"
 #include "runner.hpp"
 #include "scenario_parser.hpp"
+
+#include <e2d/core/printable.hpp>
+#include <e2d/core/utf8.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -53,6 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const ScenarioError& e) {
         const std::string message = e.what();
         check(!message.empty() && message.find(": ") != std::string::npos, "unplaced error: " + message);
+        check(e2d::core::isPrintable(message), "unescaped bytes in: " + e2d::core::printable(message));
         return 0;
     }
     // Anything else thrown escapes and libFuzzer reports it.

@@ -66,7 +66,7 @@ fs::path resolve(const std::string& fileOrName, const fs::path& dir) {
 // Family order of the report, then names in natural order (stack_5 before stack_10).
 void sortScenarios(std::vector<Scenario>& scenarios) {
     const std::vector<std::string> families{"stacking", "friction", "restitution", "conservation",
-                                            "hard"};
+                                            "joints", "hard"};
     auto rank = [&](const Scenario& s) {
         return std::find(families.begin(), families.end(), s.family) - families.begin();
     };

@@ -59,7 +59,9 @@ void Pushes::apply(double time, const std::function<void(int, glm::vec2)>& force
 
 std::string EngineConfig::family() const {
     if (engine == "e2d") {
-        return "e2d " + solver + " " + collision;
+        // The joint models other than the default are curves of their own (joints family).
+        const std::string joints = solver == "soft" && jointSolver != "soft" ? " joints " + jointSolver : "";
+        return "e2d " + solver + " " + collision + joints;
     }
     return engine;
 }
@@ -69,7 +71,7 @@ std::string EngineConfig::describe() const {
     const char* on = "on";
     const char* off = "off";
     if (engine == "e2d" && solver == "soft") {
-        out << "sub-steps " << subSteps << ", extra relax " << relaxIterations;
+        out << "sub-steps " << subSteps << ", extra relax " << relaxIterations << ", joints " << jointSolver;
     } else {
         out << "vel " << velocityIterations << ", pos " << positionIterations;
     }

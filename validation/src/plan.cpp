@@ -130,6 +130,18 @@ std::vector<RunSpec> makePlan(const std::vector<Scenario>& scenarios,
             for (auto& [label, config] : sweepPoints(base, level)) {
                 plan.push_back({i, RunRole::Sweep, config, label});
             }
+            // The joints family sweeps each joint model of the soft step (one collision
+            // algorithm: they differ in joints only): the error-against-cost curves of the
+            // report's joints plot.
+            if (s.family == "joints" && base.engine == "e2d" && base.solver == "soft" && base.collision == "sat") {
+                for (const char* model : {"direct", "gauss-seidel"}) {
+                    EngineConfig other = base;
+                    other.jointSolver = model;
+                    for (auto& [label, config] : sweepPoints(other, level)) {
+                        plan.push_back({i, RunRole::Sweep, config, label});
+                    }
+                }
+            }
             // Feature switches on one collision algorithm per mode: SAT against GJK is already
             // its own curve.
             if (features && base.collision != "gjk") {

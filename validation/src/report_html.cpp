@@ -206,7 +206,7 @@ void familySections(std::ostringstream& o, const Report& r) {
     const std::vector<std::string> families = engineFamilies(r);
     const auto curves = sweepCurves(r);
     const auto costs = featureCosts(r);
-    std::vector<std::string> order{"stacking", "friction", "restitution", "conservation", "hard"};
+    std::vector<std::string> order{"stacking", "friction", "restitution", "conservation", "joints", "hard"};
     o << "<h2>Speed against error, per family</h2>\n<p class=\"note\">Each point sums the median "
          "ms/step over the family's swept scenarios (x) and averages their error as a fraction of "
          "tolerance (y; 1 = at the limit, lower is better); points are the sweep of solver effort "

@@ -43,6 +43,7 @@ json configJson(const EngineConfig& c) {
         if (c.solver == "soft") {
             j["subSteps"] = c.subSteps;
             j["relaxIterations"] = c.relaxIterations;
+            j["jointSolver"] = c.jointSolver;
         }
     }
     if (c.engine == "box2d" || c.solver == "classic") {

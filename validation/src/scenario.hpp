@@ -23,6 +23,9 @@ struct EngineConfig {
     int positionIterations = 3;     ///< Box2D and e2d classic
     int subSteps = 4;               ///< e2d soft
     int relaxIterations = 0;        ///< e2d soft: extra relax iterations per sub-step
+    /// e2d soft: the joint model, physics::SolverDef::jointSolver: "soft" (the default, Box2D
+    /// v3's), "gauss-seidel" or "direct"
+    std::string jointSolver = "soft";
     float speculativeDistance = 0.02f; ///< e2d, metres
     bool continuous = true;         ///< CCD for fast/bullet bodies
     bool sleeping = true;
@@ -97,7 +100,7 @@ struct Check {
 /// One scene, what it measures and how it is judged.
 struct Scenario {
     std::string name;
-    std::string family;            ///< stacking, friction, restitution, conservation, hard
+    std::string family;            ///< stacking, friction, restitution, conservation, joints, hard
     std::string description;
     std::string measures;          ///< the quantity that matters, in words
     std::string file;              ///< where it was read from

@@ -3,6 +3,8 @@
 
 #include "generators.hpp"
 
+#include <e2d/core/json_scan.hpp>
+#include <e2d/core/printable.hpp>
 #include <e2d/physics/constants.hpp>
 
 #include <nlohmann/json.hpp>
@@ -33,8 +35,10 @@ std::string typeName(const json& value) {
     return value.type_name();
 }
 
+// Keys and strings quoted from the file may hold any character JSON can escape (a NUL would
+// cut what() short): the message is made printable here, once.
 [[noreturn]] void fail(const std::string& path, const std::string& message) {
-    throw ScenarioError(path + ": " + message);
+    throw ScenarioError(core::printable(path + ": " + message));
 }
 
 std::string join(const std::string& path, const std::string& key) {
@@ -826,13 +830,7 @@ private:
 [[noreturn]] void failJson(std::string_view text) {
     ErrorLocator locator;
     static_cast<void>(json::sax_parse(text.begin(), text.end(), &locator));
-    const std::size_t start = std::min(locator.position(), text.size());
-    std::size_t line = 1;
-    std::size_t column = 1;
-    for (std::size_t i = 0; i < start; ++i) {
-        column = text[i] == '\n' ? 1 : column + 1;
-        line += text[i] == '\n' ? 1 : 0;
-    }
+    const core::TextPosition at = core::positionOf(text, locator.position());
     std::string reason = locator.message();
     // nlohmann's parse errors repeat the place; out-of-range numbers do not have one.
     const std::string lead = "parse error at line ";
@@ -841,8 +839,9 @@ private:
             reason = reason.substr(colon + 2);
         }
     }
-    fail(locator.path(), "not valid JSON at line " + std::to_string(line) + ", column " +
-                             std::to_string(column) + ": " + reason);
+    // The reason ends quoting the bytes nlohmann read, which need not be text (fail() escapes).
+    fail(locator.path(), "not valid JSON at line " + std::to_string(at.line) + ", column " +
+                             std::to_string(at.column) + ": " + reason);
 }
 
 } // namespace
@@ -1043,6 +1042,13 @@ scenes::JointDesc parseJoint(const json& value, const std::string& path, const s
 }
 
 Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
+    // Printing or copying a value recurses once per level: bound the depth before parsing.
+    if (const auto deep = core::findJsonNestingBeyond(text)) {
+        const core::TextPosition at = core::positionOf(text, *deep);
+        fail("(root)", "arrays and objects nest deeper than " + std::to_string(core::kMaxJsonDepth) +
+                           " levels (line " + std::to_string(at.line) + ", column " + std::to_string(at.column) +
+                           "); a scenario needs 6");
+    }
     json document;
     try {
         document = json::parse(text.begin(), text.end());
@@ -1056,7 +1062,7 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     if (s.name.empty()) {
         fail("name", "must not be empty");
     }
-    s.family = root.choice("family", {"stacking", "friction", "restitution", "conservation", "hard"});
+    s.family = root.choice("family", {"stacking", "friction", "restitution", "conservation", "joints", "hard"});
     s.description = root.string("description", "");
     s.measures = root.string("measures", "");
     s.duration = root.numberAbove("duration", 5.0f, 0.0f, true);
@@ -1120,6 +1126,10 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
 }
 
 Scenario loadScenario(const std::filesystem::path& file) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(file, ec)) {
+        throw ScenarioError(file.string() + ": is a directory, not a scenario file");
+    }
     std::ifstream in(file, std::ios::binary);
     if (!in) {
         throw ScenarioError(file.string() + ": cannot open the file");

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace e2d::validation {
@@ -134,7 +135,7 @@ TEST(ScenarioParser, RejectsBadDocuments) {
               "family: not valid JSON at line 1, column 12: syntax error while parsing value - "
               "unexpected end of input; expected '[', '{', or a literal");
     EXPECT_EQ(errorOf(R"({"bodies": [{"shape": {"type": "circle", "radius": 1}}]})"),
-              "family: required field is missing (one of stacking, friction, restitution, conservation or hard)");
+              "family: required field is missing (one of stacking, friction, restitution, conservation, joints or hard)");
     EXPECT_EQ(errorOf(R"({"family": "hard"})"),
               "bodies: the scene has no bodies (give bodies or generators)");
     EXPECT_EQ(errorOf(R"({"family": "hard", "bodies": [{"angle": 1, "angleDeg": 2,
@@ -537,6 +538,53 @@ TEST(ScenarioParser, LoadPrefixesTheFileName) {
         FAIL() << "expected a ScenarioError";
     } catch (const ScenarioError& e) {
         EXPECT_THAT(e.what(), HasSubstr("/nonexistent/x.json: cannot open the file"));
+    }
+}
+
+TEST(ScenarioParser, DeepNestingIsRefusedBeforeParsingNamingTheDepth) {
+    // 100 000 levels used to overflow the stack (nlohmann copies and prints values recursively).
+    const int n = 100000;
+    const std::string deep = std::string(n, '[') + std::string(n, ']');
+    EXPECT_EQ(errorOf(deep),
+              "(root): arrays and objects nest deeper than 256 levels (line 1, column 257); a scenario needs 6");
+    // In a field the parser never reads, and cut off mid-file.
+    EXPECT_THAT(errorOf(scene(R"(, "notes": )" + deep, R"({"type": "circle", "radius": 1})")),
+                HasSubstr("(root): arrays and objects nest deeper than 256 levels (line 1, column 303)"));
+    EXPECT_THAT(errorOf("{\"family\": \"hard\", \"x\": " + deep.substr(0, n / 3)),
+                HasSubstr("nest deeper than 256 levels"));
+    const auto file = std::filesystem::temp_directory_path() / "e2d_deep_scenario.json";
+    {
+        std::ofstream out(file);
+        out << deep;
+    }
+    try {
+        (void)loadScenario(file);
+        FAIL() << "expected a ScenarioError";
+    } catch (const ScenarioError& e) {
+        EXPECT_EQ(std::string(e.what()), file.string() + ": (root): arrays and objects nest deeper than 256 "
+                                                         "levels (line 1, column 257); a scenario needs 6");
+    }
+}
+
+TEST(ScenarioParser, BytesQuotedFromTheFileAreEscapedWhenNotPrintable) {
+    // Ill-formed UTF-8 in a string: nlohmann's reason quotes the raw bytes.
+    const std::string bad = errorOf("{\"family\": \"\xFF\xC0\"}");
+    EXPECT_THAT(bad, StartsWith("family: not valid JSON at line 1, column 13: "));
+    EXPECT_THAT(bad, HasSubstr("\\xff"));
+    EXPECT_EQ(bad.find('\xFF'), std::string::npos) << bad;
+    // A key JSON escapes a NUL and a control into: named whole, escaped.
+    EXPECT_EQ(errorOf(scene(R"(, "a\u0000b\u0007": 1)", R"({"type": "circle", "radius": 1})")),
+              "a\\x00b\\x07: unknown field");
+}
+
+TEST(ScenarioParser, ADirectoryIsNamedAsOne) {
+    const auto dir = std::filesystem::temp_directory_path() / "e2d_scenario_dir.json";
+    std::filesystem::create_directories(dir);
+    try {
+        (void)loadScenario(dir);
+        FAIL() << "expected a ScenarioError";
+    } catch (const ScenarioError& e) {
+        EXPECT_EQ(std::string(e.what()), dir.string() + ": is a directory, not a scenario file");
     }
 }
 

@@ -16,6 +16,7 @@
 #include <e2d/core/system.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -24,22 +25,19 @@ namespace {
 constexpr const char* kConfigText = R"(#SCENE
 firstScene = Orbit
 
-#DISPLAY
-referenceWindowWidth = 1024
-referenceWindowHeight = 624
-windowWidth = 1024
-windowHeight = 624
-screenFitMode = widthFit
-windowMode = windowed
-windowTitle = e2d smoke
-textureFilteringMode = nearest
-maxCameraDepth = 1000
-
-#PHYSICS
+#LOOP
 fixedTimestep = 0.01
 maxStepsPerFrame = 4
 randomSeed = 42
 )";
+
+// The settings this program reads with core's `key = value` reader.
+struct SmokeConfig {
+    std::string firstScene;
+    double fixedTimestep = 1.0 / 60.0;
+    int maxStepsPerFrame = 5;
+    std::uint64_t randomSeed = 0;
+};
 
 // Turns its object at a fixed rate, in fixed steps.
 class Spinner : public e2d::core::Component {
@@ -106,14 +104,19 @@ int main() {
     using namespace e2d::core;
     Logger logger(LogLevel::Info);
 
-    const ConfigResult parsed = parseConfig(kConfigText, "smoke.cfg");
+    SmokeConfig config;
+    ConfigReader reader;
+    reader.add("firstScene", config.firstScene);
+    reader.add("fixedTimestep", config.fixedTimestep, ConfigBounds{0.0, 1.0, true});
+    reader.add("maxStepsPerFrame", config.maxStepsPerFrame, ConfigBounds::atLeast(1.0));
+    reader.add("randomSeed", config.randomSeed);
+    const ConfigReport parsed = reader.read(kConfigText, "smoke.cfg");
     for (const auto& d : parsed.diagnostics) {
         logger.warning(d.toString());
     }
     if (parsed.hasErrors()) {
         return 1;
     }
-    const Config& config = parsed.config;
 
     SceneRegistry registry;
     E2D_REGISTER_SCENE(registry, OrbitScene);

@@ -150,7 +150,12 @@ SceneHost& Scene::requireHost(const char* function) const {
     return *host_;
 }
 
-void Scene::throwNoSystem(const std::type_info& type) {
+void Scene::throwNoSystem(const std::type_info& type) const {
+    if (host_ == nullptr) {
+        throw Error("core::Scene::system(): the scene has no host yet to look up " + detail::demangledName(type) +
+                    " in (a scene's constructor runs before its host attaches: look systems up in onInitialize() "
+                    "or later)");
+    }
     throw Error(std::string("core::Scene::system(): no system of type ") + detail::demangledName(type) +
                 " is registered with the scene's host");
 }

@@ -14,6 +14,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -99,19 +100,17 @@ private:
     std::string name_;
 };
 
-class GameLoopTest : public testing::Test {
+// A director with the two scenes and a physics-like system, on a manual clock.
+class LoopParts : public testing::Test {
 protected:
-    GameLoopTest()
-        : logger(LogLevel::Off), director(registry, logger), stepper(0.25, 3), clock([this] { return now; }),
-          loop(director, stepper, clock) {
+    LoopParts() : logger(LogLevel::Off), director(registry, logger), stepper(0.25, 3), clock([this] { return now; }) {
         gCalls = &calls;
         FirstScene::leaveOnUpdate = false;
         registry.add<FirstScene>("First");
         registry.add<SecondScene>("Second");
         director.addSystem(physics);
-        director.addSystem(renderer);
     }
-    ~GameLoopTest() override { gCalls = nullptr; }
+    ~LoopParts() override { gCalls = nullptr; }
 
     std::vector<std::string> calls;
     double now = 0.0;
@@ -121,8 +120,14 @@ protected:
     FixedStepper stepper;
     Clock clock;
     TracingSystem physics{"physics"};
+};
+
+class GameLoopTest : public LoopParts {
+protected:
+    GameLoopTest() { director.addSystem(renderer); }
+
     TracingSystem renderer{"renderer"};
-    GameLoop loop;
+    GameLoop loop{director, stepper, clock, e2d::core::GameLoopDef{.maxFrameTime = 100.0}};
 };
 
 } // namespace
@@ -183,9 +188,12 @@ TEST_F(GameLoopTest, SceneChangeHappensAtTheStartOfTheNextFrame) {
     const FrameInfo info = loop.frame();
     EXPECT_TRUE(info.sceneChanged);
     EXPECT_EQ(director.sceneName(), "Second");
+    // The 0.125 s left from the first scene are forgotten: 0.125 s is no step yet.
     EXPECT_THAT(calls, ElementsAre("first.term", "physics.clear", "renderer.clear", "second.init", "physics.begin",
-                                   "renderer.begin", "physics.fixed", "renderer.fixed", "second.update",
-                                   "physics.update", "renderer.update", "physics.render", "renderer.render"));
+                                   "renderer.begin", "second.update", "physics.update", "renderer.update",
+                                   "physics.render", "renderer.render"));
+    EXPECT_EQ(info.fixedSteps, 0);
+    EXPECT_EQ(info.alpha, 0.5);
     // SecondScene asked to end the game.
     EXPECT_FALSE(loop.running());
 }
@@ -207,4 +215,113 @@ TEST_F(GameLoopTest, LoadingTimeIsNotGameTime) {
     loop.start("First");
     now += 0.25;
     EXPECT_EQ(loop.frame().dt, 0.25);
+}
+
+namespace {
+
+// Writes down what the loop tells its observer.
+class TracingObserver : public e2d::core::FrameObserver {
+public:
+    void frameStarted(std::int64_t index) override { record("frame " + std::to_string(index)); }
+    void phaseStarted(e2d::core::FramePhase phase) override { record("[" + name(phase)); }
+    void phaseEnded(e2d::core::FramePhase phase) override { record(name(phase) + "]"); }
+    void systemStarted(e2d::core::FramePhase, const System& system) override {
+        record(std::string("(") + (&system == watched ? "watched" : "other"));
+    }
+    void systemEnded(e2d::core::FramePhase, const System&) override { record(")"); }
+    void frameEnded(const FrameInfo& info) override { ended.push_back(info); }
+
+    static std::string name(e2d::core::FramePhase phase) {
+        switch (phase) {
+        case e2d::core::FramePhase::Begin: return "begin";
+        case e2d::core::FramePhase::FixedSteps: return "fixed";
+        case e2d::core::FramePhase::Update: return "update";
+        case e2d::core::FramePhase::Render: return "render";
+        }
+        return "?";
+    }
+    const System* watched = nullptr;
+    std::vector<FrameInfo> ended;
+};
+
+// A loop like an engine's: headless frames, a spike clamp, a frame limit, an observer.
+class EngineLoopTest : public LoopParts {
+protected:
+    EngineLoopTest() { observer.watched = &physics; }
+
+    TracingObserver observer;
+};
+
+} // namespace
+
+TEST_F(EngineLoopTest, AFrameLongerThanMaxFrameTimeCountsAsThatLongAndIsASpike) {
+    GameLoop loop(director, stepper, clock, {.maxFrameTime = 0.5});
+    loop.start("First");
+    now += 2.0; // a stall
+    const FrameInfo stalled = loop.frame();
+    EXPECT_TRUE(stalled.spike);
+    EXPECT_EQ(stalled.dt, 0.5);
+    EXPECT_EQ(stalled.fixedSteps, 2);
+    EXPECT_EQ(physics.lastDt, 0.5);
+    now += 0.25;
+    const FrameInfo next = loop.frame();
+    EXPECT_FALSE(next.spike);
+    EXPECT_EQ(next.fixedSteps, 1);
+}
+
+TEST_F(EngineLoopTest, FixedFrameTimeAndFrameLimitMakeAHeadlessRun) {
+    GameLoop loop(director, stepper, clock, {.fixedFrameTime = 0.25, .frameLimit = 3});
+    loop.start("First");
+    now += 50.0; // the clock is not read
+    loop.run();
+    EXPECT_EQ(loop.frames(), 3);
+    EXPECT_FALSE(loop.running());
+    EXPECT_EQ(std::count(calls.begin(), calls.end(), "physics.fixed"), 3);
+    EXPECT_EQ(physics.lastDt, 0.25);
+}
+
+TEST_F(EngineLoopTest, TheObserverSeesEveryPhaseAndEverySystemCallInOrder) {
+    GameLoop loop(director, stepper, clock, {.fixedFrameTime = 0.3, .observer = &observer});
+    loop.start("First");
+    calls.clear();
+    const FrameInfo info = loop.frame();
+    EXPECT_THAT(calls, ElementsAre("frame 0",                                                  //
+                                   "[begin", "(watched", "physics.begin", ")", "begin]",       //
+                                   "[fixed", "scene.fixed", "component.fixed", "(watched",     //
+                                   "physics.fixed", ")", "fixed]",                             //
+                                   "[update", "scene.update", "component.update", "(watched",  //
+                                   "physics.update", ")", "update]",                           //
+                                   "[render", "(watched", "physics.render", ")", "render]"));
+    ASSERT_EQ(observer.ended.size(), 1u);
+    EXPECT_EQ(observer.ended[0].index, 0);
+    EXPECT_EQ(observer.ended[0].fixedSteps, info.fixedSteps);
+    calls.clear();
+    loop.frame();
+    EXPECT_EQ(calls.front(), "frame 1");
+    EXPECT_EQ(observer.ended.back().index, 1);
+}
+
+TEST_F(EngineLoopTest, RenderDrawsTheLastFrameAgainWithItsAlpha) {
+    GameLoop loop(director, stepper, clock, {.maxFrameTime = 1.0, .fixedFrameTime = 0.375});
+    loop.start("First");
+    loop.frame();
+    calls.clear();
+    loop.render();
+    EXPECT_THAT(calls, ElementsAre("physics.render"));
+    EXPECT_EQ(physics.lastAlpha, 0.5);
+}
+
+TEST_F(EngineLoopTest, BadDefsAreRefusedNamingTheField) {
+    const auto errorOf = [&](e2d::core::GameLoopDef def) -> std::string {
+        try {
+            GameLoop loop(director, stepper, clock, def);
+        } catch (const e2d::core::Error& e) {
+            return e.what();
+        }
+        return "(no error)";
+    };
+    EXPECT_EQ(errorOf({.maxFrameTime = 0.0}), "core::GameLoop::GameLoop(): maxFrameTime must be > 0, got 0");
+    EXPECT_EQ(errorOf({.fixedFrameTime = -1.0}),
+              "core::GameLoop::GameLoop(): fixedFrameTime must be finite and >= 0, got -1");
+    EXPECT_EQ(errorOf({.frameLimit = -2}), "core::GameLoop::GameLoop(): frameLimit must be >= 0, got -2");
 }

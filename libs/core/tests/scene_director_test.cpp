@@ -205,3 +205,25 @@ TEST_F(SceneDirectorTest, IdKeptFromThePreviousSceneIsRefusedByTheNextOne) {
     EXPECT_FALSE(level.gameObjects()[0]->isPendingDestroy());
     EXPECT_EQ(level.find(fresh), level.gameObjects()[0]);
 }
+
+namespace {
+// Looks its system up in its constructor, before the director has attached itself as host.
+class EagerScene : public Scene {
+public:
+    EagerScene() { static_cast<void>(system<ClearCounter>()); }
+};
+} // namespace
+
+TEST_F(SceneDirectorTest, SystemLookupInASceneConstructorBlamesTheMissingHostNotTheSystem) {
+    registry.add<EagerScene>("Eager");
+    try {
+        director.start("Eager");
+        FAIL() << "system<ClearCounter>() in the constructor did not throw";
+    } catch (const e2d::core::Error& error) {
+        // The system is registered: the message must not say it is missing.
+        EXPECT_THAT(error.what(), testing::Not(HasSubstr("no system of type")));
+        EXPECT_THAT(error.what(), HasSubstr("core::Scene::system(): the scene has no host yet"));
+        EXPECT_THAT(error.what(), HasSubstr("ClearCounter"));
+        EXPECT_THAT(error.what(), HasSubstr("onInitialize()"));
+    }
+}

@@ -5,15 +5,16 @@
 #include <e2d/core/clock.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/core/fixed_stepper.hpp>
+#include <e2d/core/game_loop.hpp>
 #include <e2d/core/random.hpp>
 #include <e2d/core/scene.hpp>
 #include <e2d/core/scene_director.hpp>
 #include <e2d/engine/command_line.hpp>
 #include <e2d/engine/engine_config.hpp>
 #include <e2d/engine/game_system.hpp>
-#include <e2d/engine/input_script.hpp>
 #include <e2d/input/actions.hpp>
 #include <e2d/input/input.hpp>
+#include <e2d/input/input_script.hpp>
 #include <e2d/input/input_system.hpp>
 #include <e2d/input/names.hpp>
 #include <e2d/physics/physics_system.hpp>
@@ -21,18 +22,15 @@
 #include <e2d/render/renderer.hpp>
 #include <e2d/render/window.hpp>
 
-#include "debug_draw.hpp"
+#include "frame_systems.hpp"
 #include "game_state.hpp"
 #include "profile_overlay.hpp"
+#include "profile_recorder.hpp"
 
-#include <GLFW/glfw3.h>
-
-#include <algorithm>
-#include <array>
-#include <chrono>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <memory>
 #include <optional>
 #include <string>
 #include <system_error>
@@ -51,26 +49,6 @@ constexpr int kExitNoDisplay = 3;
 /// Frame time of `--frames` runs.
 constexpr double kHeadlessFrameTime = 1.0 / 60.0;
 
-using Stopwatch = std::chrono::steady_clock;
-
-double msSince(Stopwatch::time_point start) {
-    return std::chrono::duration<double, std::milli>(Stopwatch::now() - start).count();
-}
-
-render::ScreenFit toScreenFit(core::ScreenFitMode mode) {
-    switch (mode) {
-    case core::ScreenFitMode::Expand:
-        return render::ScreenFit::Expand;
-    case core::ScreenFitMode::WidthFit:
-        return render::ScreenFit::WidthFit;
-    case core::ScreenFitMode::HeightFit:
-        return render::ScreenFit::HeightFit;
-    case core::ScreenFitMode::BestFit:
-        return render::ScreenFit::BestFit;
-    }
-    return render::ScreenFit::BestFit;
-}
-
 /// The executable's folder (Linux: /proc/self/exe), else argv[0]'s.
 std::filesystem::path programFolder(const char* argv0) {
     std::error_code ec;
@@ -79,138 +57,6 @@ std::filesystem::path programFolder(const char* argv0) {
         return self.parent_path();
     }
     return argv0 != nullptr ? std::filesystem::path(argv0).parent_path() : std::filesystem::path();
-}
-
-/// A scripted input resolved to what is pressed or moved.
-struct ScriptTarget {
-    enum class Kind { Key, Mouse, PadButton, PadAxis, Cursor };
-    Kind kind = Kind::Key;
-    int code = 0;
-    /// PadButton, PadAxis: the gamepad slot.
-    int slot = 0;
-    /// Move: the cursor position, or the axis value in GLFW's range.
-    float x = 0.0f;
-    float y = 0.0f;
-};
-
-/// Whether a script names a gamepad button or axis (it then drives scripted gamepads, and the
-/// real joysticks are not read).
-bool scriptUsesGamepad(const InputScript& script) {
-    return std::any_of(script.events.begin(), script.events.end(), [](const ScriptEvent& e) {
-        return e.target.rfind("button", 0) == 0 || e.target.rfind("axis", 0) == 0;
-    });
-}
-
-/// The gamepads an input script drives: a snapshot per slot, fed to Input on change.
-struct ScriptedPads {
-    std::array<input::JoystickSnapshot, input::kMaxGamepads> pads{};
-    std::array<bool, input::kMaxGamepads> used{};
-    std::array<bool, input::kMaxGamepads> changed{};
-
-    void use(int slot) {
-        const auto s = static_cast<std::size_t>(slot);
-        if (!used[s]) {
-            used[s] = true;
-            changed[s] = true;
-            input::JoystickSnapshot& pad = pads[s];
-            pad.present = true;
-            pad.gamepad = true;
-            pad.guid = "00000000000000000000000000000000";
-            pad.name = "e2d input script";
-            pad.axes.fill(0.0f);
-            pad.axes[GLFW_GAMEPAD_AXIS_LEFT_TRIGGER] = -1.0f; // released, as GLFW reports it
-            pad.axes[GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER] = -1.0f;
-        }
-    }
-    void button(int slot, int code, bool down) {
-        const auto s = static_cast<std::size_t>(slot);
-        if (code == input::kGamepadButtonLeftTrigger || code == input::kGamepadButtonRightTrigger) {
-            const int axis = code == input::kGamepadButtonLeftTrigger ? GLFW_GAMEPAD_AXIS_LEFT_TRIGGER
-                                                                      : GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
-            pads[s].axes[static_cast<std::size_t>(axis)] = down ? 1.0f : -1.0f;
-        } else {
-            pads[s].buttons[static_cast<std::size_t>(code)] = down ? 1 : 0;
-        }
-        changed[s] = true;
-    }
-    void axis(int slot, int code, float raw) {
-        pads[static_cast<std::size_t>(slot)].axes[static_cast<std::size_t>(code)] = raw;
-        changed[static_cast<std::size_t>(slot)] = true;
-    }
-    void feed(input::Input& input) {
-        for (int slot = 0; slot < input::kMaxGamepads; ++slot) {
-            if (changed[static_cast<std::size_t>(slot)]) {
-                input.handleJoystick(slot, pads[static_cast<std::size_t>(slot)]);
-                changed[static_cast<std::size_t>(slot)] = false;
-            }
-        }
-    }
-};
-
-/// Resolves an input-script target: an action's first key or mouse binding, or a binding text.
-ScriptTarget resolveTarget(const ScriptEvent& event, const InputScript& script, const input::ActionMap& actions) {
-    const auto fail = [&](const std::string& why) -> ScriptTarget {
-        throw core::Error(script.source + ":" + std::to_string(event.line) + ": " + why);
-    };
-    const auto fromBinding = [&](const input::Binding& b) -> std::optional<ScriptTarget> {
-        if (b.kind == input::BindingKind::Key) {
-            return ScriptTarget{ScriptTarget::Kind::Key, b.code};
-        }
-        if (b.kind == input::BindingKind::MouseButton) {
-            return ScriptTarget{ScriptTarget::Kind::Mouse, b.code};
-        }
-        return std::nullopt;
-    };
-    if (event.kind == ScriptEvent::Kind::Move) {
-        if (event.target == "mouse") {
-            return ScriptTarget{ScriptTarget::Kind::Cursor, 0, 0, event.x, event.y};
-        }
-        input::Binding axis;
-        try {
-            axis = input::parseBinding(event.target);
-        } catch (const core::Error& e) {
-            return fail(e.what());
-        }
-        if (axis.kind != input::BindingKind::GamepadAxis) {
-            return fail("move: '" + event.target + "' is not a gamepad axis (axis:leftx, axis@1:righttrigger)");
-        }
-        const float value = axis.inverted ? -event.x : event.x;
-        const bool trigger =
-            axis.code == GLFW_GAMEPAD_AXIS_LEFT_TRIGGER || axis.code == GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
-        if (trigger && value < 0.0f) {
-            char number[32];
-            std::snprintf(number, sizeof number, "%g", static_cast<double>(event.x));
-            return fail("move " + event.target + ": a trigger's value is in [0, 1], got " + number);
-        }
-        // GLFW reports a trigger from -1 (released) to 1.
-        return ScriptTarget{ScriptTarget::Kind::PadAxis, axis.code, std::max(axis.gamepad, 0),
-                            trigger ? 2.0f * value - 1.0f : value, 0.0f};
-    }
-    if (const input::ActionId id = actions.find(event.target); !id.isNull()) {
-        for (const input::Binding& b : actions.bindings(id)) {
-            if (auto t = fromBinding(b)) {
-                return *t;
-            }
-        }
-        return fail("action '" + event.target + "' has no keyboard or mouse-button binding to press");
-    }
-    if (event.target.find(':') == std::string::npos) {
-        return fail("'" + event.target + "' is not an action of the game (nor a binding such as key:space)");
-    }
-    input::Binding binding;
-    try {
-        binding = input::parseBinding(event.target);
-    } catch (const core::Error& e) {
-        return fail(e.what());
-    }
-    if (auto t = fromBinding(binding)) {
-        return *t;
-    }
-    if (binding.kind == input::BindingKind::GamepadButton) {
-        return ScriptTarget{ScriptTarget::Kind::PadButton, binding.code, std::max(binding.gamepad, 0), 0.0f, 0.0f};
-    }
-    return fail("'" + event.target + "': only key:, mouse: and button: bindings can be pressed (axes are moved: "
-                "'<frame> move " + event.target + " <value>')");
 }
 
 /// The systems of a running game and the objects they run, in construction order (so they are
@@ -228,6 +74,8 @@ struct Running {
     core::SceneDirector director;
     input::InputSystem inputSystem;
     detail::ProfileOverlay overlay;
+    detail::FrameStart frameStart;
+    detail::FrameEnd frameEnd;
 
     Running(detail::GameState& state, const render::WindowDef& windowDef, const render::RendererDef& rendererDef,
             const audio::MixerDef& mixerDef, const core::SceneRegistry& scenes, std::uint64_t seed)
@@ -236,13 +84,24 @@ struct Running {
           physics(makeWorldDef(state.config), static_cast<float>(state.config.unitsPerMetre)), random(seed),
           game(state), director(scenes, *state.logger),
           inputSystem(input, director, &actions, input::InputSystemDef{false, state.config.keyRepeat}),
-          overlay(renderSystem, *state.profile, static_cast<float>(state.config.maxCameraDepth)) {}
+          overlay(renderSystem, *state.profile, static_cast<float>(state.config.maxCameraDepth)), frameStart(state),
+          frameEnd(state) {
+        state.window = &window;
+        state.renderer = &renderer;
+        state.renderSystem = &renderSystem;
+        state.input = &input;
+        state.actions = &actions;
+        state.audio = &audio;
+        state.physics = &physics;
+        state.random = &random;
+        state.director = &director;
+        state.overlay = &overlay;
+    }
 
     input::InputDef inputDef(const detail::GameState& state) {
         input::InputDef def;
         def.window = window.handle();
         def.logger = state.logger;
-        def.pollGamepads = !state.scriptedGamepads;
         // Window pixels (top-left origin) -> framebuffer pixels (bottom-left) -> world, through
         // the camera the last frame was drawn with.
         def.screenToWorld = [this](glm::vec2 screen) {
@@ -255,33 +114,52 @@ struct Running {
     }
 };
 
-} // namespace
+/// Everything run() reads before it opens anything: the command line, the configuration and
+/// the input script. `exitCode` is set (and the reason logged) when the game must not start.
+struct Startup {
+    std::string program;
+    CommandLine options;
+    input::InputScript script;
+    std::optional<int> exitCode;
+};
 
-Game::Game() = default;
-Game::~Game() = default;
+std::optional<int> keyOf(const std::string& name, const char* field, const std::string& configName,
+                         core::Logger& logger, Startup& startup) {
+    if (name.empty()) {
+        return std::nullopt;
+    }
+    const std::optional<int> key = input::keyFromName(name);
+    if (!key) {
+        logger.error(configName + ": " + field + ": unknown key name '" + name + "'");
+        startup.exitCode = kExitUsage;
+    }
+    return key;
+}
 
-int Game::run(int argc, char** argv, std::string_view defaultConfig) {
-    profile_ = {};
-    const std::string program = argc > 0 && argv[0] != nullptr ? std::filesystem::path(argv[0]).filename().string()
-                                                                 : std::string("game");
+Startup readStartup(int argc, char** argv, std::string_view defaultConfig, const core::SceneRegistry& scenes,
+                    core::Logger& logger, detail::GameState& state) {
+    Startup startup;
+    startup.program = argc > 0 && argv[0] != nullptr ? std::filesystem::path(argv[0]).filename().string()
+                                                     : std::string("game");
     std::vector<std::string_view> args;
     for (int i = 1; i < argc; ++i) {
         args.emplace_back(argv[i]);
     }
-    CommandLine options;
     try {
-        options = parseCommandLine(args);
+        startup.options = parseCommandLine(args);
     } catch (const core::Error& e) {
-        logger_.error(program + ": " + e.what() + "\n" + usage(program));
-        return kExitUsage;
+        logger.error(startup.program + ": " + e.what() + "\n" + usage(startup.program));
+        startup.exitCode = kExitUsage;
+        return startup;
     }
+    const CommandLine& options = startup.options;
     if (options.help) {
-        const std::string text = usage(program);
+        const std::string text = usage(startup.program);
         std::fwrite(text.data(), 1, text.size(), stdout);
-        return kExitOk;
+        startup.exitCode = kExitOk;
+        return startup;
     }
 
-    // Configuration.
     std::filesystem::path configPath = options.config;
     const bool required = !configPath.empty();
     if (!required) {
@@ -296,82 +174,72 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
     }
     EngineConfigResult loaded = loadEngineConfig(configPath, required);
     for (const std::string& w : loaded.warnings) {
-        logger_.warning(w);
+        logger.warning(w);
     }
     if (!loaded.errors.empty()) {
         for (const std::string& e : loaded.errors) {
-            logger_.error(e);
+            logger.error(e);
         }
-        logger_.error(program + ": the configuration has errors, not starting");
-        return kExitUsage;
+        logger.error(startup.program + ": the configuration has errors, not starting");
+        startup.exitCode = kExitUsage;
+        return startup;
     }
-    detail::GameState state;
     state.config = std::move(loaded.config);
-    state.logger = &logger_;
-    state.profile = &profile_;
     state.headless = options.frames.has_value();
+    state.frameLimit = options.frames.value_or(0);
+    state.screenshot = options.screenshot;
     state.debugDraw = state.config.debugDraw || options.debugDraw;
     const EngineConfig& config = state.config;
     const std::string configName = config.file.empty() ? std::string("configuration") : config.file.string();
 
-    if (config.firstScene.empty() || !scenes_.contains(config.firstScene)) {
+    if (config.firstScene.empty() || !scenes.contains(config.firstScene)) {
         std::string names;
-        for (const std::string& n : scenes_.names()) {
+        for (const std::string& n : scenes.names()) {
             names += (names.empty() ? "" : ", ") + n;
         }
-        logger_.error(configName + ": firstScene: " +
-                      (config.firstScene.empty() ? std::string("not set")
-                                                 : "no scene is registered as '" + config.firstScene + "'") +
-                      " (registered: " + (names.empty() ? std::string("none") : names) + ")");
-        return kExitUsage;
+        logger.error(configName + ": firstScene: " +
+                     (config.firstScene.empty() ? std::string("not set")
+                                                : "no scene is registered as '" + config.firstScene + "'") +
+                     " (registered: " + (names.empty() ? std::string("none") : names) + ")");
+        startup.exitCode = kExitUsage;
+        return startup;
     }
-    std::optional<int> profileKey;
-    if (!config.profileKey.empty()) {
-        profileKey = input::keyFromName(config.profileKey);
-        if (!profileKey) {
-            logger_.error(configName + ": profileKey: unknown key name '" + config.profileKey + "'");
-            return kExitUsage;
-        }
+    state.profileKey = keyOf(config.profileKey, "profileKey", configName, logger, startup);
+    state.debugKey = keyOf(config.debugDrawKey, "debugDrawKey", configName, logger, startup);
+    if (startup.exitCode) {
+        return startup;
     }
-    std::optional<int> debugKey;
-    if (!config.debugDrawKey.empty()) {
-        debugKey = input::keyFromName(config.debugDrawKey);
-        if (!debugKey) {
-            logger_.error(configName + ": debugDrawKey: unknown key name '" + config.debugDrawKey + "'");
-            return kExitUsage;
-        }
-    }
-    InputScript script;
     if (!options.inputScript.empty()) {
         try {
-            script = loadInputScript(options.inputScript);
+            startup.script = input::loadInputScript(options.inputScript);
         } catch (const core::Error& e) {
-            logger_.error(e.what());
-            return kExitUsage;
+            logger.error(e.what());
+            startup.exitCode = kExitUsage;
         }
     }
+    return startup;
+}
 
-    state.scriptedGamepads = scriptUsesGamepad(script);
-
-    // Window, renderer, input, mixer, physics.
+/// Opens the window and creates every system; nullptr (the reason logged, `exitCode` set)
+/// when that fails.
+std::unique_ptr<Running> openSystems(detail::GameState& state, const core::SceneRegistry& scenes, Startup& startup) {
+    const EngineConfig& config = state.config;
+    const CommandLine& options = startup.options;
+    core::Logger& logger = *state.logger;
     render::WindowDef windowDef;
     windowDef.title = config.windowTitle;
     windowDef.size = {config.windowWidth, config.windowHeight};
-    windowDef.mode = config.windowMode == core::WindowMode::Fullscreen && !state.headless
-                         ? render::WindowMode::Fullscreen
-                         : render::WindowMode::Windowed;
+    windowDef.mode = state.headless ? render::WindowMode::Windowed : config.windowMode;
     windowDef.samples = config.msaaSamples;
     windowDef.vsync = config.vsync && !state.headless;
     windowDef.visible = !state.headless || options.show;
-    windowDef.logger = &logger_;
+    windowDef.logger = &logger;
     render::RendererDef rendererDef;
     rendererDef.depthRange = config.maxCameraDepth;
-    rendererDef.logger = &logger_;
-    rendererDef.fileTextureFilter = config.textureFilteringMode == core::TextureFilteringMode::Nearest
-                                        ? render::TextureFilter::Nearest
-                                        : render::TextureFilter::Linear;
+    rendererDef.logger = &logger;
+    rendererDef.fileTextureFilter = config.textureFilteringMode;
     audio::MixerDef mixerDef;
-    mixerDef.logger = &logger_;
+    mixerDef.logger = &logger;
     mixerDef.voiceCount = config.voiceCount;
     mixerDef.masterGain = config.masterGain;
     mixerDef.spatial = {config.minAttenuationDistance, config.maxAttenuationDistance, config.minPanningDistance,
@@ -380,232 +248,113 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
 
     std::unique_ptr<Running> running;
     try {
-        running = std::make_unique<Running>(state, windowDef, rendererDef, mixerDef, scenes_, seed);
+        running = std::make_unique<Running>(state, windowDef, rendererDef, mixerDef, scenes, seed);
     } catch (const core::Error& e) {
         const std::string what = e.what();
         const bool display = what.rfind("render::", 0) == 0;
-        logger_.error(program + ": " + (display ? "cannot open the game window: " : "cannot start: ") + what +
-                      (display && std::getenv("DISPLAY") == nullptr
-                           ? " (no display: set DISPLAY, or run under xvfb-run / scripts/with-display.sh)"
-                           : ""));
-        return display ? kExitNoDisplay : kExitUsage;
+        logger.error(startup.program + ": " + (display ? "cannot open the game window: " : "cannot start: ") + what +
+                     (display && std::getenv("DISPLAY") == nullptr
+                          ? " (no display: set DISPLAY, or run under xvfb-run / scripts/with-display.sh)"
+                          : ""));
+        startup.exitCode = display ? kExitNoDisplay : kExitUsage;
+        return nullptr;
     }
     Running& r = *running;
-    state.window = &r.window;
-    state.renderer = &r.renderer;
-    state.renderSystem = &r.renderSystem;
-    state.input = &r.input;
-    state.actions = &r.actions;
-    state.audio = &r.audio;
-    state.physics = &r.physics;
-    state.random = &r.random;
-    state.director = &r.director;
-    state.overlay = &r.overlay;
     r.overlay.setVisible(config.showProfile || options.profile);
-
+    const std::string configName = config.file.empty() ? std::string("configuration") : config.file.string();
     if (!config.bindingsFile.empty()) {
         try {
             r.actions.load(r.game.asset(config.bindingsFile));
         } catch (const core::Error& e) {
-            logger_.error(configName + ": bindingsFile: " + e.what());
-            return kExitUsage;
+            logger.error(configName + ": bindingsFile: " + e.what());
+            startup.exitCode = kExitUsage;
+            return nullptr;
         }
     }
-    std::vector<std::pair<std::int64_t, std::pair<ScriptTarget, bool>>> scripted;
-    ScriptedPads pads;
+    // The script is one more input device, resolved against the game's actions.
     try {
-        for (const ScriptEvent& event : script.events) {
-            const ScriptTarget target = resolveTarget(event, script, r.actions);
-            if (target.kind == ScriptTarget::Kind::PadButton || target.kind == ScriptTarget::Kind::PadAxis) {
-                pads.use(target.slot); // connected from the first frame
-            }
-            scripted.push_back({event.frame, {target, event.kind == ScriptEvent::Kind::Press}});
-        }
+        r.input.play(input::ScriptedInput(startup.script, r.actions));
     } catch (const core::Error& e) {
-        logger_.error(e.what());
-        return kExitUsage;
+        logger.error(e.what());
+        startup.exitCode = kExitUsage;
+        return nullptr;
     }
 
     render::Camera& camera = r.renderSystem.camera();
     camera.setReferenceSize({static_cast<float>(config.referenceWindowWidth),
                              static_cast<float>(config.referenceWindowHeight)});
-    camera.setFit(toScreenFit(config.screenFitMode));
+    camera.setFit(config.screenFitMode);
     // The engine's own hooks (GameSystem::clear() adds them again after a scene change).
     r.renderSystem.addHook(r.overlay);
 
+    // The order the loop runs them in each phase.
+    r.director.addSystem(r.frameStart);
     r.director.addSystem(r.inputSystem);
     r.director.addSystem(r.physics);
     r.director.addSystem(r.audio);
     r.director.addSystem(r.renderSystem);
     r.director.addSystem(r.game);
+    r.director.addSystem(r.frameEnd);
     r.director.setReferenceWindowSize({config.referenceWindowWidth, config.referenceWindowHeight});
     r.director.setWindowSize(r.window.size());
+    return running;
+}
 
+} // namespace
+
+Game::Game() = default;
+Game::~Game() = default;
+
+int Game::run(int argc, char** argv, std::string_view defaultConfig) {
+    // Startup: command line, configuration, input script, window and systems.
+    profile_ = {};
+    detail::GameState state;
+    state.logger = &logger_;
+    state.profile = &profile_;
+    Startup startup = readStartup(argc, argv, defaultConfig, scenes_, logger_, state);
+    if (startup.exitCode) {
+        return *startup.exitCode;
+    }
+    const std::unique_ptr<Running> running = openSystems(state, scenes_, startup);
+    if (!running) {
+        return *startup.exitCode;
+    }
+    const EngineConfig& config = state.config;
     core::Clock clock;
     core::FixedStepper stepper(config.fixedTimestep, config.maxStepsPerFrame);
-    const std::span<core::System* const> systems = r.director.systems();
-    std::size_t nextScripted = 0;
-    double lastAlpha = 0.0;
-    bool screenshotTaken = false;
+    detail::ProfileRecorder recorder(profile_, state.frame, running->physics, running->audio);
+    core::GameLoop loop(running->director, stepper, clock,
+                        core::GameLoopDef{.maxFrameTime = config.maxFrameTime,
+                                          .fixedFrameTime = state.headless ? kHeadlessFrameTime : 0.0,
+                                          .frameLimit = state.frameLimit,
+                                          .observer = &recorder});
+
+    // The loop.
     int exitCode = kExitOk;
-
-    const auto drawFrame = [&](double alpha) {
-        if (state.debugDraw) {
-            detail::drawPhysics(r.physics.world(), r.renderSystem.activeCamera(), config.unitsPerMetre,
-                                r.renderer.drawer());
-        }
-        for (core::System* system : systems) {
-            system->render(alpha);
-        }
-    };
-
     try {
-        for (core::System* system : systems) {
-            system->init();
-        }
-        if (!r.director.start(config.firstScene)) {
-            return kExitUsage;
-        }
-        clock.tick();
-        while (!r.director.terminateRequested() && !r.window.shouldClose() &&
-               !(options.frames && profile_.frames >= *options.frames)) {
-            const Stopwatch::time_point frameStart = Stopwatch::now();
-            FrameTimes times;
-            state.frame = profile_.frames;
-
-            if (r.director.applyPendingChange()) {
-                ++profile_.sceneChanges;
-                stepper.reset();
+        if (!loop.start(config.firstScene)) {
+            exitCode = kExitUsage;
+        } else {
+            loop.run();
+            if (!state.screenshot.empty() && !state.screenshotTaken) {
+                // The game ended before its last frame was known: draw the final state again.
+                state.ended = true;
+                loop.render();
             }
-            core::Scene* scene = r.director.scene();
-
-            // Input: deferred objects join, scripted events, window events, delivery.
-            Stopwatch::time_point t = Stopwatch::now();
-            if (scene != nullptr) {
-                scene->beginFrame();
-            }
-            for (; nextScripted < scripted.size() && scripted[nextScripted].first <= state.frame; ++nextScripted) {
-                const auto& [target, press] = scripted[nextScripted].second;
-                switch (target.kind) {
-                case ScriptTarget::Kind::Key:
-                    r.input.handleKey(target.code, 0, press ? GLFW_PRESS : GLFW_RELEASE, 0);
-                    break;
-                case ScriptTarget::Kind::Mouse:
-                    r.input.handleMouseButton(target.code, press ? GLFW_PRESS : GLFW_RELEASE, 0);
-                    break;
-                case ScriptTarget::Kind::Cursor:
-                    r.input.handleCursorPos(target.x, target.y);
-                    break;
-                case ScriptTarget::Kind::PadButton:
-                    pads.button(target.slot, target.code, press);
-                    break;
-                case ScriptTarget::Kind::PadAxis:
-                    pads.axis(target.slot, target.code, target.x);
-                    break;
-                }
-            }
-            pads.feed(r.input);
-            r.window.pollEvents();
-            r.director.setWindowSize(r.window.size());
-            for (core::System* system : systems) {
-                system->beginFrame();
-            }
-            if (debugKey && r.input.wasKeyPressed(*debugKey)) {
-                state.debugDraw = !state.debugDraw;
-            }
-            if (profileKey && r.input.wasKeyPressed(*profileKey)) {
-                r.overlay.setVisible(!r.overlay.visible());
-            }
-            times.input = msSince(t);
-
-            // Fixed steps.
-            double dt = state.headless ? kHeadlessFrameTime : clock.tick();
-            if (dt > config.maxFrameTime) {
-                dt = config.maxFrameTime;
-                ++profile_.spikes;
-            }
-            const int steps = stepper.advance(dt);
-            profile_.droppedSeconds += stepper.droppedTime();
-            t = Stopwatch::now();
-            for (int i = 0; i < steps; ++i) {
-                if (scene != nullptr) {
-                    scene->dispatchFixedUpdate(stepper.step());
-                }
-                for (core::System* system : systems) {
-                    if (system == &r.physics) {
-                        const Stopwatch::time_point p = Stopwatch::now();
-                        system->fixedUpdate(stepper.step());
-                        times.physics += msSince(p);
-                    } else {
-                        system->fixedUpdate(stepper.step());
-                    }
-                }
-            }
-            times.fixedSteps = msSince(t);
-            if (scene != nullptr) {
-                scene->setFrameAlpha(stepper.alpha()); // where objects are drawn (renderTransform())
-            }
-            profile_.fixedSteps += steps;
-
-            // Update.
-            t = Stopwatch::now();
-            if (scene != nullptr) {
-                scene->dispatchUpdate(dt);
-            }
-            for (core::System* system : systems) {
-                if (system == &r.audio) {
-                    const Stopwatch::time_point a = Stopwatch::now();
-                    system->update(dt);
-                    times.audio += msSince(a);
-                } else {
-                    system->update(dt);
-                }
-            }
-            times.update = msSince(t);
-
-            // Render.
-            t = Stopwatch::now();
-            lastAlpha = stepper.alpha();
-            drawFrame(lastAlpha);
-            if (options.frames && profile_.frames + 1 == *options.frames && !options.screenshot.empty()) {
-                r.renderer.screenshot(options.screenshot);
-                screenshotTaken = true;
-            }
-            r.window.swapBuffers();
-            times.render = msSince(t);
-
-            times.total = msSince(frameStart);
-            ++profile_.frames;
-            profile_.last = times;
-            profile_.sum.input += times.input;
-            profile_.sum.fixedSteps += times.fixedSteps;
-            profile_.sum.physics += times.physics;
-            profile_.sum.update += times.update;
-            profile_.sum.audio += times.audio;
-            profile_.sum.render += times.render;
-            profile_.sum.total += times.total;
-            profile_.maxFrameMs = std::max(profile_.maxFrameMs, times.total);
-        }
-        if (!options.screenshot.empty() && !screenshotTaken) {
-            // The game ended before its last frame was known: draw the final state again.
-            drawFrame(lastAlpha);
-            r.renderer.screenshot(options.screenshot);
         }
     } catch (const std::exception& e) {
-        logger_.error(program + ": " + e.what());
+        logger_.error(startup.program + ": " + e.what());
         exitCode = kExitRuntimeError;
     }
 
+    // Shutdown.
     try {
-        r.director.stop();
-        for (auto it = systems.rbegin(); it != systems.rend(); ++it) {
-            (*it)->shutdown();
-        }
+        loop.shutdown();
     } catch (const std::exception& e) {
-        logger_.error(program + ": while shutting down: " + e.what());
+        logger_.error(startup.program + ": while shutting down: " + e.what());
         exitCode = kExitRuntimeError;
     }
-    if (config.printProfile) {
+    if (config.printProfile && exitCode != kExitUsage) {
         logger_.info(profile_.toString());
     }
     return exitCode;

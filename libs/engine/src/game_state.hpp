@@ -5,6 +5,8 @@
 #include <e2d/engine/frame_profile.hpp>
 
 #include <cstdint>
+#include <filesystem>
+#include <optional>
 
 namespace e2d::audio {
 class AudioSystem;
@@ -51,9 +53,18 @@ struct GameState {
     int texturesReleased = 0;
     bool debugDraw = false;
     bool headless = false;
-    /// The input script drives gamepads: the real joysticks are not polled.
-    bool scriptedGamepads = false;
+    /// The frame running (set by the game loop's profile recorder).
     std::int64_t frame = 0;
+    /// `--frames N`, else 0.
+    std::int64_t frameLimit = 0;
+    /// The keys that toggle the debug draw and the profile overlay (config), if any.
+    std::optional<int> debugKey;
+    std::optional<int> profileKey;
+    /// `--screenshot FILE` (empty: none), and whether it was written.
+    std::filesystem::path screenshot;
+    bool screenshotTaken = false;
+    /// The loop has ended: a last picture is being drawn.
+    bool ended = false;
 };
 
 } // namespace e2d::engine::detail

@@ -41,22 +41,22 @@ TEST(EngineConfig, EveryKeyOfTheFileIsRead) {
     EXPECT_EQ(c.referenceWindowHeight, 600);
     EXPECT_EQ(c.windowWidth, 400);
     EXPECT_EQ(c.windowHeight, 300);
-    EXPECT_EQ(c.screenFitMode, core::ScreenFitMode::HeightFit);
-    EXPECT_EQ(c.windowMode, core::WindowMode::Fullscreen);
+    EXPECT_EQ(c.screenFitMode, render::ScreenFit::HeightFit);
+    EXPECT_EQ(c.windowMode, render::WindowMode::Fullscreen);
     EXPECT_EQ(c.windowTitle, "every key test");
-    EXPECT_EQ(c.textureFilteringMode, core::TextureFilteringMode::Linear);
+    EXPECT_EQ(c.textureFilteringMode, render::TextureFilter::Linear);
     EXPECT_EQ(c.maxCameraDepth, 500.0f);
     EXPECT_FALSE(c.vsync);
     EXPECT_EQ(c.msaaSamples, 4);
     EXPECT_EQ(c.fontSize, 32);
-    EXPECT_EQ(c.gravityX, 50.0f);
-    EXPECT_EQ(c.gravityY, -1000.0f);
+    EXPECT_EQ(c.gravityX, 0.5f);
+    EXPECT_EQ(c.gravityY, -10.0f);
     EXPECT_EQ(c.fixedTimestep, 0.005);
     EXPECT_EQ(c.collisionResolutionSteps, 10);
-    EXPECT_EQ(c.physicsSolver, core::PhysicsSolver::Classic);
-    EXPECT_EQ(c.allowedPenetration, 0.1f);
+    EXPECT_EQ(c.physicsSolver, physics::SolverMode::Classic);
+    EXPECT_EQ(c.allowedPenetration, 0.001f);
     EXPECT_EQ(c.penetrationBiasFactor, 0.1f);
-    EXPECT_EQ(c.minRigidbodySpeed, 5.0f);
+    EXPECT_EQ(c.minRigidbodySpeed, 0.05f);
     EXPECT_EQ(c.unitsPerMetre, 100.0);
     EXPECT_EQ(c.minAttenuationDistance, 100.0f);
     EXPECT_EQ(c.maxAttenuationDistance, 900.0f);
@@ -76,25 +76,25 @@ TEST(EngineConfig, EveryKeyOfTheFileIsRead) {
     EXPECT_EQ(c.profileKey, "f5");
 }
 
-TEST(EngineConfig, PhysicsKeysFeedTheWorldInMetres) {
+TEST(EngineConfig, PhysicsKeysAreSIWhateverTheUnitsPerMetre) {
     const EngineConfigResult r = loadEngineConfig(kData / "every_key.txt", true);
     const physics::WorldDef def = engine::makeWorldDef(r.config);
-    // 100 units per metre: -1000 units/s^2 is -10 m/s^2, 5 units/s is 0.05 m/s.
+    // At 100 units per metre as at any other scale: m/s^2, m/s and m, as written.
     EXPECT_FLOAT_EQ(def.gravity.x, 0.5f);
     EXPECT_FLOAT_EQ(def.gravity.y, -10.0f);
     EXPECT_EQ(def.solver.mode, physics::SolverMode::Classic);
     EXPECT_EQ(def.solver.subSteps, 10);
     EXPECT_EQ(def.solver.velocityIterations, 10);
     EXPECT_FLOAT_EQ(def.solver.linearSleepTolerance, 0.05f);
-    // 0.1 units of allowed penetration is 1 mm; the bias factor has no unit.
+    // 1 mm of allowed penetration; the bias factor has no unit.
     EXPECT_FLOAT_EQ(def.solver.classicAllowedPenetration, 0.001f);
     EXPECT_FLOAT_EQ(def.solver.classicPositionBias, 0.1f);
 
     // The defaults give the library's own gravity direction and the config's value.
-    const physics::WorldDef defaults = engine::makeWorldDef(core::Config{});
+    const physics::WorldDef defaults = engine::makeWorldDef(engine::EngineConfig{});
     EXPECT_EQ(defaults.gravity.x, 0.0f);
-    EXPECT_FLOAT_EQ(defaults.gravity.y, core::Config{}.gravityY);
-    EXPECT_EQ(defaults.solver.subSteps, core::Config{}.collisionResolutionSteps);
+    EXPECT_FLOAT_EQ(defaults.gravity.y, engine::EngineConfig{}.gravityY);
+    EXPECT_EQ(defaults.solver.subSteps, engine::EngineConfig{}.collisionResolutionSteps);
     EXPECT_EQ(defaults.solver.mode, physics::SolverMode::SoftStep);
     // The seed's position-correction defaults are the classic solver's own, bit for bit.
     EXPECT_EQ(defaults.solver.classicAllowedPenetration, physics::SolverDef{}.classicAllowedPenetration);
@@ -102,9 +102,9 @@ TEST(EngineConfig, PhysicsKeysFeedTheWorldInMetres) {
 
     // More allowed penetration than the solver takes is capped; a bias factor of 0 (no
     // position correction) reaches the world as 0.
-    core::Config loose;
+    engine::EngineConfig loose;
     loose.unitsPerMetre = 100.0;
-    loose.allowedPenetration = 50.0f; // 0.5 m
+    loose.allowedPenetration = 0.5f; // m
     loose.penetrationBiasFactor = 0.0f;
     const physics::WorldDef looseDef = engine::makeWorldDef(loose);
     EXPECT_EQ(looseDef.solver.classicAllowedPenetration, physics::kMaxClassicAllowedPenetration);
@@ -112,7 +112,7 @@ TEST(EngineConfig, PhysicsKeysFeedTheWorldInMetres) {
     EXPECT_NO_THROW(physics::World{looseDef});
 
     // More steps than the soft-step solver takes are capped, not an error.
-    core::Config many;
+    engine::EngineConfig many;
     many.collisionResolutionSteps = 100;
     EXPECT_EQ(engine::makeWorldDef(many).solver.subSteps, 64);
     EXPECT_EQ(engine::makeWorldDef(many).solver.velocityIterations, 100);
@@ -121,17 +121,37 @@ TEST(EngineConfig, PhysicsKeysFeedTheWorldInMetres) {
     EXPECT_NO_THROW(physics::World{engine::makeWorldDef(r.config)});
 }
 
+// The obvious pixel game, written with the defaults: world units are reference pixels, a crate
+// dropped from the top of a 624-px view must fall like one (it used to fall 9 px in 80 frames:
+// 9.81 units/s^2 at 1 unit per metre).
+TEST(EngineConfig, DefaultsMakeAPixelCrateFallAsItLooks) {
+    const engine::EngineConfig defaults;
+    physics::World world{engine::makeWorldDef(defaults)};
+    physics::BodyDef crate;
+    crate.type = physics::BodyType::Dynamic;
+    const physics::BodyId body = world.createBody(crate);
+    world.createShape(body, {}, physics::makeBox(0.16f, 0.16f)); // 32 px at 100 px per metre
+    for (int i = 0; i < 80; ++i) {
+        world.step(1.0f / 60.0f);
+    }
+    const float fallenPixels = -world.transform(body).p.y * static_cast<float>(defaults.unitsPerMetre);
+    // 1/2 g t^2 with g = 9.81 m/s^2 = 981 px/s^2 and t = 80/60 s: about 872 px.
+    EXPECT_NEAR(fallenPixels, 0.5f * 981.0f * (80.0f / 60.0f) * (80.0f / 60.0f), 15.0f);
+    EXPECT_EQ(defaults.unitsPerMetre, 100.0);
+    EXPECT_FLOAT_EQ(defaults.gravityY, -9.81f);
+}
+
 TEST(EngineConfig, PenetrationKeysTuneAClassicWorld) {
     // A unit box spawned 10 cm into the ground of a classic-solver world made from a config:
-    // the position iterations lift it until the allowed penetration is left, 2 units = 2 cm
-    // at 100 units per metre; with a bias factor of 0 it is not lifted at all.
+    // the position iterations lift it until the allowed penetration is left (2 cm, whatever
+    // the units per metre); with a bias factor of 0 it is not lifted at all.
     const auto overlapAfter = [](float allowedPenetration, float biasFactor, int steps) {
-        core::Config config;
+        engine::EngineConfig config;
         config.unitsPerMetre = 100.0;
-        config.gravityY = -1000.0f;
+        config.gravityY = -10.0f;
         config.allowedPenetration = allowedPenetration;
         config.penetrationBiasFactor = biasFactor;
-        config.physicsSolver = core::PhysicsSolver::Classic;
+        config.physicsSolver = physics::SolverMode::Classic;
         physics::World world{engine::makeWorldDef(config)};
         const physics::BodyId ground = world.createBody({});
         world.createShape(ground, {}, physics::makeOffsetBox(10.0f, 1.0f, {0.0f, -1.0f}, 0.0f));
@@ -145,11 +165,11 @@ TEST(EngineConfig, PenetrationKeysTuneAClassicWorld) {
         }
         return 0.5f - world.transform(box).p.y; // metres; the ground's top is y = 0
     };
-    EXPECT_NEAR(overlapAfter(2.0f, 0.2f, 300), 0.02f, 1e-3f);
-    EXPECT_NEAR(overlapAfter(0.5f, 0.2f, 300), 0.005f, 1e-3f);
+    EXPECT_NEAR(overlapAfter(0.02f, 0.2f, 300), 0.02f, 1e-3f);
+    EXPECT_NEAR(overlapAfter(0.005f, 0.2f, 300), 0.005f, 1e-3f);
     // A smaller factor corrects more slowly; 0 leaves the overlap as it was.
-    EXPECT_GT(overlapAfter(0.5f, 0.05f, 6), overlapAfter(0.5f, 0.2f, 6) + 0.02f);
-    EXPECT_NEAR(overlapAfter(0.5f, 0.0f, 6), 0.1f, 1e-5f);
+    EXPECT_GT(overlapAfter(0.005f, 0.05f, 6), overlapAfter(0.005f, 0.2f, 6) + 0.02f);
+    EXPECT_NEAR(overlapAfter(0.005f, 0.0f, 6), 0.1f, 1e-5f);
 }
 
 TEST(EngineConfig, BadValuesAreErrorsNamingFileLineAndKey) {
@@ -185,11 +205,11 @@ TEST(EngineConfig, UnknownAndDuplicateKeysAreWarningsWithTheirLine) {
     const EngineConfigResult r = loadEngineConfig(path, true);
     const std::string f = path.string();
     EXPECT_THAT(r.errors, IsEmpty());
-    EXPECT_THAT(r.warnings, ElementsAre(f + ":2: windowWidht: unknown key, ignored",
+    EXPECT_THAT(r.warnings, ElementsAre(f + ":2: windowWidht: unknown key, ignored (did you mean 'windowWidth'?)",
                                         f + ":3: firstScene: duplicate key, replaces the value set on line 1",
-                                        f + ":5: gravityZ: unknown key, ignored"));
+                                        f + ":5: gravityZ: unknown key, ignored (did you mean 'gravityX'?)"));
     EXPECT_EQ(r.config.firstScene, "B");
-    EXPECT_EQ(r.config.windowWidth, core::Config{}.windowWidth);
+    EXPECT_EQ(r.config.windowWidth, engine::EngineConfig{}.windowWidth);
 }
 
 TEST(EngineConfig, MissingFileIsAnErrorOnlyWhenRequired) {
@@ -200,10 +220,98 @@ TEST(EngineConfig, MissingFileIsAnErrorOnlyWhenRequired) {
     EXPECT_THAT(optional.errors, IsEmpty());
     EXPECT_THAT(optional.warnings,
                 ElementsAre(missing.string() + ": cannot read the configuration file, using the defaults"));
-    EXPECT_EQ(optional.config.windowWidth, core::Config{}.windowWidth);
+    EXPECT_EQ(optional.config.windowWidth, engine::EngineConfig{}.windowWidth);
     EXPECT_TRUE(optional.config.file.empty());
     // A folder is not a configuration file.
     EXPECT_THAT(loadEngineConfig(kData, true).errors, ElementsAre(HasSubstr("cannot read")));
+}
+
+// --- The game's keys through the text reader (each key's range, enums, checks across keys) ---
+
+TEST(EngineConfig, EveryErrorKindWithItsLineNumberAndWrongValuesKeepTheirDefaults) {
+    const EngineConfigResult r = engine::parseEngineConfig("windowWidth = abc\n"              // 1: not a number
+                                                           "windowHeight = 12px\n"            // 2: trailing junk
+                                                           "fontSize = 1.5\n"                 // 3: not an integer
+                                                           "referenceWindowWidth = -5\n"      // 4: below its minimum
+                                                           "referenceWindowHeight = 99999999999\n" // 5: overflows int
+                                                           "screenFitMode = stretch\n"        // 6: unknown enum value
+                                                           "just some words\n"                // 7: missing '='
+                                                           " = 5\n"                           // 8: empty key
+                                                           "masterGain = -0.5\n"              // 9: below minimum
+                                                           "penetrationBiasFactor = 2\n"      // 10: above maximum
+                                                           "fixedTimestep = 0\n"              // 11: must be > 0
+                                                           "gravityY = inf\n"                 // 12: not finite
+                                                           "maxCameraDepth = 1e60\n"          // 13: overflows float
+                                                           "collisionResolutionSteps =\n",    // 14: empty value
+                                                           "game.cfg");
+    EXPECT_THAT(r.errors,
+                ElementsAre("game.cfg:1: windowWidth: expected an integer, got 'abc'",
+                            "game.cfg:2: windowHeight: expected an integer, got '12px'",
+                            "game.cfg:3: fontSize: expected an integer, got '1.5'",
+                            "game.cfg:4: referenceWindowWidth: must be >= 1, got -5",
+                            "game.cfg:5: referenceWindowHeight: integer out of range, got '99999999999'",
+                            "game.cfg:6: screenFitMode: unknown value 'stretch', expected one of: expand, widthFit, "
+                            "heightFit, bestFit",
+                            "game.cfg:7: expected 'key = value', got 'just some words'",
+                            "game.cfg:8: empty key before '=' in '= 5'",
+                            "game.cfg:9: masterGain: must be >= 0, got -0.5",
+                            "game.cfg:10: penetrationBiasFactor: must be in [0, 1], got 2",
+                            "game.cfg:11: fixedTimestep: must be in (0, 1], got 0",
+                            "game.cfg:12: gravityY: expected a finite number, got 'inf'",
+                            "game.cfg:13: maxCameraDepth: number out of range, got '1e60'",
+                            "game.cfg:14: collisionResolutionSteps: expected an integer, got ''"));
+    const engine::EngineConfig defaults;
+    EXPECT_EQ(r.config.windowWidth, defaults.windowWidth);
+    EXPECT_EQ(r.config.referenceWindowWidth, defaults.referenceWindowWidth);
+    EXPECT_EQ(r.config.screenFitMode, defaults.screenFitMode);
+    EXPECT_EQ(r.config.masterGain, defaults.masterGain);
+    EXPECT_EQ(r.config.fixedTimestep, defaults.fixedTimestep);
+    EXPECT_EQ(r.config.gravityY, defaults.gravityY);
+}
+
+TEST(EngineConfig, EnumsAreTheLibrariesOwnTypesSpelledAsInTheFile) {
+    const EngineConfigResult r = engine::parseEngineConfig("screenFitMode = expand\nwindowMode = borderless\n"
+                                                           "textureFilteringMode = linear\nphysicsSolver = classic\n");
+    EXPECT_THAT(r.errors, IsEmpty());
+    EXPECT_EQ(r.config.screenFitMode, render::ScreenFit::Expand);
+    EXPECT_EQ(r.config.windowMode, render::WindowMode::Borderless);
+    EXPECT_EQ(r.config.textureFilteringMode, render::TextureFilter::Linear);
+    EXPECT_EQ(r.config.physicsSolver, physics::SolverMode::Classic);
+    EXPECT_EQ(engine::parseEngineConfig("screenFitMode = bestFit").config.screenFitMode, render::ScreenFit::BestFit);
+    EXPECT_THAT(engine::parseEngineConfig("windowMode = Windowed\ntextureFilteringMode = bilinear\n"
+                                          "physicsSolver = box2d",
+                                          "c")
+                    .errors,
+                ElementsAre("c:1: windowMode: unknown value 'Windowed', expected one of: windowed, fullscreen, "
+                            "borderless",
+                            "c:2: textureFilteringMode: unknown value 'bilinear', expected one of: nearest, linear",
+                            "c:3: physicsSolver: unknown value 'box2d', expected one of: softStep, classic"));
+}
+
+TEST(EngineConfig, MinAboveMaxIsBlamedOnTheLaterKeyAndResetsBoth) {
+    const EngineConfigResult r = engine::parseEngineConfig("minAttenuationDistance = 600\n"
+                                                           "maxAttenuationDistance = 500\n"
+                                                           "minPanningDistance = 700\n",
+                                                           "game.cfg");
+    EXPECT_THAT(r.errors,
+                ElementsAre("game.cfg:2: maxAttenuationDistance: must be >= minAttenuationDistance (600), got 500",
+                            "game.cfg:3: minPanningDistance: must be <= maxPanningDistance (512), got 700"));
+    EXPECT_EQ(r.config.minAttenuationDistance, 256.0f);
+    EXPECT_EQ(r.config.maxAttenuationDistance, 512.0f);
+    EXPECT_EQ(r.config.minPanningDistance, 256.0f);
+    EXPECT_THAT(engine::parseEngineConfig("minPanningDistance = 512").errors, IsEmpty());
+}
+
+TEST(EngineConfig, E2dKeysBadValuesNameLineAndKey) {
+    const EngineConfigResult r = engine::parseEngineConfig("vsync = yes\nmsaaSamples = 17\nunitsPerMetre = 0\n"
+                                                           "voiceCount = 0\nkeyRepeat = 1\nmaxFrameTime = 11\n",
+                                                           "g.cfg");
+    EXPECT_THAT(r.errors, ElementsAre("g.cfg:1: vsync: expected true or false, got 'yes'",
+                                      "g.cfg:2: msaaSamples: must be in [0, 16], got 17",
+                                      "g.cfg:3: unitsPerMetre: must be > 0, got 0",
+                                      "g.cfg:4: voiceCount: must be in [1, 1024], got 0",
+                                      "g.cfg:5: keyRepeat: expected true or false, got '1'",
+                                      "g.cfg:6: maxFrameTime: must be in (0, 10], got 11"));
 }
 
 } // namespace

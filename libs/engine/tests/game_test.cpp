@@ -233,6 +233,39 @@ TEST(Game, SeedMakesTheRandomNumbersReproducible) {
     EXPECT_EQ(firstNumber({"--seed", "7"}), core::Random(7).next());
 }
 
+TEST(Game, AGameRunInsideARunningGameIsRefusedAndTheOuterGameKeepsWorking) {
+    // GLFW is process-wide: a second Game in the same process used to initialise it again and,
+    // on its way out, terminate it under the outer game (window 0x0, black frames, exit 0).
+    Game outer;
+    GameRun inner;
+    glm::ivec2 sizeAfter{0, 0};
+    addScene(
+        outer, "Outer",
+        [](core::Scene& s) {
+            render::SpriteRendererDef def;
+            def.size = {40.0f, 40.0f};
+            def.tint = {0, 255, 0, 255};
+            s.createGameObject().addComponent<render::SpriteRenderer>(def);
+        },
+        [&](core::Scene& s) {
+            if (gameOf(s).frame() == 2) {
+                Game nested;
+                addScene(nested, "Inner", {});
+                inner = run(nested, {"--config", writeConfig("Inner").string(), "--frames", "3"});
+            }
+            sizeAfter = gameOf(s).window().size();
+        });
+    const std::filesystem::path shot = shotPath("outer.png");
+    const GameRun r = run(outer, {"--config", writeConfig("Outer").string(), "--frames", "6", "--screenshot", shot.string()});
+    EXPECT_NE(inner.code, 0) << inner.all();
+    EXPECT_EQ(inner.count("GLFW is already initialised in this process"), 1) << inner.all();
+    ASSERT_EQ(r.code, 0) << r.all();
+    EXPECT_EQ(outer.profile().frames, 6);
+    EXPECT_EQ(sizeAfter, glm::ivec2(160, 120));
+    const render::Image image = render::loadImage(shot);
+    EXPECT_EQ(countColour(image, 0, 255, 0, 0), 40 * 40);
+}
+
 // --- Usage, configuration and display errors --------------------------------------------------
 
 TEST(Game, BadCommandLineExitsWith2NamingTheArgument) {
@@ -1026,7 +1059,8 @@ TEST(Game, GameSystemGivesTheConfigAssetsAndEverySubsystem) {
         EXPECT_NE(g.text().font(render::kDefaultFontPath, 12), nullptr);
         EXPECT_FALSE(g.input().isKeyDown(GLFW_KEY_A));
         EXPECT_EQ(g.mixer().voiceCount(), 32);
-        EXPECT_FLOAT_EQ(g.world().gravity().y, static_cast<float>(core::Config{}.gravityY / 32.0));
+        // Gravity is m/s^2 whatever the scale.
+        EXPECT_FLOAT_EQ(g.world().gravity().y, engine::EngineConfig{}.gravityY);
         EXPECT_FALSE(g.debugDraw());
         g.setDebugDraw(true);
         EXPECT_TRUE(g.debugDraw());

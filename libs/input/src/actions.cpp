@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Named actions: bindings, per-frame evaluation, rebinding by listening.
+#include "action_name.hpp"
+#include "quoted.hpp"
+
 #include <e2d/input/actions.hpp>
 
 #include <e2d/core/error.hpp>
@@ -15,13 +18,6 @@
 namespace e2d::input {
 
 namespace {
-
-bool validName(std::string_view name) {
-    return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
-        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
-               c == '.';
-    });
-}
 
 std::string str(float v) {
     std::string s = std::to_string(v);
@@ -66,9 +62,9 @@ ActionMap::ActionMap(ActionMapDef def) : def_(def) {
 }
 
 ActionId ActionMap::add(std::string_view name) {
-    if (!validName(name)) {
-        throw core::Error("input::ActionMap::add(): action name must be letters, digits, '_', '-' or '.', got '" +
-                          std::string(name) + "'");
+    if (!detail::isActionName(name)) {
+        throw core::Error("input::ActionMap::add(): " + std::string(detail::kActionNameRule) + ", got " +
+                          detail::quoted(name));
     }
     if (!find(name).isNull()) {
         throw core::Error("input::ActionMap::add(): action '" + std::string(name) + "' already exists");
@@ -106,8 +102,7 @@ ActionMap::Action& ActionMap::at(ActionId id, const char* function) {
 ActionId ActionMap::require(std::string_view name, const char* function) const {
     const ActionId id = find(name);
     if (id.isNull()) {
-        throw core::Error(std::string("input::ActionMap::") + function + "(): no action named '" + std::string(name) +
-                          "'");
+        throw core::Error(std::string("input::ActionMap::") + function + "(): no action named " + detail::quoted(name));
     }
     return id;
 }

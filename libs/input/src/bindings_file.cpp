@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Bindings files: `name = binding, binding, ...`, one action per line.
+#include "action_name.hpp"
+#include "quoted.hpp"
 #include "text_file.hpp"
 
 #include <e2d/input/actions.hpp>
@@ -25,19 +27,6 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-bool validName(std::string_view name) {
-    if (name.empty()) {
-        return false;
-    }
-    for (char c : name) {
-        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
-              c == '.')) {
-            return false;
-        }
-    }
-    return true;
-}
-
 } // namespace
 
 void ActionMap::loadFromString(std::string_view text, std::string_view source) {
@@ -61,8 +50,8 @@ void ActionMap::loadFromString(std::string_view text, std::string_view source) {
             fail("expected '<action> = <binding>, ...'");
         }
         const std::string_view name = trim(line.substr(0, equals));
-        if (!validName(name)) {
-            fail("action name must be letters, digits, '_', '-' or '.', got '" + std::string(name) + "'");
+        if (!detail::isActionName(name)) {
+            fail(std::string(detail::kActionNameRule) + ", got " + detail::quoted(name));
         }
         for (const auto& [previous, unused] : parsed) {
             if (previous == name) {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SDL gamepad mapping lines: checked here, then handed to GLFW's database.
+#include "quoted.hpp"
 #include "text_file.hpp"
 
 #include <e2d/input/gamepad_mappings.hpp>
@@ -50,17 +51,8 @@ bool isDigit(char c) {
     return c >= '0' && c <= '9';
 }
 
-std::string quoted(std::string_view s) {
-    constexpr std::size_t kShown = 40;
-    std::string out = "'";
-    for (char c : s.substr(0, kShown)) {
-        out += std::isprint(static_cast<unsigned char>(c)) != 0 ? c : '?';
-    }
-    if (s.size() > kShown) {
-        out += "...";
-    }
-    return out + "'";
-}
+// Fields are short; a long value is cut in messages.
+std::string quoted(std::string_view s) { return detail::quoted(s, 40); }
 
 // Reads a decimal number of at most three digits <= limit; advances `s`.
 bool readNumber(std::string_view& s, int limit, int& value) {

@@ -2,6 +2,7 @@
 #include <e2d/input/input.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/input/input_script.hpp>
 #include <e2d/core/log.hpp>
 
 #include <GLFW/glfw3.h>
@@ -155,7 +156,15 @@ void Input::handleFocus(bool focused) {
 
 // Delivery -----------------------------------------------------------------------------------
 
+void Input::play(ScriptedInput script) {
+    script_ = std::make_unique<ScriptedInput>(std::move(script));
+    scriptFrame_ = 0;
+}
+
 void Input::beginFrame() {
+    if (script_) {
+        script_->feed(*this, scriptFrame_++);
+    }
     for (int key : touchedKeys_) {
         keys_[static_cast<std::size_t>(key)].pressed = false;
         keys_[static_cast<std::size_t>(key)].released = false;
@@ -188,7 +197,7 @@ void Input::beginFrame() {
         droppedReported_ = dropped_;
     }
 
-    if (def_.pollGamepads && window_ != nullptr) {
+    if (def_.pollGamepads && window_ != nullptr && !(script_ && script_->drivesGamepads())) {
         pollJoysticks();
     }
     for (int slot = 0; slot < kMaxGamepads; ++slot) {

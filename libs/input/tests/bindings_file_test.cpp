@@ -108,6 +108,26 @@ TEST(BindingsFile, AByteOrderMarkIsSkipped) {
     EXPECT_EQ(actions.size(), 2u);
 }
 
+// Bytes from the file are quoted escaped: a control byte or invalid UTF-8 no longer hides in the
+// message, and a NUL no longer cuts what() short.
+TEST(BindingsFile, RawBytesInMessagesAreEscaped) {
+    ActionMap actions;
+    const auto message = [&](std::string_view text) {
+        return errorOf([&] { actions.loadFromString(text, "controls.txt"); });
+    };
+    EXPECT_EQ(message("\x01jump = key:space\n"),
+              "controls.txt:1: action name must be letters, digits, '_', '-' or '.', got '\\x01jump'");
+    EXPECT_EQ(message(std::string_view("jump = key:sp\0ace\n", 19)),
+              "controls.txt:1: unknown key name 'sp\\x00ace' in 'key:sp\\x00ace'");
+    EXPECT_EQ(message("jump = button:\xff\xfe\n"),
+              "controls.txt:1: unknown gamepad button name '\\xFF\\xFE' in 'button:\\xFF\\xFE'");
+    // Printable UTF-8 stays as it is.
+    EXPECT_EQ(message("saut\xc3\xa9 = key:space\n"),
+              "controls.txt:1: action name must be letters, digits, '_', '-' or '.', got 'saut\xc3\xa9'");
+    EXPECT_EQ(errorOf([&] { static_cast<void>(actions.held("\x1b[2J")); }),
+              "input::ActionMap::held(): no action named '\\x1B[2J'");
+}
+
 TEST(BindingsFile, UnreadableAndUnwritableFilesAreNamed) {
     ActionMap actions;
     EXPECT_EQ(errorOf([&] { actions.load("/nonexistent/e2d/controls.txt"); }),

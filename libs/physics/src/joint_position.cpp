@@ -13,10 +13,6 @@ namespace e2d::physics::detail {
 
 namespace {
 
-// Box2D 2.4's caps on one correction, which keep a large error from overshooting.
-constexpr float kMaxLinearCorrection = 0.2f;
-constexpr float kMaxAngularCorrection = 8.0f / 180.0f * 3.14159265f;
-
 // Moves the bodies by position impulse p at the anchors plus angular impulse l.
 void shift(const Joint& j, BodyState& a, BodyState& b, Vec2 rA, Vec2 rB, Vec2 p, float l) {
     a.deltaPosition -= j.invMassA * p;
@@ -29,22 +25,6 @@ void turn(const Joint& j, BodyState& a, BodyState& b, float l) {
     a.deltaRotation = integrateRotation(a.deltaRotation, -j.invInertiaA * l);
     b.deltaRotation = integrateRotation(b.deltaRotation, j.invInertiaB * l);
 }
-
-// Position error past a limit [lower, upper] (0 inside), capped.
-float pastLimit(float value, float lower, float upper, float cap) {
-    if (value < lower) {
-        return std::max(value - lower, -cap);
-    }
-    if (value > upper) {
-        return std::min(value - upper, cap);
-    }
-    return 0.0f;
-}
-
-struct Errors {
-    float linear = 0.0f;
-    float angular = 0.0f;
-};
 
 // The shared point of revolute and weld joints.
 float fixPoint(const Joint& j, BodyState& a, BodyState& b) {
@@ -74,8 +54,8 @@ float fixSlideLimit(const Joint& j, BodyState& a, BodyState& b) {
     return std::abs(C);
 }
 
-Errors fixJoint(const Joint& j, BodyState& a, BodyState& b) {
-    Errors e;
+JointErrors fixJoint(const Joint& j, BodyState& a, BodyState& b) {
+    JointErrors e;
     switch (j.type) {
     case JointType::Motor:
     case JointType::Mouse:
@@ -156,18 +136,18 @@ Errors fixJoint(const Joint& j, BodyState& a, BodyState& b) {
 } // namespace
 
 bool solveJointPositions(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states) {
-    Errors worst;
+    JointErrors worst;
     for (int k : order) {
         Joint& j = joints[static_cast<std::size_t>(k)];
         BodyState fixedA{};
         BodyState fixedB{};
         BodyState& a = j.indexA < 0 ? fixedA : states[static_cast<std::size_t>(j.indexA)];
         BodyState& b = j.indexB < 0 ? fixedB : states[static_cast<std::size_t>(j.indexB)];
-        Errors e = fixJoint(j, a, b);
+        JointErrors e = fixJoint(j, a, b);
         worst.linear = std::max(worst.linear, e.linear);
         worst.angular = std::max(worst.angular, e.angular);
     }
-    return worst.linear <= kLinearSlop && worst.angular <= 2.0f / 180.0f * 3.14159265f;
+    return worst.linear <= kLinearSlop && worst.angular <= kAngularSlop;
 }
 
 } // namespace e2d::physics::detail

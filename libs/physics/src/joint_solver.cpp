@@ -27,6 +27,21 @@ Softness springOf(float hertz, float dampingRatio, float h) {
 
 } // namespace
 
+JointStep makeJointStep(const SolverDef& def, float h, JointDirectScratch* direct) {
+    JointStep step{h, 1.0f / h, makeSoftness(def.jointHertz, def.jointDampingRatio, h)};
+    // The soft step's rigid models: rigid rows (their position errors are the position passes'),
+    // a revolute joint's point and limit as one block.
+    const JointSolver model = def.jointSolver;
+    if (model != JointSolver::Soft && def.mode == SolverMode::SoftStep) {
+        step.jointSoftness = Softness{0.0f, 1.0f, 0.0f};
+        step.blockLimit = true;
+    }
+    if (model == JointSolver::Direct && def.mode == SolverMode::SoftStep) {
+        step.direct = direct;
+    }
+    return step;
+}
+
 void prepareJoint(Joint& j, const JointBodyView& a, const JointBodyView& b, const JointStep& step) {
     j.indexA = a.stateIndex;
     j.indexB = b.stateIndex;
@@ -216,6 +231,9 @@ void solveJoints(std::span<Joint> joints, PointJointGroups& groups, std::span<co
         } else {
             solvePointQuad(groups.quads[static_cast<std::size_t>(~k >> 1)], states, soft);
         }
+    }
+    if (step.direct != nullptr) {
+        solveJointsDirect(joints, order, states, step, useBias, *step.direct); // no groups then
     }
 }
 

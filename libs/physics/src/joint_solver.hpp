@@ -2,14 +2,18 @@
 #pragma once
 
 #include <e2d/physics/joint.hpp>
+#include <e2d/physics/solver_def.hpp>
 
 #include "solver_body.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
+#include <set>
+#include <utility>
 #include <span>
 #include <vector>
 
@@ -171,6 +175,8 @@ void refreshPointJointGroups(PointJointGroups& groups, std::span<const Joint> jo
 // storeJointReaction() gives a revolute joint's (invH: 1 / the sub-step).
 void storePointJointGroups(const PointJointGroups& groups, std::span<Joint> joints, float invH);
 
+struct JointDirectScratch;
+
 // What a pass needs besides the joint and the bodies' states.
 struct JointStep {
     float h = 0.0f; // the (sub-)step the velocities act over
@@ -179,7 +185,14 @@ struct JointStep {
     // sideways and angular rows) are soft constraints of SolverDef::jointHertz and
     // jointDampingRatio at the sub-step h, as Box2D v3's.
     Softness jointSoftness{};
+    // Rigid rows: a revolute joint's point and limit are solved as one block.
+    bool blockLimit = false;
+    // JointSolver::Direct: the joints' arrays for solveJointsDirect() after each pass.
+    JointDirectScratch* direct = nullptr;
 };
+
+// The step's JointStep for sub-step h (direct: the scratch solveJointsDirect() uses, or null).
+JointStep makeJointStep(const SolverDef& def, float h, JointDirectScratch* direct);
 
 // One side of a joint at the step start, as prepareJoint() reads it.
 struct JointBodyView {
@@ -228,10 +241,95 @@ void solvePointQuad(PointJointQuad& q, std::span<BodyState> states, const Softne
 void warmStartPointOctet(PointJointOctet& q, std::span<BodyState> states);
 void solvePointOctet(PointJointOctet& q, std::span<BodyState> states, const Softness& soft);
 
+// Box2D 2.4's caps on one position correction, which keep a large error (a limit or a rod
+// violated far) from overshooting: a bounded push-out.
+inline constexpr float kMaxLinearCorrection = 0.2f;
+inline constexpr float kMaxAngularCorrection = 8.0f / 180.0f * 3.14159265f;
+// The angular error the position passes leave (Box2D 2.4's b2_angularSlop, 2 degrees).
+inline constexpr float kAngularSlop = 2.0f / 180.0f * 3.14159265f;
+
+// Position error past a limit [lower, upper] (0 inside), capped at +-cap.
+inline float pastLimit(float value, float lower, float upper, float cap) {
+    if (value < lower) {
+        return std::max(value - lower, -cap);
+    }
+    if (value > upper) {
+        return std::min(value - upper, cap);
+    }
+    return 0.0f;
+}
+
+// The largest position errors a pass met.
+struct JointErrors {
+    float linear = 0.0f;
+    float angular = 0.0f;
+};
+
 // Classic mode: one non-linear Gauss-Seidel pass over the rigid parts' position errors
 // (joint_position.cpp). True when every error was within the slops before the pass. `order`
 // holds joint slots only (classic mode solves no point joints).
 bool solveJointPositions(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states);
+
+// What projectJointsDirect() keeps between calls (its arrays' capacity).
+struct JointDirectScratch {
+    // 3 x 3, row major; a joint's unused rows are padding. Doubles: a long limited arm or a
+    // cantilever makes K ill-conditioned enough (1e6 and more) that floats lose the solve.
+    using Block = std::array<double, 9>;
+    struct Rows {                       // a joint's rows: the motion of B's side minus A's
+        Vec2 linA[3];
+        float angA[3];
+        Vec2 linB[3];
+        float angB[3];
+        float* acc[3];     // the joint's accumulated impulse each row adds to (velocity solve)
+        bool oneSided[3];  // a limit: its accumulated impulse stays >= 0
+    };
+    struct Entry {
+        int node; // the other joint
+        Block block;
+    };
+    std::vector<Rows> rows;
+    std::vector<int> rowCount;
+    std::vector<std::array<double, 3>> rhs;
+    std::vector<std::array<float, 3>> error;
+    std::vector<std::array<double, 3>> solution;
+    std::vector<Block> diag;
+    std::vector<Block> inverseDiag;
+    std::vector<std::vector<Entry>> adjacency; // the remaining matrix's blocks by row
+    std::vector<std::vector<Entry>> factor;    // each joint's blocks when it was eliminated
+    std::vector<int> bodyJointStart;
+    std::vector<int> bodyJoints;
+    std::vector<int> fill;
+    std::vector<int> order;
+    std::set<std::pair<int, int>> queue; // (degree, joint) of the joints not eliminated yet
+    std::vector<std::uint8_t> released;  // joints whose limit row the velocity solve let go
+    std::vector<int> parent;             // union-find over the moving bodies (tooManyLoops())
+    std::vector<int> sorted;             // the pass's joint slots, ascending
+    // The joints (a pass order's data and size) found to fill in too much this step:
+    // Gauss-Seidel alone for them until the step's position passes (resetDirect()).
+    bool tooDense = false;
+    const int* denseOrder = nullptr;
+    std::size_t denseSize = 0;
+    void resetDense() {
+        tooDense = false;
+        denseOrder = nullptr;
+        denseSize = 0;
+    }
+};
+
+// Soft step (SolverDef::JointPositionSolver::Direct): one Newton pass over every rigid row of
+// the joints `order` (slots) at once, K dlambda = -C solved directly (joint_direct.cpp), moving
+// the states' deltaPosition and deltaRotation. True when every error was within the slops
+// before the pass (nothing moved).
+bool projectJointsDirect(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
+                         JointDirectScratch& scratch);
+
+// Soft step with SolverDef::jointSolver Direct: after a Gauss-Seidel pass, the velocities of
+// every rigid row of the joints `order` (slots) and of each revolute limit within reach, solved
+// at once (K dlambda = -(J v + bias)), the impulses added to the joints' accumulated ones (a
+// limit's kept >= 0). False, changing nothing, where the joint graph fills in too much (a
+// large net): Gauss-Seidel alone there.
+bool solveJointsDirect(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
+                       const JointStep& step, bool useBias, JointDirectScratch& scratch);
 
 // Per-type passes (joint_<type>.cpp).
 void warmStartDistance(Joint& j, BodyState& a, BodyState& b);

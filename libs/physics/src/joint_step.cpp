@@ -3,12 +3,23 @@
 // step's joints, sorting them into the wide solver's blocks and reading their reactions.
 #include "world_impl.hpp"
 
+#include "body_solver.hpp"
+
 #include <algorithm>
 #include <cstring>
 
 namespace e2d::physics {
 
 using detail::kNullIndex;
+
+namespace {
+
+// The direct joint solve reads joint slots only: no groups of plain hinges.
+bool directJoints(const SolverDef& def) {
+    return def.mode == SolverMode::SoftStep && def.jointSolver == JointSolver::Direct;
+}
+
+} // namespace
 
 void World::Impl::wakeJointedBodies() {
     // Nothing to wake while every moving body is awake (a scene without sleeping): a pass over
@@ -57,7 +68,7 @@ void World::Impl::prepareJoints(float dt, float h) {
         reset();
         return;
     }
-    const detail::JointStep step{h, 1.0f / h, detail::makeSoftness(s.def.jointHertz, s.def.jointDampingRatio, h)};
+    const detail::JointStep step = detail::makeJointStep(s.def, h, nullptr);
     auto viewOf = [&](const detail::Body& b) {
         detail::JointBodyView v;
         const int k = b.motion.solverIndex;
@@ -166,7 +177,7 @@ void World::Impl::orderJoints() {
 void World::Impl::packJoints() {
     detail::Simulation& s = sim;
     // Classic mode's position pass reads the joint slots: no groups there.
-    const bool groups = s.def.mode == SolverMode::SoftStep;
+    const bool groups = s.def.mode == SolverMode::SoftStep && !directJoints(s.def);
     const auto layout = groups ? detail::Simulation::JointLayout::Scalar : detail::Simulation::JointLayout::ScalarNoGroups;
     if (s.jointsReused && s.jointLayout == layout) {
         // Last step's entries and groups, the lanes' fields from the joints prepared anew.
@@ -222,7 +233,7 @@ void World::Impl::assignJointBlocks(bool scheduleKept) {
         const auto count = static_cast<std::size_t>(end - first);
         detail::packJointPasses(joints, std::span<const int>(s.jointScratch).subspan(static_cast<std::size_t>(first), count),
                                 std::span<const int>(s.jointSorted).subspan(static_cast<std::size_t>(first), count),
-                                true, s.pointJoints, s.blockJoints);
+                                !directJoints(s.def), s.pointJoints, s.blockJoints);
         first = end;
         s.blockJointStart[b + 1] = static_cast<int>(s.blockJoints.size());
     }
@@ -235,6 +246,47 @@ void World::Impl::storeJointReactions(float invH, bool wide) {
         if (entry >= 0) {
             detail::storeJointReaction(joint(entry), sim.states, invH);
         }
+    }
+}
+
+void World::Impl::projectJoints() {
+    detail::Simulation& s = sim;
+    const JointSolver model = s.def.jointSolver;
+    if (model == JointSolver::Soft) {
+        return;
+    }
+    const bool direct = model == JointSolver::Direct;
+    // The velocity passes' verdict on the joint graph holds for its blocks' orders, not for
+    // the whole list: the position passes find out again.
+    s.jointDirect.resetDense();
+    for (int i = 0; i < s.def.jointPositionIterations; ++i) {
+        if (direct ? detail::projectJointsDirect(joints, s.activeJoints, s.states, s.jointDirect)
+                   : detail::solveJointPositions(joints, s.activeJoints, s.states)) {
+            break;
+        }
+    }
+    s.jointDirect.resetDense();
+}
+
+void World::Impl::reprojectJointsAfterContinuous() {
+    detail::Simulation& s = sim;
+    bool moved = false;
+    for (std::size_t k = 0; k < s.sims.size(); ++k) {
+        const detail::BodySim& bs = s.sims[k];
+        detail::BodyState& st = s.states[k];
+        const Vec2 unmoved = bs.center0 + st.deltaPosition; // finalizePositions()'s centre
+        if (bs.center.x != unmoved.x || bs.center.y != unmoved.y) {
+            // The continuous pass's pose, as the state's motion since the step start.
+            st.deltaPosition = bs.center - bs.center0;
+            const Rot q = bs.transform.q;
+            const Rot r0 = bs.rotation0;
+            st.deltaRotation = {q.c * r0.c + q.s * r0.s, q.s * r0.c - q.c * r0.s};
+            moved = true;
+        }
+    }
+    if (moved) {
+        projectJoints();
+        detail::finalizePositions(s.sims, s.states);
     }
 }
 

@@ -176,6 +176,8 @@ struct Simulation {
     std::vector<int> activeJointLevels;
     std::vector<int> jointOrder;
     PointJointGroups pointJoints;
+    // The joints' direct position pass's arrays (SolverDef::jointPositionSolver Direct).
+    JointDirectScratch jointDirect;
     std::vector<int> jointBodyLevel;
     std::vector<int> jointLevel;
     std::vector<int> jointLevelStart;

@@ -71,6 +71,12 @@ void validate(const SolverDef& def) {
     requireNonNegative("contactDampingRatio", def.contactDampingRatio);
     requirePositive("jointHertz", def.jointHertz);
     requireNonNegative("jointDampingRatio", def.jointDampingRatio);
+    requireRange("jointPositionIterations", def.jointPositionIterations, 0, 256);
+    auto jointSolver = static_cast<int>(def.jointSolver);
+    if (jointSolver != static_cast<int>(JointSolver::Soft) && jointSolver != static_cast<int>(JointSolver::GaussSeidel) &&
+        jointSolver != static_cast<int>(JointSolver::Direct)) {
+        fail("jointSolver must be Soft, GaussSeidel or Direct, got " + std::to_string(jointSolver));
+    }
     requirePositive("contactPushMaxSpeed", def.contactPushMaxSpeed);
     requireNonNegative("restitutionThreshold", def.restitutionThreshold);
     requirePositive("maxLinearSpeed", def.maxLinearSpeed);

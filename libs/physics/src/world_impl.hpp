@@ -228,6 +228,13 @@ struct World::Impl {
     // their impulses (invH: 1 / the sub-step).
     // wide: the step's entries are the wide solver's (s.blockJoints), else s.jointOrder.
     void storeJointReactions(float invH, bool wide);
+    // Soft step, after the sub-steps: the joints' position errors removed from the states'
+    // motion (SolverDef::jointPositionIterations).
+    void projectJoints();
+    // After the continuous pass: if it moved a body back to its time of impact (a limb landing
+    // fast), the joints' position passes again from where the bodies are, so the joints do
+    // not come apart by the distance the pass took back.
+    void reprojectJointsAfterContinuous();
 };
 
 } // namespace e2d::physics

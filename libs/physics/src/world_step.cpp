@@ -402,9 +402,7 @@ void World::Impl::solve(float dt) {
         }
     };
 
-    const detail::JointStep jointStep{
-        integrationStep, 1.0f / integrationStep,
-        detail::makeSoftness(def.jointHertz, def.jointDampingRatio, integrationStep)};
+    const detail::JointStep jointStep = detail::makeJointStep(def, integrationStep, &s.jointDirect);
     detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def,
                             joints, s.jointOrder, jointStep, &s.pointJoints};
     auto pushOutSweeps = [](detail::SolverStep& st, bool on) {
@@ -503,11 +501,17 @@ void World::Impl::solve(float dt) {
     }
     if (!s.activeJoints.empty()) {
         storeJointReactions(1.0f / integrationStep, wide);
+        if (def.mode == SolverMode::SoftStep) {
+            projectJoints();
+        }
     }
     detail::finalizePositions(s.sims, s.states);
 
     if (def.enableContinuous) {
         solveContinuous();
+        if (!s.activeJoints.empty() && def.mode == SolverMode::SoftStep) {
+            reprojectJointsAfterContinuous();
+        }
     }
 
     // Write back, move the proxies; a body whose state went non-finite or whose origin left

@@ -204,6 +204,7 @@ TEST(RevoluteJointSoftness, JointHertzSetsTheStretchUnderLoad) {
         def.gravity = {0.0f, -10.0f};
         def.solver.subSteps = 8;
         def.solver.jointHertz = hertz;
+        def.solver.jointSolver = JointSolver::Soft; // the rows are rigid in the other models
         World world(def);
         BodyId top = addStatic(world, {0.0f, 0.0f});
         BodyId link = addDisc(world, {0.0f, -0.5f}, 0.05f);

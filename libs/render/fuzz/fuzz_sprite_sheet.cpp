@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Arbitrary bytes into the TexturePacker JSON reader: the result is either a sheet whose every
-// frame lies inside its image with texture coordinates in [0, 1], or core::Error, never
-// anything else (no crash, no other exception).
+// frame lies inside its image with texture coordinates in [0, 1], or core::Error whose message
+// is printable text (bytes quoted from the input escaped), never anything else (no crash, no
+// stack overflow, no other exception). Seeds in corpus/fuzz_sprite_sheet/ nest near and past the
+// depth limit and are cut mid-file; fuzz_sprite_sheet.dict holds the format's tokens.
 #include <e2d/core/error.hpp>
+#include <e2d/core/printable.hpp>
+#include <e2d/core/utf8.hpp>
 #include <e2d/render/sprite_sheet.hpp>
 
 #include <cstddef>
@@ -42,7 +46,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             }
         }
         sheet.checkImageSize(image);
-    } catch (const e2d::core::Error&) {
+    } catch (const e2d::core::Error& e) {
+        check(e2d::core::isPrintable(e.what()));
     }
     return 0;
 }

@@ -22,6 +22,11 @@ const std::vector<AnimationFrame>& checkedFrames(const AnimatedSpriteRendererDef
             detail::fail(kCtor, "frames[" + std::to_string(i) + "].uv must lie in [0, 1], got min " +
                                     detail::formatVec(r.min) + " size " + detail::formatVec(r.size));
         }
+        const glm::vec2 size = def.frames[i].size;
+        if (!detail::isFinite(size) || size.x < 0.0f || size.y < 0.0f) {
+            detail::fail(kCtor, "frames[" + std::to_string(i) + "].size must be >= 0 and finite, got " +
+                                    detail::formatVec(size));
+        }
     }
     return def.frames;
 }
@@ -33,11 +38,16 @@ AnimationDef timing(const AnimatedSpriteRendererDef& def) {
 }
 
 SpriteRendererDef firstLook(const AnimatedSpriteRendererDef& def) {
+    checkedFrames(def); // its messages come first: the sprite's size may come from a frame
     SpriteRendererDef s = def.sprite;
     const int start = def.animation.startFrame;
     if (start >= 0 && static_cast<std::size_t>(start) < def.frames.size()) {
-        s.uv = def.frames[static_cast<std::size_t>(start)].uv;
-        s.uvRotated = def.frames[static_cast<std::size_t>(start)].rotated;
+        const AnimationFrame& frame = def.frames[static_cast<std::size_t>(start)];
+        s.uv = frame.uv;
+        s.uvRotated = frame.rotated;
+        if (s.size == glm::vec2(0.0f)) {
+            s.size = frame.size;
+        }
     }
     return s;
 }
@@ -54,13 +64,14 @@ std::vector<AnimationFrame> animationUvs(const SpriteSheet& sheet, std::string_v
     frames.reserve(indices.size());
     for (int index : indices) {
         const SpriteFrame& frame = sheet.frames()[static_cast<std::size_t>(index)];
-        frames.push_back(AnimationFrame{frame.uv, frame.rotated});
+        frames.push_back(AnimationFrame{frame.uv, frame.rotated, glm::vec2(frame.size())});
     }
     return frames;
 }
 
 AnimatedSpriteRenderer::AnimatedSpriteRenderer(const AnimatedSpriteRendererDef& def)
-    : SpriteRenderer(firstLook(def)), frames_(checkedFrames(def)), animation_(timing(def)) {
+    : SpriteRenderer(firstLook(def)), frames_(checkedFrames(def)), animation_(timing(def)),
+      frameSized_(def.sprite.size == glm::vec2(0.0f)) {
     shown_ = animation_.frame();
 }
 
@@ -70,6 +81,9 @@ void AnimatedSpriteRenderer::update(double dt) {
         shown_ = animation_.frame();
         const AnimationFrame& frame = frames_[static_cast<std::size_t>(shown_)];
         setUv(frame.uv, frame.rotated);
+        if (frameSized_) {
+            setSize(frame.size);
+        }
     }
 }
 

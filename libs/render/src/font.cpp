@@ -9,9 +9,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace e2d::render {
@@ -20,26 +23,37 @@ namespace {
 // One pixel of empty border around every glyph, so linear filtering never bleeds neighbours in.
 constexpr int kPadding = 1;
 
+// FreeType's own list of its errors, made into a table at compile time from its header: the
+// library is usually built without the texts FT_Error_String() would return.
+struct FreetypeErrorText {
+    int code;
+    const char* text;
+};
+#undef FTERRORS_H_
+#define FT_ERROR_START_LIST constexpr FreetypeErrorText kFreetypeErrors[] = {
+#define FT_ERRORDEF(e, v, s) {v, s},
+#define FT_ERROR_END_LIST };
+#include FT_ERRORS_H
+
 std::string freetypeReason(FT_Error error) {
-    const char* text = FT_Error_String(error);
-    std::string reason;
-    if (text != nullptr) {
-        reason = text;
-    } else {
-        // FreeType is often built without its message table; the common ones by number.
-        switch (error) {
-        case FT_Err_Cannot_Open_Resource: reason = "cannot open resource"; break;
-        case FT_Err_Unknown_File_Format: reason = "unknown file format"; break;
-        case FT_Err_Invalid_File_Format: reason = "broken file"; break;
-        case FT_Err_Invalid_Pixel_Size: reason = "invalid pixel size"; break;
-        case FT_Err_Out_Of_Memory: reason = "out of memory"; break;
-        default: reason = "error"; break;
-        }
-    }
     char code[16];
     std::snprintf(code, sizeof(code), "0x%02X", static_cast<unsigned>(error));
-    return reason + " (FreeType error " + code + ")";
+    for (const FreetypeErrorText& known : kFreetypeErrors) {
+        if (known.code == error) {
+            return std::string(known.text) + " (FreeType error " + code + ")";
+        }
+    }
+    return std::string("FreeType error ") + code;
 }
+
+std::string codePointName(char32_t codePoint) {
+    char text[16];
+    std::snprintf(text, sizeof(text), "U+%04X", static_cast<unsigned>(codePoint));
+    return text;
+}
+
+// Damaged glyphs reported per font; the last report says later ones are not.
+constexpr int kMaxGlyphReports = 8;
 
 [[noreturn]] void badField(const char* field, int value, const char* range) {
     throw core::Error(std::string("render::Font::Font(): ") + field + " must be in " + range + ", got " +
@@ -63,6 +77,7 @@ struct Font::Impl {
     int shelfY = 0;
     int shelfHeight = 0;
     bool reportedFull = false;
+    int damagedGlyphs = 0;
 
     ~Impl() {
         if (face != nullptr) {
@@ -114,10 +129,12 @@ struct Font::Impl {
         return true;
     }
 
-    // Rasterises glyph `index`; false if FreeType cannot or the atlas is full.
-    bool rasterise(unsigned index, Glyph& out) {
-        if (FT_Load_Glyph(face, index, FT_LOAD_RENDER | FT_LOAD_TARGET_NORMAL) != 0) {
-            return false;
+    // Rasterises glyph `index`: empty on success, else why not (`atlasFull` tells the reasons
+    // apart: a full atlas is a limit of the def, the others are the font's).
+    std::string rasterise(unsigned index, Glyph& out, bool& atlasFull) {
+        atlasFull = false;
+        if (const FT_Error e = FT_Load_Glyph(face, index, FT_LOAD_RENDER | FT_LOAD_TARGET_NORMAL); e != 0) {
+            return freetypeReason(e);
         }
         const FT_GlyphSlot slot = face->glyph;
         const FT_Bitmap& bitmap = slot->bitmap;
@@ -128,15 +145,17 @@ struct Font::Impl {
         const int h = static_cast<int>(bitmap.rows);
         if (w == 0 || h == 0) {
             out.atlasRect = {};
-            return true;
+            return {};
         }
         if (bitmap.pixel_mode != FT_PIXEL_MODE_GRAY && bitmap.pixel_mode != FT_PIXEL_MODE_MONO) {
-            return false;
+            return "FreeType gave a bitmap in pixel mode " + std::to_string(bitmap.pixel_mode) +
+                   " (only grey and mono are drawn)";
         }
         int x = 0;
         int y = 0;
         if (!place(w, h, x, y)) {
-            return false;
+            atlasFull = true;
+            return "glyph atlas full at " + std::to_string(size.x) + "x" + std::to_string(size.y);
         }
         for (int row = 0; row < h; ++row) {
             const unsigned char* source = bitmap.buffer + static_cast<std::ptrdiff_t>(row) * bitmap.pitch;
@@ -154,7 +173,63 @@ struct Font::Impl {
         }
         out.atlasRect = {x, y, w, h};
         markDirty(out.atlasRect);
-        return true;
+        return {};
+    }
+
+    // Why the font draws nothing, or empty if it draws. A file cut short can open without an
+    // error: FreeType drops a table that ends past the end of the file, and every glyph then
+    // loads empty. So the letters and digits the font maps are loaded until one has ink.
+    std::string inkless() const {
+        std::string firstError;
+        bool mapsAny = false;
+        for (const auto& [first, last] : {std::pair{U'A', U'Z'}, std::pair{U'a', U'z'}, std::pair{U'0', U'9'}}) {
+            for (char32_t c = first; c <= last; ++c) {
+                const FT_UInt index = FT_Get_Char_Index(face, c);
+                if (index == 0) {
+                    continue;
+                }
+                mapsAny = true;
+                if (const FT_Error e = FT_Load_Glyph(face, index, FT_LOAD_DEFAULT); e != 0) {
+                    if (firstError.empty()) {
+                        firstError = "; " + codePointName(c) + " (glyph " + std::to_string(index) +
+                                     "): " + freetypeReason(e);
+                    }
+                    continue;
+                }
+                const FT_GlyphSlot slot = face->glyph;
+                if (slot->format == FT_GLYPH_FORMAT_OUTLINE ? slot->outline.n_points > 0
+                                                            : slot->bitmap.width > 0 && slot->bitmap.rows > 0) {
+                    return {};
+                }
+            }
+        }
+        if (!mapsAny) {
+            return {};
+        }
+        return "draws nothing: none of its glyphs for A-Z, a-z and 0-9 has an outline or a bitmap (is the "
+               "file cut short or damaged?)" +
+               firstError;
+    }
+
+    // Says once per glyph why it is drawn as .notdef; a full atlas once per font.
+    void reportUndrawable(char32_t codePoint, unsigned index, const std::string& why, bool atlasFull) {
+        if (def.logger == nullptr) {
+            return;
+        }
+        const std::string font = "render::Font: '" + def.path.string() + "' at " + std::to_string(def.pixelSize) + " px: ";
+        if (atlasFull) {
+            if (!reportedFull) {
+                def.logger->warning(font + why + "; new glyphs draw .notdef");
+                reportedFull = true;
+            }
+            return;
+        }
+        ++damagedGlyphs;
+        if (damagedGlyphs <= kMaxGlyphReports) {
+            def.logger->warning(font + "cannot draw " + codePointName(codePoint) + " (glyph " + std::to_string(index) +
+                                "): " + why + "; drawing .notdef instead" +
+                                (damagedGlyphs == kMaxGlyphReports ? " (further damaged glyphs are not reported)" : ""));
+        }
     }
 };
 
@@ -171,6 +246,10 @@ Font::Font(const FontDef& def) : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.def = def;
     const std::string name = def.path.string();
+    std::error_code ec;
+    if (std::filesystem::is_directory(def.path, ec)) {
+        throw core::Error("render::Font: '" + name + "' is a directory, not a font file");
+    }
     if (const FT_Error e = FT_Init_FreeType(&m.library); e != 0) {
         throw core::Error("render::Font: cannot start FreeType: " + freetypeReason(e));
     }
@@ -182,11 +261,15 @@ Font::Font(const FontDef& def) : impl_(std::make_unique<Impl>()) {
         throw core::Error("render::Font: '" + name + "' has no size " + std::to_string(def.pixelSize) +
                           " px: " + freetypeReason(e));
     }
+    if (const std::string why = m.inkless(); !why.empty()) {
+        throw core::Error("render::Font: '" + name + "' " + why);
+    }
     m.size = {def.atlasWidth, std::min(def.maxAtlasHeight, 64)};
     m.pixels.assign(static_cast<std::size_t>(m.size.x) * static_cast<std::size_t>(m.size.y) * 4u, 0);
     m.dirty = {0, 0, m.size.x, m.size.y};
     Glyph notdef;
-    if (!m.rasterise(0, notdef)) {
+    bool atlasFull = false;
+    if (!m.rasterise(0, notdef, atlasFull).empty()) {
         // A font whose .notdef cannot be drawn still lays text out; missing glyphs are blank.
         notdef = Glyph{};
         notdef.advance = static_cast<float>(def.pixelSize) * 0.5f;
@@ -210,14 +293,9 @@ const Glyph& Font::glyph(char32_t codePoint) {
         return it->second;
     }
     Glyph g;
-    if (!m.rasterise(index, g)) {
-        if (!m.reportedFull && m.def.logger != nullptr) {
-            m.def.logger->warning("render::Font: '" + m.def.path.string() + "' at " +
-                                  std::to_string(m.def.pixelSize) + " px: glyph atlas full at " +
-                                  std::to_string(m.size.x) + "x" + std::to_string(m.size.y) +
-                                  " (or a glyph FreeType cannot draw); drawing .notdef instead");
-            m.reportedFull = true;
-        }
+    bool atlasFull = false;
+    if (const std::string why = m.rasterise(index, g, atlasFull); !why.empty()) {
+        m.reportUndrawable(codePoint, index, why, atlasFull);
         m.indexOf.emplace(codePoint, 0u);
         return m.glyphs.at(0u);
     }

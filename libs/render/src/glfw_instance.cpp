@@ -11,7 +11,28 @@
 
 namespace e2d::render {
 
+namespace {
+
+// GLFW's own answer, so GLFW initialised by any code counts: functions that need an
+// initialised library report GLFW_NOT_INITIALIZED otherwise (no e2d code installs an error
+// callback that would see it).
+bool glfwInitialised() {
+    glfwGetError(nullptr); // this thread's earlier error, if any, is not ours to read
+    static_cast<void>(glfwGetTime());
+    return glfwGetError(nullptr) != GLFW_NOT_INITIALIZED;
+}
+
+} // namespace
+
 GlfwInstance::GlfwInstance() {
+    // A second instance would initialise nothing, and its glfwTerminate() would destroy the
+    // first one's windows under it.
+    if (glfwInitialised()) {
+        detail::fail("render::GlfwInstance",
+                     "GLFW is already initialised in this process (GLFW's state is process-wide: a Game run "
+                     "while another Game runs, or a second GlfwInstance); windows open at the same time share "
+                     "one instance (WindowDef::glfw = firstWindow.glfw())");
+    }
     // An X server under load sometimes resets a connection opened right after another client
     // closed one (XOpenDisplay fails with ECONNRESET, the next attempt works): a display that
     // exists but could not be opened is tried again a few times before it is an error. A

@@ -53,6 +53,37 @@ std::string formatName(FREE_IMAGE_FORMAT format) {
     return name != nullptr ? name : "unknown";
 }
 
+const char* imageTypeName(FREE_IMAGE_TYPE type) {
+    switch (type) {
+    case FIT_BITMAP: return "standard bitmap";
+    case FIT_UINT16: return "16-bit unsigned";
+    case FIT_INT16: return "16-bit signed";
+    case FIT_UINT32: return "32-bit unsigned";
+    case FIT_INT32: return "32-bit signed";
+    case FIT_FLOAT: return "32-bit float";
+    case FIT_DOUBLE: return "64-bit float";
+    case FIT_COMPLEX: return "complex";
+    case FIT_RGB16: return "16-bit RGB";
+    case FIT_RGBA16: return "16-bit RGBA";
+    case FIT_RGBF: return "float RGB";
+    case FIT_RGBAF: return "float RGBA";
+    default: return "unknown type";
+    }
+}
+
+// Most 32-bit BMPs are BI_RGB, whose fourth byte is padding that writers leave 0; FreeImage
+// reads it as alpha. As image viewers do, an image whose alpha is 0 everywhere is opaque.
+void opaqueIfAlphaIsPadding(Image& image) {
+    for (std::size_t i = 3; i < image.pixels.size(); i += 4) {
+        if (image.pixels[i] != 0) {
+            return;
+        }
+    }
+    for (std::size_t i = 3; i < image.pixels.size(); i += 4) {
+        image.pixels[i] = 255;
+    }
+}
+
 struct Bitmap {
     FIBITMAP* bitmap = nullptr;
     explicit Bitmap(FIBITMAP* b) : bitmap(b) {}
@@ -89,7 +120,9 @@ Image loadImage(const std::filesystem::path& path) {
     if (FreeImage_FIFSupportsReading(content) == FALSE) {
         failFile("FreeImage cannot read " + formatName(content) + " files");
     }
-    Bitmap loaded(FreeImage_Load(content, file.c_str(), 0));
+    // A camera's JPEG stores its pixels as the sensor saw them and says in EXIF how to turn
+    // them upright; image viewers do turn them.
+    Bitmap loaded(FreeImage_Load(content, file.c_str(), content == FIF_JPEG ? JPEG_EXIFROTATE : 0));
     if (loaded.bitmap == nullptr) {
         failFile(capture.reason("FreeImage_Load() failed without a reason (corrupt or truncated?)"));
     }
@@ -102,9 +135,15 @@ Image loadImage(const std::filesystem::path& path) {
     if (width == 0 || height == 0) {
         failFile("the image is " + std::to_string(width) + " x " + std::to_string(height) + " pixels");
     }
-    Bitmap rgba(FreeImage_ConvertTo32Bits(loaded.bitmap));
+    // FreeImage converts 16-bit greyscale to 32 bits only by way of 8 bits (the high byte).
+    Bitmap grey(FreeImage_GetImageType(loaded.bitmap) == FIT_UINT16 ? FreeImage_ConvertTo8Bits(loaded.bitmap)
+                                                                     : nullptr);
+    Bitmap rgba(FreeImage_ConvertTo32Bits(grey.bitmap != nullptr ? grey.bitmap : loaded.bitmap));
     if (rgba.bitmap == nullptr) {
-        failFile(capture.reason("FreeImage could not convert it to 32-bit RGBA"));
+        const std::string fallback = "FreeImage could not convert it to 32-bit RGBA (" +
+                                     std::to_string(FreeImage_GetBPP(loaded.bitmap)) + " bits per pixel, " +
+                                     imageTypeName(FreeImage_GetImageType(loaded.bitmap)) + ")";
+        failFile(capture.reason(fallback.c_str()));
     }
     Image image;
     image.width = static_cast<int>(width);
@@ -120,6 +159,9 @@ Image loadImage(const std::filesystem::path& path) {
             dst[x * 4 + 2] = src[x * 4 + FI_RGBA_BLUE];
             dst[x * 4 + 3] = src[x * 4 + FI_RGBA_ALPHA];
         }
+    }
+    if (content == FIF_BMP && FreeImage_GetBPP(loaded.bitmap) == 32) {
+        opaqueIfAlphaIsPadding(image);
     }
     return image;
 }

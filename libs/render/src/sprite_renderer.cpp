@@ -32,15 +32,19 @@ SpriteDef toSpriteDef(const SpriteRendererDef& def, TextureId texture) {
     return s;
 }
 
+void checkSize(const char* function, glm::vec2 size) {
+    if (!detail::isFinite(size) || size.x < 0.0f || size.y < 0.0f) {
+        detail::fail(function, "size must be >= 0 and finite, got " + detail::formatVec(size));
+    }
+}
+
 } // namespace
 
 SpriteRenderer::SpriteRenderer(const SpriteRendererDef& def) : def_(def) {
     // The same checks as the sprite's, before any renderer is involved.
     detail::requireFinite(kCtor, "pivot", def.pivot);
     detail::requireFinite(kCtor, "zOffset", def.zOffset);
-    if (!detail::isFinite(def.size) || def.size.x < 0.0f || def.size.y < 0.0f) {
-        detail::fail(kCtor, "size must be >= 0 and finite, got " + detail::formatVec(def.size));
-    }
+    checkSize(kCtor, def.size);
     if (!std::isfinite(def.parallax) || def.parallax < 0.0f) {
         detail::fail(kCtor, "parallax must be >= 0 and finite, got " + detail::formatFloat(def.parallax));
     }
@@ -102,6 +106,14 @@ void SpriteRenderer::setUv(const Rect& uv, bool uvRotated) {
     }
     def_.uv = uv;
     def_.uvRotated = uvRotated;
+}
+
+void SpriteRenderer::setSize(glm::vec2 size) {
+    checkSize("render::SpriteRenderer::setSize()", size);
+    if (system_ != nullptr) {
+        system_->renderer().setSize(sprite_, size);
+    }
+    def_.size = size;
 }
 
 void SpriteRenderer::setFlip(bool flipX, bool flipY) {

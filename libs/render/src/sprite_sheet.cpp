@@ -2,6 +2,8 @@
 #include <e2d/render/sprite_sheet.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/json_scan.hpp>
+#include <e2d/core/printable.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -27,7 +29,7 @@ public:
 
     [[noreturn]] void fail(std::string_view path, std::string_view what) const {
         std::string message = "render::SpriteSheet: '";
-        message.append(sheet_).append("': ");
+        message.append(core::printable(sheet_)).append("': ");
         if (!path.empty()) {
             message.append(path).append(": ");
         }
@@ -161,7 +163,7 @@ public:
     void checkInside(const SpriteFrame& f, const std::string& path, glm::ivec2 image, std::string_view what) const {
         const PixelRect& r = f.region;
         if (r.x + r.w > image.x || r.y + r.h > image.y) {
-            fail(path, "frame \"" + f.name + "\" (x " + std::to_string(r.x) + ", y " + std::to_string(r.y) +
+            fail(path, "frame \"" + core::printable(f.name) + "\" (x " + std::to_string(r.x) + ", y " + std::to_string(r.y) +
                            ", w " + std::to_string(r.w) + ", h " + std::to_string(r.h) +
                            (f.rotated ? ", rotated" : "") + ") lies outside the " + std::to_string(image.x) + "x" +
                            std::to_string(image.y) + " image" + std::string(what));
@@ -175,22 +177,6 @@ private:
 std::string hashPath(std::string_view name) {
     // Names are quoted (they hold dots and slashes); JSON's own escaping keeps them readable.
     return "frames[" + Json(std::string(name)).dump(-1, ' ', false, Json::error_handler_t::replace) + "]";
-}
-
-// Line and column (from 1) of a byte offset, for parse errors.
-std::pair<int, int> lineColumn(std::string_view text, std::size_t offset) {
-    offset = std::min(offset, text.size());
-    int line = 1;
-    int column = 1;
-    for (std::size_t i = 0; i < offset; ++i) {
-        if (text[i] == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
-    }
-    return {line, column};
 }
 
 // Splits a frame name into base, number and the rest: "run10.png" -> ("run", "10", ".png").
@@ -238,14 +224,19 @@ int compareNumbers(std::string_view a, std::string_view b) {
 
 SpriteSheet SpriteSheet::fromFile(const std::filesystem::path& path) {
     const std::string name = path.string();
+    const Reader reader(name);
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        reader.fail("", "is a directory, not a sprite sheet file");
+    }
     std::ifstream file(path, std::ios::binary);
     if (!file) {
-        throw core::Error("render::SpriteSheet: '" + name + "': cannot open the file");
+        reader.fail("", "cannot open the file");
     }
     std::ostringstream text;
     text << file.rdbuf();
     if (file.bad()) {
-        throw core::Error("render::SpriteSheet: '" + name + "': cannot read the file");
+        reader.fail("", "cannot read the file");
     }
     return fromString(text.str(), name, path.parent_path());
 }
@@ -253,24 +244,33 @@ SpriteSheet SpriteSheet::fromFile(const std::filesystem::path& path) {
 SpriteSheet SpriteSheet::fromString(std::string_view json, std::string_view name,
                                     const std::filesystem::path& imageFolder) {
     const Reader reader(name);
+    // Printing or copying a value recurses once per level: bound the depth before parsing.
+    if (const auto deep = core::findJsonNestingBeyond(json)) {
+        const core::TextPosition at = core::positionOf(json, *deep);
+        reader.fail("", "arrays and objects nest deeper than " + std::to_string(core::kMaxJsonDepth) +
+                            " levels (line " + std::to_string(at.line) + ", column " + std::to_string(at.column) +
+                            "); a sheet needs 4");
+    }
     Json root;
     try {
         root = Json::parse(json.begin(), json.end());
     } catch (const Json::parse_error& e) {
-        const auto [line, column] = lineColumn(json, e.byte == 0 ? 0 : e.byte - 1);
+        const core::TextPosition at = core::positionOf(json, e.byte == 0 ? 0 : e.byte - 1);
         // nlohmann's text starts with "[json.exception.parse_error.101] parse error at line..."
+        // and ends quoting the bytes it read, which need not be text.
         std::string what = e.what();
         const std::size_t reason = what.find(": ");
         if (reason != std::string::npos) {
             what = what.substr(reason + 2);
         }
-        reader.fail("", "malformed JSON at line " + std::to_string(line) + ", column " + std::to_string(column) +
-                            ": " + what);
+        reader.fail("", "malformed JSON at line " + std::to_string(at.line) + ", column " +
+                            std::to_string(at.column) + ": " + core::printable(what));
     } catch (const Json::exception& e) {
         // A number too large for a double ("1e999") is reported as out_of_range, without a position.
         std::string what = e.what();
         const std::size_t reason = what.find("] ");
-        reader.fail("", "malformed JSON: " + (reason == std::string::npos ? what : what.substr(reason + 2)));
+        reader.fail("", "malformed JSON: " +
+                            core::printable(reason == std::string::npos ? what : what.substr(reason + 2)));
     }
 
     SpriteSheet sheet;
@@ -293,7 +293,7 @@ SpriteSheet SpriteSheet::fromString(std::string_view json, std::string_view name
         f.uv = Rect{glm::vec2(static_cast<float>(r.x), static_cast<float>(r.y)) / pixels,
                     glm::vec2(static_cast<float>(r.w), static_cast<float>(r.h)) / pixels};
         if (!sheet.byName_.emplace(f.name, static_cast<int>(sheet.frames_.size())).second) {
-            reader.fail(path, "duplicate frame name \"" + f.name + "\"");
+            reader.fail(path, "duplicate frame name \"" + core::printable(f.name) + "\"");
         }
         sheet.frames_.push_back(std::move(f));
     };
@@ -329,7 +329,7 @@ const SpriteFrame& SpriteSheet::frame(std::string_view name) const {
     if (const SpriteFrame* f = find(name)) {
         return *f;
     }
-    throw core::Error("render::SpriteSheet::frame(): '" + name_ + "' has no frame \"" + std::string(name) + "\"");
+    throw core::Error("render::SpriteSheet::frame(): '" + name_ + "' has no frame \"" + core::printable(name) + "\"");
 }
 
 std::vector<int> SpriteSheet::animationFrames(std::string_view baseName) const {

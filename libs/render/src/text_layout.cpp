@@ -2,8 +2,7 @@
 #include <e2d/render/text.hpp>
 
 #include <e2d/core/error.hpp>
-
-#include "utf8.hpp"
+#include <e2d/core/utf8.hpp>
 
 #include <glm/common.hpp>
 
@@ -45,7 +44,7 @@ TextLayout layoutText(Font& font, std::string_view utf8, const TextStyle& style)
     const float spaceAdvance = font.glyph(U' ').advance;
     std::size_t pos = 0;
     while (pos < utf8.size()) {
-        const char32_t c = detail::decodeUtf8(utf8, pos);
+        const char32_t c = core::decodeUtf8(utf8, pos);
         if (c == U'\n') {
             widths.back() = pen;
             widths.push_back(0.0f);

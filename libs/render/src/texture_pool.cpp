@@ -54,6 +54,7 @@ Image makeCheckerImage() {
 }
 
 TexturePool::TexturePool(core::Logger* logger) : logger_(logger) {
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize_);
     Image white;
     white.width = 1;
     white.height = 1;
@@ -123,6 +124,10 @@ TextureId TexturePool::load(const std::filesystem::path& path, const TextureDef&
     std::uint32_t slot;
     try {
         Image image = loadImage(path);
+        // GL would refuse it without a word to the caller, and the sprite would draw black.
+        if (const std::string why = tooLarge(image); !why.empty()) {
+            throw core::Error("render::Renderer::loadTexture(): " + info.path + ": " + why);
+        }
         slot = add(image, def, std::move(info));
     } catch (const core::Error& error) {
         info.placeholder = true;
@@ -143,7 +148,19 @@ TextureId TexturePool::create(const Image& image, const TextureDef& def, const c
                            std::to_string(image.width) + " x " + std::to_string(image.height) + " with " +
                            std::to_string(image.pixels.size()) + " bytes");
     }
+    if (const std::string why = tooLarge(image); !why.empty()) {
+        fail(function, why);
+    }
     return idOf(add(image, def, TextureInfo{}));
+}
+
+std::string TexturePool::tooLarge(const Image& image) const {
+    if (image.width <= maxSize_ && image.height <= maxSize_) {
+        return {};
+    }
+    return "the image is " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+           " pixels, larger than this GPU's limit of " + std::to_string(maxSize_) + " x " +
+           std::to_string(maxSize_) + " (GL_MAX_TEXTURE_SIZE)";
 }
 
 bool TexturePool::isValid(TextureId id) const noexcept {

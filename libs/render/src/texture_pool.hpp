@@ -51,8 +51,11 @@ private:
         TextureInfo info;
     };
     std::uint32_t add(const Image& image, const TextureDef& def, TextureInfo info);
+    // Why the GPU cannot hold `image` (wider or taller than GL_MAX_TEXTURE_SIZE), or empty.
+    [[nodiscard]] std::string tooLarge(const Image& image) const;
 
     core::Logger* logger_;
+    GLint maxSize_ = 0;
     std::vector<Slot> slots_;
     std::vector<TextureFacts> facts_;
     std::vector<std::uint32_t> free_;

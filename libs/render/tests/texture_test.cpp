@@ -20,16 +20,6 @@ using ::testing::HasSubstr;
 
 const std::filesystem::path kData = E2D_RENDER_TEST_DATA;
 
-std::vector<char> readBytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void writeBytes(const std::filesystem::path& path, const std::vector<char>& bytes) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
-
 bool close(const std::uint8_t* p, Color c, int tolerance) {
     return near(Color{p[0], p[1], p[2], p[3]}, c, tolerance);
 }

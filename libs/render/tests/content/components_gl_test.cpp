@@ -118,6 +118,18 @@ protected:
         return folder_ / "spin.json";
     }
 
+    // An object at (100, 100) playing the frames `base`<n> of `sheet`, one every 0.25 s, at
+    // their own size.
+    AnimatedSpriteRenderer* addAnimation(const SpriteSheet& sheet, std::string_view base) {
+        core::GameObject& object = scene_.createGameObject();
+        object.setPosition(glm::vec2{100.0f, 100.0f});
+        AnimatedSpriteRendererDef def;
+        def.sprite.texturePath = sheet.imagePath().string();
+        def.frames = animationUvs(sheet, base);
+        def.animation.frameDuration = 0.25;
+        return object.addComponent<AnimatedSpriteRenderer>(def);
+    }
+
     std::unique_ptr<Window> window_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<RenderSystem> system_;
@@ -170,13 +182,7 @@ TEST_F(Components, AnimatedSpritePlaysTheSheetFramesInOrder) {
     ASSERT_NE(sheet, nullptr);
     // Thousands of sprites of one sheet share one parse.
     EXPECT_EQ(system_->sheet(path), sheet);
-    core::GameObject& object = scene_.createGameObject();
-    object.setPosition(glm::vec2{100.0f, 100.0f});
-    AnimatedSpriteRendererDef def;
-    def.sprite.texturePath = sheet->imagePath().string();
-    def.frames = animationUvs(*sheet, "spin");
-    def.animation.frameDuration = 0.25;
-    auto* sprite = object.addComponent<AnimatedSpriteRenderer>(def);
+    auto* sprite = addAnimation(*sheet, "spin");
     const Color colours[] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}};
     for (int step = 0; step < 5; ++step) {
         Image image = frame("anim_" + std::to_string(step));
@@ -187,6 +193,29 @@ TEST_F(Components, AnimatedSpritePlaysTheSheetFramesInOrder) {
         EXPECT_EQ(sprite->animation().frame(), step % 3);
         scene_.dispatchUpdate(0.25);
     }
+}
+
+TEST_F(Components, FramesOfASheetWhoseImageFailedKeepTheirDeclaredSize) {
+    // The image is missing: the 64 x 64 placeholder is drawn, at each frame's own size (it used
+    // to be the placeholder's size times the frame's UV extent: 42.7 x 21.3 for the first).
+    std::ofstream(folder_ / "gone.json") << R"({"frames": {
+        "big1.png": {"frame": {"x": 0, "y": 0, "w": 40, "h": 10}},
+        "big2.png": {"frame": {"x": 40, "y": 0, "w": 20, "h": 30}}},
+        "meta": {"image": "gone.png", "size": {"w": 60, "h": 30}}})";
+    const SpriteSheet* sheet = system_->sheet(folder_ / "gone.json");
+    ASSERT_NE(sheet, nullptr);
+    // A white background, so both colours of the checker count as the sprite.
+    renderer_->createSprite(SpriteDef{.position = {160.0f, 100.0f}, .z = -1.0f, .size = {320.0f, 200.0f}});
+    addAnimation(*sheet, "big");
+    EXPECT_TRUE(renderer_->textureInfo(renderer_->loadTexture(sheet->imagePath())).placeholder);
+    const Color white{255, 255, 255, 255};
+    const Image first = frame("placeholder_frame_1");
+    EXPECT_EQ(320 * 200 - count(first, 0, 0, 320, 200, white, 10), 40 * 10);
+    EXPECT_EQ(count(first, 80, 95, 120, 105, white, 10), 0);
+    scene_.dispatchUpdate(0.25);
+    const Image second = frame("placeholder_frame_2");
+    EXPECT_EQ(320 * 200 - count(second, 0, 0, 320, 200, white, 10), 20 * 30);
+    EXPECT_EQ(count(second, 90, 85, 110, 115, white, 10), 0);
 }
 
 TEST_F(Components, ABrokenSheetIsReportedOnceAndGivesNull) {

@@ -13,6 +13,8 @@
 #include <e2d/render/text_renderer.hpp>
 #include <e2d/render/window.hpp>
 
+#include "font_files.hpp"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -24,6 +26,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace e2d::render;
@@ -203,31 +206,38 @@ TEST_F(ContentGl, AlignmentModesPutTheInkWhereTheLayoutSays) {
     EXPECT_GE(static_cast<float>(inkC.min.y), bottomRight.y);
 }
 
-TEST_F(ContentGl, AFileThatIsNotAFontGivesItsErrorAndTheNextFrameStillRenders) {
-    const auto path = std::filesystem::temp_directory_path() / "e2d_content_gl_not_a_font.ttf";
-    std::ofstream(path) << "plain text, not a font";
-    std::vector<std::string> logged;
-    e2d::core::Logger logger(e2d::core::LogLevel::Info,
-                             [&](e2d::core::LogLevel, std::string_view m) { logged.emplace_back(m); });
-    TextRenderer text(*renderer_, &logger);
-    Font* font = text.font(path, 24);
-    // The default font stands in.
-    ASSERT_NE(font, nullptr);
-    EXPECT_STREQ(font->familyName(), "DejaVu Sans");
-    EXPECT_THAT(text.fontError(path), HasSubstr("'" + path.string() + "' is not a font FreeType reads"));
-    ASSERT_EQ(logged.size(), 1u);
-    EXPECT_THAT(logged[0], HasSubstr(path.string()));
-    EXPECT_THAT(logged[0], HasSubstr("drawing with the default font"));
-    // Asking again neither reloads nor logs again.
-    EXPECT_EQ(text.font(path, 24), font);
-    EXPECT_EQ(logged.size(), 1u);
+// A file that is not a font, and a font cut short (it used to open without a word and draw no
+// quad at all): each gives its error, and the default font draws instead.
+TEST_F(ContentGl, ABadFontGivesItsErrorTheDefaultFontAndTheNextFrameStillRenders) {
+    const auto notAFont = std::filesystem::temp_directory_path() / "e2d_content_gl_not_a_font.ttf";
+    std::ofstream(notAFont) << "plain text, not a font";
+    const auto cutShort = e2d::render::test::writeCutShortFont("e2d_content_gl_cut_short.ttf");
+    for (const auto& [path, reason] : {std::pair{notAFont, "is not a font FreeType reads"},
+                                       std::pair{cutShort, "draws nothing"}}) {
+        SCOPED_TRACE(path.string());
+        std::vector<std::string> logged;
+        e2d::core::Logger logger(e2d::core::LogLevel::Info,
+                                 [&](e2d::core::LogLevel, std::string_view m) { logged.emplace_back(m); });
+        TextRenderer text(*renderer_, &logger);
+        Font* font = text.font(path, 24);
+        // The default font stands in.
+        ASSERT_NE(font, nullptr);
+        EXPECT_EQ(font->def().path, kDefaultFontPath);
+        EXPECT_THAT(text.fontError(path), HasSubstr("'" + path.string() + "' " + reason));
+        ASSERT_EQ(logged.size(), 1u);
+        EXPECT_THAT(logged[0], HasSubstr(path.string()));
+        EXPECT_THAT(logged[0], HasSubstr("drawing with the default font"));
+        // Asking again neither reloads nor logs again.
+        EXPECT_EQ(text.font(path, 24), font);
+        EXPECT_EQ(logged.size(), 1u);
 
-    static_cast<void>(text.draw(*font, "first", {}, {.position = {10.0f, 150.0f}}));
-    EXPECT_GT(inkIn(render("bad_font_1"), 0, 0, kWidth, kHeight).count, 50);
-    static_cast<void>(text.draw(*font, "second", {}, {.position = {10.0f, 60.0f}}));
-    const Frame second = render("bad_font_2");
-    EXPECT_GT(inkIn(second, 0, 0, kWidth, 100).count, 50);
-    EXPECT_EQ(inkIn(second, 0, 100, kWidth, kHeight).count, 0); // last frame's text is gone
+        EXPECT_EQ(text.draw(*font, "first", {}, {.position = {10.0f, 150.0f}}).quads.size(), 5u);
+        EXPECT_GT(inkIn(render("bad_font_1"), 0, 0, kWidth, kHeight).count, 50);
+        static_cast<void>(text.draw(*font, "second", {}, {.position = {10.0f, 60.0f}}));
+        const Frame second = render("bad_font_2");
+        EXPECT_GT(inkIn(second, 0, 0, kWidth, 100).count, 50);
+        EXPECT_EQ(inkIn(second, 0, 100, kWidth, kHeight).count, 0); // last frame's text is gone
+    }
 }
 
 TEST_F(ContentGl, NewGlyphsAndAGrowingAtlasReachTheTexture) {

@@ -294,3 +294,57 @@ TEST(SpriteSheet, HugeAndOddNumbersAreRejectedNotWrapped) {
     // Whole numbers written with a fraction are fine.
     EXPECT_NO_THROW(static_cast<void>(SpriteSheet::fromString(oneFrame(R"({"frame": {"x": 2.0, "y": 0, "w": 1, "h": 1}})"), "s")));
 }
+
+TEST(SpriteSheet, DeepNestingIsRefusedBeforeParsingNamingTheFileAndDepth) {
+    // 100 000 levels used to overflow the stack: in an ignored key (ordered_json copied the
+    // value), as the whole document (describe() printed it), and cut off mid-file.
+    const int n = 100000;
+    const std::string deep = std::string(n, '[') + std::string(n, ']');
+    const auto dir = std::filesystem::temp_directory_path() / "e2d_sheet_deep_test";
+    std::filesystem::create_directories(dir);
+    const auto path = dir / "d.json";
+    std::ofstream(path) << deep;
+    try {
+        static_cast<void>(SpriteSheet::fromFile(path));
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), "render::SpriteSheet: '" + path.string() +
+                                             "': arrays and objects nest deeper than 256 levels (line 1, column "
+                                             "257); a sheet needs 4");
+    }
+    EXPECT_THAT(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 1, "h": 1}, "extra": )" + deep + "}")),
+                HasSubstr("nest deeper than 256 levels (line 1, column 324)"));
+    EXPECT_THAT(errorOf(deep.substr(0, n / 2 + 7)), HasSubstr("nest deeper than 256 levels"));
+    // Brackets in strings are text, and 256 levels are allowed (3 hold the frame).
+    const std::string allowed = std::string(253, '[') + std::string(253, ']');
+    EXPECT_NO_THROW(static_cast<void>(SpriteSheet::fromString(
+        oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 1, "h": 1}, "extra": )" + allowed + R"(, "s": "[[[[[["})"),
+        "s")));
+}
+
+TEST(SpriteSheet, ADirectoryIsNamedAsOne) {
+    const auto dir = std::filesystem::temp_directory_path() / "e2d_sheet_dir_test.json";
+    std::filesystem::create_directories(dir);
+    try {
+        static_cast<void>(SpriteSheet::fromFile(dir));
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "render::SpriteSheet: '" + dir.string() + "': is a directory, not a sprite sheet file");
+    }
+}
+
+TEST(SpriteSheet, BytesQuotedFromTheFileAreEscapedWhenNotPrintable) {
+    // An ill-formed UTF-8 string and a control character: nlohmann quotes what it read.
+    const std::string message = errorOf("{\"frames\": \"\xFF\xFE\"}", "bin.json");
+    EXPECT_THAT(message, testing::StartsWith("render::SpriteSheet: 'bin.json': malformed JSON at line 1, column 13: "));
+    EXPECT_THAT(message, HasSubstr("\\xff"));
+    EXPECT_EQ(message.find('\xFF'), std::string::npos) << message;
+    // A raw control character: nlohmann names it itself, and the message holds no such byte.
+    EXPECT_EQ(errorOf("{\"a\x01\": 1}").find('\x01'), std::string::npos);
+    // A frame name holding a control character (written as a JSON escape) is escaped when named.
+    EXPECT_EQ(errorOf(R"({"frames": [{"filename": "x\u0007", "frame": {"x": 0, "y": 0, "w": 1, "h": 1}},
+                                     {"filename": "x\u0007", "frame": {"x": 0, "y": 0, "w": 1, "h": 1}}],
+                         "meta": {"image": "a", "size": {"w": 1, "h": 1}}})"),
+              "render::SpriteSheet: 'bad.json': frames[1]: duplicate frame name \"x\\x07\"");
+}

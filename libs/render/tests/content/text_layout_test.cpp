@@ -4,7 +4,7 @@
 #include <e2d/render/font.hpp>
 #include <e2d/render/text.hpp>
 
-#include "utf8.hpp"
+#include "font_files.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -25,21 +25,9 @@ using e2d::render::layoutText;
 using e2d::render::TextLayout;
 using e2d::render::TextStyle;
 using e2d::render::VerticalAlign;
-using e2d::render::detail::decodeUtf8;
 using testing::HasSubstr;
 
 namespace {
-
-std::vector<char32_t> decodeAll(std::string_view text) {
-    std::vector<char32_t> out;
-    std::size_t pos = 0;
-    while (pos < text.size()) {
-        const std::size_t before = pos;
-        out.push_back(decodeUtf8(text, pos));
-        EXPECT_GT(pos, before);
-    }
-    return out;
-}
 
 std::string fontError(const FontDef& def) {
     try {
@@ -88,29 +76,6 @@ Canvas paint(const Font& font, const TextLayout& layout, int margin) {
 }
 
 } // namespace
-
-TEST(Utf8, DecodesOneToFourByteSequences) {
-    EXPECT_THAT(decodeAll("A\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80"), testing::ElementsAre(U'A', U'\u00E9', U'\u20AC', U'\U0001F600'));
-    EXPECT_THAT(decodeAll(std::string_view("\0z", 2)), testing::ElementsAre(U'\0', U'z'));
-}
-
-TEST(Utf8, EveryIllFormedSequenceGivesReplacementAndMovesOn) {
-    constexpr char32_t R = 0xFFFD;
-    // A stray continuation byte, a byte that never starts a sequence, overlong forms.
-    EXPECT_THAT(decodeAll("\x80z"), testing::ElementsAre(R, U'z'));
-    EXPECT_THAT(decodeAll("\xFFz"), testing::ElementsAre(R, U'z'));
-    EXPECT_THAT(decodeAll("\xC0\xAFz"), testing::ElementsAre(R, R, U'z'));
-    EXPECT_THAT(decodeAll("\xE0\x80\xAFz"), testing::ElementsAre(R, R, R, U'z'));
-    // A surrogate (U+D800) and a value past U+10FFFF.
-    EXPECT_THAT(decodeAll("\xED\xA0\x80z"), testing::ElementsAre(R, R, R, U'z'));
-    EXPECT_THAT(decodeAll("\xF4\x90\x80\x80z"), testing::ElementsAre(R, R, R, R, U'z'));
-    // Truncated: the valid prefix is one replacement, then the next character survives.
-    EXPECT_THAT(decodeAll("\xE2\x82z"), testing::ElementsAre(R, U'z'));
-    EXPECT_THAT(decodeAll("\xF0\x9F\x98"), testing::ElementsAre(R));
-    // Largest valid values of each length.
-    EXPECT_THAT(decodeAll("\x7F\xDF\xBF\xEF\xBF\xBF\xF4\x8F\xBF\xBF"),
-                testing::ElementsAre(U'\x7F', U'\u07FF', U'\uFFFF', U'\U0010FFFF'));
-}
 
 TEST(Font, OpensTheDefaultFont) {
     Font font(FontDef{.pixelSize = 48});
@@ -244,6 +209,54 @@ TEST(Font, AFileThatIsNotAFontIsAnErrorNamingIt) {
               "render::Font: '" + path.string() + "' is not a font FreeType reads: unknown file format (FreeType error 0x02)");
     EXPECT_EQ(fontError({.path = "/nonexistent/font.ttf"}),
               "render::Font: '/nonexistent/font.ttf' is not a font FreeType reads: cannot open resource (FreeType error 0x01)");
+}
+
+TEST(Font, AFontCutShortThatDrawsNothingSaysSo) {
+    // head -c 60 % of a font whose outlines come last: FreeType opens it and every glyph is empty.
+    const auto path = e2d::render::test::writeCutShortFont("e2d_cut_short.ttf");
+    EXPECT_EQ(fontError({.path = path}),
+              "render::Font: '" + path.string() + "' draws nothing: none of its glyphs for A-Z, a-z and 0-9 has "
+              "an outline or a bitmap (is the file cut short or damaged?)");
+    // Cut after its outlines, the same font draws.
+    e2d::render::test::SfntFile whole;
+    whole.moveToEnd("post");
+    const auto tail = std::filesystem::temp_directory_path() / "e2d_cut_tail.ttf";
+    whole.save(tail, 0.97);
+    EXPECT_EQ(fontError({.path = tail}), "(no error)");
+}
+
+TEST(Font, AGlyphFreeTypeCannotDrawIsLoggedWithItsCodePointAndReason) {
+    const unsigned a = Font(FontDef{}).glyph(U'A').index;
+    e2d::render::test::SfntFile damaged;
+    damaged.breakGlyph(a);
+    const auto path = std::filesystem::temp_directory_path() / "e2d_broken_a.ttf";
+    damaged.save(path);
+    std::vector<std::string> messages;
+    e2d::core::Logger logger(e2d::core::LogLevel::Info,
+                             [&](e2d::core::LogLevel, std::string_view m) { messages.emplace_back(m); });
+    Font font(FontDef{.path = path, .pixelSize = 20, .logger = &logger});
+    EXPECT_TRUE(font.glyph(U'A').missing);
+    EXPECT_FALSE(font.glyph(U'B').missing);
+    EXPECT_TRUE(font.glyph(U'A').missing); // asked again: not reported again
+    ASSERT_EQ(messages.size(), 1u);
+    EXPECT_EQ(messages[0], "render::Font: '" + path.string() + "' at 20 px: cannot draw U+0041 (glyph " +
+                               std::to_string(a) + "): invalid outline (FreeType error 0x14); drawing .notdef instead");
+}
+
+TEST(Font, FreeTypeErrorsAreNamedFromFreeTypesOwnList) {
+    // No hmtx table: FreeType's error 0x93, which FT_Error_String() leaves unnamed in Debian's build.
+    e2d::render::test::SfntFile noMetrics;
+    noMetrics.drop("hmtx");
+    const auto path = std::filesystem::temp_directory_path() / "e2d_no_hmtx.ttf";
+    noMetrics.save(path);
+    EXPECT_EQ(fontError({.path = path}), "render::Font: '" + path.string() +
+                                             "' is not a font FreeType reads: horizontal metrics (hmtx) table missing (FreeType error 0x93)");
+}
+
+TEST(Font, ADirectoryIsNamedAsOne) {
+    const auto dir = std::filesystem::temp_directory_path() / "e2d_font_dir.ttf";
+    std::filesystem::create_directories(dir);
+    EXPECT_EQ(fontError({.path = dir}), "render::Font: '" + dir.string() + "' is a directory, not a font file");
 }
 
 TEST(Font, InvalidDefsNameFieldAndValue) {

@@ -3,138 +3,23 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace e2d::core {
-
-/// How the view adapts when the window's aspect ratio differs from the reference size.
-enum class ScreenFitMode { Expand, WidthFit, HeightFit, BestFit };
-enum class WindowMode { Windowed, Fullscreen };
-enum class TextureFilteringMode { Nearest, Linear };
-/// Which contact solver the game's physics world uses (see physics::SolverMode).
-enum class PhysicsSolver { SoftStep, Classic };
-
-/// The spelling used in config files ("expand", "widthFit", "heightFit", "bestFit", ...).
-[[nodiscard]] std::string_view toString(ScreenFitMode mode) noexcept;
-[[nodiscard]] std::string_view toString(WindowMode mode) noexcept;
-[[nodiscard]] std::string_view toString(TextureFilteringMode mode) noexcept;
-[[nodiscard]] std::string_view toString(PhysicsSolver solver) noexcept;
-
-/// Everything the game configuration file sets, by section: SCENE, DISPLAY, TEXT, PHYSICS,
-/// SOUND, LOOP, INPUT and DEBUG.
-///
-/// Lengths in PHYSICS are world units (metres at the default `unitsPerMetre` of 1),
-/// `firstScene` is empty (a game-specific name is no library default) and `windowTitle` is "e2d".
-struct Config {
-    // SCENE
-    /// Registry name of the scene to start with. Default "" (none).
-    std::string firstScene;
-
-    // DISPLAY
-    /// Size the game is designed for, in pixels (>= 1). Default 1024 x 624.
-    int referenceWindowWidth = 1024;
-    int referenceWindowHeight = 624;
-    /// Initial window size in pixels (>= 1). Default 1024 x 624.
-    int windowWidth = 1024;
-    int windowHeight = 624;
-    /// Default widthFit.
-    ScreenFitMode screenFitMode = ScreenFitMode::WidthFit;
-    /// Default windowed.
-    WindowMode windowMode = WindowMode::Windowed;
-    /// Any text, spaces allowed. Default "e2d".
-    std::string windowTitle = "e2d";
-    /// Default nearest.
-    TextureFilteringMode textureFilteringMode = TextureFilteringMode::Nearest;
-    /// Draw-order (z) range of the camera, > 0. Default 1000.
-    float maxCameraDepth = 1000.0f;
-    /// Swap buffers at the monitor's refresh rate (`true` / `false`). Default true.
-    bool vsync = true;
-    /// Multisample anti-aliasing samples, 0 (off) to 16. Default 0.
-    int msaaSamples = 0;
-
-    // TEXT
-    /// Base font size in pixels (>= 1). Default 100.
-    int fontSize = 100;
-
-    // PHYSICS
-    /// Gravity in m/s^2. Default (0, -9.81).
-    float gravityX = 0.0f;
-    float gravityY = -9.81f;
-    /// Seconds per physics step, > 0 and <= 1. Default 1/60.
-    double fixedTimestep = 1.0 / 60.0;
-    /// Solver iterations per step (>= 1). Default 4.
-    int collisionResolutionSteps = 4;
-    /// The contact solver: "softStep" (soft contacts, sub-stepped; e2d's default) or "classic"
-    /// (sequential impulses with position iterations). Default softStep.
-    PhysicsSolver physicsSolver = PhysicsSolver::SoftStep;
-    /// Overlap tolerated before position correction, world units (>= 0); used by the classic
-    /// solver only. Default 0.005.
-    float allowedPenetration = 0.005f;
-    /// Fraction of the overlap corrected per position iteration, in [0, 1]; used by the
-    /// classic solver only. Default 0.2.
-    float penetrationBiasFactor = 0.2f;
-    /// Speed below which a body may rest, m/s (>= 0). Default 0.05.
-    float minRigidbodySpeed = 0.05f;
-    /// World units per physics metre (> 0): the PHYSICS lengths above (gravity, penetration,
-    /// speed) are in world units and are divided by it before reaching the physics world,
-    /// which runs in metres. A config written in pixels (gravity -1000) says e.g. 100. Default 1.
-    double unitsPerMetre = 1.0;
-
-    // SOUND (world units, >= 0)
-    /// Default 256.
-    float minAttenuationDistance = 256.0f;
-    /// Default 512.
-    float maxAttenuationDistance = 512.0f;
-    /// Default 256.
-    float minPanningDistance = 256.0f;
-    /// Default 512.
-    float maxPanningDistance = 512.0f;
-    /// Overall gain (>= 0). Default 0.2.
-    float masterGain = 0.2f;
-    /// Voices that can sound at once, 1..1024. Default 32.
-    int voiceCount = 32;
-
-    // INPUT (e2d additions)
-    /// Action bindings file (`action = binding, ...`), relative to the config file's folder;
-    /// empty: none. Default "".
-    std::string bindingsFile;
-    /// Deliver the system's key auto-repeat to scenes as onKeyRepeat (`true` / `false`).
-    /// Default true.
-    bool keyRepeat = true;
-
-    // LOOP (e2d additions)
-    /// Fixed steps run at most per frame before time is dropped (>= 1). Default 5.
-    int maxStepsPerFrame = 5;
-    /// Seed for the game's Random. Default 0.
-    std::uint64_t randomSeed = 0;
-    /// Longest frame time the loop accepts, seconds, > 0 and <= 10: a longer frame (a stall,
-    /// a debugger stop) counts as this long and is counted as a spike. Default 0.25.
-    double maxFrameTime = 0.25;
-
-    // DEBUG (e2d additions)
-    /// Start with the physics debug draw on (`true` / `false`). Default false.
-    bool debugDraw = false;
-    /// Key name (as in bindings files, e.g. `f1`, `tab`) that toggles the debug draw at run
-    /// time; empty: no key. Default "f1".
-    std::string debugDrawKey = "f1";
-    /// Print the frame profile (mean milliseconds per phase) when the game ends. Default true.
-    bool printProfile = true;
-    /// Start with the frame profile overlay on: milliseconds per frame and per phase (update,
-    /// fixed steps, physics, render, audio, input) in the top-left corner. Default false.
-    bool showProfile = false;
-    /// Key name that toggles the profile overlay at run time; empty: no key. Default "f2".
-    std::string profileKey = "f2";
-};
 
 /// One problem found while reading a configuration.
 struct ConfigDiagnostic {
     enum class Severity { Warning, Error };
 
     Severity severity = Severity::Error;
-    /// Source name as given to parseConfig / the path given to loadConfig.
+    /// Source name as given to ConfigReader::read / the path given to ConfigReader::load.
     std::string file;
     /// 1-based line, 0 when the problem is not tied to a line (missing file).
     int line = 0;
@@ -148,31 +33,101 @@ struct ConfigDiagnostic {
     [[nodiscard]] std::string toString() const;
 };
 
-/// A configuration plus what went wrong reading it. Anything missing or wrong keeps its
-/// default, so `config` is always usable.
-struct ConfigResult {
-    Config config;
+/// What reading a configuration found: the diagnostics, and the line each key was set on.
+struct ConfigReport {
     std::vector<ConfigDiagnostic> diagnostics;
+    /// Key -> the line it was last set on without error.
+    std::map<std::string, int, std::less<>> lines;
 
     [[nodiscard]] bool hasErrors() const noexcept;
     [[nodiscard]] bool hasWarnings() const noexcept;
+    /// The line `key` was set on, 0 if it was not.
+    [[nodiscard]] int lineOf(std::string_view key) const noexcept;
+    /// Adds an error about `key` on the line it was set on (a check across keys, after reading).
+    void error(std::string_view file, std::string_view key, std::string message);
 };
 
-/// Parses configuration text.
+/// The range a number must be in: [min, max], or (min, max] when `minExclusive`. Infinite ends
+/// are unbounded. Default: any finite number.
+struct ConfigBounds {
+    double min = -std::numeric_limits<double>::infinity();
+    double max = std::numeric_limits<double>::infinity();
+    bool minExclusive = false;
+
+    /// >= value.
+    [[nodiscard]] static constexpr ConfigBounds atLeast(double value) noexcept { return {value}; }
+    /// > value.
+    [[nodiscard]] static constexpr ConfigBounds above(double value) noexcept {
+        return {value, std::numeric_limits<double>::infinity(), true};
+    }
+};
+
+/// The generic reader of `key = value` configuration files. Whoever owns the settings (a game
+/// engine, a tool) adds its keys, each bound to a field it owns, then reads text or a file
+/// into them; core knows no key itself.
 ///
 /// Format: one `key = value` per line; blank lines and lines starting with `#` are ignored;
 /// whitespace around key and value is trimmed and a value may contain spaces
-/// (`windowTitle = My Game`); there are no inline comments. Keys and enum values are
-/// case-sensitive. Booleans are `true` or `false`. Numbers are read locale-independently; an integer must be a whole
-/// integer ("12px" and "1.5" are errors).
+/// (`windowTitle = My Game`); there are no inline comments; a UTF-8 byte order mark is
+/// skipped. Keys and enum values are case-sensitive. Booleans are `true` or `false`. Numbers
+/// are read locale-independently; an integer must be a whole integer ("12px" and "1.5" are
+/// errors).
 ///
-/// Errors: bad or out-of-range number, unknown enum value (the accepted ones are listed),
-/// line without `=`, empty key, a min distance above its max (both reset to defaults). Warnings: unknown key (ignored), duplicate key (the last value
-/// wins). `sourceName` is used in diagnostics.
-[[nodiscard]] ConfigResult parseConfig(std::string_view text, std::string_view sourceName = "config");
+/// Errors: bad or out-of-range number, unknown enum value (the accepted ones are listed), line
+/// without `=`, empty key. Warnings: unknown key (ignored; the nearest known key is suggested:
+/// "unknown key, ignored (did you mean 'windowWidth'?)"), duplicate key (the last value wins).
+/// A value in error leaves its field as it was (its default). Raw bytes quoted in messages are
+/// escaped where not printable (core::printable).
+class ConfigReader {
+public:
+    /// Parses a value into its field; returns what is wrong with it, or nothing.
+    using Setter = std::function<std::optional<std::string>(std::string_view value)>;
 
-/// Reads and parses the file at `path`. A file that cannot be read gives the defaults and a
-/// warning; it never throws for that.
-[[nodiscard]] ConfigResult loadConfig(const std::filesystem::path& path);
+    /// Adds a key read by `setter`. Throws core::Error for an empty key, one with '=',
+    /// '#' or blanks in it, or one already added.
+    void add(std::string_view key, Setter setter);
+    /// Keys bound to fields: the value is parsed as the field's type and checked against
+    /// `bounds` (numbers).
+    void add(std::string_view key, int& field, ConfigBounds bounds = {});
+    void add(std::string_view key, std::int64_t& field, ConfigBounds bounds = {});
+    void add(std::string_view key, std::uint64_t& field, ConfigBounds bounds = {});
+    void add(std::string_view key, float& field, ConfigBounds bounds = {});
+    void add(std::string_view key, double& field, ConfigBounds bounds = {});
+    void add(std::string_view key, bool& field);
+    /// Any text, spaces included.
+    void add(std::string_view key, std::string& field);
+    /// One of `names` (the config file's spelling of each value).
+    template <class Enum>
+    void add(std::string_view key, Enum& field, std::vector<std::pair<std::string_view, Enum>> names);
+
+    /// The keys added, sorted.
+    [[nodiscard]] std::vector<std::string_view> keys() const;
+
+    /// Reads configuration text into the fields; `sourceName` names it in diagnostics.
+    ConfigReport read(std::string_view text, std::string_view sourceName = "config") const;
+    /// Reads the file at `path`. A file that cannot be read (missing, a folder) gives one
+    /// warning, line 0, and changes nothing; it never throws for that.
+    ConfigReport load(const std::filesystem::path& path) const;
+
+private:
+    static std::string unknownValue(std::string_view value, const std::vector<std::string_view>& names);
+
+    std::map<std::string, Setter, std::less<>> keys_;
+};
+
+template <class Enum>
+void ConfigReader::add(std::string_view key, Enum& field, std::vector<std::pair<std::string_view, Enum>> names) {
+    add(key, [&field, names = std::move(names)](std::string_view value) -> std::optional<std::string> {
+        std::vector<std::string_view> spelled;
+        for (const auto& [name, enumerator] : names) {
+            if (name == value) {
+                field = enumerator;
+                return std::nullopt;
+            }
+            spelled.push_back(name);
+        }
+        return unknownValue(value, spelled);
+    });
+}
 
 } // namespace e2d::core

@@ -86,8 +86,10 @@ public:
     /// a component is created with its def alone and looks its system up when it starts.
     template <class T>
     [[nodiscard]] T* findSystem() const noexcept;
-    /// Same, but throws core::Error naming the type when there is no such system (or no
-    /// host): `"core::Scene::system(): no system of type X is registered with the scene's host"`.
+    /// Same, but throws core::Error naming the type when there is no such system:
+    /// `"core::Scene::system(): no system of type X is registered with the scene's host"`, or
+    /// when the scene has no host yet (a scene's constructor runs before its host attaches:
+    /// look systems up in onInitialize() or later).
     template <class T>
     [[nodiscard]] T& system() const;
 
@@ -181,7 +183,7 @@ private:
     void removeReceivers(Component& component);
     void compactChannels();
     SceneHost& requireHost(const char* function) const;
-    [[noreturn]] static void throwNoSystem(const std::type_info& type);
+    [[noreturn]] void throwNoSystem(const std::type_info& type) const;
     void destroyPending();
     void freeSlot(GameObject& object);
 

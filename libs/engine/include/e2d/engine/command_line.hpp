@@ -21,7 +21,7 @@ struct CommandLine {
     std::filesystem::path config;
     /// `--seed N`: seeds the game's Random (overrides the config's randomSeed).
     std::optional<std::uint64_t> seed;
-    /// `--input-script FILE`: timed presses (see InputScript).
+    /// `--input-script FILE`: timed presses (see input::InputScript).
     std::filesystem::path inputScript;
     /// `--debug-draw`: start with the physics debug draw on.
     bool debugDraw = false;

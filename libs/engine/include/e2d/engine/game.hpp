@@ -22,19 +22,24 @@ namespace e2d::engine {
 /// (silent, with one message, when there is no audio device), the input and the physics world,
 /// registers their systems with the scene director — input::InputSystem,
 /// physics::PhysicsSystem, audio::AudioSystem, render::RenderSystem and engine::GameSystem, in
-/// that order — and runs the config's firstScene until the window closes, a scene calls
+/// that order, between the engine's own first and last steps of a frame — and runs the
+/// config's firstScene on core::GameLoop until the window closes, a scene calls
 /// terminateGame(), or N frames ran. Then it saves the screenshot, prints the frame profile
 /// (config printProfile) and returns.
 ///
-/// Each frame: a requested scene change is applied (the old scene ends; sprites, voices,
-/// bodies and textures no longer used are released), the scene's deferred objects join,
-/// input-script events are fed, input is polled and delivered to the scene (mouse positions
+/// Each frame (core::GameLoop's sequence): a requested scene change is applied (the old scene
+/// ends; sprites, voices, bodies and textures no longer used are released), the scene's
+/// deferred objects join, the window's events are read, input (the input script's events
+/// included: it is one more input device) is delivered to the scene (mouse positions
 /// converted to world units through the active camera), the frame time (1/60 s with
 /// `--frames`, else the clock's, clamped to maxFrameTime) runs whole fixed steps (scene, then
 /// physics), then the scene's and systems' update, then drawing: objects moved during the
 /// fixed steps (bodies, and anything moved in fixedUpdate) are drawn between their last two
 /// states, children and cameras with them (core::GameObject::renderTransform()), the physics
-/// debug draw on top.
+/// debug draw on top. The frame profile times each phase through the loop's FrameObserver.
+///
+/// One Game runs at a time in a process: GLFW's state is process-wide, and a Game run while
+/// another runs fails with exit code 3 and a message saying so (the outer game goes on).
 ///
 /// Exit codes: 0 success; 1 an error while running (an exception out of a scene: its message
 /// is logged); 2 bad command line or configuration (the message names the argument or the

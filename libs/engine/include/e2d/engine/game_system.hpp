@@ -3,6 +3,7 @@
 
 // Everything a scene reaches through GameSystem, so that one include does.
 #include <e2d/audio/mixer.hpp>
+#include <e2d/core/error.hpp>
 #include <e2d/core/log.hpp>
 #include <e2d/core/random.hpp>
 #include <e2d/core/system.hpp>

@@ -24,6 +24,8 @@ class Logger;
 
 namespace e2d::input {
 
+class ScriptedInput;
+
 /// Number of gamepad / joystick slots (GLFW_JOYSTICK_1 ... GLFW_JOYSTICK_16).
 inline constexpr int kMaxGamepads = 16;
 
@@ -147,6 +149,11 @@ public:
     void beginFrame();
     /// This frame's events, in order.
     [[nodiscard]] std::span<const Event> events() const noexcept { return events_; }
+    /// Plays `script` as one more device, from the next beginFrame() on: each beginFrame()
+    /// first queues the script's events of that frame (0 for the first beginFrame() after this
+    /// call), after the window's, through the same entry points. While a script that drives
+    /// gamepads plays, the real joysticks are not read. Replaces a script already playing.
+    void play(ScriptedInput script);
     /// Window events dropped so far because the queue was full.
     [[nodiscard]] std::size_t droppedEvents() const noexcept { return dropped_; }
 
@@ -235,6 +242,8 @@ private:
     GLFWwindow* window_ = nullptr;
     void* userData_ = nullptr;
     std::unique_ptr<SavedCallbacks> saved_;
+    std::unique_ptr<ScriptedInput> script_;
+    std::int64_t scriptFrame_ = 0;
 
     // Callback side.
     std::vector<Event> queue_;

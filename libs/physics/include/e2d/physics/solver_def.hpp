@@ -26,6 +26,23 @@ enum class MixingRule : std::uint8_t {
     Multiply,      ///< a * b
 };
 
+/// How the soft step solves joints (SolverDef::jointSolver).
+enum class JointSolver : std::uint8_t {
+    /// Box2D v3's model: the rigid rows are soft constraints of SolverDef::jointHertz, no
+    /// position pass. A joint under load stretches like a spring.
+    Soft,
+    /// Box2D 2.4's model within the sub-steps: rigid rows (a revolute joint's point and limit
+    /// as one block, so a limit stops a body dead), then SolverDef::jointPositionIterations
+    /// non-linear Gauss-Seidel passes over the position errors at the end of the step. A pass
+    /// moves an error about one joint along a chain.
+    GaussSeidel,
+    /// As GaussSeidel, and every pass also solves all rigid rows and reached limits of the
+    /// joints at once (a sparse LDL^T of the joint graph: linear time for chains and trees,
+    /// exact for small closed loops), as do the position passes. A joint graph that fills in
+    /// too much (a large net) falls back to GaussSeidel in that step.
+    Direct,
+};
+
 /// The largest SolverDef::classicAllowedPenetration, metres: a tenth of the smallest objects
 /// e2d is tuned for (see constants.hpp).
 inline constexpr float kMaxClassicAllowedPenetration = 0.1f;
@@ -65,18 +82,30 @@ struct SolverDef {
     /// 38 Hz this pushes overlapping shapes apart at Box2D v3's rate (30 Hz, ratio 10), about
     /// 9 m/s per metre of overlap, which keeps a column spawned 25 % overlapped below 10 m/s.
     float contactDampingRatio = 12.5f;
-    /// Soft step: stiffness of the rigid parts of joints (a revolute joint's point, a weld, a
-    /// limit reached, a prismatic or wheel joint's sideways and angular rows), hertz, finite,
-    /// > 0. Default 60 (Box2D v3's). Like a contact, such a row is a spring: a joint between
+    /// Soft step with JointSolver::Soft: stiffness of the rigid parts of joints (a revolute
+    /// joint's point, a weld, a limit reached, a prismatic or wheel joint's sideways and
+    /// angular rows), hertz, finite, > 0. Default 60 (Box2D v3's). The other joint models
+    /// keep these rows rigid. Like a contact, such a row is a spring: a joint between
     /// two bodies of reduced mass m under a load F stretches by about F / (m (2 pi hertz)^2)
     /// (a 5 kg ball on 0.05 kg links at 60 Hz: about 4 cm per joint). Stiffer holds heavy
     /// loads on light bodies closer, but needs more sub-steps: at 4 sub-steps, 240 Hz made
     /// the validation's joint scenes worse (a heavy ball on a light chain blew up), at 16 it
     /// held a landing ragdoll's joints within 1.2 cm. Classic mode does not use it.
     float jointHertz = 60.0f;
-    /// Soft step: damping ratio of the rigid parts of joints, finite, >= 0. Default 2 (Box2D
-    /// v3's).
+    /// Soft step with JointSolver::Soft: damping ratio of the rigid parts of joints, finite,
+    /// >= 0. Default 2 (Box2D v3's).
     float jointDampingRatio = 2.0f;
+    /// Soft step: how joints are solved. Default JointSolver::Soft (Box2D v3's model). Direct
+    /// holds what Soft cannot (validation/README.md, "Joints"), but is not the default yet: a
+    /// world whose joint layout is rebuilt every step (a body put to sleep and woken every
+    /// other step) does not yet give bit-identical results to one that keeps it.
+    JointSolver jointSolver = JointSolver::Soft;
+    /// Soft step, JointSolver GaussSeidel or Direct: position passes over the joints' errors at
+    /// the end of each step, in [0, 256]; they stop early once every error is within the
+    /// slops (kLinearSlop, 2 degrees). Each corrects a limit or a rod by at most 0.2 m or 8
+    /// degrees (a bounded push-out: a limit violated by 30 degrees is out in 4 passes, with
+    /// no speed). Default 4.
+    int jointPositionIterations = 4;
     /// Soft step: the fastest overlapping shapes are pushed apart, m/s, finite, > 0. Default 3.
     /// The cap is per contact; in a step where shapes overlap deeper than their load explains
     /// (spawned or moved into each other) their island's solve sweeps more

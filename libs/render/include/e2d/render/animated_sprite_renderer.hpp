@@ -17,12 +17,17 @@ struct AnimationFrame {
     /// The image is stored turned 90 degrees clockwise in `uv` (SpriteFrame::rotated, shown
     /// upright as SpriteDef::uvRotated). Default false.
     bool rotated = false;
+    /// Upright size of the frame, pixels (SpriteFrame::size()), used as the sprite's size while
+    /// the sprite's own size is (0, 0); (0, 0): the texture's size times the `uv` extent. A
+    /// frame that carries its size keeps it when the sheet's image failed to load and the 64 x
+    /// 64 placeholder is drawn instead. Default (0, 0).
+    glm::vec2 size{0.0f, 0.0f};
 };
 
 /// How an AnimatedSpriteRenderer starts.
 struct AnimatedSpriteRendererDef {
     /// The sprite (texture, size, pivot, tint, ...); its `uv` and `uvRotated` are replaced by
-    /// the current frame's.
+    /// the current frame's, and so is its size while it is (0, 0).
     SpriteRendererDef sprite{};
     /// The frames in playing order, at least one. Default none.
     std::vector<AnimationFrame> frames{};
@@ -32,7 +37,7 @@ struct AnimatedSpriteRendererDef {
 };
 
 /// The frames of the animation `baseName` of `sheet` (SpriteSheet::animationFrames(), natural
-/// numeric order) with their UV rectangles and rotation, for AnimatedSpriteRendererDef::frames.
+/// numeric order) with their UV rectangles, rotation and size, for AnimatedSpriteRendererDef::frames.
 /// Frames stored rotated are shown upright. Throws core::Error naming the sheet and base name
 /// when there is no such frame.
 [[nodiscard]] std::vector<AnimationFrame> animationUvs(const SpriteSheet& sheet, std::string_view baseName);
@@ -55,6 +60,8 @@ private:
     std::vector<AnimationFrame> frames_;
     Animation animation_;
     int shown_ = -1;
+    // The def's size was (0, 0): every frame shows at its own size.
+    bool frameSized_ = false;
 };
 
 } // namespace e2d::render

@@ -29,7 +29,8 @@ struct FontDef {
     int atlasWidth = 512;
     /// The atlas grows in height (doubling) up to this, pixels, in [64, 8192]. Default 4096.
     int maxAtlasHeight = 4096;
-    /// Where a full atlas is reported (once); nullptr: not reported. Default nullptr.
+    /// Where a full atlas (once) and glyphs FreeType cannot draw (code point, glyph and
+    /// FreeType's reason; the first 8) are reported; nullptr: not reported. Default nullptr.
     core::Logger* logger = nullptr;
 };
 
@@ -58,7 +59,8 @@ public:
     /// Opens `def.path` at `def.pixelSize` and rasterises its .notdef glyph. Throws core::Error
     /// naming the function, field and value for a bad def, or the file and FreeType's reason
     /// when the file cannot be read as a font (`render::Font: '/x/readme.txt' is not a font
-    /// FreeType reads: unknown file format (FreeType error 0x02)`).
+    /// FreeType reads: unknown file format (FreeType error 0x02)`), is a directory, or opens
+    /// but draws nothing (a file cut short: none of the letters and digits it maps has ink).
     explicit Font(const FontDef& def = {});
     ~Font();
     Font(Font&&) noexcept;
@@ -68,7 +70,8 @@ public:
 
     /// The glyph of `codePoint`, rasterised into the atlas the first time it is asked for.
     /// A code point the font lacks gives the .notdef glyph (`missing` set). If the atlas is full
-    /// at maxAtlasHeight, new glyphs also come back as .notdef (reported once to the logger).
+    /// at maxAtlasHeight, new glyphs also come back as .notdef (reported once to the logger), and
+    /// so does a glyph FreeType cannot draw (reported with the code point and FreeType's reason).
     /// The reference stays valid until the next call that rasterises a glyph.
     [[nodiscard]] const Glyph& glyph(char32_t codePoint);
     /// Pen adjustment between two glyphs, pixels (negative moves the right one closer), from the

@@ -25,7 +25,9 @@ struct Image {
 };
 
 /// Reads PNG, JPEG, BMP, TGA, GIF (anything FreeImage reads) and converts it to RGBA8.
-/// The format is taken from the file's content; when the extension names another format the
+/// 16-bit channels keep their high byte; a JPEG is turned upright as its EXIF orientation
+/// says; a 32-bit BMP whose alpha is 0 everywhere (BI_RGB padding) is opaque, as viewers
+/// show it. The format is taken from the file's content; when the extension names another format the
 /// file FreeImage knows (a JPEG named .png) it is refused. Throws core::Error naming the file
 /// and the reason (FreeImage's own message when it gives one): missing file, unknown or
 /// mismatched format, corrupt or truncated data, a 0 x 0 image.

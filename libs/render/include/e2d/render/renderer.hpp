@@ -182,12 +182,13 @@ public:
 
     /// The texture of the image file at `path`, loaded on the first call for that path
     /// (later calls return the same id; `def` of the first call wins). Never throws for a bad
-    /// file: a missing, corrupt or 0 x 0 file gives a texture that draws the magenta/black
-    /// checker placeholder, its error (file and reason) is logged once and kept in
-    /// textureInfo(id).error.
+    /// file: a missing, corrupt or 0 x 0 file, or an image wider or taller than the GPU takes
+    /// (GL_MAX_TEXTURE_SIZE), gives a texture that draws the magenta/black checker placeholder,
+    /// its error (file and reason) is logged once and kept in textureInfo(id).error.
     TextureId loadTexture(const std::filesystem::path& path, const TextureDef& def = {});
     /// A texture from RGBA8 pixels in memory (rows from the top). Throws core::Error for an
-    /// empty image or a pixel count that does not match its size.
+    /// empty image, a pixel count that does not match its size, or a size beyond
+    /// GL_MAX_TEXTURE_SIZE.
     TextureId createTexture(const Image& image, const TextureDef& def = {});
     /// Replaces a `size` rectangle of texels at `offset` (pixels, top-left origin) with
     /// `rgba` (size.x * size.y * 4 bytes, rows from the top). Throws core::Error for a stale

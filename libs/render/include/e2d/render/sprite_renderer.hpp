@@ -63,6 +63,9 @@ public:
     void setTint(Color tint);
     /// The UV rectangle and whether the image is stored turned in it (SpriteDef::uvRotated).
     void setUv(const Rect& uv, bool uvRotated = false);
+    /// Quad size before the object's scale, world units; (0, 0): the texture's size times the
+    /// UV extent. Throws core::Error for a negative or non-finite size.
+    void setSize(glm::vec2 size);
     void setFlip(bool flipX, bool flipY);
     void setVisible(bool visible);
     void setTexture(TextureId texture);

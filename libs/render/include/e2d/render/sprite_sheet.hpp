@@ -70,13 +70,16 @@ struct SpriteFrame {
 /// Keys read: `frames` (object of name -> frame, or array of frames with `filename`), per frame
 /// `frame` {x, y, w, h} (required), `rotated`, `trimmed`, `spriteSourceSize` {x, y, w, h},
 /// `sourceSize` {w, h}, `pivot` {x, y} (optional), and `meta.image`, `meta.size` {w, h}
-/// (required). Other keys are ignored. Every error is a core::Error naming the sheet and the
-/// key path, e.g. `render::SpriteSheet: 'hero.json': frames["run1.png"].frame.w: expected a
-/// non-negative integer, got "12"`.
+/// (required). Other keys are ignored. Arrays and objects may nest at most
+/// core::kMaxJsonDepth (256) levels deep, checked before parsing. Every error is a core::Error
+/// naming the sheet and the key path, e.g. `render::SpriteSheet: 'hero.json':
+/// frames["run1.png"].frame.w: expected a non-negative integer, got "12"`; bytes quoted from the
+/// file that are not printable UTF-8 are escaped (core::printable()).
 class SpriteSheet {
 public:
     /// Reads and parses the JSON file at `path`; `meta.image` is resolved against the file's
-    /// folder. Throws core::Error if the file cannot be read or is not a valid sheet.
+    /// folder. Throws core::Error if the file cannot be read (a directory is named as one) or is
+    /// not a valid sheet.
     [[nodiscard]] static SpriteSheet fromFile(const std::filesystem::path& path);
     /// Parses `json`; `name` is used in error messages, `imageFolder` to resolve `meta.image`.
     /// Throws core::Error if `json` is not a valid sheet.

@@ -24,6 +24,9 @@ public:
     /// "render::GlfwInstance: glfwInit() failed: X11: The DISPLAY environment variable is
     /// missing"). A display that is set but refuses the connection (an X server under load
     /// may reset it) is tried up to 4 times, about 0.2 s in all, before that is an error.
+    /// Throws core::Error too when GLFW is already initialised in this process (a second
+    /// instance, or a Game run inside a running one): its glfwTerminate() would close the
+    /// first one's windows.
     GlfwInstance();
     ~GlfwInstance();
     GlfwInstance(const GlfwInstance&) = delete;

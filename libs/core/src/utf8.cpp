@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include "utf8.hpp"
+#include <e2d/core/utf8.hpp>
 
-namespace e2d::render::detail {
+namespace e2d::core {
 
 char32_t decodeUtf8(std::string_view text, std::size_t& pos) noexcept {
     const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
@@ -49,4 +49,18 @@ char32_t decodeUtf8(std::string_view text, std::size_t& pos) noexcept {
     return value;
 }
 
-} // namespace e2d::render::detail
+bool isPrintable(std::string_view text) noexcept {
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        const std::size_t start = pos;
+        const char32_t c = decodeUtf8(text, pos);
+        // U+FFFD written in the text is text; one made by the decoder stands for bad bytes.
+        if (c < 0x20 || c == 0x7F ||
+            (c == kReplacementCharacter && text.substr(start, pos - start) != "\xEF\xBF\xBD")) {
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace e2d::core

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/core/error.hpp>
-#include <e2d/engine/input_script.hpp>
+#include <e2d/input/actions.hpp>
+#include <e2d/input/input.hpp>
+#include <e2d/input/input_script.hpp>
+#include <e2d/input/names.hpp>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -11,9 +14,9 @@
 namespace {
 
 using namespace e2d;
-using engine::InputScript;
-using engine::parseInputScript;
-using engine::ScriptEvent;
+using input::InputScript;
+using input::parseInputScript;
+using input::ScriptEvent;
 using Kind = ScriptEvent::Kind;
 
 std::string errorOf(std::string_view text) {
@@ -61,7 +64,7 @@ TEST(InputScript, MalformedLinesNameFileAndLine) {
 
 TEST(InputScript, MissingFileIsNamed) {
     try {
-        static_cast<void>(engine::loadInputScript("/no/such/script.txt"));
+        static_cast<void>(input::loadInputScript("/no/such/script.txt"));
         FAIL();
     } catch (const core::Error& e) {
         EXPECT_STREQ(e.what(), "/no/such/script.txt: cannot read the input script");
@@ -102,6 +105,77 @@ TEST(InputScript, MalformedMovesNameFileLineAndValue) {
     EXPECT_EQ(errorOf("1 move axis:leftx"), "run.txt:1: move axis:leftx: expected one value in [-1, 1], got ''");
     EXPECT_EQ(errorOf("1 move axis:leftx nan"), "run.txt:1: move axis:leftx: expected one value in [-1, 1], got 'nan'");
     EXPECT_EQ(errorOf("1 move jump 1"), "run.txt:1: move: expected 'mouse' or a gamepad axis (axis:leftx), got 'jump'");
+}
+
+TEST(InputScript, FramesAreBoundedSoATapCannotOverflow) {
+    // A tap's release is one frame later: at INT64_MAX it was signed overflow (UBSan) and the
+    // release landed at frame -2^63.
+    EXPECT_EQ(errorOf("\n9223372036854775807 tap key:space"),
+              "run.txt:2: frame must be a whole number in [0, 1000000000], got '9223372036854775807'");
+    EXPECT_EQ(errorOf("99999999999999999999999 press key:space"),
+              "run.txt:1: frame must be a whole number in [0, 1000000000], got '99999999999999999999999'");
+    EXPECT_EQ(errorOf("1000000001 press key:space"),
+              "run.txt:1: frame must be a whole number in [0, 1000000000], got '1000000001'");
+    const InputScript s = parseInputScript("1000000000 tap key:space");
+    ASSERT_EQ(s.events.size(), 2u);
+    EXPECT_EQ(s.events[1].frame, input::kMaxScriptFrame + 1);
+}
+
+TEST(InputScript, BytesThatAreNotPrintableAreQuotedEscaped) {
+    EXPECT_EQ(errorOf(std::string("3 pr\0ess jump", 14)),
+              "run.txt:1: expected press, release, tap or move, got 'pr\\x00ess'");
+    EXPECT_EQ(errorOf("3 move mouse \x1b[2J 4"),
+              "run.txt:1: move mouse: expected '<x> <y>' in window pixels, got '\\x1b[2J 4'");
+}
+
+// --- The script as a device ------------------------------------------------------------------
+
+std::string playError(std::string_view text, const input::ActionMap& actions = input::ActionMap()) {
+    try {
+        static_cast<void>(input::ScriptedInput(parseInputScript(text, "run.txt"), actions));
+    } catch (const core::Error& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+TEST(ScriptedInput, FeedsTheInputQueueAndPollingStateOnItsFrames) {
+    input::ActionMap actions;
+    actions.bind(actions.add("jump"), input::Binding::key(*input::keyFromName("space")));
+    input::Input in; // detached: a script is enough
+    in.play(input::ScriptedInput(parseInputScript("1 tap jump\n"
+                                                  "2 move mouse 10 20\n"
+                                                  "0 press button@1:a\n"
+                                                  "3 move axis@1:righttrigger 1\n"),
+                                 actions));
+    const int space = *input::keyFromName("space");
+    in.beginFrame(); // frame 0: the scripted pad is plugged in, its A held
+    EXPECT_TRUE(in.isGamepadConnected(1));
+    EXPECT_FALSE(in.isGamepadConnected(0));
+    EXPECT_TRUE(in.isGamepadButtonDown(1, 0));
+    EXPECT_FALSE(in.isKeyDown(space));
+    in.beginFrame(); // frame 1: the tap's press
+    EXPECT_TRUE(in.wasKeyPressed(space));
+    ASSERT_FALSE(in.events().empty());
+    EXPECT_EQ(in.events().front().type, input::EventType::KeyDown);
+    in.beginFrame(); // frame 2: its release, the cursor move
+    EXPECT_TRUE(in.wasKeyReleased(space));
+    EXPECT_FALSE(in.isKeyDown(space));
+    EXPECT_EQ(in.mousePosition(), glm::vec2(10.0f, 20.0f));
+    in.beginFrame(); // frame 3: the trigger pulled all the way
+    EXPECT_EQ(in.gamepadAxis(1, 5), 1.0f);
+}
+
+TEST(ScriptedInput, TargetsThatCannotBePlayedNameTheLine) {
+    EXPECT_EQ(playError("\n0 press jump"), "run.txt:2: 'jump' is not an action of the game (nor a binding such as key:space)");
+    EXPECT_THAT(playError("0 press key:spcae"), testing::StartsWith("run.txt:1: input::parseBinding(): unknown key name"));
+    EXPECT_EQ(playError("0 press axis:leftx"),
+              "run.txt:1: 'axis:leftx': only key:, mouse: and button: bindings can be pressed (axes are moved: "
+              "'<frame> move axis:leftx <value>')");
+    EXPECT_EQ(playError("0 move axis:lefttrigger -0.5"), "run.txt:1: move axis:lefttrigger: a trigger's value is in [0, 1], got -0.5");
+    input::ActionMap actions;
+    actions.bind(actions.add("steer"), input::Binding::gamepadAxis(0));
+    EXPECT_EQ(playError("0 press steer", actions), "run.txt:1: action 'steer' has no keyboard or mouse-button binding to press");
 }
 
 } // namespace

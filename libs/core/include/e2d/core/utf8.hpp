@@ -2,11 +2,12 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <string_view>
 
-namespace e2d::render::detail {
+namespace e2d::core {
 
-/// Replacement for every ill-formed sequence.
+/// Replacement for every ill-formed UTF-8 sequence (U+FFFD).
 inline constexpr char32_t kReplacementCharacter = 0xFFFD;
 
 /// Decodes the code point starting at `text[pos]` and moves `pos` past it. An ill-formed
@@ -15,4 +16,9 @@ inline constexpr char32_t kReplacementCharacter = 0xFFFD;
 /// (Unicode's "maximal subpart" practice), so decoding always moves on. `pos` < text.size().
 char32_t decodeUtf8(std::string_view text, std::size_t& pos) noexcept;
 
-} // namespace e2d::render::detail
+/// True when `text` holds no control byte (below 0x20, or 0x7F; NUL included) and is
+/// well-formed UTF-8: what core::printable() (printable.hpp) returns always is. For checks
+/// that a message quotes nothing raw.
+[[nodiscard]] bool isPrintable(std::string_view text) noexcept;
+
+} // namespace e2d::core

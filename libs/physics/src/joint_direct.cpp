@@ -1,0 +1,584 @@
+// SPDX-License-Identifier: MIT
+// The joints' position pass as one direct solve (SolverDef::jointPositionSolver Direct): every
+// rigid row of every joint at once, K dlambda = -C with K = J M^-1 J^T, factored by sparse
+// block LDL^T in minimum-degree order. A chain or a tree eliminates leaf first without fill
+// (Baraff 1996's linear-time factorisation, here over the joints: a joint's neighbours are the
+// joints sharing one of its bodies); closed loops (a net, a scissor lift) fill in, and are
+// solved exactly too. Each pass linearises at the current positions (a Newton step), so a
+// few passes remove errors that a Gauss-Seidel sweep would take one link per pass to move
+// along a chain.
+#include "joint_solver.hpp"
+
+#include <e2d/physics/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace e2d::physics::detail {
+
+namespace {
+
+using Block = JointDirectScratch::Block;
+
+// One rigid row: the motion of B's side minus A's along it (linear part per body, angular
+// part), and its error.
+struct RowJ {
+    Vec2 linA;
+    float angA;
+    Vec2 linB;
+    float angB;
+};
+
+// The rows of joint j at the states' current positions (0 to 3), their errors c and, for
+// the velocity solve, the accumulated impulse each one adds to (`acc`) and whether that one
+// stays >= 0 (a limit). Position rows: a limit only when violated, its error capped (a bounded
+// push-out). Velocity rows: a revolute joint's nearer limit once it is within the angular slop
+// or pushing, signed so that c >= 0 is allowed.
+int jointRows(Joint& j, const BodyState& a, const BodyState& b, bool velocity, bool released, RowJ rows[3],
+              float c[3], float* acc[3], bool oneSided[3], JointErrors& worst) {
+    int n = 0;
+    auto add = [&](RowJ row, float C, float* accumulated, bool limit) {
+        rows[n] = row;
+        c[n] = C;
+        acc[n] = accumulated;
+        oneSided[n++] = limit;
+    };
+    auto point = [&](const JointFrame& f) {
+        add({{-1.0f, 0.0f}, f.rA.y, {1.0f, 0.0f}, -f.rB.y}, f.d.x, &j.linearImpulse.x, false);
+        add({{0.0f, -1.0f}, -f.rA.x, {0.0f, 1.0f}, f.rB.x}, f.d.y, &j.linearImpulse.y, false);
+        worst.linear = std::max(worst.linear, length(f.d));
+    };
+    auto angle = [&](float C, float* accumulated) {
+        add({{0.0f, 0.0f}, -1.0f, {0.0f, 0.0f}, 1.0f}, C, accumulated, false);
+        worst.angular = std::max(worst.angular, std::abs(C));
+    };
+    auto slide = [&](Vec2 dir, float l1, float l2, float C, float* accumulated) {
+        add({-dir, -l1, dir, l2}, C, accumulated, false);
+    };
+    switch (j.type) {
+    case JointType::Motor:
+    case JointType::Mouse:
+        break;
+    case JointType::Distance: {
+        const JointFrame f = currentFrame(j, a, b);
+        const float len = length(f.d);
+        if (!j.enableSpring && !j.enableLimit && len > 0.0f) {
+            const float C = std::clamp(len - j.length, -kMaxLinearCorrection, kMaxLinearCorrection);
+            const Vec2 u = (1.0f / len) * f.d;
+            slide(u, cross(f.rA, u), cross(f.rB, u), C, &j.springImpulse);
+            worst.linear = std::max(worst.linear, std::abs(C));
+        } else if (!velocity && j.enableLimit && len > 0.0f) {
+            const float C = pastLimit(len, std::max(j.minLength, kLinearSlop), j.maxLength, kMaxLinearCorrection);
+            if (C != 0.0f) {
+                const Vec2 u = (1.0f / len) * f.d;
+                slide(u, cross(f.rA, u), cross(f.rB, u), C, nullptr);
+                worst.linear = std::max(worst.linear, std::abs(C));
+            }
+        }
+        break;
+    }
+    case JointType::Revolute:
+        point(currentFrame(j, a, b));
+        if (j.enableLimit && !velocity) {
+            const float C = pastLimit(currentAngle(j, a, b), j.lower, j.upper, kMaxAngularCorrection);
+            if (C != 0.0f) {
+                angle(C, nullptr);
+            }
+        } else if (j.enableLimit && j.lower < j.upper && !released) {
+            const float value = currentAngle(j, a, b);
+            const bool lowerSide = value - j.lower <= j.upper - value;
+            const float side = lowerSide ? 1.0f : -1.0f;
+            const float C = lowerSide ? value - j.lower : j.upper - value;
+            float* impulse = lowerSide ? &j.lowerImpulse : &j.upperImpulse;
+            if (C < kAngularSlop || *impulse > 0.0f) {
+                add({{0.0f, 0.0f}, -side, {0.0f, 0.0f}, side}, C, impulse, true);
+            }
+        }
+        break;
+    case JointType::Weld:
+        if (j.hertz == 0.0f) {
+            point(currentFrame(j, a, b));
+        }
+        if (j.angularHertz == 0.0f) {
+            angle(currentAngle(j, a, b), &j.angularImpulse);
+        }
+        break;
+    case JointType::Prismatic:
+    case JointType::Wheel: {
+        const SlideFrame s = currentSlide(j, a, b);
+        const float perp = dot(s.perp, s.f.d);
+        slide(s.perp, s.s1, s.s2, perp, j.type == JointType::Prismatic ? &j.linearImpulse.x : &j.perpImpulse);
+        worst.linear = std::max(worst.linear, std::abs(perp));
+        if (j.type == JointType::Prismatic) {
+            angle(currentAngle(j, a, b), &j.linearImpulse.y);
+        }
+        if (j.enableLimit && !velocity) {
+            const float C = pastLimit(dot(s.axis, s.f.d), j.lower, j.upper, kMaxLinearCorrection);
+            if (C != 0.0f) {
+                slide(s.axis, s.a1, s.a2, C, nullptr);
+                worst.linear = std::max(worst.linear, std::abs(C));
+            }
+        } else if (j.enableLimit && !released) {
+            const float value = dot(s.axis, s.f.d);
+            if (j.lower == j.upper) {
+                // A locked slider (an actuator held): an equality row. Its impulse goes to the
+                // spring's, unused without a spring and cleared at every step's prepare, so the
+                // sub-steps warm start it and the limit rows' own stay >= 0.
+                if (!j.enableSpring) {
+                    slide(s.axis, s.a1, s.a2, value - j.lower, &j.springImpulse);
+                }
+            } else {
+                const bool lowerSide = value - j.lower <= j.upper - value;
+                const float side = lowerSide ? 1.0f : -1.0f;
+                const float C = lowerSide ? value - j.lower : j.upper - value;
+                float* impulse = lowerSide ? &j.lowerImpulse : &j.upperImpulse;
+                if (C < kLinearSlop || *impulse > 0.0f) {
+                    add({-side * s.axis, -side * s.a1, side * s.axis, side * s.a2}, C, impulse, true);
+                }
+            }
+        }
+        break;
+    }
+    }
+    return n;
+}
+
+// Row r of one side times that side's inverse mass times row s of the same side.
+inline double coupling(Vec2 l1, float a1, Vec2 l2, float a2, Vec2 invMass, float invInertia) {
+    return double(l1.x) * invMass.x * l2.x + double(l1.y) * invMass.y * l2.y + double(a1) * invInertia * a2;
+}
+
+Block mul(const Block& x, const Block& y) {
+    Block r{};
+    for (int i = 0; i < 3; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            r[3 * i + k] = x[3 * i] * y[k] + x[3 * i + 1] * y[3 + k] + x[3 * i + 2] * y[6 + k];
+        }
+    }
+    return r;
+}
+Block transposed(const Block& x) {
+    return {x[0], x[3], x[6], x[1], x[4], x[7], x[2], x[5], x[8]};
+}
+// x^-1 of a symmetric positive definite 3x3 (its padding rows are the identity).
+Block inverse(const Block& x) {
+    const double c00 = x[4] * x[8] - x[5] * x[7];
+    const double c01 = x[5] * x[6] - x[3] * x[8];
+    const double c02 = x[3] * x[7] - x[4] * x[6];
+    double det = x[0] * c00 + x[1] * c01 + x[2] * c02;
+    det = det != 0.0 ? 1.0 / det : 0.0;
+    return {det * c00, det * (x[2] * x[7] - x[1] * x[8]), det * (x[1] * x[5] - x[2] * x[4]),
+            det * c01, det * (x[0] * x[8] - x[2] * x[6]), det * (x[2] * x[3] - x[0] * x[5]),
+            det * c02, det * (x[1] * x[6] - x[0] * x[7]), det * (x[0] * x[4] - x[1] * x[3])};
+}
+void mulVec(const Block& x, const double v[3], double out[3]) {
+    for (int i = 0; i < 3; ++i) {
+        out[i] = x[3 * i] * v[0] + x[3 * i + 1] * v[1] + x[3 * i + 2] * v[2];
+    }
+}
+
+// Adds x to block (p, q) of the remaining matrix.
+void addBlock(JointDirectScratch& w, std::size_t p, int q, const Block& x) {
+    for (auto& e : w.adjacency[p]) {
+        if (e.node == q) {
+            for (std::size_t i = 0; i < 9; ++i) {
+                e.block[i] += x[i];
+            }
+            return;
+        }
+    }
+    w.adjacency[p].push_back({q, x});
+}
+
+// Closed loops the direct solve takes on (tooManyLoops()).
+constexpr std::size_t kMaxLoops = 8;
+constexpr std::size_t kJointsPerLoop = 16;
+// Solves per velocity pass at most: a limit that would pull is released and the rest solved
+// again.
+constexpr int kActiveSetRounds = 3;
+// The relative damping of K's diagonal (see assemble()).
+constexpr double kRegularization = 1e-3;
+// The factorisation gives up past this much work per joint (the squares of the neighbour
+// counts at elimination): a chain or tree costs 4 to 10, the scissor lift 12, a 20 x 20 net
+// far more.
+constexpr std::size_t kWorkPerJoint = 64;
+
+// Builds the rows of the joints `order` and their matrix K = J M^-1 J^T (diagonal blocks and
+// the blocks of joints sharing a body); w.rhs gets -C. Returns the errors met.
+JointErrors assemble(std::span<Joint> joints, std::span<const int> order, std::span<const BodyState> states,
+                     bool velocity, JointDirectScratch& w) {
+    const std::size_t n = order.size();
+    w.rows.resize(n);
+    w.rowCount.resize(n);
+    w.rhs.resize(n);
+    w.error.resize(n);
+    w.diag.resize(n);
+    w.adjacency.resize(n);
+    for (auto& list : w.adjacency) {
+        list.clear();
+    }
+    // The joints of each moving body, to find which joints share one.
+    w.bodyJointStart.assign(states.size() + 1, 0);
+    for (int k : order) {
+        const Joint& j = joints[static_cast<std::size_t>(k)];
+        for (int s : {j.indexA, j.indexB}) {
+            if (s >= 0) {
+                ++w.bodyJointStart[static_cast<std::size_t>(s) + 1];
+            }
+        }
+    }
+    for (std::size_t s = 0; s < states.size(); ++s) {
+        w.bodyJointStart[s + 1] += w.bodyJointStart[s];
+    }
+    w.bodyJoints.resize(static_cast<std::size_t>(w.bodyJointStart.back()));
+    w.fill.assign(w.bodyJointStart.begin(), w.bodyJointStart.end() - 1);
+
+    JointErrors worst;
+    const BodyState fixedState{};
+    auto stateOf = [&](int index) -> const BodyState& {
+        return index < 0 ? fixedState : states[static_cast<std::size_t>(index)];
+    };
+    for (std::size_t p = 0; p < n; ++p) {
+        Joint& j = joints[static_cast<std::size_t>(order[p])];
+        float c[3] = {0.0f, 0.0f, 0.0f};
+        JointDirectScratch::Rows& r = w.rows[p];
+        RowJ rows[3];
+        const bool released = velocity && w.released[p] != 0;
+        const int count =
+            jointRows(j, stateOf(j.indexA), stateOf(j.indexB), velocity, released, rows, c, r.acc, r.oneSided, worst);
+        w.rowCount[p] = count;
+        for (int i = 0; i < 3; ++i) {
+            r.linA[i] = i < count ? rows[i].linA : Vec2{0.0f, 0.0f};
+            r.angA[i] = i < count ? rows[i].angA : 0.0f;
+            r.linB[i] = i < count ? rows[i].linB : Vec2{0.0f, 0.0f};
+            r.angB[i] = i < count ? rows[i].angB : 0.0f;
+            w.error[p][static_cast<std::size_t>(i)] = i < count ? c[i] : 0.0f;
+            w.rhs[p][static_cast<std::size_t>(i)] = i < count ? -double(c[i]) : 0.0;
+        }
+        // The joint's own block: both sides' couplings; padding rows are the identity.
+        Block d{};
+        for (int i = 0; i < 3; ++i) {
+            for (int k = 0; k < 3; ++k) {
+                if (i < count && k < count) {
+                    d[static_cast<std::size_t>(3 * i + k)] =
+                        coupling(r.linA[i], r.angA[i], r.linA[k], r.angA[k], j.invMassA, j.invInertiaA) +
+                        coupling(r.linB[i], r.angB[i], r.linB[k], r.angB[k], j.invMassB, j.invInertiaB);
+                } else {
+                    d[static_cast<std::size_t>(3 * i + k)] = i == k ? 1.0 : 0.0;
+                }
+            }
+        }
+        // Redundant rows (a chain pulled straight, closed loops) make K singular: a relative
+        // regularisation keeps the factorisation finite (a Levenberg-Marquardt damping).
+        for (int i = 0; i < 3; ++i) {
+            double& x = d[static_cast<std::size_t>(4 * i)];
+            x = x > 0.0 ? x * (1.0 + kRegularization) : 1.0;
+        }
+        w.diag[p] = d;
+        for (int s : {j.indexA, j.indexB}) {
+            if (s >= 0) {
+                w.bodyJoints[static_cast<std::size_t>(w.fill[static_cast<std::size_t>(s)]++)] = static_cast<int>(p);
+            }
+        }
+    }
+    // Off-diagonal blocks: joints p and q sharing body s couple through it.
+    auto side = [&](std::size_t p, int s, Vec2 (&lin)[3], float (&ang)[3], Vec2& invMass, float& invInertia) {
+        const Joint& j = joints[static_cast<std::size_t>(order[p])];
+        const JointDirectScratch::Rows& r = w.rows[p];
+        const bool isA = j.indexA == s;
+        for (int i = 0; i < 3; ++i) {
+            lin[i] = isA ? r.linA[i] : r.linB[i];
+            ang[i] = isA ? r.angA[i] : r.angB[i];
+        }
+        invMass = isA ? j.invMassA : j.invMassB;
+        invInertia = isA ? j.invInertiaA : j.invInertiaB;
+    };
+    for (std::size_t s = 0; s < states.size(); ++s) {
+        const int first = w.bodyJointStart[s];
+        const int end = w.bodyJointStart[s + 1];
+        for (int x = first; x < end; ++x) {
+            for (int y = x + 1; y < end; ++y) {
+                const auto p = static_cast<std::size_t>(w.bodyJoints[static_cast<std::size_t>(x)]);
+                const auto q = static_cast<std::size_t>(w.bodyJoints[static_cast<std::size_t>(y)]);
+                Vec2 linP[3], linQ[3], invMass;
+                float angP[3], angQ[3], invInertia;
+                side(p, static_cast<int>(s), linP, angP, invMass, invInertia);
+                side(q, static_cast<int>(s), linQ, angQ, invMass, invInertia);
+                Block k{};
+                for (int i = 0; i < 3; ++i) {
+                    for (int m = 0; m < 3; ++m) {
+                        k[static_cast<std::size_t>(3 * i + m)] =
+                            coupling(linP[i], angP[i], linQ[m], angQ[m], invMass, invInertia);
+                    }
+                }
+                addBlock(w, p, static_cast<int>(q), k);
+                addBlock(w, q, static_cast<int>(p), transposed(k));
+            }
+        }
+    }
+    return worst;
+}
+
+// The joint slots of `order` ascending (in w.sorted): the solve's result is then the same
+// whatever order the passes keep the joints in (a kept layout or a new one).
+std::span<const int> sortedSlots(std::span<const int> order, JointDirectScratch& w) {
+    w.sorted.assign(order.begin(), order.end());
+    std::sort(w.sorted.begin(), w.sorted.end());
+    return w.sorted;
+}
+
+// Whether the joints' graph over the moving bodies has more independent closed loops
+// (joints - bodies + components, counted with a union-find) than kMaxLoops or one per
+// kJointsPerLoop joints: a net, whose factor fills in, where Gauss-Seidel is cheaper.
+bool tooManyLoops(std::span<const Joint> joints, std::span<const int> order, std::size_t stateCount,
+                  JointDirectScratch& w) {
+    w.parent.resize(stateCount);
+    for (std::size_t s = 0; s < stateCount; ++s) {
+        w.parent[s] = static_cast<int>(s);
+    }
+    auto root = [&](int x) {
+        while (w.parent[static_cast<std::size_t>(x)] != x) {
+            x = w.parent[static_cast<std::size_t>(x)] = w.parent[static_cast<std::size_t>(w.parent[static_cast<std::size_t>(x)])];
+        }
+        return x;
+    };
+    std::size_t loops = 0;
+    for (int k : order) {
+        const Joint& j = joints[static_cast<std::size_t>(k)];
+        if (j.indexA < 0 || j.indexB < 0) {
+            continue; // to a static body: a loop through the ground does not fill in
+        }
+        const int a = root(j.indexA);
+        const int b = root(j.indexB);
+        if (a == b) {
+            ++loops;
+        } else {
+            w.parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+        }
+    }
+    return loops > std::max(kMaxLoops, order.size() / kJointsPerLoop);
+}
+
+// LDL^T of the assembled K in minimum-degree order (ties: the lower index, deterministic).
+// False, leaving the factor unusable, once the work passes kWorkPerJoint per joint (a large
+// net: Gauss-Seidel is cheaper there).
+bool factor(JointDirectScratch& w) {
+    const std::size_t n = w.diag.size();
+    w.order.clear();
+    w.inverseDiag.resize(n);
+    w.factor.resize(n);
+    w.queue.clear();
+    for (std::size_t p = 0; p < n; ++p) {
+        w.queue.insert({static_cast<int>(w.adjacency[p].size()), static_cast<int>(p)});
+    }
+    // The work of an elimination grows with the square of its neighbours: budget that.
+    const std::size_t budget = kWorkPerJoint * n + 64;
+    std::size_t work = 0;
+    while (!w.queue.empty()) {
+        const auto p = static_cast<std::size_t>(w.queue.begin()->second);
+        w.queue.erase(w.queue.begin());
+        w.order.push_back(static_cast<int>(p));
+        const Block dInv = inverse(w.diag[p]);
+        w.inverseDiag[p] = dInv;
+        auto& neighbours = w.factor[p];
+        neighbours.assign(w.adjacency[p].begin(), w.adjacency[p].end()); // (i, A_pi)
+        work += neighbours.size() * neighbours.size();
+        if (work > budget) {
+            return false;
+        }
+        for (const auto& ei : neighbours) {
+            const auto i = static_cast<std::size_t>(ei.node);
+            w.queue.erase({static_cast<int>(w.adjacency[i].size()), ei.node});
+        }
+        // Schur complement: A_ik -= A_ip D^-1 A_pk for the remaining neighbours i, k.
+        for (const auto& ei : neighbours) {
+            const auto i = static_cast<std::size_t>(ei.node);
+            auto& list = w.adjacency[i];
+            list.erase(std::remove_if(list.begin(), list.end(),
+                                      [&](const JointDirectScratch::Entry& e) { return e.node == static_cast<int>(p); }),
+                       list.end());
+            const Block left = mul(transposed(ei.block), dInv);
+            for (const auto& ek : neighbours) {
+                const Block update = mul(left, ek.block);
+                if (ek.node == ei.node) {
+                    for (std::size_t m = 0; m < 9; ++m) {
+                        w.diag[i][m] -= update[m];
+                    }
+                } else {
+                    Block neg;
+                    for (std::size_t m = 0; m < 9; ++m) {
+                        neg[m] = -update[m];
+                    }
+                    addBlock(w, i, ek.node, neg);
+                }
+            }
+        }
+        for (const auto& ei : neighbours) {
+            w.queue.insert({static_cast<int>(w.adjacency[static_cast<std::size_t>(ei.node)].size()), ei.node});
+        }
+    }
+    return true;
+}
+
+// x = K^-1 rhs with the factor (rhs is overwritten): forward b_i -= A_ip D_p^-1 b_p, then
+// backward x_p = D_p^-1 (b_p - sum A_pi x_i).
+void solveFactored(JointDirectScratch& w) {
+    for (int pi : w.order) {
+        const auto p = static_cast<std::size_t>(pi);
+        double z[3];
+        mulVec(w.inverseDiag[p], w.rhs[p].data(), z);
+        for (const auto& e : w.factor[p]) {
+            double u[3];
+            mulVec(transposed(e.block), z, u);
+            for (std::size_t m = 0; m < 3; ++m) {
+                w.rhs[static_cast<std::size_t>(e.node)][m] -= u[m];
+            }
+        }
+    }
+    w.solution.resize(w.order.size());
+    for (auto it = w.order.rbegin(); it != w.order.rend(); ++it) {
+        const auto p = static_cast<std::size_t>(*it);
+        double b[3] = {w.rhs[p][0], w.rhs[p][1], w.rhs[p][2]};
+        for (const auto& e : w.factor[p]) {
+            double u[3];
+            mulVec(e.block, w.solution[static_cast<std::size_t>(e.node)].data(), u);
+            for (std::size_t m = 0; m < 3; ++m) {
+                b[m] -= u[m];
+            }
+        }
+        mulVec(w.inverseDiag[p], b, w.solution[p].data());
+    }
+}
+
+// The impulse `lambda` of joint p's rows: B gets +J_B^T lambda, A +J_A^T lambda (linear
+// impulses, or motions when `move`).
+void applyRows(const Joint& j, const JointDirectScratch::Rows& r, int count, const double* lambda,
+               std::span<BodyState> states, bool move) {
+    Vec2 pA{0.0f, 0.0f}, pB{0.0f, 0.0f};
+    float lA = 0.0f, lB = 0.0f;
+    for (int i = 0; i < count; ++i) {
+        const auto l = static_cast<float>(lambda[i]);
+        pA += l * r.linA[i];
+        lA += l * r.angA[i];
+        pB += l * r.linB[i];
+        lB += l * r.angB[i];
+    }
+    auto apply = [&](int index, Vec2 invMass, float invInertia, Vec2 p, float l) {
+        if (index < 0) {
+            return;
+        }
+        BodyState& s = states[static_cast<std::size_t>(index)];
+        if (move) {
+            s.deltaPosition += invMass * p;
+            s.deltaRotation = integrateRotation(s.deltaRotation, invInertia * l);
+        } else {
+            s.linearVelocity += invMass * p;
+            s.angularVelocity += invInertia * l;
+        }
+    };
+    apply(j.indexA, j.invMassA, j.invInertiaA, pA, lA);
+    apply(j.indexB, j.invMassB, j.invInertiaB, pB, lB);
+}
+
+} // namespace
+
+bool projectJointsDirect(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
+                         JointDirectScratch& w) {
+    order = sortedSlots(order, w);
+    w.released.assign(order.size(), 0);
+    const JointErrors worst = assemble(joints, order, states, false, w);
+    if (worst.linear <= kLinearSlop && worst.angular <= kAngularSlop) {
+        return true;
+    }
+    if (w.tooDense && w.denseOrder == order.data() && w.denseSize == order.size()) {
+        return solveJointPositions(joints, order, states); // a large net: Gauss-Seidel
+    }
+    const std::span<const int> passOrder = order;
+    if (tooManyLoops(joints, order, states.size(), w) || !factor(w)) {
+        w.tooDense = true;
+        w.denseOrder = passOrder.data();
+        w.denseSize = passOrder.size();
+        return solveJointPositions(joints, passOrder, states);
+    }
+    solveFactored(w);
+    for (std::size_t p = 0; p < order.size(); ++p) {
+        applyRows(joints[static_cast<std::size_t>(order[p])], w.rows[p], w.rowCount[p], w.solution[p].data(), states,
+                  true);
+    }
+    return false;
+}
+
+bool solveJointsDirect(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
+                       const JointStep& step, bool useBias, JointDirectScratch& w) {
+    if (w.tooDense && w.denseOrder == order.data() && w.denseSize == order.size()) {
+        return false; // this step's joints fill in too much (found at the step's first pass)
+    }
+    if (tooManyLoops(joints, order, states.size(), w)) {
+        w.tooDense = true;
+        w.denseOrder = order.data();
+        w.denseSize = order.size();
+        return false;
+    }
+    order = sortedSlots(order, w);
+    // rhs = -(J v + bias): the rows' velocities to zero, a limit not reached yet only stopped
+    // at it (speculative), position errors left to the projection (rigid rows: the softness's
+    // bias, 0 by default). A limit that would pull is released and the rest solved again (an
+    // active set; at most kActiveSetRounds solves).
+    const Softness soft = rigidSoftness(step, useBias);
+    const BodyState fixedState{};
+    auto stateOf = [&](int index) -> const BodyState& {
+        return index < 0 ? fixedState : states[static_cast<std::size_t>(index)];
+    };
+    w.released.assign(order.size(), 0);
+    for (int round = 0; round < kActiveSetRounds; ++round) {
+        assemble(joints, order, states, true, w);
+        if (!factor(w)) {
+            w.tooDense = true;
+            w.denseOrder = order.data();
+            w.denseSize = order.size();
+            return false;
+        }
+        for (std::size_t p = 0; p < order.size(); ++p) {
+            const Joint& j = joints[static_cast<std::size_t>(order[p])];
+            const JointDirectScratch::Rows& r = w.rows[p];
+            const BodyState& a = stateOf(j.indexA);
+            const BodyState& b = stateOf(j.indexB);
+            for (int i = 0; i < w.rowCount[p]; ++i) {
+                const float Cdot = dot(r.linA[i], a.linearVelocity) + r.angA[i] * a.angularVelocity +
+                                   dot(r.linB[i], b.linearVelocity) + r.angB[i] * b.angularVelocity;
+                const float C = w.error[p][static_cast<std::size_t>(i)];
+                const float bias = r.oneSided[i] && C > 0.0f ? C * step.invH : soft.biasRate * C;
+                w.rhs[p][static_cast<std::size_t>(i)] = -double(Cdot + bias);
+            }
+        }
+        solveFactored(w);
+        bool pulls = false;
+        for (std::size_t p = 0; p < order.size(); ++p) {
+            const JointDirectScratch::Rows& r = w.rows[p];
+            for (int i = 0; i < w.rowCount[p]; ++i) {
+                if (r.oneSided[i] && *r.acc[i] + w.solution[p][static_cast<std::size_t>(i)] < 0.0) {
+                    w.released[p] = 1;
+                    pulls = true;
+                }
+            }
+        }
+        if (!pulls || round + 1 == kActiveSetRounds) {
+            break;
+        }
+    }
+    for (std::size_t p = 0; p < order.size(); ++p) {
+        Joint& j = joints[static_cast<std::size_t>(order[p])];
+        JointDirectScratch::Rows& r = w.rows[p];
+        double* lambda = w.solution[p].data();
+        for (int i = 0; i < w.rowCount[p]; ++i) {
+            if (r.oneSided[i] && *r.acc[i] + lambda[i] < 0.0) {
+                lambda[i] = -double(*r.acc[i]); // the last round's: a stop never pulls
+            }
+            *r.acc[i] += static_cast<float>(lambda[i]);
+        }
+        applyRows(j, r, w.rowCount[p], lambda, states, false);
+    }
+    return true;
+}
+
+} // namespace e2d::physics::detail
