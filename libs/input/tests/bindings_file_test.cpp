@@ -120,12 +120,12 @@ TEST(BindingsFile, RawBytesInMessagesAreEscaped) {
     EXPECT_EQ(message(std::string_view("jump = key:sp\0ace\n", 19)),
               "controls.txt:1: unknown key name 'sp\\x00ace' in 'key:sp\\x00ace'");
     EXPECT_EQ(message("jump = button:\xff\xfe\n"),
-              "controls.txt:1: unknown gamepad button name '\\xFF\\xFE' in 'button:\\xFF\\xFE'");
+              "controls.txt:1: unknown gamepad button name '\\xff\\xfe' in 'button:\\xff\\xfe'");
     // Printable UTF-8 stays as it is.
     EXPECT_EQ(message("saut\xc3\xa9 = key:space\n"),
               "controls.txt:1: action name must be letters, digits, '_', '-' or '.', got 'saut\xc3\xa9'");
     EXPECT_EQ(errorOf([&] { static_cast<void>(actions.held("\x1b[2J")); }),
-              "input::ActionMap::held(): no action named '\\x1B[2J'");
+              "input::ActionMap::held(): no action named '\\x1b[2J'");
 }
 
 TEST(BindingsFile, UnreadableAndUnwritableFilesAreNamed) {

@@ -86,7 +86,7 @@ TEST(MappingParse, TheMistakesGlfwWouldSwallowAreCaught) {
     EXPECT_EQ(problem(g + "Name,a:b0,misc1:b15,paddle1:b16,touchpad:b17,crc:ab12,hint:!SDL_X:=1,sdk>=:33,"), "ok");
     EXPECT_EQ(problem(g + "Name,a:b0,misc2:b13,misc6:b14,"), "ok");
     // Bytes from the file are quoted escaped.
-    EXPECT_EQ(problem("\xff\xfe" + g), "t:1: GUID must be 32 hex digits, got '\\xFF\\xFE03000000de280000ff11000001000000'");
+    EXPECT_EQ(problem("\xff\xfe" + g), "t:1: GUID must be 32 hex digits, got '\\xff\\xfe03000000de280000ff11000001000000'");
     EXPECT_EQ(problem(g + "Name,a:b0,platform:Linx,"),
               "t:1: unknown platform 'Linx' (SDL's are Windows, Mac OS X, Linux, Android, iOS)");
 }
