@@ -7,14 +7,19 @@
 
 namespace e2d::core {
 
-std::string printable(std::string_view text) {
+namespace {
+
+void escapeByte(std::string& out, char byte) {
     constexpr char kHex[] = "0123456789abcdef";
-    const auto escapeByte = [&kHex](std::string& out, char byte) {
-        const auto c = static_cast<std::uint8_t>(byte);
-        out += "\\x";
-        out += kHex[c >> 4];
-        out += kHex[c & 0xF];
-    };
+    const auto c = static_cast<std::uint8_t>(byte);
+    out += "\\x";
+    out += kHex[c >> 4];
+    out += kHex[c & 0xF];
+}
+
+} // namespace
+
+std::string printable(std::string_view text) {
     std::string out;
     out.reserve(text.size());
     std::size_t pos = 0;
