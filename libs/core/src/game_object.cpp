@@ -41,8 +41,15 @@ bool finite(glm::vec2 v) noexcept {
     return std::isfinite(v.x) && std::isfinite(v.y);
 }
 
-std::string formatVector(glm::vec2 v) {
-    return "(" + detail::formatNumber(v.x) + ", " + detail::formatNumber(v.y) + ")";
+// Appended piece by piece: GCC 12 at -O3 misreads `"(" + std::string` as an overlapping
+// memcpy (-Werror=restrict, a known false positive).
+template <int N>
+std::string formatVector(glm::vec<N, float> v) {
+    std::string out = "(";
+    for (int i = 0; i < N; ++i) {
+        out.append(i == 0 ? "" : ", ").append(detail::formatNumber(v[i]));
+    }
+    return out.append(")");
 }
 
 } // namespace
@@ -54,9 +61,7 @@ void GameObject::refuseNonFinite(const char* function, const char* what, const s
 
 void GameObject::setPosition(glm::vec3 position) {
     if (!finite(glm::vec2(position)) || !std::isfinite(position.z)) {
-        refuseNonFinite("setPosition", "position",
-                        "(" + detail::formatNumber(position.x) + ", " + detail::formatNumber(position.y) + ", " +
-                            detail::formatNumber(position.z) + ")");
+        refuseNonFinite("setPosition", "position", formatVector(position));
     }
     notePoseChange();
     position_ = position;

@@ -23,6 +23,23 @@ using Json = nlohmann::ordered_json;
 // keeps every sum of two of them inside an int.
 constexpr std::int64_t kMaxCoordinate = 1 << 20;
 
+// A value as JSON text for a message: JSON escapes control characters and the replace handler
+// turns ill-formed UTF-8 into U+FFFD, but DEL (0x7F) is valid JSON text and would reach the
+// message raw; it is written \u007f like the other controls.
+std::string dumpForMessage(const Json& value) {
+    const std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
+    std::string out;
+    out.reserve(text.size());
+    for (const char c : text) {
+        if (c == '\x7f') {
+            out += "\\u007f";
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
 class Reader {
 public:
     explicit Reader(std::string_view sheetName) : sheet_(sheetName) {}
@@ -38,9 +55,13 @@ public:
     }
 
     static std::string describe(const Json& value) {
-        std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
+        std::string text = dumpForMessage(value);
         if (text.size() > 40) {
-            text.resize(37);
+            std::size_t cut = 37; // not inside a UTF-8 sequence
+            while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) {
+                --cut;
+            }
+            text.resize(cut);
             text += "...";
         }
         return std::string(value.type_name()) + " " + text;
@@ -176,7 +197,7 @@ private:
 
 std::string hashPath(std::string_view name) {
     // Names are quoted (they hold dots and slashes); JSON's own escaping keeps them readable.
-    return "frames[" + Json(std::string(name)).dump(-1, ' ', false, Json::error_handler_t::replace) + "]";
+    return "frames[" + dumpForMessage(Json(std::string(name))) + "]";
 }
 
 // Splits a frame name into base, number and the rest: "run10.png" -> ("run", "10", ".png").
