@@ -4,6 +4,8 @@
 #include <e2d/core/error.hpp>
 #include <e2d/core/printable.hpp>
 
+#include "quoted.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -51,7 +53,7 @@ std::vector<std::string_view> words(std::string_view line) {
 
 // Quoted for a message, escaped where not printable.
 std::string quote(std::string_view text) {
-    return "'" + core::printable(text) + "'";
+    return detail::quoted(text);
 }
 
 // Bounded, so a tap's release (frame + 1) cannot overflow.

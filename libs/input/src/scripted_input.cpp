@@ -8,6 +8,8 @@
 
 #include <GLFW/glfw3.h>
 
+#include "quoted.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <optional>
@@ -45,7 +47,7 @@ ScriptedInput::Resolved ScriptedInput::resolve(const ScriptEvent& event, const I
     const auto fail = [&](const std::string& why) -> Resolved {
         throw core::Error(script.source + ":" + std::to_string(event.line) + ": " + why);
     };
-    const std::string target = "'" + core::printable(event.target) + "'";
+    const std::string target = detail::quoted(event.target);
     Resolved r;
     r.frame = event.frame;
     r.press = event.kind == ScriptEvent::Kind::Press;
