@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include "component_scene.hpp"
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -179,35 +181,14 @@ TEST_F(CharacterControllerTest, AnObjectMovedByHandTeleportsTheCharacter) {
     EXPECT_NEAR(controller->mover().position().x, 7.1f, 1e-4f);
 }
 
-// Records the physics events its object receives.
-class Recorder : public core::Component, public core::Handles<CollisionEnter, CollisionExit, TriggerEnter, TriggerExit> {
-public:
-    struct Event {
-        std::string kind;
-        ContactInfo info;
-    };
-    void on(const CollisionEnter& c) override { events.push_back({"enter", c}); }
-    void on(const CollisionExit& c) override { events.push_back({"exit", c}); }
-    void on(const TriggerEnter& c) override { events.push_back({"trigger-enter", c}); }
-    void on(const TriggerExit& c) override { events.push_back({"trigger-exit", c}); }
-    [[nodiscard]] std::vector<std::string> kinds() const {
-        std::vector<std::string> out;
-        for (const Event& e : events) {
-            out.push_back(e.kind);
-        }
-        return out;
-    }
-    std::vector<Event> events;
-};
-
 TEST_F(CharacterControllerTest, TellsBothObjectsAboutWallsAndStaticTriggers) {
     core::GameObject* player = nullptr;
     core::GameObject* coin = nullptr;
     core::GameObject* wall = nullptr;
     CharacterController* controller = nullptr;
-    Recorder* playerLog = nullptr;
-    Recorder* coinLog = nullptr;
-    Recorder* wallLog = nullptr;
+    physics::test::EventLog* playerLog = nullptr;
+    physics::test::EventLog* coinLog = nullptr;
+    physics::test::EventLog* wallLog = nullptr;
     start([&](core::Scene& s) {
         floor(s);
         coin = &s.createGameObject();
@@ -215,15 +196,15 @@ TEST_F(CharacterControllerTest, TellsBothObjectsAboutWallsAndStaticTriggers) {
         physics::ColliderDef sensor;
         sensor.isSensor = true;
         coin->addComponent<Collider>(physics::Circle{{0.0f, 0.0f}, 20.0f}, sensor);
-        coinLog = coin->addComponent<Recorder>();
+        coinLog = coin->addComponent<physics::test::EventLog>();
         wall = &s.createGameObject();
         wall->setPosition(glm::vec2{500.0f, 200.0f});
         wall->addComponent<Collider>(physics::makeBox(50.0f, 200.0f)); // face at x = 450
-        wallLog = wall->addComponent<Recorder>();
+        wallLog = wall->addComponent<physics::test::EventLog>();
         player = &s.createGameObject();
         player->setPosition(glm::vec2{0.0f, kRest});
         controller = player->addComponent<CharacterController>(pixelCharacter());
-        playerLog = player->addComponent<Recorder>();
+        playerLog = player->addComponent<physics::test::EventLog>();
     });
     frames(*controller, 1, 0.0f);
     // Standing on the floor: one collision enter, with the floor's object.

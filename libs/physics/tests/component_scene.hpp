@@ -61,6 +61,14 @@ public:
     void on(const CollisionExit& c) override { events.push_back({"exit", c}); }
     void on(const TriggerEnter& c) override { events.push_back({"trigger-enter", c}); }
     void on(const TriggerExit& c) override { events.push_back({"trigger-exit", c}); }
+    /// The kinds in the order they arrived ("enter", "trigger-exit", ...).
+    [[nodiscard]] std::vector<std::string> kinds() const {
+        std::vector<std::string> out;
+        for (const Event& e : events) {
+            out.push_back(e.kind);
+        }
+        return out;
+    }
     [[nodiscard]] int count(const std::string& kind) const {
         int n = 0;
         for (const Event& e : events) {
