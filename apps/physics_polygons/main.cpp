@@ -6,6 +6,7 @@
 //                      gets an impulse where the ray hits it
 //   space              fire a projectile from the cannon towards the mouse
 // World units are metres (the camera shows 25.6 x 18 m).
+#include "../common/hud_label.hpp"
 #include "../common/shape_view.hpp"
 
 #include <e2d/core/game_object.hpp>
@@ -74,13 +75,7 @@ protected:
                        kMasses[sides % 3], 0.0f);
         }
 
-        auto& info = createGameObject();
-        // HUD positions are camera units, metres here, from the view's centre; the scale makes
-        // one font pixel one screen pixel (40 px per metre).
-        info.setPosition(glm::vec3{-kViewWidth / 2 + 0.7f, kViewHeight / 2 - 0.2f, 10.0f});
-        info.setScale(1.0f / 40.0f);
-        info_ = info.addComponent<render::TextLabel>(
-            render::TextLabelDef{.pixelSize = 18, .hud = true});
+        info_ = apps::addHudLabel(*this, {kViewWidth, kViewHeight});
     }
 
     // The mouse's world position: where new polygons go and where the cannon aims.
