@@ -19,10 +19,11 @@ using namespace e2d::input;
 void setupActions(ActionMap& actions) {
     for (int i = 0; i < 100; ++i) {
         const ActionId id = actions.add("action_" + std::to_string(i));
-        actions.bind(id, Binding::key(GLFW_KEY_A + i % 26));
-        actions.bind(id, Binding::keyAxis(GLFW_KEY_0 + i % 10, GLFW_KEY_F1 + i % 12));
-        actions.bind(id, Binding::gamepadButton(i % kGamepadButtonCount));
-        actions.bind(id, Binding::gamepadAxis(i % kGamepadAxisCount, i % 2 == 1));
+        // Key's values are GLFW's: A..Z, 0..9 and F1..F25 are consecutive.
+        actions.bind(id, Binding::key(Key(static_cast<int>(Key::A) + i % 26)));
+        actions.bind(id, Binding::keyAxis(Key(static_cast<int>(Key::Num0) + i % 10), Key(static_cast<int>(Key::F1) + i % 12)));
+        actions.bind(id, Binding::gamepadButton(GamepadButton(i % kGamepadButtonCount)));
+        actions.bind(id, Binding::gamepadAxis(GamepadAxis(i % kGamepadAxisCount), i % 2 == 1));
     }
 }
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // e2d::input alone: an Input on a GLFW window the program made itself (no renderer, no
 // OpenGL), and an ActionMap of named actions. Space, the left mouse button or a gamepad's A
-// jumps, the arrow keys or the left stick move, Escape quits; every jump and every change of
-// direction is printed. Quits by itself after the seconds given as its argument (default 60).
+// jumps, the arrow keys or the left stick move (actions), Escape quits (a key polled
+// directly); every jump and every change of direction is printed. Quits by itself after the seconds given as its argument (default 60).
 // Links e2d::input (and so GLFW) only.
 #include <e2d/input/actions.hpp>
 #include <e2d/input/input.hpp>
@@ -34,11 +34,9 @@ int main(int argc, char** argv) {
     // format (ActionMap::load reads the same from a file).
     ActionMap actions;
     actions.loadFromString("jump = key:space, mouse:left, button:a\n"
-                           "move_x = keys:left/right, axis:leftx\n"
-                           "quit = key:escape\n");
+                           "move_x = keys:left/right, axis:leftx\n");
     const ActionId jump = actions.find("jump");
     const ActionId move = actions.find("move_x");
-    const ActionId quit = actions.find("quit");
 
     // The loop: wait for events (at most a frame), deliver them, read the actions.
     int jumps = 0;
@@ -57,7 +55,8 @@ int main(int argc, char** argv) {
             direction = now;
             std::printf("moving %s\n", now > 0.0f ? "right" : now < 0.0f ? "left" : "nowhere");
         }
-        if (actions.pressed(quit)) {
+        // Polling names keys, buttons and axes with the events' enums.
+        if (input.wasKeyPressed(Key::Escape)) {
             break;
         }
     }

@@ -34,7 +34,7 @@ int main() {
             loadGamepadMappings("03000000de280000ff11000001000000,Consumer Pad,a:b0,leftx:a0,platform:Linux,");
         if (Input::fromWindow(window) == &input && actions.pressed("jump") && mappings.loaded == 1) {
             std::printf("consumer: input attached, 'jump' pressed by %s, %d mapping loaded\n",
-                        std::string(keyName(GLFW_KEY_SPACE)).c_str(), mappings.loaded);
+                        std::string(keyName(Key::Space)).c_str(), mappings.loaded);
             status = 0;
         } else {
             std::fprintf(stderr, "consumer: input did not work\n");

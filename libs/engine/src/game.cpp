@@ -123,12 +123,12 @@ struct Startup {
     std::optional<int> exitCode;
 };
 
-std::optional<int> keyOf(const std::string& name, const char* field, const std::string& configName,
-                         core::Logger& logger, Startup& startup) {
+std::optional<input::Key> keyOf(const std::string& name, const char* field, const std::string& configName,
+                               core::Logger& logger, Startup& startup) {
     if (name.empty()) {
         return std::nullopt;
     }
-    const std::optional<int> key = input::keyFromName(name);
+    const std::optional<input::Key> key = input::keyFromName(name);
     if (!key) {
         logger.error(configName + ": " + field + ": unknown key name '" + name + "'");
         startup.exitCode = kExitUsage;

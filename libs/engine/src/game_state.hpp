@@ -3,6 +3,7 @@
 
 #include <e2d/engine/engine_config.hpp>
 #include <e2d/engine/frame_profile.hpp>
+#include <e2d/input/event.hpp>
 
 #include <cstdint>
 #include <filesystem>
@@ -58,8 +59,8 @@ struct GameState {
     /// `--frames N`, else 0.
     std::int64_t frameLimit = 0;
     /// The keys that toggle the debug draw and the profile overlay (config), if any.
-    std::optional<int> debugKey;
-    std::optional<int> profileKey;
+    std::optional<input::Key> debugKey;
+    std::optional<input::Key> profileKey;
     /// `--screenshot FILE` (empty: none), and whether it was written.
     std::filesystem::path screenshot;
     bool screenshotTaken = false;

@@ -789,9 +789,9 @@ TEST(Game, InputScriptMovesTheMouseClicksAndDrivesGamepads) {
         game, "A", [&](core::Scene& s) { s.createGameObject().addComponent<Seen>(seen); },
         [&](core::Scene& s) {
             const input::Input& in = gameOf(s).input();
-            leftX.push_back(in.gamepadAxis(0, GLFW_GAMEPAD_AXIS_LEFT_X));
-            rightTrigger.push_back(in.gamepadAxis(1, GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER));
-            aDown.push_back(in.isGamepadButtonDown(0, GLFW_GAMEPAD_BUTTON_A));
+            leftX.push_back(in.gamepadAxis(0, input::GamepadAxis::LeftX));
+            rightTrigger.push_back(in.gamepadAxis(1, input::GamepadAxis::RightTrigger));
+            aDown.push_back(in.isGamepadButtonDown(0, input::GamepadButton::A));
         });
     const std::filesystem::path script = writeFile(tempDir() / "pads.txt",
                                                    "1 move mouse 120 90\n"
@@ -806,7 +806,7 @@ TEST(Game, InputScriptMovesTheMouseClicksAndDrivesGamepads) {
     ASSERT_EQ(r.code, 0) << r.all();
     // 160 x 120 window, camera at the origin: window pixel (120, 90) is world (40, -30).
     EXPECT_THAT(seen, testing::ElementsAre("connected 0", "connected 1", "mouse 0 at 40,-30", "down 0:0",
-                                                   "down 1:" + std::to_string(input::kGamepadButtonRightTrigger),
+                                                   "down 1:" + std::to_string(static_cast<int>(input::GamepadButton::RightTrigger)),
                                                    "up 0:0"));
     ASSERT_EQ(leftX.size(), 8u);
     // The stick through its default 0.2 radial dead zone: (0.6 - 0.2) / 0.8 = 0.5.
@@ -1057,7 +1057,7 @@ TEST(Game, GameSystemGivesTheConfigAssetsAndEverySubsystem) {
         EXPECT_FALSE(g.window().visible());
         EXPECT_EQ(&g.renderer(), &g.renderSystem().renderer());
         EXPECT_NE(g.text().font(render::kDefaultFontPath, 12), nullptr);
-        EXPECT_FALSE(g.input().isKeyDown(GLFW_KEY_A));
+        EXPECT_FALSE(g.input().isKeyDown(input::Key::A));
         EXPECT_EQ(g.mixer().voiceCount(), 32);
         // Gravity is m/s^2 whatever the scale.
         EXPECT_FLOAT_EQ(g.world().gravity().y, engine::EngineConfig{}.gravityY);

@@ -23,7 +23,7 @@ void check(bool condition) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     e2d::input::ActionMap actions;
-    actions.bind(actions.add("keep"), e2d::input::Binding::key(32));
+    actions.bind(actions.add("keep"), e2d::input::Binding::key(e2d::input::Key::Space));
     const std::string before = actions.toString();
     try {
         actions.loadFromString(text, "fuzz");

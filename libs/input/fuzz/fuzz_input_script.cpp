@@ -51,8 +51,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
 
     input::ActionMap actions;
-    actions.bind(actions.add("jump"), input::Binding::key(32));
-    actions.bind(actions.add("steer"), input::Binding::gamepadAxis(0));
+    actions.bind(actions.add("jump"), input::Binding::key(input::Key::Space));
+    actions.bind(actions.add("steer"), input::Binding::gamepadAxis(input::GamepadAxis::LeftX));
     try {
         input::ScriptedInput device(script, actions);
         input::Input in;

@@ -165,36 +165,40 @@ void ActionMap::evaluate(Action& action, const Input& input) const {
     for (const Binding& b : action.bindings) {
         switch (b.kind) {
         case BindingKind::Key:
-            if (input.isKeyDown(b.code)) {
+            if (input.isKeyDown(Key(b.code))) {
                 digitalDown = true;
                 offer(1.0f);
             }
-            tapped = tapped || input.wasKeyPressed(b.code);
+            tapped = tapped || input.wasKeyPressed(Key(b.code));
             break;
         case BindingKind::MouseButton:
-            if (input.isMouseButtonDown(b.code)) {
+            if (input.isMouseButtonDown(MouseButton(b.code))) {
                 digitalDown = true;
                 offer(1.0f);
             }
-            tapped = tapped || input.wasMouseButtonPressed(b.code);
+            tapped = tapped || input.wasMouseButtonPressed(MouseButton(b.code));
             break;
         case BindingKind::KeyAxis:
-            offer((input.isKeyDown(b.code) ? 1.0f : 0.0f) - (input.isKeyDown(b.negativeKey) ? 1.0f : 0.0f));
-            if (input.isKeyDown(b.code) || input.isKeyDown(b.negativeKey)) {
+        {
+            const Key positive{b.code};
+            const Key negative{b.negativeKey};
+            offer((input.isKeyDown(positive) ? 1.0f : 0.0f) - (input.isKeyDown(negative) ? 1.0f : 0.0f));
+            if (input.isKeyDown(positive) || input.isKeyDown(negative)) {
                 digitalDown = true;
             }
-            tapped = tapped || input.wasKeyPressed(b.code) || input.wasKeyPressed(b.negativeKey);
+            tapped = tapped || input.wasKeyPressed(positive) || input.wasKeyPressed(negative);
+        }
             break;
         case BindingKind::GamepadButton: {
             int first = 0;
             int last = 0;
             padRange(b.gamepad, first, last);
             for (int pad = first; pad <= last; ++pad) {
-                if (input.isGamepadButtonDown(pad, b.code)) {
+                if (input.isGamepadButtonDown(pad, GamepadButton(b.code))) {
                     digitalDown = true;
                     offer(1.0f);
                 }
-                tapped = tapped || input.wasGamepadButtonPressed(pad, b.code);
+                tapped = tapped || input.wasGamepadButtonPressed(pad, GamepadButton(b.code));
             }
             break;
         }
@@ -203,7 +207,7 @@ void ActionMap::evaluate(Action& action, const Input& input) const {
             int last = 0;
             padRange(b.gamepad, first, last);
             for (int pad = first; pad <= last; ++pad) {
-                const float v = input.gamepadAxis(pad, b.code);
+                const float v = input.gamepadAxis(pad, GamepadAxis(b.code));
                 offer(b.inverted ? -v : v);
             }
             break;
@@ -239,25 +243,25 @@ void ActionMap::listenStep(const Input& input) {
     for (const Event& e : input.events()) {
         switch (e.type) {
         case EventType::KeyDown:
-            if (e.code == def_.listenCancelKey) {
+            if (def_.listenCancelKey != Key::Unknown && Key(e.code) == def_.listenCancelKey) {
                 cancelListen();
                 return;
             }
             if (e.code >= 0 && e.code <= kKeyLast) {
-                found = Binding::key(e.code);
+                found = Binding::key(Key(e.code));
             }
             break;
         case EventType::MouseButtonDown:
             if (e.code >= 0 && e.code < kMouseButtonCount) {
-                found = Binding::mouseButton(e.code);
+                found = Binding::mouseButton(MouseButton(e.code));
             }
             break;
         case EventType::GamepadButtonDown:
-            found = Binding::gamepadButton(e.code);
+            found = Binding::gamepadButton(GamepadButton(e.code));
             break;
         case EventType::GamepadAxis:
             if (std::abs(e.value) >= def_.listenAxisThreshold) {
-                found = Binding::gamepadAxis(e.code, e.value < 0.0f);
+                found = Binding::gamepadAxis(GamepadAxis(e.code), e.value < 0.0f);
             }
             break;
         default:

@@ -104,15 +104,17 @@ std::string formatBinding(const Binding& b) {
         slot.append("@").append(std::to_string(b.gamepad));
     }
     switch (b.kind) {
-    case BindingKind::Key: return "key:" + nameOf(keyName(b.code), b.code, "key");
+    case BindingKind::Key: return "key:" + nameOf(keyName(Key(b.code)), b.code, "key");
     case BindingKind::KeyAxis:
-        return "keys:" + nameOf(keyName(b.negativeKey), b.negativeKey, "key") + "/" +
-               nameOf(keyName(b.code), b.code, "key");
-    case BindingKind::MouseButton: return "mouse:" + nameOf(mouseButtonName(b.code), b.code, "mouse button");
+        return "keys:" + nameOf(keyName(Key(b.negativeKey)), b.negativeKey, "key") + "/" +
+               nameOf(keyName(Key(b.code)), b.code, "key");
+    case BindingKind::MouseButton:
+        return "mouse:" + nameOf(mouseButtonName(MouseButton(b.code)), b.code, "mouse button");
     case BindingKind::GamepadButton:
-        return "button" + slot + ":" + nameOf(gamepadButtonName(b.code), b.code, "gamepad button");
+        return "button" + slot + ":" + nameOf(gamepadButtonName(GamepadButton(b.code)), b.code, "gamepad button");
     case BindingKind::GamepadAxis:
-        return "axis" + slot + ":" + (b.inverted ? "-" : "") + nameOf(gamepadAxisName(b.code), b.code, "gamepad axis");
+        return "axis" + slot + ":" + (b.inverted ? "-" : "") +
+               nameOf(gamepadAxisName(GamepadAxis(b.code)), b.code, "gamepad axis");
     }
     throw core::Error("input::formatBinding(): unknown binding kind");
 }

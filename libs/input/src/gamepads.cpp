@@ -165,9 +165,9 @@ void Input::applyPad(int slot, PendingPad& pending) {
     for (int button = 0; button <= GLFW_GAMEPAD_BUTTON_LAST; ++button) {
         setPadButton(slot, pad, button, snap.buttons[static_cast<std::size_t>(button)] == GLFW_PRESS);
     }
-    setPadButton(slot, pad, kGamepadButtonLeftTrigger,
+    setPadButton(slot, pad, static_cast<int>(GamepadButton::LeftTrigger),
                  axes[GLFW_GAMEPAD_AXIS_LEFT_TRIGGER] >= def_.triggerPressThreshold);
-    setPadButton(slot, pad, kGamepadButtonRightTrigger,
+    setPadButton(slot, pad, static_cast<int>(GamepadButton::RightTrigger),
                  axes[GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER] >= def_.triggerPressThreshold);
 
     for (int axis = 0; axis < kGamepadAxisCount; ++axis) {
@@ -188,26 +188,30 @@ bool Input::isGamepadConnected(int slot) const noexcept {
     return validSlot(slot) && pads_[static_cast<std::size_t>(slot)].present && pads_[static_cast<std::size_t>(slot)].gamepad;
 }
 
-bool Input::isGamepadButtonDown(int slot, int button) const noexcept {
-    return validSlot(slot) && validPadButton(button) &&
-           pads_[static_cast<std::size_t>(slot)].down[static_cast<std::size_t>(button)];
+bool Input::isGamepadButtonDown(int slot, GamepadButton button) const noexcept {
+    const int code = static_cast<int>(button);
+    return validSlot(slot) && validPadButton(code) &&
+           pads_[static_cast<std::size_t>(slot)].down[static_cast<std::size_t>(code)];
 }
 
-bool Input::wasGamepadButtonPressed(int slot, int button) const noexcept {
-    return validSlot(slot) && validPadButton(button) &&
-           pads_[static_cast<std::size_t>(slot)].pressed[static_cast<std::size_t>(button)];
+bool Input::wasGamepadButtonPressed(int slot, GamepadButton button) const noexcept {
+    const int code = static_cast<int>(button);
+    return validSlot(slot) && validPadButton(code) &&
+           pads_[static_cast<std::size_t>(slot)].pressed[static_cast<std::size_t>(code)];
 }
 
-bool Input::wasGamepadButtonReleased(int slot, int button) const noexcept {
-    return validSlot(slot) && validPadButton(button) &&
-           pads_[static_cast<std::size_t>(slot)].released[static_cast<std::size_t>(button)];
+bool Input::wasGamepadButtonReleased(int slot, GamepadButton button) const noexcept {
+    const int code = static_cast<int>(button);
+    return validSlot(slot) && validPadButton(code) &&
+           pads_[static_cast<std::size_t>(slot)].released[static_cast<std::size_t>(code)];
 }
 
-float Input::gamepadAxis(int slot, int axis) const noexcept {
-    if (!validSlot(slot) || axis < 0 || axis >= kGamepadAxisCount) {
+float Input::gamepadAxis(int slot, GamepadAxis axis) const noexcept {
+    const int code = static_cast<int>(axis);
+    if (!validSlot(slot) || code < 0 || code >= kGamepadAxisCount) {
         return 0.0f;
     }
-    return pads_[static_cast<std::size_t>(slot)].axes[static_cast<std::size_t>(axis)];
+    return pads_[static_cast<std::size_t>(slot)].axes[static_cast<std::size_t>(code)];
 }
 
 std::vector<JoystickInfo> Input::joysticks() const {

@@ -294,28 +294,34 @@ void Input::releaseEverything() {
 
 // Polling ------------------------------------------------------------------------------------
 
-bool Input::isKeyDown(int key) const noexcept {
-    return validKey(key) && keys_[static_cast<std::size_t>(key)].down;
+bool Input::isKeyDown(Key key) const noexcept {
+    const int code = static_cast<int>(key);
+    return validKey(code) && keys_[static_cast<std::size_t>(code)].down;
 }
 
-bool Input::wasKeyPressed(int key) const noexcept {
-    return validKey(key) && keys_[static_cast<std::size_t>(key)].pressed;
+bool Input::wasKeyPressed(Key key) const noexcept {
+    const int code = static_cast<int>(key);
+    return validKey(code) && keys_[static_cast<std::size_t>(code)].pressed;
 }
 
-bool Input::wasKeyReleased(int key) const noexcept {
-    return validKey(key) && keys_[static_cast<std::size_t>(key)].released;
+bool Input::wasKeyReleased(Key key) const noexcept {
+    const int code = static_cast<int>(key);
+    return validKey(code) && keys_[static_cast<std::size_t>(code)].released;
 }
 
-bool Input::isMouseButtonDown(int button) const noexcept {
-    return validButton(button) && buttons_[static_cast<std::size_t>(button)].down;
+bool Input::isMouseButtonDown(MouseButton button) const noexcept {
+    const int code = static_cast<int>(button);
+    return validButton(code) && buttons_[static_cast<std::size_t>(code)].down;
 }
 
-bool Input::wasMouseButtonPressed(int button) const noexcept {
-    return validButton(button) && buttons_[static_cast<std::size_t>(button)].pressed;
+bool Input::wasMouseButtonPressed(MouseButton button) const noexcept {
+    const int code = static_cast<int>(button);
+    return validButton(code) && buttons_[static_cast<std::size_t>(code)].pressed;
 }
 
-bool Input::wasMouseButtonReleased(int button) const noexcept {
-    return validButton(button) && buttons_[static_cast<std::size_t>(button)].released;
+bool Input::wasMouseButtonReleased(MouseButton button) const noexcept {
+    const int code = static_cast<int>(button);
+    return validButton(code) && buttons_[static_cast<std::size_t>(code)].released;
 }
 
 } // namespace e2d::input

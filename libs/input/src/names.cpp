@@ -142,7 +142,8 @@ constexpr KeyEntry kKeys[] = {
 };
 
 static_assert(GLFW_KEY_LAST == kKeyLast);
-static_assert(GLFW_GAMEPAD_BUTTON_LAST + 1 == kGamepadButtonLeftTrigger);
+static_assert(GLFW_GAMEPAD_BUTTON_LAST + 1 == static_cast<int>(GamepadButton::LeftTrigger));
+static_assert(static_cast<int>(GamepadButton::RightTrigger) + 1 == kGamepadButtonCount);
 static_assert(GLFW_GAMEPAD_AXIS_LAST + 1 == kGamepadAxisCount);
 static_assert(GLFW_MOUSE_BUTTON_LAST + 1 == kMouseButtonCount);
 
@@ -162,69 +163,69 @@ bool equalsIgnoringCase(std::string_view a, std::string_view b) noexcept {
            });
 }
 
-template <std::size_t N>
-std::optional<int> indexOf(const std::array<std::string_view, N>& names, std::string_view name) noexcept {
+template <class Enum, std::size_t N>
+std::optional<Enum> indexOf(const std::array<std::string_view, N>& names, std::string_view name) noexcept {
     for (std::size_t i = 0; i < N; ++i) {
         if (equalsIgnoringCase(names[i], name)) {
-            return static_cast<int>(i);
+            return static_cast<Enum>(i);
         }
     }
     return std::nullopt;
+}
+
+// The name at the enum's value, or empty outside the table.
+template <class Enum, std::size_t N>
+std::string_view nameAt(const std::array<std::string_view, N>& names, Enum value) noexcept {
+    const auto i = static_cast<std::size_t>(static_cast<int>(value)); // negative: huge
+    return i < N ? names[i] : std::string_view{};
 }
 
 } // namespace
 
-std::string_view keyName(int key) noexcept {
-    const auto* it = std::lower_bound(std::begin(kKeys), std::end(kKeys), key,
-                                      [](const KeyEntry& e, int code) { return e.code < code; });
-    return it != std::end(kKeys) && it->code == key ? it->name : std::string_view{};
+std::string_view keyName(Key key) noexcept {
+    const int code = static_cast<int>(key);
+    const auto* it = std::lower_bound(std::begin(kKeys), std::end(kKeys), code,
+                                      [](const KeyEntry& e, int c) { return e.code < c; });
+    return it != std::end(kKeys) && it->code == code ? it->name : std::string_view{};
 }
 
-std::optional<int> keyFromName(std::string_view name) noexcept {
+std::optional<Key> keyFromName(std::string_view name) noexcept {
     for (const KeyEntry& e : kKeys) {
         if (equalsIgnoringCase(e.name, name)) {
-            return e.code;
+            return static_cast<Key>(e.code);
         }
     }
     return std::nullopt;
 }
 
-std::string_view mouseButtonName(int button) noexcept {
-    return button >= 0 && button < kMouseButtonCount ? kMouseButtons[static_cast<std::size_t>(button)]
-                                                     : std::string_view{};
-}
+std::string_view mouseButtonName(MouseButton button) noexcept { return nameAt(kMouseButtons, button); }
 
-std::optional<int> mouseButtonFromName(std::string_view name) noexcept {
-    if (auto i = indexOf(kMouseButtons, name)) {
-        return i;
+std::optional<MouseButton> mouseButtonFromName(std::string_view name) noexcept {
+    if (auto button = indexOf<MouseButton>(kMouseButtons, name)) {
+        return button;
     }
     if (equalsIgnoringCase(name, "button1")) {
-        return 0;
+        return MouseButton::Left;
     }
     if (equalsIgnoringCase(name, "button2")) {
-        return 1;
+        return MouseButton::Right;
     }
     if (equalsIgnoringCase(name, "button3")) {
-        return 2;
+        return MouseButton::Middle;
     }
     return std::nullopt;
 }
 
-std::string_view gamepadButtonName(int button) noexcept {
-    return button >= 0 && button < kGamepadButtonCount ? kGamepadButtons[static_cast<std::size_t>(button)]
-                                                       : std::string_view{};
+std::string_view gamepadButtonName(GamepadButton button) noexcept { return nameAt(kGamepadButtons, button); }
+
+std::optional<GamepadButton> gamepadButtonFromName(std::string_view name) noexcept {
+    return indexOf<GamepadButton>(kGamepadButtons, name);
 }
 
-std::optional<int> gamepadButtonFromName(std::string_view name) noexcept {
-    return indexOf(kGamepadButtons, name);
-}
+std::string_view gamepadAxisName(GamepadAxis axis) noexcept { return nameAt(kGamepadAxes, axis); }
 
-std::string_view gamepadAxisName(int axis) noexcept {
-    return axis >= 0 && axis < kGamepadAxisCount ? kGamepadAxes[static_cast<std::size_t>(axis)] : std::string_view{};
-}
-
-std::optional<int> gamepadAxisFromName(std::string_view name) noexcept {
-    return indexOf(kGamepadAxes, name);
+std::optional<GamepadAxis> gamepadAxisFromName(std::string_view name) noexcept {
+    return indexOf<GamepadAxis>(kGamepadAxes, name);
 }
 
 } // namespace e2d::input

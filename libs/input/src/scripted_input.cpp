@@ -154,9 +154,10 @@ void ScriptedInput::feed(Input& input, std::int64_t frame) {
             input.handleCursorPos(e.x, e.y);
             break;
         case Resolved::Kind::PadButton:
-            if (e.code == kGamepadButtonLeftTrigger || e.code == kGamepadButtonRightTrigger) {
-                const int axis = e.code == kGamepadButtonLeftTrigger ? GLFW_GAMEPAD_AXIS_LEFT_TRIGGER
-                                                                     : GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
+            if (const auto button = static_cast<GamepadButton>(e.code);
+                button == GamepadButton::LeftTrigger || button == GamepadButton::RightTrigger) {
+                const int axis = button == GamepadButton::LeftTrigger ? GLFW_GAMEPAD_AXIS_LEFT_TRIGGER
+                                                                      : GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
                 pads_[slot].axes[static_cast<std::size_t>(axis)] = e.press ? 1.0f : -1.0f;
             } else {
                 pads_[slot].buttons[static_cast<std::size_t>(e.code)] = e.press ? 1 : 0;

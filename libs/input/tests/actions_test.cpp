@@ -48,7 +48,7 @@ TEST(Actions, AKeyActionIsPressedHeldAndReleasedOnTheRightFrames) {
     Input input;
     ActionMap actions;
     const ActionId jump = actions.add("jump");
-    actions.bind(jump, Binding::key(GLFW_KEY_SPACE));
+    actions.bind(jump, Binding::key(Key::Space));
     Frame frame{input, actions};
 
     frame();
@@ -73,7 +73,7 @@ TEST(Actions, ATapWithinOneFrameIsBothPressedAndReleased) {
     Input input;
     ActionMap actions;
     const ActionId fire = actions.add("fire");
-    actions.bind(fire, Binding::mouseButton(GLFW_MOUSE_BUTTON_LEFT));
+    actions.bind(fire, Binding::mouseButton(MouseButton::Left));
     input.handleMouseButton(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, 0);
     input.handleMouseButton(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, 0);
     Frame{input, actions}();
@@ -89,9 +89,9 @@ TEST(Actions, MixedBindingsGiveTheStrongestValue) {
     Input input;
     ActionMap actions;
     const ActionId moveX = actions.add("move_x");
-    actions.bind(moveX, Binding::keyAxis(GLFW_KEY_A, GLFW_KEY_D));
-    actions.bind(moveX, Binding::gamepadAxis(GLFW_GAMEPAD_AXIS_LEFT_X));
-    actions.bind(moveX, Binding::gamepadAxis(GLFW_GAMEPAD_AXIS_RIGHT_X, true, 2));
+    actions.bind(moveX, Binding::keyAxis(Key::A, Key::D));
+    actions.bind(moveX, Binding::gamepadAxis(GamepadAxis::LeftX));
+    actions.bind(moveX, Binding::gamepadAxis(GamepadAxis::RightX, true, 2));
     Frame frame{input, actions};
 
     // Stick at 0.6: 0.5 after the 0.2 dead zone.
@@ -131,7 +131,7 @@ TEST(Actions, AnyPadButtonOrTriggerCounts) {
     Input input;
     ActionMap actions;
     const ActionId shoot = actions.add("shoot");
-    actions.bind(shoot, Binding::gamepadButton(kGamepadButtonRightTrigger));
+    actions.bind(shoot, Binding::gamepadButton(GamepadButton::RightTrigger));
     JoystickSnapshot s = pad();
     s.axes[GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER] = 1.0f;
     input.handleJoystick(9, s);
@@ -144,7 +144,7 @@ TEST(Actions, ListeningBindsTheNextInput) {
     Input input;
     ActionMap actions;
     const ActionId jump = actions.add("jump");
-    actions.bind(jump, Binding::key(GLFW_KEY_SPACE));
+    actions.bind(jump, Binding::key(Key::Space));
     Frame frame{input, actions};
 
     actions.listen(jump);
@@ -156,8 +156,8 @@ TEST(Actions, ListeningBindsTheNextInput) {
     input.handleKey(GLFW_KEY_K, 45, GLFW_PRESS, 0);
     frame();
     EXPECT_FALSE(actions.listening());
-    EXPECT_EQ(actions.captured(), Binding::key(GLFW_KEY_J));
-    EXPECT_THAT(actions.bindings(jump), ElementsAre(Binding::key(GLFW_KEY_J)));
+    EXPECT_EQ(actions.captured(), Binding::key(Key::J));
+    EXPECT_THAT(actions.bindings(jump), ElementsAre(Binding::key(Key::J)));
     EXPECT_TRUE(actions.held(jump));
 
     // Add mode, from a stick pushed left: bound inverted.
@@ -165,7 +165,7 @@ TEST(Actions, ListeningBindsTheNextInput) {
     input.handleJoystick(4, pad(-0.9f));
     frame();
     EXPECT_THAT(actions.bindings(jump),
-                ElementsAre(Binding::key(GLFW_KEY_J), Binding::gamepadAxis(GLFW_GAMEPAD_AXIS_LEFT_X, true)));
+                ElementsAre(Binding::key(Key::J), Binding::gamepadAxis(GamepadAxis::LeftX, true)));
 
     // Escape cancels and binds nothing.
     actions.listen(jump);
@@ -181,7 +181,7 @@ TEST(Actions, ListeningBindsTheNextInput) {
     s.buttons[GLFW_GAMEPAD_BUTTON_Y] = GLFW_PRESS;
     input.handleJoystick(4, s);
     frame();
-    EXPECT_THAT(actions.bindings(jump), ElementsAre(Binding::gamepadButton(GLFW_GAMEPAD_BUTTON_Y)));
+    EXPECT_THAT(actions.bindings(jump), ElementsAre(Binding::gamepadButton(GamepadButton::Y)));
 }
 
 TEST(Actions, BadNamesHandlesAndBindingsAreRefused) {
@@ -194,31 +194,31 @@ TEST(Actions, BadNamesHandlesAndBindingsAreRefused) {
               "input::ActionMap::held(): no action with id 0");
     EXPECT_EQ(errorOf([&] { static_cast<void>(actions.pressed("nope")); }),
               "input::ActionMap::pressed(): no action named 'nope'");
-    EXPECT_EQ(errorOf([&] { actions.bind(a, Binding::key(9999)); }), "input::ActionMap::bind(): key 9999 out of range");
-    EXPECT_EQ(errorOf([&] { actions.bind(a, Binding::gamepadButton(0, 16)); }),
+    EXPECT_EQ(errorOf([&] { actions.bind(a, Binding::key(Key{9999})); }), "input::ActionMap::bind(): key 9999 out of range");
+    EXPECT_EQ(errorOf([&] { actions.bind(a, Binding::gamepadButton(GamepadButton::A, 16)); }),
               "input::ActionMap::bind(): gamepad slot 16 out of range");
     EXPECT_EQ(errorOf([] { ActionMap m(ActionMapDef{0.0f}); }),
               "input::ActionMap::ActionMap(): pressThreshold must be in (0, 1], got 0.0");
-    actions.bind(a, Binding::key(GLFW_KEY_Q));
-    actions.bind(a, Binding::key(GLFW_KEY_Q));
+    actions.bind(a, Binding::key(Key::Q));
+    actions.bind(a, Binding::key(Key::Q));
     EXPECT_EQ(actions.bindings(a).size(), 1u);
 }
 
 TEST(Bindings, TextFormsRoundTrip) {
-    const Binding all[] = {Binding::key(GLFW_KEY_SPACE),
-                           Binding::keyAxis(GLFW_KEY_LEFT, GLFW_KEY_RIGHT),
-                           Binding::mouseButton(GLFW_MOUSE_BUTTON_MIDDLE),
-                           Binding::gamepadButton(GLFW_GAMEPAD_BUTTON_START),
-                           Binding::gamepadButton(kGamepadButtonLeftTrigger, 15),
-                           Binding::gamepadAxis(GLFW_GAMEPAD_AXIS_LEFT_Y, true),
-                           Binding::gamepadAxis(GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER, false, 3)};
+    const Binding all[] = {Binding::key(Key::Space),
+                           Binding::keyAxis(Key::Left, Key::Right),
+                           Binding::mouseButton(MouseButton::Middle),
+                           Binding::gamepadButton(GamepadButton::Start),
+                           Binding::gamepadButton(GamepadButton::LeftTrigger, 15),
+                           Binding::gamepadAxis(GamepadAxis::LeftY, true),
+                           Binding::gamepadAxis(GamepadAxis::RightTrigger, false, 3)};
     const char* text[] = {"key:space", "keys:left/right", "mouse:middle", "button:start", "button@15:lefttrigger",
                           "axis:-lefty", "axis@3:righttrigger"};
     for (std::size_t i = 0; i < std::size(all); ++i) {
         EXPECT_EQ(formatBinding(all[i]), text[i]);
         EXPECT_EQ(parseBinding(text[i]), all[i]) << text[i];
     }
-    EXPECT_EQ(parseBinding("key:SPACE"), Binding::key(GLFW_KEY_SPACE));
+    EXPECT_EQ(parseBinding("key:SPACE"), Binding::key(Key::Space));
 }
 
 TEST(Bindings, BadTextSaysWhatIsWrong) {

@@ -40,13 +40,13 @@ TEST(BindingsFile, LoadsEveryActionWithItsBindings) {
     actions.loadFromString(kFile);
     ASSERT_EQ(actions.size(), 4u);
     EXPECT_THAT(actions.bindings(actions.find("jump")),
-                ElementsAre(Binding::key(GLFW_KEY_SPACE), Binding::gamepadButton(GLFW_GAMEPAD_BUTTON_A)));
+                ElementsAre(Binding::key(Key::Space), Binding::gamepadButton(GamepadButton::A)));
     EXPECT_THAT(actions.bindings(actions.find("move_x")),
-                ElementsAre(Binding::keyAxis(GLFW_KEY_A, GLFW_KEY_D), Binding::gamepadAxis(GLFW_GAMEPAD_AXIS_LEFT_X),
-                            Binding::gamepadAxis(GLFW_GAMEPAD_AXIS_RIGHT_X, true, 1)));
+                ElementsAre(Binding::keyAxis(Key::A, Key::D), Binding::gamepadAxis(GamepadAxis::LeftX),
+                            Binding::gamepadAxis(GamepadAxis::RightX, true, 1)));
     EXPECT_THAT(actions.bindings(actions.find("fire")),
-                ElementsAre(Binding::mouseButton(GLFW_MOUSE_BUTTON_LEFT),
-                            Binding::gamepadButton(kGamepadButtonRightTrigger, 0)));
+                ElementsAre(Binding::mouseButton(MouseButton::Left),
+                            Binding::gamepadButton(GamepadButton::RightTrigger, 0)));
     EXPECT_TRUE(actions.bindings(actions.find("pause")).empty());
 }
 
@@ -54,7 +54,7 @@ TEST(BindingsFile, SaveThenLoadGivesTheSameMap) {
     const std::filesystem::path path = std::filesystem::path(::testing::TempDir()) / "e2d_input_bindings.txt";
     ActionMap original;
     original.loadFromString(kFile);
-    original.bind(original.add("menu"), Binding::key(GLFW_KEY_F10));
+    original.bind(original.add("menu"), Binding::key(Key::F10));
     original.save(path);
 
     ActionMap loaded;
@@ -71,18 +71,18 @@ TEST(BindingsFile, SaveThenLoadGivesTheSameMap) {
 TEST(BindingsFile, LoadingReplacesListedActionsAndKeepsTheOthers) {
     ActionMap actions;
     const ActionId keep = actions.add("keep");
-    actions.bind(keep, Binding::key(GLFW_KEY_K));
+    actions.bind(keep, Binding::key(Key::K));
     const ActionId jump = actions.add("jump");
-    actions.bind(jump, Binding::key(GLFW_KEY_W));
+    actions.bind(jump, Binding::key(Key::W));
     actions.loadFromString("jump = key:up\n");
-    EXPECT_THAT(actions.bindings(jump), ElementsAre(Binding::key(GLFW_KEY_UP)));
-    EXPECT_THAT(actions.bindings(keep), ElementsAre(Binding::key(GLFW_KEY_K)));
+    EXPECT_THAT(actions.bindings(jump), ElementsAre(Binding::key(Key::Up)));
+    EXPECT_THAT(actions.bindings(keep), ElementsAre(Binding::key(Key::K)));
 }
 
 TEST(BindingsFile, MalformedLinesNameFileAndLineAndChangeNothing) {
     ActionMap actions;
     const ActionId jump = actions.add("jump");
-    actions.bind(jump, Binding::key(GLFW_KEY_W));
+    actions.bind(jump, Binding::key(Key::W));
     const auto message = [&](std::string_view text) {
         return errorOf([&] { actions.loadFromString(text, "controls.txt"); });
     };
@@ -96,7 +96,7 @@ TEST(BindingsFile, MalformedLinesNameFileAndLineAndChangeNothing) {
     EXPECT_EQ(message("a = button:fire\n"), "controls.txt:1: unknown gamepad button name 'fire' in 'button:fire'");
     // Nothing of the failed loads stuck.
     EXPECT_EQ(actions.size(), 1u);
-    EXPECT_THAT(actions.bindings(jump), ElementsAre(Binding::key(GLFW_KEY_W)));
+    EXPECT_THAT(actions.bindings(jump), ElementsAre(Binding::key(Key::W)));
 }
 
 // Editors on Windows start a UTF-8 file with a byte order mark; it used to become part of the

@@ -36,10 +36,10 @@ std::vector<std::string> describe(const Input& input) {
     for (const Event& e : input.events()) {
         std::string s = std::string(toString(e.type)) + " " + std::to_string(e.gamepad);
         if (e.type == EventType::GamepadButtonDown || e.type == EventType::GamepadButtonUp) {
-            s += " " + std::string(gamepadButtonName(e.code));
+            s += " " + std::string(gamepadButtonName(GamepadButton(e.code)));
         }
         if (e.type == EventType::GamepadAxis) {
-            s += " " + std::string(gamepadAxisName(e.code));
+            s += " " + std::string(gamepadAxisName(GamepadAxis(e.code)));
         }
         out.push_back(s);
     }
@@ -88,17 +88,17 @@ TEST(Gamepads, ConnectButtonsAxesAndDisconnectArriveAsEvents) {
     input.beginFrame();
     EXPECT_THAT(describe(input), ElementsAre("GamepadButtonDown 3 a", "GamepadButtonDown 3 righttrigger",
                                              "GamepadAxis 3 leftx", "GamepadAxis 3 righttrigger"));
-    EXPECT_TRUE(input.isGamepadButtonDown(3, GLFW_GAMEPAD_BUTTON_A));
-    EXPECT_TRUE(input.wasGamepadButtonPressed(3, kGamepadButtonRightTrigger));
-    EXPECT_THAT(input.gamepadAxis(3, GLFW_GAMEPAD_AXIS_LEFT_X), FloatNear(0.5f, 1e-6f));
-    EXPECT_THAT(input.gamepadAxis(3, GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER), FloatNear(0.65f / 0.9f, 1e-6f));
+    EXPECT_TRUE(input.isGamepadButtonDown(3, GamepadButton::A));
+    EXPECT_TRUE(input.wasGamepadButtonPressed(3, GamepadButton::RightTrigger));
+    EXPECT_THAT(input.gamepadAxis(3, GamepadAxis::LeftX), FloatNear(0.5f, 1e-6f));
+    EXPECT_THAT(input.gamepadAxis(3, GamepadAxis::RightTrigger), FloatNear(0.65f / 0.9f, 1e-6f));
 
     // Same state: nothing new, edges gone.
     input.handleJoystick(3, s);
     input.beginFrame();
     EXPECT_TRUE(input.events().empty());
-    EXPECT_FALSE(input.wasGamepadButtonPressed(3, GLFW_GAMEPAD_BUTTON_A));
-    EXPECT_TRUE(input.isGamepadButtonDown(3, GLFW_GAMEPAD_BUTTON_A));
+    EXPECT_FALSE(input.wasGamepadButtonPressed(3, GamepadButton::A));
+    EXPECT_TRUE(input.isGamepadButtonDown(3, GamepadButton::A));
 
     // Unplugged while held: the buttons are released first.
     JoystickSnapshot gone;
@@ -107,8 +107,8 @@ TEST(Gamepads, ConnectButtonsAxesAndDisconnectArriveAsEvents) {
     EXPECT_THAT(describe(input), ElementsAre("GamepadButtonUp 3 a", "GamepadButtonUp 3 righttrigger",
                                              "GamepadDisconnected 3", "JoystickDisconnected 3"));
     EXPECT_FALSE(input.isGamepadConnected(3));
-    EXPECT_FALSE(input.isGamepadButtonDown(3, GLFW_GAMEPAD_BUTTON_A));
-    EXPECT_EQ(input.gamepadAxis(3, GLFW_GAMEPAD_AXIS_LEFT_X), 0.0f);
+    EXPECT_FALSE(input.isGamepadButtonDown(3, GamepadButton::A));
+    EXPECT_EQ(input.gamepadAxis(3, GamepadAxis::LeftX), 0.0f);
     EXPECT_TRUE(input.joysticks().empty());
 }
 
@@ -123,14 +123,14 @@ TEST(Gamepads, SixteenPadsAtOnceAreIndependent) {
     for (int slot = 0; slot < kMaxGamepads; ++slot) {
         EXPECT_TRUE(input.isGamepadConnected(slot));
         for (int b = 0; b < 15; ++b) {
-            EXPECT_EQ(input.isGamepadButtonDown(slot, b), b == slot % 15) << slot << " " << b;
+            EXPECT_EQ(input.isGamepadButtonDown(slot, GamepadButton(b)), b == slot % 15) << slot << " " << b;
         }
     }
     EXPECT_EQ(input.joysticks().size(), 16u);
     EXPECT_THROW(input.handleJoystick(16, pad()), core::Error);
     EXPECT_THROW(input.handleJoystick(-1, pad()), core::Error);
-    EXPECT_FALSE(input.isGamepadButtonDown(16, 0));
-    EXPECT_EQ(input.gamepadAxis(0, 6), 0.0f);
+    EXPECT_FALSE(input.isGamepadButtonDown(16, GamepadButton::A));
+    EXPECT_EQ(input.gamepadAxis(0, GamepadAxis{6}), 0.0f);
 }
 
 TEST(Gamepads, AnUnmappedJoystickIsListedAndBecomesAGamepadOnceMapped) {
@@ -186,11 +186,11 @@ TEST(Gamepads, TriggerButtonFollowsThePressThreshold) {
     s.axes[GLFW_GAMEPAD_AXIS_LEFT_TRIGGER] = 0.5f; // 0.75
     input.handleJoystick(0, s);
     input.beginFrame();
-    EXPECT_FALSE(input.isGamepadButtonDown(0, kGamepadButtonLeftTrigger));
+    EXPECT_FALSE(input.isGamepadButtonDown(0, GamepadButton::LeftTrigger));
     s.axes[GLFW_GAMEPAD_AXIS_LEFT_TRIGGER] = 0.7f; // 0.85
     input.handleJoystick(0, s);
     input.beginFrame();
-    EXPECT_TRUE(input.isGamepadButtonDown(0, kGamepadButtonLeftTrigger));
+    EXPECT_TRUE(input.isGamepadButtonDown(0, GamepadButton::LeftTrigger));
 }
 
 } // namespace

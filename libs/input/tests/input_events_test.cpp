@@ -2,6 +2,7 @@
 // Events fed through the entry points GLFW's callbacks use; no window.
 #include <e2d/core/error.hpp>
 #include <e2d/core/log.hpp>
+#include <e2d/input/actions.hpp>
 #include <e2d/input/input.hpp>
 
 #include <GLFW/glfw3.h>
@@ -26,7 +27,7 @@ std::vector<std::string> describe(const Input& input) {
         case EventType::KeyDown:
         case EventType::KeyUp:
         case EventType::KeyRepeat:
-            s += " " + std::string(keyName(e.code)) + " m" + std::to_string(e.mods) + " s" + std::to_string(e.scancode);
+            s += " " + std::string(keyName(Key(e.code))) + " m" + std::to_string(e.mods) + " s" + std::to_string(e.scancode);
             break;
         case EventType::Text: s += " U+" + std::to_string(e.code); break;
         case EventType::MouseButtonDown:
@@ -42,14 +43,35 @@ std::vector<std::string> describe(const Input& input) {
     return out;
 }
 
+// Polling, bindings and names take the events' enums; a bare number (a GLFW code,
+// `button == 0`) does not compile. `Code` is the argument type tried.
+template <class Code>
+concept PollsKeys = requires(const Input& in, Code c) { in.isKeyDown(c); };
+template <class Code>
+concept PollsMouseButtons = requires(const Input& in, Code c) { in.wasMouseButtonPressed(c); };
+template <class Code>
+concept PollsPadButtons = requires(const Input& in, Code c) { in.isGamepadButtonDown(0, c); };
+template <class Code>
+concept PollsPadAxes = requires(const Input& in, Code c) { in.gamepadAxis(0, c); };
+template <class Code>
+concept BindsKeys = requires(Code c) { Binding::key(c); };
+template <class Code>
+concept NamesKeys = requires(Code c) { keyName(c); };
+static_assert(PollsKeys<Key> && !PollsKeys<int>);
+static_assert(PollsMouseButtons<MouseButton> && !PollsMouseButtons<int>);
+static_assert(PollsPadButtons<GamepadButton> && !PollsPadButtons<int>);
+static_assert(PollsPadAxes<GamepadAxis> && !PollsPadAxes<int>);
+static_assert(BindsKeys<Key> && !BindsKeys<int>);
+static_assert(NamesKeys<Key> && !NamesKeys<int>);
+
 TEST(InputEvents, NothingIsDeliveredUntilTheFrameStarts) {
     Input input;
     input.handleKey(GLFW_KEY_A, 38, GLFW_PRESS, 0);
     EXPECT_TRUE(input.events().empty());
-    EXPECT_FALSE(input.isKeyDown(GLFW_KEY_A));
+    EXPECT_FALSE(input.isKeyDown(Key::A));
     input.beginFrame();
     EXPECT_EQ(input.events().size(), 1u);
-    EXPECT_TRUE(input.isKeyDown(GLFW_KEY_A));
+    EXPECT_TRUE(input.isKeyDown(Key::A));
 }
 
 TEST(InputEvents, AFrameDeliversEveryKindInTheOrderItWasQueued) {
@@ -83,34 +105,34 @@ TEST(InputEvents, PressedAndReleasedInTheSameFrameCountsBoth) {
     input.handleMouseButton(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, 0);
     input.handleMouseButton(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, 0);
     input.beginFrame();
-    EXPECT_TRUE(input.wasKeyPressed(GLFW_KEY_SPACE));
-    EXPECT_TRUE(input.wasKeyReleased(GLFW_KEY_SPACE));
-    EXPECT_FALSE(input.isKeyDown(GLFW_KEY_SPACE));
-    EXPECT_TRUE(input.wasMouseButtonPressed(GLFW_MOUSE_BUTTON_LEFT));
-    EXPECT_TRUE(input.wasMouseButtonReleased(GLFW_MOUSE_BUTTON_LEFT));
-    EXPECT_FALSE(input.isMouseButtonDown(GLFW_MOUSE_BUTTON_LEFT));
+    EXPECT_TRUE(input.wasKeyPressed(Key::Space));
+    EXPECT_TRUE(input.wasKeyReleased(Key::Space));
+    EXPECT_FALSE(input.isKeyDown(Key::Space));
+    EXPECT_TRUE(input.wasMouseButtonPressed(MouseButton::Left));
+    EXPECT_TRUE(input.wasMouseButtonReleased(MouseButton::Left));
+    EXPECT_FALSE(input.isMouseButtonDown(MouseButton::Left));
     input.beginFrame();
-    EXPECT_FALSE(input.wasKeyPressed(GLFW_KEY_SPACE));
-    EXPECT_FALSE(input.wasKeyReleased(GLFW_KEY_SPACE));
-    EXPECT_FALSE(input.wasMouseButtonPressed(GLFW_MOUSE_BUTTON_LEFT));
+    EXPECT_FALSE(input.wasKeyPressed(Key::Space));
+    EXPECT_FALSE(input.wasKeyReleased(Key::Space));
+    EXPECT_FALSE(input.wasMouseButtonPressed(MouseButton::Left));
 }
 
 TEST(InputEvents, EdgesLastOneFrameAndHeldStaysDown) {
     Input input;
     input.handleKey(GLFW_KEY_W, 25, GLFW_PRESS, 0);
     input.beginFrame();
-    EXPECT_TRUE(input.wasKeyPressed(GLFW_KEY_W));
+    EXPECT_TRUE(input.wasKeyPressed(Key::W));
     input.handleKey(GLFW_KEY_W, 25, GLFW_REPEAT, 0);
     input.beginFrame();
-    EXPECT_TRUE(input.isKeyDown(GLFW_KEY_W));
-    EXPECT_FALSE(input.wasKeyPressed(GLFW_KEY_W)); // a repeat is not a press
+    EXPECT_TRUE(input.isKeyDown(Key::W));
+    EXPECT_FALSE(input.wasKeyPressed(Key::W)); // a repeat is not a press
     input.handleKey(GLFW_KEY_W, 25, GLFW_RELEASE, 0);
     input.beginFrame();
-    EXPECT_FALSE(input.isKeyDown(GLFW_KEY_W));
-    EXPECT_TRUE(input.wasKeyReleased(GLFW_KEY_W));
-    EXPECT_FALSE(input.isKeyDown(-1));
-    EXPECT_FALSE(input.isKeyDown(GLFW_KEY_LAST + 1));
-    EXPECT_FALSE(input.wasMouseButtonPressed(99));
+    EXPECT_FALSE(input.isKeyDown(Key::W));
+    EXPECT_TRUE(input.wasKeyReleased(Key::W));
+    EXPECT_FALSE(input.isKeyDown(Key::Unknown));
+    EXPECT_FALSE(input.isKeyDown(Key{static_cast<int>(Key::Menu) + 1}));
+    EXPECT_FALSE(input.wasMouseButtonPressed(MouseButton{99}));
 }
 
 TEST(InputEvents, FocusLossReleasesEverythingHeldBeforeReportingIt) {
@@ -120,17 +142,17 @@ TEST(InputEvents, FocusLossReleasesEverythingHeldBeforeReportingIt) {
     input.handleKey(GLFW_KEY_LEFT_SHIFT, 50, GLFW_PRESS, GLFW_MOD_SHIFT);
     input.handleMouseButton(GLFW_MOUSE_BUTTON_MIDDLE, GLFW_PRESS, 0);
     input.beginFrame();
-    ASSERT_TRUE(input.isKeyDown(GLFW_KEY_A));
+    ASSERT_TRUE(input.isKeyDown(Key::A));
     input.handleFocus(false);
     // GLFW sends its own releases after the focus callback: they must not be reported twice.
     input.handleKey(GLFW_KEY_A, 38, GLFW_RELEASE, 0);
     input.handleMouseButton(GLFW_MOUSE_BUTTON_MIDDLE, GLFW_RELEASE, 0);
     input.beginFrame();
     EXPECT_THAT(describe(input), ElementsAre("KeyUp a m0 s38", "KeyUp left_shift m0 s50", "MouseButtonUp 2 @5,6", "FocusLost"));
-    EXPECT_FALSE(input.isKeyDown(GLFW_KEY_A));
-    EXPECT_FALSE(input.isKeyDown(GLFW_KEY_LEFT_SHIFT));
-    EXPECT_FALSE(input.isMouseButtonDown(GLFW_MOUSE_BUTTON_MIDDLE));
-    EXPECT_TRUE(input.wasKeyReleased(GLFW_KEY_A));
+    EXPECT_FALSE(input.isKeyDown(Key::A));
+    EXPECT_FALSE(input.isKeyDown(Key::LeftShift));
+    EXPECT_FALSE(input.isMouseButtonDown(MouseButton::Middle));
+    EXPECT_TRUE(input.wasKeyReleased(Key::A));
     EXPECT_FALSE(input.focused());
     input.handleFocus(true);
     input.beginFrame();

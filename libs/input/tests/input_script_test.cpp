@@ -148,11 +148,11 @@ TEST(ScriptedInput, FeedsTheInputQueueAndPollingStateOnItsFrames) {
                                                   "0 press button@1:a\n"
                                                   "3 move axis@1:righttrigger 1\n"),
                                  actions));
-    const int space = *input::keyFromName("space");
+    const input::Key space = *input::keyFromName("space");
     in.beginFrame(); // frame 0: the scripted pad is plugged in, its A held
     EXPECT_TRUE(in.isGamepadConnected(1));
     EXPECT_FALSE(in.isGamepadConnected(0));
-    EXPECT_TRUE(in.isGamepadButtonDown(1, 0));
+    EXPECT_TRUE(in.isGamepadButtonDown(1, input::GamepadButton::A));
     EXPECT_FALSE(in.isKeyDown(space));
     in.beginFrame(); // frame 1: the tap's press
     EXPECT_TRUE(in.wasKeyPressed(space));
@@ -163,7 +163,7 @@ TEST(ScriptedInput, FeedsTheInputQueueAndPollingStateOnItsFrames) {
     EXPECT_FALSE(in.isKeyDown(space));
     EXPECT_EQ(in.mousePosition(), glm::vec2(10.0f, 20.0f));
     in.beginFrame(); // frame 3: the trigger pulled all the way
-    EXPECT_EQ(in.gamepadAxis(1, 5), 1.0f);
+    EXPECT_EQ(in.gamepadAxis(1, input::GamepadAxis::RightTrigger), 1.0f);
 }
 
 TEST(ScriptedInput, TargetsThatCannotBePlayedNameTheLine) {
@@ -174,7 +174,7 @@ TEST(ScriptedInput, TargetsThatCannotBePlayedNameTheLine) {
               "'<frame> move axis:leftx <value>')");
     EXPECT_EQ(playError("0 move axis:lefttrigger -0.5"), "run.txt:1: move axis:lefttrigger: a trigger's value is in [0, 1], got -0.5");
     input::ActionMap actions;
-    actions.bind(actions.add("steer"), input::Binding::gamepadAxis(0));
+    actions.bind(actions.add("steer"), input::Binding::gamepadAxis(input::GamepadAxis::LeftX));
     EXPECT_EQ(playError("0 press steer", actions), "run.txt:1: action 'steer' has no keyboard or mouse-button binding to press");
 }
 

@@ -12,55 +12,58 @@ namespace e2d::input {
 namespace {
 
 TEST(Names, KeysBothWays) {
-    EXPECT_EQ(keyName(GLFW_KEY_SPACE), "space");
-    EXPECT_EQ(keyName(GLFW_KEY_A), "a");
-    EXPECT_EQ(keyName(GLFW_KEY_LEFT_SHIFT), "left_shift");
-    EXPECT_EQ(keyName(GLFW_KEY_KP_ENTER), "kp_enter");
-    EXPECT_EQ(keyName(GLFW_KEY_F25), "f25");
-    EXPECT_EQ(keyName(GLFW_KEY_MENU), "menu");
-    EXPECT_EQ(keyFromName("space"), GLFW_KEY_SPACE);
-    EXPECT_EQ(keyFromName("SPACE"), GLFW_KEY_SPACE);
-    EXPECT_EQ(keyFromName("Page_Down"), GLFW_KEY_PAGE_DOWN);
-    EXPECT_EQ(keyFromName("9"), GLFW_KEY_9);
+    EXPECT_EQ(keyName(Key::Space), "space");
+    EXPECT_EQ(keyName(Key::A), "a");
+    EXPECT_EQ(keyName(Key::LeftShift), "left_shift");
+    EXPECT_EQ(keyName(Key::KeypadEnter), "kp_enter");
+    EXPECT_EQ(keyName(Key::F25), "f25");
+    EXPECT_EQ(keyName(Key::Menu), "menu");
+    EXPECT_EQ(keyFromName("space"), Key::Space);
+    EXPECT_EQ(keyFromName("SPACE"), Key::Space);
+    EXPECT_EQ(keyFromName("Page_Down"), Key::PageDown);
+    EXPECT_EQ(keyFromName("9"), Key::Num9);
     EXPECT_EQ(keyFromName("spcae"), std::nullopt);
     EXPECT_EQ(keyFromName(""), std::nullopt);
-    EXPECT_EQ(keyName(GLFW_KEY_UNKNOWN), "");
-    EXPECT_EQ(keyName(33), ""); // a gap in GLFW's codes
-    EXPECT_EQ(keyName(100000), "");
+    EXPECT_EQ(keyName(Key::Unknown), "");
+    EXPECT_EQ(keyName(Key{33}), ""); // a gap in GLFW's codes
+    EXPECT_EQ(keyName(Key{100000}), "");
 }
 
 TEST(Names, EveryKeyCodeHasAUniqueNameThatMapsBack) {
     std::set<std::string> seen;
     int named = 0;
     for (int key = -1; key <= GLFW_KEY_LAST + 1; ++key) {
-        const std::string_view name = keyName(key);
+        const std::string_view name = keyName(Key{key});
         if (name.empty()) {
             continue;
         }
         ++named;
         EXPECT_TRUE(seen.insert(std::string(name)).second) << name;
-        EXPECT_EQ(keyFromName(name), key) << name;
+        EXPECT_EQ(keyFromName(name), Key{key}) << name;
     }
     // glfw3.h defines 120 named keys (GLFW_KEY_SPACE .. GLFW_KEY_MENU).
     EXPECT_EQ(named, 120);
 }
 
 TEST(Names, MouseAndGamepad) {
-    EXPECT_EQ(mouseButtonName(GLFW_MOUSE_BUTTON_LEFT), "left");
-    EXPECT_EQ(mouseButtonName(GLFW_MOUSE_BUTTON_MIDDLE), "middle");
-    EXPECT_EQ(mouseButtonFromName("right"), GLFW_MOUSE_BUTTON_RIGHT);
-    EXPECT_EQ(mouseButtonFromName("button1"), GLFW_MOUSE_BUTTON_LEFT);
-    EXPECT_EQ(mouseButtonFromName("button8"), GLFW_MOUSE_BUTTON_8);
-    EXPECT_EQ(mouseButtonName(8), "");
-    EXPECT_EQ(gamepadButtonName(GLFW_GAMEPAD_BUTTON_LEFT_BUMPER), "leftshoulder");
-    EXPECT_EQ(gamepadButtonName(GLFW_GAMEPAD_BUTTON_DPAD_LEFT), "dpleft");
-    EXPECT_EQ(gamepadButtonName(kGamepadButtonRightTrigger), "righttrigger");
-    EXPECT_EQ(gamepadButtonFromName("start"), GLFW_GAMEPAD_BUTTON_START);
-    EXPECT_EQ(gamepadButtonFromName("lefttrigger"), kGamepadButtonLeftTrigger);
+    EXPECT_EQ(mouseButtonName(MouseButton::Left), "left");
+    EXPECT_EQ(mouseButtonName(MouseButton::Middle), "middle");
+    EXPECT_EQ(mouseButtonFromName("right"), MouseButton::Right);
+    EXPECT_EQ(mouseButtonFromName("button1"), MouseButton::Left);
+    EXPECT_EQ(mouseButtonFromName("button8"), MouseButton::Button8);
+    EXPECT_EQ(mouseButtonName(MouseButton{8}), "");
+    EXPECT_EQ(mouseButtonName(MouseButton{-1}), "");
+    EXPECT_EQ(gamepadButtonName(GamepadButton{17}), "");
+    EXPECT_EQ(gamepadButtonName(GamepadButton::LeftBumper), "leftshoulder");
+    EXPECT_EQ(gamepadButtonName(GamepadButton::DpadLeft), "dpleft");
+    EXPECT_EQ(gamepadButtonName(GamepadButton::RightTrigger), "righttrigger");
+    EXPECT_EQ(gamepadButtonFromName("start"), GamepadButton::Start);
+    EXPECT_EQ(gamepadButtonFromName("lefttrigger"), GamepadButton::LeftTrigger);
     EXPECT_EQ(gamepadButtonFromName("z"), std::nullopt);
-    EXPECT_EQ(gamepadAxisName(GLFW_GAMEPAD_AXIS_RIGHT_Y), "righty");
-    EXPECT_EQ(gamepadAxisFromName("lefttrigger"), GLFW_GAMEPAD_AXIS_LEFT_TRIGGER);
-    EXPECT_EQ(gamepadAxisName(6), "");
+    EXPECT_EQ(gamepadAxisName(GamepadAxis::RightY), "righty");
+    EXPECT_EQ(gamepadAxisFromName("lefttrigger"), GamepadAxis::LeftTrigger);
+    EXPECT_EQ(gamepadAxisName(GamepadAxis{6}), "");
+    EXPECT_EQ(gamepadAxisName(GamepadAxis{-1}), "");
 }
 
 } // namespace

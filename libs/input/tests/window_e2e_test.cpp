@@ -34,11 +34,11 @@ std::string describe(const Event& e) {
     switch (e.type) {
     case EventType::KeyDown:
     case EventType::KeyUp:
-    case EventType::KeyRepeat: return s + " " + std::string(keyName(e.code)) + " mods=" + std::to_string(e.mods);
+    case EventType::KeyRepeat: return s + " " + std::string(keyName(Key(e.code))) + " mods=" + std::to_string(e.mods);
     case EventType::Text: return s + " U+" + std::to_string(e.code);
     case EventType::MouseButtonDown:
     case EventType::MouseButtonUp:
-        return s + " " + std::string(mouseButtonName(e.code)) + " @" + std::to_string(int(e.screen.x)) + "," +
+        return s + " " + std::string(mouseButtonName(MouseButton(e.code))) + " @" + std::to_string(int(e.screen.x)) + "," +
                std::to_string(int(e.screen.y));
     case EventType::MouseMove: return s + " @" + std::to_string(int(e.screen.x)) + "," + std::to_string(int(e.screen.y));
     case EventType::Scroll: return s + " " + std::to_string(int(e.delta.x)) + "," + std::to_string(int(e.delta.y));
@@ -176,8 +176,8 @@ TEST_F(WindowInput, KeysWithModifiersAndTheirTextArriveInOrder) {
                                          "KeyUp left_shift mods=1", "KeyUp x mods=0",                      //
                                          "KeyDown left_control mods=0", "KeyDown s mods=2",                //
                                          "KeyUp left_control mods=2", "KeyUp s mods=0")); // no text with ctrl
-    EXPECT_FALSE(input_->isKeyDown(GLFW_KEY_A));
-    EXPECT_FALSE(input_->isKeyDown(GLFW_KEY_LEFT_CONTROL));
+    EXPECT_FALSE(input_->isKeyDown(Key::A));
+    EXPECT_FALSE(input_->isKeyDown(Key::LeftControl));
 }
 
 TEST_F(WindowInput, TypedTextArrivesAsCodePoints) {
@@ -198,15 +198,15 @@ TEST_F(WindowInput, TypedTextArrivesAsCodePoints) {
 TEST_F(WindowInput, AHeldKeyDoesNotRepeatAndIsDownUntilReleased) {
     xdotool("keydown Right");
     ASSERT_TRUE(pumpUntilSeen(EventType::KeyDown, GLFW_KEY_RIGHT));
-    EXPECT_TRUE(input_->isKeyDown(GLFW_KEY_RIGHT));
+    EXPECT_TRUE(input_->isKeyDown(Key::Right));
     // Held for 0.6 s: with Xvfb's auto-repeat delay at 5 s no repeat may arrive.
     const auto until = std::chrono::steady_clock::now() + 600ms;
     pumpUntil([&] { return std::chrono::steady_clock::now() >= until; });
-    EXPECT_TRUE(input_->isKeyDown(GLFW_KEY_RIGHT));
+    EXPECT_TRUE(input_->isKeyDown(Key::Right));
     xdotool("keyup Right");
     ASSERT_TRUE(pumpUntilSeen(EventType::KeyUp, GLFW_KEY_RIGHT));
     EXPECT_THAT(seen(kKeys), ElementsAre("KeyDown right mods=0", "KeyUp right mods=0"));
-    EXPECT_FALSE(input_->isKeyDown(GLFW_KEY_RIGHT));
+    EXPECT_FALSE(input_->isKeyDown(Key::Right));
 }
 
 TEST_F(WindowInput, LosingFocusReleasesTheHeldKeysAndButtons) {
@@ -214,7 +214,7 @@ TEST_F(WindowInput, LosingFocusReleasesTheHeldKeysAndButtons) {
     xdotool("keydown q");
     xdotool("mousedown 1");
     ASSERT_TRUE(pumpUntilSeen(EventType::MouseButtonDown, GLFW_MOUSE_BUTTON_LEFT));
-    ASSERT_TRUE(input_->isKeyDown(GLFW_KEY_Q));
+    ASSERT_TRUE(input_->isKeyDown(Key::Q));
     events_.clear();
     // A second window takes the focus when shown (no window manager needed).
     GLFWwindow* other = glfwCreateWindow(100, 100, (title_ + "-other").c_str(), nullptr, nullptr);
@@ -222,8 +222,8 @@ TEST_F(WindowInput, LosingFocusReleasesTheHeldKeysAndButtons) {
     ASSERT_TRUE(pumpUntilSeen(EventType::FocusLost, 0));
     EXPECT_THAT(seen({EventType::KeyUp, EventType::MouseButtonUp, EventType::FocusLost}),
                 ElementsAre("KeyUp q mods=0", "MouseButtonUp left @50,60", "FocusLost"));
-    EXPECT_FALSE(input_->isKeyDown(GLFW_KEY_Q));
-    EXPECT_FALSE(input_->isMouseButtonDown(GLFW_MOUSE_BUTTON_LEFT));
+    EXPECT_FALSE(input_->isKeyDown(Key::Q));
+    EXPECT_FALSE(input_->isMouseButtonDown(MouseButton::Left));
     EXPECT_FALSE(input_->focused());
     xdotool("keyup q");
     xdotool("mouseup 1");

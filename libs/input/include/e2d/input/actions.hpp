@@ -2,6 +2,7 @@
 #pragma once
 
 #include <e2d/core/id.hpp>
+#include <e2d/input/event.hpp>
 
 #include <cstdint>
 #include <filesystem>
@@ -24,7 +25,8 @@ enum class BindingKind : std::uint8_t {
     KeyAxis,       ///< two keys as an axis: `negativeKey` gives -1, `code` +1, both 0
 };
 
-/// One input an action listens to. Write it with the factories or parseBinding().
+/// One input an action listens to. Write it with the factories (`Binding::key(Key::Space)`)
+/// or parseBinding(); `code` and `negativeKey` hold the enum's value (GLFW's code).
 ///
 /// Text form (bindings files): `key:space`, `mouse:left`, `button:a`, `axis:leftx`,
 /// `axis:-lefty` (inverted), `keys:a/d` (negative/positive), and for one gamepad slot only
@@ -40,18 +42,20 @@ struct Binding {
     /// GamepadAxis: read the axis negated.
     bool inverted = false;
 
-    [[nodiscard]] static Binding key(int key) noexcept { return {BindingKind::Key, key, 0, -1, false}; }
-    [[nodiscard]] static Binding mouseButton(int button) noexcept {
-        return {BindingKind::MouseButton, button, 0, -1, false};
+    [[nodiscard]] static Binding key(Key key) noexcept {
+        return {BindingKind::Key, static_cast<int>(key), 0, -1, false};
     }
-    [[nodiscard]] static Binding gamepadButton(int button, int gamepad = -1) noexcept {
-        return {BindingKind::GamepadButton, button, 0, gamepad, false};
+    [[nodiscard]] static Binding mouseButton(MouseButton button) noexcept {
+        return {BindingKind::MouseButton, static_cast<int>(button), 0, -1, false};
     }
-    [[nodiscard]] static Binding gamepadAxis(int axis, bool inverted = false, int gamepad = -1) noexcept {
-        return {BindingKind::GamepadAxis, axis, 0, gamepad, inverted};
+    [[nodiscard]] static Binding gamepadButton(GamepadButton button, int gamepad = -1) noexcept {
+        return {BindingKind::GamepadButton, static_cast<int>(button), 0, gamepad, false};
     }
-    [[nodiscard]] static Binding keyAxis(int negativeKey, int positiveKey) noexcept {
-        return {BindingKind::KeyAxis, positiveKey, negativeKey, -1, false};
+    [[nodiscard]] static Binding gamepadAxis(GamepadAxis axis, bool inverted = false, int gamepad = -1) noexcept {
+        return {BindingKind::GamepadAxis, static_cast<int>(axis), 0, gamepad, inverted};
+    }
+    [[nodiscard]] static Binding keyAxis(Key negativeKey, Key positiveKey) noexcept {
+        return {BindingKind::KeyAxis, static_cast<int>(positiveKey), static_cast<int>(negativeKey), -1, false};
     }
     friend bool operator==(const Binding&, const Binding&) = default;
 };
@@ -76,9 +80,9 @@ struct ActionMapDef {
     /// While listening for a rebinding, an axis must move this far (|value|, after its dead
     /// zone) to be taken, in (0, 1]. Default 0.5.
     float listenAxisThreshold = 0.5f;
-    /// While listening, this key cancels instead of being bound (GLFW_KEY_ESCAPE = 256);
-    /// -1: none. Default 256.
-    int listenCancelKey = 256;
+    /// While listening, this key cancels instead of being bound; Key::Unknown: none.
+    /// Default Key::Escape.
+    Key listenCancelKey = Key::Escape;
 };
 
 /// How a captured rebinding is applied.

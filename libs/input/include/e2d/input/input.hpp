@@ -55,7 +55,7 @@ struct InputDef {
     /// rescaled to [0, 1]. Default 0.1.
     float triggerDeadZone = 0.1f;
     /// Trigger value (after its dead zone) at or above which the trigger counts as the
-    /// buttons kGamepadButtonLeftTrigger / kGamepadButtonRightTrigger, in (0, 1]. Default 0.5.
+    /// buttons GamepadButton::LeftTrigger / RightTrigger, in (0, 1]. Default 0.5.
     float triggerPressThreshold = 0.5f;
     /// Window events queued between two frames beyond this are dropped and counted
     /// (droppedEvents()), so a stalled game does not grow without bound. >= 1, default 4096.
@@ -159,13 +159,14 @@ public:
 
     // Keyboard and mouse polling --------------------------------------------------------------
 
-    /// Key codes are GLFW's (names.hpp converts names); out-of-range codes read false.
-    [[nodiscard]] bool isKeyDown(int key) const noexcept;
-    [[nodiscard]] bool wasKeyPressed(int key) const noexcept;
-    [[nodiscard]] bool wasKeyReleased(int key) const noexcept;
-    [[nodiscard]] bool isMouseButtonDown(int button) const noexcept;
-    [[nodiscard]] bool wasMouseButtonPressed(int button) const noexcept;
-    [[nodiscard]] bool wasMouseButtonReleased(int button) const noexcept;
+    /// Keys and buttons as the events name them (`input.isKeyDown(Key::Space)`; names.hpp
+    /// converts config names); Key::Unknown and values outside the enum read false.
+    [[nodiscard]] bool isKeyDown(Key key) const noexcept;
+    [[nodiscard]] bool wasKeyPressed(Key key) const noexcept;
+    [[nodiscard]] bool wasKeyReleased(Key key) const noexcept;
+    [[nodiscard]] bool isMouseButtonDown(MouseButton button) const noexcept;
+    [[nodiscard]] bool wasMouseButtonPressed(MouseButton button) const noexcept;
+    [[nodiscard]] bool wasMouseButtonReleased(MouseButton button) const noexcept;
     /// Cursor position after this frame's events, window pixels (origin top left).
     [[nodiscard]] glm::vec2 mousePosition() const noexcept { return mouse_; }
     /// Same in world units, converted at delivery.
@@ -188,13 +189,13 @@ public:
 
     /// True when `slot` has a joystick with a gamepad mapping.
     [[nodiscard]] bool isGamepadConnected(int slot) const noexcept;
-    /// Buttons 0..16 (names.hpp); false for a bad slot or button.
-    [[nodiscard]] bool isGamepadButtonDown(int slot, int button) const noexcept;
-    [[nodiscard]] bool wasGamepadButtonPressed(int slot, int button) const noexcept;
-    [[nodiscard]] bool wasGamepadButtonReleased(int slot, int button) const noexcept;
+    /// A button of the gamepad in `slot` (0..15), the triggers included; false for a bad slot.
+    [[nodiscard]] bool isGamepadButtonDown(int slot, GamepadButton button) const noexcept;
+    [[nodiscard]] bool wasGamepadButtonPressed(int slot, GamepadButton button) const noexcept;
+    [[nodiscard]] bool wasGamepadButtonReleased(int slot, GamepadButton button) const noexcept;
     /// Axis after dead zones (sticks [-1, 1], y down is positive as in GLFW; triggers [0, 1]);
-    /// 0 for a bad slot, axis or a disconnected pad.
-    [[nodiscard]] float gamepadAxis(int slot, int axis) const noexcept;
+    /// 0 for a bad slot or a disconnected pad.
+    [[nodiscard]] float gamepadAxis(int slot, GamepadAxis axis) const noexcept;
     /// Every joystick plugged in, mapped or not, by slot.
     [[nodiscard]] std::vector<JoystickInfo> joysticks() const;
 

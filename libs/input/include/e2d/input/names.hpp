@@ -1,17 +1,16 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <e2d/input/event.hpp>
+
 #include <optional>
 #include <string_view>
 
 namespace e2d::input {
 
-/// Key, mouse button, gamepad button and axis codes are GLFW's (`GLFW_KEY_SPACE`,
-/// `GLFW_MOUSE_BUTTON_LEFT`, `GLFW_GAMEPAD_BUTTON_A`, `GLFW_GAMEPAD_AXIS_LEFT_X`), so they can
-/// be written with GLFW's constants. Two gamepad buttons are added: the triggers, pressed when
-/// their axis passes `InputDef::triggerPressThreshold`.
-inline constexpr int kGamepadButtonLeftTrigger = 15;
-inline constexpr int kGamepadButtonRightTrigger = 16;
+/// The names of keys, mouse buttons, gamepad buttons and axes (event.hpp's enums, whose values
+/// are GLFW's codes) in config files, bindings and input scripts.
+
 /// Number of gamepad buttons Input tracks: GLFW's 15 plus the two triggers.
 inline constexpr int kGamepadButtonCount = 17;
 /// Number of gamepad axes (GLFW's: left x, left y, right x, right y, left trigger, right trigger).
@@ -23,23 +22,23 @@ inline constexpr int kKeyLast = 348;
 
 /// The config-file name of a key: lower case GLFW names without the prefix ("space", "a",
 /// "left_shift", "kp_enter", "f12"). Empty for a code that is not a key.
-[[nodiscard]] std::string_view keyName(int key) noexcept;
-/// The key code of a name (case-insensitive), or nullopt for an unknown name.
-[[nodiscard]] std::optional<int> keyFromName(std::string_view name) noexcept;
+[[nodiscard]] std::string_view keyName(Key key) noexcept;
+/// The key of a name (case-insensitive), or nullopt for an unknown name.
+[[nodiscard]] std::optional<Key> keyFromName(std::string_view name) noexcept;
 
 /// "left", "right", "middle", "button4" ... "button8"; empty if out of range.
-[[nodiscard]] std::string_view mouseButtonName(int button) noexcept;
+[[nodiscard]] std::string_view mouseButtonName(MouseButton button) noexcept;
 /// Case-insensitive; also accepts "button1" ... "button8".
-[[nodiscard]] std::optional<int> mouseButtonFromName(std::string_view name) noexcept;
+[[nodiscard]] std::optional<MouseButton> mouseButtonFromName(std::string_view name) noexcept;
 
 /// SDL names, as in mapping strings: "a", "b", "x", "y", "leftshoulder", "rightshoulder",
 /// "back", "start", "guide", "leftstick", "rightstick", "dpup", "dpright", "dpdown", "dpleft",
 /// plus "lefttrigger" and "righttrigger" for the two trigger buttons. Empty if out of range.
-[[nodiscard]] std::string_view gamepadButtonName(int button) noexcept;
-[[nodiscard]] std::optional<int> gamepadButtonFromName(std::string_view name) noexcept;
+[[nodiscard]] std::string_view gamepadButtonName(GamepadButton button) noexcept;
+[[nodiscard]] std::optional<GamepadButton> gamepadButtonFromName(std::string_view name) noexcept;
 
 /// "leftx", "lefty", "rightx", "righty", "lefttrigger", "righttrigger". Empty if out of range.
-[[nodiscard]] std::string_view gamepadAxisName(int axis) noexcept;
-[[nodiscard]] std::optional<int> gamepadAxisFromName(std::string_view name) noexcept;
+[[nodiscard]] std::string_view gamepadAxisName(GamepadAxis axis) noexcept;
+[[nodiscard]] std::optional<GamepadAxis> gamepadAxisFromName(std::string_view name) noexcept;
 
 } // namespace e2d::input
