@@ -9,7 +9,7 @@ set(E2D_APPS_CMAKE_DIR "${CMAKE_CURRENT_LIST_DIR}" CACHE INTERNAL "")
 # copied next to the binary on every build: a file keeps its name, a folder is copied with
 # its contents (`DATA config.txt assets` gives <bin>/config.txt and <bin>/assets/...).
 #
-# Under AddressSanitizer (the asan preset) each app also gets the engine tests'
+# Under AddressSanitizer (the asan preset) each app also gets the render tests'
 # keep_gl_driver_loaded.cpp: Mesa dlclose()s its driver (swrast_dri.so) when GLFW closes the
 # display, and LeakSanitizer then reports the driver's own one-time allocations (240 bytes, 3
 # blocks, from "<unknown module>") as leaks. Kept loaded, the driver's globals still point to
@@ -20,7 +20,7 @@ function(e2d_add_app name)
   set(target e2d_${name})
   add_executable(${target} ${ARG_SOURCES})
   if(CMAKE_CXX_FLAGS MATCHES "-fsanitize=[^ ]*address")
-    target_sources(${target} PRIVATE "${PROJECT_SOURCE_DIR}/libs/engine/tests/keep_gl_driver_loaded.cpp")
+    target_sources(${target} PRIVATE "${PROJECT_SOURCE_DIR}/libs/render/tests/keep_gl_driver_loaded.cpp")
   endif()
   target_link_libraries(${target} PRIVATE e2d::engine ${ARG_LIBRARIES} e2d_warnings)
   set(copies "")

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Linked into the render test binaries that open OpenGL contexts. Mesa loads its driver
+// Linked into every test binary that opens OpenGL contexts (render's and the engine's tests;
+// the apps and the render example under the asan preset). Mesa loads its driver
 // (swrast_dri.so, llvmpipe) with dlopen() and unloads it when GLFW closes the X display; the
 // driver's static allocations, still reachable through the driver's own globals, then look
 // leaked to LeakSanitizer, which fails every GL test under the asan preset (checked: with the
