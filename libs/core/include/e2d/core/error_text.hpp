@@ -59,6 +59,11 @@ template <class T>
     }
 }
 
+/// True when both components are finite (neither NaN nor infinite).
+[[nodiscard]] inline bool isFinite(glm::vec2 value) noexcept {
+    return std::isfinite(value.x) && std::isfinite(value.y);
+}
+
 /// Throws `"<function>: <field> must be finite, got <value>"` unless every component of
 /// `value` is finite. The check inlines; the throw is out of line.
 void requireFinite(std::string_view function, std::string_view field, float value);
@@ -76,7 +81,7 @@ inline void requireFinite(std::string_view function, std::string_view field, flo
 }
 
 inline void requireFinite(std::string_view function, std::string_view field, glm::vec2 value) {
-    if (!std::isfinite(value.x) || !std::isfinite(value.y)) [[unlikely]] {
+    if (!isFinite(value)) [[unlikely]] {
         detail::failNotFinite(function, field, value);
     }
 }
