@@ -44,7 +44,7 @@ inline std::string describe(const core::GameObject& object) {
     if (!object.tag().empty()) {
         return "object tagged '" + object.tag() + "'";
     }
-    return "object #" + std::to_string(object.id().index) + " (no name or tag)";
+    return "object #" + std::to_string(object.id().index()) + " (no name or tag)";
 }
 
 // "physics::Rigidbody on object 'crate': ..."
