@@ -175,7 +175,7 @@ struct Simulation {
     // constraints (the worker of its first moving body, bodies cut in runs of state order).
     // A level's parts share no moving body either, so this is the same sweep. Per part
     // (block-local level l, its worker l % roles) and other worker v: needForward[l * roles + v]
-    // is the last earlier part of v sharing a moving body with it (-1: none), needBackward the
+    // is the last earlier part of v sharing a body state with it (-1: none), needBackward the
     // first later one (-1: none), what it waits for in a forward or backward sweep. splitBlock
     // -1: no block is split.
     int splitRoles = 1;

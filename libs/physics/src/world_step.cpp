@@ -217,7 +217,7 @@ void World::Impl::splitLargestBlock(std::size_t count, int blockCount) {
     detail::Simulation& s = sim;
     s.splitBlock = -1;
     s.splitRoles = std::min(tasks.workerCount(), kMaxSplitRoles);
-    if (s.splitRoles < 2 || count < static_cast<std::size_t>(kSplitConstraints)) {
+    if (s.splitRoles < 2 || !tasks.canRunTogether() || count < static_cast<std::size_t>(kSplitConstraints)) {
         return;
     }
     std::vector<int>& inBlock = s.splitScratch;
@@ -270,9 +270,9 @@ void World::Impl::findSplitNeeds() {
     const int first = s.blockLevelStart[b];
     const int levels = s.blockLevelStart[b + 1] - first;
     const std::size_t n = s.sims.size();
-    auto moving = [&](int k) {
-        return k < 0 || s.stateRigid[static_cast<std::size_t>(k)] != 0 ? -1 : k;
-    };
+    // A rigid side (kinematic) is no moving body for the levels, but its state is still
+    // written back with the others: the parts wait for each other on it too, so two workers
+    // never touch one state at once.
     // Per body and worker, the last part (forward) or first part (backward) seen touching it.
     std::vector<int>& seen = s.splitScratch;
     auto sweep = [&](std::vector<int>& need, bool backward) {
@@ -284,7 +284,7 @@ void World::Impl::findSplitNeeds() {
             const auto at = static_cast<std::size_t>(first + l);
             for (int slot = s.levelStart[at]; slot < s.levelStart[at + 1]; ++slot) {
                 const detail::Simulation::ConstraintBodies& cb = s.slotBodies[static_cast<std::size_t>(slot)];
-                for (int body : {moving(cb.indexA), moving(cb.indexB)}) {
+                for (int body : {cb.indexA, cb.indexB}) {
                     if (body < 0) {
                         continue;
                     }
