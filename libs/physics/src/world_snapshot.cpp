@@ -1050,7 +1050,6 @@ void World::restoreSnapshot(std::span<const std::uint8_t> snapshot) {
     section("BODY");
     check.pool(fresh->bodyIds, fresh->bodies.size(), "body",
                [&](int i) { return check.liveBody(i); });
-    check.bodies();
     section("SHAP");
     check.pool(fresh->shapeIds, fresh->shapes.size(), "shape",
                [&](int i) { return check.liveShape(i); });
@@ -1058,6 +1057,8 @@ void World::restoreSnapshot(std::span<const std::uint8_t> snapshot) {
     check.trees();
     section("SHAP");
     check.shapes();
+    section("BODY");
+    check.bodies();
     section("JOIN");
     check.pool(fresh->jointIds, fresh->joints.size(), "joint",
                [&](int i) { return check.liveJoint(i); });
