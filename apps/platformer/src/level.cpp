@@ -222,7 +222,9 @@ void Level::fixedUpdate(const PlayerInput& input, float dt) {
 }
 
 LevelCheckpoint Level::save() const {
-    LevelCheckpoint c{physics_.saveSnapshot(), controller_};
+    LevelCheckpoint c;
+    c.physics = physics_.saveSnapshot();
+    c.controller = controller_;
     for (const Coin& coin : coins_) {
         c.collected.push_back(coin.collected);
     }
