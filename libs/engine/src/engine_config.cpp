@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/engine/engine_config.hpp>
 
+#include <e2d/core/error_text.hpp>
+
 #include <algorithm>
-#include <charconv>
 #include <system_error>
 
 namespace e2d::engine {
@@ -75,12 +76,6 @@ core::ConfigReader readerFor(EngineConfig& c) {
     return r;
 }
 
-std::string number(float value) {
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
-
 // A min above its max is blamed on whichever of the two was written last; both go back to
 // their defaults, which are consistent.
 void checkOrder(EngineConfig& c, core::ConfigReport& report, std::string_view file, std::string_view minKey,
@@ -90,10 +85,10 @@ void checkOrder(EngineConfig& c, core::ConfigReport& report, std::string_view fi
     }
     if (report.lineOf(maxKey) > report.lineOf(minKey)) {
         report.error(file, maxKey,
-                     "must be >= " + std::string(minKey) + " (" + number(c.*minField) + "), got " + number(c.*maxField));
+                     "must be >= " + std::string(minKey) + " (" + core::formatNumber(c.*minField) + "), got " + core::formatNumber(c.*maxField));
     } else {
         report.error(file, minKey,
-                     "must be <= " + std::string(maxKey) + " (" + number(c.*maxField) + "), got " + number(c.*minField));
+                     "must be <= " + std::string(maxKey) + " (" + core::formatNumber(c.*maxField) + "), got " + core::formatNumber(c.*minField));
     }
     const EngineConfig defaults;
     c.*minField = defaults.*minField;

@@ -91,6 +91,8 @@ struct Contact {
 
 struct Simulation {
     SolverDef def{};
+    // The widest SIMD the solver may use (WorldDef::simdLanes): 4 or 8.
+    int simdLanes = 8;
 
     std::vector<Contact> contacts;
     std::vector<int> freeContacts;
@@ -105,6 +107,8 @@ struct Simulation {
         float rollingResistance = 0.0f;
     };
     std::vector<TouchingContact> touchingContacts;
+    // Per contact slot, what the narrow phase's parallel pass found (World::Impl::updateContacts()).
+    std::vector<unsigned char> contactUpdates;
     // The soft step's relax iterations on top of SolverDef::relaxIterations in the last solve,
     // the most of any block (detail::kPushOutRelaxIterations while shapes were pushed apart).
     int extraRelaxIterations = 0;
@@ -125,7 +129,6 @@ struct Simulation {
     // Classic mode and rolling resistance only: the wide solver packs each constraint as it is
     // built and keeps it nowhere else.
     std::vector<ContactConstraint> constraints; // in contact order
-    std::vector<WideRestitution> wideRestitution; // the block being solved
     // A hit found while storing impulses by level: contact, point, approach speed.
     struct HitCandidate {
         int contact = -1;
@@ -133,6 +136,15 @@ struct Simulation {
         float speed = 0.0f;
     };
     std::vector<HitCandidate> hitCandidates;
+    // What each worker of the wide solve keeps apart from the others while it solves its blocks
+    // (World::Impl::solve()): the block's restitution list, the hits found, the most relax
+    // sweeps added. Merged in a fixed order afterwards.
+    struct BlockWorker {
+        std::vector<WideRestitution> restitution;
+        std::vector<HitCandidate> hits;
+        int extraRelaxIterations = 0;
+    };
+    std::vector<BlockWorker> blockWorkers;
     // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), the
     // slots in level order (level k holds slots [levelStart[k], levelStart[k + 1]), contact
     // order within a level) with each slot's constraint, contact and bodies, and the packed

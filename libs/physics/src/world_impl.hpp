@@ -8,6 +8,7 @@
 #include "joint_solver.hpp"
 #include "slot_array.hpp"
 #include "simulation.hpp"
+#include "task_pool.hpp"
 #include "world_hooks.hpp"
 
 #include <cstdint>
@@ -157,6 +158,8 @@ struct World::Impl {
     // --- dynamics (world_step.cpp, contact.cpp, island.cpp, world_dynamics.cpp) ---
 
     detail::Simulation sim;
+    // The step's parallel stages (WorldDef::workerCount, enqueueTask, finishTask).
+    detail::Tasks tasks;
     // Pre-solve and pair filter callbacks, move events (world_hooks.cpp).
     detail::Hooks hooks;
 
@@ -170,6 +173,8 @@ struct World::Impl {
     void wakeBody(int bodyIndex);
     // Pairs -> contacts; narrow phase; begin/end/sensor events.
     void updateContacts(float dt);
+    // One contact's narrow phase (contact.cpp): its new manifold and whether it touches.
+    [[nodiscard]] bool updateManifold(detail::Contact& c, float dt) const;
     void createContact(int shapeA, int shapeB);
     void destroyContact(int contactIndex, bool reportEnd);
     void solve(float dt);

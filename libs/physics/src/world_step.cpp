@@ -170,7 +170,7 @@ void World::Impl::scheduleWide(int constraintCount) {
     }
     // Eight lanes only pay when levels are wide enough to fill them: a small pile's levels
     // hold a few constraints each, and half-empty groups of eight cost more than full fours.
-    int lanes = detail::bestWideLanes();
+    int lanes = std::min(detail::bestWideLanes(), s.simdLanes);
     if (lanes > 4 && 2 * count < static_cast<std::size_t>(lanes * levelCount)) {
         lanes = 4;
     }
@@ -382,9 +382,9 @@ void World::Impl::solve(float dt) {
     // Impulses go back to the manifolds for next step's warm start; a hit event for the
     // fastest approaching point of each, emitted in contact order at the end.
     s.hitCandidates.clear();
-    auto store = [&](int contactIndex, int pointCount, const float* normalImpulse,
-                     const float* tangentImpulse, const float* relativeVelocity,
-                     const float* maxNormalImpulse) {
+    auto store = [&](std::vector<detail::Simulation::HitCandidate>& hits, int contactIndex,
+                     int pointCount, const float* normalImpulse, const float* tangentImpulse,
+                     const float* relativeVelocity, const float* maxNormalImpulse) {
         detail::Contact& c = s.contacts[static_cast<std::size_t>(contactIndex)];
         float fastest = def.hitEventThreshold;
         int fastestPoint = -1;
@@ -398,7 +398,7 @@ void World::Impl::solve(float dt) {
             }
         }
         if (fastestPoint >= 0) {
-            s.hitCandidates.push_back({contactIndex, fastestPoint, fastest});
+            hits.push_back({contactIndex, fastestPoint, fastest});
         }
     };
 
@@ -417,23 +417,15 @@ void World::Impl::solve(float dt) {
         // lie one island apart in the array, too far for the hardware prefetcher: fetch the
         // ones a few slots ahead.
         constexpr int kPrefetchAhead = 16;
-        auto storeLane = [&](int slot, const detail::WideLaneResult& r) {
-            if (slot + kPrefetchAhead < constraintCount) {
-                detail::prefetchObject(&s.contacts[static_cast<std::size_t>(
-                    s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
-            }
-            const int ci = s.slotContact[static_cast<std::size_t>(slot)];
-            store(ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount, r.normalImpulse,
-                  r.tangentImpulse, r.relativeVelocity, r.maxNormalImpulse);
-        };
         // A block's constraints are gathered lane by lane and prepared a whole group at a time
         // (prepareWideGroup()), right before the block is solved: no constraint array in
         // between, and the block's contacts, lanes and bodies stay in cache through build,
         // sub-steps and store.
-        auto buildBlock = [&](auto& in, int firstLevel, int endLevel) {
+        auto buildBlock = [&](auto& in, int firstLevel, int endLevel,
+                              std::vector<detail::WideRestitution>& restitution) {
             constexpr int N = static_cast<int>(sizeof(in.indexA) / sizeof(in.indexA[0]));
             bool blockPushOut = false;
-            s.wideRestitution.clear();
+            restitution.clear();
             for (int level = firstLevel; level < endLevel; ++level) {
                 const int levelFirst = s.levelStart[static_cast<std::size_t>(level)];
                 const int levelEnd = s.levelStart[static_cast<std::size_t>(level) + 1];
@@ -456,43 +448,86 @@ void World::Impl::solve(float dt) {
                         in.setLane(lane, c.manifold, a, b, c.friction, softnessOf(a, b));
                         blockPushOut = blockPushOut || pushedApart(c, a, b);
                         if (c.restitution != 0.0f) {
-                            s.wideRestitution.push_back({level, slot - levelFirst, c.manifold.pointCount,
-                                                         c.restitution, pressOf(c, a, b),
-                                                         s.slotConstraint[at]});
+                            restitution.push_back({level, slot - levelFirst, c.manifold.pointCount,
+                                                   c.restitution, pressOf(c, a, b),
+                                                   s.slotConstraint[at]});
                         }
                     }
                     detail::prepareWideGroup(s.wideContacts, group, in);
                 }
             }
             // applyRestitution() goes in constraint order.
-            std::sort(s.wideRestitution.begin(), s.wideRestitution.end(),
+            std::sort(restitution.begin(), restitution.end(),
                       [](const detail::WideRestitution& x, const detail::WideRestitution& y) {
                           return x.constraint < y.constraint;
                       });
             return blockPushOut;
         };
         const std::span<const int> blockBodies = s.blockBodies;
-        detail::WideManifoldT<4> lanes4;
-        detail::WideManifoldT<8> lanes8;
-        for (std::size_t b = 0; b + 1 < s.blockLevelStart.size(); ++b) {
+        // Blocks share no body (see scheduleWide()), so they are solved on several workers at
+        // once, each block whole on one, with what the others also write kept per worker.
+        auto solveBlock = [&](std::size_t b, detail::Simulation::BlockWorker& worker) {
             const int firstLevel = s.blockLevelStart[b];
             const int endLevel = s.blockLevelStart[b + 1];
             // Only the block holding shapes pushed apart sweeps more.
             detail::SolverStep blockStep = step;
-            pushOutSweeps(blockStep, s.wideContacts.lanes == 8 ? buildBlock(lanes8, firstLevel, endLevel)
-                                                               : buildBlock(lanes4, firstLevel, endLevel));
-            s.extraRelaxIterations = std::max(s.extraRelaxIterations, blockStep.extraRelaxIterations);
+            bool blockPushOut = false;
+            if (s.wideContacts.lanes == 8) {
+                detail::WideManifoldT<8> lanes8;
+                blockPushOut = buildBlock(lanes8, firstLevel, endLevel, worker.restitution);
+            } else {
+                detail::WideManifoldT<4> lanes4;
+                blockPushOut = buildBlock(lanes4, firstLevel, endLevel, worker.restitution);
+            }
+            pushOutSweeps(blockStep, blockPushOut);
+            worker.extraRelaxIterations = std::max(worker.extraRelaxIterations, blockStep.extraRelaxIterations);
             detail::solveSoftStepBlock(
                 blockStep, s.wideContacts, firstLevel, endLevel,
                 blockBodies.subspan(static_cast<std::size_t>(s.blockBodyStart[b]),
                                     static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b])),
-                s.wideRestitution,
+                worker.restitution,
                 s.activeJoints.empty()
                     ? std::span<const int>{}
                     : std::span<const int>(s.blockJoints)
                           .subspan(static_cast<std::size_t>(s.blockJointStart[b]),
                                    static_cast<std::size_t>(s.blockJointStart[b + 1] - s.blockJointStart[b])));
-            detail::visitWide(s.wideContacts, s.levelStart, firstLevel, endLevel, storeLane);
+            // Contacts are visited in slot order, twice a block: gathered before it is solved
+            // and their impulses stored right after, while its lanes are in cache. A level's
+            // contacts lie one island apart in the array, too far for the hardware prefetcher:
+            // fetch the ones a few slots ahead.
+            detail::visitWide(s.wideContacts, s.levelStart, firstLevel, endLevel,
+                              [&](int slot, const detail::WideLaneResult& r) {
+                if (slot + kPrefetchAhead < constraintCount) {
+                    detail::prefetchObject(&s.contacts[static_cast<std::size_t>(
+                        s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
+                }
+                const int ci = s.slotContact[static_cast<std::size_t>(slot)];
+                store(worker.hits, ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount,
+                      r.normalImpulse, r.tangentImpulse, r.relativeVelocity, r.maxNormalImpulse);
+            });
+        };
+        const int blockCount = static_cast<int>(s.blockLevelStart.size()) - 1;
+        // The direct joint solve keeps its arrays in one place (JointStep::direct): its blocks
+        // go one after another.
+        const bool oneWorker = jointStep.direct != nullptr && !s.activeJoints.empty();
+        s.blockWorkers.resize(static_cast<std::size_t>(tasks.workerCount()));
+        for (detail::Simulation::BlockWorker& w : s.blockWorkers) {
+            w.hits.clear();
+            w.extraRelaxIterations = 0;
+        }
+        auto solveBlocks = [&](int begin, int end, int worker) {
+            for (int b = begin; b < end; ++b) {
+                solveBlock(static_cast<std::size_t>(b), s.blockWorkers[static_cast<std::size_t>(worker)]);
+            }
+        };
+        if (oneWorker) {
+            solveBlocks(0, blockCount, 0);
+        } else {
+            tasks.parallelFor(blockCount, 1, solveBlocks);
+        }
+        for (detail::Simulation::BlockWorker& w : s.blockWorkers) {
+            s.hitCandidates.insert(s.hitCandidates.end(), w.hits.begin(), w.hits.end());
+            s.extraRelaxIterations = std::max(s.extraRelaxIterations, w.extraRelaxIterations);
         }
     } else if (def.mode == SolverMode::SoftStep) {
         detail::solveSoftStep(step);
@@ -577,8 +612,8 @@ void World::Impl::solve(float dt) {
                 relativeVelocity[j] = cc.points[j].relativeVelocity;
                 maxNormalImpulse[j] = cc.points[j].maxNormalImpulse;
             }
-            store(cc.contactIndex, cc.pointCount, normalImpulse, tangentImpulse, relativeVelocity,
-                  maxNormalImpulse);
+            store(s.hitCandidates, cc.contactIndex, cc.pointCount, normalImpulse, tangentImpulse,
+                  relativeVelocity, maxNormalImpulse);
         }
     } else {
         std::sort(s.hitCandidates.begin(), s.hitCandidates.end(),

@@ -11,6 +11,7 @@
 #include <e2d/physics/math.hpp>
 #include <e2d/physics/query.hpp>
 #include <e2d/physics/solver_def.hpp>
+#include <e2d/physics/task.hpp>
 #include <e2d/physics/types.hpp>
 
 #include <cstdint>
@@ -53,6 +54,24 @@ struct WorldDef {
     /// Solver mode, sub-steps, contact softness, restitution threshold, speed cap, sleeping,
     /// continuous collision and material mixing. Defaults: see SolverDef.
     SolverDef solver{};
+
+    // --- threads (World::step; see task.hpp) ---
+
+    /// Workers the step splits its parallel work over, in [1, kMaxWorkers]. The results are the
+    /// same, bit for bit, for every count: it changes the speed only. With more than one and no
+    /// enqueueTask, the world starts workerCount - 1 threads of its own (the thread calling
+    /// step() is the first worker) and stops them when it is destroyed. Default 1 (no threads).
+    int workerCount = 1;
+    /// The game's job system, instead of the world's own threads: both set or both null.
+    /// enqueueTask must give each piece a worker index in [0, workerCount). Default null.
+    EnqueueTaskFunction enqueueTask = nullptr;
+    FinishTaskFunction finishTask = nullptr;
+    /// Passed to enqueueTask and finishTask as their userContext. Default null.
+    void* userTaskContext = nullptr;
+    /// The widest SIMD the solver uses: 8 lanes (AVX2, on x86-64 CPUs that have it) or 4 (SSE2,
+    /// NEON, or plain code). The results are the same either way; 4 measures the narrower path
+    /// on a CPU with AVX2. Default 8.
+    int simdLanes = 8;
 };
 
 /// How a body is created. World::createBody() validates every field.

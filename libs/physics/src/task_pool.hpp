@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/physics/task.hpp>
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+// The step's parallel-for (detail::Tasks) and the world's own threads behind it (TaskPool)
+// when the game gives no job system (WorldDef::enqueueTask).
+namespace e2d::physics::detail {
+
+// workerCount - 1 threads and the caller run one task at a time: the caller publishes it, every
+// worker (the caller as worker 0) claims pieces through one atomic counter until none is left,
+// and the caller returns once every piece has run. Idle threads spin a little (the step's
+// stages follow one another within microseconds), then sleep on a condition variable.
+class TaskPool {
+public:
+    explicit TaskPool(int workerCount);
+    ~TaskPool();
+    TaskPool(const TaskPool&) = delete;
+    TaskPool& operator=(const TaskPool&) = delete;
+
+    // Runs task over [0, itemCount) in pieces of pieceSize items; returns when all are done.
+    void run(TaskFunction task, int itemCount, int pieceSize, void* context);
+
+private:
+    void threadMain(int worker);
+    // Claims and runs pieces of task `generation` until none is left.
+    void runPieces(std::uint32_t generation, int worker);
+
+    std::vector<std::thread> threads_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    int sleeping_ = 0; // threads waiting on wake_ (mutex_)
+    bool stop_ = false; // (mutex_)
+    // The task's generation, piece count and next unclaimed piece in one word (see pack()): a
+    // piece is claimed by one compare-and-swap that also checks which task it belongs to, so a
+    // thread that wakes late never runs a piece twice or reads a newer task's fields for an
+    // older one. The fields below are written before a task is published and read only by a
+    // thread holding one of its pieces.
+    std::atomic<std::uint64_t> claim_{0};
+    std::atomic<int> done_{0}; // pieces of the current task that have run
+    std::uint32_t generation_ = 0;
+    TaskFunction task_ = nullptr;
+    void* context_ = nullptr;
+    int itemCount_ = 0;
+    int pieceSize_ = 1;
+};
+
+// How World::step() runs its parallel stages (WorldDef::workerCount, enqueueTask, finishTask).
+class Tasks {
+public:
+    Tasks() = default;
+    Tasks(const Tasks&) = delete;
+    Tasks& operator=(const Tasks&) = delete;
+
+    // Starts the world's own threads when workerCount > 1 and enqueue is null.
+    void configure(int workerCount, EnqueueTaskFunction enqueue, FinishTaskFunction finish,
+                   void* userContext);
+    [[nodiscard]] int workerCount() const { return workerCount_; }
+
+    // Calls body(begin, end, worker) over [0, itemCount) in pieces of at least minRange items
+    // (worker in [0, workerCount())); returns when every piece has run. One worker, or too few
+    // items to split: one piece, here.
+    template <class Body>
+    void parallelFor(int itemCount, int minRange, Body&& body) {
+        if (itemCount <= 0) {
+            return;
+        }
+        if (workerCount_ == 1 || itemCount <= minRange) {
+            body(0, itemCount, 0);
+            return;
+        }
+        auto trampoline = [](int begin, int end, int worker, void* context) {
+            (*static_cast<std::remove_reference_t<Body>*>(context))(begin, end, worker);
+        };
+        run(trampoline, itemCount, minRange, &body);
+    }
+
+private:
+    void run(TaskFunction task, int itemCount, int minRange, void* context);
+
+    int workerCount_ = 1;
+    EnqueueTaskFunction enqueue_ = nullptr;
+    FinishTaskFunction finish_ = nullptr;
+    void* userContext_ = nullptr;
+    std::unique_ptr<TaskPool> pool_;
+};
+
+} // namespace e2d::physics::detail
