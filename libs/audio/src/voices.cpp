@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The Mixer's voice pool: starting, stealing, fades, gains, streams, and the per-frame update.
-#include "error_format.hpp"
 #include "mixer_impl.hpp"
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 
 namespace e2d::audio {
 
-using detail::throwInvalid;
+using core::throwInvalid;
 using detail::Voice;
 
 namespace {
@@ -28,7 +28,7 @@ void checkPlayDef(const PlayDef& def, const char* fn) {
         throwInvalid(fn, "pitch", "in 0.01..16", def.pitch);
     }
     if (!std::isfinite(def.position.x) || !std::isfinite(def.position.y)) {
-        throwInvalid(fn, "position", "finite", def.position.x + def.position.y);
+        throwInvalid(fn, "position", "finite", def.position);
     }
     if (!std::isfinite(def.attenuationFactor) || def.attenuationFactor < 0.0f) {
         throwInvalid(fn, "attenuationFactor", ">= 0", def.attenuationFactor);

@@ -2,10 +2,11 @@
 #include <e2d/core/game_object.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/log.hpp>
 #include <e2d/core/scene.hpp>
 
-#include "format.hpp"
+#include "type_name.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -27,10 +28,10 @@ Logger* GameObject::logger() const noexcept {
 
 std::string GameObject::describe() const {
     if (!name_.empty()) {
-        return "object " + detail::quoted(name_);
+        return "object " + quote(name_);
     }
     if (!tag_.empty()) {
-        return "object tagged " + detail::quoted(tag_);
+        return "object tagged " + quote(tag_);
     }
     return "object " + std::to_string(id_.index());
 }
@@ -39,17 +40,6 @@ namespace {
 
 bool finite(glm::vec2 v) noexcept {
     return std::isfinite(v.x) && std::isfinite(v.y);
-}
-
-// Appended piece by piece: GCC 12 at -O3 misreads `"(" + std::string` as an overlapping
-// memcpy (-Werror=restrict, a known false positive).
-template <int N>
-std::string formatVector(glm::vec<N, float> v) {
-    std::string out = "(";
-    for (int i = 0; i < N; ++i) {
-        out.append(i == 0 ? "" : ", ").append(detail::formatNumber(v[i]));
-    }
-    return out.append(")");
 }
 
 } // namespace
@@ -102,7 +92,7 @@ void GameObject::setScale(glm::vec2 scale) {
 
 void GameObject::setOrientation(float radians) {
     if (!std::isfinite(radians)) {
-        refuseNonFinite("setOrientation", "orientation", detail::formatNumber(radians));
+        refuseNonFinite("setOrientation", "orientation", formatNumber(radians));
     }
     notePoseChange();
     orientation_ = radians;
@@ -116,7 +106,7 @@ void GameObject::setOrientation(float radians) {
 
 void GameObject::rotate(float radians) {
     if (!std::isfinite(orientation_ + radians)) {
-        refuseNonFinite("rotate", "angle", detail::formatNumber(radians));
+        refuseNonFinite("rotate", "angle", formatNumber(radians));
     }
     setOrientation(orientation_ + radians);
 }

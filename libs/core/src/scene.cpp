@@ -4,7 +4,7 @@
 #include <e2d/core/error.hpp>
 #include <e2d/core/scene_host.hpp>
 
-#include "format.hpp"
+#include "type_name.hpp"
 
 #include <algorithm>
 #include <cstdint>

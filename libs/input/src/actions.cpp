@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Named actions: bindings, per-frame evaluation, rebinding by listening.
 #include "action_name.hpp"
-#include "quoted.hpp"
 
 #include <e2d/input/actions.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/input/input.hpp>
 
 #include <GLFW/glfw3.h>
@@ -19,14 +19,6 @@
 namespace e2d::input {
 
 namespace {
-
-std::string str(float v) {
-    std::string s = std::to_string(v);
-    while (s.size() > 1 && s.back() == '0' && s[s.size() - 2] != '.') {
-        s.pop_back();
-    }
-    return s;
-}
 
 // Problem with a binding's codes, or empty.
 std::string checkBinding(const Binding& b) {
@@ -54,18 +46,18 @@ std::string checkBinding(const Binding& b) {
 
 ActionMap::ActionMap(ActionMapDef def) : def_(def) {
     if (!(def_.pressThreshold > 0.0f && def_.pressThreshold <= 1.0f)) {
-        throw core::Error("input::ActionMap::ActionMap(): pressThreshold must be in (0, 1], got " + str(def_.pressThreshold));
+        throw core::Error("input::ActionMap::ActionMap(): pressThreshold must be in (0, 1], got " + core::formatNumber(def_.pressThreshold));
     }
     if (!(def_.listenAxisThreshold > 0.0f && def_.listenAxisThreshold <= 1.0f)) {
         throw core::Error("input::ActionMap::ActionMap(): listenAxisThreshold must be in (0, 1], got " +
-                          str(def_.listenAxisThreshold));
+                          core::formatNumber(def_.listenAxisThreshold));
     }
 }
 
 ActionId ActionMap::add(std::string_view name) {
     if (!detail::isActionName(name)) {
         throw core::Error("input::ActionMap::add(): " + std::string(detail::kActionNameRule) + ", got " +
-                          detail::quoted(name));
+                          core::quote(name));
     }
     if (!find(name).isNull()) {
         throw core::Error("input::ActionMap::add(): action '" + std::string(name) + "' already exists");
@@ -104,7 +96,7 @@ ActionMap::Action& ActionMap::at(ActionId id, const char* function) {
 ActionId ActionMap::require(std::string_view name, const char* function) const {
     const ActionId id = find(name);
     if (id.isNull()) {
-        throw core::Error(std::string("input::ActionMap::") + function + "(): no action named " + detail::quoted(name));
+        throw core::Error(std::string("input::ActionMap::") + function + "(): no action named " + core::quote(name));
     }
     return id;
 }

@@ -41,6 +41,18 @@ void validateWorldDef(const WorldDef& def) {
         check::fail(fn,
                     "def.shapeCapacity must be >= 0, got " + std::to_string(def.shapeCapacity));
     }
+    if (def.workerCount < 1 || def.workerCount > kMaxWorkers) {
+        check::fail(fn, "def.workerCount must be in [1, " + std::to_string(kMaxWorkers) + "], got " +
+                            std::to_string(def.workerCount));
+    }
+    if ((def.enqueueTask == nullptr) != (def.finishTask == nullptr)) {
+        check::fail(fn, std::string("def.enqueueTask and def.finishTask must both be set or both be "
+                                    "null, got only ") +
+                            (def.enqueueTask != nullptr ? "enqueueTask" : "finishTask"));
+    }
+    if (def.simdLanes != 4 && def.simdLanes != 8) {
+        check::fail(fn, "def.simdLanes must be 4 or 8, got " + std::to_string(def.simdLanes));
+    }
 }
 
 void validateBodyDef(const BodyDef& def) {
@@ -232,6 +244,8 @@ World::World(const WorldDef& def) {
     impl_->collisionAlgorithm = def.collisionAlgorithm;
     impl_->speculativeDistance = def.speculativeDistance;
     impl_->tag = def.tag != 0 ? def.tag : tagFromAddress(impl_.get());
+    impl_->tasks.configure(def.workerCount, def.enqueueTask, def.finishTask, def.userTaskContext);
+    impl_->sim.simdLanes = def.simdLanes;
     impl_->bodies.reserve(static_cast<std::size_t>(def.bodyCapacity));
     impl_->bodyIds.reserve(def.bodyCapacity);
     impl_->shapes.reserve(static_cast<std::size_t>(def.shapeCapacity));

@@ -8,6 +8,7 @@
 #include "joint_solver.hpp"
 #include "slot_array.hpp"
 #include "simulation.hpp"
+#include "task_pool.hpp"
 #include "world_hooks.hpp"
 
 #include <cstdint>
@@ -149,6 +150,8 @@ struct World::Impl {
     // --- dynamics (world_step.cpp, contact.cpp, island.cpp, world_dynamics.cpp) ---
 
     detail::Simulation sim;
+    // The step's parallel stages (WorldDef::workerCount, enqueueTask, finishTask).
+    detail::Tasks tasks;
     // Pre-solve and pair filter callbacks, move events (world_hooks.cpp).
     detail::Hooks hooks;
 
@@ -162,10 +165,15 @@ struct World::Impl {
     void wakeBody(int bodyIndex);
     // Pairs -> contacts; narrow phase; begin/end/sensor events.
     void updateContacts(float dt);
+    // One contact's narrow phase (contact.cpp): its new manifold and whether it touches.
+    [[nodiscard]] bool updateManifold(detail::Contact& c, float dt) const;
     void createContact(int shapeA, int shapeB);
     void destroyContact(int contactIndex, bool reportEnd);
     void solve(float dt);
     void scheduleWide(int constraintCount);
+    // scheduleWide()'s parts that let several workers solve one block (Simulation::splitBlock).
+    void splitLargestBlock(std::size_t count, int blockCount);
+    void findSplitNeeds();
     // Time of impact for this step's fast bodies and bullets (continuous.cpp): solveContinuous()
     // picks them from the solver arrays, sweepBody() sweeps one (index in sims).
     void solveContinuous();

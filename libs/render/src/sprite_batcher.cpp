@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "sprite_batcher.hpp"
 
-#include "error_format.hpp"
+#include <e2d/core/error_text.hpp>
+
 #include "half.hpp"
 
 #include <algorithm>
@@ -17,21 +18,21 @@ namespace {
 constexpr const char* kCreate = "render::Renderer::createSprite()";
 
 void validate(const char* function, const SpriteDef& def) {
-    requireFinite(function, "position", def.position);
-    requireFinite(function, "z", def.z);
-    requireFinite(function, "scale", def.scale);
-    requireFinite(function, "rotation", def.rotation);
-    requireFinite(function, "pivot", def.pivot);
-    if (!isFinite(def.size) || def.size.x < 0.0f || def.size.y < 0.0f) {
-        fail(function, "size must be >= 0 and finite, got " + formatVec(def.size));
+    core::requireFinite(function, "position", def.position);
+    core::requireFinite(function, "z", def.z);
+    core::requireFinite(function, "scale", def.scale);
+    core::requireFinite(function, "rotation", def.rotation);
+    core::requireFinite(function, "pivot", def.pivot);
+    if (!core::isFinite(def.size) || def.size.x < 0.0f || def.size.y < 0.0f) {
+        core::throwError(function, "size must be >= 0 and finite, got " + core::formatVector(def.size));
     }
-    if (!isFinite(def.uv.min) || !isFinite(def.uv.size) || def.uv.size.x < 0.0f || def.uv.size.y < 0.0f ||
+    if (!core::isFinite(def.uv.min) || !core::isFinite(def.uv.size) || def.uv.size.x < 0.0f || def.uv.size.y < 0.0f ||
         def.uv.min.x < 0.0f || def.uv.min.y < 0.0f || def.uv.max().x > 1.0f || def.uv.max().y > 1.0f) {
-        fail(function, "uv must lie in [0, 1] with size >= 0, got min " + formatVec(def.uv.min) + " size " +
-                           formatVec(def.uv.size));
+        core::throwError(function, "uv must lie in [0, 1] with size >= 0, got min " + core::formatVector(def.uv.min) + " size " +
+                           core::formatVector(def.uv.size));
     }
     if (!std::isfinite(def.parallax) || def.parallax < 0.0f) {
-        fail(function, "parallax must be >= 0 and finite, got " + formatFloat(def.parallax));
+        core::throwError(function, "parallax must be >= 0 and finite, got " + core::formatNumber(def.parallax));
     }
 }
 
@@ -132,7 +133,7 @@ const SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function
 
 // Every setter's id check inlines (index()); the message is built out of line.
 void SpriteBatcher::failBadId(SpriteId id, const char* function) {
-    fail(function, id.isNull() ? std::string("null sprite id")
+    core::throwError(function, id.isNull() ? std::string("null sprite id")
                                : "stale sprite id (index " + std::to_string(id.index()) + ", generation " +
                                      std::to_string(id.generation) + ")");
 }
@@ -149,7 +150,7 @@ std::uint32_t SpriteBatcher::drawnTexture(TextureId id) const noexcept {
 
 void SpriteBatcher::requireTexture(const char* function, TextureId id) const {
     if (!id.isNull() && !textureSlot(id)) {
-        fail(function, "stale texture id (index " + std::to_string(id.index()) + ")");
+        core::throwError(function, "stale texture id (index " + std::to_string(id.index()) + ")");
     }
 }
 
@@ -245,7 +246,7 @@ void SpriteBatcher::set(SpriteId id, const SpriteDef& def, const char* function)
 void SpriteBatcher::setPosition(SpriteId id, glm::vec2 position) {
     constexpr const char* fn = "render::Renderer::setPosition()";
     const std::uint32_t i = index(id, fn);
-    requireFinite(fn, "position", position);
+    core::requireFinite(fn, "position", position);
     if (pos_[i] != position) {
         moveTo(i, position);
     }
@@ -269,7 +270,7 @@ void SpriteBatcher::moveTo(std::uint32_t i, glm::vec2 position) {
 void SpriteBatcher::setZ(SpriteId id, float z) {
     constexpr const char* fn = "render::Renderer::setZ()";
     Slot& s = slot(id, fn);
-    requireFinite(fn, "z", z);
+    core::requireFinite(fn, "z", z);
     if (s.def.z != z) {
         s.def.z = z;
         markDirty(id.index(), kMoved);
@@ -280,8 +281,8 @@ void SpriteBatcher::setZ(SpriteId id, float z) {
 void SpriteBatcher::setSize(SpriteId id, glm::vec2 size) {
     constexpr const char* fn = "render::Renderer::setSize()";
     Slot& s = slot(id, fn);
-    if (!isFinite(size) || size.x < 0.0f || size.y < 0.0f) {
-        fail(fn, "size must be >= 0 and finite, got " + formatVec(size));
+    if (!core::isFinite(size) || size.x < 0.0f || size.y < 0.0f) {
+        core::throwError(fn, "size must be >= 0 and finite, got " + core::formatVector(size));
     }
     if (s.def.size != size) {
         s.def.size = size;
@@ -292,7 +293,7 @@ void SpriteBatcher::setSize(SpriteId id, glm::vec2 size) {
 void SpriteBatcher::setScale(SpriteId id, glm::vec2 scale) {
     constexpr const char* fn = "render::Renderer::setScale()";
     Slot& s = slot(id, fn);
-    requireFinite(fn, "scale", scale);
+    core::requireFinite(fn, "scale", scale);
     if (s.def.scale != scale) {
         s.def.scale = scale;
         markDirty(id.index(), kShape);
@@ -302,7 +303,7 @@ void SpriteBatcher::setScale(SpriteId id, glm::vec2 scale) {
 void SpriteBatcher::setRotation(SpriteId id, float radians) {
     constexpr const char* fn = "render::Renderer::setRotation()";
     Slot& s = slot(id, fn);
-    requireFinite(fn, "rotation", radians);
+    core::requireFinite(fn, "rotation", radians);
     if (s.def.rotation != radians) {
         s.def.rotation = radians;
         markDirty(id.index(), kShape);
@@ -312,7 +313,7 @@ void SpriteBatcher::setRotation(SpriteId id, float radians) {
 void SpriteBatcher::setPivot(SpriteId id, glm::vec2 pivot) {
     constexpr const char* fn = "render::Renderer::setPivot()";
     Slot& s = slot(id, fn);
-    requireFinite(fn, "pivot", pivot);
+    core::requireFinite(fn, "pivot", pivot);
     if (s.def.pivot != pivot) {
         s.def.pivot = pivot;
         markDirty(id.index(), kShape);
@@ -358,7 +359,7 @@ void SpriteBatcher::setParallax(SpriteId id, float parallax) {
     constexpr const char* fn = "render::Renderer::setParallax()";
     Slot& s = slot(id, fn);
     if (!std::isfinite(parallax) || parallax < 0.0f) {
-        fail(fn, "parallax must be >= 0 and finite, got " + formatFloat(parallax));
+        core::throwError(fn, "parallax must be >= 0 and finite, got " + core::formatNumber(parallax));
     }
     if (s.def.parallax != parallax) {
         s.def.parallax = parallax;
@@ -399,10 +400,10 @@ void SpriteBatcher::setTexture(SpriteId id, TextureId texture) {
 void SpriteBatcher::setTransform(SpriteId id, glm::vec2 position, float z, float rotation, glm::vec2 scale) {
     constexpr const char* fn = "render::Renderer::setTransform()";
     Slot& s = slot(id, fn);
-    requireFinite(fn, "position", position);
-    requireFinite(fn, "z", z);
-    requireFinite(fn, "rotation", rotation);
-    requireFinite(fn, "scale", scale);
+    core::requireFinite(fn, "position", position);
+    core::requireFinite(fn, "z", z);
+    core::requireFinite(fn, "rotation", rotation);
+    core::requireFinite(fn, "scale", scale);
     const std::uint32_t i = id.index();
     if (s.def.z == z && s.def.rotation == rotation && s.def.scale == scale) {
         if (pos_[i] != position) {
@@ -426,12 +427,12 @@ void SpriteBatcher::setTransform(SpriteId id, glm::vec2 position, float z, float
 
 void SpriteBatcher::submit(const Quad& quad) {
     constexpr const char* fn = "render::Renderer::submit()";
-    requireFinite(fn, "position", quad.position);
-    requireFinite(fn, "z", quad.z);
-    requireFinite(fn, "rotation", quad.rotation);
-    requireFinite(fn, "pivot", quad.pivot);
-    if (!isFinite(quad.size) || quad.size.x < 0.0f || quad.size.y < 0.0f) {
-        fail(fn, "size must be >= 0 and finite, got " + formatVec(quad.size));
+    core::requireFinite(fn, "position", quad.position);
+    core::requireFinite(fn, "z", quad.z);
+    core::requireFinite(fn, "rotation", quad.rotation);
+    core::requireFinite(fn, "pivot", quad.pivot);
+    if (!core::isFinite(quad.size) || quad.size.x < 0.0f || quad.size.y < 0.0f) {
+        core::throwError(fn, "size must be >= 0 and finite, got " + core::formatVector(quad.size));
     }
     requireTexture(fn, quad.texture);
     Transient t{};

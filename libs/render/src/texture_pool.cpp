@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "texture_pool.hpp"
 
-#include "error_format.hpp"
-
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 
 #include <algorithm>
 
@@ -143,12 +142,12 @@ TextureId TexturePool::load(const std::filesystem::path& path, const TextureDef&
 TextureId TexturePool::create(const Image& image, const TextureDef& def, const char* function) {
     if (image.width < 1 || image.height < 1 ||
         image.pixels.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4) {
-        fail(function, "image must be at least 1 x 1 with width * height * 4 bytes, got " +
+        core::throwError(function, "image must be at least 1 x 1 with width * height * 4 bytes, got " +
                            std::to_string(image.width) + " x " + std::to_string(image.height) + " with " +
                            std::to_string(image.pixels.size()) + " bytes");
     }
     if (const std::string why = tooLarge(image); !why.empty()) {
-        fail(function, why);
+        core::throwError(function, why);
     }
     return idOf(add(image, def, TextureInfo{}));
 }
@@ -170,7 +169,7 @@ bool TexturePool::isValid(TextureId id) const noexcept {
 
 const TextureInfo& TexturePool::info(TextureId id, const char* function) const {
     if (!isValid(id)) {
-        fail(function, id.isNull() ? "null texture id" : "stale texture id (index " + std::to_string(id.index()) + ")");
+        core::throwError(function, id.isNull() ? "null texture id" : "stale texture id (index " + std::to_string(id.index()) + ")");
     }
     return slots_[id.index()].info;
 }
@@ -179,16 +178,16 @@ bool TexturePool::update(TextureId id, glm::ivec2 offset, glm::ivec2 size, std::
     constexpr const char* fn = "render::Renderer::updateTexture()";
     const TextureInfo& current = info(id, fn);
     if (id.index() < 2) {
-        fail(fn, "the built-in textures cannot be changed");
+        core::throwError(fn, "the built-in textures cannot be changed");
     }
     if (size.x < 0 || size.y < 0 || offset.x < 0 || offset.y < 0 || offset.x + size.x > current.size.x ||
         offset.y + size.y > current.size.y) {
-        fail(fn, "rectangle at " + formatVec(offset) + " of size " + formatVec(size) + " is outside the " +
+        core::throwError(fn, "rectangle at " + core::formatVector(offset) + " of size " + core::formatVector(size) + " is outside the " +
                      std::to_string(current.size.x) + " x " + std::to_string(current.size.y) + " texture");
     }
     std::size_t needed = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y) * 4;
     if (rgba.size() < needed) {
-        fail(fn, "expected " + std::to_string(needed) + " bytes of pixels, got " + std::to_string(rgba.size()));
+        core::throwError(fn, "expected " + std::to_string(needed) + " bytes of pixels, got " + std::to_string(rgba.size()));
     }
     if (size.x == 0 || size.y == 0) {
         return false;
