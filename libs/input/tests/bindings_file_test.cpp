@@ -131,7 +131,7 @@ TEST(BindingsFile, RawBytesInMessagesAreEscaped) {
 TEST(BindingsFile, UnreadableAndUnwritableFilesAreNamed) {
     ActionMap actions;
     EXPECT_EQ(errorOf([&] { actions.load("/nonexistent/e2d/controls.txt"); }),
-              "input::ActionMap::load(): cannot read '/nonexistent/e2d/controls.txt'");
+              "input::ActionMap::load(): cannot read '/nonexistent/e2d/controls.txt': no such file");
     // A directory opens as a stream that reads nothing: it loaded zero actions with no error.
     const std::string dir = ::testing::TempDir();
     EXPECT_EQ(errorOf([&] { actions.load(dir); }), "input::ActionMap::load(): cannot read '" + dir + "': it is a directory");

@@ -67,7 +67,7 @@ TEST(InputScript, MissingFileIsNamed) {
         static_cast<void>(input::loadInputScript("/no/such/script.txt"));
         FAIL();
     } catch (const core::Error& e) {
-        EXPECT_STREQ(e.what(), "/no/such/script.txt: cannot read the input script");
+        EXPECT_STREQ(e.what(), "/no/such/script.txt: cannot read the input script (no such file)");
     }
 }
 
