@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <e2d/core/diagnostics.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/input/actions.hpp>
 #include <e2d/input/names.hpp>
@@ -126,6 +127,18 @@ TEST(BindingsFile, RawBytesInMessagesAreEscaped) {
               "controls.txt:1: action name must be letters, digits, '_', '-' or '.', got 'saut\xc3\xa9'");
     EXPECT_EQ(errorOf([&] { static_cast<void>(actions.held("\x1b[2J")); }),
               "input::ActionMap::held(): no action named '\\x1b[2J'");
+}
+
+TEST(BindingsFile, AnErrorKeepsItsDiagnostic) {
+    ActionMap actions;
+    try {
+        actions.loadFromString("jump = key:space\n\nfire key:f\n", "controls.txt");
+        FAIL() << "no error";
+    } catch (const core::ParseError& e) {
+        EXPECT_EQ(e.diagnostic().file, "controls.txt");
+        EXPECT_EQ(e.diagnostic().line, 3);
+        EXPECT_EQ(std::string(e.what()), "controls.txt:3: expected '<action> = <binding>, ...'");
+    }
 }
 
 TEST(BindingsFile, UnreadableAndUnwritableFilesAreNamed) {
