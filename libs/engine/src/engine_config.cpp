@@ -54,6 +54,7 @@ core::ConfigReader readerFor(EngineConfig& c) {
     r.add("allowedPenetration", c.allowedPenetration, kNonNegative);
     r.add("penetrationBiasFactor", c.penetrationBiasFactor, ConfigBounds{0.0, 1.0});
     r.add("minRigidbodySpeed", c.minRigidbodySpeed, kNonNegative);
+    r.add("physicsWorkers", c.physicsWorkers, ConfigBounds{1.0, static_cast<double>(physics::kMaxWorkers)});
     r.add("unitsPerMetre", c.unitsPerMetre, kPositive);
     // SOUND
     r.add("minAttenuationDistance", c.minAttenuationDistance, kNonNegative);
@@ -108,6 +109,7 @@ physics::WorldDef makeWorldDef(const EngineConfig& config) {
     def.solver.subSteps = std::min(config.collisionResolutionSteps, 64);
     def.solver.velocityIterations = std::min(config.collisionResolutionSteps, 256);
     def.solver.linearSleepTolerance = config.minRigidbodySpeed;
+    def.workerCount = config.physicsWorkers;
     // Both keys are already checked by the reader (>= 0, and [0, 1]); only the physics' upper
     // bound on the overlap is left, a cap like the sub-steps' above rather than an error.
     def.solver.classicAllowedPenetration =

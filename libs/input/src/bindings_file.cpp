@@ -87,7 +87,7 @@ void ActionMap::loadFromString(std::string_view text, std::string_view source) {
         parsed.emplace_back(std::string(name), std::move(bindings));
     }
     for (auto& [name, bindings] : parsed) {
-        actions_[findOrAdd(name).value - 1].bindings = std::move(bindings);
+        actions_[findOrAdd(name).index()].bindings = std::move(bindings);
     }
 }
 

@@ -104,6 +104,7 @@ void CharacterController::onInitialize() {
     };
     mover_.emplace(std::move(md));
     writtenPosition_ = pose.position;
+    system.registerCharacter(*this);
     if (def_.hasBody) {
         BodyDef bd;
         bd.type = BodyType::Kinematic;
@@ -123,6 +124,9 @@ void CharacterController::onInitialize() {
 }
 
 void CharacterController::onTerminate() {
+    if (mover_) {
+        sys().unregisterCharacter(*this);
+    }
     if (!body_.isNull() && sys().world().isValid(body_)) {
         sys().world().destroyBody(body_);
     }

@@ -137,6 +137,14 @@ void PhysicsSystem::unregisterStaticCollider(Collider& collider) noexcept {
     std::erase(staticColliders_, &collider);
 }
 
+void PhysicsSystem::registerCharacter(CharacterController& character) {
+    characters_.push_back(&character);
+}
+
+void PhysicsSystem::unregisterCharacter(CharacterController& character) noexcept {
+    std::erase(characters_, &character);
+}
+
 std::vector<Collider*> PhysicsSystem::collidersOn(const Rigidbody* body) const {
     std::vector<Collider*> riders;
     for (Collider* c : allColliders_) {
@@ -229,12 +237,16 @@ bool PhysicsSystem::preSolve(ShapeId a, ShapeId b, const Manifold& manifold) con
 
 // --- the step ---
 
-void PhysicsSystem::fixedUpdate(double step) {
+void PhysicsSystem::requireNotDispatching(const char* function) const {
     if (dispatching_) {
-        throw core::Error("physics::PhysicsSystem::fixedUpdate(): called from inside an event "
-                          "handler (CollisionEnter/Exit, TriggerEnter/Exit) of the same "
-                          "system");
+        throw core::Error(std::string("physics::PhysicsSystem::") + function +
+                          "(): called from inside an event handler (CollisionEnter/Exit, "
+                          "TriggerEnter/Exit) of the same system");
     }
+}
+
+void PhysicsSystem::fixedUpdate(double step) {
+    requireNotDispatching("fixedUpdate");
     forgetDestroyedBodies();
     syncColliders();
     pullMovedObjects(static_cast<float>(step));
@@ -250,6 +262,7 @@ void PhysicsSystem::clear() {
     colliders_.clear();
     rigidbodies_.clear();
     staticColliders_.clear();
+    characters_.clear();
     ruledColliders_ = 0;
     preSolveInstalled_ = false;
 }
