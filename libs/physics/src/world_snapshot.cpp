@@ -1067,9 +1067,11 @@ void World::restoreSnapshot(std::span<const std::uint8_t> snapshot) {
     check.contacts();
     section("BRPH");
     check.broadPhase();
-    // Not state: the callbacks stay this world's.
+    // Not state: how this world runs (its callbacks, its workers, its SIMD width) stays.
     fresh->hooks.preSolve = std::move(impl_->hooks.preSolve);
     fresh->hooks.pairFilter = std::move(impl_->hooks.pairFilter);
+    fresh->tasks = std::move(impl_->tasks);
+    fresh->sim.simdLanes = impl_->sim.simdLanes;
     impl_ = std::move(fresh);
 }
 
