@@ -2,6 +2,7 @@
 #include <e2d/physics/physics_system.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/physics/collider.hpp>
 #include <e2d/physics/contact_info.hpp>
@@ -9,7 +10,6 @@
 #include <e2d/physics/rigidbody.hpp>
 
 #include "component_check.hpp"
-#include "error_format.hpp"
 #include "object_pose.hpp"
 
 #include <algorithm>
@@ -23,7 +23,7 @@ namespace {
 float checkedScale(float unitsPerMetre) {
     if (!std::isfinite(unitsPerMetre) || unitsPerMetre <= 0.0f) {
         throw core::Error("physics::PhysicsSystem::PhysicsSystem(): unitsPerMetre must be finite "
-                          "and > 0, got " + detail::formatFloat(unitsPerMetre));
+                          "and > 0, got " + core::formatNumber(unitsPerMetre));
     }
     return unitsPerMetre;
 }

@@ -43,7 +43,13 @@ constexpr std::uint32_t nextOf(std::uint64_t claim) {
 
 } // namespace
 
-TaskPool::TaskPool(int workerCount) {
+// Whether `workers` threads fit on this machine's hardware threads.
+bool fitsHardware(int workers) {
+    const unsigned hardware = std::thread::hardware_concurrency();
+    return hardware == 0 || static_cast<unsigned>(workers) <= hardware;
+}
+
+TaskPool::TaskPool(int workerCount) : spins_(fitsHardware(workerCount) ? kSpinsBeforeSleep : 0) {
     threads_.reserve(static_cast<std::size_t>(std::max(workerCount - 1, 0)));
     for (int worker = 1; worker < workerCount; ++worker) {
         threads_.emplace_back([this, worker] { threadMain(worker); });
@@ -83,7 +89,7 @@ void TaskPool::run(TaskFunction task, int itemCount, int pieceSize, void* contex
     }
     runPieces(generation, 0);
     for (int spins = 0; done_.load(std::memory_order_acquire) != static_cast<int>(pieceCount); ++spins) {
-        if (spins < kSpinsBeforeSleep) {
+        if (spins < spins_) {
             pause();
         } else {
             std::this_thread::yield(); // a worker holding a piece was preempted
@@ -113,7 +119,7 @@ void TaskPool::threadMain(int worker) {
     auto published = [this] { return generationOf(claim_.load(std::memory_order_acquire)); };
     for (;;) {
         std::uint32_t generation = published();
-        for (int spins = 0; generation == seen && spins < kSpinsBeforeSleep; ++spins) {
+        for (int spins = 0; generation == seen && spins < spins_; ++spins) {
             pause();
             generation = published();
         }
@@ -135,6 +141,7 @@ void TaskPool::threadMain(int worker) {
 void Tasks::configure(int workerCount, EnqueueTaskFunction enqueue, FinishTaskFunction finish,
                       void* userContext) {
     workerCount_ = workerCount;
+    spinning_ = fitsHardware(workerCount);
     enqueue_ = enqueue;
     finish_ = finish;
     userContext_ = userContext;

@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 // The step's parallel-for (detail::Tasks) and the world's own threads behind it (TaskPool)
@@ -35,6 +36,9 @@ private:
     void runPieces(std::uint32_t generation, int worker);
 
     std::vector<std::thread> threads_;
+    // Spins before a wait yields or sleeps: none when there are more workers than hardware
+    // threads (a spinning worker then only takes time from the one it waits for).
+    int spins_ = 0;
     std::mutex mutex_;
     std::condition_variable wake_;
     int sleeping_ = 0; // threads waiting on wake_ (mutex_)
@@ -53,6 +57,9 @@ private:
     int pieceSize_ = 1;
 };
 
+// Whether `workers` threads fit on this machine's hardware threads (or it does not say).
+bool fitsHardware(int workers);
+
 // How World::step() runs its parallel stages (WorldDef::workerCount, enqueueTask, finishTask).
 class Tasks {
 public:
@@ -67,6 +74,8 @@ public:
     void configure(int workerCount, EnqueueTaskFunction enqueue, FinishTaskFunction finish,
                    void* userContext);
     [[nodiscard]] int workerCount() const { return workerCount_; }
+    // Whether there are at most as many workers as hardware threads: waiting by spinning pays.
+    [[nodiscard]] bool spinning() const { return spinning_; }
 
     // Calls body(begin, end, worker) over [0, itemCount) in pieces of at least minRange items
     // (worker in [0, workerCount())); returns when every piece has run. One worker, or too few
@@ -86,10 +95,26 @@ public:
         run(trampoline, itemCount, minRange, &body);
     }
 
+    // Whether runTogether() can run: the world's own threads, which are all there at once (a
+    // game's job system may run a task's pieces one after another).
+    [[nodiscard]] bool canRunTogether() const { return pool_ != nullptr; }
+    // Calls body(role) for each role in [0, count), all at the same time, so that the roles may
+    // wait for each other; count <= workerCount(), canRunTogether().
+    template <class Body>
+    void runTogether(int count, Body&& body) {
+        auto trampoline = [](int begin, int end, int /*worker*/, void* context) {
+            for (int role = begin; role < end; ++role) {
+                (*static_cast<std::remove_reference_t<Body>*>(context))(role);
+            }
+        };
+        pool_->run(trampoline, count, 1, &body);
+    }
+
 private:
     void run(TaskFunction task, int itemCount, int minRange, void* context);
 
     int workerCount_ = 1;
+    bool spinning_ = true;
     EnqueueTaskFunction enqueue_ = nullptr;
     FinishTaskFunction finish_ = nullptr;
     void* userContext_ = nullptr;
