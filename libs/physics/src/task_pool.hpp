@@ -66,6 +66,9 @@ public:
     Tasks() = default;
     Tasks(const Tasks&) = delete;
     Tasks& operator=(const Tasks&) = delete;
+    // Movable: World::restoreSnapshot() hands the world's workers to its restored state.
+    Tasks(Tasks&&) noexcept = default;
+    Tasks& operator=(Tasks&&) noexcept = default;
 
     // Starts the world's own threads when workerCount > 1 and enqueue is null.
     void configure(int workerCount, EnqueueTaskFunction enqueue, FinishTaskFunction finish,

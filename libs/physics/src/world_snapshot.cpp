@@ -375,8 +375,9 @@ struct SnapshotAccess {
         field(io, "proxyCount", tree.proxyCount_);
     }
 
+    // `shapeSlots`: the shapes the pairs are made of, which bound the table's size.
     template <class Io>
-    static void transfer(Io& io, PairSet& pairs) {
+    static void transfer(Io& io, PairSet& pairs, std::size_t shapeSlots) {
         // The table's capacity and each entry with its slot: the probe order (and so the pairs'
         // iteration order) comes back as it was.
         auto capacity = static_cast<std::uint32_t>(pairs.slots_.size());
@@ -384,11 +385,17 @@ struct SnapshotAccess {
         std::size_t entries = static_cast<std::size_t>(pairs.size_);
         io.count("entries", entries, 4 + encodedSize<PairEntry>());
         if constexpr (Io::kReading) {
-            if (capacity > (std::uint32_t{1} << 30) || (capacity & (capacity - 1)) != 0 ||
-                2 * entries > capacity) {
+            // The table starts at 32 slots and doubles when it would be more than half full, so
+            // it never holds more than 4 slots per pair that n shapes can make (n (n - 1) / 2):
+            // a few bytes of snapshot cannot ask for a gigabyte.
+            const std::uint64_t n = shapeSlots;
+            const std::uint64_t most = std::min<std::uint64_t>(
+                std::max<std::uint64_t>(32, 2 * n * (n > 0 ? n - 1 : 0)), std::uint64_t{1} << 30);
+            if (capacity > most || (capacity & (capacity - 1)) != 0 || 2 * entries > capacity) {
                 io.fail("capacity",
                         "must be a power of two of at least twice the " + std::to_string(entries) +
-                            " entries, got " + std::to_string(capacity),
+                            " entries and at most " + std::to_string(most) + " (for " +
+                            std::to_string(n) + " shapes), got " + std::to_string(capacity),
                         0);
             }
             pairs.slots_.assign(capacity, PairEntry{});
@@ -426,7 +433,7 @@ struct SnapshotAccess {
     }
 
     template <class Io>
-    static void transfer(Io& io, BroadPhase& bp) {
+    static void transfer(Io& io, BroadPhase& bp, std::size_t shapeSlots) {
         for (std::size_t t = 0; t < bp.trees_.size(); ++t) {
             auto scope = io.scope("trees", t);
             transfer(io, bp.trees_[t]);
@@ -443,7 +450,7 @@ struct SnapshotAccess {
         }
         sequence(io, "moveBuffer", bp.moveBuffer_, 4);
         auto scope = io.scope("pairs");
-        transfer(io, bp.pairs_);
+        transfer(io, bp.pairs_, shapeSlots);
     }
 
     // Bytes of one encoded tree node.
@@ -467,10 +474,6 @@ struct SnapshotAccess {
 template <class Io>
 void transfer(Io& io, IdPool& pool) {
     SnapshotAccess::transfer(io, pool);
-}
-template <class Io>
-void transfer(Io& io, BroadPhase& bp) {
-    SnapshotAccess::transfer(io, bp);
 }
 
 // The payload: every section in order (see the top of the file).
@@ -500,7 +503,10 @@ void transferWorld(Io& io, W& w) {
     sequence(io, "freeContacts", w.sim.freeContacts, 4);
     field(io, "contactCount", w.sim.contactCount);
     io.tag("BRPH");
-    field(io, "broadPhase", w.broadPhase);
+    {
+        auto scope = io.scope("broadPhase");
+        SnapshotAccess::transfer(io, w.broadPhase, w.shapes.size());
+    }
     io.tag("EVNT");
     sequence(io, "pendingEndEvents", w.sim.pendingEndEvents, encodedSize<ContactEndTouchEvent>());
     sequence(io, "pendingSensorEndEvents", w.sim.pendingSensorEndEvents,
@@ -1067,9 +1073,11 @@ void World::restoreSnapshot(std::span<const std::uint8_t> snapshot) {
     check.contacts();
     section("BRPH");
     check.broadPhase();
-    // Not state: the callbacks stay this world's.
+    // Not state: how this world runs (its callbacks, its workers, its SIMD width) stays.
     fresh->hooks.preSolve = std::move(impl_->hooks.preSolve);
     fresh->hooks.pairFilter = std::move(impl_->hooks.pairFilter);
+    fresh->tasks = std::move(impl_->tasks);
+    fresh->sim.simdLanes = impl_->sim.simdLanes;
     impl_ = std::move(fresh);
 }
 

@@ -205,6 +205,28 @@ TEST(WorldSnapshot, EveryJointKindStepsOnBitForBit) {
     }
 }
 
+// Workers are how a world runs, not its state: a snapshot of a 2-worker world goes on alike in
+// a 1-worker one, and the other way round.
+TEST(WorldSnapshot, WorkersAreNotState) {
+    WorldDef two;
+    two.workerCount = 2;
+    Scene s(two);
+    stepWorld(s.world, 30);
+    const Bytes snapshot = s.world.saveSnapshot();
+    stepWorld(s.world, 30);
+    const std::uint64_t expected = sceneHash(s);
+    Scene one;
+    one.world.restoreSnapshot(snapshot);
+    one.bodies = s.bodies;
+    one.joints = s.joints;
+    stepWorld(one.world, 30);
+    EXPECT_EQ(sceneHash(one), expected);
+    const Bytes fromOne = one.world.saveSnapshot();
+    s.world.restoreSnapshot(snapshot);
+    stepWorld(s.world, 30);
+    EXPECT_EQ(s.world.saveSnapshot(), fromOne);
+}
+
 TEST(WorldSnapshot, SaveRestoreSaveGivesTheSameBytes) {
     Scene s;
     stepWorld(s.world, 30);

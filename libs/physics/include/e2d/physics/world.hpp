@@ -674,8 +674,9 @@ public:
     /// the saved one would have. Ids the saved world had handed out name the same objects
     /// (the tag becomes the saved world's); ids of what it had destroyed stay stale, and ids
     /// handed out after the save are stale too, until replaying the same calls hands them out
-    /// again. Keeps this world's pre-solve and pair filter callbacks; the event arrays, move
-    /// events and counters are empty until the next step. Throws core::Error naming the offset
+    /// again. Keeps this world's pre-solve and pair filter callbacks and how it runs (workers,
+    /// task callbacks, SIMD width: WorldDef); the event arrays, move events and counters are
+    /// empty until the next step. Throws core::Error naming the offset
     /// and the field for a snapshot of another format version, cut short, damaged (checksum) or
     /// inconsistent (an index out of range, a broken list or tree), and inside a callback;
     /// the world is then unchanged: the snapshot is read into a new state that replaces the
