@@ -358,14 +358,14 @@ SoundId Mixer::add(SoundData data, std::string name) {
     splitChannels(data, sound);
     m.uploadSound(sound);
     m.sounds.push_back(std::move(sound));
-    return SoundId{static_cast<std::uint32_t>(m.sounds.size())};
+    return SoundId::forSlot(static_cast<std::uint32_t>(m.sounds.size() - 1));
 }
 
 const SoundInfo& Mixer::soundInfo(SoundId sound) const {
-    if (sound.isNull() || sound.index1 > impl_->sounds.size()) {
+    if (!core::slotOf(sound, impl_->sounds.size())) {
         throw core::Error("audio::Mixer::soundInfo(): unknown sound id " + std::to_string(sound.index1));
     }
-    return impl_->sounds[sound.index1 - 1].info;
+    return impl_->sounds[sound.index()].info;
 }
 
 int Mixer::soundCount() const noexcept { return static_cast<int>(impl_->sounds.size()); }

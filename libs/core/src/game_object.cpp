@@ -33,7 +33,7 @@ std::string GameObject::describe() const {
     if (!tag_.empty()) {
         return "object tagged " + quote(tag_);
     }
-    return "object " + std::to_string(id_.index);
+    return "object " + std::to_string(id_.index());
 }
 
 namespace {
@@ -227,12 +227,12 @@ void GameObject::addChild(GameObject& child) {
         throw Error("core::GameObject::addChild(): " + describe() + " cannot be its own child");
     }
     if (child.scene_ != scene_) {
-        throw Error("core::GameObject::addChild(): object " + std::to_string(child.id_.index) +
+        throw Error("core::GameObject::addChild(): object " + std::to_string(child.id_.index()) +
                     " belongs to another scene");
     }
     if (child.isAncestorOf(*this)) {
-        throw Error("core::GameObject::addChild(): object " + std::to_string(child.id_.index) +
-                    " is an ancestor of object " + std::to_string(id_.index) + ", this would make a cycle");
+        throw Error("core::GameObject::addChild(): object " + std::to_string(child.id_.index()) +
+                    " is an ancestor of object " + std::to_string(id_.index()) + ", this would make a cycle");
     }
     if (child.parent_ == this) {
         return;
@@ -245,8 +245,8 @@ void GameObject::addChild(GameObject& child) {
 
 void GameObject::removeChild(GameObject& child) {
     if (child.parent_ != this) {
-        throw Error("core::GameObject::removeChild(): object " + std::to_string(child.id_.index) +
-                    " is not a child of object " + std::to_string(id_.index));
+        throw Error("core::GameObject::removeChild(): object " + std::to_string(child.id_.index()) +
+                    " is not a child of object " + std::to_string(id_.index()));
     }
     child.detachFromParent();
 }
@@ -273,7 +273,7 @@ void GameObject::detachFromParent() noexcept {
 
 void GameObject::warnRefusedUnique(const std::type_info& type) const {
     if (Logger* log = logger()) {
-        log->warning(std::string("core::GameObject::addComponent(): object ") + std::to_string(id_.index) +
+        log->warning(std::string("core::GameObject::addComponent(): object ") + std::to_string(id_.index()) +
                      " already has a unique component of type " + detail::demangledName(type) + ", the new one is refused");
     }
 }
@@ -286,7 +286,7 @@ void GameObject::removeComponent(Component* component) {
     if (std::none_of(components_.begin(), components_.end(), owns) &&
         std::none_of(pendingAdd_.begin(), pendingAdd_.end(), owns)) {
         throw Error("core::GameObject::removeComponent(): the component does not belong to object " +
-                    std::to_string(id_.index));
+                    std::to_string(id_.index()));
     }
     if (std::find(pendingRemove_.begin(), pendingRemove_.end(), component) == pendingRemove_.end()) {
         pendingRemove_.push_back(component);

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -62,13 +63,13 @@ ActionId ActionMap::add(std::string_view name) {
         throw core::Error("input::ActionMap::add(): action '" + std::string(name) + "' already exists");
     }
     actions_.push_back(Action{std::string(name), {}, 0.0f, false, false, false});
-    return ActionId{static_cast<std::uint32_t>(actions_.size())};
+    return ActionId::forSlot(static_cast<std::uint32_t>(actions_.size() - 1));
 }
 
 ActionId ActionMap::find(std::string_view name) const noexcept {
     for (std::size_t i = 0; i < actions_.size(); ++i) {
         if (actions_[i].name == name) {
-            return ActionId{static_cast<std::uint32_t>(i + 1)};
+            return ActionId::forSlot(static_cast<std::uint32_t>(i));
         }
     }
     return {};
@@ -80,11 +81,12 @@ ActionId ActionMap::findOrAdd(std::string_view name) {
 }
 
 const ActionMap::Action& ActionMap::at(ActionId id, const char* function) const {
-    if (id.isNull() || id.value > actions_.size()) {
+    const std::optional<std::uint32_t> index = core::slotOf(id, actions_.size());
+    if (!index) {
         throw core::Error(std::string("input::ActionMap::") + function + "(): no action with id " +
-                          std::to_string(id.value));
+                          std::to_string(id.index1));
     }
-    return actions_[id.value - 1];
+    return actions_[*index];
 }
 
 ActionMap::Action& ActionMap::at(ActionId id, const char* function) {
@@ -260,7 +262,7 @@ void ActionMap::listenStep(const Input& input) {
     if (!found) {
         return;
     }
-    Action& action = actions_[listening_.value - 1];
+    Action& action = actions_[listening_.index()];
     if (listenMode_ == ListenMode::Replace) {
         action.bindings.clear();
     }

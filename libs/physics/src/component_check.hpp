@@ -2,12 +2,11 @@
 #pragma once
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/physics/constants.hpp>
 
 #include <glm/mat2x2.hpp>
-
-#include "error_format.hpp"
 
 #include <cmath>
 #include <string>
@@ -19,39 +18,28 @@ namespace e2d::physics::detail::component_check {
 inline void requireFinite(const char* function, const char* field, float value) {
     if (!std::isfinite(value)) {
         throw core::Error(std::string("physics::") + function + "(): def." + field +
-                          " must be finite, got " + formatFloat(value));
+                          " must be finite, got " + core::formatNumber(value));
     }
 }
 
 inline void requireNonNegative(const char* function, const char* field, float value) {
     if (!std::isfinite(value) || value < 0.0f) {
         throw core::Error(std::string("physics::") + function + "(): def." + field +
-                          " must be finite and >= 0, got " + formatFloat(value));
+                          " must be finite and >= 0, got " + core::formatNumber(value));
     }
 }
 
 inline void requireUnitInterval(const char* function, const char* field, float value) {
     if (!std::isfinite(value) || value < 0.0f || value > 1.0f) {
         throw core::Error(std::string("physics::") + function + "(): def." + field +
-                          " must be finite and in [0, 1], got " + formatFloat(value));
+                          " must be finite and in [0, 1], got " + core::formatNumber(value));
     }
-}
-
-// How an error names a game object: by name, else by tag, else by id.
-inline std::string describe(const core::GameObject& object) {
-    if (!object.name().empty()) {
-        return "object '" + object.name() + "'";
-    }
-    if (!object.tag().empty()) {
-        return "object tagged '" + object.tag() + "'";
-    }
-    return "object #" + std::to_string(object.id().index) + " (no name or tag)";
 }
 
 // "physics::Rigidbody on object 'crate': ..."
 [[noreturn]] inline void failOn(const core::GameObject& object, std::string_view component,
                                 const std::string& what) {
-    throw core::Error("physics::" + std::string(component) + " on " + describe(object) + ": " + what);
+    throw core::Error("physics::" + std::string(component) + " on " + object.describe() + ": " + what);
 }
 
 // The object's world position must be within the World's range (kHuge metres), reported in
@@ -65,10 +53,10 @@ inline void requireInRange(const core::GameObject& object, std::string_view comp
         return;
     }
     failOn(object, component,
-           "world position " + formatVec(units) +
+           "world position " + core::formatVector(units) +
                " world units is out of the physics range (finite, |x| and |y| <= " +
-               formatFloat(kHuge * unitsPerMetre) + " world units: " + formatFloat(kHuge) +
-               " m at " + formatFloat(unitsPerMetre) + " units per metre)");
+               core::formatNumber(kHuge * unitsPerMetre) + " world units: " + core::formatNumber(kHuge) +
+               " m at " + core::formatNumber(unitsPerMetre) + " units per metre)");
 }
 
 // A collider's placement on its body (its object's scale and pose relative to the body) must
@@ -81,8 +69,8 @@ inline void requireFinitePlacement(const core::GameObject& object, std::string_v
     if (!finite) {
         failOn(object, component,
                "the object's scale, orientation or position relative to its body is not finite "
-               "(scale " + formatVec(object.scale()) + ", orientation " +
-                   formatFloat(object.orientation()) + ")");
+               "(scale " + core::formatVector(object.scale()) + ", orientation " +
+                   core::formatNumber(object.orientation()) + ")");
     }
 }
 

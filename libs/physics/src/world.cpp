@@ -100,22 +100,16 @@ std::uint16_t tagFromAddress(const void* address) {
 template <class Id>
 std::string describe(const char* type, Id id) {
     return std::string(type) + " (index1 " + std::to_string(id.index1) + ", generation " +
-           std::to_string(id.generation) + ", world " + std::to_string(id.world) + ")";
+           std::to_string(id.generation) + ", world " + std::to_string(id.owner) + ")";
 }
 
 template <class Id>
 [[noreturn]] void failHandle(const char* function, const char* type, Id id, std::uint16_t tag) {
-    if (!id.isNull() && id.world != tag) {
+    if (!id.isNull() && id.owner != tag) {
         check::fail(function, describe(type, id) + " belongs to another world (this world's tag is " +
                                   std::to_string(tag) + ")");
     }
     check::fail(function, "stale or null " + describe(type, id));
-}
-
-std::uint16_t nextGeneration(std::uint16_t generation) {
-    // Skip 0 on wrap-around so a zero generation is never live.
-    ++generation;
-    return generation == 0 ? std::uint16_t{1} : generation;
 }
 
 } // namespace
@@ -189,7 +183,7 @@ void World::Impl::destroyShapeAt(int shapeIndex) {
     }
     --b.shapeCount;
     s.alive = false;
-    s.generation = nextGeneration(s.generation);
+    s.generation = core::nextGeneration(s.generation);
     int bodyIndex = s.body;
     s.body = s.prevShape = s.nextShape = kNullIndex;
     shapeIds.release(shapeIndex);
@@ -310,7 +304,7 @@ void World::destroyBody(BodyId id) {
     }
     detail::Body& b = w.body(index);
     b.alive = false;
-    b.generation = nextGeneration(b.generation);
+    b.generation = core::nextGeneration(b.generation);
     w.bodyIds.release(index);
 }
 

@@ -83,22 +83,16 @@ struct World::Impl {
     detail::IdPool shapeIds;
     detail::BroadPhase broadPhase;
 
-    // Index of a live body named by `id`, or kNullIndex.
-    [[nodiscard]] int find(BodyId id) const {
-        if (id.index1 == 0 || id.index1 > bodies.size() || id.world != tag) {
-            return detail::kNullIndex;
-        }
-        const detail::Body& body = bodies[id.index1 - 1];
-        return body.alive && body.generation == id.generation ? static_cast<int>(id.index1 - 1)
-                                                              : detail::kNullIndex;
-    }
-    [[nodiscard]] int find(ShapeId id) const {
-        if (id.index1 == 0 || id.index1 > shapes.size() || id.world != tag) {
-            return detail::kNullIndex;
-        }
-        const detail::Shape& shape = shapes[id.index1 - 1];
-        return shape.alive && shape.generation == id.generation ? static_cast<int>(id.index1 - 1)
-                                                                : detail::kNullIndex;
+    // Index of a live body (shape, joint) named by `id`, or kNullIndex.
+    [[nodiscard]] int find(BodyId id) const { return findIn(bodies, id); }
+    [[nodiscard]] int find(ShapeId id) const { return findIn(shapes, id); }
+    [[nodiscard]] int find(JointId id) const { return findIn(joints, id); }
+    template <class Slots, class Id>
+    [[nodiscard]] int findIn(const Slots& slots, Id id) const {
+        const auto index = core::findSlot(
+            id, slots.size(),
+            [&slots](std::uint32_t i) { return slots[i].alive ? slots[i].generation : std::uint16_t{0}; }, tag);
+        return index ? static_cast<int>(*index) : detail::kNullIndex;
     }
     // The function whose callback is running (overlapAabb, forEachCandidatePair,
     // forEachTouchingContact, or step/updatePairs for the hooks), or nullptr, and for a hook
@@ -134,12 +128,10 @@ struct World::Impl {
     int require(ShapeId id, const char* function) const;
 
     [[nodiscard]] BodyId bodyId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1,
-                bodies[static_cast<std::size_t>(index)].generation, tag};
+        return BodyId::forSlot(static_cast<std::uint32_t>(index), body(index).generation, tag);
     }
     [[nodiscard]] ShapeId shapeId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1,
-                shapes[static_cast<std::size_t>(index)].generation, tag};
+        return ShapeId::forSlot(static_cast<std::uint32_t>(index), shape(index).generation, tag);
     }
     detail::Body& body(int index) { return bodies[static_cast<std::size_t>(index)]; }
     const detail::Body& body(int index) const { return bodies[static_cast<std::size_t>(index)]; }
@@ -201,16 +193,9 @@ struct World::Impl {
     std::vector<detail::Joint> joints;
     detail::IdPool jointIds;
 
-    [[nodiscard]] int find(JointId id) const {
-        if (id.index1 == 0 || id.index1 > joints.size() || id.world != tag) {
-            return detail::kNullIndex;
-        }
-        const detail::Joint& j = joints[id.index1 - 1];
-        return j.alive && j.generation == id.generation ? static_cast<int>(id.index1 - 1) : detail::kNullIndex;
-    }
     int require(JointId id, const char* function) const;
     [[nodiscard]] JointId jointId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1, joints[static_cast<std::size_t>(index)].generation, tag};
+        return JointId::forSlot(static_cast<std::uint32_t>(index), joint(index).generation, tag);
     }
     detail::Joint& joint(int index) { return joints[static_cast<std::size_t>(index)]; }
     const detail::Joint& joint(int index) const { return joints[static_cast<std::size_t>(index)]; }

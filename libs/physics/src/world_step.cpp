@@ -563,7 +563,7 @@ void World::Impl::solve(float dt) {
         b.motion.force = {0.0f, 0.0f};
         b.motion.torque = 0.0f;
         const bool finite = isFiniteState(bs, st);
-        if (!finite || !check::isWithinHuge(bs.transform.p)) {
+        if (!finite || !isWithinHuge(bs.transform.p)) {
             // Its last transform (finite, within kHuge) stays, so calls from where it is work.
             (finite ? s.outOfRangeBodies : s.nonFiniteBodies).push_back(bodyId(bs.bodyIndex));
             s.disabledSims.push_back(static_cast<int>(k));

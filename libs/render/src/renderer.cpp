@@ -230,7 +230,7 @@ int Renderer::destroyUnusedTextures(std::span<const TextureId> keep) {
     std::vector<bool> used(impl_->textures.slotCount(), false);
     const auto mark = [&](TextureId id) {
         if (impl_->textures.isValid(id)) {
-            used[id.index1 - 1] = true;
+            used[id.index()] = true;
         }
     };
     impl_->batcher.forEachTexture(mark);

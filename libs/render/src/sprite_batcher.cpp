@@ -134,25 +134,27 @@ const SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function
 // Every setter's id check inlines (index()); the message is built out of line.
 void SpriteBatcher::failBadId(SpriteId id, const char* function) {
     core::throwError(function, id.isNull() ? std::string("null sprite id")
-                               : "stale sprite id (index " + std::to_string(id.index1 - 1) + ", generation " +
+                               : "stale sprite id (index " + std::to_string(id.index()) + ", generation " +
                                      std::to_string(id.generation) + ")");
 }
 
-bool SpriteBatcher::isValid(SpriteId id) const noexcept {
-    const std::uint32_t i = id.index1 - 1;
-    return i < liveGen_.size() && liveGen_[i] == id.generation;
+bool SpriteBatcher::isValid(SpriteId id) const noexcept { return liveIndex(id).has_value(); }
+
+std::optional<std::uint32_t> SpriteBatcher::textureSlot(TextureId id) const noexcept {
+    return core::findSlot(id, textures_.size(), [this](std::uint32_t i) { return textures_[i].generation; });
 }
 
-void SpriteBatcher::resolveTexture(Slot& s) const {
-    TextureId id = s.def.texture;
-    if (id.isNull()) {
-        s.texture = whiteSlot_;
-    } else if (id.index1 <= textures_.size() && textures_[id.index1 - 1].generation == id.generation) {
-        s.texture = id.index1 - 1;
-    } else {
-        s.texture = placeholderSlot_;
+std::uint32_t SpriteBatcher::drawnTexture(TextureId id) const noexcept {
+    return id.isNull() ? whiteSlot_ : textureSlot(id).value_or(placeholderSlot_);
+}
+
+void SpriteBatcher::requireTexture(const char* function, TextureId id) const {
+    if (!id.isNull() && !textureSlot(id)) {
+        core::throwError(function, "stale texture id (index " + std::to_string(id.index()) + ")");
     }
 }
+
+void SpriteBatcher::resolveTexture(Slot& s) const { s.texture = drawnTexture(s.def.texture); }
 
 bool SpriteBatcher::opaque(const Slot& s) const { return s.def.tint.a == 255 && !textures_[s.texture].translucent; }
 
@@ -172,10 +174,7 @@ std::uint64_t SpriteBatcher::key(float z, std::uint32_t texture, bool isOpaque) 
 
 SpriteId SpriteBatcher::create(const SpriteDef& def) {
     validate(kCreate, def);
-    if (!def.texture.isNull() && !(def.texture.index1 <= textures_.size() &&
-                                   textures_[def.texture.index1 - 1].generation == def.texture.generation)) {
-        core::throwError(kCreate, "stale texture id (index " + std::to_string(def.texture.index1 - 1) + ")");
-    }
+    requireTexture(kCreate, def.texture);
     std::uint32_t index;
     if (!free_.empty()) {
         index = free_.back();
@@ -199,23 +198,20 @@ SpriteId SpriteBatcher::create(const SpriteDef& def) {
     ++alive_;
     markDirty(index, kMoved | kShape | kLook);
     orderDirty_ = true;
-    return SpriteId{index + 1, s.generation};
+    return SpriteId::forSlot(index, s.generation);
 }
 
 bool SpriteBatcher::destroy(SpriteId id) {
     if (!isValid(id)) {
         return false;
     }
-    std::uint32_t index = id.index1 - 1;
+    std::uint32_t index = id.index();
     Slot& s = slots_[index];
     s.alive = false;
     liveGen_[index] = 0;
     dirty_[index] = 0;
     orderPosition_[index] = kNotDrawn; // the draw order is rebuilt before the next frame
-    ++s.generation;
-    if (s.generation == 0) {
-        s.generation = 1;
-    }
+    s.generation = core::nextGeneration(s.generation);
     free_.push_back(index);
     --alive_;
     orderDirty_ = true;
@@ -225,7 +221,7 @@ bool SpriteBatcher::destroy(SpriteId id) {
 void SpriteBatcher::destroyAll() {
     for (std::uint32_t i = 0; i < slots_.size(); ++i) {
         if (slots_[i].alive) {
-            destroy(SpriteId{i + 1, slots_[i].generation});
+            destroy(SpriteId::forSlot(i, slots_[i].generation));
         }
     }
     dirtyList_.clear();
@@ -241,9 +237,9 @@ void SpriteBatcher::set(SpriteId id, const SpriteDef& def, const char* function)
     Slot& s = slot(id, function);
     validate(function, def);
     s.def = def;
-    pos_[id.index1 - 1] = def.position;
+    pos_[id.index()] = def.position;
     resolveTexture(s);
-    markDirty(id.index1 - 1, kMoved | kShape | kLook);
+    markDirty(id.index(), kMoved | kShape | kLook);
     orderDirty_ = true;
 }
 
@@ -277,7 +273,7 @@ void SpriteBatcher::setZ(SpriteId id, float z) {
     core::requireFinite(fn, "z", z);
     if (s.def.z != z) {
         s.def.z = z;
-        markDirty(id.index1 - 1, kMoved);
+        markDirty(id.index(), kMoved);
         orderDirty_ = true;
     }
 }
@@ -290,7 +286,7 @@ void SpriteBatcher::setSize(SpriteId id, glm::vec2 size) {
     }
     if (s.def.size != size) {
         s.def.size = size;
-        markDirty(id.index1 - 1, kShape);
+        markDirty(id.index(), kShape);
     }
 }
 
@@ -300,7 +296,7 @@ void SpriteBatcher::setScale(SpriteId id, glm::vec2 scale) {
     core::requireFinite(fn, "scale", scale);
     if (s.def.scale != scale) {
         s.def.scale = scale;
-        markDirty(id.index1 - 1, kShape);
+        markDirty(id.index(), kShape);
     }
 }
 
@@ -310,7 +306,7 @@ void SpriteBatcher::setRotation(SpriteId id, float radians) {
     core::requireFinite(fn, "rotation", radians);
     if (s.def.rotation != radians) {
         s.def.rotation = radians;
-        markDirty(id.index1 - 1, kShape);
+        markDirty(id.index(), kShape);
     }
 }
 
@@ -320,7 +316,7 @@ void SpriteBatcher::setPivot(SpriteId id, glm::vec2 pivot) {
     core::requireFinite(fn, "pivot", pivot);
     if (s.def.pivot != pivot) {
         s.def.pivot = pivot;
-        markDirty(id.index1 - 1, kShape);
+        markDirty(id.index(), kShape);
     }
 }
 
@@ -331,7 +327,7 @@ void SpriteBatcher::setTint(SpriteId id, Color tint) {
             orderDirty_ = true; // changes pass
         }
         s.def.tint = tint;
-        markDirty(id.index1 - 1, kLook);
+        markDirty(id.index(), kLook);
     }
 }
 
@@ -346,7 +342,7 @@ void SpriteBatcher::setUv(SpriteId id, const Rect& uv, bool uvRotated) {
         const bool shape = s.def.uvRotated != uvRotated || s.def.size == glm::vec2(0.0f);
         s.def.uv = uv;
         s.def.uvRotated = uvRotated;
-        markDirty(id.index1 - 1, shape ? kLook | kShape : kLook);
+        markDirty(id.index(), shape ? kLook | kShape : kLook);
     }
 }
 
@@ -355,7 +351,7 @@ void SpriteBatcher::setFlip(SpriteId id, bool flipX, bool flipY) {
     if (s.def.flipX != flipX || s.def.flipY != flipY) {
         s.def.flipX = flipX;
         s.def.flipY = flipY;
-        markDirty(id.index1 - 1, kLook);
+        markDirty(id.index(), kLook);
     }
 }
 
@@ -367,7 +363,7 @@ void SpriteBatcher::setParallax(SpriteId id, float parallax) {
     }
     if (s.def.parallax != parallax) {
         s.def.parallax = parallax;
-        markDirty(id.index1 - 1, kMoved);
+        markDirty(id.index(), kMoved);
         orderDirty_ = true; // camera-dependent list
     }
 }
@@ -376,7 +372,7 @@ void SpriteBatcher::setHud(SpriteId id, bool hud) {
     Slot& s = slot(id, "render::Renderer::setHud()");
     if (s.def.hud != hud) {
         s.def.hud = hud;
-        markDirty(id.index1 - 1, kMoved | kShape);
+        markDirty(id.index(), kMoved | kShape);
         orderDirty_ = true;
     }
 }
@@ -392,14 +388,11 @@ void SpriteBatcher::setVisible(SpriteId id, bool visible) {
 void SpriteBatcher::setTexture(SpriteId id, TextureId texture) {
     constexpr const char* fn = "render::Renderer::setTexture()";
     Slot& s = slot(id, fn);
-    if (!texture.isNull() &&
-        !(texture.index1 <= textures_.size() && textures_[texture.index1 - 1].generation == texture.generation)) {
-        core::throwError(fn, "stale texture id (index " + std::to_string(texture.index1 - 1) + ")");
-    }
+    requireTexture(fn, texture);
     if (s.def.texture != texture) {
         s.def.texture = texture;
         resolveTexture(s);
-        markDirty(id.index1 - 1, kShape);
+        markDirty(id.index(), kShape);
         orderDirty_ = true;
     }
 }
@@ -411,7 +404,7 @@ void SpriteBatcher::setTransform(SpriteId id, glm::vec2 position, float z, float
     core::requireFinite(fn, "z", z);
     core::requireFinite(fn, "rotation", rotation);
     core::requireFinite(fn, "scale", scale);
-    const std::uint32_t i = id.index1 - 1;
+    const std::uint32_t i = id.index();
     if (s.def.z == z && s.def.rotation == rotation && s.def.scale == scale) {
         if (pos_[i] != position) {
             moveTo(i, position);
@@ -441,10 +434,7 @@ void SpriteBatcher::submit(const Quad& quad) {
     if (!core::isFinite(quad.size) || quad.size.x < 0.0f || quad.size.y < 0.0f) {
         core::throwError(fn, "size must be >= 0 and finite, got " + core::formatVector(quad.size));
     }
-    if (!quad.texture.isNull() && !(quad.texture.index1 <= textures_.size() &&
-                                    textures_[quad.texture.index1 - 1].generation == quad.texture.generation)) {
-        core::throwError(fn, "stale texture id (index " + std::to_string(quad.texture.index1 - 1) + ")");
-    }
+    requireTexture(fn, quad.texture);
     Transient t{};
     t.quad = quad;
     quads_.push_back(t);
@@ -606,14 +596,7 @@ std::size_t SpriteBatcher::prepare(const CameraState& camera, const ViewBounds& 
     for (std::uint32_t k = 0; k < quads_.size(); ++k) {
         Transient& t = quads_[k];
         const Quad& q = t.quad;
-        if (q.texture.isNull()) {
-            t.texture = whiteSlot_;
-        } else {
-            t.texture = q.texture.index1 <= textures_.size() &&
-                                textures_[q.texture.index1 - 1].generation == q.texture.generation
-                            ? q.texture.index1 - 1
-                            : placeholderSlot_;
-        }
+        t.texture = drawnTexture(q.texture);
         float c = std::cos(q.rotation);
         float sn = std::sin(q.rotation);
         glm::vec2 ex = glm::vec2(c, sn) * q.size.x;
