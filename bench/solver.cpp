@@ -8,8 +8,9 @@
 //
 // The large scenes also run with 2 workers (WorldDef::workerCount, the world's own threads),
 // row "e2d_2w", reported as the speed-up over the same run's one-worker e2d row
-// (speedup_vs_1w, and the "Threads" table at the end). Both worlds step the same states: the
-// worker count changes the speed only.
+// (speedup_vs_1w, and the "Threads" table at the end; each row's fastest run, so
+// --benchmark_repetitions=N compares the best of N). Both worlds step the same states: the worker
+// count changes the speed only.
 //
 // Extra flags (taken out before Google Benchmark parses the rest):
 //   --e2d_settle=N  steps run before timing each scene (default 120, 2 s)
@@ -118,7 +119,7 @@ struct Worlds {
     Options options;
     std::map<std::string, std::unique_ptr<sc::E2dScene>> e2d; // by case and worker count
     std::map<std::string, std::unique_ptr<sc::Box2DScene>> box2d;
-    // Seconds per step of the last timed run, by case and worker count.
+    // Seconds per step of the fastest timed run, by case and worker count.
     std::map<std::string, std::map<int, double>> e2dSeconds;
 };
 
@@ -143,13 +144,18 @@ void stepE2dWith(benchmark::State& state, const Case* c, int workers) {
     }
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
     const double perStep = elapsed.count() / static_cast<double>(std::max<benchmark::IterationCount>(state.iterations(), 1));
-    w.e2dSeconds[c->name][workers] = perStep;
+    // The fastest run of each row (with --benchmark_repetitions=N, the best of N): on a shared
+    // machine the other rows' load comes and goes, and the best run is the one it hurt least.
+    auto [best, first] = w.e2dSeconds[c->name].try_emplace(workers, perStep);
+    if (!first) {
+        best->second = std::min(best->second, perStep);
+    }
     state.SetItemsProcessed(state.iterations());
     state.counters["bodies"] = static_cast<double>(c->scene.bodies.size());
     state.counters["contacts"] = static_cast<double>(scene.world.contactCount());
     const auto one = w.e2dSeconds[c->name].find(1);
     if (workers > 1 && one != w.e2dSeconds[c->name].end()) {
-        state.counters["speedup_vs_1w"] = one->second / perStep;
+        state.counters["speedup_vs_1w"] = one->second / best->second;
     }
 }
 
@@ -158,8 +164,8 @@ void stepE2dThreaded(benchmark::State& state, const Case* c) {
     stepE2dWith(state, c, kThreadedWorkers);
 }
 
-// Each threaded case's time with kThreadedWorkers over its one-worker time, from this run's
-// last timed runs, as a Markdown table.
+// Each threaded case's one-worker time over its time with kThreadedWorkers, the fastest timed
+// run of each in this process, as a Markdown table.
 std::string threadsTable() {
     std::string out = "\nThreads: e2d with " + std::to_string(kThreadedWorkers) +
                       " workers against one, same run (ms per step):\n\n"

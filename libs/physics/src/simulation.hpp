@@ -169,20 +169,6 @@ struct Simulation {
     std::vector<int> blockLevelStart;
     std::vector<int> blockBodyStart;
     std::vector<int> blockBodies;
-    // One block solved by several workers at once (World::Impl::scheduleWide(), when one block
-    // holds most constraints and several workers are set, so the blocks alone cannot share the
-    // work): each of its levels is cut in `roles` levels, one per worker, by who owns the
-    // constraints (the worker of its first moving body, bodies cut in runs of state order).
-    // A level's parts share no moving body either, so this is the same sweep. Per part
-    // (block-local level l, its worker l % roles) and other worker v: needForward[l * roles + v]
-    // is the last earlier part of v sharing a body state with it (-1: none), needBackward the
-    // first later one (-1: none), what it waits for in a forward or backward sweep. splitBlock
-    // -1: no block is split.
-    int splitRoles = 1;
-    int splitBlock = -1;
-    std::vector<int> splitNeedForward;
-    std::vector<int> splitNeedBackward;
-    std::vector<int> splitScratch;
     // The schedule above depends on nothing but the constraints (contacts and sides) and which
     // states are rigid. wideScheduleValid: it was built from the last solve's
     // constraintContacts, constraintBodies and stateRigid, which each solve keeps here

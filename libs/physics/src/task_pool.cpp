@@ -141,7 +141,6 @@ void TaskPool::threadMain(int worker) {
 void Tasks::configure(int workerCount, EnqueueTaskFunction enqueue, FinishTaskFunction finish,
                       void* userContext) {
     workerCount_ = workerCount;
-    spinning_ = fitsHardware(workerCount);
     enqueue_ = enqueue;
     finish_ = finish;
     userContext_ = userContext;

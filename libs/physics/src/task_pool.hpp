@@ -74,8 +74,6 @@ public:
     void configure(int workerCount, EnqueueTaskFunction enqueue, FinishTaskFunction finish,
                    void* userContext);
     [[nodiscard]] int workerCount() const { return workerCount_; }
-    // Whether there are at most as many workers as hardware threads: waiting by spinning pays.
-    [[nodiscard]] bool spinning() const { return spinning_; }
 
     // Calls body(begin, end, worker) over [0, itemCount) in pieces of at least minRange items
     // (worker in [0, workerCount())); returns when every piece has run. One worker, or too few
@@ -95,26 +93,10 @@ public:
         run(trampoline, itemCount, minRange, &body);
     }
 
-    // Whether runTogether() can run: the world's own threads, which are all there at once (a
-    // game's job system may run a task's pieces one after another).
-    [[nodiscard]] bool canRunTogether() const { return pool_ != nullptr; }
-    // Calls body(role) for each role in [0, count), all at the same time, so that the roles may
-    // wait for each other; count <= workerCount(), canRunTogether().
-    template <class Body>
-    void runTogether(int count, Body&& body) {
-        auto trampoline = [](int begin, int end, int /*worker*/, void* context) {
-            for (int role = begin; role < end; ++role) {
-                (*static_cast<std::remove_reference_t<Body>*>(context))(role);
-            }
-        };
-        pool_->run(trampoline, count, 1, &body);
-    }
-
 private:
     void run(TaskFunction task, int itemCount, int minRange, void* context);
 
     int workerCount_ = 1;
-    bool spinning_ = true;
     EnqueueTaskFunction enqueue_ = nullptr;
     FinishTaskFunction finish_ = nullptr;
     void* userContext_ = nullptr;

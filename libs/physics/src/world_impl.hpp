@@ -171,9 +171,6 @@ struct World::Impl {
     void destroyContact(int contactIndex, bool reportEnd);
     void solve(float dt);
     void scheduleWide(int constraintCount);
-    // scheduleWide()'s parts that let several workers solve one block (Simulation::splitBlock).
-    void splitLargestBlock(std::size_t count, int blockCount);
-    void findSplitNeeds();
     // Time of impact for this step's fast bodies and bullets (continuous.cpp): solveContinuous()
     // picks them from the solver arrays, sweepBody() sweeps one (index in sims).
     void solveContinuous();

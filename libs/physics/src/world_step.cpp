@@ -137,7 +137,6 @@ void World::Impl::scheduleWide(int constraintCount) {
         int& levels = s.blockLevelStart[static_cast<std::size_t>(s.islandBlock[root]) + 1];
         levels = std::max(levels, s.constraintLevel[k] + 1);
     }
-    splitLargestBlock(count, blockCount);
     // Block `blockCount` holds the bodies no constraint touches: no levels.
     for (int b = 0; b < blockCount; ++b) {
         s.blockLevelStart[static_cast<std::size_t>(b) + 1] += s.blockLevelStart[static_cast<std::size_t>(b)];
@@ -195,114 +194,6 @@ void World::Impl::scheduleWide(int constraintCount) {
         s.blockBodies[static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(s.bodyBlock[i])]++)] =
             static_cast<int>(i);
     }
-    if (s.splitBlock >= 0) {
-        findSplitNeeds();
-    }
-}
-
-namespace {
-
-// A block is split across workers from this many constraints: below, waiting for each other
-// costs more than it saves.
-constexpr int kSplitConstraints = 2048;
-// At most this many workers share one block.
-constexpr int kMaxSplitRoles = 4;
-
-} // namespace
-
-// Called by scheduleWide() once each constraint has its block (islandBlock of its island) and
-// its level within the block: cuts the levels of the block holding most constraints, if it
-// holds more than half of them, into one level per worker (Simulation::splitRoles).
-void World::Impl::splitLargestBlock(std::size_t count, int blockCount) {
-    detail::Simulation& s = sim;
-    s.splitBlock = -1;
-    s.splitRoles = std::min(tasks.workerCount(), kMaxSplitRoles);
-    if (s.splitRoles < 2 || !tasks.canRunTogether() || count < static_cast<std::size_t>(kSplitConstraints)) {
-        return;
-    }
-    std::vector<int>& inBlock = s.splitScratch;
-    inBlock.assign(static_cast<std::size_t>(blockCount), 0);
-    for (std::size_t k = 0; k < count; ++k) {
-        ++inBlock[static_cast<std::size_t>(s.islandBlock[static_cast<std::size_t>(s.constraintIsland[k])])];
-    }
-    const auto largest = static_cast<int>(std::max_element(inBlock.begin(), inBlock.end()) - inBlock.begin());
-    if (2 * static_cast<std::size_t>(inBlock[static_cast<std::size_t>(largest)]) <= count) {
-        return; // the blocks share the work well enough
-    }
-    s.splitBlock = largest;
-    // Owners: the block's moving bodies in state order, cut in splitRoles runs.
-    const std::size_t n = s.sims.size();
-    std::vector<int>& owner = s.splitScratch;
-    owner.assign(n, -1);
-    int blockBodyCount = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (s.islandBlock[static_cast<std::size_t>(detail::findRoot(s.blockParent, static_cast<int>(i)))] == largest) {
-            owner[i] = blockBodyCount++;
-        }
-    }
-    for (int& o : owner) {
-        o = o < 0 ? -1 : static_cast<int>(static_cast<long long>(o) * s.splitRoles / std::max(blockBodyCount, 1));
-    }
-    const int roles = s.splitRoles;
-    int levels = 0;
-    for (std::size_t k = 0; k < count; ++k) {
-        if (s.islandBlock[static_cast<std::size_t>(s.constraintIsland[k])] != largest) {
-            continue;
-        }
-        const detail::Simulation::ConstraintBodies& cb = s.constraintBodies[k];
-        const int first = cb.indexA >= 0 && s.stateRigid[static_cast<std::size_t>(cb.indexA)] == 0 ? cb.indexA : cb.indexB;
-        const int role = first >= 0 ? std::max(owner[static_cast<std::size_t>(first)], 0) : 0;
-        int& level = s.constraintLevel[k];
-        level = level * roles + role;
-        levels = std::max(levels, level + 1);
-    }
-    // Every part of the last level exists (the parts' owner is their level modulo roles).
-    levels = (levels + roles - 1) / roles * roles;
-    s.blockLevelStart[static_cast<std::size_t>(largest) + 1] = levels;
-}
-
-// The waits of the split block's parts (Simulation::splitNeedForward, splitNeedBackward), from
-// the slots of its levels.
-void World::Impl::findSplitNeeds() {
-    detail::Simulation& s = sim;
-    const int roles = s.splitRoles;
-    const auto b = static_cast<std::size_t>(s.splitBlock);
-    const int first = s.blockLevelStart[b];
-    const int levels = s.blockLevelStart[b + 1] - first;
-    const std::size_t n = s.sims.size();
-    // A rigid side (kinematic) is no moving body for the levels, but its state is still
-    // written back with the others: the parts wait for each other on it too, so two workers
-    // never touch one state at once.
-    // Per body and worker, the last part (forward) or first part (backward) seen touching it.
-    std::vector<int>& seen = s.splitScratch;
-    auto sweep = [&](std::vector<int>& need, bool backward) {
-        need.assign(static_cast<std::size_t>(levels) * static_cast<std::size_t>(roles), -1);
-        seen.assign(n * static_cast<std::size_t>(roles), -1);
-        for (int i = 0; i < levels; ++i) {
-            const int l = backward ? levels - 1 - i : i;
-            const int role = l % roles;
-            const auto at = static_cast<std::size_t>(first + l);
-            for (int slot = s.levelStart[at]; slot < s.levelStart[at + 1]; ++slot) {
-                const detail::Simulation::ConstraintBodies& cb = s.slotBodies[static_cast<std::size_t>(slot)];
-                for (int body : {cb.indexA, cb.indexB}) {
-                    if (body < 0) {
-                        continue;
-                    }
-                    const std::size_t row = static_cast<std::size_t>(body) * static_cast<std::size_t>(roles);
-                    for (int v = 0; v < roles; ++v) {
-                        const int other = seen[row + static_cast<std::size_t>(v)];
-                        int& wait = need[static_cast<std::size_t>(l) * static_cast<std::size_t>(roles) + static_cast<std::size_t>(v)];
-                        if (v != role && other >= 0) {
-                            wait = wait < 0 ? other : (backward ? std::min(wait, other) : std::max(wait, other));
-                        }
-                    }
-                    seen[row + static_cast<std::size_t>(role)] = l;
-                }
-            }
-        }
-    };
-    sweep(s.splitNeedForward, false);
-    sweep(s.splitNeedBackward, true);
 }
 
 void World::Impl::solve(float dt) {
@@ -575,7 +466,7 @@ void World::Impl::solve(float dt) {
         const std::span<const int> blockBodies = s.blockBodies;
         // Blocks share no body (see scheduleWide()), so they are solved on several workers at
         // once, each block whole on one, with what the others also write kept per worker.
-        auto solveBlock = [&](std::size_t b, detail::Simulation::BlockWorker& worker, bool split) {
+        auto solveBlock = [&](std::size_t b, detail::Simulation::BlockWorker& worker) {
             const int firstLevel = s.blockLevelStart[b];
             const int endLevel = s.blockLevelStart[b + 1];
             // Only the block holding shapes pushed apart sweeps more.
@@ -590,26 +481,16 @@ void World::Impl::solve(float dt) {
             }
             pushOutSweeps(blockStep, blockPushOut);
             worker.extraRelaxIterations = std::max(worker.extraRelaxIterations, blockStep.extraRelaxIterations);
-            const std::span<const int> bodiesOf =
+            detail::solveSoftStepBlock(
+                blockStep, s.wideContacts, firstLevel, endLevel,
                 blockBodies.subspan(static_cast<std::size_t>(s.blockBodyStart[b]),
-                                    static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b]));
-            if (split) {
-                detail::SplitSync sync(s.splitRoles, s.splitNeedForward, s.splitNeedBackward,
-                                       tasks.spinning());
-                tasks.runTogether(s.splitRoles, [&](int role) {
-                    detail::solveSoftStepBlockRole(blockStep, s.wideContacts, firstLevel, endLevel,
-                                                   bodiesOf, worker.restitution, sync, role);
-                });
-            } else {
-                detail::solveSoftStepBlock(
-                blockStep, s.wideContacts, firstLevel, endLevel, bodiesOf,
+                                    static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b])),
                 worker.restitution,
                 s.activeJoints.empty()
                     ? std::span<const int>{}
                     : std::span<const int>(s.blockJoints)
                           .subspan(static_cast<std::size_t>(s.blockJointStart[b]),
                                    static_cast<std::size_t>(s.blockJointStart[b + 1] - s.blockJointStart[b])));
-            }
             // Contacts are visited in slot order, twice a block: gathered before it is solved
             // and their impulses stored right after, while its lanes are in cache. A level's
             // contacts lie one island apart in the array, too far for the hardware prefetcher:
@@ -634,27 +515,15 @@ void World::Impl::solve(float dt) {
             w.hits.clear();
             w.extraRelaxIterations = 0;
         }
-        // The block split across workers (scheduleWide()) goes alone, after the others; its
-        // workers wait for each other, so they run at once, on the world's own threads only.
-        const int split = s.splitBlock;
-        const bool splitOn =
-            split >= 0 && !oneWorker && tasks.canRunTogether() &&
-            (s.activeJoints.empty() || s.blockJointStart[static_cast<std::size_t>(split) + 1] ==
-                                           s.blockJointStart[static_cast<std::size_t>(split)]);
         auto solveBlocks = [&](int begin, int end, int worker) {
             for (int b = begin; b < end; ++b) {
-                if (!(splitOn && b == split)) {
-                    solveBlock(static_cast<std::size_t>(b), s.blockWorkers[static_cast<std::size_t>(worker)], false);
-                }
+                solveBlock(static_cast<std::size_t>(b), s.blockWorkers[static_cast<std::size_t>(worker)]);
             }
         };
         if (oneWorker) {
             solveBlocks(0, blockCount, 0);
         } else {
             tasks.parallelFor(blockCount, 1, solveBlocks);
-        }
-        if (splitOn) {
-            solveBlock(static_cast<std::size_t>(split), s.blockWorkers[0], true);
         }
         for (detail::Simulation::BlockWorker& w : s.blockWorkers) {
             s.hitCandidates.insert(s.hitCandidates.end(), w.hits.begin(), w.hits.end());
