@@ -64,6 +64,7 @@ void World::Impl::prepareJoints(float dt, float h) {
         s.jointBodies.clear();
         s.jointLayout = detail::Simulation::JointLayout::None;
     };
+    s.jointDirect.resetDense();
     if (joints.empty()) {
         reset();
         return;
@@ -255,17 +256,8 @@ void World::Impl::projectJoints() {
     if (model == JointSolver::Soft) {
         return;
     }
-    const bool direct = model == JointSolver::Direct;
-    // The velocity passes' verdict on the joint graph holds for its blocks' orders, not for
-    // the whole list: the position passes find out again.
-    s.jointDirect.resetDense();
-    for (int i = 0; i < s.def.jointPositionIterations; ++i) {
-        if (direct ? detail::projectJointsDirect(joints, s.activeJoints, s.states, s.jointDirect)
-                   : detail::solveJointPositions(joints, s.activeJoints, s.states)) {
-            break;
-        }
-    }
-    s.jointDirect.resetDense();
+    detail::projectJointComponents(joints, s.activeJoints, s.states, s.def.jointPositionIterations,
+                                   model == JointSolver::GaussSeidel, s.jointDirect);
 }
 
 void World::Impl::reprojectJointsAfterContinuous() {
