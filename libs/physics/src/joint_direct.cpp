@@ -192,9 +192,6 @@ void addBlock(JointDirectScratch& w, std::size_t p, int q, const Block& x) {
     w.adjacency[p].push_back({q, x});
 }
 
-// Closed loops the direct solve takes on in one component (denseComponent()).
-constexpr std::size_t kMaxLoops = 8;
-constexpr std::size_t kJointsPerLoop = 16;
 // Solves per velocity pass at most: a limit that would pull is released and the rest solved
 // again.
 constexpr int kActiveSetRounds = 3;
@@ -440,11 +437,9 @@ void applyRows(const Joint& j, const JointDirectScratch::Rows& r, int count, con
 }
 
 // Whether component `slots` with `loops` independent closed loops is left to Gauss-Seidel:
-// more loops than kMaxLoops or one per kJointsPerLoop joints (a net, whose factor fills in
-// and costs more than it saves), or its factorisation gave up earlier this step.
+// tooLoopy(), or its factorisation gave up earlier this step.
 bool denseComponent(const JointDirectScratch& w, std::span<const int> slots, int loops) {
-    const auto closed = static_cast<std::size_t>(loops);
-    return closed > std::max(kMaxLoops, slots.size() / kJointsPerLoop) ||
+    return tooLoopy(slots.size(), static_cast<std::size_t>(loops)) ||
            std::find(w.denseComponents.begin(), w.denseComponents.end(), slots.front()) != w.denseComponents.end();
 }
 
@@ -553,7 +548,8 @@ void projectJointComponents(std::span<Joint> joints, std::span<const int> order,
 
 void solveJointsDirect(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
                        const JointStep& step, bool useBias, JointDirectScratch& w) {
-    findJointComponents(joints, order, states.size(), w.components);
+    // The loopy groups' joints are the Gauss-Seidel pass's alone (markLoopyJoints()).
+    findJointComponents(joints, order, states.size(), w.components, true);
     const JointComponents& components = w.components;
     for (std::size_t c = 0; c < components.size(); ++c) {
         const std::span<const int> slots = components.component(c);

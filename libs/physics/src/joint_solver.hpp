@@ -80,6 +80,9 @@ struct alignas(64) Joint {
     std::uint16_t generation = 1;
     bool alive = false;
     bool collideConnected = false;
+    // JointSolver::Direct, this step: the joint's connected group has too many closed loops for
+    // the direct solve (tooLoopy(), markLoopyJoints()): Gauss-Seidel, its plain hinges in groups.
+    bool loopy = false;
     Vec2 localAnchorA{0.0f, 0.0f}; // from body A's origin, A's frame (motor: linearOffset)
     Vec2 localAnchorB{0.0f, 0.0f};
     Vec2 localAxisA{1.0f, 0.0f}; // unit
@@ -162,7 +165,7 @@ int bestPointJointLanes();
 // The passes' order from the prepared joints joints[slots[k]] in order, levels[k] their
 // levels (ascending; joints of one level share no moving body): pass entries appended to
 // `entries`, k >= 0 the joint slot k, k < 0 a group of `groups` (PointJointGroups). With
-// `quadsAllowed`, the plain hinges of each level are packed into groups appended to `groups`
+// `quadsAllowed` (without it, those of loopy groups alone: Joint::loopy), the plain hinges of each level are packed into groups appended to `groups`
 // (eights while five or more are left and groups.lanes is 8, then fours; the last group of a
 // level padded; a single hinge left over stays a slot) and go before the level's other
 // joints; a level's joints share no body, so this order gives the same results as slot order.
@@ -298,9 +301,22 @@ struct JointComponents {
 };
 
 // Fills `out` from the pass entries `order` (joint slots; groups of plain hinges, k < 0, are
-// skipped) over `stateCount` body states (joint_components.cpp).
+// skipped, and with `skipLoopy` the joints marked loopy) over `stateCount` body states
+// (joint_components.cpp).
 void findJointComponents(std::span<const Joint> joints, std::span<const int> order, std::size_t stateCount,
-                         JointComponents& out);
+                         JointComponents& out, bool skipLoopy = false);
+
+// A connected group of `joints` joints with `loops` independent closed loops through moving
+// bodies is too loopy for the direct solve when it has more than 8 loops and more than one per
+// 16 joints (a net: its factor fills in and costs more than it saves); Gauss-Seidel there.
+inline bool tooLoopy(std::size_t joints, std::size_t loops) {
+    return loops > std::max<std::size_t>(8, joints / 16);
+}
+
+// Sets Joint::loopy on the joints `slots` (every prepared joint of the step) by tooLoopy() of
+// their connected group: a union-find, no sorting (once per step, JointSolver::Direct).
+void markLoopyJoints(std::span<Joint> joints, std::span<const int> slots, std::size_t stateCount,
+                     JointComponents& scratch);
 
 // What the direct solve keeps between calls (its arrays' capacity, and the step's verdicts).
 struct JointDirectScratch {

@@ -109,6 +109,15 @@ void World::Impl::prepareJoints(float dt, float h) {
         detail::prepareJoint(j, viewOf(a), viewOf(b), step);
         s.jointKeys.push_back({static_cast<int>(ji), j.indexA, j.indexB, detail::isPointJoint(j) ? 1 : 0});
     }
+    if (directJoints(s.def)) {
+        // Which groups of joints the direct solve leaves to Gauss-Seidel: a function of the
+        // keys below, so a kept layout keeps it too.
+        s.jointScratch.clear();
+        for (const Key& key : s.jointKeys) {
+            s.jointScratch.push_back(key.slot);
+        }
+        detail::markLoopyJoints(joints, s.jointScratch, s.sims.size(), s.jointDirect.components);
+    }
     static_assert(sizeof(Key) == 4 * sizeof(int), "JointKey compares as ints");
     if (!s.jointKeys.empty() && s.jointKeys.size() == s.lastJointKeys.size() &&
         std::memcmp(s.jointKeys.data(), s.lastJointKeys.data(), s.jointKeys.size() * sizeof(Key)) == 0) {
