@@ -6,6 +6,11 @@
 // Benchmark's calibration runs). Reported: ms per step and the ratio e2d / Box2D; then, for the
 // large pyramid, how far its top box drifted sideways and sagged after standing for 10 s.
 //
+// The large scenes also run with 2 workers (WorldDef::workerCount, the world's own threads),
+// row "e2d_2w", reported as the speed-up over the same run's one-worker e2d row
+// (speedup_vs_1w, and the "Threads" table at the end). Both worlds step the same states: the
+// worker count changes the speed only.
+//
 // Extra flags (taken out before Google Benchmark parses the rest):
 //   --e2d_settle=N  steps run before timing each scene (default 120, 2 s)
 //   --e2d_stand=N   steps of the standing check (default 600, 10 s)
@@ -22,7 +27,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -67,8 +74,9 @@ bool takeIntFlag(int& argc, char** argv, const char* name, int& value) {
     return found;
 }
 
-ph::WorldDef e2dDef() {
+ph::WorldDef e2dDef(int workers = 1) {
     ph::WorldDef def;
+    def.workerCount = workers;
     def.solver.mode = ph::SolverMode::SoftStep;
     def.solver.subSteps = 4;
     def.solver.enableSleep = false;
@@ -86,16 +94,20 @@ sc::Box2DSettings box2dSettings() {
 struct Case {
     std::string name;
     sc::SceneDesc scene;
+    bool threads = false; // also an "e2d_2w" row
 };
+
+// The worker count of the threaded rows.
+constexpr int kThreadedWorkers = 2;
 
 std::vector<Case> makeCases() {
     std::vector<Case> cases;
     for (int base : {10, 20, 40, 80, 100}) {
-        cases.push_back({"pyramid_" + std::to_string(base), sc::pyramid(base)});
+        cases.push_back({"pyramid_" + std::to_string(base), sc::pyramid(base), base >= 80});
     }
-    cases.push_back({"many_pyramids_20x20_10", sc::manyPyramids(20, 20, 10)});
+    cases.push_back({"many_pyramids_20x20_10", sc::manyPyramids(20, 20, 10), true});
     cases.push_back({"vertical_stack_20", sc::verticalStack(20)});
-    cases.push_back({"falling_circles_1000", sc::fallingCircles(1000)});
+    cases.push_back({"falling_circles_1000", sc::fallingCircles(1000), true});
     return cases;
 }
 
@@ -104,8 +116,10 @@ std::vector<Case> makeCases() {
 // time would cost more than the measurement.
 struct Worlds {
     Options options;
-    std::map<std::string, std::unique_ptr<sc::E2dScene>> e2d;
+    std::map<std::string, std::unique_ptr<sc::E2dScene>> e2d; // by case and worker count
     std::map<std::string, std::unique_ptr<sc::Box2DScene>> box2d;
+    // Seconds per step of the last timed run, by case and worker count.
+    std::map<std::string, std::map<int, double>> e2dSeconds;
 };
 
 Worlds& worlds() {
@@ -113,22 +127,56 @@ Worlds& worlds() {
     return all;
 }
 
-void stepE2d(benchmark::State& state, const Case* c) {
+void stepE2dWith(benchmark::State& state, const Case* c, int workers) {
     Worlds& w = worlds();
-    auto& slot = w.e2d[c->name];
+    auto& slot = w.e2d[c->name + "/" + std::to_string(workers)];
     if (!slot) {
-        slot = std::make_unique<sc::E2dScene>(sc::buildE2d(c->scene, e2dDef()));
+        slot = std::make_unique<sc::E2dScene>(sc::buildE2d(c->scene, e2dDef(workers)));
         for (int i = 0; i < w.options.settleSteps; ++i) {
             slot->step();
         }
     }
     sc::E2dScene& scene = *slot;
+    const auto start = std::chrono::steady_clock::now();
     for (auto _ : state) {
         scene.step();
     }
+    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+    const double perStep = elapsed.count() / static_cast<double>(std::max<benchmark::IterationCount>(state.iterations(), 1));
+    w.e2dSeconds[c->name][workers] = perStep;
     state.SetItemsProcessed(state.iterations());
     state.counters["bodies"] = static_cast<double>(c->scene.bodies.size());
     state.counters["contacts"] = static_cast<double>(scene.world.contactCount());
+    const auto one = w.e2dSeconds[c->name].find(1);
+    if (workers > 1 && one != w.e2dSeconds[c->name].end()) {
+        state.counters["speedup_vs_1w"] = one->second / perStep;
+    }
+}
+
+void stepE2d(benchmark::State& state, const Case* c) { stepE2dWith(state, c, 1); }
+void stepE2dThreaded(benchmark::State& state, const Case* c) {
+    stepE2dWith(state, c, kThreadedWorkers);
+}
+
+// Each threaded case's time with kThreadedWorkers over its one-worker time, from this run's
+// last timed runs, as a Markdown table.
+std::string threadsTable() {
+    std::string out = "\nThreads: e2d with " + std::to_string(kThreadedWorkers) +
+                      " workers against one, same run (ms per step):\n\n"
+                      "| scene | 1 worker | " + std::to_string(kThreadedWorkers) +
+                      " workers | speed-up |\n|---|---:|---:|---:|\n";
+    for (const auto& [name, byWorkers] : worlds().e2dSeconds) {
+        const auto one = byWorkers.find(1);
+        const auto many = byWorkers.find(kThreadedWorkers);
+        if (one == byWorkers.end() || many == byWorkers.end()) {
+            continue;
+        }
+        char row[256];
+        std::snprintf(row, sizeof row, "| %s | %.3f | %.3f | %.2fx |\n", name.c_str(),
+                      one->second * 1e3, many->second * 1e3, one->second / many->second);
+        out += row;
+    }
+    return out;
 }
 
 void stepBox2D(benchmark::State& state, const Case* c) {
@@ -237,11 +285,17 @@ int main(int argc, char** argv) {
             ->Unit(benchmark::kMillisecond);
         benchmark::RegisterBenchmark(("step/" + c.name + "/e2d").c_str(), stepE2d, &c)
             ->Unit(benchmark::kMillisecond);
+        if (c.threads) {
+            benchmark::RegisterBenchmark(("step/" + c.name + "/e2d_2w").c_str(), stepE2dThreaded, &c)
+                ->Unit(benchmark::kMillisecond)
+                ->UseRealTime(); // the CPU time of the calling thread alone says nothing here
+        }
     }
     e2d::bench::registerJointBenchmarks(options.settleSteps);
     const int status =
-        e2d::bench::runWithRatios(argc, argv, "box2d", {"e2d", "box2d"}, "ms per step", 1e6,
-                                  appendix);
+        e2d::bench::runWithRatios(argc, argv, "box2d", {"e2d", "e2d_2w", "box2d"}, "ms per step",
+                                  1e6, appendix);
+    std::printf("%s", threadsTable().c_str());
     if (status == 0 && !e2dStands) {
         std::fprintf(stderr, "e2d's large pyramid did not stand: drift >= %.2f m or sag >= %.2f m\n",
                      static_cast<double>(kMaxDrift), static_cast<double>(kMaxSag));

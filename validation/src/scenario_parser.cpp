@@ -3,6 +3,7 @@
 
 #include "generators.hpp"
 
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/json_scan.hpp>
 #include <e2d/core/printable.hpp>
 #include <e2d/physics/constants.hpp>
@@ -21,12 +22,6 @@ namespace e2d::validation {
 namespace {
 
 using nlohmann::json;
-
-std::string show(double value) {
-    std::ostringstream out;
-    out << value;
-    return out.str();
-}
 
 std::string typeName(const json& value) {
     if (value.is_number()) {
@@ -139,7 +134,7 @@ public:
         }
         if (!value->is_number_integer()) {
             fail(at(key), "expected an integer, got " +
-                              (value->is_number() ? show(value->get<double>()) : typeName(*value)));
+                              (value->is_number() ? core::formatNumber(value->get<double>()) : typeName(*value)));
         }
         const auto v = value->get<long long>();
         if (v < lo || v > hi) {
@@ -226,7 +221,7 @@ public:
         }
         const double v = value.get<double>();
         if (!std::isfinite(v) || std::abs(v) > 1.0e30) {
-            fail(path, "must be a finite float, got " + show(v));
+            fail(path, "must be a finite float, got " + core::formatNumber(v));
         }
         return static_cast<float>(v);
     }
@@ -244,9 +239,9 @@ public:
     // the real limit instead of a confusing error from inside a run.
     static void checkWithinE2d(float v, const std::string& path) {
         if (std::abs(v) > physics::kHuge) {
-            fail(path, "must be within e2d's limit of " + show(physics::kHuge) +
+            fail(path, "must be within e2d's limit of " + core::formatNumber(physics::kHuge) +
                            " (physics::kHuge: metres for positions and sizes, kg/m^2 for "
-                           "density), got " + show(v));
+                           "density), got " + core::formatNumber(v));
         }
     }
     static void checkWithinE2d(glm::vec2 v, const std::string& path) {
@@ -256,8 +251,8 @@ public:
 
     static void checkAbove(float v, const std::string& path, float lo, bool strict) {
         if (strict ? !(v > lo) : !(v >= lo)) {
-            fail(path, std::string("must be ") + (strict ? "> " : ">= ") + show(lo) + ", got " +
-                           show(v));
+            fail(path, std::string("must be ") + (strict ? "> " : ">= ") + core::formatNumber(lo) + ", got " +
+                           core::formatNumber(v));
         }
     }
 
@@ -304,8 +299,8 @@ void parseChain(Object& o, scenes::ShapeDesc& shape) {
         const float gap = std::sqrt(d.x * d.x + d.y * d.y);
         if (!(gap >= physics::kLinearSlop)) {
             fail(indexed(o.at("points"), next),
-                 "must be at least physics::kLinearSlop (" + show(physics::kLinearSlop) +
-                     " m) from points[" + std::to_string(i) + "], got " + show(gap));
+                 "must be at least physics::kLinearSlop (" + core::formatNumber(physics::kLinearSlop) +
+                     " m) from points[" + std::to_string(i) + "], got " + core::formatNumber(gap));
         }
     }
     for (const char* key : {"ghostBefore", "ghostAfter"}) {
@@ -331,7 +326,7 @@ void parseChain(Object& o, scenes::ShapeDesc& shape) {
             material.friction = m.numberAbove("friction", shape.friction, 0.0f, false);
             material.restitution = m.numberAbove("restitution", shape.restitution, 0.0f, false);
             if (material.restitution > 1.0f) {
-                fail(m.at("restitution"), "must be in [0, 1] (e2d's limit), got " + show(material.restitution));
+                fail(m.at("restitution"), "must be in [0, 1] (e2d's limit), got " + core::formatNumber(material.restitution));
             }
             m.finish();
             shape.materials.push_back(material);
@@ -347,7 +342,7 @@ scenes::ShapeDesc parseShape(const json& value, const std::string& path) {
     shape.friction = o.numberAbove("friction", 0.6f, 0.0f, false);
     shape.restitution = o.numberAbove("restitution", 0.0f, 0.0f, false);
     if (shape.restitution > 1.0f) {
-        fail(o.at("restitution"), "must be in [0, 1] (e2d's limit), got " + show(shape.restitution));
+        fail(o.at("restitution"), "must be in [0, 1] (e2d's limit), got " + core::formatNumber(shape.restitution));
     }
     if (type == "box") {
         shape.kind = scenes::ShapeKind::Box;
@@ -378,7 +373,7 @@ scenes::ShapeDesc parseShape(const json& value, const std::string& path) {
         }
         if (distinct.size() < 3) {
             fail(o.at("points"), "e2d welds points closer than physics::kLinearSlop (" +
-                                     show(physics::kLinearSlop) + " m): " +
+                                     core::formatNumber(physics::kLinearSlop) + " m): " +
                                      std::to_string(distinct.size()) + " of " +
                                      std::to_string(shape.points.size()) +
                                      " are distinct, a polygon needs 3");
@@ -458,7 +453,7 @@ scenes::BodyDesc parseBody(const json& value, const std::string& path, float dur
     body.tag = o.string("tag", "");
     body.gravityScale = o.number("gravityScale", 1.0f);
     if (std::abs(body.gravityScale) > 1000.0f) {
-        fail(o.at("gravityScale"), "must be in [-1000, 1000], got " + show(body.gravityScale));
+        fail(o.at("gravityScale"), "must be in [-1000, 1000], got " + core::formatNumber(body.gravityScale));
     }
     body.force = o.vec2("force", {0.0f, 0.0f});
     if (const json* impulses = o.get("impulses")) {
@@ -467,7 +462,7 @@ scenes::BodyDesc parseBody(const json& value, const std::string& path, float dur
             Object im((*impulses)[i], indexed(o.at("impulses"), i));
             const float time = im.numberAbove("time", 0.0f, 0.0f, false);
             if (time > duration) {
-                fail(im.at("time"), "must be <= duration (" + show(duration) + "), got " + show(time));
+                fail(im.at("time"), "must be <= duration (" + core::formatNumber(duration) + "), got " + core::formatNumber(time));
             }
             body.impulses.emplace_back(time, Object::toVec2(im.require("impulse"), im.at("impulse")));
             im.finish();
@@ -506,7 +501,7 @@ LayoutParams parseLayout(Object& o, const std::string& defaultTag) {
     Object::checkWithinE2d(p.density, o.at("density"));
     p.restitution = o.numberAbove("restitution", 0.0f, 0.0f, false);
     if (p.restitution > 1.0f) {
-        fail(o.at("restitution"), "must be in [0, 1] (e2d's limit), got " + show(p.restitution));
+        fail(o.at("restitution"), "must be in [0, 1] (e2d's limit), got " + core::formatNumber(p.restitution));
     }
     p.ground = o.boolean("ground", true);
     p.tag = o.string("tag", defaultTag);
@@ -602,7 +597,7 @@ Check parseCheck(const json& value, const std::string& path, const Scenario& sce
     auto timeWithin = [&](const char* key) {
         const float t = positive(key);
         if (t > scenario.duration) {
-            fail(o.at(key), "must be <= duration (" + show(scenario.duration) + "), got " + show(t));
+            fail(o.at(key), "must be <= duration (" + core::formatNumber(scenario.duration) + "), got " + core::formatNumber(t));
         }
         return t;
     };
@@ -621,7 +616,7 @@ Check parseCheck(const json& value, const std::string& path, const Scenario& sce
         c.restY = o.requireNumber("restY");
         c.restitution = o.requireNumber("restitution");
         if (!(c.restitution >= 0.0f && c.restitution <= 1.0f)) {
-            fail(o.at("restitution"), "must be in [0, 1], got " + show(c.restitution));
+            fail(o.at("restitution"), "must be in [0, 1], got " + core::formatNumber(c.restitution));
         }
         break;
     case CheckKind::SlideDistance:
@@ -630,7 +625,7 @@ Check parseCheck(const json& value, const std::string& path, const Scenario& sce
         c.slopeAngle = o.angle("slope", 0.0f);
         if (!(c.slopeAngle > 0.0f && c.slopeAngle < 0.5f * std::numbers::pi_v<float>)) {
             fail(o.at("slopeDeg"), "the slope must be in (0, 90) degrees, got " +
-                                       show(c.slopeAngle * 180.0f / std::numbers::pi_v<float>));
+                                       core::formatNumber(c.slopeAngle * 180.0f / std::numbers::pi_v<float>));
         }
         if (c.kind == CheckKind::SlideDistance) {
             c.friction = o.numberAbove("friction", 0.0f, 0.0f, false);
@@ -926,7 +921,7 @@ scenes::JointDesc parseJoint(const json& value, const std::string& path, const s
         Object::checkWithinE2d(j.lower, o.at(lowKey));
         Object::checkWithinE2d(j.upper, o.at(highKey));
         if (!(j.lower <= j.upper)) {
-            fail(o.at(highKey), "must be >= " + lowKey + " (" + show(j.lower) + "), got " + show(j.upper));
+            fail(o.at(highKey), "must be >= " + lowKey + " (" + core::formatNumber(j.lower) + "), got " + core::formatNumber(j.upper));
         }
     };
     auto motor = [&](const char* maxKey) {
@@ -1004,7 +999,7 @@ scenes::JointDesc parseJoint(const json& value, const std::string& path, const s
         j.maxTorque = o.numberAbove("maxTorque", 1.0f, 0.0f, false);
         j.correctionFactor = o.numberAbove("correctionFactor", 0.3f, 0.0f, false);
         if (j.correctionFactor > 1.0f) {
-            fail(o.at("correctionFactor"), "must be in [0, 1], got " + show(j.correctionFactor));
+            fail(o.at("correctionFactor"), "must be in [0, 1], got " + core::formatNumber(j.correctionFactor));
         }
         break;
     }
@@ -1026,12 +1021,12 @@ scenes::JointDesc parseJoint(const json& value, const std::string& path, const s
         // e2d and Box2D both hold lengths below the linear slop at the slop.
         if (j.length < physics::kLinearSlop) {
             fail(o.at(o.has("length") ? "length" : "anchorB"),
-                 "the length must be at least physics::kLinearSlop (" + show(physics::kLinearSlop) +
-                     " m), got " + show(j.length));
+                 "the length must be at least physics::kLinearSlop (" + core::formatNumber(physics::kLinearSlop) +
+                     " m), got " + core::formatNumber(j.length));
         }
         range("minLength", "maxLength", false);
         if (j.enableLimit && j.lower < 0.0f) {
-            fail(o.at("minLength"), "must be >= 0, got " + show(j.lower));
+            fail(o.at("minLength"), "must be >= 0, got " + core::formatNumber(j.lower));
         }
         spring(false, 0.0f, 0.0f);
         break;
@@ -1067,11 +1062,11 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     s.measures = root.string("measures", "");
     s.duration = root.numberAbove("duration", 5.0f, 0.0f, true);
     if (s.duration > 600.0f) {
-        fail("duration", "must be <= 600 s, got " + show(s.duration));
+        fail("duration", "must be <= 600 s, got " + core::formatNumber(s.duration));
     }
     s.settle = root.numberAbove("settle", std::min(1.0f, 0.5f * s.duration), 0.0f, false);
     if (s.settle >= s.duration) {
-        fail("settle", "must be < duration (" + show(s.duration) + "), got " + show(s.settle));
+        fail("settle", "must be < duration (" + core::formatNumber(s.duration) + "), got " + core::formatNumber(s.settle));
     }
     s.quick = root.boolean("quick", false);
     s.sweep = root.boolean("sweep", true);
@@ -1081,15 +1076,15 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     s.scene.gravity = root.vec2("gravity", {0.0f, -10.0f});
     s.scene.timeStep = root.numberAbove("timeStep", 1.0f / 60.0f, 0.0f, true);
     if (s.scene.timeStep > 0.1f) {
-        fail("timeStep", "must be <= 0.1 s, got " + show(s.scene.timeStep));
+        fail("timeStep", "must be <= 0.1 s, got " + core::formatNumber(s.scene.timeStep));
     }
     // Every step is recorded (a few dozen bytes per tagged body and instant) and runs in every
     // configuration of the sweep: bound the count so a scenario cannot run for days or out of
     // memory.
     if (const double steps = std::round(double(s.duration) / s.scene.timeStep); steps > kMaxSteps) {
-        fail("timeStep", "duration / timeStep must be at most " + show(kMaxSteps) +
-                             " steps (600 s at 600 Hz), got " + show(s.duration) +
-                             " s / " + show(s.scene.timeStep) + " s = " + show(steps));
+        fail("timeStep", "duration / timeStep must be at most " + core::formatNumber(kMaxSteps) +
+                             " steps (600 s at 600 Hz), got " + core::formatNumber(s.duration) +
+                             " s / " + core::formatNumber(s.scene.timeStep) + " s = " + core::formatNumber(steps));
     }
     parseSettings(root, s);
 

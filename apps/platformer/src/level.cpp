@@ -221,6 +221,51 @@ void Level::fixedUpdate(const PlayerInput& input, float dt) {
     time_ += dt;
 }
 
+LevelCheckpoint Level::save() const {
+    LevelCheckpoint c;
+    c.physics = physics_.saveSnapshot();
+    c.controller = controller_;
+    for (const Coin& coin : coins_) {
+        c.collected.push_back(coin.collected);
+    }
+    c.velocity = velocity_;
+    c.touches = touches_;
+    c.time = time_;
+    c.score = score_;
+    c.jumps = jumps_;
+    c.stepsOnMoving = stepsOnMoving_;
+    c.stepsOnOneWay = stepsOnOneWay_;
+    c.grounded = grounded_;
+    c.won = won_;
+    c.dead = dead_;
+    c.groundVelocity = groundVelocity_;
+    c.onMoving = onMoving_;
+    c.onOneWay = onOneWay_;
+    return c;
+}
+
+void Level::restore(const LevelCheckpoint& c) {
+    physics_.restoreSnapshot(c.physics);
+    controller_ = c.controller;
+    for (std::size_t i = 0; i < coins_.size() && i < c.collected.size(); ++i) {
+        coins_[i].collected = c.collected[i];
+    }
+    velocity_ = c.velocity;
+    touches_ = c.touches;
+    events_ = {};
+    time_ = c.time;
+    score_ = c.score;
+    jumps_ = c.jumps;
+    stepsOnMoving_ = c.stepsOnMoving;
+    stepsOnOneWay_ = c.stepsOnOneWay;
+    grounded_ = c.grounded;
+    won_ = c.won;
+    dead_ = c.dead;
+    groundVelocity_ = c.groundVelocity;
+    onMoving_ = c.onMoving;
+    onOneWay_ = c.onOneWay;
+}
+
 void Level::touched(const GameObject* other) {
     if (other == goalObject_) {
         won_ = true;

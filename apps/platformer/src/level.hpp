@@ -5,6 +5,7 @@
 
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/scene.hpp>
+#include <e2d/physics/physics_system.hpp>
 
 #include <glm/vec2.hpp>
 
@@ -72,6 +73,29 @@ struct StepEvents {
     bool won = false;
 };
 
+class Level;
+
+/// Everything a run of the level is at one moment, its rules' state and its physics (a
+/// PhysicsSnapshot of the scene): Level::restore() plays on from there exactly as the run did.
+struct LevelCheckpoint {
+    e2d::physics::PhysicsSnapshot physics;
+    PlayerController controller;
+    std::vector<bool> collected; // per coin
+    glm::vec2 velocity{0.0f, 0.0f};
+    std::vector<const e2d::core::GameObject*> touches;
+    double time = 0.0;
+    int score = 0;
+    int jumps = 0;
+    int stepsOnMoving = 0;
+    int stepsOnOneWay = 0;
+    bool grounded = false;
+    bool won = false;
+    bool dead = false;
+    glm::vec2 groundVelocity{0.0f, 0.0f};
+    bool onMoving = false;
+    bool onOneWay = false;
+};
+
 class Level {
 public:
     /// Builds the level's objects into `scene`, whose PhysicsSystem it sets the gravity of.
@@ -84,6 +108,11 @@ public:
     /// (coins, hazards, goal), moves the platforms along their timetables, and sets the player's
     /// velocity from `input`. Does nothing more once the player won or died.
     void fixedUpdate(const PlayerInput& input, float dt);
+
+    /// The run so far, to come back to (between fixed steps).
+    [[nodiscard]] LevelCheckpoint save() const;
+    /// Back to `checkpoint`, saved by this level: the rules' state and the scene's physics.
+    void restore(const LevelCheckpoint& checkpoint);
 
     // State --------------------------------------------------------------------------------
     [[nodiscard]] double time() const noexcept { return time_; }

@@ -141,7 +141,9 @@ void ensureBindings(GameSystem& game) {
     const char* defaults[][2] = {{"move", "move = keys:left/right, keys:a/d, axis:leftx"},
                                  {"jump", "jump = key:space, key:up, key:w, button:a"},
                                  {"start", "start = key:enter, key:space, button:start, button:a"},
-                                 {"quit", "quit = key:escape, button:back"}};
+                                 {"quit", "quit = key:escape, button:back"},
+                                 {"checkpoint", "checkpoint = key:f5"},
+                                 {"restore", "restore = key:f9"}};
     for (const auto& [name, line] : defaults) {
         if (actions.find(name).isNull()) {
             actions.loadFromString(line, "<platformer defaults>");
@@ -392,6 +394,13 @@ private:
         if (actions.pressed("quit")) {
             game.changeScene("TitleScene");
         }
+        // F5 keeps the run as it is now (the level's rules and the scene's physics), F9 goes
+        // back to it.
+        if (actions.pressed("checkpoint")) {
+            checkpoint_ = level_->save();
+        } else if (actions.pressed("restore") && checkpoint_) {
+            level_->restore(*checkpoint_);
+        }
         if (level_->won() || level_->dead()) {
             outro_ += dt;
             if (outro_ >= kOutroTime && !leaving_) {
@@ -511,6 +520,7 @@ private:
     audio::SoundId winSound_{};
     audio::VoiceId music_{};
     bool jumpLatch_ = false;
+    std::optional<LevelCheckpoint> checkpoint_;
     double outro_ = 0.0;
     bool leaving_ = false;
 };

@@ -9,6 +9,7 @@
 #include <e2d/core/scene_registry.hpp>
 #include <e2d/physics/physics_system.hpp>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,12 +71,32 @@ public:
     std::unique_ptr<Level> level;
 };
 
-Outcome play(const std::vector<Hold>& script, double limit, double timeOffset = 0.0) {
+// A detour from the script: at step `at` the level is saved, played `steps` steps with `input`
+// held (somewhere else entirely), then restored, and the script goes on from step `at`.
+struct Detour {
+    int at = -1;
+    int steps = 0;
+    PlayerInput input{};
+    glm::vec2 from{0.0f, 0.0f};    // where the player was at the save (filled in)
+    glm::vec2 reached{0.0f, 0.0f}; // where the detour took it
+};
+
+Outcome play(const std::vector<Hold>& script, double limit, double timeOffset = 0.0,
+             Detour* detour = nullptr) {
     LevelRun game;
     Level& level = *game.level;
     Outcome run;
     bool jumpWasHeld = false;
     for (int i = 0; i < static_cast<int>(limit / kDt); ++i) {
+        if (detour != nullptr && i == detour->at) {
+            const platformer::LevelCheckpoint checkpoint = level.save();
+            detour->from = level.playerPosition();
+            for (int k = 0; k < detour->steps; ++k) {
+                game.step(detour->input);
+            }
+            detour->reached = level.playerPosition();
+            level.restore(checkpoint);
+        }
         const double t = i * kDt + timeOffset;
         Hold now;
         for (const Hold& h : script) {
@@ -138,6 +159,36 @@ TEST(PlatformerLevel, ScriptedRunCollectsEveryCoinRidesTheLiftAndReachesTheGoal)
     EXPECT_GT(run.stepsOnOneWay, 5);  // jumped up through the one-way platform and landed on it
     EXPECT_GT(run.maxY, 8.0f * kTile + Level::playerHalfSize().y - 0.05f * kTile);
     EXPECT_EQ(run.jumps, 3);
+}
+
+// A checkpoint saved mid-level (the level's rules and the scene's physics: contacts, the lift,
+// the character), a second of play somewhere else, the checkpoint restored: the rest of the
+// scripted run ends exactly as the run that never left.
+TEST(PlatformerLevel, ACheckpointRestoredMidLevelFinishesTheRunTheSame) {
+    const Outcome straight = play(winningScript(), 20.0);
+    ASSERT_TRUE(straight.won);
+    // At 3 s the player runs towards the lift, which is moving; the detour runs back left and
+    // jumps for a second.
+    for (int at : {180, 300}) {
+        SCOPED_TRACE(at);
+        Detour detour;
+        detour.at = at;
+        detour.steps = 60;
+        detour.input.move = -1.0f;
+        detour.input.jumpHeld = true;
+        detour.input.jumpPressed = true;
+        const Outcome restored = play(winningScript(), 20.0, 0.0, &detour);
+        EXPECT_GT(glm::length(detour.reached - detour.from), 1.0f * kTile) << "the detour went elsewhere";
+        EXPECT_TRUE(restored.won);
+        EXPECT_EQ(restored.score, straight.score);
+        EXPECT_EQ(restored.jumps, straight.jumps);
+        EXPECT_EQ(restored.coinEvents, straight.coinEvents);
+        EXPECT_EQ(restored.stepsOnMoving, straight.stepsOnMoving);
+        EXPECT_EQ(restored.stepsOnOneWay, straight.stepsOnOneWay);
+        EXPECT_EQ(restored.time, straight.time);
+        EXPECT_EQ(restored.end, straight.end); // bit for bit
+        EXPECT_EQ(restored.maxY, straight.maxY);
+    }
 }
 
 TEST(PlatformerLevel, TheShuttleCarriesThePlayerToTheBonusCoin) {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-#include "error_format.hpp"
-
 #include <e2d/audio/audio_source.hpp>
+
 #include <e2d/audio/audio_system.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/scene.hpp>
 
@@ -11,7 +11,7 @@
 
 namespace e2d::audio {
 
-using detail::throwInvalid;
+using core::throwInvalid;
 
 namespace {
 

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
 // The Mixer's device handling, sound cache and public entry points. Voices: voices.cpp.
-#include "error_format.hpp"
 #include "mixer_impl.hpp"
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 
 #include <cmath>
 
 namespace e2d::audio {
 
-using detail::throwInvalid;
+using core::throwInvalid;
 
 namespace {
 
@@ -27,12 +27,12 @@ void checkSpatial(const SpatialDef& s, const char* function) {
     check(s.maxPanningDistance, "spatial.maxPanningDistance");
     if (s.maxAttenuationDistance <= s.minAttenuationDistance) {
         throwInvalid(function, "spatial.maxAttenuationDistance",
-                     "> minAttenuationDistance (" + detail::formatValue(s.minAttenuationDistance) + ")",
+                     "> minAttenuationDistance (" + core::formatNumber(s.minAttenuationDistance) + ")",
                      s.maxAttenuationDistance);
     }
     if (s.maxPanningDistance <= s.minPanningDistance) {
         throwInvalid(function, "spatial.maxPanningDistance",
-                     "> minPanningDistance (" + detail::formatValue(s.minPanningDistance) + ")",
+                     "> minPanningDistance (" + core::formatNumber(s.minPanningDistance) + ")",
                      s.maxPanningDistance);
     }
 }
@@ -346,7 +346,7 @@ SoundId Mixer::add(SoundData data, std::string name) {
     for (std::size_t i = 0; i < data.samples.size(); ++i) {
         if (!(std::abs(data.samples[i]) <= limit)) {
             throwInvalid(fn, "data.samples[" + std::to_string(i) + "]",
-                         "finite and within +-" + detail::formatValue(limit) + " (limits.maxSampleMagnitude)",
+                         "finite and within +-" + core::formatNumber(limit) + " (limits.maxSampleMagnitude)",
                          data.samples[i]);
         }
     }
@@ -358,14 +358,14 @@ SoundId Mixer::add(SoundData data, std::string name) {
     splitChannels(data, sound);
     m.uploadSound(sound);
     m.sounds.push_back(std::move(sound));
-    return SoundId{static_cast<std::uint32_t>(m.sounds.size())};
+    return SoundId::forSlot(static_cast<std::uint32_t>(m.sounds.size() - 1));
 }
 
 const SoundInfo& Mixer::soundInfo(SoundId sound) const {
-    if (sound.isNull() || sound.index1 > impl_->sounds.size()) {
+    if (!core::slotOf(sound, impl_->sounds.size())) {
         throw core::Error("audio::Mixer::soundInfo(): unknown sound id " + std::to_string(sound.index1));
     }
-    return impl_->sounds[sound.index1 - 1].info;
+    return impl_->sounds[sound.index()].info;
 }
 
 int Mixer::soundCount() const noexcept { return static_cast<int>(impl_->sounds.size()); }

@@ -1,18 +1,19 @@
 // SPDX-License-Identifier: MIT
 // The Mixer's voice pool: starting, stealing, fades, gains, streams, and the per-frame update.
-#include "error_format.hpp"
 #include "mixer_impl.hpp"
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 namespace e2d::audio {
 
-using detail::throwInvalid;
+using core::throwInvalid;
 using detail::Voice;
 
 namespace {
@@ -27,7 +28,7 @@ void checkPlayDef(const PlayDef& def, const char* fn) {
         throwInvalid(fn, "pitch", "in 0.01..16", def.pitch);
     }
     if (!std::isfinite(def.position.x) || !std::isfinite(def.position.y)) {
-        throwInvalid(fn, "position", "finite", def.position.x + def.position.y);
+        throwInvalid(fn, "position", "finite", def.position);
     }
     if (!std::isfinite(def.attenuationFactor) || def.attenuationFactor < 0.0f) {
         throwInvalid(fn, "attenuationFactor", ">= 0", def.attenuationFactor);
@@ -60,11 +61,9 @@ void beginFade(Voice& voice, float to, double duration, detail::FadeEnd end) {
 // Impl: voices ------------------------------------------------------------------------------
 
 Voice* Mixer::Impl::find(VoiceId id) noexcept {
-    if (id.index1 == 0 || id.index1 > voices.size()) {
-        return nullptr;
-    }
-    Voice& voice = voices[id.index1 - 1];
-    return voice.busy && voice.generation == id.generation ? &voice : nullptr;
+    const std::optional<std::uint32_t> index = core::findSlot(
+        id, voices.size(), [this](std::uint32_t i) { return voices[i].busy ? voices[i].generation : 0u; });
+    return index ? &voices[*index] : nullptr;
 }
 
 const Voice* Mixer::Impl::find(VoiceId id) const noexcept {
@@ -139,13 +138,11 @@ void Mixer::Impl::releaseVoice(Voice& voice) {
     voice.fading = false;
     voice.gain = 0.0f;
     voice.appliedLeft = voice.appliedRight = -1.0f;
-    if (++voice.generation == 0) {
-        voice.generation = 1;
-    }
+    voice.generation = core::nextGeneration(voice.generation);
 }
 
 void Mixer::Impl::computeGain(Voice& voice, float& left, float& right) const {
-    const detail::Sound& sound = sounds[voice.sound.index1 - 1];
+    const detail::Sound& sound = sounds[voice.sound.index()];
     float gain = voice.def.gain * voice.fade * busGains[static_cast<std::size_t>(voice.def.bus)] * masterGain;
     StereoGains pan{kCentre, kCentre};
     if (voice.def.spatial) {
@@ -187,7 +184,7 @@ void Mixer::Impl::startVoice(Voice& voice, double startFrame) {
         applyGains(voice);
         return;
     }
-    const detail::Sound& sound = sounds[voice.sound.index1 - 1];
+    const detail::Sound& sound = sounds[voice.sound.index()];
     const ALuint ids[2] = {voice.sourceLeft, voice.sourceRight};
     alSourceStopv(2, ids);
     alSourcei(voice.sourceLeft, AL_BUFFER, 0);
@@ -232,7 +229,7 @@ double Mixer::Impl::voicePosition(const Voice& voice) const {
     if (!voice.stream) {
         return offset;
     }
-    const std::int64_t frames = sounds[voice.sound.index1 - 1].info.frames;
+    const std::int64_t frames = sounds[voice.sound.index()].info.frames;
     const std::int64_t position = voice.stream->playedFrames + offset;
     return static_cast<double>(frames > 0 ? position % frames : position);
 }
@@ -240,7 +237,7 @@ double Mixer::Impl::voicePosition(const Voice& voice) const {
 // Streams -----------------------------------------------------------------------------------
 
 bool Mixer::Impl::openStream(Voice& voice, double startFrame) {
-    const detail::Sound& sound = sounds[voice.sound.index1 - 1];
+    const detail::Sound& sound = sounds[voice.sound.index()];
     if (!voice.stream) {
         voice.stream = std::make_unique<detail::Stream>();
     }
@@ -284,7 +281,7 @@ bool Mixer::Impl::openStream(Voice& voice, double startFrame) {
 
 bool Mixer::Impl::fillChunk(Voice& voice, ALuint left, ALuint right) {
     detail::Stream& stream = *voice.stream;
-    const detail::Sound& sound = sounds[voice.sound.index1 - 1];
+    const detail::Sound& sound = sounds[voice.sound.index()];
     const int channels = sound.info.channels;
     const auto chunk = static_cast<std::int64_t>(stream.interleaved.size()) / channels;
     std::int64_t filled = 0;
@@ -292,7 +289,7 @@ bool Mixer::Impl::fillChunk(Voice& voice, ALuint left, ALuint right) {
     while (filled < chunk && !stream.exhausted) {
         const std::int64_t got = stream.decoder->read(stream.interleaved.data() + filled * channels, chunk - filled);
         if (got < 0) {
-            detail::Sound& damaged = sounds[voice.sound.index1 - 1];
+            detail::Sound& damaged = sounds[voice.sound.index()];
             if (!damaged.streamErrorLogged) {
                 logger->error("audio::Mixer: stream stopped: " + stream.decoder->error());
                 damaged.streamErrorLogged = true;
@@ -404,7 +401,7 @@ void Mixer::Impl::updateVoice(Voice& voice, double dt) {
     if (voice.state == VoiceState::Playing && !advanceFade(voice, dt)) {
         return;
     }
-    const detail::Sound& sound = sounds[voice.sound.index1 - 1];
+    const detail::Sound& sound = sounds[voice.sound.index()];
     if (!device || voice.sourceLeft == 0) {
         if (voice.state == VoiceState::Playing) {
             voice.silentFrame += dt * sound.info.sampleRate * voice.def.pitch;
@@ -445,11 +442,11 @@ void Mixer::Impl::updateVoice(Voice& voice, double dt) {
 VoiceId Mixer::play(SoundId sound, const PlayDef& def) {
     constexpr const char* fn = "audio::Mixer::play()";
     Impl& m = *impl_;
-    if (sound.isNull() || sound.index1 > m.sounds.size()) {
+    if (!core::slotOf(sound, m.sounds.size())) {
         throw core::Error(std::string(fn) + ": unknown sound id " + std::to_string(sound.index1));
     }
     checkPlayDef(def, fn);
-    if (!m.sounds[sound.index1 - 1].info.ok()) {
+    if (!m.sounds[sound.index()].info.ok()) {
         return {};
     }
     m.makeCurrent();
@@ -475,7 +472,7 @@ VoiceId Mixer::play(SoundId sound, const PlayDef& def) {
         m.releaseVoice(voice); // the file could not be streamed (already logged)
         return {};
     }
-    return VoiceId{static_cast<std::uint32_t>(index + 1), voice.generation};
+    return VoiceId::forSlot(static_cast<std::uint32_t>(index), voice.generation);
 }
 
 bool Mixer::stop(VoiceId id, double fadeOut) {
@@ -662,7 +659,7 @@ double Mixer::playbackPosition(VoiceId id) const {
         return 0.0;
     }
     impl_->makeCurrent();
-    const int rate = impl_->sounds[voice->sound.index1 - 1].info.sampleRate;
+    const int rate = impl_->sounds[voice->sound.index()].info.sampleRate;
     return rate > 0 ? impl_->voicePosition(*voice) / rate : 0.0;
 }
 

@@ -2,8 +2,7 @@
 #include <e2d/core/clock.hpp>
 
 #include <e2d/core/error.hpp>
-
-#include "format.hpp"
+#include <e2d/core/error_text.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -47,7 +46,7 @@ double Clock::time() const {
 void Clock::setTimeScale(double scale) {
     if (!std::isfinite(scale) || scale < 0.0) {
         throw Error("core::Clock::setTimeScale(): scale must be finite and >= 0, got " +
-                    detail::formatNumber(scale));
+                    formatNumber(scale));
     }
     const double t = now();
     scaledBase_ += (t - scaleChangedAt_) * scale_;

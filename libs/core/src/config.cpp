@@ -2,9 +2,8 @@
 #include <e2d/core/config.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/printable.hpp>
-
-#include "format.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -19,17 +18,12 @@ namespace {
 
 using ParseError = std::optional<std::string>;
 
-// Quoted for a message, escaped where not printable.
-std::string quote(std::string_view text) {
-    return detail::quoted(printable(text));
-}
-
 std::string describe(const ConfigBounds& bounds) {
     if (bounds.max == std::numeric_limits<double>::infinity()) {
-        return std::string(bounds.minExclusive ? "> " : ">= ") + detail::formatNumber(bounds.min);
+        return std::string(bounds.minExclusive ? "> " : ">= ") + formatNumber(bounds.min);
     }
-    return std::string(bounds.minExclusive ? "in (" : "in [") + detail::formatNumber(bounds.min) + ", " +
-           detail::formatNumber(bounds.max) + "]";
+    return std::string(bounds.minExclusive ? "in (" : "in [") + formatNumber(bounds.min) + ", " +
+           formatNumber(bounds.max) + "]";
 }
 
 bool contains(const ConfigBounds& bounds, double v) {
@@ -251,7 +245,7 @@ ConfigReport ConfigReader::read(std::string_view text, std::string_view sourceNa
                 best = known;
             }
         }
-        return best.empty() ? std::string() : " (did you mean " + detail::quoted(best) + "?)";
+        return best.empty() ? std::string() : " (did you mean " + quote(best) + "?)";
     };
 
     constexpr std::string_view kBom = "\xEF\xBB\xBF";

@@ -2,8 +2,7 @@
 #include <e2d/core/fixed_stepper.hpp>
 
 #include <e2d/core/error.hpp>
-
-#include "format.hpp"
+#include <e2d/core/error_text.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +13,7 @@ namespace e2d::core {
 FixedStepper::FixedStepper(double step, int maxStepsPerFrame) : step_(step), maxSteps_(maxStepsPerFrame) {
     if (!std::isfinite(step) || step <= 0.0) {
         throw Error("core::FixedStepper::FixedStepper(): step must be finite and > 0, got " +
-                    detail::formatNumber(step));
+                    formatNumber(step));
     }
     if (maxStepsPerFrame < 1) {
         throw Error("core::FixedStepper::FixedStepper(): maxStepsPerFrame must be >= 1, got " +
@@ -25,7 +24,7 @@ FixedStepper::FixedStepper(double step, int maxStepsPerFrame) : step_(step), max
 int FixedStepper::advance(double frameDt) {
     if (!std::isfinite(frameDt) || frameDt < 0.0) {
         throw Error("core::FixedStepper::advance(): frameDt must be finite and >= 0, got " +
-                    detail::formatNumber(frameDt));
+                    formatNumber(frameDt));
     }
     accumulator_ += frameDt;
     // A step is due when the accumulator is within a millionth of a step of it: frames of

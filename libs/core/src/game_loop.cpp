@@ -3,11 +3,10 @@
 
 #include <e2d/core/clock.hpp>
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/fixed_stepper.hpp>
 #include <e2d/core/scene_director.hpp>
 #include <e2d/core/system.hpp>
-
-#include "format.hpp"
 
 #include <cmath>
 #include <string>
@@ -30,11 +29,11 @@ GameLoop::GameLoop(SceneDirector& director, FixedStepper& stepper, Clock& clock,
     : director_(director), stepper_(stepper), clock_(clock), def_(def) {
     constexpr const char* kCtor = "core::GameLoop::GameLoop(): ";
     if (!(def.maxFrameTime > 0.0) || std::isnan(def.maxFrameTime)) {
-        throw Error(std::string(kCtor) + "maxFrameTime must be > 0, got " + detail::formatNumber(def.maxFrameTime));
+        throw Error(std::string(kCtor) + "maxFrameTime must be > 0, got " + formatNumber(def.maxFrameTime));
     }
     if (!std::isfinite(def.fixedFrameTime) || def.fixedFrameTime < 0.0) {
         throw Error(std::string(kCtor) + "fixedFrameTime must be finite and >= 0, got " +
-                    detail::formatNumber(def.fixedFrameTime));
+                    formatNumber(def.fixedFrameTime));
     }
     if (def.frameLimit < 0) {
         throw Error(std::string(kCtor) + "frameLimit must be >= 0, got " + std::to_string(def.frameLimit));

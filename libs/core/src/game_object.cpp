@@ -2,10 +2,11 @@
 #include <e2d/core/game_object.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/log.hpp>
 #include <e2d/core/scene.hpp>
 
-#include "format.hpp"
+#include "type_name.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -27,29 +28,18 @@ Logger* GameObject::logger() const noexcept {
 
 std::string GameObject::describe() const {
     if (!name_.empty()) {
-        return "object " + detail::quoted(name_);
+        return "object " + quote(name_);
     }
     if (!tag_.empty()) {
-        return "object tagged " + detail::quoted(tag_);
+        return "object tagged " + quote(tag_);
     }
-    return "object " + std::to_string(id_.index);
+    return "object " + std::to_string(id_.index());
 }
 
 namespace {
 
 bool finite(glm::vec2 v) noexcept {
     return std::isfinite(v.x) && std::isfinite(v.y);
-}
-
-// Appended piece by piece: GCC 12 at -O3 misreads `"(" + std::string` as an overlapping
-// memcpy (-Werror=restrict, a known false positive).
-template <int N>
-std::string formatVector(glm::vec<N, float> v) {
-    std::string out = "(";
-    for (int i = 0; i < N; ++i) {
-        out.append(i == 0 ? "" : ", ").append(detail::formatNumber(v[i]));
-    }
-    return out.append(")");
 }
 
 } // namespace
@@ -102,7 +92,7 @@ void GameObject::setScale(glm::vec2 scale) {
 
 void GameObject::setOrientation(float radians) {
     if (!std::isfinite(radians)) {
-        refuseNonFinite("setOrientation", "orientation", detail::formatNumber(radians));
+        refuseNonFinite("setOrientation", "orientation", formatNumber(radians));
     }
     notePoseChange();
     orientation_ = radians;
@@ -116,7 +106,7 @@ void GameObject::setOrientation(float radians) {
 
 void GameObject::rotate(float radians) {
     if (!std::isfinite(orientation_ + radians)) {
-        refuseNonFinite("rotate", "angle", detail::formatNumber(radians));
+        refuseNonFinite("rotate", "angle", formatNumber(radians));
     }
     setOrientation(orientation_ + radians);
 }
@@ -237,12 +227,12 @@ void GameObject::addChild(GameObject& child) {
         throw Error("core::GameObject::addChild(): " + describe() + " cannot be its own child");
     }
     if (child.scene_ != scene_) {
-        throw Error("core::GameObject::addChild(): object " + std::to_string(child.id_.index) +
+        throw Error("core::GameObject::addChild(): object " + std::to_string(child.id_.index()) +
                     " belongs to another scene");
     }
     if (child.isAncestorOf(*this)) {
-        throw Error("core::GameObject::addChild(): object " + std::to_string(child.id_.index) +
-                    " is an ancestor of object " + std::to_string(id_.index) + ", this would make a cycle");
+        throw Error("core::GameObject::addChild(): object " + std::to_string(child.id_.index()) +
+                    " is an ancestor of object " + std::to_string(id_.index()) + ", this would make a cycle");
     }
     if (child.parent_ == this) {
         return;
@@ -255,8 +245,8 @@ void GameObject::addChild(GameObject& child) {
 
 void GameObject::removeChild(GameObject& child) {
     if (child.parent_ != this) {
-        throw Error("core::GameObject::removeChild(): object " + std::to_string(child.id_.index) +
-                    " is not a child of object " + std::to_string(id_.index));
+        throw Error("core::GameObject::removeChild(): object " + std::to_string(child.id_.index()) +
+                    " is not a child of object " + std::to_string(id_.index()));
     }
     child.detachFromParent();
 }
@@ -283,7 +273,7 @@ void GameObject::detachFromParent() noexcept {
 
 void GameObject::warnRefusedUnique(const std::type_info& type) const {
     if (Logger* log = logger()) {
-        log->warning(std::string("core::GameObject::addComponent(): object ") + std::to_string(id_.index) +
+        log->warning(std::string("core::GameObject::addComponent(): object ") + std::to_string(id_.index()) +
                      " already has a unique component of type " + detail::demangledName(type) + ", the new one is refused");
     }
 }
@@ -296,7 +286,7 @@ void GameObject::removeComponent(Component* component) {
     if (std::none_of(components_.begin(), components_.end(), owns) &&
         std::none_of(pendingAdd_.begin(), pendingAdd_.end(), owns)) {
         throw Error("core::GameObject::removeComponent(): the component does not belong to object " +
-                    std::to_string(id_.index));
+                    std::to_string(id_.index()));
     }
     if (std::find(pendingRemove_.begin(), pendingRemove_.end(), component) == pendingRemove_.end()) {
         pendingRemove_.push_back(component);

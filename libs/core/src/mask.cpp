@@ -2,8 +2,8 @@
 #include <e2d/core/mask.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 
-#include "format.hpp"
 
 namespace e2d::core {
 
@@ -15,7 +15,7 @@ Mask MaskRegistry::create(std::string_view name) {
         return it->second;
     }
     if (size() >= kMaxMasks) {
-        throw Error("core::MaskRegistry::create(): cannot create mask " + detail::quoted(name) +
+        throw Error("core::MaskRegistry::create(): cannot create mask " + quote(name) +
                     ", the limit of " + std::to_string(kMaxMasks) + " masks is reached");
     }
     const Mask mask(std::uint64_t{1} << masks_.size());
@@ -26,7 +26,7 @@ Mask MaskRegistry::create(std::string_view name) {
 Mask MaskRegistry::get(std::string_view name) const {
     const auto it = masks_.find(name);
     if (it == masks_.end()) {
-        throw Error("core::MaskRegistry::get(): no mask named " + detail::quoted(name));
+        throw Error("core::MaskRegistry::get(): no mask named " + quote(name));
     }
     return it->second;
 }

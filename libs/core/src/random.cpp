@@ -2,8 +2,7 @@
 #include <e2d/core/random.hpp>
 
 #include <e2d/core/error.hpp>
-
-#include "format.hpp"
+#include <e2d/core/error_text.hpp>
 
 #include <cmath>
 #include <string>
@@ -41,11 +40,11 @@ float Random::range01() {
 float Random::range(float min, float max) {
     if (!std::isfinite(min) || !std::isfinite(max) || min > max) {
         throw Error("core::Random::range(): bounds must be finite with min <= max, got min " +
-                    detail::formatNumber(min) + ", max " + detail::formatNumber(max));
+                    formatNumber(min) + ", max " + formatNumber(max));
     }
     if (!std::isfinite(max - min)) {
         throw Error("core::Random::range(): max - min overflows a float, got min " +
-                    detail::formatNumber(min) + ", max " + detail::formatNumber(max));
+                    formatNumber(min) + ", max " + formatNumber(max));
     }
     const float u = range01();
     if (min == max) {

@@ -4,10 +4,11 @@
 #include <e2d/core/error.hpp>
 #include <e2d/core/scene_host.hpp>
 
-#include "format.hpp"
+#include "type_name.hpp"
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace e2d::core {
@@ -32,14 +33,14 @@ GameObject& Scene::createGameObject() {
         slots_.emplace_back();
     }
     Slot& slot = slots_[index];
-    slot.object.reset(new GameObject(*this, GameObjectId{index, slot.generation, tag_}, objectsCreated_++));
+    slot.object.reset(new GameObject(*this, GameObjectId::forSlot(index, slot.generation, tag_), objectsCreated_++));
     pendingAdd_.push_back(slot.object.get());
     return *slot.object;
 }
 
 void Scene::destroyGameObject(GameObject& object) {
     if (object.scene_ != this) {
-        throw Error("core::Scene::destroyGameObject(): object " + std::to_string(object.id().index) +
+        throw Error("core::Scene::destroyGameObject(): object " + std::to_string(object.id().index()) +
                     " belongs to another scene");
     }
     if (!object.pendingDestroy_) {
@@ -58,11 +59,10 @@ bool Scene::destroyGameObject(GameObjectId id) {
 }
 
 GameObject* Scene::find(GameObjectId id) const noexcept {
-    if (id.isNull() || id.scene != tag_ || id.index >= slots_.size()) {
-        return nullptr;
-    }
-    const Slot& slot = slots_[id.index];
-    return slot.generation == id.generation ? slot.object.get() : nullptr;
+    // A free slot's generation is already the next object's; its object is null.
+    const std::optional<std::uint32_t> index =
+        findSlot(id, slots_.size(), [this](std::uint32_t i) { return slots_[i].generation; }, tag_);
+    return index ? slots_[*index].object.get() : nullptr;
 }
 
 namespace {
@@ -117,10 +117,9 @@ GameObject* Scene::findFirstByTag(std::string_view tag) const noexcept {
 }
 
 void Scene::freeSlot(GameObject& object) {
-    Slot& slot = slots_[object.id().index];
-    // Generation 0 is reserved for the null id.
-    slot.generation = slot.generation == UINT32_MAX ? 1 : slot.generation + 1;
-    freeSlots_.push_back(object.id().index);
+    Slot& slot = slots_[object.id().index()];
+    slot.generation = nextGeneration(slot.generation);
+    freeSlots_.push_back(object.id().index());
     slot.object.reset();
 }
 
@@ -133,7 +132,7 @@ void Scene::attachHost(SceneHost* host, std::string name) {
         tag_ = host->nextSceneTag();
         for (Slot& slot : slots_) {
             if (slot.object) {
-                slot.object->id_.scene = tag_;
+                slot.object->id_.owner = tag_;
             }
         }
     }

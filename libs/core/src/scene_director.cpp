@@ -2,11 +2,10 @@
 #include <e2d/core/scene_director.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/log.hpp>
 #include <e2d/core/scene_registry.hpp>
 #include <e2d/core/system.hpp>
-
-#include "format.hpp"
 
 #include <algorithm>
 
@@ -53,19 +52,19 @@ bool SceneDirector::applyPendingChange() {
 
 bool SceneDirector::switchTo(std::string_view name) {
     if (!registry_.contains(name)) {
-        logger_.error("core::SceneDirector: unknown scene " + detail::quoted(name) +
-                      (scene_ ? ", keeping scene " + detail::quoted(scene_->name()) : std::string(", no scene is running")));
+        logger_.error("core::SceneDirector: unknown scene " + quote(name) +
+                      (scene_ ? ", keeping scene " + quote(scene_->name()) : std::string(", no scene is running")));
         return false;
     }
     if (scene_) {
-        logger_.info("core::SceneDirector: leaving scene " + detail::quoted(scene_->name()));
+        logger_.info("core::SceneDirector: leaving scene " + quote(scene_->name()));
         scene_->dispatchTerminate();
         scene_.reset();
         for (System* system : systems_) {
             system->clear();
         }
     }
-    logger_.info("core::SceneDirector: entering scene " + detail::quoted(name));
+    logger_.info("core::SceneDirector: entering scene " + quote(name));
     scene_ = registry_.create(name);
     scene_->attachHost(this, std::string(name));
     scene_->dispatchInitialize();

@@ -2,8 +2,8 @@
 #include <e2d/core/scene_registry.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 
-#include "format.hpp"
 
 namespace e2d::core {
 
@@ -12,10 +12,10 @@ void SceneRegistry::add(std::string name, Factory factory) {
         throw Error("core::SceneRegistry::add(): scene name must not be empty");
     }
     if (!factory) {
-        throw Error("core::SceneRegistry::add(): factory for scene " + detail::quoted(name) + " is empty");
+        throw Error("core::SceneRegistry::add(): factory for scene " + quote(name) + " is empty");
     }
     if (factories_.contains(name)) {
-        throw Error("core::SceneRegistry::add(): a scene named " + detail::quoted(name) +
+        throw Error("core::SceneRegistry::add(): a scene named " + quote(name) +
                     " is already registered");
     }
     factories_.emplace(std::move(name), std::move(factory));

@@ -196,7 +196,7 @@ TEST_F(SceneDirectorTest, IdKeptFromThePreviousSceneIsRefusedByTheNextOne) {
     // The level's first object has the same slot and generation as the menu's did...
     ASSERT_EQ(level.gameObjects().size(), 1u);
     const e2d::core::GameObjectId fresh = level.gameObjects()[0]->id();
-    EXPECT_EQ(fresh.index, kept.index);
+    EXPECT_EQ(fresh.index(), kept.index());
     EXPECT_EQ(fresh.generation, kept.generation);
     // ...but the old id is refused like a stale one.
     EXPECT_NE(fresh, kept);

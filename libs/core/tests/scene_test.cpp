@@ -315,7 +315,7 @@ TEST(Scene, StaleIdIsDetectedAfterTheSlotIsReused) {
     scene.beginFrame();
 
     GameObject& reuser = scene.createGameObject();
-    EXPECT_EQ(reuser.id().index, old.index); // same slot...
+    EXPECT_EQ(reuser.id().index(), old.index()); // same slot...
     EXPECT_NE(reuser.id().generation, old.generation); // ...new generation
     EXPECT_EQ(scene.find(old), nullptr);
     EXPECT_EQ(scene.find(reuser.id()), &reuser);
@@ -341,7 +341,7 @@ TEST(Scene, IdOfAnotherSceneIsRefused) {
     GameObject& before = two.createGameObject(); // retagged by attachHost
     two.attachHost(&host, "two");
     EXPECT_NE(one.tag(), two.tag());
-    EXPECT_EQ(early.index, before.id().index);
+    EXPECT_EQ(early.index(), before.id().index());
     EXPECT_EQ(early.generation, before.id().generation);
     EXPECT_EQ(two.find(early), nullptr);
     EXPECT_FALSE(two.destroyGameObject(early));

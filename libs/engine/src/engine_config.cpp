@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/engine/engine_config.hpp>
 
+#include <e2d/core/error_text.hpp>
+
 #include <algorithm>
-#include <charconv>
 #include <system_error>
 
 namespace e2d::engine {
@@ -51,6 +52,7 @@ core::ConfigReader readerFor(EngineConfig& c) {
     r.add("allowedPenetration", c.allowedPenetration, kNonNegative);
     r.add("penetrationBiasFactor", c.penetrationBiasFactor, ConfigBounds{0.0, 1.0});
     r.add("minRigidbodySpeed", c.minRigidbodySpeed, kNonNegative);
+    r.add("physicsWorkers", c.physicsWorkers, ConfigBounds{1.0, static_cast<double>(physics::kMaxWorkers)});
     r.add("unitsPerMetre", c.unitsPerMetre, kPositive);
     // SOUND
     r.add("minAttenuationDistance", c.minAttenuationDistance, kNonNegative);
@@ -75,12 +77,6 @@ core::ConfigReader readerFor(EngineConfig& c) {
     return r;
 }
 
-std::string number(float value) {
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
-
 // A min above its max is blamed on whichever of the two was written last; both go back to
 // their defaults, which are consistent.
 void checkOrder(EngineConfig& c, core::ConfigReport& report, std::string_view file, std::string_view minKey,
@@ -90,10 +86,10 @@ void checkOrder(EngineConfig& c, core::ConfigReport& report, std::string_view fi
     }
     if (report.lineOf(maxKey) > report.lineOf(minKey)) {
         report.error(file, maxKey,
-                     "must be >= " + std::string(minKey) + " (" + number(c.*minField) + "), got " + number(c.*maxField));
+                     "must be >= " + std::string(minKey) + " (" + core::formatNumber(c.*minField) + "), got " + core::formatNumber(c.*maxField));
     } else {
         report.error(file, minKey,
-                     "must be <= " + std::string(maxKey) + " (" + number(c.*maxField) + "), got " + number(c.*minField));
+                     "must be <= " + std::string(maxKey) + " (" + core::formatNumber(c.*maxField) + "), got " + core::formatNumber(c.*minField));
     }
     const EngineConfig defaults;
     c.*minField = defaults.*minField;
@@ -111,6 +107,7 @@ physics::WorldDef makeWorldDef(const EngineConfig& config) {
     def.solver.subSteps = std::min(config.collisionResolutionSteps, 64);
     def.solver.velocityIterations = std::min(config.collisionResolutionSteps, 256);
     def.solver.linearSleepTolerance = config.minRigidbodySpeed;
+    def.workerCount = config.physicsWorkers;
     // Both keys are already checked by the reader (>= 0, and [0, 1]); only the physics' upper
     // bound on the overlap is left, a cap like the sub-steps' above rather than an error.
     def.solver.classicAllowedPenetration =

@@ -57,6 +57,7 @@ TEST(EngineConfig, EveryKeyOfTheFileIsRead) {
     EXPECT_EQ(c.allowedPenetration, 0.001f);
     EXPECT_EQ(c.penetrationBiasFactor, 0.1f);
     EXPECT_EQ(c.minRigidbodySpeed, 0.05f);
+    EXPECT_EQ(c.physicsWorkers, 2);
     EXPECT_EQ(c.unitsPerMetre, 100.0);
     EXPECT_EQ(c.minAttenuationDistance, 100.0f);
     EXPECT_EQ(c.maxAttenuationDistance, 900.0f);
@@ -86,6 +87,7 @@ TEST(EngineConfig, PhysicsKeysAreSIWhateverTheUnitsPerMetre) {
     EXPECT_EQ(def.solver.subSteps, 10);
     EXPECT_EQ(def.solver.velocityIterations, 10);
     EXPECT_FLOAT_EQ(def.solver.linearSleepTolerance, 0.05f);
+    EXPECT_EQ(def.workerCount, 2);
     // 1 mm of allowed penetration; the bias factor has no unit.
     EXPECT_FLOAT_EQ(def.solver.classicAllowedPenetration, 0.001f);
     EXPECT_FLOAT_EQ(def.solver.classicPositionBias, 0.1f);
@@ -96,6 +98,7 @@ TEST(EngineConfig, PhysicsKeysAreSIWhateverTheUnitsPerMetre) {
     EXPECT_FLOAT_EQ(defaults.gravity.y, engine::EngineConfig{}.gravityY);
     EXPECT_EQ(defaults.solver.subSteps, engine::EngineConfig{}.collisionResolutionSteps);
     EXPECT_EQ(defaults.solver.mode, physics::SolverMode::SoftStep);
+    EXPECT_EQ(defaults.workerCount, 1);
     // The seed's position-correction defaults are the classic solver's own, bit for bit.
     EXPECT_EQ(defaults.solver.classicAllowedPenetration, physics::SolverDef{}.classicAllowedPenetration);
     EXPECT_EQ(defaults.solver.classicPositionBias, physics::SolverDef{}.classicPositionBias);
@@ -183,7 +186,8 @@ TEST(EngineConfig, BadValuesAreErrorsNamingFileLineAndKey) {
                                                  "unitsPerMetre = -100\n"
                                                  "vsync = maybe\n"
                                                  "this line has no equals sign\n"
-                                                 "voiceCount = 2000\n");
+                                                 "voiceCount = 2000\n"
+                                                 "physicsWorkers = 0\n");
     const EngineConfigResult r = loadEngineConfig(path, true);
     const std::string f = path.string();
     EXPECT_THAT(r.errors,
@@ -195,19 +199,21 @@ TEST(EngineConfig, BadValuesAreErrorsNamingFileLineAndKey) {
                             f + ":7: unitsPerMetre: must be > 0, got -100",
                             f + ":8: vsync: expected true or false, got 'maybe'",
                             f + ":9: expected 'key = value', got 'this line has no equals sign'",
-                            f + ":10: voiceCount: must be in [1, 1024], got 2000"));
+                            f + ":10: voiceCount: must be in [1, 1024], got 2000",
+                            f + ":11: physicsWorkers: must be in [1, 64], got 0"));
     EXPECT_THAT(r.warnings, IsEmpty());
 }
 
 TEST(EngineConfig, UnknownAndDuplicateKeysAreWarningsWithTheirLine) {
     const std::filesystem::path path =
-        writeTemp("warn.txt", "firstScene = A\nwindowWidht = 800\nfirstScene = B\n\n  gravityZ = 3\n");
+        writeTemp("warn.txt", "firstScene = A\nwindowWidht = 800\nfirstScene = B\n\n  gravityZ = 3\nphysicsWorker = 2\n");
     const EngineConfigResult r = loadEngineConfig(path, true);
     const std::string f = path.string();
     EXPECT_THAT(r.errors, IsEmpty());
     EXPECT_THAT(r.warnings, ElementsAre(f + ":2: windowWidht: unknown key, ignored (did you mean 'windowWidth'?)",
                                         f + ":3: firstScene: duplicate key, replaces the value set on line 1",
-                                        f + ":5: gravityZ: unknown key, ignored (did you mean 'gravityX'?)"));
+                                        f + ":5: gravityZ: unknown key, ignored (did you mean 'gravityX'?)",
+                                        f + ":6: physicsWorker: unknown key, ignored (did you mean 'physicsWorkers'?)"));
     EXPECT_EQ(r.config.firstScene, "B");
     EXPECT_EQ(r.config.windowWidth, engine::EngineConfig{}.windowWidth);
 }

@@ -1,31 +1,24 @@
 // SPDX-License-Identifier: MIT
 // Named actions: bindings, per-frame evaluation, rebinding by listening.
 #include "action_name.hpp"
-#include "quoted.hpp"
 
 #include <e2d/input/actions.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/input/input.hpp>
 
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
 namespace e2d::input {
 
 namespace {
-
-std::string str(float v) {
-    std::string s = std::to_string(v);
-    while (s.size() > 1 && s.back() == '0' && s[s.size() - 2] != '.') {
-        s.pop_back();
-    }
-    return s;
-}
 
 // Problem with a binding's codes, or empty.
 std::string checkBinding(const Binding& b) {
@@ -53,30 +46,30 @@ std::string checkBinding(const Binding& b) {
 
 ActionMap::ActionMap(ActionMapDef def) : def_(def) {
     if (!(def_.pressThreshold > 0.0f && def_.pressThreshold <= 1.0f)) {
-        throw core::Error("input::ActionMap::ActionMap(): pressThreshold must be in (0, 1], got " + str(def_.pressThreshold));
+        throw core::Error("input::ActionMap::ActionMap(): pressThreshold must be in (0, 1], got " + core::formatNumber(def_.pressThreshold));
     }
     if (!(def_.listenAxisThreshold > 0.0f && def_.listenAxisThreshold <= 1.0f)) {
         throw core::Error("input::ActionMap::ActionMap(): listenAxisThreshold must be in (0, 1], got " +
-                          str(def_.listenAxisThreshold));
+                          core::formatNumber(def_.listenAxisThreshold));
     }
 }
 
 ActionId ActionMap::add(std::string_view name) {
     if (!detail::isActionName(name)) {
         throw core::Error("input::ActionMap::add(): " + std::string(detail::kActionNameRule) + ", got " +
-                          detail::quoted(name));
+                          core::quote(name));
     }
     if (!find(name).isNull()) {
         throw core::Error("input::ActionMap::add(): action '" + std::string(name) + "' already exists");
     }
     actions_.push_back(Action{std::string(name), {}, 0.0f, false, false, false});
-    return ActionId{static_cast<std::uint32_t>(actions_.size())};
+    return ActionId::forSlot(static_cast<std::uint32_t>(actions_.size() - 1));
 }
 
 ActionId ActionMap::find(std::string_view name) const noexcept {
     for (std::size_t i = 0; i < actions_.size(); ++i) {
         if (actions_[i].name == name) {
-            return ActionId{static_cast<std::uint32_t>(i + 1)};
+            return ActionId::forSlot(static_cast<std::uint32_t>(i));
         }
     }
     return {};
@@ -88,11 +81,12 @@ ActionId ActionMap::findOrAdd(std::string_view name) {
 }
 
 const ActionMap::Action& ActionMap::at(ActionId id, const char* function) const {
-    if (id.isNull() || id.value > actions_.size()) {
+    const std::optional<std::uint32_t> index = core::slotOf(id, actions_.size());
+    if (!index) {
         throw core::Error(std::string("input::ActionMap::") + function + "(): no action with id " +
-                          std::to_string(id.value));
+                          std::to_string(id.index1));
     }
-    return actions_[id.value - 1];
+    return actions_[*index];
 }
 
 ActionMap::Action& ActionMap::at(ActionId id, const char* function) {
@@ -102,7 +96,7 @@ ActionMap::Action& ActionMap::at(ActionId id, const char* function) {
 ActionId ActionMap::require(std::string_view name, const char* function) const {
     const ActionId id = find(name);
     if (id.isNull()) {
-        throw core::Error(std::string("input::ActionMap::") + function + "(): no action named " + detail::quoted(name));
+        throw core::Error(std::string("input::ActionMap::") + function + "(): no action named " + core::quote(name));
     }
     return id;
 }
@@ -268,7 +262,7 @@ void ActionMap::listenStep(const Input& input) {
     if (!found) {
         return;
     }
-    Action& action = actions_[listening_.value - 1];
+    Action& action = actions_[listening_.index()];
     if (listenMode_ == ListenMode::Replace) {
         action.bindings.clear();
     }

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The text form of a binding (bindings files, rebinding UIs).
-#include "quoted.hpp"
 
 #include <e2d/input/actions.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/input/input.hpp>
 #include <e2d/input/names.hpp>
 
@@ -15,7 +15,7 @@ namespace e2d::input {
 namespace {
 
 [[noreturn]] void fail(const std::string& what, std::string_view text) {
-    throw core::Error("input::parseBinding(): " + what + " in " + detail::quoted(text));
+    throw core::Error("input::parseBinding(): " + what + " in " + core::quote(text));
 }
 
 std::string nameOf(std::string_view name, int code, const char* kind) {
@@ -43,7 +43,7 @@ Binding parseBinding(std::string_view text) {
         }
         if (slot.empty() || slot.size() > 2 || slot.find_first_not_of("0123456789") != std::string_view::npos ||
             std::stoi(std::string(slot)) >= kMaxGamepads) {
-            fail("gamepad slot must be 0..15, got " + detail::quoted(slot), text);
+            fail("gamepad slot must be 0..15, got " + core::quote(slot), text);
         }
         gamepad = std::stoi(std::string(slot));
     }
@@ -54,7 +54,7 @@ Binding parseBinding(std::string_view text) {
         if (auto key = keyFromName(name)) {
             return Binding::key(*key);
         }
-        fail("unknown key name " + detail::quoted(name), text);
+        fail("unknown key name " + core::quote(name), text);
     }
     if (kind == "keys") {
         const std::size_t slash = name.find('/');
@@ -64,10 +64,10 @@ Binding parseBinding(std::string_view text) {
         const auto negative = keyFromName(name.substr(0, slash));
         const auto positive = keyFromName(name.substr(slash + 1));
         if (!negative) {
-            fail("unknown key name " + detail::quoted(name.substr(0, slash)), text);
+            fail("unknown key name " + core::quote(name.substr(0, slash)), text);
         }
         if (!positive) {
-            fail("unknown key name " + detail::quoted(name.substr(slash + 1)), text);
+            fail("unknown key name " + core::quote(name.substr(slash + 1)), text);
         }
         return Binding::keyAxis(*negative, *positive);
     }
@@ -75,13 +75,13 @@ Binding parseBinding(std::string_view text) {
         if (auto button = mouseButtonFromName(name)) {
             return Binding::mouseButton(*button);
         }
-        fail("unknown mouse button name " + detail::quoted(name), text);
+        fail("unknown mouse button name " + core::quote(name), text);
     }
     if (kind == "button") {
         if (auto button = gamepadButtonFromName(name)) {
             return Binding::gamepadButton(*button, gamepad);
         }
-        fail("unknown gamepad button name " + detail::quoted(name), text);
+        fail("unknown gamepad button name " + core::quote(name), text);
     }
     if (kind == "axis") {
         const bool inverted = name.front() == '-';
@@ -91,9 +91,9 @@ Binding parseBinding(std::string_view text) {
         if (auto axis = gamepadAxisFromName(name)) {
             return Binding::gamepadAxis(*axis, inverted, gamepad);
         }
-        fail("unknown gamepad axis name " + detail::quoted(name), text);
+        fail("unknown gamepad axis name " + core::quote(name), text);
     }
-    fail("unknown binding kind " + detail::quoted(kind) + " (expected key, keys, mouse, button, axis)", text);
+    fail("unknown binding kind " + core::quote(kind) + " (expected key, keys, mouse, button, axis)", text);
 }
 
 std::string formatBinding(const Binding& b) {

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Bindings files: `name = binding, binding, ...`, one action per line.
 #include "action_name.hpp"
-#include "quoted.hpp"
 #include "text_file.hpp"
 
 #include <e2d/input/actions.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 
 #include <algorithm>
 #include <fstream>
@@ -51,7 +51,7 @@ void ActionMap::loadFromString(std::string_view text, std::string_view source) {
         }
         const std::string_view name = trim(line.substr(0, equals));
         if (!detail::isActionName(name)) {
-            fail(std::string(detail::kActionNameRule) + ", got " + detail::quoted(name));
+            fail(std::string(detail::kActionNameRule) + ", got " + core::quote(name));
         }
         for (const auto& [previous, unused] : parsed) {
             if (previous == name) {
@@ -85,7 +85,7 @@ void ActionMap::loadFromString(std::string_view text, std::string_view source) {
         parsed.emplace_back(std::string(name), std::move(bindings));
     }
     for (auto& [name, bindings] : parsed) {
-        actions_[findOrAdd(name).value - 1].bindings = std::move(bindings);
+        actions_[findOrAdd(name).index()].bindings = std::move(bindings);
     }
 }
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // SDL gamepad mapping lines: checked here, then handed to GLFW's database.
-#include "quoted.hpp"
 #include "text_file.hpp"
 
 #include <e2d/input/gamepad_mappings.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 
 #include <GLFW/glfw3.h>
 
@@ -52,7 +52,6 @@ bool isDigit(char c) {
 }
 
 // Fields are short; a long value is cut in messages.
-std::string quoted(std::string_view s) { return detail::quoted(s, 40); }
 
 // Reads a decimal number of at most three digits <= limit; advances `s`.
 bool readNumber(std::string_view& s, int limit, int& value) {
@@ -118,7 +117,7 @@ std::string checkElement(std::string_view value) {
         return "expected bN, aN or hH.B";
     }
     if (!s.empty()) {
-        return "unexpected " + quoted(s) + " after the element";
+        return "unexpected " + core::quote(s, 40) + " after the element";
     }
     return {};
 }
@@ -161,7 +160,7 @@ LineCheck checkLine(std::string_view line) {
     // the "xinput" GUID, which GLFW cannot parse).
     if (const std::string_view platform = platformOf(line); !platform.empty() && platform != kPlatform) {
         if (!contains(kPlatforms, platform)) {
-            return fail("unknown platform " + quoted(platform) + " (SDL's are Windows, Mac OS X, Linux, Android, iOS)");
+            return fail("unknown platform " + core::quote(platform, 40) + " (SDL's are Windows, Mac OS X, Linux, Android, iOS)");
         }
         check.otherPlatform = true;
         return check;
@@ -169,7 +168,7 @@ LineCheck checkLine(std::string_view line) {
     const std::size_t guidEnd = line.find(',');
     const std::string_view guid = line.substr(0, guidEnd);
     if (guid.size() != 32 || !std::all_of(guid.begin(), guid.end(), isHex)) {
-        return fail("GUID must be 32 hex digits, got " + quoted(guid));
+        return fail("GUID must be 32 hex digits, got " + core::quote(guid, 40));
     }
     if (guidEnd == std::string_view::npos) {
         return fail("expected a name after the GUID");
@@ -199,7 +198,7 @@ LineCheck checkLine(std::string_view line) {
         }
         const std::size_t colon = field.find(':');
         if (colon == std::string_view::npos) {
-            return fail("field " + quoted(field) + " has no ':'");
+            return fail("field " + core::quote(field, 40) + " has no ':'");
         }
         std::string_view key = field.substr(0, colon);
         const std::string_view value = field.substr(colon + 1);
@@ -207,23 +206,23 @@ LineCheck checkLine(std::string_view line) {
         if (modifier) {
             key.remove_prefix(1);
             if (!contains(kSplitAxes, key)) {
-                return fail("an output modifier (+/-) applies to an axis (leftx ... righttrigger), got " + quoted(field));
+                return fail("an output modifier (+/-) applies to an axis (leftx ... righttrigger), got " + core::quote(field, 40));
             }
         } else if (key == "platform" || contains(kTextFields, key)) {
             check.kept.append(field).append(",");
             continue;
         } else if (!contains(kElementFields, key) && !contains(kIgnoredElementFields, key)) {
             // GLFW skips fields it does not know, and so does the mapping here.
-            check.warnings.push_back("unknown field " + quoted(key) + " ignored (SDL's gamepad fields are a, b, x, y, "
+            check.warnings.push_back("unknown field " + core::quote(key, 40) + " ignored (SDL's gamepad fields are a, b, x, y, "
                                      "back, start, guide, dp*, left*, right*, misc1-6, paddle1-4, touchpad)");
             continue;
         }
         if (std::string problem = checkElement(value); !problem.empty()) {
-            return fail("field '" + std::string(field.substr(0, colon)) + "': " + problem + ", got " + quoted(value));
+            return fail("field " + core::quote(field.substr(0, colon), 40) + ": " + problem + ", got " + core::quote(value, 40));
         }
         if (modifier) {
             // GLFW 3.3 refuses a whole mapping that holds one (it has no half-axis outputs).
-            dropped.push_back(quoted(field));
+            dropped.push_back(core::quote(field, 40));
             continue;
         }
         check.kept.append(field).append(",");

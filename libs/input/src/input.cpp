@@ -2,6 +2,7 @@
 #include <e2d/input/input.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/input/input_script.hpp>
 #include <e2d/core/log.hpp>
 
@@ -15,19 +16,6 @@
 namespace e2d::input {
 
 namespace {
-
-template <class T>
-std::string str(T value) {
-    if constexpr (std::is_floating_point_v<T>) {
-        std::string s = std::to_string(value);
-        while (s.size() > 1 && s.back() == '0' && s[s.size() - 2] != '.') {
-            s.pop_back();
-        }
-        return s;
-    } else {
-        return std::to_string(value);
-    }
-}
 
 bool validKey(int key) noexcept {
     return key >= 0 && key <= kKeyLast;
@@ -66,7 +54,7 @@ Input::Input(InputDef def) : def_(std::move(def)) {
     const auto check = [](bool ok, const char* field, const std::string& rule, float value) {
         if (!ok) {
             throw core::Error(std::string("input::Input::Input(): ") + field + " must be " + rule + ", got " +
-                              str(value));
+                              core::formatNumber(value));
         }
     };
     check(def_.stickDeadZone >= 0.0f && def_.stickDeadZone < 1.0f, "stickDeadZone", "in [0, 1)", def_.stickDeadZone);
@@ -190,8 +178,8 @@ void Input::beginFrame() {
 
     if (dropped_ != droppedReported_) {
         if (def_.logger != nullptr) {
-            def_.logger->warning("input::Input::beginFrame(): " + str(dropped_ - droppedReported_) +
-                                 " events dropped (more than maxQueuedEvents = " + str(def_.maxQueuedEvents) +
+            def_.logger->warning("input::Input::beginFrame(): " + core::formatNumber(dropped_ - droppedReported_) +
+                                 " events dropped (more than maxQueuedEvents = " + core::formatNumber(def_.maxQueuedEvents) +
                                  " queued in one frame)");
         }
         droppedReported_ = dropped_;

@@ -2,9 +2,8 @@
 #include <e2d/input/input_script.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/printable.hpp>
-
-#include "quoted.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -51,21 +50,16 @@ std::vector<std::string_view> words(std::string_view line) {
     throw core::Error(std::string(source) + ":" + std::to_string(line) + ": " + message);
 }
 
-// Quoted for a message, escaped where not printable.
-std::string quote(std::string_view text) {
-    return detail::quoted(text);
-}
-
 // Bounded, so a tap's release (frame + 1) cannot overflow.
 std::int64_t parseFrame(std::string_view word, std::string_view source, int line) {
     std::int64_t frame = 0;
     const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), frame);
     if (ec == std::errc::invalid_argument || ptr != word.data() + word.size() || (ec == std::errc() && frame < 0)) {
-        fail(source, line, "frame must be a whole number >= 0, got " + quote(word));
+        fail(source, line, "frame must be a whole number >= 0, got " + core::quote(word));
     }
     if (ec != std::errc() || frame > kMaxScriptFrame) {
         fail(source, line, "frame must be a whole number in [0, " + std::to_string(kMaxScriptFrame) + "], got " +
-                               quote(word));
+                               core::quote(word));
     }
     return frame;
 }
@@ -96,19 +90,19 @@ ScriptEvent parseMove(const std::vector<std::string_view>& w, std::string_view l
         const std::optional<float> x = w.size() == 5 ? number(w[3]) : std::nullopt;
         const std::optional<float> y = w.size() == 5 ? number(w[4]) : std::nullopt;
         if (!x || !y) {
-            fail(source, lineNumber, "move mouse: expected '<x> <y>' in window pixels, got " + quote(rest(3)));
+            fail(source, lineNumber, "move mouse: expected '<x> <y>' in window pixels, got " + core::quote(rest(3)));
         }
         event.x = *x;
         event.y = *y;
         return event;
     }
     if (w[2].substr(0, 4) != "axis") {
-        fail(source, lineNumber, "move: expected 'mouse' or a gamepad axis (axis:leftx), got " + quote(w[2]));
+        fail(source, lineNumber, "move: expected 'mouse' or a gamepad axis (axis:leftx), got " + core::quote(w[2]));
     }
     const std::optional<float> value = w.size() == 4 ? number(w[3]) : std::nullopt;
     if (!value || *value < -1.0f || *value > 1.0f) {
         fail(source, lineNumber, "move " + core::printable(w[2]) + ": expected one value in [-1, 1], got " +
-                                     quote(rest(3)));
+                                     core::quote(rest(3)));
     }
     event.x = *value;
     return event;
@@ -135,7 +129,7 @@ InputScript parseInputScript(std::string_view text, std::string_view source) {
         }
         if (w.size() != 3) {
             fail(source, lineNumber,
-                 "expected '<frame> <press|release|tap> <target>', got " + quote(line));
+                 "expected '<frame> <press|release|tap> <target>', got " + core::quote(line));
         }
         const std::int64_t frame = parseFrame(w[0], source, lineNumber);
         const std::string target(w[2]);
@@ -146,7 +140,7 @@ InputScript parseInputScript(std::string_view text, std::string_view source) {
             script.events.push_back({frame, ScriptEvent::Kind::Press, target, lineNumber});
             script.events.push_back({frame + 1, ScriptEvent::Kind::Release, target, lineNumber});
         } else {
-            fail(source, lineNumber, "expected press, release, tap or move, got " + quote(w[1]));
+            fail(source, lineNumber, "expected press, release, tap or move, got " + core::quote(w[1]));
         }
     }
     std::stable_sort(script.events.begin(), script.events.end(),

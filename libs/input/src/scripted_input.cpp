@@ -3,15 +3,13 @@
 #include <e2d/input/input_script.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/printable.hpp>
 #include <e2d/input/actions.hpp>
 
 #include <GLFW/glfw3.h>
 
-#include "quoted.hpp"
-
 #include <algorithm>
-#include <charconv>
 #include <optional>
 #include <string>
 
@@ -21,12 +19,6 @@ namespace {
 
 bool isTrigger(int axis) noexcept {
     return axis == GLFW_GAMEPAD_AXIS_LEFT_TRIGGER || axis == GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
-}
-
-std::string formatFloat(float value) {
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
 }
 
 } // namespace
@@ -47,7 +39,7 @@ ScriptedInput::Resolved ScriptedInput::resolve(const ScriptEvent& event, const I
     const auto fail = [&](const std::string& why) -> Resolved {
         throw core::Error(script.source + ":" + std::to_string(event.line) + ": " + why);
     };
-    const std::string target = detail::quoted(event.target);
+    const std::string target = core::quote(event.target);
     Resolved r;
     r.frame = event.frame;
     r.press = event.kind == ScriptEvent::Kind::Press;
@@ -84,7 +76,7 @@ ScriptedInput::Resolved ScriptedInput::resolve(const ScriptEvent& event, const I
         const bool trigger = isTrigger(axis.code);
         if (trigger && value < 0.0f) {
             return fail("move " + core::printable(event.target) + ": a trigger's value is in [0, 1], got " +
-                        formatFloat(event.x));
+                        core::formatNumber(event.x));
         }
         r.kind = Resolved::Kind::PadAxis;
         r.code = axis.code;

@@ -198,7 +198,7 @@ TEST(Actions, BadNamesHandlesAndBindingsAreRefused) {
     EXPECT_EQ(errorOf([&] { actions.bind(a, Binding::gamepadButton(0, 16)); }),
               "input::ActionMap::bind(): gamepad slot 16 out of range");
     EXPECT_EQ(errorOf([] { ActionMap m(ActionMapDef{0.0f}); }),
-              "input::ActionMap::ActionMap(): pressThreshold must be in (0, 1], got 0.0");
+              "input::ActionMap::ActionMap(): pressThreshold must be in (0, 1], got 0");
     actions.bind(a, Binding::key(GLFW_KEY_Q));
     actions.bind(a, Binding::key(GLFW_KEY_Q));
     EXPECT_EQ(actions.bindings(a).size(), 1u);

@@ -208,13 +208,13 @@ TEST(InputEvents, BadSettingsAreRefusedByName) {
     };
     InputDef def;
     def.stickDeadZone = 1.0f;
-    EXPECT_EQ(message(def), "input::Input::Input(): stickDeadZone must be in [0, 1), got 1.0");
+    EXPECT_EQ(message(def), "input::Input::Input(): stickDeadZone must be in [0, 1), got 1");
     def = {};
     def.triggerDeadZone = -0.5f;
     EXPECT_EQ(message(def), "input::Input::Input(): triggerDeadZone must be in [0, 1), got -0.5");
     def = {};
     def.triggerPressThreshold = 0.0f;
-    EXPECT_EQ(message(def), "input::Input::Input(): triggerPressThreshold must be in (0, 1], got 0.0");
+    EXPECT_EQ(message(def), "input::Input::Input(): triggerPressThreshold must be in (0, 1], got 0");
     def = {};
     def.maxQueuedEvents = 0;
     EXPECT_EQ(message(def), "input::Input::Input(): maxQueuedEvents must be >= 1, got 0");

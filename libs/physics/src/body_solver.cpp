@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 namespace e2d::physics::detail {
 
@@ -217,6 +218,111 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
         }
     }
     applyRestitutionWide(wide, restitution, step.states, def.restitutionThreshold, h);
+}
+
+namespace {
+
+inline void spinPause(int spins, int limit) {
+#if defined(__x86_64__) || defined(__i386__)
+    if (spins < limit) {
+        __builtin_ia32_pause();
+        return;
+    }
+#else
+    (void)spins;
+    (void)limit;
+#endif
+    std::this_thread::yield(); // the other worker was preempted, or shares this core
+}
+
+} // namespace
+
+void SplitSync::barrier() {
+    const int generation = generation_.load(std::memory_order_acquire);
+    if (arrived_.fetch_add(1, std::memory_order_acq_rel) == roles_ - 1) {
+        arrived_.store(0, std::memory_order_relaxed);
+        generation_.store(generation + 1, std::memory_order_release);
+        return;
+    }
+    for (int spins = 0; generation_.load(std::memory_order_acquire) == generation; ++spins) {
+        spinPause(spins, spins_);
+    }
+}
+
+void SplitSync::waitFor(int role, int l, int levels, bool backward, int base) {
+    const std::span<const int> need = backward ? needBackward_ : needForward_;
+    for (int v = 0; v < roles_; ++v) {
+        const int part = need[static_cast<std::size_t>(l) * static_cast<std::size_t>(roles_) + static_cast<std::size_t>(v)];
+        if (v == role || part < 0) {
+            continue;
+        }
+        const int target = base + (backward ? levels - part : part + 1);
+        const std::atomic<int>& count = progress_[static_cast<std::size_t>(v)].count;
+        for (int spins = 0; count.load(std::memory_order_acquire) < target; ++spins) {
+            spinPause(spins, spins_);
+        }
+    }
+}
+
+void SplitSync::done(int role, int l, int levels, bool backward, int base) {
+    progress_[static_cast<std::size_t>(role)].count.store(base + (backward ? levels - l : l + 1),
+                                                          std::memory_order_release);
+}
+
+void solveSoftStepBlockRole(const SolverStep& step, WideContacts& wide, int firstLevel,
+                            int endLevel, std::span<const int> bodies,
+                            std::span<const WideRestitution> restitution, SplitSync& sync, int role) {
+    const SolverDef& def = *step.def;
+    const float h = step.dt / static_cast<float>(def.subSteps);
+    const float invH = 1.0f / h;
+    const int relaxIterations = def.relaxIterations + step.extraRelaxIterations;
+    const int roles = sync.roles();
+    const int levels = endLevel - firstLevel;
+    const std::size_t bodyCount = bodies.size();
+    const std::span<const int> myBodies = bodies.subspan(
+        bodyCount * static_cast<std::size_t>(role) / static_cast<std::size_t>(roles),
+        bodyCount * static_cast<std::size_t>(role + 1) / static_cast<std::size_t>(roles) -
+            bodyCount * static_cast<std::size_t>(role) / static_cast<std::size_t>(roles));
+    // Every role runs the same sweeps; `base` counts the parts of the sweeps before this one.
+    int base = 0;
+    auto sweep = [&](bool backward, auto&& solveLevel) {
+        for (int i = 0; i < levels; ++i) {
+            const int l = backward ? levels - 1 - i : i;
+            if (l % roles != role) {
+                continue;
+            }
+            sync.waitFor(role, l, levels, backward, base);
+            solveLevel(firstLevel + l);
+            sync.done(role, l, levels, backward, base);
+        }
+        base += levels + 1;
+        sync.barrier();
+    };
+    // The same passes and orders as solveSoftStepBlock().
+    for (int i = 0; i < def.subSteps; ++i) {
+        integrateVelocities(step.sims, step.states, myBodies, step.gravity, h, def.maxLinearSpeed);
+        sync.barrier();
+        const bool backward = (i % 2) == 1;
+        const bool reversePoints = ((i / 2) % 2) == 1;
+        sweep(false, [&](int level) { warmStartWide(wide, level, level + 1, step.states); });
+        for (int r = 0; r <= step.extraSolveIterations; ++r) {
+            sweep(backward, [&](int level) {
+                solveWide(wide, level, level + 1, step.states, invH, true, def.contactPushMaxSpeed,
+                          backward, reversePoints);
+            });
+        }
+        integratePositions(step.states, myBodies, h, def.maxLinearSpeed);
+        sync.barrier();
+        for (int r = 0; r <= relaxIterations; ++r) {
+            sweep(!backward, [&](int level) {
+                solveWide(wide, level, level + 1, step.states, invH, false, def.contactPushMaxSpeed,
+                          !backward, reversePoints);
+            });
+        }
+    }
+    if (role == 0) {
+        applyRestitutionWide(wide, restitution, step.states, def.restitutionThreshold, h);
+    }
 }
 
 void solveClassic(const SolverStep& step) {

@@ -8,7 +8,9 @@
 #include "joint_solver.hpp"
 #include "solver_body.hpp"
 
+#include <atomic>
 #include <span>
+#include <vector>
 
 // The step's stages over the awake bodies' arrays and the contact constraints: the soft-step
 // sub-step loop and the classic iterations. The world builds the arrays, this runs them.
@@ -70,6 +72,46 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
                         std::span<const int> bodies, std::span<const WideRestitution> restitution,
                         std::span<const int> blockJoints = {});
 void solveClassic(const SolverStep& step);
+
+// What the workers solving one split block share (Simulation::splitBlock): how far each has
+// come (a count that only grows through the step's passes), a barrier between passes, and the
+// parts' waits. The block's level l (block-local) is worker l % roles's.
+class SplitSync {
+public:
+    // spin: whether waits spin a while before yielding (the roles have a hardware thread each).
+    SplitSync(int roles, std::span<const int> needForward, std::span<const int> needBackward, bool spin)
+        : roles_(roles), spins_(spin ? 2000 : 0), needForward_(needForward), needBackward_(needBackward),
+          progress_(static_cast<std::size_t>(roles)) {}
+
+    [[nodiscard]] int roles() const { return roles_; }
+    // Every role arrives before any goes on.
+    void barrier();
+    // Waits until every other role has solved the parts that level l (of `levels`, role's own)
+    // waits for in this sweep; `base` is the sweep's start count.
+    void waitFor(int role, int l, int levels, bool backward, int base);
+    // Role `role` has solved its part of level l.
+    void done(int role, int l, int levels, bool backward, int base);
+
+private:
+    struct alignas(64) Progress {
+        std::atomic<int> count{0};
+    };
+    int roles_;
+    int spins_;
+    std::span<const int> needForward_;
+    std::span<const int> needBackward_;
+    std::vector<Progress> progress_;
+    alignas(64) std::atomic<int> arrived_{0};
+    std::atomic<int> generation_{0};
+};
+
+// solveSoftStepBlock() of a split block as role `role` of sync.roles() workers running it at
+// once (each its own parts of the levels, waiting where a part needs another's; the bodies'
+// integration cut in runs; restitution by role 0): bit for bit what solveSoftStepBlock() gives.
+// No joints.
+void solveSoftStepBlockRole(const SolverStep& step, WideContacts& wide, int firstLevel,
+                            int endLevel, std::span<const int> bodies,
+                            std::span<const WideRestitution> restitution, SplitSync& sync, int role);
 
 // Moves each sim by its state's deltas (centre, rotation, origin) and sets its position residual
 // (the part of center0 + deltaPosition the float centre cannot hold). A body that became

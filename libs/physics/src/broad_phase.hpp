@@ -124,6 +124,7 @@ public:
     [[nodiscard]] int lastQueryCount() const { return queryCount_; }
 
 private:
+    friend struct SnapshotAccess;
     struct ProxyInfo {
         int pairCount = 0;
         int moveIndex = -1; // index in moveBuffer_, -1 when not buffered

@@ -2,13 +2,13 @@
 #include <e2d/physics/character_controller.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/scene.hpp>
 #include <e2d/physics/contact_info.hpp>
 #include <e2d/physics/collider.hpp>
 #include <e2d/physics/physics_system.hpp>
 
-#include "error_format.hpp"
 #include "object_pose.hpp"
 
 #include <algorithm>
@@ -104,6 +104,7 @@ void CharacterController::onInitialize() {
     };
     mover_.emplace(std::move(md));
     writtenPosition_ = pose.position;
+    system.registerCharacter(*this);
     if (def_.hasBody) {
         BodyDef bd;
         bd.type = BodyType::Kinematic;
@@ -123,6 +124,9 @@ void CharacterController::onInitialize() {
 }
 
 void CharacterController::onTerminate() {
+    if (mover_) {
+        sys().unregisterCharacter(*this);
+    }
     if (!body_.isNull() && sys().world().isValid(body_)) {
         sys().world().destroyBody(body_);
     }
@@ -145,8 +149,8 @@ const MoveResult& CharacterController::move(Vec2 motion) {
         throw core::Error("physics::CharacterController::move(): the object is not in a scene yet");
     }
     if (!isFinite(motion)) {
-        detail::fail("physics::CharacterController::move()",
-                     "motion must be finite, got " + detail::formatVec(motion));
+        core::throwError("physics::CharacterController::move()",
+                     "motion must be finite, got " + core::formatVector(motion));
     }
     PhysicsSystem& system = sys();
     const float upm = system.unitsPerMetre();

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/physics/character_mover.hpp>
 
+#include <e2d/core/error_text.hpp>
 #include <e2d/physics/world.hpp>
 
-#include "error_format.hpp"
 #include "mover_query.hpp"
 #include "mover_solver.hpp"
 
@@ -25,32 +25,29 @@ constexpr float kMinHorizontal = 0.05f;
 
 void requireField(bool ok, const char* field, const std::string& rule, const std::string& got) {
     if (!ok) {
-        detail::fail(kConstructor, std::string("def.") + field + " must be " + rule + ", got " + got);
+        core::throwError(kConstructor, std::string("def.") + field + " must be " + rule + ", got " + got);
     }
 }
 
 CharacterMoverDef checked(CharacterMoverDef def) {
-    using detail::formatFloat;
-    using detail::formatVec;
-    using detail::isSane;
     const Capsule& c = def.capsule;
-    requireField(isSane(c.center1), "capsule.center1", "finite and within kHuge", formatVec(c.center1));
-    requireField(isSane(c.center2), "capsule.center2", "finite and within kHuge", formatVec(c.center2));
-    requireField(isSane(c.radius) && c.radius > 0.0f, "capsule.radius", "finite and > 0",
-                 formatFloat(c.radius));
-    requireField(isSane(def.position), "position", "finite and within kHuge", formatVec(def.position));
+    requireField(isWithinHuge(c.center1), "capsule.center1", "finite and within kHuge", core::formatVector(c.center1));
+    requireField(isWithinHuge(c.center2), "capsule.center2", "finite and within kHuge", core::formatVector(c.center2));
+    requireField(isWithinHuge(c.radius) && c.radius > 0.0f, "capsule.radius", "finite and > 0",
+                 core::formatNumber(c.radius));
+    requireField(isWithinHuge(def.position), "position", "finite and within kHuge", core::formatVector(def.position));
     requireField(isFinite(def.up) && std::fabs(length(def.up) - 1.0f) <= 1.0e-3f, "up",
-                 "a unit vector", formatVec(def.up));
+                 "a unit vector", core::formatVector(def.up));
     requireField(std::isfinite(def.skin) && def.skin >= 0.0f && def.skin <= c.radius, "skin",
-                 "finite and in [0, capsule.radius = " + formatFloat(c.radius) + "]",
-                 formatFloat(def.skin));
+                 "finite and in [0, capsule.radius = " + core::formatNumber(c.radius) + "]",
+                 core::formatNumber(def.skin));
     requireField(std::isfinite(def.maxSlopeAngle) && def.maxSlopeAngle >= 0.0f &&
                      def.maxSlopeAngle < kHalfPi,
-                 "maxSlopeAngle", "finite and in [0, pi/2) radians", formatFloat(def.maxSlopeAngle));
+                 "maxSlopeAngle", "finite and in [0, pi/2) radians", core::formatNumber(def.maxSlopeAngle));
     requireField(std::isfinite(def.maxPushOut) && def.maxPushOut > 0.0f, "maxPushOut",
-                 "finite and > 0", formatFloat(def.maxPushOut));
+                 "finite and > 0", core::formatNumber(def.maxPushOut));
     requireField(std::isfinite(def.groundSnapDistance) && def.groundSnapDistance >= 0.0f,
-                 "groundSnapDistance", "finite and >= 0", formatFloat(def.groundSnapDistance));
+                 "groundSnapDistance", "finite and >= 0", core::formatNumber(def.groundSnapDistance));
     def.up = normalize(def.up);
     return def;
 }
@@ -63,9 +60,9 @@ CharacterMover::CharacterMover(const CharacterMoverDef& def)
 }
 
 void CharacterMover::setPosition(Vec2 position) {
-    if (!detail::isSane(position)) {
-        detail::fail("physics::CharacterMover::setPosition()",
-                     "position must be finite and within kHuge, got " + detail::formatVec(position));
+    if (!isWithinHuge(position)) {
+        core::throwError("physics::CharacterMover::setPosition()",
+                     "position must be finite and within kHuge, got " + core::formatVector(position));
     }
     position_ = position;
     last_ = MoveResult{};
@@ -82,10 +79,10 @@ Capsule CharacterMover::worldCapsule() const {
 }
 
 MoveResult CharacterMover::move(const World& world, Vec2 displacement) {
-    if (!detail::isSane(displacement) || !detail::isSane(position_ + displacement)) {
-        detail::fail("physics::CharacterMover::move()",
+    if (!isWithinHuge(displacement) || !isWithinHuge(position_ + displacement)) {
+        core::throwError("physics::CharacterMover::move()",
                      "displacement must be finite and keep the mover within kHuge, got " +
-                         detail::formatVec(displacement));
+                         core::formatVector(displacement));
     }
     const detail::MoverQuery query{&world,        def_.capsule, def_.skin,
                                    def_.filter,   def_.ignoreBody, def_.up,

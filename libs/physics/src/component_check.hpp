@@ -2,12 +2,11 @@
 #pragma once
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/physics/constants.hpp>
 
 #include <glm/mat2x2.hpp>
-
-#include "error_format.hpp"
 
 #include <cmath>
 #include <string>
@@ -19,21 +18,21 @@ namespace e2d::physics::detail::component_check {
 inline void requireFinite(const char* function, const char* field, float value) {
     if (!std::isfinite(value)) {
         throw core::Error(std::string("physics::") + function + "(): def." + field +
-                          " must be finite, got " + formatFloat(value));
+                          " must be finite, got " + core::formatNumber(value));
     }
 }
 
 inline void requireNonNegative(const char* function, const char* field, float value) {
     if (!std::isfinite(value) || value < 0.0f) {
         throw core::Error(std::string("physics::") + function + "(): def." + field +
-                          " must be finite and >= 0, got " + formatFloat(value));
+                          " must be finite and >= 0, got " + core::formatNumber(value));
     }
 }
 
 inline void requireUnitInterval(const char* function, const char* field, float value) {
     if (!std::isfinite(value) || value < 0.0f || value > 1.0f) {
         throw core::Error(std::string("physics::") + function + "(): def." + field +
-                          " must be finite and in [0, 1], got " + formatFloat(value));
+                          " must be finite and in [0, 1], got " + core::formatNumber(value));
     }
 }
 
@@ -45,7 +44,7 @@ inline std::string describe(const core::GameObject& object) {
     if (!object.tag().empty()) {
         return "object tagged '" + object.tag() + "'";
     }
-    return "object #" + std::to_string(object.id().index) + " (no name or tag)";
+    return "object #" + std::to_string(object.id().index()) + " (no name or tag)";
 }
 
 // "physics::Rigidbody on object 'crate': ..."
@@ -65,10 +64,10 @@ inline void requireInRange(const core::GameObject& object, std::string_view comp
         return;
     }
     failOn(object, component,
-           "world position " + formatVec(units) +
+           "world position " + core::formatVector(units) +
                " world units is out of the physics range (finite, |x| and |y| <= " +
-               formatFloat(kHuge * unitsPerMetre) + " world units: " + formatFloat(kHuge) +
-               " m at " + formatFloat(unitsPerMetre) + " units per metre)");
+               core::formatNumber(kHuge * unitsPerMetre) + " world units: " + core::formatNumber(kHuge) +
+               " m at " + core::formatNumber(unitsPerMetre) + " units per metre)");
 }
 
 // A collider's placement on its body (its object's scale and pose relative to the body) must
@@ -81,8 +80,8 @@ inline void requireFinitePlacement(const core::GameObject& object, std::string_v
     if (!finite) {
         failOn(object, component,
                "the object's scale, orientation or position relative to its body is not finite "
-               "(scale " + formatVec(object.scale()) + ", orientation " +
-                   formatFloat(object.orientation()) + ")");
+               "(scale " + core::formatVector(object.scale()) + ", orientation " +
+                   core::formatNumber(object.orientation()) + ")");
     }
 }
 

@@ -113,6 +113,54 @@ void World::Impl::destroyContacts(int shapeIndex) {
     }
 }
 
+// The narrow phase of one contact whose bodies are not both asleep: its new manifold (kept, with
+// impulses carried over by feature id; a sensor's is not kept) and whether it touches. Reads the
+// contact's shapes and bodies only, so contacts are updated on several workers at once.
+bool World::Impl::updateManifold(detail::Contact& c, float dt) const {
+    const detail::Shape& sa = shape(c.shapeA);
+    const detail::Shape& sb = shape(c.shapeB);
+    const detail::Body& ba = body(c.bodyA);
+    const detail::Body& bb = body(c.bodyB);
+    if (c.sensor) {
+        Manifold m = collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
+                             collisionAlgorithm, 0.0f);
+        return m.pointCount > 0;
+    }
+    // Speculative margin: the fixed one plus how far the pair can close in one step, so a
+    // fast approach is caught before it overlaps (bounded, as a huge margin would stop
+    // bodies against points they would have passed).
+    float closing = length(bb.linearVelocity - ba.linearVelocity) +
+                    std::abs(ba.angularVelocity) * ba.motion.maxExtent +
+                    std::abs(bb.angularVelocity) * bb.motion.maxExtent;
+    float margin = std::min(speculativeDistance + dt * closing, 4.0f * kAabbMargin);
+    // Polygon pairs (most of a box scene) call the SAT routine directly, skipping the
+    // dispatch on both geometries.
+    Manifold m = sa.geometry.index() == kPolygonIndex && sb.geometry.index() == kPolygonIndex &&
+                         collisionAlgorithm == CollisionAlgorithm::Sat
+                     ? collidePolygons(*std::get_if<Polygon>(&sa.geometry), ba.transform,
+                                       *std::get_if<Polygon>(&sb.geometry), bb.transform, margin)
+                     : collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
+                               collisionAlgorithm, margin);
+    // Impulses carry over by feature id from the old manifold, read in place.
+    const Manifold& old = c.manifold;
+    for (int i = 0; i < m.pointCount; ++i) {
+        ManifoldPoint& mp = m.points[i];
+        mp.normalImpulse = 0.0f;
+        mp.tangentImpulse = 0.0f;
+        mp.persisted = false;
+        for (int j = 0; j < old.pointCount; ++j) {
+            if (old.points[j].id == mp.id) {
+                mp.normalImpulse = old.points[j].normalImpulse;
+                mp.tangentImpulse = old.points[j].tangentImpulse;
+                mp.persisted = true;
+                break;
+            }
+        }
+    }
+    c.manifold = m;
+    return m.pointCount > 0;
+}
+
 void World::Impl::updateContacts(float dt) {
     detail::Simulation& s = sim;
     broadPhase.updatePairs(
@@ -122,6 +170,47 @@ void World::Impl::updateContacts(float dt) {
         createContact(static_cast<int>(p.userDataA), static_cast<int>(p.userDataB));
     }
 
+    // The narrow phase in two passes. The first updates each contact on its own (on several
+    // workers): whether the fat boxes parted, and the new manifold of every contact with an
+    // awake side, noted per contact. The second goes through the contacts in order, alone:
+    // ends, events, the pre-solve hook and waking, which other contacts see. A contact whose
+    // bodies were both asleep in the first pass and that an earlier contact woke is updated
+    // there, as it would have been in one pass in contact order.
+    enum : unsigned char { kDead, kApart, kAsleep, kTouching, kApartNow };
+    const int contactSlots = static_cast<int>(s.contacts.size());
+    s.contactUpdates.resize(static_cast<std::size_t>(contactSlots));
+    // Each contact reads two shapes and two bodies scattered over arrays far larger than the
+    // cache: they are fetched a few contacts ahead.
+    constexpr int kPrefetchAhead = 6;
+    auto updatePiece = [&](int begin, int end, int /*worker*/) {
+        for (int ci = begin; ci < end; ++ci) {
+            if (ci + kPrefetchAhead < end) {
+                const detail::Contact& ahead = s.contacts[static_cast<std::size_t>(ci + kPrefetchAhead)];
+                if (ahead.alive) {
+                    detail::prefetchObject(&shape(ahead.shapeA));
+                    detail::prefetchObject(&shape(ahead.shapeB));
+                    detail::prefetchObject(&body(ahead.bodyA));
+                    detail::prefetchObject(&body(ahead.bodyB));
+                }
+            }
+            detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
+            unsigned char& update = s.contactUpdates[static_cast<std::size_t>(ci)];
+            if (!c.alive) {
+                update = kDead;
+            } else if (!overlaps(broadPhase.fatAabb(shape(c.shapeA).proxyKey),
+                                 broadPhase.fatAabb(shape(c.shapeB).proxyKey))) {
+                update = kApart;
+            } else if (!body(c.bodyA).motion.awake && !body(c.bodyB).motion.awake) {
+                update = kAsleep;
+            } else {
+                update = updateManifold(c, dt) ? kTouching : kApartNow;
+            }
+        }
+    };
+    // A piece is a few hundred microseconds of SAT at most.
+    constexpr int kContactsPerPiece = 64;
+    tasks.parallelFor(contactSlots, kContactsPerPiece, updatePiece);
+
     // The touching solid contacts, in contact order, as they are after the narrow phase: what
     // the solver makes constraints of (without streaming the whole contact array again).
     s.touchingContacts.clear();
@@ -130,49 +219,34 @@ void World::Impl::updateContacts(float dt) {
             s.touchingContacts.push_back({ci, c.bodyA, c.bodyB, c.rollingResistance});
         }
     };
-    int contactSlots = static_cast<int>(s.contacts.size());
-    // Each contact reads two shapes and two bodies scattered over arrays far larger than the
-    // cache: they are fetched a few contacts ahead.
-    constexpr int kPrefetchAhead = 6;
     for (int ci = 0; ci < contactSlots; ++ci) {
-        if (ci + kPrefetchAhead < contactSlots) {
-            const detail::Contact& ahead = s.contacts[static_cast<std::size_t>(ci + kPrefetchAhead)];
-            if (ahead.alive) {
-                detail::prefetchObject(&shape(ahead.shapeA));
-                detail::prefetchObject(&shape(ahead.shapeB));
-                detail::prefetchObject(&body(ahead.bodyA));
-                detail::prefetchObject(&body(ahead.bodyB));
-            }
-        }
-        detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
-        if (!c.alive) {
+        unsigned char update = s.contactUpdates[static_cast<std::size_t>(ci)];
+        if (update == kDead) {
             continue;
         }
-        const detail::Shape& sa = shape(c.shapeA);
-        const detail::Shape& sb = shape(c.shapeB);
-        if (!overlaps(broadPhase.fatAabb(sa.proxyKey), broadPhase.fatAabb(sb.proxyKey))) {
+        detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
+        if (update == kApart) {
             broadPhase.removePair(static_cast<std::uint64_t>(c.shapeA),
                                   static_cast<std::uint64_t>(c.shapeB));
             destroyContact(ci, true);
             continue;
         }
-        detail::Body& ba = body(c.bodyA);
-        detail::Body& bb = body(c.bodyB);
-        bool awakeA = ba.motion.awake;
-        bool awakeB = bb.motion.awake;
-        if (!awakeA && !awakeB) {
-            // Asleep (or asleep against static): nothing moved, the manifold still holds.
-            listTouching(ci, c);
-            continue;
+        const bool awakeA = body(c.bodyA).motion.awake;
+        const bool awakeB = body(c.bodyB).motion.awake;
+        if (update == kAsleep) {
+            if (!awakeA && !awakeB) {
+                // Asleep (or asleep against static): nothing moved, the manifold still holds.
+                listTouching(ci, c);
+                continue;
+            }
+            update = updateManifold(c, dt) ? kTouching : kApartNow; // woken by an earlier one
         }
-        bool wasTouching = c.touching;
+        ++s.counters.manifoldUpdates;
+        const bool wasTouching = c.touching;
+        c.touching = update == kTouching;
         if (c.sensor) {
-            ++s.counters.manifoldUpdates;
-            Manifold m = collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
-                                 collisionAlgorithm, 0.0f);
-            c.touching = m.pointCount > 0;
             if (c.touching != wasTouching && c.touchEvents) {
-                bool aIsSensor = sa.isSensor;
+                bool aIsSensor = shape(c.shapeA).isSensor;
                 ShapeId sensorId = aIsSensor ? c.idA : c.idB;
                 ShapeId visitorId = aIsSensor ? c.idB : c.idA;
                 if (c.touching) {
@@ -183,43 +257,8 @@ void World::Impl::updateContacts(float dt) {
             }
             continue;
         }
-
-        // Speculative margin: the fixed one plus how far the pair can close in one step, so a
-        // fast approach is caught before it overlaps (bounded, as a huge margin would stop
-        // bodies against points they would have passed).
-        float closing = length(bb.linearVelocity - ba.linearVelocity) +
-                        std::abs(ba.angularVelocity) * ba.motion.maxExtent +
-                        std::abs(bb.angularVelocity) * bb.motion.maxExtent;
-        float margin = std::min(speculativeDistance + dt * closing, 4.0f * kAabbMargin);
-        ++s.counters.manifoldUpdates;
-        // Polygon pairs (most of a box scene) call the SAT routine directly, skipping the
-        // dispatch on both geometries.
-        Manifold m = sa.geometry.index() == kPolygonIndex && sb.geometry.index() == kPolygonIndex &&
-                             collisionAlgorithm == CollisionAlgorithm::Sat
-                         ? collidePolygons(*std::get_if<Polygon>(&sa.geometry), ba.transform,
-                                           *std::get_if<Polygon>(&sb.geometry), bb.transform, margin)
-                         : collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
-                                   collisionAlgorithm, margin);
-        // Impulses carry over by feature id from the old manifold, read in place.
-        const Manifold& old = c.manifold;
-        for (int i = 0; i < m.pointCount; ++i) {
-            ManifoldPoint& mp = m.points[i];
-            mp.normalImpulse = 0.0f;
-            mp.tangentImpulse = 0.0f;
-            mp.persisted = false;
-            for (int j = 0; j < old.pointCount; ++j) {
-                if (old.points[j].id == mp.id) {
-                    mp.normalImpulse = old.points[j].normalImpulse;
-                    mp.tangentImpulse = old.points[j].tangentImpulse;
-                    mp.persisted = true;
-                    break;
-                }
-            }
-        }
-        c.manifold = m;
-        c.touching = m.pointCount > 0;
         if (c.touching && !wasTouching && c.touchEvents) {
-            s.beginEvents.push_back({c.idA, c.idB, m});
+            s.beginEvents.push_back({c.idA, c.idB, c.manifold});
         } else if (!c.touching && wasTouching && c.touchEvents) {
             s.endEvents.push_back({c.idA, c.idB});
         }

@@ -3,21 +3,12 @@
 
 #include <e2d/core/error.hpp>
 
-#include <charconv>
+#include <e2d/core/error_text.hpp>
+
 #include <cmath>
 #include <string>
 
 namespace e2d::physics {
-
-namespace {
-
-std::string numberText(float value) {
-    char buffer[32];
-    auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
-
-} // namespace
 
 ShapeProxy makeProxy(std::span<const Vec2> points, float radius) {
     if (points.empty() || points.size() > static_cast<std::size_t>(kMaxPolygonVertices)) {
@@ -27,15 +18,14 @@ ShapeProxy makeProxy(std::span<const Vec2> points, float radius) {
     }
     if (!isFinite(radius) || radius < 0.0f || radius > kHuge) {
         throw core::Error("physics::makeProxy(): radius must be finite, >= 0 and within kHuge, got " +
-                          numberText(radius));
+                          core::formatNumber(radius));
     }
     ShapeProxy proxy;
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (!isFinite(points[i]) || std::fabs(points[i].x) > kHuge ||
             std::fabs(points[i].y) > kHuge) {
             throw core::Error("physics::makeProxy(): point " + std::to_string(i) +
-                              " must be finite and within kHuge, got (" + numberText(points[i].x) +
-                              ", " + numberText(points[i].y) + ")");
+                              " must be finite and within kHuge, got " + core::formatVector(points[i]));
         }
         proxy.points[i] = points[i];
     }

@@ -2,11 +2,10 @@
 #include <e2d/physics/dynamic_tree.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 
 #include <algorithm>
-#include <array>
 #include <bit>
-#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -16,16 +15,8 @@ namespace e2d::physics {
 
 namespace {
 
-std::string formatFloat(float value) {
-    std::array<char, 32> buffer{};
-    auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-    return std::string(buffer.data(), result.ptr);
-}
-
-std::string formatVec(Vec2 v) { return "(" + formatFloat(v.x) + ", " + formatFloat(v.y) + ")"; }
-
 std::string formatBox(const Aabb& box) {
-    return "lower " + formatVec(box.lower) + " upper " + formatVec(box.upper);
+    return "lower " + core::formatVector(box.lower) + " upper " + core::formatVector(box.upper);
 }
 
 void checkBox(const Aabb& box, const char* function) {
@@ -67,8 +58,8 @@ void DynamicTree::throwBadQueryBox(const Aabb& box) {
 void DynamicTree::throwBadRay(const RayCastInput& input) {
     throw core::Error("physics::DynamicTree::rayCast(): ray must be finite with maxFraction >= 0, "
                       "got origin " +
-                      formatVec(input.origin) + " translation " + formatVec(input.translation) +
-                      " maxFraction " + formatFloat(input.maxFraction));
+                      core::formatVector(input.origin) + " translation " + core::formatVector(input.translation) +
+                      " maxFraction " + core::formatNumber(input.maxFraction));
 }
 
 void DynamicTree::throwBadProxy(int proxyId, const char* function) {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/physics/geometry.hpp>
 
-#include "error_format.hpp"
+#include <e2d/core/error_text.hpp>
+
 #include "shape_detail.hpp"
 
 #include <algorithm>
@@ -13,16 +14,16 @@ namespace detail {
 
 Hull computeHull(std::span<const Vec2> points, const char* function) {
     if (points.size() < 3) {
-        fail(function, "expected at least 3 points, got " + std::to_string(points.size()));
+        core::throwError(function, "expected at least 3 points, got " + std::to_string(points.size()));
     }
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (!isFinite(points[i])) {
-            fail(function, "point " + std::to_string(i) + " is not finite, got " +
-                               formatVec(points[i]));
+            core::throwError(function, "point " + std::to_string(i) + " is not finite, got " +
+                               core::formatVector(points[i]));
         }
-        if (!isSane(points[i])) {
-            fail(function, "point " + std::to_string(i) + " is beyond kHuge (" +
-                               formatFloat(kHuge) + " m), got " + formatVec(points[i]));
+        if (!isWithinHuge(points[i])) {
+            core::throwError(function, "point " + std::to_string(i) + " is beyond kHuge (" +
+                               core::formatNumber(kHuge) + " m), got " + core::formatVector(points[i]));
         }
     }
 
@@ -48,7 +49,7 @@ Hull computeHull(std::span<const Vec2> points, const char* function) {
         }
     }
     if (unique.size() < 3) {
-        fail(function, "expected at least 3 distinct points (points closer than kLinearSlop are "
+        core::throwError(function, "expected at least 3 distinct points (points closer than kLinearSlop are "
                        "welded), got " +
                            std::to_string(unique.size()));
     }
@@ -92,10 +93,10 @@ Hull computeHull(std::span<const Vec2> points, const char* function) {
         }
     }
     if (hull.size() < 3) {
-        fail(function, "the points are collinear (the hull has no area)");
+        core::throwError(function, "the points are collinear (the hull has no area)");
     }
     if (hull.size() > static_cast<std::size_t>(kMaxPolygonVertices)) {
-        fail(function, std::to_string(hull.size()) + " points on the convex hull, at most " +
+        core::throwError(function, std::to_string(hull.size()) + " points on the convex hull, at most " +
                            std::to_string(kMaxPolygonVertices) + " allowed");
     }
 

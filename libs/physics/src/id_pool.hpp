@@ -5,6 +5,8 @@
 
 namespace e2d::physics::detail {
 
+struct SnapshotAccess; // world_snapshot.cpp
+
 /// Hands out dense slot indices and takes them back. Freed slots are reused last-in first-out,
 /// so the same sequence of calls gives the same indices (determinism).
 class IdPool {
@@ -24,6 +26,7 @@ public:
     [[nodiscard]] int count() const { return next_ - static_cast<int>(free_.size()); }
 
 private:
+    friend struct SnapshotAccess;
     std::vector<int> free_;
     int next_ = 0;
 };

@@ -18,11 +18,6 @@ namespace {
 
 constexpr const char* kCreate = "createJoint";
 
-std::uint16_t nextJointGeneration(std::uint16_t generation) {
-    ++generation;
-    return generation == 0 ? std::uint16_t{1} : generation;
-}
-
 // "revolute def.hertz": the def's type and field.
 std::string field(JointType type, const char* name) {
     return std::string(jointTypeName(type)) + " def." + name;
@@ -249,7 +244,7 @@ void World::Impl::destroyJointAt(int jointIndex) {
     const int bodyB = j.bodyB;
     const bool blocked = !j.collideConnected;
     j.alive = false;
-    j.generation = nextJointGeneration(j.generation);
+    j.generation = core::nextGeneration(j.generation);
     j.bodyA = j.bodyB = kNullIndex;
     jointIds.release(jointIndex);
     wakeBody(bodyA);

@@ -2,13 +2,13 @@
 #include <e2d/physics/joint_component.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/scene.hpp>
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
 #include "component_check.hpp"
-#include "error_format.hpp"
 #include "object_pose.hpp"
 #include "joint_def_check.hpp"
 
@@ -137,7 +137,7 @@ JointDef JointComponent::validateInMetres(const char* function) const {
     JointDef metres = inMetres(def_.joint, upm);
     validate(metres, function,
              upm != 1.0f ? " (in metres: the def's world units divided by unitsPerMetre " +
-                               detail::formatFloat(upm) + ")"
+                               core::formatNumber(upm) + ")"
                          : std::string());
     return metres;
 }

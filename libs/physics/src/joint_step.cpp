@@ -197,7 +197,7 @@ void World::Impl::packJoints() {
     ++s.counters.jointRepacks;
     s.jointOrder.clear();
     s.pointJoints.clear();
-    s.pointJoints.lanes = detail::bestPointJointLanes();
+    s.pointJoints.lanes = std::min(detail::bestPointJointLanes(), s.simdLanes);
     detail::packJointPasses(joints, s.activeJoints, s.activeJointLevels, groups, s.pointJoints, s.jointOrder);
     s.jointLayout = layout;
 }
@@ -236,7 +236,7 @@ void World::Impl::assignJointBlocks(bool scheduleKept) {
     }
     s.blockJoints.clear();
     s.pointJoints.clear();
-    s.pointJoints.lanes = detail::bestPointJointLanes();
+    s.pointJoints.lanes = std::min(detail::bestPointJointLanes(), s.simdLanes);
     int first = 0;
     for (std::size_t b = 0; b < blocks; ++b) {
         const int end = s.blockJointStart[b + 1];

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/physics/geometry.hpp>
 
-#include "error_format.hpp"
+#include <e2d/core/error_text.hpp>
 
 #include <numbers>
 
@@ -9,9 +9,9 @@ namespace e2d::physics {
 namespace {
 
 void checkDensity(float density) {
-    if (!detail::isSane(density) || density < 0.0f) {
-        detail::fail("physics::computeMass()",
-                     "density must be finite and in [0, kHuge (" + detail::formatFloat(kHuge) + " kg/m^2)], got " + detail::formatFloat(density));
+    if (!isWithinHuge(density) || density < 0.0f) {
+        core::throwError("physics::computeMass()",
+                     "density must be finite and in [0, kHuge (" + core::formatNumber(kHuge) + " kg/m^2)], got " + core::formatNumber(density));
     }
 }
 

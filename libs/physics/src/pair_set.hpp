@@ -6,6 +6,8 @@
 
 namespace e2d::physics::detail {
 
+struct SnapshotAccess; // world_snapshot.cpp
+
 /// The key of an unordered pair of 32-bit ids: min in the high half, max in the low half.
 /// Never 0 for a != b, which the set uses as its empty marker.
 constexpr std::uint64_t makePairKey(std::uint64_t a, std::uint64_t b) {
@@ -47,6 +49,7 @@ public:
     }
 
 private:
+    friend struct SnapshotAccess;
     static std::uint64_t hash(std::uint64_t key);
     void grow();
 

@@ -2,6 +2,7 @@
 #include <e2d/physics/physics_system.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/physics/collider.hpp>
 #include <e2d/physics/contact_info.hpp>
@@ -9,7 +10,6 @@
 #include <e2d/physics/rigidbody.hpp>
 
 #include "component_check.hpp"
-#include "error_format.hpp"
 #include "object_pose.hpp"
 
 #include <algorithm>
@@ -23,7 +23,7 @@ namespace {
 float checkedScale(float unitsPerMetre) {
     if (!std::isfinite(unitsPerMetre) || unitsPerMetre <= 0.0f) {
         throw core::Error("physics::PhysicsSystem::PhysicsSystem(): unitsPerMetre must be finite "
-                          "and > 0, got " + detail::formatFloat(unitsPerMetre));
+                          "and > 0, got " + core::formatNumber(unitsPerMetre));
     }
     return unitsPerMetre;
 }
@@ -137,6 +137,14 @@ void PhysicsSystem::unregisterStaticCollider(Collider& collider) noexcept {
     std::erase(staticColliders_, &collider);
 }
 
+void PhysicsSystem::registerCharacter(CharacterController& character) {
+    characters_.push_back(&character);
+}
+
+void PhysicsSystem::unregisterCharacter(CharacterController& character) noexcept {
+    std::erase(characters_, &character);
+}
+
 std::vector<Collider*> PhysicsSystem::collidersOn(const Rigidbody* body) const {
     std::vector<Collider*> riders;
     for (Collider* c : allColliders_) {
@@ -229,12 +237,16 @@ bool PhysicsSystem::preSolve(ShapeId a, ShapeId b, const Manifold& manifold) con
 
 // --- the step ---
 
-void PhysicsSystem::fixedUpdate(double step) {
+void PhysicsSystem::requireNotDispatching(const char* function) const {
     if (dispatching_) {
-        throw core::Error("physics::PhysicsSystem::fixedUpdate(): called from inside an event "
-                          "handler (CollisionEnter/Exit, TriggerEnter/Exit) of the same "
-                          "system");
+        throw core::Error(std::string("physics::PhysicsSystem::") + function +
+                          "(): called from inside an event handler (CollisionEnter/Exit, "
+                          "TriggerEnter/Exit) of the same system");
     }
+}
+
+void PhysicsSystem::fixedUpdate(double step) {
+    requireNotDispatching("fixedUpdate");
     forgetDestroyedBodies();
     syncColliders();
     pullMovedObjects(static_cast<float>(step));
@@ -250,6 +262,7 @@ void PhysicsSystem::clear() {
     colliders_.clear();
     rigidbodies_.clear();
     staticColliders_.clear();
+    characters_.clear();
     ruledColliders_ = 0;
     preSolveInstalled_ = false;
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/physics/geometry.hpp>
 
-#include "error_format.hpp"
+#include <e2d/core/error_text.hpp>
+
 #include "shape_detail.hpp"
 
 #include <string>
@@ -10,15 +11,15 @@ namespace e2d::physics {
 namespace {
 
 void checkRadius(float radius, const char* function) {
-    if (!detail::isSane(radius) || radius < 0.0f) {
-        detail::fail(function, "radius must be finite and in [0, kHuge (" + detail::formatFloat(kHuge) + " m)], got " + detail::formatFloat(radius));
+    if (!isWithinHuge(radius) || radius < 0.0f) {
+        core::throwError(function, "radius must be finite and in [0, kHuge (" + core::formatNumber(kHuge) + " m)], got " + core::formatNumber(radius));
     }
 }
 
 void checkHalfExtent(float value, const char* name, const char* function) {
-    if (!detail::isSane(value) || value <= 0.0f) {
-        detail::fail(function, std::string("half-extent ") + name + " must be finite and in (0, kHuge (" + detail::formatFloat(kHuge) + " m)], got " +
-                                   detail::formatFloat(value));
+    if (!isWithinHuge(value) || value <= 0.0f) {
+        core::throwError(function, std::string("half-extent ") + name + " must be finite and in (0, kHuge (" + core::formatNumber(kHuge) + " m)], got " +
+                                   core::formatNumber(value));
     }
 }
 
@@ -53,14 +54,14 @@ Polygon finishPolygon(const Vec2* vertices, int count, float radius) {
 Polygon makeFromHull(const Hull& hull, float radius, const char* function) {
     checkRadius(radius, function);
     if (hull.count < 3 || hull.count > kMaxPolygonVertices) {
-        detail::fail(function, "hull has " + std::to_string(hull.count) + " points, expected 3 to " +
+        core::throwError(function, "hull has " + std::to_string(hull.count) + " points, expected 3 to " +
                                    std::to_string(kMaxPolygonVertices) + " (use computeHull())");
     }
     for (int i = 0; i < hull.count; ++i) {
-        if (!detail::isSane(hull.points[i])) {
-            detail::fail(function, "hull point " + std::to_string(i) +
+        if (!isWithinHuge(hull.points[i])) {
+            core::throwError(function, "hull point " + std::to_string(i) +
                                        " must be finite and within kHuge, got " +
-                                       detail::formatVec(hull.points[i]));
+                                       core::formatVector(hull.points[i]));
         }
     }
     // A hand-made hull must still be strictly convex and counter-clockwise, or the normals and
@@ -70,9 +71,9 @@ Polygon makeFromHull(const Hull& hull, float radius, const char* function) {
         Vec2 b = hull.points[(i + 1) % hull.count];
         Vec2 c = hull.points[(i + 2) % hull.count];
         if (!(cross(b - a, c - b) > 0.0f)) {
-            detail::fail(function, "hull is not strictly convex and counter-clockwise at point " +
+            core::throwError(function, "hull is not strictly convex and counter-clockwise at point " +
                                        std::to_string((i + 1) % hull.count) + " " +
-                                       detail::formatVec(b) + " (use computeHull())");
+                                       core::formatVector(b) + " (use computeHull())");
         }
     }
     return finishPolygon(hull.points.data(), hull.count, radius);
@@ -111,11 +112,11 @@ Polygon makeOffsetBox(float hx, float hy, Vec2 center, float angle) {
     constexpr const char* kFunction = "physics::makeOffsetBox()";
     checkHalfExtent(hx, "hx", kFunction);
     checkHalfExtent(hy, "hy", kFunction);
-    if (!detail::isSane(center)) {
-        detail::fail(kFunction, "center must be finite and within kHuge, got " + detail::formatVec(center));
+    if (!isWithinHuge(center)) {
+        core::throwError(kFunction, "center must be finite and within kHuge, got " + core::formatVector(center));
     }
     if (!std::isfinite(angle)) {
-        detail::fail(kFunction, "angle must be finite, got " + detail::formatFloat(angle));
+        core::throwError(kFunction, "angle must be finite, got " + core::formatNumber(angle));
     }
     Polygon box = makeBox(hx, hy);
     Transform xf{center, Rot::fromAngle(angle)};
@@ -138,82 +139,78 @@ Polygon makeRoundedBox(float hx, float hy, float radius) {
 }
 
 void validate(const ShapeGeometry& shape, const char* function) {
-    using detail::fail;
-    using detail::formatFloat;
-    using detail::formatVec;
-    using detail::isSane;
     switch (typeOf(shape)) {
     case ShapeType::Circle: {
         const auto& circle = std::get<Circle>(shape);
-        if (!isSane(circle.center)) {
-            fail(function, "circle center must be finite and within kHuge, got " + formatVec(circle.center));
+        if (!isWithinHuge(circle.center)) {
+            core::throwError(function, "circle center must be finite and within kHuge, got " + core::formatVector(circle.center));
         }
-        if (!isSane(circle.radius) || circle.radius <= 0.0f) {
-            fail(function, "circle radius must be finite and in (0, kHuge (" + formatFloat(kHuge) + " m)], got " + formatFloat(circle.radius));
+        if (!isWithinHuge(circle.radius) || circle.radius <= 0.0f) {
+            core::throwError(function, "circle radius must be finite and in (0, kHuge (" + core::formatNumber(kHuge) + " m)], got " + core::formatNumber(circle.radius));
         }
         return;
     }
     case ShapeType::Capsule: {
         const auto& capsule = std::get<Capsule>(shape);
-        if (!isSane(capsule.center1) || !isSane(capsule.center2)) {
-            fail(function, "capsule centers must be finite and within kHuge, got " +
-                               formatVec(capsule.center1) + " and " + formatVec(capsule.center2));
+        if (!isWithinHuge(capsule.center1) || !isWithinHuge(capsule.center2)) {
+            core::throwError(function, "capsule centers must be finite and within kHuge, got " +
+                               core::formatVector(capsule.center1) + " and " + core::formatVector(capsule.center2));
         }
-        if (!isSane(capsule.radius) || capsule.radius <= 0.0f) {
-            fail(function, "capsule radius must be finite and in (0, kHuge (" + formatFloat(kHuge) + " m)], got " + formatFloat(capsule.radius));
+        if (!isWithinHuge(capsule.radius) || capsule.radius <= 0.0f) {
+            core::throwError(function, "capsule radius must be finite and in (0, kHuge (" + core::formatNumber(kHuge) + " m)], got " + core::formatNumber(capsule.radius));
         }
         // A capsule shorter than the slop has no usable axis; a Circle says what is meant.
         float len = distance(capsule.center1, capsule.center2);
         if (!(len >= kLinearSlop)) {
-            fail(function, "capsule centers must be at least kLinearSlop (" + formatFloat(kLinearSlop) +
-                               " m) apart, got " + formatFloat(len) + " (use a Circle)");
+            core::throwError(function, "capsule centers must be at least kLinearSlop (" + core::formatNumber(kLinearSlop) +
+                               " m) apart, got " + core::formatNumber(len) + " (use a Circle)");
         }
         return;
     }
     case ShapeType::ChainSegment: {
         const auto& chain = std::get<ChainSegment>(shape);
-        if ((chain.hasGhost1 && !isSane(chain.ghost1)) || (chain.hasGhost2 && !isSane(chain.ghost2))) {
-            fail(function, "chain segment ghost points must be finite and within kHuge, got " +
-                               formatVec(chain.ghost1) + " and " + formatVec(chain.ghost2));
+        if ((chain.hasGhost1 && !isWithinHuge(chain.ghost1)) || (chain.hasGhost2 && !isWithinHuge(chain.ghost2))) {
+            core::throwError(function, "chain segment ghost points must be finite and within kHuge, got " +
+                               core::formatVector(chain.ghost1) + " and " + core::formatVector(chain.ghost2));
         }
         validate(chain.segment, function);
         return;
     }
     case ShapeType::Segment: {
         const auto& segment = std::get<Segment>(shape);
-        if (!isSane(segment.point1) || !isSane(segment.point2)) {
-            fail(function, "segment points must be finite and within kHuge, got " +
-                               formatVec(segment.point1) + " and " + formatVec(segment.point2));
+        if (!isWithinHuge(segment.point1) || !isWithinHuge(segment.point2)) {
+            core::throwError(function, "segment points must be finite and within kHuge, got " +
+                               core::formatVector(segment.point1) + " and " + core::formatVector(segment.point2));
         }
         float len = distance(segment.point1, segment.point2);
         if (!(len >= kLinearSlop)) {
-            fail(function, "segment points must be at least kLinearSlop (" + formatFloat(kLinearSlop) +
-                               " m) apart, got " + formatFloat(len));
+            core::throwError(function, "segment points must be at least kLinearSlop (" + core::formatNumber(kLinearSlop) +
+                               " m) apart, got " + core::formatNumber(len));
         }
         return;
     }
     case ShapeType::Polygon: {
         const auto& polygon = std::get<Polygon>(shape);
         if (polygon.count < 3 || polygon.count > kMaxPolygonVertices) {
-            fail(function, "polygon has " + std::to_string(polygon.count) + " vertices, expected 3 to " +
+            core::throwError(function, "polygon has " + std::to_string(polygon.count) + " vertices, expected 3 to " +
                                std::to_string(kMaxPolygonVertices) + " (use makePolygon())");
         }
-        if (!isSane(polygon.radius) || polygon.radius < 0.0f) {
-            fail(function, "polygon radius must be finite and in [0, kHuge (" + formatFloat(kHuge) + " m)], got " + formatFloat(polygon.radius));
+        if (!isWithinHuge(polygon.radius) || polygon.radius < 0.0f) {
+            core::throwError(function, "polygon radius must be finite and in [0, kHuge (" + core::formatNumber(kHuge) + " m)], got " + core::formatNumber(polygon.radius));
         }
-        if (!isSane(polygon.centroid)) {
-            fail(function, "polygon centroid must be finite and within kHuge, got " +
-                               formatVec(polygon.centroid));
+        if (!isWithinHuge(polygon.centroid)) {
+            core::throwError(function, "polygon centroid must be finite and within kHuge, got " +
+                               core::formatVector(polygon.centroid));
         }
         for (int i = 0; i < polygon.count; ++i) {
-            if (!isSane(polygon.vertices[i])) {
-                fail(function, "polygon vertex " + std::to_string(i) +
-                                   " must be finite and within kHuge, got " + formatVec(polygon.vertices[i]));
+            if (!isWithinHuge(polygon.vertices[i])) {
+                core::throwError(function, "polygon vertex " + std::to_string(i) +
+                                   " must be finite and within kHuge, got " + core::formatVector(polygon.vertices[i]));
             }
             Vec2 n = polygon.normals[i];
             if (!isFinite(n) || std::fabs(lengthSquared(n) - 1.0f) > 1.0e-3f) {
-                fail(function, "polygon normal " + std::to_string(i) + " must be a unit vector, got " +
-                                   formatVec(n) + " (use makePolygon())");
+                core::throwError(function, "polygon normal " + std::to_string(i) + " must be a unit vector, got " +
+                                   core::formatVector(n) + " (use makePolygon())");
             }
         }
         for (int i = 0; i < polygon.count; ++i) {
@@ -221,7 +218,7 @@ void validate(const ShapeGeometry& shape, const char* function) {
             Vec2 b = polygon.vertices[(i + 1) % polygon.count];
             Vec2 c = polygon.vertices[(i + 2) % polygon.count];
             if (!(cross(b - a, c - b) > 0.0f)) {
-                fail(function, "polygon is not strictly convex and counter-clockwise at vertex " +
+                core::throwError(function, "polygon is not strictly convex and counter-clockwise at vertex " +
                                    std::to_string((i + 1) % polygon.count) + " (use makePolygon())");
             }
         }

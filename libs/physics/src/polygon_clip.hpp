@@ -56,17 +56,28 @@ static inline LocalManifold clipPolygons(const PolygonRef& a, const PolygonRef& 
     const float upper1 = dot(v12 - v11, tangent);
     const float upper2 = dot(v21 - v11, tangent);
     const float lower2 = dot(v22 - v11, tangent);
+    //
+    // A clipped point is placed from the reference edge, not interpolated along the incident
+    // edge: its tangent coordinate is the side plane's and only its height above the reference
+    // face is interpolated, from heights measured from v11. Interpolated from the incident
+    // edge's far ends, a long edge (a 400 m ground under a box) put the point 1.5e-5 m off the
+    // box's corner (the rounding at 200 m), a lever arm that differs between the two corners.
     Vec2 vLower = v22;
     Vec2 vUpper = v21;
     const float span = upper2 - lower2;
     if (span > 1.1920929e-7f) {
+        const float height21 = dot(v21 - v11, normal);
+        const float height22 = dot(v22 - v11, normal);
+        auto onSidePlane = [&](float t, float s) {
+            return v11 + t * tangent + (height22 + s * (height21 - height22)) * normal;
+        };
         if (lower2 < lower1) {
             float s = (lower1 - lower2) / span;
-            vLower = v22 + (s > 1.0f ? 1.0f : s) * (v21 - v22);
+            vLower = s > 1.0f ? v21 : onSidePlane(lower1, s);
         }
         if (upper2 > upper1) {
             float s = (upper1 - lower2) / span;
-            vUpper = v22 + (s < 0.0f ? 0.0f : s) * (v21 - v22);
+            vUpper = s < 0.0f ? v22 : onSidePlane(upper1, s);
         }
     }
 

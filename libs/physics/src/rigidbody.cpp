@@ -2,6 +2,7 @@
 #include <e2d/physics/rigidbody.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/scene.hpp>
 #include <e2d/physics/collider.hpp>
@@ -25,14 +26,14 @@ constexpr const char* kConstructor = "Rigidbody::Rigidbody";
 void requireFiniteArg(const char* function, const char* name, float value) {
     if (!std::isfinite(value)) {
         throw core::Error(std::string("physics::Rigidbody::") + function + "(): " + name +
-                          " must be finite, got " + detail::formatFloat(value));
+                          " must be finite, got " + core::formatNumber(value));
     }
 }
 
 void requireFiniteArg(const char* function, const char* name, Vec2 value) {
     if (!std::isfinite(value.x) || !std::isfinite(value.y)) {
         throw core::Error(std::string("physics::Rigidbody::") + function + "(): " + name +
-                          " must be finite, got " + detail::formatVec(value));
+                          " must be finite, got " + core::formatVector(value));
     }
 }
 

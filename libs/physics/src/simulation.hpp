@@ -91,6 +91,8 @@ struct Contact {
 
 struct Simulation {
     SolverDef def{};
+    // The widest SIMD the solver may use (WorldDef::simdLanes): 4 or 8.
+    int simdLanes = 8;
 
     std::vector<Contact> contacts;
     std::vector<int> freeContacts;
@@ -105,6 +107,8 @@ struct Simulation {
         float rollingResistance = 0.0f;
     };
     std::vector<TouchingContact> touchingContacts;
+    // Per contact slot, what the narrow phase's parallel pass found (World::Impl::updateContacts()).
+    std::vector<unsigned char> contactUpdates;
     // The soft step's relax iterations on top of SolverDef::relaxIterations in the last solve,
     // the most of any block (detail::kPushOutRelaxIterations while shapes were pushed apart).
     int extraRelaxIterations = 0;
@@ -125,7 +129,6 @@ struct Simulation {
     // Classic mode and rolling resistance only: the wide solver packs each constraint as it is
     // built and keeps it nowhere else.
     std::vector<ContactConstraint> constraints; // in contact order
-    std::vector<WideRestitution> wideRestitution; // the block being solved
     // A hit found while storing impulses by level: contact, point, approach speed.
     struct HitCandidate {
         int contact = -1;
@@ -133,6 +136,15 @@ struct Simulation {
         float speed = 0.0f;
     };
     std::vector<HitCandidate> hitCandidates;
+    // What each worker of the wide solve keeps apart from the others while it solves its blocks
+    // (World::Impl::solve()): the block's restitution list, the hits found, the most relax
+    // sweeps added. Merged in a fixed order afterwards.
+    struct BlockWorker {
+        std::vector<WideRestitution> restitution;
+        std::vector<HitCandidate> hits;
+        int extraRelaxIterations = 0;
+    };
+    std::vector<BlockWorker> blockWorkers;
     // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), the
     // slots in level order (level k holds slots [levelStart[k], levelStart[k + 1]), contact
     // order within a level) with each slot's constraint, contact and bodies, and the packed
@@ -157,6 +169,20 @@ struct Simulation {
     std::vector<int> blockLevelStart;
     std::vector<int> blockBodyStart;
     std::vector<int> blockBodies;
+    // One block solved by several workers at once (World::Impl::scheduleWide(), when one block
+    // holds most constraints and several workers are set, so the blocks alone cannot share the
+    // work): each of its levels is cut in `roles` levels, one per worker, by who owns the
+    // constraints (the worker of its first moving body, bodies cut in runs of state order).
+    // A level's parts share no moving body either, so this is the same sweep. Per part
+    // (block-local level l, its worker l % roles) and other worker v: needForward[l * roles + v]
+    // is the last earlier part of v sharing a body state with it (-1: none), needBackward the
+    // first later one (-1: none), what it waits for in a forward or backward sweep. splitBlock
+    // -1: no block is split.
+    int splitRoles = 1;
+    int splitBlock = -1;
+    std::vector<int> splitNeedForward;
+    std::vector<int> splitNeedBackward;
+    std::vector<int> splitScratch;
     // The schedule above depends on nothing but the constraints (contacts and sides) and which
     // states are rigid. wideScheduleValid: it was built from the last solve's
     // constraintContacts, constraintBodies and stateRigid, which each solve keeps here

@@ -2,21 +2,15 @@
 #include <e2d/physics/solver_def.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <string>
 
 namespace e2d::physics {
 
 namespace {
-
-std::string text(float x) {
-    char buffer[32];
-    auto result = std::to_chars(buffer, buffer + sizeof(buffer), x);
-    return std::string(buffer, result.ptr);
-}
 
 [[noreturn]] void fail(const std::string& what) {
     throw core::Error("physics::World::World(): def.solver." + what);
@@ -31,20 +25,20 @@ void requireRange(const char* name, int value, int lo, int hi) {
 
 void requirePositive(const char* name, float value) {
     if (!(std::isfinite(value) && value > 0.0f)) {
-        fail(std::string(name) + " must be finite and > 0, got " + text(value));
+        fail(std::string(name) + " must be finite and > 0, got " + core::formatNumber(value));
     }
 }
 
 void requireNonNegative(const char* name, float value) {
     if (!(std::isfinite(value) && value >= 0.0f)) {
-        fail(std::string(name) + " must be finite and >= 0, got " + text(value));
+        fail(std::string(name) + " must be finite and >= 0, got " + core::formatNumber(value));
     }
 }
 
 void requireInterval(const char* name, float value, float lo, float hi) {
     if (!(std::isfinite(value) && value >= lo && value <= hi)) {
-        fail(std::string(name) + " must be finite and in [" + text(lo) + ", " + text(hi) + "], got " +
-             text(value));
+        fail(std::string(name) + " must be finite and in [" + core::formatNumber(lo) + ", " + core::formatNumber(hi) + "], got " +
+             core::formatNumber(value));
     }
 }
 

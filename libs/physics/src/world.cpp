@@ -41,6 +41,18 @@ void validateWorldDef(const WorldDef& def) {
         check::fail(fn,
                     "def.shapeCapacity must be >= 0, got " + std::to_string(def.shapeCapacity));
     }
+    if (def.workerCount < 1 || def.workerCount > kMaxWorkers) {
+        check::fail(fn, "def.workerCount must be in [1, " + std::to_string(kMaxWorkers) + "], got " +
+                            std::to_string(def.workerCount));
+    }
+    if ((def.enqueueTask == nullptr) != (def.finishTask == nullptr)) {
+        check::fail(fn, std::string("def.enqueueTask and def.finishTask must both be set or both be "
+                                    "null, got only ") +
+                            (def.enqueueTask != nullptr ? "enqueueTask" : "finishTask"));
+    }
+    if (def.simdLanes != 4 && def.simdLanes != 8) {
+        check::fail(fn, "def.simdLanes must be 4 or 8, got " + std::to_string(def.simdLanes));
+    }
 }
 
 void validateBodyDef(const BodyDef& def) {
@@ -88,22 +100,16 @@ std::uint16_t tagFromAddress(const void* address) {
 template <class Id>
 std::string describe(const char* type, Id id) {
     return std::string(type) + " (index1 " + std::to_string(id.index1) + ", generation " +
-           std::to_string(id.generation) + ", world " + std::to_string(id.world) + ")";
+           std::to_string(id.generation) + ", world " + std::to_string(id.owner) + ")";
 }
 
 template <class Id>
 [[noreturn]] void failHandle(const char* function, const char* type, Id id, std::uint16_t tag) {
-    if (!id.isNull() && id.world != tag) {
+    if (!id.isNull() && id.owner != tag) {
         check::fail(function, describe(type, id) + " belongs to another world (this world's tag is " +
                                   std::to_string(tag) + ")");
     }
     check::fail(function, "stale or null " + describe(type, id));
-}
-
-std::uint16_t nextGeneration(std::uint16_t generation) {
-    // Skip 0 on wrap-around so a zero generation is never live.
-    ++generation;
-    return generation == 0 ? std::uint16_t{1} : generation;
 }
 
 } // namespace
@@ -177,7 +183,7 @@ void World::Impl::destroyShapeAt(int shapeIndex) {
     }
     --b.shapeCount;
     s.alive = false;
-    s.generation = nextGeneration(s.generation);
+    s.generation = core::nextGeneration(s.generation);
     int bodyIndex = s.body;
     s.body = s.prevShape = s.nextShape = kNullIndex;
     shapeIds.release(shapeIndex);
@@ -238,6 +244,8 @@ World::World(const WorldDef& def) {
     impl_->collisionAlgorithm = def.collisionAlgorithm;
     impl_->speculativeDistance = def.speculativeDistance;
     impl_->tag = def.tag != 0 ? def.tag : tagFromAddress(impl_.get());
+    impl_->tasks.configure(def.workerCount, def.enqueueTask, def.finishTask, def.userTaskContext);
+    impl_->sim.simdLanes = def.simdLanes;
     impl_->bodies.reserve(static_cast<std::size_t>(def.bodyCapacity));
     impl_->bodyIds.reserve(def.bodyCapacity);
     impl_->shapes.reserve(static_cast<std::size_t>(def.shapeCapacity));
@@ -296,7 +304,7 @@ void World::destroyBody(BodyId id) {
     }
     detail::Body& b = w.body(index);
     b.alive = false;
-    b.generation = nextGeneration(b.generation);
+    b.generation = core::nextGeneration(b.generation);
     w.bodyIds.release(index);
 }
 

@@ -2,10 +2,9 @@
 #pragma once
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/physics/constants.hpp>
 #include <e2d/physics/math.hpp>
-
-#include "error_format.hpp"
 
 #include <cmath>
 #include <string>
@@ -13,21 +12,11 @@
 // Building the messages of World's input checks: "physics::World::fn(): what, got value".
 namespace e2d::physics::detail::world_check {
 
-inline std::string text(float x) { return formatFloat(x); }
-// Appends instead of `"(" + std::string`: g++ 12 at -O3 reports a false -Wrestrict inside
-// operator+(const char*, std::string&&) (GCC bug 105329).
-inline std::string text(Vec2 v) {
-    std::string out = "(";
-    out.append(formatFloat(v.x)).append(", ").append(formatFloat(v.y)).append(")");
-    return out;
-}
+inline std::string text(float x) { return core::formatNumber(x); }
+inline std::string text(Vec2 v) { return core::formatVector(v); }
 
 [[noreturn]] inline void fail(const char* function, const std::string& what) {
     throw core::Error(std::string("physics::World::") + function + "(): " + what);
-}
-
-inline bool isWithinHuge(Vec2 v) {
-    return isFinite(v) && std::abs(v.x) <= kHuge && std::abs(v.y) <= kHuge;
 }
 
 inline void requireFinite(const char* function, const char* name, float x) {

@@ -8,6 +8,7 @@
 #include "joint_solver.hpp"
 #include "slot_array.hpp"
 #include "simulation.hpp"
+#include "task_pool.hpp"
 #include "world_hooks.hpp"
 
 #include <cstdint>
@@ -82,22 +83,16 @@ struct World::Impl {
     detail::IdPool shapeIds;
     detail::BroadPhase broadPhase;
 
-    // Index of a live body named by `id`, or kNullIndex.
-    [[nodiscard]] int find(BodyId id) const {
-        if (id.index1 == 0 || id.index1 > bodies.size() || id.world != tag) {
-            return detail::kNullIndex;
-        }
-        const detail::Body& body = bodies[id.index1 - 1];
-        return body.alive && body.generation == id.generation ? static_cast<int>(id.index1 - 1)
-                                                              : detail::kNullIndex;
-    }
-    [[nodiscard]] int find(ShapeId id) const {
-        if (id.index1 == 0 || id.index1 > shapes.size() || id.world != tag) {
-            return detail::kNullIndex;
-        }
-        const detail::Shape& shape = shapes[id.index1 - 1];
-        return shape.alive && shape.generation == id.generation ? static_cast<int>(id.index1 - 1)
-                                                                : detail::kNullIndex;
+    // Index of a live body (shape, joint) named by `id`, or kNullIndex.
+    [[nodiscard]] int find(BodyId id) const { return findIn(bodies, id); }
+    [[nodiscard]] int find(ShapeId id) const { return findIn(shapes, id); }
+    [[nodiscard]] int find(JointId id) const { return findIn(joints, id); }
+    template <class Slots, class Id>
+    [[nodiscard]] int findIn(const Slots& slots, Id id) const {
+        const auto index = core::findSlot(
+            id, slots.size(),
+            [&slots](std::uint32_t i) { return slots[i].alive ? slots[i].generation : std::uint16_t{0}; }, tag);
+        return index ? static_cast<int>(*index) : detail::kNullIndex;
     }
     // The function whose callback is running (overlapAabb, forEachCandidatePair,
     // forEachTouchingContact, or step/updatePairs for the hooks), or nullptr, and for a hook
@@ -133,12 +128,10 @@ struct World::Impl {
     int require(ShapeId id, const char* function) const;
 
     [[nodiscard]] BodyId bodyId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1,
-                bodies[static_cast<std::size_t>(index)].generation, tag};
+        return BodyId::forSlot(static_cast<std::uint32_t>(index), body(index).generation, tag);
     }
     [[nodiscard]] ShapeId shapeId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1,
-                shapes[static_cast<std::size_t>(index)].generation, tag};
+        return ShapeId::forSlot(static_cast<std::uint32_t>(index), shape(index).generation, tag);
     }
     detail::Body& body(int index) { return bodies[static_cast<std::size_t>(index)]; }
     const detail::Body& body(int index) const { return bodies[static_cast<std::size_t>(index)]; }
@@ -157,6 +150,8 @@ struct World::Impl {
     // --- dynamics (world_step.cpp, contact.cpp, island.cpp, world_dynamics.cpp) ---
 
     detail::Simulation sim;
+    // The step's parallel stages (WorldDef::workerCount, enqueueTask, finishTask).
+    detail::Tasks tasks;
     // Pre-solve and pair filter callbacks, move events (world_hooks.cpp).
     detail::Hooks hooks;
 
@@ -170,10 +165,15 @@ struct World::Impl {
     void wakeBody(int bodyIndex);
     // Pairs -> contacts; narrow phase; begin/end/sensor events.
     void updateContacts(float dt);
+    // One contact's narrow phase (contact.cpp): its new manifold and whether it touches.
+    [[nodiscard]] bool updateManifold(detail::Contact& c, float dt) const;
     void createContact(int shapeA, int shapeB);
     void destroyContact(int contactIndex, bool reportEnd);
     void solve(float dt);
     void scheduleWide(int constraintCount);
+    // scheduleWide()'s parts that let several workers solve one block (Simulation::splitBlock).
+    void splitLargestBlock(std::size_t count, int blockCount);
+    void findSplitNeeds();
     // Time of impact for this step's fast bodies and bullets (continuous.cpp): solveContinuous()
     // picks them from the solver arrays, sweepBody() sweeps one (index in sims).
     void solveContinuous();
@@ -196,16 +196,9 @@ struct World::Impl {
     std::vector<detail::Joint> joints;
     detail::IdPool jointIds;
 
-    [[nodiscard]] int find(JointId id) const {
-        if (id.index1 == 0 || id.index1 > joints.size() || id.world != tag) {
-            return detail::kNullIndex;
-        }
-        const detail::Joint& j = joints[id.index1 - 1];
-        return j.alive && j.generation == id.generation ? static_cast<int>(id.index1 - 1) : detail::kNullIndex;
-    }
     int require(JointId id, const char* function) const;
     [[nodiscard]] JointId jointId(int index) const {
-        return {static_cast<std::uint32_t>(index) + 1, joints[static_cast<std::size_t>(index)].generation, tag};
+        return JointId::forSlot(static_cast<std::uint32_t>(index), joint(index).generation, tag);
     }
     detail::Joint& joint(int index) { return joints[static_cast<std::size_t>(index)]; }
     const detail::Joint& joint(int index) const { return joints[static_cast<std::size_t>(index)]; }

@@ -34,7 +34,7 @@ void checkRay(const char* function, Vec2 origin, Vec2 translation) {
                     "translation must be finite and non-zero, got " + check::text(translation));
     }
     // Beyond kHuge nothing can be hit, and the end point must stay representable.
-    if (!check::isWithinHuge(origin + translation)) {
+    if (!isWithinHuge(origin + translation)) {
         check::fail(function, "origin + translation must be within kHuge (" +
                                   check::text(kHuge) + " m), got " +
                                   check::text(origin + translation));

@@ -137,6 +137,7 @@ void World::Impl::scheduleWide(int constraintCount) {
         int& levels = s.blockLevelStart[static_cast<std::size_t>(s.islandBlock[root]) + 1];
         levels = std::max(levels, s.constraintLevel[k] + 1);
     }
+    splitLargestBlock(count, blockCount);
     // Block `blockCount` holds the bodies no constraint touches: no levels.
     for (int b = 0; b < blockCount; ++b) {
         s.blockLevelStart[static_cast<std::size_t>(b) + 1] += s.blockLevelStart[static_cast<std::size_t>(b)];
@@ -170,7 +171,7 @@ void World::Impl::scheduleWide(int constraintCount) {
     }
     // Eight lanes only pay when levels are wide enough to fill them: a small pile's levels
     // hold a few constraints each, and half-empty groups of eight cost more than full fours.
-    int lanes = detail::bestWideLanes();
+    int lanes = std::min(detail::bestWideLanes(), s.simdLanes);
     if (lanes > 4 && 2 * count < static_cast<std::size_t>(lanes * levelCount)) {
         lanes = 4;
     }
@@ -194,6 +195,114 @@ void World::Impl::scheduleWide(int constraintCount) {
         s.blockBodies[static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(s.bodyBlock[i])]++)] =
             static_cast<int>(i);
     }
+    if (s.splitBlock >= 0) {
+        findSplitNeeds();
+    }
+}
+
+namespace {
+
+// A block is split across workers from this many constraints: below, waiting for each other
+// costs more than it saves.
+constexpr int kSplitConstraints = 2048;
+// At most this many workers share one block.
+constexpr int kMaxSplitRoles = 4;
+
+} // namespace
+
+// Called by scheduleWide() once each constraint has its block (islandBlock of its island) and
+// its level within the block: cuts the levels of the block holding most constraints, if it
+// holds more than half of them, into one level per worker (Simulation::splitRoles).
+void World::Impl::splitLargestBlock(std::size_t count, int blockCount) {
+    detail::Simulation& s = sim;
+    s.splitBlock = -1;
+    s.splitRoles = std::min(tasks.workerCount(), kMaxSplitRoles);
+    if (s.splitRoles < 2 || !tasks.canRunTogether() || count < static_cast<std::size_t>(kSplitConstraints)) {
+        return;
+    }
+    std::vector<int>& inBlock = s.splitScratch;
+    inBlock.assign(static_cast<std::size_t>(blockCount), 0);
+    for (std::size_t k = 0; k < count; ++k) {
+        ++inBlock[static_cast<std::size_t>(s.islandBlock[static_cast<std::size_t>(s.constraintIsland[k])])];
+    }
+    const auto largest = static_cast<int>(std::max_element(inBlock.begin(), inBlock.end()) - inBlock.begin());
+    if (2 * static_cast<std::size_t>(inBlock[static_cast<std::size_t>(largest)]) <= count) {
+        return; // the blocks share the work well enough
+    }
+    s.splitBlock = largest;
+    // Owners: the block's moving bodies in state order, cut in splitRoles runs.
+    const std::size_t n = s.sims.size();
+    std::vector<int>& owner = s.splitScratch;
+    owner.assign(n, -1);
+    int blockBodyCount = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (s.islandBlock[static_cast<std::size_t>(detail::findRoot(s.blockParent, static_cast<int>(i)))] == largest) {
+            owner[i] = blockBodyCount++;
+        }
+    }
+    for (int& o : owner) {
+        o = o < 0 ? -1 : static_cast<int>(static_cast<long long>(o) * s.splitRoles / std::max(blockBodyCount, 1));
+    }
+    const int roles = s.splitRoles;
+    int levels = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+        if (s.islandBlock[static_cast<std::size_t>(s.constraintIsland[k])] != largest) {
+            continue;
+        }
+        const detail::Simulation::ConstraintBodies& cb = s.constraintBodies[k];
+        const int first = cb.indexA >= 0 && s.stateRigid[static_cast<std::size_t>(cb.indexA)] == 0 ? cb.indexA : cb.indexB;
+        const int role = first >= 0 ? std::max(owner[static_cast<std::size_t>(first)], 0) : 0;
+        int& level = s.constraintLevel[k];
+        level = level * roles + role;
+        levels = std::max(levels, level + 1);
+    }
+    // Every part of the last level exists (the parts' owner is their level modulo roles).
+    levels = (levels + roles - 1) / roles * roles;
+    s.blockLevelStart[static_cast<std::size_t>(largest) + 1] = levels;
+}
+
+// The waits of the split block's parts (Simulation::splitNeedForward, splitNeedBackward), from
+// the slots of its levels.
+void World::Impl::findSplitNeeds() {
+    detail::Simulation& s = sim;
+    const int roles = s.splitRoles;
+    const auto b = static_cast<std::size_t>(s.splitBlock);
+    const int first = s.blockLevelStart[b];
+    const int levels = s.blockLevelStart[b + 1] - first;
+    const std::size_t n = s.sims.size();
+    // A rigid side (kinematic) is no moving body for the levels, but its state is still
+    // written back with the others: the parts wait for each other on it too, so two workers
+    // never touch one state at once.
+    // Per body and worker, the last part (forward) or first part (backward) seen touching it.
+    std::vector<int>& seen = s.splitScratch;
+    auto sweep = [&](std::vector<int>& need, bool backward) {
+        need.assign(static_cast<std::size_t>(levels) * static_cast<std::size_t>(roles), -1);
+        seen.assign(n * static_cast<std::size_t>(roles), -1);
+        for (int i = 0; i < levels; ++i) {
+            const int l = backward ? levels - 1 - i : i;
+            const int role = l % roles;
+            const auto at = static_cast<std::size_t>(first + l);
+            for (int slot = s.levelStart[at]; slot < s.levelStart[at + 1]; ++slot) {
+                const detail::Simulation::ConstraintBodies& cb = s.slotBodies[static_cast<std::size_t>(slot)];
+                for (int body : {cb.indexA, cb.indexB}) {
+                    if (body < 0) {
+                        continue;
+                    }
+                    const std::size_t row = static_cast<std::size_t>(body) * static_cast<std::size_t>(roles);
+                    for (int v = 0; v < roles; ++v) {
+                        const int other = seen[row + static_cast<std::size_t>(v)];
+                        int& wait = need[static_cast<std::size_t>(l) * static_cast<std::size_t>(roles) + static_cast<std::size_t>(v)];
+                        if (v != role && other >= 0) {
+                            wait = wait < 0 ? other : (backward ? std::min(wait, other) : std::max(wait, other));
+                        }
+                    }
+                    seen[row + static_cast<std::size_t>(role)] = l;
+                }
+            }
+        }
+    };
+    sweep(s.splitNeedForward, false);
+    sweep(s.splitNeedBackward, true);
 }
 
 void World::Impl::solve(float dt) {
@@ -382,9 +491,9 @@ void World::Impl::solve(float dt) {
     // Impulses go back to the manifolds for next step's warm start; a hit event for the
     // fastest approaching point of each, emitted in contact order at the end.
     s.hitCandidates.clear();
-    auto store = [&](int contactIndex, int pointCount, const float* normalImpulse,
-                     const float* tangentImpulse, const float* relativeVelocity,
-                     const float* maxNormalImpulse) {
+    auto store = [&](std::vector<detail::Simulation::HitCandidate>& hits, int contactIndex,
+                     int pointCount, const float* normalImpulse, const float* tangentImpulse,
+                     const float* relativeVelocity, const float* maxNormalImpulse) {
         detail::Contact& c = s.contacts[static_cast<std::size_t>(contactIndex)];
         float fastest = def.hitEventThreshold;
         int fastestPoint = -1;
@@ -398,7 +507,7 @@ void World::Impl::solve(float dt) {
             }
         }
         if (fastestPoint >= 0) {
-            s.hitCandidates.push_back({contactIndex, fastestPoint, fastest});
+            hits.push_back({contactIndex, fastestPoint, fastest});
         }
     };
 
@@ -417,23 +526,15 @@ void World::Impl::solve(float dt) {
         // lie one island apart in the array, too far for the hardware prefetcher: fetch the
         // ones a few slots ahead.
         constexpr int kPrefetchAhead = 16;
-        auto storeLane = [&](int slot, const detail::WideLaneResult& r) {
-            if (slot + kPrefetchAhead < constraintCount) {
-                detail::prefetchObject(&s.contacts[static_cast<std::size_t>(
-                    s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
-            }
-            const int ci = s.slotContact[static_cast<std::size_t>(slot)];
-            store(ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount, r.normalImpulse,
-                  r.tangentImpulse, r.relativeVelocity, r.maxNormalImpulse);
-        };
         // A block's constraints are gathered lane by lane and prepared a whole group at a time
         // (prepareWideGroup()), right before the block is solved: no constraint array in
         // between, and the block's contacts, lanes and bodies stay in cache through build,
         // sub-steps and store.
-        auto buildBlock = [&](auto& in, int firstLevel, int endLevel) {
+        auto buildBlock = [&](auto& in, int firstLevel, int endLevel,
+                              std::vector<detail::WideRestitution>& restitution) {
             constexpr int N = static_cast<int>(sizeof(in.indexA) / sizeof(in.indexA[0]));
             bool blockPushOut = false;
-            s.wideRestitution.clear();
+            restitution.clear();
             for (int level = firstLevel; level < endLevel; ++level) {
                 const int levelFirst = s.levelStart[static_cast<std::size_t>(level)];
                 const int levelEnd = s.levelStart[static_cast<std::size_t>(level) + 1];
@@ -456,43 +557,108 @@ void World::Impl::solve(float dt) {
                         in.setLane(lane, c.manifold, a, b, c.friction, softnessOf(a, b));
                         blockPushOut = blockPushOut || pushedApart(c, a, b);
                         if (c.restitution != 0.0f) {
-                            s.wideRestitution.push_back({level, slot - levelFirst, c.manifold.pointCount,
-                                                         c.restitution, pressOf(c, a, b),
-                                                         s.slotConstraint[at]});
+                            restitution.push_back({level, slot - levelFirst, c.manifold.pointCount,
+                                                   c.restitution, pressOf(c, a, b),
+                                                   s.slotConstraint[at]});
                         }
                     }
                     detail::prepareWideGroup(s.wideContacts, group, in);
                 }
             }
             // applyRestitution() goes in constraint order.
-            std::sort(s.wideRestitution.begin(), s.wideRestitution.end(),
+            std::sort(restitution.begin(), restitution.end(),
                       [](const detail::WideRestitution& x, const detail::WideRestitution& y) {
                           return x.constraint < y.constraint;
                       });
             return blockPushOut;
         };
         const std::span<const int> blockBodies = s.blockBodies;
-        detail::WideManifoldT<4> lanes4;
-        detail::WideManifoldT<8> lanes8;
-        for (std::size_t b = 0; b + 1 < s.blockLevelStart.size(); ++b) {
+        // Blocks share no body (see scheduleWide()), so they are solved on several workers at
+        // once, each block whole on one, with what the others also write kept per worker.
+        auto solveBlock = [&](std::size_t b, detail::Simulation::BlockWorker& worker, bool split) {
             const int firstLevel = s.blockLevelStart[b];
             const int endLevel = s.blockLevelStart[b + 1];
             // Only the block holding shapes pushed apart sweeps more.
             detail::SolverStep blockStep = step;
-            pushOutSweeps(blockStep, s.wideContacts.lanes == 8 ? buildBlock(lanes8, firstLevel, endLevel)
-                                                               : buildBlock(lanes4, firstLevel, endLevel));
-            s.extraRelaxIterations = std::max(s.extraRelaxIterations, blockStep.extraRelaxIterations);
-            detail::solveSoftStepBlock(
-                blockStep, s.wideContacts, firstLevel, endLevel,
+            bool blockPushOut = false;
+            if (s.wideContacts.lanes == 8) {
+                detail::WideManifoldT<8> lanes8;
+                blockPushOut = buildBlock(lanes8, firstLevel, endLevel, worker.restitution);
+            } else {
+                detail::WideManifoldT<4> lanes4;
+                blockPushOut = buildBlock(lanes4, firstLevel, endLevel, worker.restitution);
+            }
+            pushOutSweeps(blockStep, blockPushOut);
+            worker.extraRelaxIterations = std::max(worker.extraRelaxIterations, blockStep.extraRelaxIterations);
+            const std::span<const int> bodiesOf =
                 blockBodies.subspan(static_cast<std::size_t>(s.blockBodyStart[b]),
-                                    static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b])),
-                s.wideRestitution,
+                                    static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b]));
+            if (split) {
+                detail::SplitSync sync(s.splitRoles, s.splitNeedForward, s.splitNeedBackward,
+                                       tasks.spinning());
+                tasks.runTogether(s.splitRoles, [&](int role) {
+                    detail::solveSoftStepBlockRole(blockStep, s.wideContacts, firstLevel, endLevel,
+                                                   bodiesOf, worker.restitution, sync, role);
+                });
+            } else {
+                detail::solveSoftStepBlock(
+                blockStep, s.wideContacts, firstLevel, endLevel, bodiesOf,
+                worker.restitution,
                 s.activeJoints.empty()
                     ? std::span<const int>{}
                     : std::span<const int>(s.blockJoints)
                           .subspan(static_cast<std::size_t>(s.blockJointStart[b]),
                                    static_cast<std::size_t>(s.blockJointStart[b + 1] - s.blockJointStart[b])));
-            detail::visitWide(s.wideContacts, s.levelStart, firstLevel, endLevel, storeLane);
+            }
+            // Contacts are visited in slot order, twice a block: gathered before it is solved
+            // and their impulses stored right after, while its lanes are in cache. A level's
+            // contacts lie one island apart in the array, too far for the hardware prefetcher:
+            // fetch the ones a few slots ahead.
+            detail::visitWide(s.wideContacts, s.levelStart, firstLevel, endLevel,
+                              [&](int slot, const detail::WideLaneResult& r) {
+                if (slot + kPrefetchAhead < constraintCount) {
+                    detail::prefetchObject(&s.contacts[static_cast<std::size_t>(
+                        s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
+                }
+                const int ci = s.slotContact[static_cast<std::size_t>(slot)];
+                store(worker.hits, ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount,
+                      r.normalImpulse, r.tangentImpulse, r.relativeVelocity, r.maxNormalImpulse);
+            });
+        };
+        const int blockCount = static_cast<int>(s.blockLevelStart.size()) - 1;
+        // The direct joint solve keeps its arrays in one place (JointStep::direct): its blocks
+        // go one after another.
+        const bool oneWorker = jointStep.direct != nullptr && !s.activeJoints.empty();
+        s.blockWorkers.resize(static_cast<std::size_t>(tasks.workerCount()));
+        for (detail::Simulation::BlockWorker& w : s.blockWorkers) {
+            w.hits.clear();
+            w.extraRelaxIterations = 0;
+        }
+        // The block split across workers (scheduleWide()) goes alone, after the others; its
+        // workers wait for each other, so they run at once, on the world's own threads only.
+        const int split = s.splitBlock;
+        const bool splitOn =
+            split >= 0 && !oneWorker && tasks.canRunTogether() &&
+            (s.activeJoints.empty() || s.blockJointStart[static_cast<std::size_t>(split) + 1] ==
+                                           s.blockJointStart[static_cast<std::size_t>(split)]);
+        auto solveBlocks = [&](int begin, int end, int worker) {
+            for (int b = begin; b < end; ++b) {
+                if (!(splitOn && b == split)) {
+                    solveBlock(static_cast<std::size_t>(b), s.blockWorkers[static_cast<std::size_t>(worker)], false);
+                }
+            }
+        };
+        if (oneWorker) {
+            solveBlocks(0, blockCount, 0);
+        } else {
+            tasks.parallelFor(blockCount, 1, solveBlocks);
+        }
+        if (splitOn) {
+            solveBlock(static_cast<std::size_t>(split), s.blockWorkers[0], true);
+        }
+        for (detail::Simulation::BlockWorker& w : s.blockWorkers) {
+            s.hitCandidates.insert(s.hitCandidates.end(), w.hits.begin(), w.hits.end());
+            s.extraRelaxIterations = std::max(s.extraRelaxIterations, w.extraRelaxIterations);
         }
     } else if (def.mode == SolverMode::SoftStep) {
         detail::solveSoftStep(step);
@@ -528,7 +694,7 @@ void World::Impl::solve(float dt) {
         b.motion.force = {0.0f, 0.0f};
         b.motion.torque = 0.0f;
         const bool finite = isFiniteState(bs, st);
-        if (!finite || !check::isWithinHuge(bs.transform.p)) {
+        if (!finite || !isWithinHuge(bs.transform.p)) {
             // Its last transform (finite, within kHuge) stays, so calls from where it is work.
             (finite ? s.outOfRangeBodies : s.nonFiniteBodies).push_back(bodyId(bs.bodyIndex));
             s.disabledSims.push_back(static_cast<int>(k));
@@ -577,8 +743,8 @@ void World::Impl::solve(float dt) {
                 relativeVelocity[j] = cc.points[j].relativeVelocity;
                 maxNormalImpulse[j] = cc.points[j].maxNormalImpulse;
             }
-            store(cc.contactIndex, cc.pointCount, normalImpulse, tangentImpulse, relativeVelocity,
-                  maxNormalImpulse);
+            store(s.hitCandidates, cc.contactIndex, cc.pointCount, normalImpulse, tangentImpulse,
+                  relativeVelocity, maxNormalImpulse);
         }
     } else {
         std::sort(s.hitCandidates.begin(), s.hitCandidates.end(),

@@ -26,8 +26,8 @@ TEST(JointHandles, JointIdsCarryTheirWorld) {
     BodyId discB = addDisc(b, {1.0f, 0.0f}, 0.2f);
     JointId ja = a.createJoint(RevoluteJointDef{.bodyA = groundA, .bodyB = discA});
     JointId jb = b.createJoint(RevoluteJointDef{.bodyA = groundB, .bodyB = discB});
-    EXPECT_EQ(ja.world, 21);
-    EXPECT_EQ(jb.world, 22);
+    EXPECT_EQ(ja.owner, 21);
+    EXPECT_EQ(jb.owner, 22);
     ASSERT_EQ(ja.index1, jb.index1); // the same slot in each world
     ASSERT_EQ(ja.generation, jb.generation);
     EXPECT_FALSE(ja == jb);

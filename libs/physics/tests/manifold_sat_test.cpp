@@ -57,6 +57,29 @@ TEST(CollidePolygons, RestingBoxShallowPenetration) {
     expectAnchorsConsistent(m, kIdentity, makeTransform(0.0f, 0.99f, 0.0f));
 }
 
+// The box is shape A, so the work happens in its frame and the ground's top face (400 m long)
+// is the incident edge clipped to the box's bottom face: the clipped points must land on the
+// box's corners, exactly as on a narrow ground, whichever algorithm found the axis (a point
+// interpolated from the far ends of the long edge was 1.5e-5 m off one corner, an uneven
+// lever arm that seeded the sway of a 50-box column standing on it).
+TEST(CollidePolygons, BoxOnAWideGroundGetsItsOwnCorners) {
+    const Polygon box = makeBox(0.5f, 0.5f);
+    const Polygon wide = makeBox(200.0f, 1.0f);
+    const Transform xfBox = makeTransform(0.0f, 0.4995f, 0.0f);
+    const Transform xfGround = makeTransform(0.0f, -1.0f, 0.0f);
+    for (const Manifold& m : {collidePolygons(box, xfBox, wide, xfGround),
+                              collidePolygonsGjkEpa(box, xfBox, wide, xfGround)}) {
+        ASSERT_EQ(m.pointCount, 2);
+        std::vector<float> xs = sortedX(m);
+        EXPECT_EQ(xs[0], -0.5f);
+        EXPECT_EQ(xs[1], 0.5f);
+        EXPECT_EQ(m.points[0].anchorA.x, -m.points[1].anchorA.x);
+        EXPECT_EQ(m.points[0].separation, m.points[1].separation);
+        EXPECT_NEAR(m.points[0].separation, -0.0005f, 1e-6f);
+        expectAnchorsConsistent(m, xfBox, xfGround);
+    }
+}
+
 TEST(CollidePolygons, TouchingSpeculativeAndBeyondMargin) {
     Manifold touching = boxOnGround(0.0f, 1.0f);
     ASSERT_EQ(touching.pointCount, 2);

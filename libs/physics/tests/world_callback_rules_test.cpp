@@ -177,12 +177,12 @@ TEST(WorldCallbackRules, ChainIdsAndViewsCarryTheirWorld) {
     std::vector<ShapeId> ids = a.createChain(groundA, chain);
     ASSERT_EQ(ids.size(), 2u);
     for (ShapeId id : ids) {
-        EXPECT_EQ(id.world, 11);
+        EXPECT_EQ(id.owner, 11);
         EXPECT_EQ(a.shapeBody(id), groundA);
     }
     // b's body named with a's id: rejected, naming createChain and both tags; nothing created.
     BodyId wrong = groundB;
-    wrong.world = a.tag();
+    wrong.owner = a.tag();
     EXPECT_EQ(errorOf([&] { b.createChain(wrong, chain); }),
               "physics::World::createChain(): BodyId (index1 1, generation 1, world 11) belongs "
               "to another world (this world's tag is 12)");
@@ -194,7 +194,7 @@ TEST(WorldCallbackRules, ChainIdsAndViewsCarryTheirWorld) {
     Body ground = a.body(groundA);
     std::vector<ShapeId> shapes = ground.shapes();
     EXPECT_TRUE(std::is_permutation(shapes.begin(), shapes.end(), ids.begin(), ids.end()));
-    EXPECT_EQ(ground.createShape({}, makeBox(1.0f, 1.0f)).id().world, 11);
+    EXPECT_EQ(ground.createShape({}, makeBox(1.0f, 1.0f)).id().owner, 11);
 }
 
 TEST(WorldCallbackRules, RestitutionAboveOneIsRejectedBySettersAndChains) {

@@ -201,8 +201,8 @@ TEST(WorldHandles, AnIdFromAnotherWorldIsAnErrorNamingTheFunction) {
     ShapeId shapeA = a.createShape(bodyA, {}, unitCircle());
     BodyId bodyB = b.createBody({.position = {5.0f, 6.0f}});
     ShapeId shapeB = b.createShape(bodyB, {.userData = 9}, unitCircle());
-    EXPECT_EQ(bodyA.world, a.tag());
-    EXPECT_EQ(shapeB.world, b.tag());
+    EXPECT_EQ(bodyA.owner, a.tag());
+    EXPECT_EQ(shapeB.owner, b.tag());
 
     std::string error = errorOf([&] { b.setTransform(bodyA, {0.0f, 0.0f}, 0.0f); });
     EXPECT_EQ(error, "physics::World::setTransform(): BodyId (index1 1, generation 1, world " +
@@ -225,8 +225,8 @@ TEST(WorldHandles, ChosenTagsAreWrittenIntoIdsAndZeroIsNeverLive) {
     World b{WorldDef{.tag = 8}};
     EXPECT_EQ(a.tag(), 7);
     BodyId body = a.createBody({});
-    EXPECT_EQ(body.world, 7);
-    EXPECT_EQ(a.createShape(body, {}, unitCircle()).world, 7);
+    EXPECT_EQ(body.owner, 7);
+    EXPECT_EQ(a.createShape(body, {}, unitCircle()).owner, 7);
     EXPECT_FALSE(b.isValid(body));
     // A hand-made id (world 0) never names a body.
     EXPECT_FALSE(a.isValid(BodyId{body.index1, body.generation}));

@@ -47,18 +47,46 @@ private:
     std::mt19937 engine_;
 };
 
+/// FNV-1a step over a float's bits (one 32-bit word at a time).
+inline std::uint64_t hashBits(std::uint64_t h, float value) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &value, sizeof(bits));
+    return (h ^ bits) * 1099511628211ull;
+}
+
+inline constexpr std::uint64_t kHashSeed = 1469598103934665603ull;
+
 /// A hash of the bodies' transforms, bit for bit (FNV-1a over the four floats' bits).
 inline std::uint64_t transformsHash(const World& world, const std::vector<BodyId>& bodies) {
-    std::uint64_t h = 1469598103934665603ull;
+    std::uint64_t h = kHashSeed;
     for (BodyId id : bodies) {
         Transform xf = world.transform(id);
-        float values[4] = {xf.p.x, xf.p.y, xf.q.c, xf.q.s};
-        std::uint32_t bits[4];
-        std::memcpy(bits, values, sizeof(bits));
-        for (std::uint32_t b : bits) {
-            h = (h ^ b) * 1099511628211ull;
+        for (float v : {xf.p.x, xf.p.y, xf.q.c, xf.q.s}) {
+            h = hashBits(h, v);
         }
     }
+    return h;
+}
+
+/// transformsHash() with the bodies' velocities and awake flags, the world's contact, pair and
+/// awake counts and every touching contact's impulses: two worlds that agree on it are in
+/// the same state as far as stepping shows.
+inline std::uint64_t stateHash(const World& world, const std::vector<BodyId>& bodies) {
+    std::uint64_t h = transformsHash(world, bodies);
+    for (BodyId id : bodies) {
+        const Vec2 v = world.linearVelocity(id);
+        h = hashBits(hashBits(hashBits(h, v.x), v.y), world.angularVelocity(id));
+        h = (h ^ (world.isAwake(id) ? 1u : 0u)) * 1099511628211ull;
+    }
+    for (int count : {world.contactCount(), world.candidatePairCount(), world.awakeBodyCount()}) {
+        h = (h ^ static_cast<std::uint32_t>(count)) * 1099511628211ull;
+    }
+    world.forEachTouchingContact([&](const ContactData& c) {
+        for (int i = 0; i < c.manifold->pointCount; ++i) {
+            h = hashBits(hashBits(h, c.manifold->points[i].normalImpulse),
+                         c.manifold->points[i].tangentImpulse);
+        }
+    });
     return h;
 }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/render/animated_sprite_renderer.hpp>
 
-#include "error_format.hpp"
+#include <e2d/core/error_text.hpp>
 
 #include <string>
 
@@ -13,19 +13,19 @@ constexpr const char* kCtor = "render::AnimatedSpriteRenderer";
 
 const std::vector<AnimationFrame>& checkedFrames(const AnimatedSpriteRendererDef& def) {
     if (def.frames.empty()) {
-        detail::fail(kCtor, "frames must not be empty");
+        core::throwError(kCtor, "frames must not be empty");
     }
     for (std::size_t i = 0; i < def.frames.size(); ++i) {
         const Rect& r = def.frames[i].uv;
-        if (!detail::isFinite(r.min) || !detail::isFinite(r.size) || r.min.x < 0.0f || r.min.y < 0.0f ||
+        if (!core::isFinite(r.min) || !core::isFinite(r.size) || r.min.x < 0.0f || r.min.y < 0.0f ||
             r.size.x < 0.0f || r.size.y < 0.0f || r.max().x > 1.0f || r.max().y > 1.0f) {
-            detail::fail(kCtor, "frames[" + std::to_string(i) + "].uv must lie in [0, 1], got min " +
-                                    detail::formatVec(r.min) + " size " + detail::formatVec(r.size));
+            core::throwError(kCtor, "frames[" + std::to_string(i) + "].uv must lie in [0, 1], got min " +
+                                    core::formatVector(r.min) + " size " + core::formatVector(r.size));
         }
         const glm::vec2 size = def.frames[i].size;
-        if (!detail::isFinite(size) || size.x < 0.0f || size.y < 0.0f) {
-            detail::fail(kCtor, "frames[" + std::to_string(i) + "].size must be >= 0 and finite, got " +
-                                    detail::formatVec(size));
+        if (!core::isFinite(size) || size.x < 0.0f || size.y < 0.0f) {
+            core::throwError(kCtor, "frames[" + std::to_string(i) + "].size must be >= 0 and finite, got " +
+                                    core::formatVector(size));
         }
     }
     return def.frames;
@@ -57,7 +57,7 @@ SpriteRendererDef firstLook(const AnimatedSpriteRendererDef& def) {
 std::vector<AnimationFrame> animationUvs(const SpriteSheet& sheet, std::string_view baseName) {
     const std::vector<int> indices = sheet.animationFrames(baseName);
     if (indices.empty()) {
-        detail::fail("render::animationUvs()",
+        core::throwError("render::animationUvs()",
                      "sheet '" + sheet.name() + "' has no frames named '" + std::string(baseName) + "<number>'");
     }
     std::vector<AnimationFrame> frames;

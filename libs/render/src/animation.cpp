@@ -2,9 +2,9 @@
 #include <e2d/render/animation.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -13,19 +13,13 @@ namespace {
 
 constexpr double kBoundaryTolerance = 1.0e-9;
 
-std::string number(double value) {
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-    return std::string(buffer, result.ptr);
-}
-
 [[noreturn]] void fail(const char* function, const std::string& what) {
     throw core::Error(std::string("render::Animation") + function + ": " + what);
 }
 
 void checkSpeed(const char* function, const char* field, double speed) {
     if (!std::isfinite(speed) || speed < 0.0) {
-        fail(function, std::string(field) + " must be finite and >= 0, got " + number(speed));
+        fail(function, std::string(field) + " must be finite and >= 0, got " + core::formatNumber(speed));
     }
 }
 
@@ -36,7 +30,7 @@ Animation::Animation(const AnimationDef& def) : def_(def) {
         fail("::Animation()", "frameCount must be >= 1, got " + std::to_string(def.frameCount));
     }
     if (!std::isfinite(def.frameDuration) || def.frameDuration <= 0.0) {
-        fail("::Animation()", "frameDuration must be finite and > 0, got " + number(def.frameDuration));
+        fail("::Animation()", "frameDuration must be finite and > 0, got " + core::formatNumber(def.frameDuration));
     }
     if (def.startFrame < 0 || def.startFrame >= def.frameCount) {
         fail("::Animation()", "startFrame must be in [0, " + std::to_string(def.frameCount) + "), got " +
@@ -69,7 +63,7 @@ void Animation::setSpeed(double speed) {
 
 void Animation::update(double dt) {
     if (!std::isfinite(dt) || dt < 0.0) {
-        fail("::update()", "dt must be finite and >= 0, got " + number(dt));
+        fail("::update()", "dt must be finite and >= 0, got " + core::formatNumber(dt));
     }
     if (finished_) {
         return;

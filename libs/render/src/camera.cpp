@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/render/camera.hpp>
 
-#include "error_format.hpp"
+#include <e2d/core/error_text.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -13,15 +13,15 @@ namespace e2d::render {
 namespace {
 
 void validate(const char* function, const CameraDef& def) {
-    detail::requireFinite(function, "position", def.position);
-    detail::requireFinite(function, "rotation", def.rotation);
+    core::requireFinite(function, "position", def.position);
+    core::requireFinite(function, "rotation", def.rotation);
     if (!(def.zoom > 0.0f) || !std::isfinite(def.zoom)) {
-        detail::fail(function, "zoom must be > 0 and finite, got " + detail::formatFloat(def.zoom));
+        core::throwError(function, "zoom must be > 0 and finite, got " + core::formatNumber(def.zoom));
     }
     if (!(def.referenceSize.x > 0.0f) || !(def.referenceSize.y > 0.0f) ||
-        !detail::isFinite(def.referenceSize)) {
-        detail::fail(function, "referenceSize must be > 0 and finite, got " +
-                                   detail::formatVec(def.referenceSize));
+        !core::isFinite(def.referenceSize)) {
+        core::throwError(function, "referenceSize must be > 0 and finite, got " +
+                                   core::formatVector(def.referenceSize));
     }
 }
 
@@ -40,12 +40,12 @@ Camera::Camera(const CameraDef& def) : def_(def) {
 }
 
 void Camera::setPosition(glm::vec2 position) {
-    detail::requireFinite("render::Camera::setPosition()", "position", position);
+    core::requireFinite("render::Camera::setPosition()", "position", position);
     def_.position = position;
 }
 
 void Camera::setRotation(float radians) {
-    detail::requireFinite("render::Camera::setRotation()", "rotation", radians);
+    core::requireFinite("render::Camera::setRotation()", "rotation", radians);
     def_.rotation = radians;
 }
 
@@ -67,8 +67,8 @@ void Camera::setFit(ScreenFit fit) { def_.fit = fit; }
 
 void Camera::setScreenSize(glm::ivec2 pixels) {
     if (pixels.x < 1 || pixels.y < 1) {
-        detail::fail("render::Camera::setScreenSize()",
-                     "size must be >= 1 in each axis, got " + detail::formatVec(pixels));
+        core::throwError("render::Camera::setScreenSize()",
+                     "size must be >= 1 in each axis, got " + core::formatVector(pixels));
     }
     screen_ = pixels;
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/render/window.hpp>
 
-#include "error_format.hpp"
+#include <e2d/core/error_text.hpp>
 
 #include <GLFW/glfw3.h>
 
@@ -28,7 +28,7 @@ GlfwInstance::GlfwInstance() {
     // A second instance would initialise nothing, and its glfwTerminate() would destroy the
     // first one's windows under it.
     if (glfwInitialised()) {
-        detail::fail("render::GlfwInstance",
+        core::throwError("render::GlfwInstance",
                      "GLFW is already initialised in this process (GLFW's state is process-wide: a Game run "
                      "while another Game runs, or a second GlfwInstance); windows open at the same time share "
                      "one instance (WindowDef::glfw = firstWindow.glfw())");
@@ -46,7 +46,7 @@ GlfwInstance::GlfwInstance() {
         glfwGetError(&description);
         const std::string reason = description != nullptr ? description : "no reason given";
         if (attempt == kAttempts || reason.find("Failed to open display") == std::string::npos) {
-            detail::fail("render::GlfwInstance", "glfwInit() failed: " + reason);
+            core::throwError("render::GlfwInstance", "glfwInit() failed: " + reason);
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(20 * attempt));
     }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/render/image.hpp>
 
-#include "error_format.hpp"
+#include <e2d/core/error.hpp>
 
 #include <FreeImage.h>
 

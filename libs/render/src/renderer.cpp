@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "gl.hpp"
 
+#include <e2d/core/error_text.hpp>
 #include <e2d/render/renderer.hpp>
 #include <e2d/render/window.hpp>
 
 #include "debug_draw.hpp"
-#include "error_format.hpp"
 #include "instance_buffer.hpp"
 #include "shaders.hpp"
 #include "sprite_batcher.hpp"
@@ -58,7 +58,7 @@ struct RendererImpl {
         GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         if (status != GL_FRAMEBUFFER_COMPLETE) {
-            fail("render::Renderer", "the offscreen framebuffer of " + formatVec(size) +
+            core::throwError("render::Renderer", "the offscreen framebuffer of " + core::formatVector(size) +
                                          " is incomplete (status 0x" + std::to_string(status) + ")");
         }
     }
@@ -137,14 +137,14 @@ constexpr const char* kCtor = "render::Renderer";
 
 void validate(const RendererDef& def) {
     if (def.offscreenSize != glm::ivec2(0) && (def.offscreenSize.x < 1 || def.offscreenSize.y < 1)) {
-        detail::fail(kCtor, "offscreenSize must be (0, 0) or >= 1 in each axis, got " +
-                                detail::formatVec(def.offscreenSize));
+        core::throwError(kCtor, "offscreenSize must be (0, 0) or >= 1 in each axis, got " +
+                                core::formatVector(def.offscreenSize));
     }
     if (def.ringFrames < 2 || def.ringFrames > 8) {
-        detail::fail(kCtor, "ringFrames must be in [2, 8], got " + std::to_string(def.ringFrames));
+        core::throwError(kCtor, "ringFrames must be in [2, 8], got " + std::to_string(def.ringFrames));
     }
     if (!(def.depthRange > 0.0f) || !std::isfinite(def.depthRange)) {
-        detail::fail(kCtor, "depthRange must be > 0 and finite, got " + detail::formatFloat(def.depthRange));
+        core::throwError(kCtor, "depthRange must be > 0 and finite, got " + core::formatNumber(def.depthRange));
     }
 }
 
@@ -230,7 +230,7 @@ int Renderer::destroyUnusedTextures(std::span<const TextureId> keep) {
     std::vector<bool> used(impl_->textures.slotCount(), false);
     const auto mark = [&](TextureId id) {
         if (impl_->textures.isValid(id)) {
-            used[id.index1 - 1] = true;
+            used[id.index()] = true;
         }
     };
     impl_->batcher.forEachTexture(mark);

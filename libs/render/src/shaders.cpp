@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "shaders.hpp"
 
-#include "error_format.hpp"
+#include <e2d/core/error_text.hpp>
 
 #include <string>
 
@@ -56,7 +56,7 @@ GLuint compile(GLenum type, const char* source, const char* name) {
         std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
         glGetShaderInfoLog(shader, length, nullptr, log.data());
         glDeleteShader(shader);
-        fail("render::Renderer", std::string(name) + " shader does not compile: " + log);
+        core::throwError("render::Renderer", std::string(name) + " shader does not compile: " + log);
     }
     return shader;
 }
@@ -86,7 +86,7 @@ GLuint createSpriteProgram() {
         std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
         glGetProgramInfoLog(program, length, nullptr, log.data());
         glDeleteProgram(program);
-        fail("render::Renderer", "sprite program does not link: " + log);
+        core::throwError("render::Renderer", "sprite program does not link: " + log);
     }
     return program;
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "sprite_batcher.hpp"
 
-#include "error_format.hpp"
+#include <e2d/core/error_text.hpp>
+
 #include "half.hpp"
 
 #include <algorithm>
@@ -17,21 +18,21 @@ namespace {
 constexpr const char* kCreate = "render::Renderer::createSprite()";
 
 void validate(const char* function, const SpriteDef& def) {
-    requireFinite(function, "position", def.position);
-    requireFinite(function, "z", def.z);
-    requireFinite(function, "scale", def.scale);
-    requireFinite(function, "rotation", def.rotation);
-    requireFinite(function, "pivot", def.pivot);
-    if (!isFinite(def.size) || def.size.x < 0.0f || def.size.y < 0.0f) {
-        fail(function, "size must be >= 0 and finite, got " + formatVec(def.size));
+    core::requireFinite(function, "position", def.position);
+    core::requireFinite(function, "z", def.z);
+    core::requireFinite(function, "scale", def.scale);
+    core::requireFinite(function, "rotation", def.rotation);
+    core::requireFinite(function, "pivot", def.pivot);
+    if (!core::isFinite(def.size) || def.size.x < 0.0f || def.size.y < 0.0f) {
+        core::throwError(function, "size must be >= 0 and finite, got " + core::formatVector(def.size));
     }
-    if (!isFinite(def.uv.min) || !isFinite(def.uv.size) || def.uv.size.x < 0.0f || def.uv.size.y < 0.0f ||
+    if (!core::isFinite(def.uv.min) || !core::isFinite(def.uv.size) || def.uv.size.x < 0.0f || def.uv.size.y < 0.0f ||
         def.uv.min.x < 0.0f || def.uv.min.y < 0.0f || def.uv.max().x > 1.0f || def.uv.max().y > 1.0f) {
-        fail(function, "uv must lie in [0, 1] with size >= 0, got min " + formatVec(def.uv.min) + " size " +
-                           formatVec(def.uv.size));
+        core::throwError(function, "uv must lie in [0, 1] with size >= 0, got min " + core::formatVector(def.uv.min) + " size " +
+                           core::formatVector(def.uv.size));
     }
     if (!std::isfinite(def.parallax) || def.parallax < 0.0f) {
-        fail(function, "parallax must be >= 0 and finite, got " + formatFloat(def.parallax));
+        core::throwError(function, "parallax must be >= 0 and finite, got " + core::formatNumber(def.parallax));
     }
 }
 
@@ -132,26 +133,28 @@ const SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function
 
 // Every setter's id check inlines (index()); the message is built out of line.
 void SpriteBatcher::failBadId(SpriteId id, const char* function) {
-    fail(function, id.isNull() ? std::string("null sprite id")
-                               : "stale sprite id (index " + std::to_string(id.index1 - 1) + ", generation " +
+    core::throwError(function, id.isNull() ? std::string("null sprite id")
+                               : "stale sprite id (index " + std::to_string(id.index()) + ", generation " +
                                      std::to_string(id.generation) + ")");
 }
 
-bool SpriteBatcher::isValid(SpriteId id) const noexcept {
-    const std::uint32_t i = id.index1 - 1;
-    return i < liveGen_.size() && liveGen_[i] == id.generation;
+bool SpriteBatcher::isValid(SpriteId id) const noexcept { return liveIndex(id).has_value(); }
+
+std::optional<std::uint32_t> SpriteBatcher::textureSlot(TextureId id) const noexcept {
+    return core::findSlot(id, textures_.size(), [this](std::uint32_t i) { return textures_[i].generation; });
 }
 
-void SpriteBatcher::resolveTexture(Slot& s) const {
-    TextureId id = s.def.texture;
-    if (id.isNull()) {
-        s.texture = whiteSlot_;
-    } else if (id.index1 <= textures_.size() && textures_[id.index1 - 1].generation == id.generation) {
-        s.texture = id.index1 - 1;
-    } else {
-        s.texture = placeholderSlot_;
+std::uint32_t SpriteBatcher::drawnTexture(TextureId id) const noexcept {
+    return id.isNull() ? whiteSlot_ : textureSlot(id).value_or(placeholderSlot_);
+}
+
+void SpriteBatcher::requireTexture(const char* function, TextureId id) const {
+    if (!id.isNull() && !textureSlot(id)) {
+        core::throwError(function, "stale texture id (index " + std::to_string(id.index()) + ")");
     }
 }
+
+void SpriteBatcher::resolveTexture(Slot& s) const { s.texture = drawnTexture(s.def.texture); }
 
 bool SpriteBatcher::opaque(const Slot& s) const { return s.def.tint.a == 255 && !textures_[s.texture].translucent; }
 
@@ -171,10 +174,7 @@ std::uint64_t SpriteBatcher::key(float z, std::uint32_t texture, bool isOpaque) 
 
 SpriteId SpriteBatcher::create(const SpriteDef& def) {
     validate(kCreate, def);
-    if (!def.texture.isNull() && !(def.texture.index1 <= textures_.size() &&
-                                   textures_[def.texture.index1 - 1].generation == def.texture.generation)) {
-        fail(kCreate, "stale texture id (index " + std::to_string(def.texture.index1 - 1) + ")");
-    }
+    requireTexture(kCreate, def.texture);
     std::uint32_t index;
     if (!free_.empty()) {
         index = free_.back();
@@ -198,23 +198,20 @@ SpriteId SpriteBatcher::create(const SpriteDef& def) {
     ++alive_;
     markDirty(index, kMoved | kShape | kLook);
     orderDirty_ = true;
-    return SpriteId{index + 1, s.generation};
+    return SpriteId::forSlot(index, s.generation);
 }
 
 bool SpriteBatcher::destroy(SpriteId id) {
     if (!isValid(id)) {
         return false;
     }
-    std::uint32_t index = id.index1 - 1;
+    std::uint32_t index = id.index();
     Slot& s = slots_[index];
     s.alive = false;
     liveGen_[index] = 0;
     dirty_[index] = 0;
     orderPosition_[index] = kNotDrawn; // the draw order is rebuilt before the next frame
-    ++s.generation;
-    if (s.generation == 0) {
-        s.generation = 1;
-    }
+    s.generation = core::nextGeneration(s.generation);
     free_.push_back(index);
     --alive_;
     orderDirty_ = true;
@@ -224,7 +221,7 @@ bool SpriteBatcher::destroy(SpriteId id) {
 void SpriteBatcher::destroyAll() {
     for (std::uint32_t i = 0; i < slots_.size(); ++i) {
         if (slots_[i].alive) {
-            destroy(SpriteId{i + 1, slots_[i].generation});
+            destroy(SpriteId::forSlot(i, slots_[i].generation));
         }
     }
     dirtyList_.clear();
@@ -240,16 +237,16 @@ void SpriteBatcher::set(SpriteId id, const SpriteDef& def, const char* function)
     Slot& s = slot(id, function);
     validate(function, def);
     s.def = def;
-    pos_[id.index1 - 1] = def.position;
+    pos_[id.index()] = def.position;
     resolveTexture(s);
-    markDirty(id.index1 - 1, kMoved | kShape | kLook);
+    markDirty(id.index(), kMoved | kShape | kLook);
     orderDirty_ = true;
 }
 
 void SpriteBatcher::setPosition(SpriteId id, glm::vec2 position) {
     constexpr const char* fn = "render::Renderer::setPosition()";
     const std::uint32_t i = index(id, fn);
-    requireFinite(fn, "position", position);
+    core::requireFinite(fn, "position", position);
     if (pos_[i] != position) {
         moveTo(i, position);
     }
@@ -273,10 +270,10 @@ void SpriteBatcher::moveTo(std::uint32_t i, glm::vec2 position) {
 void SpriteBatcher::setZ(SpriteId id, float z) {
     constexpr const char* fn = "render::Renderer::setZ()";
     Slot& s = slot(id, fn);
-    requireFinite(fn, "z", z);
+    core::requireFinite(fn, "z", z);
     if (s.def.z != z) {
         s.def.z = z;
-        markDirty(id.index1 - 1, kMoved);
+        markDirty(id.index(), kMoved);
         orderDirty_ = true;
     }
 }
@@ -284,42 +281,42 @@ void SpriteBatcher::setZ(SpriteId id, float z) {
 void SpriteBatcher::setSize(SpriteId id, glm::vec2 size) {
     constexpr const char* fn = "render::Renderer::setSize()";
     Slot& s = slot(id, fn);
-    if (!isFinite(size) || size.x < 0.0f || size.y < 0.0f) {
-        fail(fn, "size must be >= 0 and finite, got " + formatVec(size));
+    if (!core::isFinite(size) || size.x < 0.0f || size.y < 0.0f) {
+        core::throwError(fn, "size must be >= 0 and finite, got " + core::formatVector(size));
     }
     if (s.def.size != size) {
         s.def.size = size;
-        markDirty(id.index1 - 1, kShape);
+        markDirty(id.index(), kShape);
     }
 }
 
 void SpriteBatcher::setScale(SpriteId id, glm::vec2 scale) {
     constexpr const char* fn = "render::Renderer::setScale()";
     Slot& s = slot(id, fn);
-    requireFinite(fn, "scale", scale);
+    core::requireFinite(fn, "scale", scale);
     if (s.def.scale != scale) {
         s.def.scale = scale;
-        markDirty(id.index1 - 1, kShape);
+        markDirty(id.index(), kShape);
     }
 }
 
 void SpriteBatcher::setRotation(SpriteId id, float radians) {
     constexpr const char* fn = "render::Renderer::setRotation()";
     Slot& s = slot(id, fn);
-    requireFinite(fn, "rotation", radians);
+    core::requireFinite(fn, "rotation", radians);
     if (s.def.rotation != radians) {
         s.def.rotation = radians;
-        markDirty(id.index1 - 1, kShape);
+        markDirty(id.index(), kShape);
     }
 }
 
 void SpriteBatcher::setPivot(SpriteId id, glm::vec2 pivot) {
     constexpr const char* fn = "render::Renderer::setPivot()";
     Slot& s = slot(id, fn);
-    requireFinite(fn, "pivot", pivot);
+    core::requireFinite(fn, "pivot", pivot);
     if (s.def.pivot != pivot) {
         s.def.pivot = pivot;
-        markDirty(id.index1 - 1, kShape);
+        markDirty(id.index(), kShape);
     }
 }
 
@@ -330,7 +327,7 @@ void SpriteBatcher::setTint(SpriteId id, Color tint) {
             orderDirty_ = true; // changes pass
         }
         s.def.tint = tint;
-        markDirty(id.index1 - 1, kLook);
+        markDirty(id.index(), kLook);
     }
 }
 
@@ -345,7 +342,7 @@ void SpriteBatcher::setUv(SpriteId id, const Rect& uv, bool uvRotated) {
         const bool shape = s.def.uvRotated != uvRotated || s.def.size == glm::vec2(0.0f);
         s.def.uv = uv;
         s.def.uvRotated = uvRotated;
-        markDirty(id.index1 - 1, shape ? kLook | kShape : kLook);
+        markDirty(id.index(), shape ? kLook | kShape : kLook);
     }
 }
 
@@ -354,7 +351,7 @@ void SpriteBatcher::setFlip(SpriteId id, bool flipX, bool flipY) {
     if (s.def.flipX != flipX || s.def.flipY != flipY) {
         s.def.flipX = flipX;
         s.def.flipY = flipY;
-        markDirty(id.index1 - 1, kLook);
+        markDirty(id.index(), kLook);
     }
 }
 
@@ -362,11 +359,11 @@ void SpriteBatcher::setParallax(SpriteId id, float parallax) {
     constexpr const char* fn = "render::Renderer::setParallax()";
     Slot& s = slot(id, fn);
     if (!std::isfinite(parallax) || parallax < 0.0f) {
-        fail(fn, "parallax must be >= 0 and finite, got " + formatFloat(parallax));
+        core::throwError(fn, "parallax must be >= 0 and finite, got " + core::formatNumber(parallax));
     }
     if (s.def.parallax != parallax) {
         s.def.parallax = parallax;
-        markDirty(id.index1 - 1, kMoved);
+        markDirty(id.index(), kMoved);
         orderDirty_ = true; // camera-dependent list
     }
 }
@@ -375,7 +372,7 @@ void SpriteBatcher::setHud(SpriteId id, bool hud) {
     Slot& s = slot(id, "render::Renderer::setHud()");
     if (s.def.hud != hud) {
         s.def.hud = hud;
-        markDirty(id.index1 - 1, kMoved | kShape);
+        markDirty(id.index(), kMoved | kShape);
         orderDirty_ = true;
     }
 }
@@ -391,14 +388,11 @@ void SpriteBatcher::setVisible(SpriteId id, bool visible) {
 void SpriteBatcher::setTexture(SpriteId id, TextureId texture) {
     constexpr const char* fn = "render::Renderer::setTexture()";
     Slot& s = slot(id, fn);
-    if (!texture.isNull() &&
-        !(texture.index1 <= textures_.size() && textures_[texture.index1 - 1].generation == texture.generation)) {
-        fail(fn, "stale texture id (index " + std::to_string(texture.index1 - 1) + ")");
-    }
+    requireTexture(fn, texture);
     if (s.def.texture != texture) {
         s.def.texture = texture;
         resolveTexture(s);
-        markDirty(id.index1 - 1, kShape);
+        markDirty(id.index(), kShape);
         orderDirty_ = true;
     }
 }
@@ -406,11 +400,11 @@ void SpriteBatcher::setTexture(SpriteId id, TextureId texture) {
 void SpriteBatcher::setTransform(SpriteId id, glm::vec2 position, float z, float rotation, glm::vec2 scale) {
     constexpr const char* fn = "render::Renderer::setTransform()";
     Slot& s = slot(id, fn);
-    requireFinite(fn, "position", position);
-    requireFinite(fn, "z", z);
-    requireFinite(fn, "rotation", rotation);
-    requireFinite(fn, "scale", scale);
-    const std::uint32_t i = id.index1 - 1;
+    core::requireFinite(fn, "position", position);
+    core::requireFinite(fn, "z", z);
+    core::requireFinite(fn, "rotation", rotation);
+    core::requireFinite(fn, "scale", scale);
+    const std::uint32_t i = id.index();
     if (s.def.z == z && s.def.rotation == rotation && s.def.scale == scale) {
         if (pos_[i] != position) {
             moveTo(i, position);
@@ -433,17 +427,14 @@ void SpriteBatcher::setTransform(SpriteId id, glm::vec2 position, float z, float
 
 void SpriteBatcher::submit(const Quad& quad) {
     constexpr const char* fn = "render::Renderer::submit()";
-    requireFinite(fn, "position", quad.position);
-    requireFinite(fn, "z", quad.z);
-    requireFinite(fn, "rotation", quad.rotation);
-    requireFinite(fn, "pivot", quad.pivot);
-    if (!isFinite(quad.size) || quad.size.x < 0.0f || quad.size.y < 0.0f) {
-        fail(fn, "size must be >= 0 and finite, got " + formatVec(quad.size));
+    core::requireFinite(fn, "position", quad.position);
+    core::requireFinite(fn, "z", quad.z);
+    core::requireFinite(fn, "rotation", quad.rotation);
+    core::requireFinite(fn, "pivot", quad.pivot);
+    if (!core::isFinite(quad.size) || quad.size.x < 0.0f || quad.size.y < 0.0f) {
+        core::throwError(fn, "size must be >= 0 and finite, got " + core::formatVector(quad.size));
     }
-    if (!quad.texture.isNull() && !(quad.texture.index1 <= textures_.size() &&
-                                    textures_[quad.texture.index1 - 1].generation == quad.texture.generation)) {
-        fail(fn, "stale texture id (index " + std::to_string(quad.texture.index1 - 1) + ")");
-    }
+    requireTexture(fn, quad.texture);
     Transient t{};
     t.quad = quad;
     quads_.push_back(t);
@@ -605,14 +596,7 @@ std::size_t SpriteBatcher::prepare(const CameraState& camera, const ViewBounds& 
     for (std::uint32_t k = 0; k < quads_.size(); ++k) {
         Transient& t = quads_[k];
         const Quad& q = t.quad;
-        if (q.texture.isNull()) {
-            t.texture = whiteSlot_;
-        } else {
-            t.texture = q.texture.index1 <= textures_.size() &&
-                                textures_[q.texture.index1 - 1].generation == q.texture.generation
-                            ? q.texture.index1 - 1
-                            : placeholderSlot_;
-        }
+        t.texture = drawnTexture(q.texture);
         float c = std::cos(q.rotation);
         float sn = std::sin(q.rotation);
         glm::vec2 ex = glm::vec2(c, sn) * q.size.x;

@@ -9,6 +9,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace e2d::render::detail {
@@ -133,13 +134,22 @@ private:
     }
     // The id check every setter starts with: one 2-byte load (liveGen_ holds the generation of
     // a live slot, 0 for a free one; a valid id's generation is never 0).
+    std::optional<std::uint32_t> liveIndex(SpriteId id) const noexcept {
+        return core::findSlot(id, liveGen_.size(), [this](std::uint32_t i) { return liveGen_[i]; });
+    }
     std::uint32_t index(SpriteId id, const char* function) const {
-        const std::uint32_t i = id.index1 - 1; // a null id wraps to 0xffffffff: out of range
-        if (i >= liveGen_.size() || liveGen_[i] != id.generation) [[unlikely]] {
+        const std::optional<std::uint32_t> i = liveIndex(id);
+        if (!i) [[unlikely]] {
             failBadId(id, function);
         }
-        return i;
+        return *i;
     }
+    // The texture slot of a live texture id, else std::nullopt.
+    std::optional<std::uint32_t> textureSlot(TextureId id) const noexcept;
+    // The slot a quad with this texture draws: white for null, the placeholder for a stale id.
+    std::uint32_t drawnTexture(TextureId id) const noexcept;
+    // Throws (naming `function`) for a stale texture id; null is fine.
+    void requireTexture(const char* function, TextureId id) const;
     [[noreturn, gnu::cold, gnu::noinline]] static void failBadId(SpriteId id, const char* function);
     void moveTo(std::uint32_t index, glm::vec2 position);
     void resolveTexture(Slot& s) const;

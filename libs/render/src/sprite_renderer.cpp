@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/render/sprite_renderer.hpp>
 
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/scene.hpp>
 #include <e2d/render/render_system.hpp>
 
-#include "error_format.hpp"
 #include "world_pose.hpp"
 
 #include <cmath>
@@ -33,8 +33,8 @@ SpriteDef toSpriteDef(const SpriteRendererDef& def, TextureId texture) {
 }
 
 void checkSize(const char* function, glm::vec2 size) {
-    if (!detail::isFinite(size) || size.x < 0.0f || size.y < 0.0f) {
-        detail::fail(function, "size must be >= 0 and finite, got " + detail::formatVec(size));
+    if (!core::isFinite(size) || size.x < 0.0f || size.y < 0.0f) {
+        core::throwError(function, "size must be >= 0 and finite, got " + core::formatVector(size));
     }
 }
 
@@ -42,11 +42,11 @@ void checkSize(const char* function, glm::vec2 size) {
 
 SpriteRenderer::SpriteRenderer(const SpriteRendererDef& def) : def_(def) {
     // The same checks as the sprite's, before any renderer is involved.
-    detail::requireFinite(kCtor, "pivot", def.pivot);
-    detail::requireFinite(kCtor, "zOffset", def.zOffset);
+    core::requireFinite(kCtor, "pivot", def.pivot);
+    core::requireFinite(kCtor, "zOffset", def.zOffset);
     checkSize(kCtor, def.size);
     if (!std::isfinite(def.parallax) || def.parallax < 0.0f) {
-        detail::fail(kCtor, "parallax must be >= 0 and finite, got " + detail::formatFloat(def.parallax));
+        core::throwError(kCtor, "parallax must be >= 0 and finite, got " + core::formatNumber(def.parallax));
     }
 }
 

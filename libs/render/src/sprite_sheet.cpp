@@ -2,6 +2,7 @@
 #include <e2d/render/sprite_sheet.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/json_scan.hpp>
 #include <e2d/core/printable.hpp>
 
@@ -55,16 +56,7 @@ public:
     }
 
     static std::string describe(const Json& value) {
-        std::string text = dumpForMessage(value);
-        if (text.size() > 40) {
-            std::size_t cut = 37; // not inside a UTF-8 sequence
-            while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) {
-                --cut;
-            }
-            text.resize(cut);
-            text += "...";
-        }
-        return std::string(value.type_name()) + " " + text;
+        return std::string(value.type_name()) + " " + core::shortened(dumpForMessage(value), 40);
     }
 
     const Json& member(const Json& object, std::string_view path, const char* key) const {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/render/text_label.hpp>
 
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/scene.hpp>
 
-#include "error_format.hpp"
 #include "world_pose.hpp"
 
 #include <glm/common.hpp>
@@ -20,19 +20,19 @@ constexpr const char* kCtor = "render::TextLabel";
 
 void checkStyle(const char* function, const TextStyle& style) {
     if (!std::isfinite(style.lineSpacing) || style.lineSpacing <= 0.0f) {
-        detail::fail(function, "style.lineSpacing must be > 0 and finite, got " + detail::formatFloat(style.lineSpacing));
+        core::throwError(function, "style.lineSpacing must be > 0 and finite, got " + core::formatNumber(style.lineSpacing));
     }
 }
 } // namespace
 
 TextLabel::TextLabel(const TextLabelDef& def) : def_(def) {
     if (def.pixelSize < 1 || def.pixelSize > 1024) {
-        detail::fail(kCtor, "pixelSize must be in [1, 1024], got " + std::to_string(def.pixelSize));
+        core::throwError(kCtor, "pixelSize must be in [1, 1024], got " + std::to_string(def.pixelSize));
     }
-    if (!detail::isFinite(def.scale) || def.scale.x <= 0.0f || def.scale.y <= 0.0f) {
-        detail::fail(kCtor, "scale must be > 0 and finite, got " + detail::formatVec(def.scale));
+    if (!core::isFinite(def.scale) || def.scale.x <= 0.0f || def.scale.y <= 0.0f) {
+        core::throwError(kCtor, "scale must be > 0 and finite, got " + core::formatVector(def.scale));
     }
-    detail::requireFinite(kCtor, "zOffset", def.zOffset);
+    core::requireFinite(kCtor, "zOffset", def.zOffset);
     checkStyle(kCtor, def.style);
 }
 

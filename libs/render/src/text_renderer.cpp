@@ -2,10 +2,9 @@
 #include <e2d/render/text_renderer.hpp>
 
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 #include <e2d/core/log.hpp>
 #include <e2d/render/image.hpp>
-
-#include "error_format.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -14,11 +13,11 @@ namespace e2d::render {
 namespace {
 
 void checkDraw(const char* function, const TextDraw& where) {
-    detail::requireFinite(function, "position", where.position);
-    detail::requireFinite(function, "z", where.z);
-    detail::requireFinite(function, "rotation", where.rotation);
-    if (!(where.scale.x > 0.0f && where.scale.y > 0.0f && detail::isFinite(where.scale))) {
-        detail::fail(function, "scale must be > 0 and finite, got " + detail::formatVec(where.scale));
+    core::requireFinite(function, "position", where.position);
+    core::requireFinite(function, "z", where.z);
+    core::requireFinite(function, "rotation", where.rotation);
+    if (!(where.scale.x > 0.0f && where.scale.y > 0.0f && core::isFinite(where.scale))) {
+        core::throwError(function, "scale must be > 0 and finite, got " + core::formatVector(where.scale));
     }
 }
 

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "texture_pool.hpp"
 
-#include "error_format.hpp"
-
 #include <e2d/core/error.hpp>
+#include <e2d/core/error_text.hpp>
 
 #include <algorithm>
 
@@ -104,13 +103,12 @@ std::uint32_t TexturePool::add(const Image& image, const TextureDef& def, Textur
     TextureFacts& f = facts_[index];
     f.size = glm::vec2(image.width, image.height);
     f.translucent = s.info.translucent;
-    std::uint16_t generation = static_cast<std::uint16_t>(f.generation + 1);
-    f.generation = generation == 0 ? 1 : generation;
+    f.generation = core::nextGeneration(f.generation);
     return index;
 }
 
 TextureId TexturePool::idOf(std::uint32_t slot) const noexcept {
-    return TextureId{slot + 1, facts_[slot].generation};
+    return TextureId::forSlot(slot, facts_[slot].generation);
 }
 
 TextureId TexturePool::load(const std::filesystem::path& path, const TextureDef& def) {
@@ -144,12 +142,12 @@ TextureId TexturePool::load(const std::filesystem::path& path, const TextureDef&
 TextureId TexturePool::create(const Image& image, const TextureDef& def, const char* function) {
     if (image.width < 1 || image.height < 1 ||
         image.pixels.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4) {
-        fail(function, "image must be at least 1 x 1 with width * height * 4 bytes, got " +
+        core::throwError(function, "image must be at least 1 x 1 with width * height * 4 bytes, got " +
                            std::to_string(image.width) + " x " + std::to_string(image.height) + " with " +
                            std::to_string(image.pixels.size()) + " bytes");
     }
     if (const std::string why = tooLarge(image); !why.empty()) {
-        fail(function, why);
+        core::throwError(function, why);
     }
     return idOf(add(image, def, TextureInfo{}));
 }
@@ -164,36 +162,37 @@ std::string TexturePool::tooLarge(const Image& image) const {
 }
 
 bool TexturePool::isValid(TextureId id) const noexcept {
-    return id.index1 >= 1 && id.index1 <= facts_.size() && facts_[id.index1 - 1].generation == id.generation &&
-           slots_[id.index1 - 1].texture != 0;
+    return core::findSlot(id, facts_.size(), [this](std::uint32_t i) {
+               return slots_[i].texture != 0 ? facts_[i].generation : std::uint16_t{0};
+           }).has_value();
 }
 
 const TextureInfo& TexturePool::info(TextureId id, const char* function) const {
     if (!isValid(id)) {
-        fail(function, id.isNull() ? "null texture id" : "stale texture id (index " + std::to_string(id.index1 - 1) + ")");
+        core::throwError(function, id.isNull() ? "null texture id" : "stale texture id (index " + std::to_string(id.index()) + ")");
     }
-    return slots_[id.index1 - 1].info;
+    return slots_[id.index()].info;
 }
 
 bool TexturePool::update(TextureId id, glm::ivec2 offset, glm::ivec2 size, std::span<const std::uint8_t> rgba) {
     constexpr const char* fn = "render::Renderer::updateTexture()";
     const TextureInfo& current = info(id, fn);
-    if (id.index1 - 1 < 2) {
-        fail(fn, "the built-in textures cannot be changed");
+    if (id.index() < 2) {
+        core::throwError(fn, "the built-in textures cannot be changed");
     }
     if (size.x < 0 || size.y < 0 || offset.x < 0 || offset.y < 0 || offset.x + size.x > current.size.x ||
         offset.y + size.y > current.size.y) {
-        fail(fn, "rectangle at " + formatVec(offset) + " of size " + formatVec(size) + " is outside the " +
+        core::throwError(fn, "rectangle at " + core::formatVector(offset) + " of size " + core::formatVector(size) + " is outside the " +
                      std::to_string(current.size.x) + " x " + std::to_string(current.size.y) + " texture");
     }
     std::size_t needed = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y) * 4;
     if (rgba.size() < needed) {
-        fail(fn, "expected " + std::to_string(needed) + " bytes of pixels, got " + std::to_string(rgba.size()));
+        core::throwError(fn, "expected " + std::to_string(needed) + " bytes of pixels, got " + std::to_string(rgba.size()));
     }
     if (size.x == 0 || size.y == 0) {
         return false;
     }
-    Slot& s = slots_[id.index1 - 1];
+    Slot& s = slots_[id.index()];
     glBindTexture(GL_TEXTURE_2D, s.texture);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
@@ -203,17 +202,17 @@ bool TexturePool::update(TextureId id, glm::ivec2 offset, glm::ivec2 size, std::
     }
     if (!s.info.translucent && hasPartialAlpha(rgba.data(), needed / 4)) {
         s.info.translucent = true;
-        facts_[id.index1 - 1].translucent = true;
+        facts_[id.index()].translucent = true;
         return true;
     }
     return false;
 }
 
 bool TexturePool::destroy(TextureId id) {
-    if (!isValid(id) || id.index1 - 1 < 2) {
+    if (!isValid(id) || id.index() < 2) {
         return false;
     }
-    std::uint32_t index = id.index1 - 1;
+    std::uint32_t index = id.index();
     Slot& s = slots_[index];
     glDeleteTextures(1, &s.texture);
     s.texture = 0;
@@ -221,8 +220,7 @@ bool TexturePool::destroy(TextureId id) {
         byPath_.erase(std::filesystem::path(s.info.path).lexically_normal().string());
     }
     s.info = TextureInfo{};
-    std::uint16_t generation = static_cast<std::uint16_t>(facts_[index].generation + 1);
-    facts_[index].generation = generation == 0 ? 1 : generation;
+    facts_[index].generation = core::nextGeneration(facts_[index].generation);
     free_.push_back(index);
     return true;
 }

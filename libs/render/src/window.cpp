@@ -3,7 +3,7 @@
 
 #include <e2d/render/window.hpp>
 
-#include "error_format.hpp"
+#include <e2d/core/error_text.hpp>
 
 #include <GLFW/glfw3.h>
 
@@ -18,10 +18,10 @@ constexpr const char* kCtor = "render::Window";
 
 void validate(const WindowDef& def) {
     if (def.mode != WindowMode::Borderless && (def.size.x < 1 || def.size.y < 1)) {
-        detail::fail(kCtor, "size must be >= 1 in each axis, got " + detail::formatVec(def.size));
+        core::throwError(kCtor, "size must be >= 1 in each axis, got " + core::formatVector(def.size));
     }
     if (def.samples < 0 || def.samples > 16) {
-        detail::fail(kCtor, "samples must be in [0, 16], got " + std::to_string(def.samples));
+        core::throwError(kCtor, "samples must be in [0, 16], got " + std::to_string(def.samples));
     }
 }
 
@@ -73,7 +73,7 @@ Window::Window(const WindowDef& def)
     if (def.mode != WindowMode::Windowed) {
         monitor = glfwGetPrimaryMonitor();
         if (monitor == nullptr) {
-            detail::fail(kCtor, "no monitor for a fullscreen or borderless window: " + glfwMessage());
+            core::throwError(kCtor, "no monitor for a fullscreen or borderless window: " + glfwMessage());
         }
         if (def.mode == WindowMode::Borderless) {
             const GLFWvidmode* video = glfwGetVideoMode(monitor);
@@ -87,7 +87,7 @@ Window::Window(const WindowDef& def)
     }
     window_ = glfwCreateWindow(size.x, size.y, def.title.c_str(), monitor, nullptr);
     if (window_ == nullptr) {
-        detail::fail(kCtor, "glfwCreateWindow() failed (no OpenGL 3.3 core context?): " + glfwMessage());
+        core::throwError(kCtor, "glfwCreateWindow() failed (no OpenGL 3.3 core context?): " + glfwMessage());
     }
     glfwMakeContextCurrent(window_);
     glewExperimental = GL_TRUE;
@@ -97,7 +97,7 @@ Window::Window(const WindowDef& def)
         std::string message = reinterpret_cast<const char*>(glewGetErrorString(glew));
         glfwDestroyWindow(window_);
         window_ = nullptr;
-        detail::fail(kCtor, "glewInit() failed: " + message);
+        core::throwError(kCtor, "glewInit() failed: " + message);
     }
     // glewInit() may leave GL_INVALID_ENUM behind on core profiles.
     while (glGetError() != GL_NO_ERROR) {
@@ -137,7 +137,7 @@ glm::vec2 Window::contentScale() const noexcept {
 
 void Window::setSize(glm::ivec2 size) {
     if (size.x < 1 || size.y < 1) {
-        detail::fail("render::Window::setSize()", "size must be >= 1 in each axis, got " + detail::formatVec(size));
+        core::throwError("render::Window::setSize()", "size must be >= 1 in each axis, got " + core::formatVector(size));
     }
     glfwSetWindowSize(window_, size.x, size.y);
 }

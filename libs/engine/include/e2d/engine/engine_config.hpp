@@ -78,6 +78,10 @@ struct EngineConfig {
     float penetrationBiasFactor = 0.2f;
     /// Speed below which a body may rest, m/s (>= 0). Default 0.05.
     float minRigidbodySpeed = 0.05f;
+    /// Threads the physics step runs on, 1 to 64 (physics::WorldDef::workerCount: the world
+    /// starts physicsWorkers - 1 threads of its own). The simulation is the same, bit for bit,
+    /// for every count; 2 or more only makes large scenes step faster. Default 1.
+    int physicsWorkers = 1;
     /// World units per physics metre (> 0). The engine's world unit is a reference pixel
     /// (the camera shows referenceWindowWidth of them), so the default, 100, makes the obvious
     /// pixel game fall as it looks (981 px/s^2, a 32-px crate is 0.32 m; Godot's 980 px/s^2 and
@@ -144,6 +148,7 @@ struct EngineConfig {
 /// - collisionResolutionSteps         -> solver.subSteps (soft step, capped at 64) and
 ///                                       solver.velocityIterations (classic solver);
 /// - minRigidbodySpeed (m/s)          -> solver.linearSleepTolerance (m/s);
+/// - physicsWorkers                   -> WorldDef::workerCount;
 /// - allowedPenetration (m)           -> solver.classicAllowedPenetration (m, capped at
 ///                                       SolverDef's 0.1 m);
 /// - penetrationBiasFactor            -> solver.classicPositionBias (same [0, 1] range; 0

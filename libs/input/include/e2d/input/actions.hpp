@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <e2d/core/id.hpp>
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -61,13 +63,10 @@ struct Binding {
 /// has no name.
 [[nodiscard]] std::string formatBinding(const Binding& binding);
 
-/// A named action's handle: index + 1 (zero is null). Actions are never removed, so a handle
-/// stays valid for the life of its ActionMap.
-struct ActionId {
-    std::uint32_t value = 0;
-    [[nodiscard]] bool isNull() const noexcept { return value == 0; }
-    friend bool operator==(ActionId, ActionId) = default;
-};
+struct ActionIdTag;
+/// A named action's handle (core::Id, 4 bytes): index + 1 (zero is null). Actions are never
+/// removed, so the id has no generation and stays valid for the life of its ActionMap.
+using ActionId = core::Id<ActionIdTag, core::NoGeneration>;
 
 /// Settings of an ActionMap.
 struct ActionMapDef {

@@ -114,6 +114,8 @@ public:
     void onTerminate() override;
 
 private:
+    friend class PhysicsSystem;
+
     PhysicsSystem& sys() const;
     template <class Event>
     void tellBoth(ShapeId shape, const MoverContact* contact);

@@ -14,6 +14,8 @@ namespace e2d::physics {
 
 namespace detail {
 
+struct SnapshotAccess; // World's snapshots (world_snapshot.cpp) read and write the tree whole.
+
 /// A LIFO stack of node indices that lives on the call stack while it holds at most `N` entries
 /// and spills into a std::vector past that, so tree traversals allocate nothing for trees of
 /// sane height (a traversal holds at most about height + 1 entries).
@@ -172,6 +174,7 @@ public:
     [[nodiscard]] bool validate() const;
 
 private:
+    friend struct detail::SnapshotAccess;
     struct Node {
         Aabb aabb;                  // leaf: as given; internal: union of the children
         std::uint64_t categoryBits; // internal: union of the children's

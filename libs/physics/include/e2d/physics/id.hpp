@@ -1,44 +1,30 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <e2d/core/id.hpp>
+
 #include <cstdint>
 
-/// Handles to objects owned by a physics::World. A handle is a small value (8 bytes): the slot
-/// index plus one (so a zero-initialised handle is null), the slot's generation, which changes
-/// when the object is destroyed, and the tag of the world that handed it out (see
-/// WorldDef::tag). A stale handle (its object destroyed, the slot perhaps reused) or a handle
-/// from another world is detected on every use instead of reaching another object.
+/// Handles to objects owned by a physics::World (core::Id, 8 bytes): the slot index plus one
+/// (so a zero-initialised handle is null), the slot's 16-bit generation, which changes when the
+/// object is destroyed, and as `owner` the tag of the world that handed it out (see
+/// WorldDef::tag; never 0 when live). A stale handle (its object destroyed, the slot perhaps
+/// reused) or a handle from another world is detected on every use instead of reaching another
+/// object.
 namespace e2d::physics {
 
+struct BodyIdTag;
+struct ShapeIdTag;
+struct JointIdTag;
+
 /// A body in a World. Default-constructed: null.
-struct BodyId {
-    std::uint32_t index1 = 0;     ///< slot index + 1; 0 means null
-    std::uint16_t generation = 0; ///< the slot's generation when the id was handed out
-    std::uint16_t world = 0;      ///< the tag of the world that handed it out (never 0 when live)
-
-    [[nodiscard]] constexpr bool isNull() const { return index1 == 0; }
-    friend constexpr bool operator==(BodyId, BodyId) = default;
-};
-
+using BodyId = core::Id<BodyIdTag, std::uint16_t, std::uint16_t>;
 /// A shape attached to a body. Default-constructed: null.
-struct ShapeId {
-    std::uint32_t index1 = 0;     ///< slot index + 1; 0 means null
-    std::uint16_t generation = 0; ///< the slot's generation when the id was handed out
-    std::uint16_t world = 0;      ///< the tag of the world that handed it out (never 0 when live)
-
-    [[nodiscard]] constexpr bool isNull() const { return index1 == 0; }
-    friend constexpr bool operator==(ShapeId, ShapeId) = default;
-};
-
+using ShapeId = core::Id<ShapeIdTag, std::uint16_t, std::uint16_t>;
 /// A joint between two bodies. Default-constructed: null.
-struct JointId {
-    std::uint32_t index1 = 0;     ///< slot index + 1; 0 means null
-    std::uint16_t generation = 0; ///< the slot's generation when the id was handed out
-    std::uint16_t world = 0;      ///< the tag of the world that handed it out (never 0 when live)
+using JointId = core::Id<JointIdTag, std::uint16_t, std::uint16_t>;
 
-    [[nodiscard]] constexpr bool isNull() const { return index1 == 0; }
-    friend constexpr bool operator==(JointId, JointId) = default;
-};
+static_assert(sizeof(BodyId) == 8 && sizeof(ShapeId) == 8 && sizeof(JointId) == 8);
 
 /// The null handles.
 inline constexpr BodyId kNullBodyId{};

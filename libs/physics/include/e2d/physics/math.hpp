@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <e2d/physics/constants.hpp>
+
 #include <glm/vec2.hpp>
 
 #include <cmath>
@@ -52,6 +54,9 @@ inline float distanceSquared(Vec2 a, Vec2 b) { return lengthSquared(b - a); }
 inline float distance(Vec2 a, Vec2 b) { return length(b - a); }
 inline bool isFinite(float x) { return std::isfinite(x); }
 inline bool isFinite(Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+/// Finite and within kHuge: what a world takes for a length or a coordinate.
+inline bool isWithinHuge(float x) { return std::isfinite(x) && std::fabs(x) <= kHuge; }
+inline bool isWithinHuge(Vec2 v) { return isWithinHuge(v.x) && isWithinHuge(v.y); }
 
 /// v / |v|, or (0, 0) when |v| is below the float epsilon.
 inline Vec2 normalize(Vec2 v) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <e2d/core/system.hpp>
+#include <e2d/physics/character_mover.hpp>
 #include <e2d/physics/id.hpp>
 #include <e2d/physics/query.hpp>
 #include <e2d/physics/world.hpp>
@@ -21,8 +22,35 @@ class GameObject;
 /// to it. Nothing here is needed to use World on its own.
 namespace e2d::physics {
 
+class CharacterController;
 class Collider;
 class Rigidbody;
+
+/// The scene's physics at one moment (PhysicsSystem::saveSnapshot()): the World's state and
+/// what the physics components keep beside it. A value: copy it, keep several (a rollback
+/// buffer of the last seconds), restore any of them (PhysicsSystem::restoreSnapshot()) into
+/// the running scene it was saved in.
+class PhysicsSnapshot {
+public:
+    /// The World's part: World::saveSnapshot()'s bytes (metres; the format is described there).
+    [[nodiscard]] const std::vector<std::uint8_t>& world() const noexcept { return world_; }
+
+private:
+    friend class PhysicsSystem;
+
+    // A CharacterController's own state: its mover (position, last move, contacts), its last
+    // result in world units and what it touched and overlapped, for enter/exit events.
+    struct Character {
+        const CharacterController* component = nullptr;
+        CharacterMover mover;
+        MoveResult last{};
+        std::vector<ShapeId> touching;
+        std::vector<ShapeId> sensors;
+    };
+
+    std::vector<std::uint8_t> world_;
+    std::vector<Character> characters_;
+};
 
 /// Owns the World of a running game and connects it to game objects.
 ///
@@ -114,10 +142,33 @@ public:
     /// The collider that owns `shape`, or nullptr (not a component's shape, or stale).
     [[nodiscard]] Collider* collider(ShapeId shape) const noexcept;
 
+    /// The whole scene's physics now, to come back to with restoreSnapshot(): the World's
+    /// state (World::saveSnapshot(): bodies, contacts and their warm starts, joints, sleep,
+    /// the broad phase, the ids) and each CharacterController's (its mover's position and
+    /// contacts, its last move, what it touches). Rigidbody, Collider and JointComponent keep
+    /// nothing a snapshot needs: their ids stay valid across a restore. Throws core::Error
+    /// from inside an event handler of this system.
+    [[nodiscard]] PhysicsSnapshot saveSnapshot() const;
+    /// Puts the scene's physics back as `snapshot` saved it: the World restored (a snapshot it
+    /// refuses throws core::Error and changes nothing), then every Rigidbody's object and
+    /// every static Collider's object moved to its body's restored pose, every
+    /// CharacterController's state put back and its object moved there, all drawn there at
+    /// once (no interpolation from where they were). The world's callbacks stay the system's.
+    /// The last step's events are not dispatched again. Kinematic targets set for the coming
+    /// step stay.
+    ///
+    /// For the scene the snapshot was saved in, with the same objects (a checkpoint, a
+    /// rollback, replaying a bug): a component made after the save loses its body (as when a
+    /// body is destroyed through world()), a body whose component went since comes back
+    /// without one, and the game's own state (scores, timers, its objects) is the game's to
+    /// save beside it. Throws core::Error from inside an event handler of this system.
+    void restoreSnapshot(const PhysicsSnapshot& snapshot);
+
     void fixedUpdate(double step) override;
     void clear() override;
 
 private:
+    friend class CharacterController;
     friend class Collider;
     friend class Rigidbody;
 
@@ -129,6 +180,10 @@ private:
     void unregisterRigidbody(Rigidbody& body) noexcept;
     void registerStaticCollider(Collider& collider);
     void unregisterStaticCollider(Collider& collider) noexcept;
+    void registerCharacter(CharacterController& character);
+    void unregisterCharacter(CharacterController& character) noexcept;
+    /// Throws core::Error naming `function` while events are being dispatched.
+    void requireNotDispatching(const char* function) const;
     /// Colliders riding on `body`.
     [[nodiscard]] std::vector<Collider*> collidersOn(const Rigidbody* body) const;
     /// Attaches again every collider `which` picks.
@@ -155,6 +210,7 @@ private:
     std::vector<ColliderSlot> colliders_; // indexed by ShapeId::index1 - 1
     std::vector<Rigidbody*> rigidbodies_;
     std::vector<Collider*> staticColliders_; // colliders with a static body of their own
+    std::vector<CharacterController*> characters_; // in a scene (onInitialize to onTerminate)
     int ruledColliders_ = 0;                 // colliders with oneWay or preSolve
     bool preSolveInstalled_ = false;
     // The last step's events, copied before dispatch (capacity reused from step to step).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <e2d/core/id.hpp>
 #include <e2d/core/log.hpp>
 #include <e2d/render/camera.hpp>
 #include <e2d/render/drawer.hpp>
@@ -51,14 +52,11 @@ namespace e2d::render {
 
 class Window;
 
-/// A sprite of a Renderer. Default-constructed: null.
-struct SpriteId {
-    std::uint32_t index1 = 0;     ///< slot index + 1; 0 means null
-    std::uint16_t generation = 0; ///< the slot's generation when the id was handed out
-
-    [[nodiscard]] constexpr bool isNull() const { return index1 == 0; }
-    friend constexpr bool operator==(SpriteId, SpriteId) = default;
-};
+struct SpriteIdTag;
+/// A sprite of a Renderer (core::Id: slot index + 1 and the slot's 16-bit generation, so an
+/// id kept after Renderer::destroySprite() is refused). Default-constructed: null.
+using SpriteId = core::Id<SpriteIdTag>;
+static_assert(sizeof(SpriteId) == 8);
 
 inline constexpr SpriteId kNullSpriteId{};
 

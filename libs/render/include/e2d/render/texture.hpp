@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <e2d/core/id.hpp>
+
 #include <glm/vec2.hpp>
 
 #include <cstdint>
@@ -10,14 +12,12 @@
 /// addressed by TextureId.
 namespace e2d::render {
 
-/// A texture of a Renderer. Default-constructed: null (draws the renderer's white texture).
-struct TextureId {
-    std::uint32_t index1 = 0;     ///< slot index + 1; 0 means null
-    std::uint16_t generation = 0; ///< the slot's generation when the id was handed out
-
-    [[nodiscard]] constexpr bool isNull() const { return index1 == 0; }
-    friend constexpr bool operator==(TextureId, TextureId) = default;
-};
+struct TextureIdTag;
+/// A texture of a Renderer (core::Id: slot index + 1 and the slot's 16-bit generation, so an
+/// id kept after Renderer::destroyTexture() is refused). Default-constructed: null (draws the
+/// renderer's white texture).
+using TextureId = core::Id<TextureIdTag>;
+static_assert(sizeof(TextureId) == 8);
 
 inline constexpr TextureId kNullTextureId{};
 

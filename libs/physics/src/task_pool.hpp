@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <e2d/physics/task.hpp>
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <type_traits>
+#include <vector>
+
+// The step's parallel-for (detail::Tasks) and the world's own threads behind it (TaskPool)
+// when the game gives no job system (WorldDef::enqueueTask).
+namespace e2d::physics::detail {
+
+// workerCount - 1 threads and the caller run one task at a time: the caller publishes it, every
+// worker (the caller as worker 0) claims pieces through one atomic counter until none is left,
+// and the caller returns once every piece has run. Idle threads spin a little (the step's
+// stages follow one another within microseconds), then sleep on a condition variable.
+class TaskPool {
+public:
+    explicit TaskPool(int workerCount);
+    ~TaskPool();
+    TaskPool(const TaskPool&) = delete;
+    TaskPool& operator=(const TaskPool&) = delete;
+
+    // Runs task over [0, itemCount) in pieces of pieceSize items; returns when all are done.
+    void run(TaskFunction task, int itemCount, int pieceSize, void* context);
+
+private:
+    void threadMain(int worker);
+    // Claims and runs pieces of task `generation` until none is left.
+    void runPieces(std::uint32_t generation, int worker);
+
+    std::vector<std::thread> threads_;
+    // Spins before a wait yields or sleeps: none when there are more workers than hardware
+    // threads (a spinning worker then only takes time from the one it waits for).
+    int spins_ = 0;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    int sleeping_ = 0; // threads waiting on wake_ (mutex_)
+    bool stop_ = false; // (mutex_)
+    // The task's generation, piece count and next unclaimed piece in one word (see pack()): a
+    // piece is claimed by one compare-and-swap that also checks which task it belongs to, so a
+    // thread that wakes late never runs a piece twice or reads a newer task's fields for an
+    // older one. The fields below are written before a task is published and read only by a
+    // thread holding one of its pieces.
+    std::atomic<std::uint64_t> claim_{0};
+    std::atomic<int> done_{0}; // pieces of the current task that have run
+    std::uint32_t generation_ = 0;
+    TaskFunction task_ = nullptr;
+    void* context_ = nullptr;
+    int itemCount_ = 0;
+    int pieceSize_ = 1;
+};
+
+// Whether `workers` threads fit on this machine's hardware threads (or it does not say).
+bool fitsHardware(int workers);
+
+// How World::step() runs its parallel stages (WorldDef::workerCount, enqueueTask, finishTask).
+class Tasks {
+public:
+    Tasks() = default;
+    Tasks(const Tasks&) = delete;
+    Tasks& operator=(const Tasks&) = delete;
+
+    // Starts the world's own threads when workerCount > 1 and enqueue is null.
+    void configure(int workerCount, EnqueueTaskFunction enqueue, FinishTaskFunction finish,
+                   void* userContext);
+    [[nodiscard]] int workerCount() const { return workerCount_; }
+    // Whether there are at most as many workers as hardware threads: waiting by spinning pays.
+    [[nodiscard]] bool spinning() const { return spinning_; }
+
+    // Calls body(begin, end, worker) over [0, itemCount) in pieces of at least minRange items
+    // (worker in [0, workerCount())); returns when every piece has run. One worker, or too few
+    // items to split: one piece, here.
+    template <class Body>
+    void parallelFor(int itemCount, int minRange, Body&& body) {
+        if (itemCount <= 0) {
+            return;
+        }
+        if (workerCount_ == 1 || itemCount <= minRange) {
+            body(0, itemCount, 0);
+            return;
+        }
+        auto trampoline = [](int begin, int end, int worker, void* context) {
+            (*static_cast<std::remove_reference_t<Body>*>(context))(begin, end, worker);
+        };
+        run(trampoline, itemCount, minRange, &body);
+    }
+
+    // Whether runTogether() can run: the world's own threads, which are all there at once (a
+    // game's job system may run a task's pieces one after another).
+    [[nodiscard]] bool canRunTogether() const { return pool_ != nullptr; }
+    // Calls body(role) for each role in [0, count), all at the same time, so that the roles may
+    // wait for each other; count <= workerCount(), canRunTogether().
+    template <class Body>
+    void runTogether(int count, Body&& body) {
+        auto trampoline = [](int begin, int end, int /*worker*/, void* context) {
+            for (int role = begin; role < end; ++role) {
+                (*static_cast<std::remove_reference_t<Body>*>(context))(role);
+            }
+        };
+        pool_->run(trampoline, count, 1, &body);
+    }
+
+private:
+    void run(TaskFunction task, int itemCount, int minRange, void* context);
+
+    int workerCount_ = 1;
+    bool spinning_ = true;
+    EnqueueTaskFunction enqueue_ = nullptr;
+    FinishTaskFunction finish_ = nullptr;
+    void* userContext_ = nullptr;
+    std::unique_ptr<TaskPool> pool_;
+};
+
+} // namespace e2d::physics::detail

@@ -1,0 +1,335 @@
+// SPDX-License-Identifier: MIT
+// Threads change the speed of World::step() only: the same scene stepped with 1, 2, 3 and 8
+// workers, on the SSE2 (4 lanes) and AVX2 (8 lanes) solver paths, and on a job system of the
+// test's own (WorldDef::enqueueTask), ends bit for bit the same, events included.
+#include "joint_test_util.hpp"
+#include "world_step_util.hpp"
+#include "world_test_util.hpp"
+
+#include <e2d/physics/world.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <condition_variable>
+#include <cstdint>
+#include <cstring>
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace e2d::physics::test {
+namespace {
+
+// FNV-1a over raw bits.
+struct Hash {
+    std::uint64_t h = 1469598103934665603ull;
+    void add(std::uint32_t bits) { h = (h ^ bits) * 1099511628211ull; }
+    void add(float x) {
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &x, sizeof bits);
+        add(bits);
+    }
+    void add(Vec2 v) {
+        add(v.x);
+        add(v.y);
+    }
+    void add(ShapeId id) { add(id.index1); }
+};
+
+// One scene: a world and the bodies whose state is hashed.
+struct Scene {
+    World world;
+    std::vector<BodyId> bodies;
+};
+
+WorldDef threadedDef(int workers, int lanes, SolverMode mode = SolverMode::SoftStep) {
+    WorldDef def;
+    def.tag = 7; // the same ids in every world, so events hash alike
+    def.workerCount = workers;
+    def.simdLanes = lanes;
+    def.solver.mode = mode;
+    return def;
+}
+
+// Many small piles side by side (several of the wide solver's blocks, some asleep later),
+// bouncy balls dropped on them (restitution, hit events), a hanging chain of hinges with a
+// box at its end swinging through the piles, a ragdoll-like pair with a limited hinge and a
+// weld, and a bullet fired at the far pile (continuous collision).
+void buildMixed(Scene& s) {
+    World& w = s.world;
+    addGround(w);
+    Random random(5);
+    for (int pile = 0; pile < 6; ++pile) {
+        const float x0 = -15.0f + 6.0f * static_cast<float>(pile);
+        for (int row = 0; row < 5; ++row) {
+            for (int col = 0; col < 5 - row; ++col) {
+                const Vec2 p{x0 + 1.05f * static_cast<float>(col) + 0.525f * static_cast<float>(row),
+                             0.5f + 1.0f * static_cast<float>(row)};
+                s.bodies.push_back(addBox(w, p, 0.5f));
+            }
+        }
+        s.bodies.push_back(addBall(w, {x0 + 2.0f, 8.0f + random.uniform(0.0f, 2.0f)},
+                                   random.uniform(0.2f, 0.4f), 0.6f));
+    }
+    const BodyId anchor = addStatic(w, {0.0f, 14.0f});
+    BodyId previous = anchor;
+    for (int i = 0; i < 10; ++i) {
+        const BodyId link = addPlank(w, {0.5f + static_cast<float>(i), 14.0f}, 0.5f, 0.1f);
+        RevoluteJointDef jd;
+        jd.bodyA = previous;
+        jd.bodyB = link;
+        jd.localAnchorA = previous == anchor ? Vec2{0.0f, 0.0f} : Vec2{0.5f, 0.0f};
+        jd.localAnchorB = {-0.5f, 0.0f};
+        w.createJoint(jd);
+        s.bodies.push_back(link);
+        previous = link;
+    }
+    const BodyId weight = addBox(w, {11.0f, 14.0f}, 0.6f);
+    RevoluteJointDef end;
+    end.bodyA = previous;
+    end.bodyB = weight;
+    end.localAnchorA = {0.5f, 0.0f};
+    end.localAnchorB = {-0.6f, 0.0f};
+    end.enableLimit = true;
+    end.lowerAngle = -0.5f;
+    end.upperAngle = 0.5f;
+    w.createJoint(end);
+    s.bodies.push_back(weight);
+    const BodyId torso = addPlank(w, {-20.0f, 6.0f}, 0.3f, 0.6f);
+    const BodyId head = addDisc(w, {-20.0f, 7.0f}, 0.3f);
+    WeldJointDef neck;
+    neck.bodyA = torso;
+    neck.bodyB = head;
+    neck.localAnchorA = {0.0f, 0.6f};
+    neck.localAnchorB = {0.0f, -0.4f};
+    w.createJoint(neck);
+    s.bodies.push_back(torso);
+    s.bodies.push_back(head);
+    BodyDef bullet;
+    bullet.type = BodyType::Dynamic;
+    bullet.isBullet = true;
+    bullet.position = {-40.0f, 1.0f};
+    bullet.linearVelocity = {200.0f, 0.0f};
+    const BodyId shot = w.createBody(bullet);
+    w.createShape(shot, {}, Circle{{0.0f, 0.0f}, 0.1f});
+    s.bodies.push_back(shot);
+}
+
+// A random pile of boxes and balls spawned overlapping (the soft step's push-out sweeps).
+void buildPile(Scene& s) {
+    addGround(s.world);
+    Random random(11);
+    for (int i = 0; i < 40; ++i) {
+        const Vec2 p{random.uniform(-2.0f, 2.0f), 0.5f + 0.45f * static_cast<float>(i)};
+        if (i % 2 == 0) {
+            s.bodies.push_back(addBox(s.world, p, random.uniform(0.2f, 0.5f), 0.6f, 1.0f,
+                                      random.uniform(-1.0f, 1.0f)));
+        } else {
+            s.bodies.push_back(addBall(s.world, p, random.uniform(0.2f, 0.5f), 0.3f));
+        }
+    }
+}
+
+// Short stacks of three boxes dropped from a little above each other onto one long ground:
+// more constraints than one block of the wide solver holds (World::Impl::scheduleWide()), so
+// the blocks are solved on several workers, and all stacks land in the same steps (hit events
+// from every block at once).
+void buildStacks(Scene& s) {
+    constexpr int kStacks = 1500;
+    BodyDef ground;
+    ground.position = {0.0f, -0.5f};
+    const BodyId floor = s.world.createBody(ground);
+    s.world.createShape(floor, {}, makeBox(0.8f * kStacks + 2.0f, 0.5f));
+    for (int i = 0; i < kStacks; ++i) {
+        const float x = 1.6f * (static_cast<float>(i) - 0.5f * kStacks);
+        for (int level = 0; level < 3; ++level) {
+            s.bodies.push_back(addBox(s.world, {x, 0.7f + 1.2f * static_cast<float>(level)}, 0.5f));
+        }
+    }
+}
+
+// One pyramid of base 40: one island with more constraints than one worker should solve alone,
+// so several workers share its levels (Simulation::splitBlock).
+void buildPyramid(Scene& s) {
+    addGround(s.world);
+    constexpr int kBase = 40;
+    for (int row = 0; row < kBase; ++row) {
+        for (int col = 0; col < kBase - row; ++col) {
+            const Vec2 p{1.0f * static_cast<float>(col) + 0.5f * static_cast<float>(row) - 0.5f * kBase,
+                         0.5f + 1.0f * static_cast<float>(row)};
+            s.bodies.push_back(addBox(s.world, p, 0.5f));
+        }
+    }
+}
+
+// Steps the scene; hashes every step's transforms, velocities and events.
+std::uint64_t run(const WorldDef& def, void (*build)(Scene&), int steps) {
+    Scene s{World{def}, {}};
+    build(s);
+    Hash hash;
+    for (int i = 0; i < steps; ++i) {
+        s.world.step(kStep);
+        for (BodyId id : s.bodies) {
+            const Transform xf = s.world.transform(id);
+            hash.add(xf.p);
+            hash.add(xf.q.c);
+            hash.add(xf.q.s);
+            hash.add(s.world.linearVelocity(id));
+            hash.add(s.world.angularVelocity(id));
+        }
+        for (const ContactBeginTouchEvent& e : s.world.contactBeginEvents()) {
+            hash.add(e.shapeA);
+            hash.add(e.shapeB);
+        }
+        for (const ContactEndTouchEvent& e : s.world.contactEndEvents()) {
+            hash.add(e.shapeA);
+            hash.add(e.shapeB);
+        }
+        for (const ContactHitEvent& e : s.world.hitEvents()) {
+            hash.add(e.shapeA);
+            hash.add(e.shapeB);
+            hash.add(e.point);
+            hash.add(e.approachSpeed);
+        }
+    }
+    return hash.h;
+}
+
+struct Case {
+    const char* name;
+    void (*build)(Scene&);
+    SolverMode mode;
+    int steps;
+};
+
+const Case kCases[] = {
+    {"mixed", buildMixed, SolverMode::SoftStep, 100},
+    {"mixed_classic", buildMixed, SolverMode::Classic, 60},
+    {"pile", buildPile, SolverMode::SoftStep, 120},
+    {"stacks", buildStacks, SolverMode::SoftStep, 20},
+    {"pyramid", buildPyramid, SolverMode::SoftStep, 12},
+};
+
+TEST(WorldThreads, EveryWorkerCountAndSimdWidthGivesTheSameSteps) {
+    for (const Case& c : kCases) {
+        const std::uint64_t reference = run(threadedDef(1, 8, c.mode), c.build, c.steps);
+        for (int lanes : {4, 8}) {
+            for (int workers : {1, 2, 3, 8}) {
+                EXPECT_EQ(run(threadedDef(workers, lanes, c.mode), c.build, c.steps), reference)
+                    << c.name << ", " << workers << " workers, " << lanes << " lanes";
+            }
+        }
+    }
+}
+
+// A job system of the test's own: `threads` threads taking pieces from a queue, each piece
+// run with its thread's index as the worker; finish waits for the task's pieces.
+class JobSystem {
+public:
+    explicit JobSystem(int threads) {
+        for (int i = 0; i < threads; ++i) {
+            threads_.emplace_back([this, i] { work(i); });
+        }
+    }
+    ~JobSystem() {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            stop_ = true;
+        }
+        ready_.notify_all();
+        for (std::thread& t : threads_) {
+            t.join();
+        }
+    }
+
+    static void* enqueue(TaskFunction task, int itemCount, int minRange, void* taskContext,
+                         void* userContext) {
+        auto& jobs = *static_cast<JobSystem*>(userContext);
+        ++jobs.tasks;
+        const int piece = std::max(minRange, 1);
+        std::lock_guard<std::mutex> lock(jobs.mutex_);
+        for (int begin = 0; begin < itemCount; begin += piece) {
+            const int end = std::min(begin + piece, itemCount);
+            ++jobs.pending_;
+            jobs.queue_.push_back([=](int worker) { task(begin, end, worker, taskContext); });
+        }
+        jobs.ready_.notify_all();
+        return &jobs;
+    }
+    static void finish(void* userTask, void* userContext) {
+        EXPECT_EQ(userTask, userContext);
+        auto& jobs = *static_cast<JobSystem*>(userContext);
+        std::unique_lock<std::mutex> lock(jobs.mutex_);
+        jobs.done_.wait(lock, [&] { return jobs.pending_ == 0; });
+    }
+
+    int tasks = 0; // enqueued so far
+
+private:
+    void work(int worker) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        for (;;) {
+            ready_.wait(lock, [&] { return stop_ || !queue_.empty(); });
+            if (stop_) {
+                return;
+            }
+            std::function<void(int)> job = std::move(queue_.front());
+            queue_.pop_front();
+            lock.unlock();
+            job(worker);
+            lock.lock();
+            if (--pending_ == 0) {
+                done_.notify_all();
+            }
+        }
+    }
+
+    std::vector<std::thread> threads_;
+    std::mutex mutex_;
+    std::condition_variable ready_;
+    std::condition_variable done_;
+    std::deque<std::function<void(int)>> queue_;
+    int pending_ = 0;
+    bool stop_ = false;
+};
+
+TEST(WorldThreads, TheGamesJobSystemRunsTheStepWithTheSameResults) {
+    const std::uint64_t reference = run(threadedDef(1, 8), buildMixed, 150);
+    JobSystem jobs(3);
+    WorldDef def = threadedDef(3, 8);
+    def.enqueueTask = JobSystem::enqueue;
+    def.finishTask = JobSystem::finish;
+    def.userTaskContext = &jobs;
+    EXPECT_EQ(run(def, buildMixed, 150), reference);
+    EXPECT_GT(jobs.tasks, 150); // the step's work went through it
+}
+
+TEST(WorldThreads, TheDefIsChecked) {
+    E2D_EXPECT_ERROR(World(WorldDef{.workerCount = 0}),
+                     "physics::World::World(): def.workerCount must be in [1, 64], got 0");
+    E2D_EXPECT_ERROR(World(WorldDef{.workerCount = 65}),
+                     "physics::World::World(): def.workerCount must be in [1, 64], got 65");
+    E2D_EXPECT_ERROR(World(WorldDef{.enqueueTask = JobSystem::enqueue}),
+                     "physics::World::World(): def.enqueueTask and def.finishTask must both be set "
+                     "or both be null, got only enqueueTask");
+    E2D_EXPECT_ERROR(World(WorldDef{.simdLanes = 16}),
+                     "physics::World::World(): def.simdLanes must be 4 or 8, got 16");
+}
+
+// The world's own threads start and stop with it, and a moved world keeps them.
+TEST(WorldThreads, AMovedWorldKeepsItsThreads) {
+    World first(threadedDef(2, 8));
+    Scene s{std::move(first), {}};
+    buildPile(s);
+    for (int i = 0; i < 10; ++i) {
+        s.world.step(kStep);
+    }
+    EXPECT_GT(s.world.transform(s.bodies.back()).p.y, 0.0f);
+}
+
+} // namespace
+} // namespace e2d::physics::test
