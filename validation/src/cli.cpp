@@ -59,8 +59,9 @@ fs::path resolve(const std::string& fileOrName, const fs::path& dir) {
     if (fs::is_regular_file(named)) {
         return named;
     }
-    throw ScenarioError("--scenario " + fileOrName + ": no such file, and no scenario of that name in " +
-                        dir.string() + " (see --list)");
+    throw ScenarioError(core::Diagnostic{core::Severity::Error, "--scenario " + fileOrName, 0, 0, {},
+                                         "no such file, and no scenario of that name in " + dir.string() +
+                                             " (see --list)"});
 }
 
 // Family order of the report, then names in natural order (stack_5 before stack_10).
@@ -178,7 +179,8 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     try {
         if (o.list || o.all || o.quick) {
             if (!fs::is_directory(o.dir)) {
-                throw ScenarioError("--scenarios-dir " + o.dir + ": not a directory");
+                throw ScenarioError(
+                    core::Diagnostic{core::Severity::Error, "--scenarios-dir " + o.dir, 0, 0, {}, "not a directory"});
             }
             for (const fs::path& file : scenarioFiles(o.dir)) {
                 Scenario s = loadScenario(file);

@@ -6,16 +6,15 @@
 #include <e2d/core/error_text.hpp>
 #include <e2d/core/json_scan.hpp>
 #include <e2d/core/printable.hpp>
+#include <e2d/core/text_file.hpp>
 #include <e2d/physics/constants.hpp>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <numbers>
 #include <set>
-#include <sstream>
 #include <vector>
 
 namespace e2d::validation {
@@ -32,8 +31,10 @@ std::string typeName(const json& value) {
 
 // Keys and strings quoted from the file may hold any character JSON can escape (a NUL would
 // cut what() short): the message is made printable here, once.
-[[noreturn]] void fail(const std::string& path, const std::string& message) {
-    throw ScenarioError(core::printable(path + ": " + message));
+// `at` places a problem of the text itself (malformed JSON); the others are placed by `path`.
+[[noreturn]] void fail(const std::string& path, const std::string& message, core::TextPosition at = {0, 0}) {
+    throw ScenarioError(
+        core::Diagnostic{core::Severity::Error, {}, at.line, at.column, core::printable(path), core::printable(message)});
 }
 
 std::string join(const std::string& path, const std::string& key) {
@@ -835,8 +836,7 @@ private:
         }
     }
     // The reason ends quoting the bytes nlohmann read, which need not be text (fail() escapes).
-    fail(locator.path(), "not valid JSON at line " + std::to_string(at.line) + ", column " +
-                             std::to_string(at.column) + ": " + reason);
+    fail(locator.path(), "not valid JSON: " + reason, at);
 }
 
 } // namespace
@@ -1040,9 +1040,9 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     // Printing or copying a value recurses once per level: bound the depth before parsing.
     if (const auto deep = core::findJsonNestingBeyond(text)) {
         const core::TextPosition at = core::positionOf(text, *deep);
-        fail("(root)", "arrays and objects nest deeper than " + std::to_string(core::kMaxJsonDepth) +
-                           " levels (line " + std::to_string(at.line) + ", column " + std::to_string(at.column) +
-                           "); a scenario needs 6");
+        fail("", "arrays and objects nest deeper than " + std::to_string(core::kMaxJsonDepth) +
+                     " levels; a scenario needs 6",
+             at);
     }
     json document;
     try {
@@ -1121,22 +1121,19 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
 }
 
 Scenario loadScenario(const std::filesystem::path& file) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(file, ec)) {
-        throw ScenarioError(file.string() + ": is a directory, not a scenario file");
+    const core::TextFile text = core::readTextFile(file);
+    if (!text.ok()) {
+        throw ScenarioError(core::Diagnostic{core::Severity::Error, core::printable(file.string()), 0, 0, {},
+                                             "cannot read the file (" + text.error + ")"});
     }
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        throw ScenarioError(file.string() + ": cannot open the file");
-    }
-    std::stringstream text;
-    text << in.rdbuf();
     try {
-        Scenario s = parseScenario(text.str(), file.stem().string());
+        Scenario s = parseScenario(text.text, file.stem().string());
         s.file = file.string();
         return s;
     } catch (const ScenarioError& e) {
-        throw ScenarioError(file.string() + ": " + e.what());
+        core::Diagnostic placed = e.diagnostic();
+        placed.file = core::printable(file.string());
+        throw ScenarioError(std::move(placed));
     }
 }
 

@@ -3,18 +3,21 @@
 
 #include "scenario.hpp"
 
+#include <e2d/core/diagnostics.hpp>
+
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 
 namespace e2d::validation {
 
-/// A scenario file that cannot be used. The message starts with the JSON path of the problem,
-/// e.g. "bodies[3].shapes[0].radius: must be > 0, got -1".
-class ScenarioError : public std::runtime_error {
+/// A scenario file that cannot be used: a core::ParseError whose diagnostic names the JSON path
+/// of the problem (Diagnostic::field), and the line and column of malformed JSON, e.g.
+/// "bodies[3].shapes[0].radius: must be > 0, got -1", "line 3, column 13: bodies[0].shape.radius:
+/// not valid JSON: number overflow parsing '1e999'"; loadScenario() adds the file.
+class ScenarioError : public core::ParseError {
 public:
-    using std::runtime_error::runtime_error;
+    using core::ParseError::ParseError;
 };
 
 /// The most steps a scenario may ask for (duration / timeStep): 600 s at 600 Hz.

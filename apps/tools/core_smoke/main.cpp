@@ -114,7 +114,7 @@ int main() {
     for (const auto& d : parsed.diagnostics) {
         logger.warning(d.toString());
     }
-    if (parsed.hasErrors()) {
+    if (!parsed.diagnostics.ok()) {
         return 1;
     }
 

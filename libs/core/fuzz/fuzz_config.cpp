@@ -48,7 +48,7 @@ std::string readInto(Settings& s, std::string_view text) {
                {{"first", Mode::First}, {"second", Mode::Second}, {"third", Mode::Third}});
     const e2d::core::ConfigReport report = reader.read(text, "fuzz");
     std::string all;
-    for (const e2d::core::ConfigDiagnostic& d : report.diagnostics) {
+    for (const e2d::core::Diagnostic& d : report.diagnostics) {
         const std::string line = d.toString();
         check(line.starts_with("fuzz:"));
         check(d.line >= 1);

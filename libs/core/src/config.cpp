@@ -4,19 +4,19 @@
 #include <e2d/core/error.hpp>
 #include <e2d/core/error_text.hpp>
 #include <e2d/core/printable.hpp>
+#include <e2d/core/text_file.hpp>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <system_error>
 
 namespace e2d::core {
 
 namespace {
 
-using ParseError = std::optional<std::string>;
+// What is wrong with a value, or nothing.
+using Problem = std::optional<std::string>;
 
 std::string describe(const ConfigBounds& bounds) {
     if (bounds.max == std::numeric_limits<double>::infinity()) {
@@ -50,7 +50,7 @@ std::string_view withoutPlus(std::string_view s) {
 }
 
 template <class Int>
-ParseError parseInteger(std::string_view text, Int& out, const ConfigBounds& bounds) {
+Problem parseInteger(std::string_view text, Int& out, const ConfigBounds& bounds) {
     const std::string_view digits = withoutPlus(text);
     Int value{};
     const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
@@ -68,7 +68,7 @@ ParseError parseInteger(std::string_view text, Int& out, const ConfigBounds& bou
 }
 
 template <class Float>
-ParseError parseFloat(std::string_view text, Float& out, const ConfigBounds& bounds) {
+Problem parseFloat(std::string_view text, Float& out, const ConfigBounds& bounds) {
     const std::string_view digits = withoutPlus(text);
     Float value{};
     const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
@@ -118,39 +118,13 @@ bool isKeyCharacter(char c) {
 
 } // namespace
 
-std::string ConfigDiagnostic::toString() const {
-    std::string out = file;
-    if (line > 0) {
-        out += ':';
-        out += std::to_string(line);
-    }
-    out += ": ";
-    if (!key.empty()) {
-        out += key;
-        out += ": ";
-    }
-    out += message;
-    return out;
-}
-
-bool ConfigReport::hasErrors() const noexcept {
-    return std::any_of(diagnostics.begin(), diagnostics.end(),
-                       [](const ConfigDiagnostic& d) { return d.severity == ConfigDiagnostic::Severity::Error; });
-}
-
-bool ConfigReport::hasWarnings() const noexcept {
-    return std::any_of(diagnostics.begin(), diagnostics.end(),
-                       [](const ConfigDiagnostic& d) { return d.severity == ConfigDiagnostic::Severity::Warning; });
-}
-
 int ConfigReport::lineOf(std::string_view key) const noexcept {
     const auto it = lines.find(key);
     return it != lines.end() ? it->second : 0;
 }
 
 void ConfigReport::error(std::string_view file, std::string_view key, std::string message) {
-    diagnostics.push_back(ConfigDiagnostic{ConfigDiagnostic::Severity::Error, std::string(file), lineOf(key),
-                                           std::string(key), std::move(message)});
+    diagnostics.error(file, lineOf(key), std::move(message), key);
 }
 
 void ConfigReader::add(std::string_view key, Setter setter) {
@@ -187,7 +161,7 @@ void ConfigReader::add(std::string_view key, double& field, ConfigBounds bounds)
 }
 
 void ConfigReader::add(std::string_view key, bool& field) {
-    add(key, [&field](std::string_view v) -> ParseError {
+    add(key, [&field](std::string_view v) -> Problem {
         if (v == "true" || v == "false") {
             field = v == "true";
             return std::nullopt;
@@ -197,7 +171,7 @@ void ConfigReader::add(std::string_view key, bool& field) {
 }
 
 void ConfigReader::add(std::string_view key, std::string& field) {
-    add(key, [&field](std::string_view v) -> ParseError {
+    add(key, [&field](std::string_view v) -> Problem {
         field = std::string(v);
         return std::nullopt;
     });
@@ -222,11 +196,9 @@ std::vector<std::string_view> ConfigReader::keys() const {
 }
 
 ConfigReport ConfigReader::read(std::string_view text, std::string_view sourceName) const {
-    using Severity = ConfigDiagnostic::Severity;
     ConfigReport result;
     const auto report = [&](Severity severity, int line, std::string_view key, std::string message) {
-        result.diagnostics.push_back(
-            ConfigDiagnostic{severity, std::string(sourceName), line, printable(key), std::move(message)});
+        result.diagnostics.add(Diagnostic{severity, printable(sourceName), line, 0, printable(key), std::move(message)});
     };
     // The known key nearest to `key`, if it is near enough to be a typo (at most a third of
     // its letters wrong, and at most 3).
@@ -248,10 +220,7 @@ ConfigReport ConfigReader::read(std::string_view text, std::string_view sourceNa
         return best.empty() ? std::string() : " (did you mean " + quote(best) + "?)";
     };
 
-    constexpr std::string_view kBom = "\xEF\xBB\xBF";
-    if (text.starts_with(kBom)) {
-        text.remove_prefix(kBom.size());
-    }
+    text = withoutByteOrderMark(text);
 
     int lineNumber = 0;
     while (!text.empty()) {
@@ -284,7 +253,7 @@ ConfigReport ConfigReader::read(std::string_view text, std::string_view sourceNa
             report(Severity::Warning, lineNumber, key,
                    "duplicate key, replaces the value set on line " + std::to_string(previous->second));
         }
-        if (ParseError error = field->second(value)) {
+        if (Problem error = field->second(value)) {
             report(Severity::Error, lineNumber, key, std::move(*error));
             continue;
         }
@@ -294,25 +263,14 @@ ConfigReport ConfigReader::read(std::string_view text, std::string_view sourceNa
 }
 
 ConfigReport ConfigReader::load(const std::filesystem::path& path) const {
-    // An ifstream opens a directory without complaint on POSIX systems; reading it fails
-    // silently, so it is checked for explicitly.
-    std::error_code ec;
-    const bool isDirectory = std::filesystem::is_directory(path, ec);
-    std::ifstream file;
-    if (!isDirectory) {
-        file.open(path, std::ios::binary);
-    }
-    std::ostringstream contents;
-    if (file.is_open()) {
-        contents << file.rdbuf();
-    }
-    if (!file.is_open() || file.bad()) {
+    const TextFile file = readTextFile(path);
+    if (!file.ok()) {
         ConfigReport result;
-        result.diagnostics.push_back(ConfigDiagnostic{ConfigDiagnostic::Severity::Warning, printable(path.string()),
-                                                      0, {}, "cannot read the file, using the defaults"});
+        result.diagnostics.warning(printable(path.string()), 0,
+                                   "cannot read the file (" + file.error + "), using the defaults");
         return result;
     }
-    return read(contents.str(), path.string());
+    return read(file.text, path.string());
 }
 
 } // namespace e2d::core

@@ -13,10 +13,10 @@
 #include <vector>
 
 using e2d::core::ConfigBounds;
-using e2d::core::ConfigDiagnostic;
 using e2d::core::ConfigReader;
 using e2d::core::ConfigReport;
-using Severity = e2d::core::ConfigDiagnostic::Severity;
+using e2d::core::Diagnostic;
+using e2d::core::Severity;
 using testing::ElementsAre;
 using testing::IsEmpty;
 
@@ -53,7 +53,7 @@ struct Reader {
 
 std::vector<std::string> texts(const ConfigReport& report) {
     std::vector<std::string> out;
-    for (const ConfigDiagnostic& d : report.diagnostics) {
+    for (const Diagnostic& d : report.diagnostics) {
         out.push_back(d.toString());
     }
     return out;
@@ -120,14 +120,15 @@ TEST(ConfigReader, EveryErrorKindWithItsLineAndWrongValuesKeepTheField) {
                             "game.cfg:12: gain: number out of range, got '1e60'",
                             "game.cfg:13: smooth: expected true or false, got 'yes'",
                             "game.cfg:14: frames: expected an integer, got ''"));
-    for (const ConfigDiagnostic& d : report.diagnostics) {
+    for (const Diagnostic& d : report.diagnostics) {
         EXPECT_EQ(d.severity, Severity::Error);
     }
     EXPECT_EQ(report.diagnostics[0].line, 1);
-    EXPECT_EQ(report.diagnostics[0].key, "width");
-    EXPECT_EQ(report.diagnostics[6].key, "");
-    EXPECT_TRUE(report.hasErrors());
-    EXPECT_FALSE(report.hasWarnings());
+    EXPECT_EQ(report.diagnostics[0].field, "width");
+    EXPECT_EQ(report.diagnostics[6].field, "");
+    EXPECT_FALSE(report.diagnostics.ok());
+    EXPECT_EQ(report.diagnostics.errorCount(), 14);
+    EXPECT_EQ(report.diagnostics.warningCount(), 0);
     const Settings defaults;
     EXPECT_EQ(r.settings.width, defaults.width);
     EXPECT_EQ(r.settings.shape, defaults.shape);
@@ -154,8 +155,8 @@ TEST(ConfigReader, UnknownKeysSuggestTheNearestKnownKey) {
                             "game.cfg:7: width: duplicate key, replaces the value set on line 3"));
     EXPECT_EQ(report.diagnostics[0].severity, Severity::Warning);
     EXPECT_EQ(r.settings.width, 641); // the last one wins
-    EXPECT_FALSE(report.hasErrors());
-    EXPECT_TRUE(report.hasWarnings());
+    EXPECT_TRUE(report.diagnostics.ok()) << "warnings only";
+    EXPECT_EQ(report.diagnostics.warningCount(), 5);
 }
 
 TEST(ConfigReader, RawBytesInMessagesAreEscaped) {
@@ -188,7 +189,7 @@ TEST(ConfigReader, KeysAreCheckedWhenAdded) {
 
 TEST(ConfigReader, EmptyTextChangesNothing) {
     Reader r;
-    EXPECT_THAT(r.reader.read("", "empty.cfg").diagnostics, IsEmpty());
+    EXPECT_TRUE(r.reader.read("", "empty.cfg").diagnostics.empty());
     EXPECT_EQ(r.settings.width, 640);
 }
 
@@ -199,11 +200,12 @@ TEST(ConfigReader, MissingFileOrFolderWarnsAndChangesNothing) {
     ASSERT_EQ(report.diagnostics.size(), 1u);
     EXPECT_EQ(report.diagnostics[0].severity, Severity::Warning);
     EXPECT_EQ(report.diagnostics[0].line, 0);
-    EXPECT_EQ(report.diagnostics[0].toString(), path.string() + ": cannot read the file, using the defaults");
+    EXPECT_EQ(report.diagnostics[0].toString(), path.string() + ": cannot read the file (no such file), using the defaults");
     EXPECT_EQ(r.settings.width, 640);
     const ConfigReport folder = r.reader.load(std::filesystem::temp_directory_path());
     ASSERT_EQ(folder.diagnostics.size(), 1u);
     EXPECT_EQ(folder.diagnostics[0].severity, Severity::Warning);
+    EXPECT_EQ(folder.diagnostics[0].message, "cannot read the file (it is a directory), using the defaults");
 }
 
 TEST(ConfigReader, LoadsAFile) {

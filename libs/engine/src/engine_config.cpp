@@ -2,6 +2,8 @@
 #include <e2d/engine/engine_config.hpp>
 
 #include <e2d/core/error_text.hpp>
+#include <e2d/core/printable.hpp>
+#include <e2d/core/text_file.hpp>
 
 #include <algorithm>
 #include <system_error>
@@ -118,17 +120,14 @@ physics::WorldDef makeWorldDef(const EngineConfig& config) {
 
 namespace {
 
-// The checks across keys, and the diagnostics as text.
+// The checks across keys.
 EngineConfigResult finish(EngineConfigResult result, core::ConfigReport report, std::string_view sourceName) {
     EngineConfig& c = result.config;
     checkOrder(c, report, sourceName, "minAttenuationDistance", &EngineConfig::minAttenuationDistance,
                "maxAttenuationDistance", &EngineConfig::maxAttenuationDistance);
     checkOrder(c, report, sourceName, "minPanningDistance", &EngineConfig::minPanningDistance, "maxPanningDistance",
                &EngineConfig::maxPanningDistance);
-    for (const core::ConfigDiagnostic& d : report.diagnostics) {
-        (d.severity == core::ConfigDiagnostic::Severity::Error ? result.errors : result.warnings)
-            .push_back(d.toString());
-    }
+    result.diagnostics = std::move(report.diagnostics);
     return result;
 }
 
@@ -143,17 +142,18 @@ EngineConfigResult parseEngineConfig(std::string_view text, std::string_view sou
 EngineConfigResult loadEngineConfig(const std::filesystem::path& path, bool required) {
     EngineConfigResult result;
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) {
-        const std::string message = path.string() + ": cannot read the configuration file";
+    const core::TextFile file = core::readTextFile(path);
+    if (!file.ok()) {
+        const std::string message = "cannot read the configuration file (" + file.error + ")";
         if (required) {
-            result.errors.push_back(message);
+            result.diagnostics.error(core::printable(path.string()), 0, message);
         } else {
-            result.warnings.push_back(message + ", using the defaults");
+            result.diagnostics.warning(core::printable(path.string()), 0, message + ", using the defaults");
         }
         result.config.assetRoot = std::filesystem::current_path(ec);
         return result;
     }
-    core::ConfigReport report = readerFor(result.config).load(path);
+    core::ConfigReport report = readerFor(result.config).read(file.text, path.string());
     result.config.file = path;
     std::filesystem::path root = path.parent_path();
     if (root.empty()) {

@@ -173,13 +173,10 @@ Startup readStartup(int argc, char** argv, std::string_view defaultConfig, const
         }
     }
     EngineConfigResult loaded = loadEngineConfig(configPath, required);
-    for (const std::string& w : loaded.warnings) {
-        logger.warning(w);
+    for (const core::Diagnostic& d : loaded.diagnostics) {
+        logger.log(d.severity == core::Severity::Error ? core::LogLevel::Error : core::LogLevel::Warning, d.toString());
     }
-    if (!loaded.errors.empty()) {
-        for (const std::string& e : loaded.errors) {
-            logger.error(e);
-        }
+    if (!loaded.diagnostics.ok()) {
         logger.error(startup.program + ": the configuration has errors, not starting");
         startup.exitCode = kExitUsage;
         return startup;

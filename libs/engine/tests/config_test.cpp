@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -21,6 +22,17 @@ using testing::IsEmpty;
 
 const std::filesystem::path kData = E2D_ENGINE_TEST_DATA;
 
+// The diagnostics of one severity as text, in order.
+std::vector<std::string> texts(const EngineConfigResult& r, core::Severity severity) {
+    std::vector<std::string> out;
+    for (const core::Diagnostic& d : r.diagnostics.only(severity)) {
+        out.push_back(d.toString());
+    }
+    return out;
+}
+std::vector<std::string> errors(const EngineConfigResult& r) { return texts(r, core::Severity::Error); }
+std::vector<std::string> warnings(const EngineConfigResult& r) { return texts(r, core::Severity::Warning); }
+
 std::filesystem::path writeTemp(const std::string& name, const std::string& text) {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "e2d_engine_config_test";
     std::filesystem::create_directories(dir);
@@ -31,8 +43,8 @@ std::filesystem::path writeTemp(const std::string& name, const std::string& text
 
 TEST(EngineConfig, EveryKeyOfTheFileIsRead) {
     const EngineConfigResult r = loadEngineConfig(kData / "every_key.txt", true);
-    EXPECT_THAT(r.errors, IsEmpty());
-    EXPECT_THAT(r.warnings, IsEmpty());
+    EXPECT_THAT(errors(r), IsEmpty());
+    EXPECT_THAT(warnings(r), IsEmpty());
     const engine::EngineConfig& c = r.config;
     EXPECT_EQ(c.file, kData / "every_key.txt");
     EXPECT_EQ(c.assetRoot, kData);
@@ -190,7 +202,7 @@ TEST(EngineConfig, BadValuesAreErrorsNamingFileLineAndKey) {
                                                  "physicsWorkers = 0\n");
     const EngineConfigResult r = loadEngineConfig(path, true);
     const std::string f = path.string();
-    EXPECT_THAT(r.errors,
+    EXPECT_THAT(errors(r),
                 ElementsAre(f + ":2: windowWidth: expected an integer, got 'wide'",
                             f + ":3: screenFitMode: unknown value 'stretch', expected one of: expand, widthFit, "
                                 "heightFit, bestFit",
@@ -201,7 +213,7 @@ TEST(EngineConfig, BadValuesAreErrorsNamingFileLineAndKey) {
                             f + ":9: expected 'key = value', got 'this line has no equals sign'",
                             f + ":10: voiceCount: must be in [1, 1024], got 2000",
                             f + ":11: physicsWorkers: must be in [1, 64], got 0"));
-    EXPECT_THAT(r.warnings, IsEmpty());
+    EXPECT_THAT(warnings(r), IsEmpty());
 }
 
 TEST(EngineConfig, UnknownAndDuplicateKeysAreWarningsWithTheirLine) {
@@ -209,8 +221,8 @@ TEST(EngineConfig, UnknownAndDuplicateKeysAreWarningsWithTheirLine) {
         writeTemp("warn.txt", "firstScene = A\nwindowWidht = 800\nfirstScene = B\n\n  gravityZ = 3\nphysicsWorker = 2\n");
     const EngineConfigResult r = loadEngineConfig(path, true);
     const std::string f = path.string();
-    EXPECT_THAT(r.errors, IsEmpty());
-    EXPECT_THAT(r.warnings, ElementsAre(f + ":2: windowWidht: unknown key, ignored (did you mean 'windowWidth'?)",
+    EXPECT_THAT(errors(r), IsEmpty());
+    EXPECT_THAT(warnings(r), ElementsAre(f + ":2: windowWidht: unknown key, ignored (did you mean 'windowWidth'?)",
                                         f + ":3: firstScene: duplicate key, replaces the value set on line 1",
                                         f + ":5: gravityZ: unknown key, ignored (did you mean 'gravityX'?)",
                                         f + ":6: physicsWorker: unknown key, ignored (did you mean 'physicsWorkers'?)"));
@@ -221,15 +233,15 @@ TEST(EngineConfig, UnknownAndDuplicateKeysAreWarningsWithTheirLine) {
 TEST(EngineConfig, MissingFileIsAnErrorOnlyWhenRequired) {
     const std::filesystem::path missing = kData / "no-such-config.txt";
     const EngineConfigResult required = loadEngineConfig(missing, true);
-    EXPECT_THAT(required.errors, ElementsAre(missing.string() + ": cannot read the configuration file"));
+    EXPECT_THAT(errors(required), ElementsAre(missing.string() + ": cannot read the configuration file (no such file)"));
     const EngineConfigResult optional = loadEngineConfig(missing, false);
-    EXPECT_THAT(optional.errors, IsEmpty());
-    EXPECT_THAT(optional.warnings,
-                ElementsAre(missing.string() + ": cannot read the configuration file, using the defaults"));
+    EXPECT_THAT(errors(optional), IsEmpty());
+    EXPECT_THAT(warnings(optional),
+                ElementsAre(missing.string() + ": cannot read the configuration file (no such file), using the defaults"));
     EXPECT_EQ(optional.config.windowWidth, engine::EngineConfig{}.windowWidth);
     EXPECT_TRUE(optional.config.file.empty());
     // A folder is not a configuration file.
-    EXPECT_THAT(loadEngineConfig(kData, true).errors, ElementsAre(HasSubstr("cannot read")));
+    EXPECT_THAT(errors(loadEngineConfig(kData, true)), ElementsAre(HasSubstr("cannot read the configuration file (it is a directory)")));
 }
 
 // --- The game's keys through the text reader (each key's range, enums, checks across keys) ---
@@ -250,7 +262,7 @@ TEST(EngineConfig, EveryErrorKindWithItsLineNumberAndWrongValuesKeepTheirDefault
                                                            "maxCameraDepth = 1e60\n"          // 13: overflows float
                                                            "collisionResolutionSteps =\n",    // 14: empty value
                                                            "game.cfg");
-    EXPECT_THAT(r.errors,
+    EXPECT_THAT(errors(r),
                 ElementsAre("game.cfg:1: windowWidth: expected an integer, got 'abc'",
                             "game.cfg:2: windowHeight: expected an integer, got '12px'",
                             "game.cfg:3: fontSize: expected an integer, got '1.5'",
@@ -278,16 +290,15 @@ TEST(EngineConfig, EveryErrorKindWithItsLineNumberAndWrongValuesKeepTheirDefault
 TEST(EngineConfig, EnumsAreTheLibrariesOwnTypesSpelledAsInTheFile) {
     const EngineConfigResult r = engine::parseEngineConfig("screenFitMode = expand\nwindowMode = borderless\n"
                                                            "textureFilteringMode = linear\nphysicsSolver = classic\n");
-    EXPECT_THAT(r.errors, IsEmpty());
+    EXPECT_THAT(errors(r), IsEmpty());
     EXPECT_EQ(r.config.screenFitMode, render::ScreenFit::Expand);
     EXPECT_EQ(r.config.windowMode, render::WindowMode::Borderless);
     EXPECT_EQ(r.config.textureFilteringMode, render::TextureFilter::Linear);
     EXPECT_EQ(r.config.physicsSolver, physics::SolverMode::Classic);
     EXPECT_EQ(engine::parseEngineConfig("screenFitMode = bestFit").config.screenFitMode, render::ScreenFit::BestFit);
-    EXPECT_THAT(engine::parseEngineConfig("windowMode = Windowed\ntextureFilteringMode = bilinear\n"
-                                          "physicsSolver = box2d",
-                                          "c")
-                    .errors,
+    EXPECT_THAT(errors(engine::parseEngineConfig("windowMode = Windowed\ntextureFilteringMode = bilinear\n"
+                                                 "physicsSolver = box2d",
+                                                 "c")),
                 ElementsAre("c:1: windowMode: unknown value 'Windowed', expected one of: windowed, fullscreen, "
                             "borderless",
                             "c:2: textureFilteringMode: unknown value 'bilinear', expected one of: nearest, linear",
@@ -299,20 +310,20 @@ TEST(EngineConfig, MinAboveMaxIsBlamedOnTheLaterKeyAndResetsBoth) {
                                                            "maxAttenuationDistance = 500\n"
                                                            "minPanningDistance = 700\n",
                                                            "game.cfg");
-    EXPECT_THAT(r.errors,
+    EXPECT_THAT(errors(r),
                 ElementsAre("game.cfg:2: maxAttenuationDistance: must be >= minAttenuationDistance (600), got 500",
                             "game.cfg:3: minPanningDistance: must be <= maxPanningDistance (512), got 700"));
     EXPECT_EQ(r.config.minAttenuationDistance, 256.0f);
     EXPECT_EQ(r.config.maxAttenuationDistance, 512.0f);
     EXPECT_EQ(r.config.minPanningDistance, 256.0f);
-    EXPECT_THAT(engine::parseEngineConfig("minPanningDistance = 512").errors, IsEmpty());
+    EXPECT_THAT(errors(engine::parseEngineConfig("minPanningDistance = 512")), IsEmpty());
 }
 
 TEST(EngineConfig, E2dKeysBadValuesNameLineAndKey) {
     const EngineConfigResult r = engine::parseEngineConfig("vsync = yes\nmsaaSamples = 17\nunitsPerMetre = 0\n"
                                                            "voiceCount = 0\nkeyRepeat = 1\nmaxFrameTime = 11\n",
                                                            "g.cfg");
-    EXPECT_THAT(r.errors, ElementsAre("g.cfg:1: vsync: expected true or false, got 'yes'",
+    EXPECT_THAT(errors(r), ElementsAre("g.cfg:1: vsync: expected true or false, got 'yes'",
                                       "g.cfg:2: msaaSamples: must be in [0, 16], got 17",
                                       "g.cfg:3: unitsPerMetre: must be > 0, got 0",
                                       "g.cfg:4: voiceCount: must be in [1, 1024], got 0",

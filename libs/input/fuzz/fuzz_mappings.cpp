@@ -26,18 +26,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     const e2d::input::MappingParseResult result = e2d::input::parseGamepadMappings(text, "fuzz");
     const auto lineCount = static_cast<int>(std::count(text.begin(), text.end(), '\n')) + 1;
-    check(result.lines.size() + result.errors.size() + static_cast<std::size_t>(result.otherPlatform) <=
+    check(result.lines.size() + static_cast<std::size_t>(result.diagnostics.errorCount()) + static_cast<std::size_t>(result.otherPlatform) <=
           static_cast<std::size_t>(lineCount));
     int previous = 0;
-    for (const e2d::input::MappingError& e : result.errors) {
+    for (const e2d::core::Diagnostic& e : result.diagnostics.errors()) {
         check(e.line > previous && e.line <= lineCount);
-        check(e.message.starts_with("fuzz:" + std::to_string(e.line) + ": "));
+        check(e.toString().starts_with("fuzz:" + std::to_string(e.line) + ": "));
         previous = e.line;
     }
     previous = 0;
-    for (const e2d::input::MappingError& w : result.warnings) {
+    for (const e2d::core::Diagnostic& w : result.diagnostics.warnings()) {
         check(w.line >= previous && w.line <= lineCount);
-        check(w.message.starts_with("fuzz:" + std::to_string(w.line) + ": "));
+        check(w.toString().starts_with("fuzz:" + std::to_string(w.line) + ": "));
         previous = w.line;
     }
     for (const std::string& line : result.lines) {
@@ -48,7 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::string_view fields = std::string_view(line).substr(line.find(',', line.find(',') + 1));
         check(fields.find(",+") == std::string_view::npos && fields.find(",-") == std::string_view::npos);
         const e2d::input::MappingParseResult again = e2d::input::parseGamepadMappings(line);
-        check(again.errors.empty() && again.warnings.empty() && again.lines.size() == 1 && again.lines[0] == line);
+        check(again.diagnostics.empty() && again.lines.size() == 1 && again.lines[0] == line);
     }
     return 0;
 }

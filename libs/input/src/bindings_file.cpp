@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Bindings files: `name = binding, binding, ...`, one action per line.
 #include "action_name.hpp"
-#include "text_file.hpp"
 
 #include <e2d/input/actions.hpp>
 
+#include <e2d/core/diagnostics.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/core/error_text.hpp>
+#include <e2d/core/printable.hpp>
+#include <e2d/core/text_file.hpp>
 
 #include <algorithm>
 #include <fstream>
@@ -32,10 +34,10 @@ std::string_view trim(std::string_view s) {
 void ActionMap::loadFromString(std::string_view text, std::string_view source) {
     // Parse everything first, so an error leaves the map unchanged.
     std::vector<std::pair<std::string, std::vector<Binding>>> parsed;
-    text = detail::withoutByteOrderMark(text);
+    text = core::withoutByteOrderMark(text);
     int lineNumber = 0;
     const auto fail = [&](const std::string& what) {
-        throw core::Error(std::string(source) + ":" + std::to_string(lineNumber) + ": " + what);
+        throw core::ParseError(core::Diagnostic{core::Severity::Error, core::printable(source), lineNumber, 0, {}, what});
     };
     while (!text.empty()) {
         ++lineNumber;
@@ -90,7 +92,7 @@ void ActionMap::loadFromString(std::string_view text, std::string_view source) {
 }
 
 void ActionMap::load(const std::filesystem::path& path) {
-    loadFromString(detail::readTextFile(path, "input::ActionMap::load()"), path.string());
+    loadFromString(core::readRequiredTextFile(path, "input::ActionMap::load()"), path.string());
 }
 
 std::string ActionMap::toString() const {

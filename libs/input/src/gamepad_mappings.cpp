@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // SDL gamepad mapping lines: checked here, then handed to GLFW's database.
-#include "text_file.hpp"
-
 #include <e2d/input/gamepad_mappings.hpp>
 
 #include <e2d/core/error.hpp>
 #include <e2d/core/error_text.hpp>
+#include <e2d/core/printable.hpp>
+#include <e2d/core/text_file.hpp>
 
 #include <GLFW/glfw3.h>
 
@@ -249,8 +249,8 @@ LineCheck checkLine(std::string_view line) {
 
 MappingParseResult parseGamepadMappings(std::string_view text, std::string_view source) {
     MappingParseResult result;
-    text = detail::withoutByteOrderMark(text);
-    const auto where = [&](int line) { return std::string(source) + ":" + std::to_string(line) + ": "; };
+    text = core::withoutByteOrderMark(text);
+    const std::string file = core::printable(source);
     // Every mapping line so far ended with ',' / had a platform field (SDL's database: all do).
     bool allClosed = true;
     bool allWithPlatform = true;
@@ -276,10 +276,11 @@ MappingParseResult parseGamepadMappings(std::string_view text, std::string_view 
         // closing ',' or the platform field that every line before it has.
         if (end == std::string_view::npos && mappingLines > 0 &&
             ((allClosed && !closed) || (allWithPlatform && !withPlatform))) {
-            result.errors.push_back(MappingError{
-                lineNumber, where(lineNumber) + "the text ends inside this line (no newline after it, and no " +
-                                (allClosed && !closed ? "',' closing its last field" : "platform field") +
-                                " as every line before it has): cut short?"});
+            result.diagnostics.error(file, lineNumber,
+                                     "the text ends inside this line (no newline after it, and no " +
+                                         std::string(allClosed && !closed ? "',' closing its last field"
+                                                                          : "platform field") +
+                                         " as every line before it has): cut short?");
             break;
         }
         ++mappingLines;
@@ -287,15 +288,15 @@ MappingParseResult parseGamepadMappings(std::string_view text, std::string_view 
         allWithPlatform = allWithPlatform && withPlatform;
         LineCheck check = checkLine(line);
         if (!check.problem.empty()) {
-            result.errors.push_back(MappingError{lineNumber, where(lineNumber) + check.problem});
+            result.diagnostics.error(file, lineNumber, std::move(check.problem));
             continue;
         }
         if (check.otherPlatform) {
             ++result.otherPlatform;
             continue;
         }
-        for (const std::string& warning : check.warnings) {
-            result.warnings.push_back(MappingError{lineNumber, where(lineNumber) + warning});
+        for (std::string& warning : check.warnings) {
+            result.diagnostics.warning(file, lineNumber, std::move(warning));
         }
         result.lines.push_back(std::move(check.kept));
     }
@@ -306,8 +307,7 @@ MappingLoadResult loadGamepadMappings(std::string_view text, std::string_view so
     MappingParseResult parsed = parseGamepadMappings(text, source);
     MappingLoadResult result;
     result.otherPlatform = parsed.otherPlatform;
-    result.errors = std::move(parsed.errors);
-    result.warnings = std::move(parsed.warnings);
+    result.diagnostics = std::move(parsed.diagnostics);
     std::string joined;
     for (const std::string& line : parsed.lines) {
         joined += line;
@@ -322,7 +322,7 @@ MappingLoadResult loadGamepadMappings(std::string_view text, std::string_view so
 }
 
 MappingLoadResult loadGamepadMappingsFile(const std::filesystem::path& path) {
-    return loadGamepadMappings(detail::readTextFile(path, "input::loadGamepadMappingsFile()"), path.string());
+    return loadGamepadMappings(core::readRequiredTextFile(path, "input::loadGamepadMappingsFile()"), path.string());
 }
 
 std::string makeGamepadMapping(std::string_view guid, std::string_view name, std::string_view fields) {

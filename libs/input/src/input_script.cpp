@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/input/input_script.hpp>
 
+#include <e2d/core/diagnostics.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/core/error_text.hpp>
 #include <e2d/core/printable.hpp>
+#include <e2d/core/text_file.hpp>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <optional>
-#include <fstream>
-#include <sstream>
 
 namespace e2d::input {
 
@@ -47,7 +47,7 @@ std::vector<std::string_view> words(std::string_view line) {
 }
 
 [[noreturn]] void fail(std::string_view source, int line, const std::string& message) {
-    throw core::Error(std::string(source) + ":" + std::to_string(line) + ": " + message);
+    throw core::ParseError(core::Diagnostic{core::Severity::Error, core::printable(source), line, 0, {}, message});
 }
 
 // Bounded, so a tap's release (frame + 1) cannot overflow.
@@ -149,14 +149,12 @@ InputScript parseInputScript(std::string_view text, std::string_view source) {
 }
 
 InputScript loadInputScript(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    std::error_code ec;
-    if (!file.is_open() || std::filesystem::is_directory(path, ec)) {
-        throw core::Error(core::printable(path.string()) + ": cannot read the input script");
+    const core::TextFile file = core::readTextFile(path);
+    if (!file.ok()) {
+        throw core::ParseError(core::Diagnostic{core::Severity::Error, core::printable(path.string()), 0, 0, {},
+                                                "cannot read the input script (" + file.error + ")"});
     }
-    std::ostringstream contents;
-    contents << file.rdbuf();
-    return parseInputScript(contents.str(), path.string());
+    return parseInputScript(file.text, path.string());
 }
 
 } // namespace e2d::input

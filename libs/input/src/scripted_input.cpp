@@ -2,6 +2,7 @@
 // An input script played as a device: resolved once, fed into an Input frame by frame.
 #include <e2d/input/input_script.hpp>
 
+#include <e2d/core/diagnostics.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/core/error_text.hpp>
 #include <e2d/core/printable.hpp>
@@ -37,7 +38,7 @@ ScriptedInput::ScriptedInput(const InputScript& script, const ActionMap& actions
 ScriptedInput::Resolved ScriptedInput::resolve(const ScriptEvent& event, const InputScript& script,
                                                const ActionMap& actions) {
     const auto fail = [&](const std::string& why) -> Resolved {
-        throw core::Error(script.source + ":" + std::to_string(event.line) + ": " + why);
+        throw core::ParseError(core::Diagnostic{core::Severity::Error, core::printable(script.source), event.line, 0, {}, why});
     };
     const std::string target = core::quote(event.target);
     Resolved r;

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <e2d/core/diagnostics.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/input/actions.hpp>
 #include <e2d/input/names.hpp>
@@ -128,10 +129,22 @@ TEST(BindingsFile, RawBytesInMessagesAreEscaped) {
               "input::ActionMap::held(): no action named '\\x1b[2J'");
 }
 
+TEST(BindingsFile, AnErrorKeepsItsDiagnostic) {
+    ActionMap actions;
+    try {
+        actions.loadFromString("jump = key:space\n\nfire key:f\n", "controls.txt");
+        FAIL() << "no error";
+    } catch (const core::ParseError& e) {
+        EXPECT_EQ(e.diagnostic().file, "controls.txt");
+        EXPECT_EQ(e.diagnostic().line, 3);
+        EXPECT_EQ(std::string(e.what()), "controls.txt:3: expected '<action> = <binding>, ...'");
+    }
+}
+
 TEST(BindingsFile, UnreadableAndUnwritableFilesAreNamed) {
     ActionMap actions;
     EXPECT_EQ(errorOf([&] { actions.load("/nonexistent/e2d/controls.txt"); }),
-              "input::ActionMap::load(): cannot read '/nonexistent/e2d/controls.txt'");
+              "input::ActionMap::load(): cannot read '/nonexistent/e2d/controls.txt': no such file");
     // A directory opens as a stream that reads nothing: it loaded zero actions with no error.
     const std::string dir = ::testing::TempDir();
     EXPECT_EQ(errorOf([&] { actions.load(dir); }), "input::ActionMap::load(): cannot read '" + dir + "': it is a directory");

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <e2d/core/diagnostics.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/input/actions.hpp>
 #include <e2d/input/input.hpp>
@@ -67,7 +68,7 @@ TEST(InputScript, MissingFileIsNamed) {
         static_cast<void>(input::loadInputScript("/no/such/script.txt"));
         FAIL();
     } catch (const core::Error& e) {
-        EXPECT_STREQ(e.what(), "/no/such/script.txt: cannot read the input script");
+        EXPECT_STREQ(e.what(), "/no/such/script.txt: cannot read the input script (no such file)");
     }
 }
 
@@ -176,6 +177,18 @@ TEST(ScriptedInput, TargetsThatCannotBePlayedNameTheLine) {
     input::ActionMap actions;
     actions.bind(actions.add("steer"), input::Binding::gamepadAxis(0));
     EXPECT_EQ(playError("0 press steer", actions), "run.txt:1: action 'steer' has no keyboard or mouse-button binding to press");
+}
+
+TEST(InputScript, AnErrorKeepsItsDiagnostic) {
+    try {
+        static_cast<void>(parseInputScript("0 press key:a\nx press key:b\n", "s.txt"));
+        FAIL() << "no error";
+    } catch (const core::ParseError& e) {
+        EXPECT_EQ(e.diagnostic().file, "s.txt");
+        EXPECT_EQ(e.diagnostic().line, 2);
+        EXPECT_EQ(e.diagnostic().message, "frame must be a whole number >= 0, got 'x'");
+        EXPECT_EQ(std::string(e.what()), "s.txt:2: " + e.diagnostic().message);
+    }
 }
 
 } // namespace

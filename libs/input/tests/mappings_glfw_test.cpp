@@ -63,9 +63,9 @@ TEST_F(Glfw, InvalidMappingsAreReportedAndNothingReachesGlfw) {
     const MappingLoadResult r = loadGamepadMappings("0300000,bad guid,a:b0\n03000000de280000ff11000001000000,N\n",
                                                     "bad.txt");
     EXPECT_EQ(r.loaded, 0);
-    ASSERT_EQ(r.errors.size(), 2u);
-    EXPECT_EQ(r.errors[0].message, "bad.txt:1: GUID must be 32 hex digits, got '0300000'");
-    EXPECT_EQ(r.errors[1].message, "bad.txt:2: expected fields after the name");
+    ASSERT_EQ(r.diagnostics.errors().size(), 2u);
+    EXPECT_EQ(r.diagnostics.errors()[0].toString(), "bad.txt:1: GUID must be 32 hex digits, got '0300000'");
+    EXPECT_EQ(r.diagnostics.errors()[1].toString(), "bad.txt:2: expected fields after the name");
     EXPECT_EQ(lastGlfwError(), GLFW_NO_ERROR); // GLFW would have raised GLFW_INVALID_VALUE
 }
 
@@ -79,9 +79,9 @@ TEST_F(Glfw, MixedTextLoadsTheGoodLinesAndListsTheBadOnes) {
     const MappingLoadResult r = loadGamepadMappingsFile(path);
     EXPECT_EQ(r.loaded, 2);
     EXPECT_EQ(r.otherPlatform, 1);
-    ASSERT_EQ(r.errors.size(), 1u);
-    EXPECT_EQ(r.errors[0].line, 3);
-    EXPECT_EQ(r.errors[0].message, path.string() + ":3: GUID must be 32 hex digits, got 'not hex at all'");
+    ASSERT_EQ(r.diagnostics.errors().size(), 1u);
+    EXPECT_EQ(r.diagnostics.errors()[0].line, 3);
+    EXPECT_EQ(r.diagnostics.errors()[0].toString(), path.string() + ":3: GUID must be 32 hex digits, got 'not hex at all'");
     EXPECT_EQ(lastGlfwError(), GLFW_NO_ERROR);
     std::filesystem::remove(path);
 }
@@ -102,10 +102,10 @@ TEST_F(Glfw, WarningsAreCountedApartFromErrors) {
     const MappingLoadResult r = loadGamepadMappings(joyCon + "\n" + kGood + "\n", "db.txt");
     EXPECT_TRUE(r.ok());
     EXPECT_EQ(r.loaded, 2);
-    EXPECT_TRUE(r.errors.empty());
-    ASSERT_EQ(r.warnings.size(), 2u);
-    EXPECT_EQ(r.warnings[0].line, 1);
-    EXPECT_EQ(r.warnings[1].line, 1);
+    EXPECT_TRUE(r.diagnostics.ok());
+    ASSERT_EQ(r.diagnostics.warnings().size(), 2u);
+    EXPECT_EQ(r.diagnostics.warnings()[0].line, 1);
+    EXPECT_EQ(r.diagnostics.warnings()[1].line, 1);
     EXPECT_EQ(lastGlfwError(), GLFW_NO_ERROR);
 }
 

@@ -22,7 +22,7 @@ const std::string kPad = "030000005e0400008e02000010010000,X360 Pad,a:b0,b:b1,ba
 
 std::vector<int> lines(const MappingParseResult& r) {
     std::vector<int> out;
-    for (const MappingError& e : r.errors) {
+    for (const e2d::core::Diagnostic& e : r.diagnostics.errors()) {
         out.push_back(e.line);
     }
     return out;
@@ -30,12 +30,12 @@ std::vector<int> lines(const MappingParseResult& r) {
 
 std::string problem(const std::string& line) {
     const MappingParseResult r = parseGamepadMappings(line, "t");
-    return r.errors.empty() ? std::string("ok") : r.errors[0].message;
+    return r.diagnostics.ok() ? std::string("ok") : r.diagnostics.errors()[0].toString();
 }
 
 TEST(MappingParse, AWellFormedLineIsKeptAsIs) {
     const MappingParseResult r = parseGamepadMappings(kPad);
-    EXPECT_TRUE(r.errors.empty());
+    EXPECT_TRUE(r.diagnostics.ok());
     EXPECT_THAT(r.lines, ElementsAre(kPad));
     EXPECT_EQ(r.otherPlatform, 0);
 }
@@ -44,7 +44,7 @@ TEST(MappingParse, CommentsBlankLinesAndOtherPlatformsAreNotErrors) {
     const std::string windows = "03000000de280000ff11000000000000,Other,a:b0,platform:Windows,";
     const std::string text = "# SDL database\r\n\n   \n" + kPad + "\r\n" + windows + "\n  # indented comment\n";
     const MappingParseResult r = parseGamepadMappings(text);
-    EXPECT_TRUE(r.errors.empty());
+    EXPECT_TRUE(r.diagnostics.ok());
     EXPECT_THAT(r.lines, ElementsAre(kPad)); // the \r is not part of the line
     EXPECT_EQ(r.otherPlatform, 1);
 }
@@ -58,8 +58,8 @@ TEST(MappingParse, EachBadLineIsReportedWithItsNumberAndTheGoodOnesKept) {
     const MappingParseResult r = parseGamepadMappings(text, "pads.txt");
     EXPECT_EQ(r.lines.size(), 2u);
     EXPECT_THAT(lines(r), ElementsAre(2, 5));
-    EXPECT_EQ(r.errors[0].message, "pads.txt:2: GUID must be 32 hex digits, got '0300000'");
-    EXPECT_EQ(r.errors[1].message, "pads.txt:5: field 'a': expected bN, aN or hH.B, got 'q1'");
+    EXPECT_EQ(r.diagnostics.errors()[0].toString(), "pads.txt:2: GUID must be 32 hex digits, got '0300000'");
+    EXPECT_EQ(r.diagnostics.errors()[1].toString(), "pads.txt:5: field 'a': expected bN, aN or hH.B, got 'q1'");
 }
 
 TEST(MappingParse, TheMistakesGlfwWouldSwallowAreCaught) {
@@ -106,18 +106,18 @@ TEST(MappingParse, EveryMappingGlfwCanUseIsKeptWithWarningsApartFromErrors) {
     const std::string xinput = "xinput,XInput Controller,a:b0,b:b1,platform:Windows,";
     const MappingParseResult r =
         parseGamepadMappings(joyCon + "\n" + n64 + "\n" + future + "\n" + xinput + "\n", "db.txt");
-    EXPECT_TRUE(r.errors.empty()) << r.errors[0].message;
+    EXPECT_TRUE(r.diagnostics.ok()) << r.diagnostics.errors()[0].toString();
     EXPECT_EQ(r.otherPlatform, 1);
     EXPECT_THAT(r.lines, ElementsAre(g + "Joy-Con (L),a:b0,b:b1,start:b9,leftshoulder:b4,platform:Linux,",
                                      "03000000c82d00000290000011010000,N64 Adapter,a:b1,b:b0,misc2:b12,platform:Linux,",
                                      "03000000c82d00000290000011020000,Future Pad,a:b0,platform:Linux,"));
-    ASSERT_EQ(r.warnings.size(), 4u);
-    EXPECT_EQ(r.warnings[0].message, "db.txt:1: output modifiers '+leftx:h0.2', '-leftx:h0.8', '+lefty:h0.4', "
+    ASSERT_EQ(r.diagnostics.warnings().size(), 4u);
+    EXPECT_EQ(r.diagnostics.warnings()[0].toString(), "db.txt:1: output modifiers '+leftx:h0.2', '-leftx:h0.8', '+lefty:h0.4', "
                                      "'-lefty:h0.1' left out (GLFW 3.3 has no half-axis outputs)");
-    EXPECT_EQ(r.warnings[1].message,
+    EXPECT_EQ(r.diagnostics.warnings()[1].toString(),
               "db.txt:2: output modifiers '+rightx:b9', '-rightx:b8' left out (GLFW 3.3 has no half-axis outputs)");
-    EXPECT_THAT(r.warnings[2].message, HasSubstr("db.txt:3: unknown field 'misc9' ignored"));
-    EXPECT_THAT(r.warnings[3].message, HasSubstr("db.txt:3: unknown field 'face' ignored"));
+    EXPECT_THAT(r.diagnostics.warnings()[2].toString(), HasSubstr("db.txt:3: unknown field 'misc9' ignored"));
+    EXPECT_THAT(r.diagnostics.warnings()[3].toString(), HasSubstr("db.txt:3: unknown field 'face' ignored"));
 }
 
 // A database cut short (a download that stopped) ends inside its last line. Cut anywhere, that
@@ -129,15 +129,15 @@ TEST(MappingParse, ACutLastLineIsAnErrorNotAMapping) {
     for (std::size_t cut = lastStart + 1; cut < text.size() - 1; ++cut) {
         const MappingParseResult r = parseGamepadMappings(text.substr(0, cut), "db.txt");
         EXPECT_EQ(r.lines.size(), 1u) << "cut at " << cut;
-        ASSERT_EQ(r.errors.size(), 1u) << "cut at " << cut;
-        EXPECT_EQ(r.errors[0].line, 3);
-        EXPECT_THAT(r.errors[0].message, HasSubstr("db.txt:3: the text ends inside this line (no newline after it"));
+        ASSERT_EQ(r.diagnostics.errors().size(), 1u) << "cut at " << cut;
+        EXPECT_EQ(r.diagnostics.errors()[0].line, 3);
+        EXPECT_THAT(r.diagnostics.errors()[0].toString(), HasSubstr("db.txt:3: the text ends inside this line (no newline after it"));
         refused += 1;
     }
     EXPECT_EQ(refused, static_cast<int>(kPad.size()) - 1);
-    EXPECT_THAT(parseGamepadMappings(text.substr(0, text.size() - 40)).errors[0].message,
+    EXPECT_THAT(parseGamepadMappings(text.substr(0, text.size() - 40)).diagnostics.errors()[0].toString(),
                 HasSubstr("and no ',' closing its last field as every line before it has): cut short?"));
-    EXPECT_THAT(parseGamepadMappings(text.substr(0, text.find(",platform:Linux,", lastStart) + 1)).errors[0].message,
+    EXPECT_THAT(parseGamepadMappings(text.substr(0, text.find(",platform:Linux,", lastStart) + 1)).diagnostics.errors()[0].toString(),
                 HasSubstr("and no platform field as every line before it has): cut short?"));
     // Whole, with or without the last newline, it is two mappings.
     EXPECT_EQ(parseGamepadMappings(text).lines.size(), 2u);
@@ -149,7 +149,7 @@ TEST(MappingParse, ACutLastLineIsAnErrorNotAMapping) {
 
 TEST(MappingParse, AByteOrderMarkIsSkipped) {
     const MappingParseResult r = parseGamepadMappings("\xEF\xBB\xBF" + kPad + "\n");
-    EXPECT_TRUE(r.errors.empty());
+    EXPECT_TRUE(r.diagnostics.ok());
     EXPECT_THAT(r.lines, ElementsAre(kPad));
 }
 

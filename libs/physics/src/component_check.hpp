@@ -36,21 +36,10 @@ inline void requireUnitInterval(const char* function, const char* field, float v
     }
 }
 
-// How an error names a game object: by name, else by tag, else by id.
-inline std::string describe(const core::GameObject& object) {
-    if (!object.name().empty()) {
-        return "object '" + object.name() + "'";
-    }
-    if (!object.tag().empty()) {
-        return "object tagged '" + object.tag() + "'";
-    }
-    return "object #" + std::to_string(object.id().index()) + " (no name or tag)";
-}
-
 // "physics::Rigidbody on object 'crate': ..."
 [[noreturn]] inline void failOn(const core::GameObject& object, std::string_view component,
                                 const std::string& what) {
-    throw core::Error("physics::" + std::string(component) + " on " + describe(object) + ": " + what);
+    throw core::Error("physics::" + std::string(component) + " on " + object.describe() + ": " + what);
 }
 
 // The object's world position must be within the World's range (kHuge metres), reported in

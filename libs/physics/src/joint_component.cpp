@@ -186,7 +186,7 @@ void JointComponent::onInitialize() {
     core::GameObject& self = *gameObject();
     Rigidbody* own = self.getComponent<Rigidbody>();
     if (own == nullptr) {
-        fail("onInitialize", "the " + detail::component_check::describe(self) + " has no Rigidbody to connect");
+        fail("onInitialize", "the " + self.describe() + " has no Rigidbody to connect");
     }
     // Body A: the connected object's Rigidbody, or a static anchor where it is (or at the origin).
     Rigidbody* theirs = nullptr;
@@ -197,7 +197,7 @@ void JointComponent::onInitialize() {
             fail("onInitialize", "def.connectedObject names no object of the scene");
         }
         if (other == &self) {
-            fail("onInitialize", "def.connectedObject is the " + detail::component_check::describe(self) +
+            fail("onInitialize", "def.connectedObject is the " + self.describe() +
                                      " itself");
         }
         theirs = other->getComponent<Rigidbody>();
@@ -205,7 +205,7 @@ void JointComponent::onInitialize() {
     }
     const bool ownMoves = own->type() == BodyType::Dynamic;
     if (!ownMoves && (theirs == nullptr || theirs->type() != BodyType::Dynamic)) {
-        fail("onInitialize", "neither the Rigidbody of the " + detail::component_check::describe(self) +
+        fail("onInitialize", "neither the Rigidbody of the " + self.describe() +
                                  " nor def.connectedObject's is dynamic: no force would move the joint");
     }
     BodyId bodyA;

@@ -140,7 +140,7 @@ void Rigidbody::onTerminate() {
 BodyId Rigidbody::bodyOrQueue(const char* function) const {
     if (state_ == State::Gone) {
         throw core::Error(std::string("physics::Rigidbody::") + function + "(): the Rigidbody on " +
-                          detail::component_check::describe(*gameObject()) +
+                          gameObject()->describe() +
                           " has no body any more (the component was removed, or its body was "
                           "destroyed through the World)");
     }

@@ -79,7 +79,7 @@ template <class Io>
 void transfer(Io& io, ShapeId& id) {
     field(io, "index1", id.index1);
     field(io, "generation", id.generation);
-    field(io, "world", id.world);
+    field(io, "world", id.owner);
 }
 template <class Io>
 void transfer(Io& io, Circle& c) {
@@ -634,7 +634,7 @@ public:
         require(isFinite(w_.speculativeDistance) && w_.speculativeDistance >= 0.0f &&
                     w_.speculativeDistance <= kAabbMargin,
                 "world.speculativeDistance",
-                "must be in [0, kAabbMargin], got " + detail::formatFloat(w_.speculativeDistance));
+                "must be in [0, kAabbMargin], got " + core::formatNumber(w_.speculativeDistance));
         try {
             validate(w_.sim.def);
         } catch (const core::Error& e) {

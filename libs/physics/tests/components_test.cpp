@@ -374,7 +374,7 @@ TEST_F(ComponentsTest, BodyDestroyedThroughTheWorldInsideACollisionEventLeavesIt
             ADD_FAILURE() << "no error";
         } catch (const core::Error& e) {
             EXPECT_NE(std::string(e.what()).find("physics::Rigidbody::setLinearVelocity(): the "
-                                                 "Rigidbody on object #"),
+                                                 "Rigidbody on object "),
                       std::string::npos)
                 << e.what();
         }

@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/render/sprite_sheet.hpp>
 
+#include <e2d/core/diagnostics.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/core/error_text.hpp>
 #include <e2d/core/json_scan.hpp>
 #include <e2d/core/printable.hpp>
+#include <e2d/core/text_file.hpp>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdint>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 namespace e2d::render {
 namespace {
@@ -45,14 +45,13 @@ class Reader {
 public:
     explicit Reader(std::string_view sheetName) : sheet_(sheetName) {}
 
-    [[noreturn]] void fail(std::string_view path, std::string_view what) const {
-        std::string message = "render::SpriteSheet: '";
-        message.append(core::printable(sheet_)).append("': ");
-        if (!path.empty()) {
-            message.append(path).append(": ");
-        }
-        message.append(what);
-        throw core::Error(message);
+    // `path` is the JSON path of the value at fault; a problem of the text itself has a line
+    // and column instead.
+    [[noreturn]] void fail(std::string_view path, std::string what, core::TextPosition at = {0, 0}) const {
+        throw core::ParseError(core::Diagnostic{core::Severity::Error, core::printable(sheet_),
+                                                at.line, at.column,
+                                                std::string(path), std::move(what)},
+                               "render::SpriteSheet: ");
     }
 
     static std::string describe(const Json& value) {
@@ -237,21 +236,11 @@ int compareNumbers(std::string_view a, std::string_view b) {
 
 SpriteSheet SpriteSheet::fromFile(const std::filesystem::path& path) {
     const std::string name = path.string();
-    const Reader reader(name);
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        reader.fail("", "is a directory, not a sprite sheet file");
+    const core::TextFile file = core::readTextFile(path);
+    if (!file.ok()) {
+        Reader(name).fail("", "cannot read the file (" + file.error + ")");
     }
-    std::ifstream file(path, std::ios::binary);
-    if (!file) {
-        reader.fail("", "cannot open the file");
-    }
-    std::ostringstream text;
-    text << file.rdbuf();
-    if (file.bad()) {
-        reader.fail("", "cannot read the file");
-    }
-    return fromString(text.str(), name, path.parent_path());
+    return fromString(file.text, name, path.parent_path());
 }
 
 SpriteSheet SpriteSheet::fromString(std::string_view json, std::string_view name,
@@ -261,8 +250,7 @@ SpriteSheet SpriteSheet::fromString(std::string_view json, std::string_view name
     if (const auto deep = core::findJsonNestingBeyond(json)) {
         const core::TextPosition at = core::positionOf(json, *deep);
         reader.fail("", "arrays and objects nest deeper than " + std::to_string(core::kMaxJsonDepth) +
-                            " levels (line " + std::to_string(at.line) + ", column " + std::to_string(at.column) +
-                            "); a sheet needs 4");
+                            " levels; a sheet needs 4", at);
     }
     Json root;
     try {
@@ -276,8 +264,7 @@ SpriteSheet SpriteSheet::fromString(std::string_view json, std::string_view name
         if (reason != std::string::npos) {
             what = what.substr(reason + 2);
         }
-        reader.fail("", "malformed JSON at line " + std::to_string(at.line) + ", column " +
-                            std::to_string(at.column) + ": " + core::printable(what));
+        reader.fail("", "malformed JSON: " + core::printable(what), at);
     } catch (const Json::exception& e) {
         // A number too large for a double ("1e999") is reported as out_of_range, without a position.
         std::string what = e.what();

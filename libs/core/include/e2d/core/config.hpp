@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <e2d/core/diagnostics.hpp>
+
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -14,33 +16,14 @@
 
 namespace e2d::core {
 
-/// One problem found while reading a configuration.
-struct ConfigDiagnostic {
-    enum class Severity { Warning, Error };
-
-    Severity severity = Severity::Error;
-    /// Source name as given to ConfigReader::read / the path given to ConfigReader::load.
-    std::string file;
-    /// 1-based line, 0 when the problem is not tied to a line (missing file).
-    int line = 0;
-    /// The key concerned (empty when there is none, e.g. a line without '=').
-    std::string key;
-    /// What is wrong, e.g. "expected an integer, got 'abc'".
-    std::string message;
-
-    /// "file:line: key: message", e.g. "game.cfg:12: windowWidth: expected an integer,
-    /// got 'abc'" (line and key left out when absent).
-    [[nodiscard]] std::string toString() const;
-};
-
 /// What reading a configuration found: the diagnostics, and the line each key was set on.
 struct ConfigReport {
-    std::vector<ConfigDiagnostic> diagnostics;
+    /// Each problem with its line and key (Diagnostic::field):
+    /// `"game.cfg:12: windowWidth: expected an integer, got 'abc'"`.
+    Diagnostics diagnostics;
     /// Key -> the line it was last set on without error.
     std::map<std::string, int, std::less<>> lines;
 
-    [[nodiscard]] bool hasErrors() const noexcept;
-    [[nodiscard]] bool hasWarnings() const noexcept;
     /// The line `key` was set on, 0 if it was not.
     [[nodiscard]] int lineOf(std::string_view key) const noexcept;
     /// Adds an error about `key` on the line it was set on (a check across keys, after reading).

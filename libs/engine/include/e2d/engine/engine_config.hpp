@@ -161,9 +161,9 @@ struct EngineConfig {
 /// The result of reading a configuration file for a Game.
 struct EngineConfigResult {
     EngineConfig config;
-    /// Every diagnostic, formatted "file:line: key: message".
-    std::vector<std::string> warnings;
-    std::vector<std::string> errors;
+    /// Every problem with its line and key (`toString()`: "file:line: key: message"); the
+    /// configuration may be used when `diagnostics.ok()` (warnings only).
+    core::Diagnostics diagnostics;
 };
 
 /// Parses configuration text (core::ConfigReader's format, the keys of EngineConfig);

@@ -1,22 +1,14 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <e2d/core/diagnostics.hpp>
+
 #include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace e2d::input {
-
-/// A line of a mapping text that could not be used (an error), or was used without a part GLFW
-/// cannot take (a warning).
-struct MappingError {
-    /// 1-based line number in the text or file.
-    int line = 0;
-    /// `"<source>:<line>: <what is wrong>"`, e.g.
-    /// `"pads.txt:3: field 'a': expected bN, aN or hH.B, got 'q0'"`.
-    std::string message;
-};
 
 /// What a mapping text held.
 struct MappingParseResult {
@@ -25,11 +17,11 @@ struct MappingParseResult {
     std::vector<std::string> lines;
     /// Lines for another platform (not loaded, not checked further; not an error).
     int otherPlatform = 0;
-    /// Lines that cannot be used, in order.
-    std::vector<MappingError> errors;
-    /// Lines used without a part GLFW cannot take, in order: output modifiers (`+leftx:h0.2`,
-    /// left out), unknown fields (ignored, as GLFW ignores them).
-    std::vector<MappingError> warnings;
+    /// Lines that cannot be used (errors) and lines used without a part GLFW cannot take
+    /// (warnings: output modifiers such as `+leftx:h0.2`, left out; unknown fields, ignored as
+    /// GLFW ignores them), in line order, each with its line:
+    /// `"pads.txt:3: field 'a': expected bN, aN or hH.B, got 'q0'"`.
+    core::Diagnostics diagnostics;
 };
 
 /// Checks an SDL-format gamepad mapping text (the gamecontrollerdb.txt format) line by line,
@@ -61,12 +53,11 @@ struct MappingLoadResult {
     int loaded = 0;
     /// Well-formed lines for another platform, skipped.
     int otherPlatform = 0;
-    /// Lines that could not be used; the good lines loaded anyway.
-    std::vector<MappingError> errors;
-    /// Lines loaded without a part GLFW cannot take (MappingParseResult::warnings).
-    std::vector<MappingError> warnings;
+    /// MappingParseResult::diagnostics: the lines in error were left out, the good lines
+    /// loaded anyway.
+    core::Diagnostics diagnostics;
     /// No errors (warnings allowed).
-    [[nodiscard]] bool ok() const noexcept { return errors.empty(); }
+    [[nodiscard]] bool ok() const noexcept { return diagnostics.ok(); }
 };
 
 /// Checks `text` with parseGamepadMappings() and gives the good lines to

@@ -71,10 +71,12 @@ struct SpriteFrame {
 /// `frame` {x, y, w, h} (required), `rotated`, `trimmed`, `spriteSourceSize` {x, y, w, h},
 /// `sourceSize` {w, h}, `pivot` {x, y} (optional), and `meta.image`, `meta.size` {w, h}
 /// (required). Other keys are ignored. Arrays and objects may nest at most
-/// core::kMaxJsonDepth (256) levels deep, checked before parsing. Every error is a core::Error
-/// naming the sheet and the key path, e.g. `render::SpriteSheet: 'hero.json':
-/// frames["run1.png"].frame.w: expected a non-negative integer, got "12"`; bytes quoted from the
-/// file that are not printable UTF-8 are escaped (core::printable()).
+/// core::kMaxJsonDepth (256) levels deep, checked before parsing. Every error is a
+/// core::ParseError (a core::Error) whose core::Diagnostic names the sheet and the key path
+/// (Diagnostic::field), or the line and column for malformed JSON, e.g.
+/// `render::SpriteSheet: hero.json: frames["run1.png"].frame.w: expected an integer, got
+/// string "12"`, `render::SpriteSheet: hero.json:2:14: malformed JSON: ...`; bytes quoted from
+/// the file that are not printable UTF-8 are escaped (core::printable()).
 class SpriteSheet {
 public:
     /// Reads and parses the JSON file at `path`; `meta.image` is resolved against the file's
