@@ -25,9 +25,9 @@ ph::WorldDef worldDef(const scenes::SceneDesc& scene, const EngineConfig& c) {
     def.solver.mode = c.solver == "classic" ? ph::SolverMode::Classic : ph::SolverMode::SoftStep;
     def.solver.subSteps = c.subSteps;
     def.solver.relaxIterations = c.relaxIterations;
-    def.solver.jointSolver = c.jointSolver == "direct"         ? ph::JointSolver::Direct
+    def.solver.jointSolver = c.jointSolver == "soft"           ? ph::JointSolver::Soft
                              : c.jointSolver == "gauss-seidel" ? ph::JointSolver::GaussSeidel
-                                                               : ph::JointSolver::Soft;
+                                                               : ph::JointSolver::Direct;
     def.solver.velocityIterations = c.velocityIterations;
     def.solver.positionIterations = c.positionIterations;
     def.solver.enableSleep = c.sleeping;

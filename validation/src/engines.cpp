@@ -60,7 +60,7 @@ void Pushes::apply(double time, const std::function<void(int, glm::vec2)>& force
 std::string EngineConfig::family() const {
     if (engine == "e2d") {
         // The joint models other than the default are curves of their own (joints family).
-        const std::string joints = solver == "soft" && jointSolver != "soft" ? " joints " + jointSolver : "";
+        const std::string joints = solver == "soft" && jointSolver != "direct" ? " joints " + jointSolver : "";
         return "e2d " + solver + " " + collision + joints;
     }
     return engine;

@@ -134,7 +134,7 @@ std::vector<RunSpec> makePlan(const std::vector<Scenario>& scenarios,
             // algorithm: they differ in joints only): the error-against-cost curves of the
             // report's joints plot.
             if (s.family == "joints" && base.engine == "e2d" && base.solver == "soft" && base.collision == "sat") {
-                for (const char* model : {"direct", "gauss-seidel"}) {
+                for (const char* model : {"gauss-seidel", "soft"}) {
                     EngineConfig other = base;
                     other.jointSolver = model;
                     for (auto& [label, config] : sweepPoints(other, level)) {

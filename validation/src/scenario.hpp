@@ -23,9 +23,9 @@ struct EngineConfig {
     int positionIterations = 3;     ///< Box2D and e2d classic
     int subSteps = 4;               ///< e2d soft
     int relaxIterations = 0;        ///< e2d soft: extra relax iterations per sub-step
-    /// e2d soft: the joint model, physics::SolverDef::jointSolver: "soft" (the default, Box2D
-    /// v3's), "gauss-seidel" or "direct"
-    std::string jointSolver = "soft";
+    /// e2d soft: the joint model, physics::SolverDef::jointSolver: "direct" (the default),
+    /// "gauss-seidel" or "soft" (Box2D v3's)
+    std::string jointSolver = "direct";
     float speculativeDistance = 0.02f; ///< e2d, metres
     bool continuous = true;         ///< CCD for fast/bullet bodies
     bool sleeping = true;

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
-// The joints' position pass as one direct solve (SolverDef::jointPositionSolver Direct): every
-// rigid row of every joint at once, K dlambda = -C with K = J M^-1 J^T, factored by sparse
-// block LDL^T in minimum-degree order. A chain or a tree eliminates leaf first without fill
-// (Baraff 1996's linear-time factorisation, here over the joints: a joint's neighbours are the
-// joints sharing one of its bodies); closed loops (a net, a scissor lift) fill in, and are
-// solved exactly too. Each pass linearises at the current positions (a Newton step), so a
-// few passes remove errors that a Gauss-Seidel sweep would take one link per pass to move
-// along a chain.
+// The direct solve of the joints (SolverDef::jointSolver Direct): every rigid row of a joint
+// component at once, K dlambda = -r with K = J M^-1 J^T, factored by sparse block LDL^T in
+// minimum-degree order. A chain or a tree eliminates leaf first without fill (Baraff 1996's
+// linear-time factorisation, here over the joints: a joint's neighbours are the joints sharing
+// one of its bodies); closed loops (a scissor lift) fill in, and are solved exactly too. The
+// velocity solve (r = J v + bias) follows each Gauss-Seidel pass of the sub-steps; the position
+// passes (r = C) linearise at the current positions (Newton steps), so a few passes remove
+// errors that a Gauss-Seidel sweep would take one link per pass to move along a chain.
+// Everything goes component by component (JointComponents), in slot order, so the result is
+// the same bits whatever order the step keeps its bodies and joints in.
 #include "joint_solver.hpp"
 
 #include <e2d/physics/constants.hpp>
@@ -190,9 +192,6 @@ void addBlock(JointDirectScratch& w, std::size_t p, int q, const Block& x) {
     w.adjacency[p].push_back({q, x});
 }
 
-// Closed loops the direct solve takes on (tooManyLoops()).
-constexpr std::size_t kMaxLoops = 8;
-constexpr std::size_t kJointsPerLoop = 16;
 // Solves per velocity pass at most: a limit that would pull is released and the rest solved
 // again.
 constexpr int kActiveSetRounds = 3;
@@ -217,22 +216,7 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order, std::s
     for (auto& list : w.adjacency) {
         list.clear();
     }
-    // The joints of each moving body, to find which joints share one.
-    w.bodyJointStart.assign(states.size() + 1, 0);
-    for (int k : order) {
-        const Joint& j = joints[static_cast<std::size_t>(k)];
-        for (int s : {j.indexA, j.indexB}) {
-            if (s >= 0) {
-                ++w.bodyJointStart[static_cast<std::size_t>(s) + 1];
-            }
-        }
-    }
-    for (std::size_t s = 0; s < states.size(); ++s) {
-        w.bodyJointStart[s + 1] += w.bodyJointStart[s];
-    }
-    w.bodyJoints.resize(static_cast<std::size_t>(w.bodyJointStart.back()));
-    w.fill.assign(w.bodyJointStart.begin(), w.bodyJointStart.end() - 1);
-
+    w.bodyJoints.clear();
     JointErrors worst;
     const BodyState fixedState{};
     auto stateOf = [&](int index) -> const BodyState& {
@@ -277,10 +261,12 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order, std::s
         w.diag[p] = d;
         for (int s : {j.indexA, j.indexB}) {
             if (s >= 0) {
-                w.bodyJoints[static_cast<std::size_t>(w.fill[static_cast<std::size_t>(s)]++)] = static_cast<int>(p);
+                w.bodyJoints.push_back({s, static_cast<int>(p)});
             }
         }
     }
+    // The joints of each moving body, to find which joints share one.
+    std::sort(w.bodyJoints.begin(), w.bodyJoints.end());
     // Off-diagonal blocks: joints p and q sharing body s couple through it.
     auto side = [&](std::size_t p, int s, Vec2 (&lin)[3], float (&ang)[3], Vec2& invMass, float& invInertia) {
         const Joint& j = joints[static_cast<std::size_t>(order[p])];
@@ -293,17 +279,20 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order, std::s
         invMass = isA ? j.invMassA : j.invMassB;
         invInertia = isA ? j.invInertiaA : j.invInertiaB;
     };
-    for (std::size_t s = 0; s < states.size(); ++s) {
-        const int first = w.bodyJointStart[s];
-        const int end = w.bodyJointStart[s + 1];
-        for (int x = first; x < end; ++x) {
-            for (int y = x + 1; y < end; ++y) {
-                const auto p = static_cast<std::size_t>(w.bodyJoints[static_cast<std::size_t>(x)]);
-                const auto q = static_cast<std::size_t>(w.bodyJoints[static_cast<std::size_t>(y)]);
+    for (std::size_t first = 0; first < w.bodyJoints.size();) {
+        const int s = w.bodyJoints[first].first;
+        std::size_t end = first + 1;
+        while (end < w.bodyJoints.size() && w.bodyJoints[end].first == s) {
+            ++end;
+        }
+        for (std::size_t x = first; x < end; ++x) {
+            for (std::size_t y = x + 1; y < end; ++y) {
+                const auto p = static_cast<std::size_t>(w.bodyJoints[x].second);
+                const auto q = static_cast<std::size_t>(w.bodyJoints[y].second);
                 Vec2 linP[3], linQ[3], invMass;
                 float angP[3], angQ[3], invInertia;
-                side(p, static_cast<int>(s), linP, angP, invMass, invInertia);
-                side(q, static_cast<int>(s), linQ, angQ, invMass, invInertia);
+                side(p, s, linP, angP, invMass, invInertia);
+                side(q, s, linQ, angQ, invMass, invInertia);
                 Block k{};
                 for (int i = 0; i < 3; ++i) {
                     for (int m = 0; m < 3; ++m) {
@@ -315,48 +304,15 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order, std::s
                 addBlock(w, q, static_cast<int>(p), transposed(k));
             }
         }
+        first = end;
+    }
+    // Each row's blocks by joint: the factorisation visits them in this order, which the
+    // bodies' order must not decide.
+    for (std::size_t p = 0; p < n; ++p) {
+        std::sort(w.adjacency[p].begin(), w.adjacency[p].end(),
+                  [](const JointDirectScratch::Entry& x, const JointDirectScratch::Entry& y) { return x.node < y.node; });
     }
     return worst;
-}
-
-// The joint slots of `order` ascending (in w.sorted): the solve's result is then the same
-// whatever order the passes keep the joints in (a kept layout or a new one).
-std::span<const int> sortedSlots(std::span<const int> order, JointDirectScratch& w) {
-    w.sorted.assign(order.begin(), order.end());
-    std::sort(w.sorted.begin(), w.sorted.end());
-    return w.sorted;
-}
-
-// Whether the joints' graph over the moving bodies has more independent closed loops
-// (joints - bodies + components, counted with a union-find) than kMaxLoops or one per
-// kJointsPerLoop joints: a net, whose factor fills in, where Gauss-Seidel is cheaper.
-bool tooManyLoops(std::span<const Joint> joints, std::span<const int> order, std::size_t stateCount,
-                  JointDirectScratch& w) {
-    w.parent.resize(stateCount);
-    for (std::size_t s = 0; s < stateCount; ++s) {
-        w.parent[s] = static_cast<int>(s);
-    }
-    auto root = [&](int x) {
-        while (w.parent[static_cast<std::size_t>(x)] != x) {
-            x = w.parent[static_cast<std::size_t>(x)] = w.parent[static_cast<std::size_t>(w.parent[static_cast<std::size_t>(x)])];
-        }
-        return x;
-    };
-    std::size_t loops = 0;
-    for (int k : order) {
-        const Joint& j = joints[static_cast<std::size_t>(k)];
-        if (j.indexA < 0 || j.indexB < 0) {
-            continue; // to a static body: a loop through the ground does not fill in
-        }
-        const int a = root(j.indexA);
-        const int b = root(j.indexB);
-        if (a == b) {
-            ++loops;
-        } else {
-            w.parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-        }
-    }
-    return loops > std::max(kMaxLoops, order.size() / kJointsPerLoop);
 }
 
 // LDL^T of the assembled K in minimum-degree order (ties: the lower index, deterministic).
@@ -480,46 +436,38 @@ void applyRows(const Joint& j, const JointDirectScratch::Rows& r, int count, con
     apply(j.indexB, j.invMassB, j.invInertiaB, pB, lB);
 }
 
-} // namespace
+// Whether component `slots` with `loops` independent closed loops is left to Gauss-Seidel:
+// tooLoopy(), or its factorisation gave up earlier this step.
+bool denseComponent(const JointDirectScratch& w, std::span<const int> slots, int loops) {
+    return tooLoopy(slots.size(), static_cast<std::size_t>(loops)) ||
+           std::find(w.denseComponents.begin(), w.denseComponents.end(), slots.front()) != w.denseComponents.end();
+}
 
-bool projectJointsDirect(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
-                         JointDirectScratch& w) {
-    order = sortedSlots(order, w);
-    w.released.assign(order.size(), 0);
-    const JointErrors worst = assemble(joints, order, states, false, w);
+// One Newton position pass over a component. True when every error was within the slops
+// before the pass (nothing moved).
+bool projectComponent(std::span<Joint> joints, std::span<const int> slots, std::span<BodyState> states,
+                      JointDirectScratch& w) {
+    w.released.assign(slots.size(), 0);
+    const JointErrors worst = assemble(joints, slots, states, false, w);
     if (worst.linear <= kLinearSlop && worst.angular <= kAngularSlop) {
         return true;
     }
-    if (w.tooDense && w.denseOrder == order.data() && w.denseSize == order.size()) {
-        return solveJointPositions(joints, order, states); // a large net: Gauss-Seidel
-    }
-    const std::span<const int> passOrder = order;
-    if (tooManyLoops(joints, order, states.size(), w) || !factor(w)) {
-        w.tooDense = true;
-        w.denseOrder = passOrder.data();
-        w.denseSize = passOrder.size();
-        return solveJointPositions(joints, passOrder, states);
+    if (!factor(w)) {
+        w.denseComponents.push_back(slots.front());
+        return solveJointPositions(joints, slots, states);
     }
     solveFactored(w);
-    for (std::size_t p = 0; p < order.size(); ++p) {
-        applyRows(joints[static_cast<std::size_t>(order[p])], w.rows[p], w.rowCount[p], w.solution[p].data(), states,
+    for (std::size_t p = 0; p < slots.size(); ++p) {
+        applyRows(joints[static_cast<std::size_t>(slots[p])], w.rows[p], w.rowCount[p], w.solution[p].data(), states,
                   true);
     }
     return false;
 }
 
-bool solveJointsDirect(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
-                       const JointStep& step, bool useBias, JointDirectScratch& w) {
-    if (w.tooDense && w.denseOrder == order.data() && w.denseSize == order.size()) {
-        return false; // this step's joints fill in too much (found at the step's first pass)
-    }
-    if (tooManyLoops(joints, order, states.size(), w)) {
-        w.tooDense = true;
-        w.denseOrder = order.data();
-        w.denseSize = order.size();
-        return false;
-    }
-    order = sortedSlots(order, w);
+// The velocity solve of one component; false, changing nothing, when its factorisation gives
+// up (then marked dense for the step).
+bool solveComponent(std::span<Joint> joints, std::span<const int> slots, std::span<BodyState> states,
+                    const JointStep& step, bool useBias, JointDirectScratch& w) {
     // rhs = -(J v + bias): the rows' velocities to zero, a limit not reached yet only stopped
     // at it (speculative), position errors left to the projection (rigid rows: the softness's
     // bias, 0 by default). A limit that would pull is released and the rest solved again (an
@@ -529,17 +477,15 @@ bool solveJointsDirect(std::span<Joint> joints, std::span<const int> order, std:
     auto stateOf = [&](int index) -> const BodyState& {
         return index < 0 ? fixedState : states[static_cast<std::size_t>(index)];
     };
-    w.released.assign(order.size(), 0);
+    w.released.assign(slots.size(), 0);
     for (int round = 0; round < kActiveSetRounds; ++round) {
-        assemble(joints, order, states, true, w);
+        assemble(joints, slots, states, true, w);
         if (!factor(w)) {
-            w.tooDense = true;
-            w.denseOrder = order.data();
-            w.denseSize = order.size();
+            w.denseComponents.push_back(slots.front());
             return false;
         }
-        for (std::size_t p = 0; p < order.size(); ++p) {
-            const Joint& j = joints[static_cast<std::size_t>(order[p])];
+        for (std::size_t p = 0; p < slots.size(); ++p) {
+            const Joint& j = joints[static_cast<std::size_t>(slots[p])];
             const JointDirectScratch::Rows& r = w.rows[p];
             const BodyState& a = stateOf(j.indexA);
             const BodyState& b = stateOf(j.indexB);
@@ -553,7 +499,7 @@ bool solveJointsDirect(std::span<Joint> joints, std::span<const int> order, std:
         }
         solveFactored(w);
         bool pulls = false;
-        for (std::size_t p = 0; p < order.size(); ++p) {
+        for (std::size_t p = 0; p < slots.size(); ++p) {
             const JointDirectScratch::Rows& r = w.rows[p];
             for (int i = 0; i < w.rowCount[p]; ++i) {
                 if (r.oneSided[i] && *r.acc[i] + w.solution[p][static_cast<std::size_t>(i)] < 0.0) {
@@ -566,8 +512,8 @@ bool solveJointsDirect(std::span<Joint> joints, std::span<const int> order, std:
             break;
         }
     }
-    for (std::size_t p = 0; p < order.size(); ++p) {
-        Joint& j = joints[static_cast<std::size_t>(order[p])];
+    for (std::size_t p = 0; p < slots.size(); ++p) {
+        Joint& j = joints[static_cast<std::size_t>(slots[p])];
         JointDirectScratch::Rows& r = w.rows[p];
         double* lambda = w.solution[p].data();
         for (int i = 0; i < w.rowCount[p]; ++i) {
@@ -579,6 +525,38 @@ bool solveJointsDirect(std::span<Joint> joints, std::span<const int> order, std:
         applyRows(j, r, w.rowCount[p], lambda, states, false);
     }
     return true;
+}
+
+} // namespace
+
+void projectJointComponents(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
+                            int iterations, bool gaussSeidel, JointDirectScratch& w) {
+    findJointComponents(joints, order, states.size(), w.components);
+    const JointComponents& components = w.components;
+    for (std::size_t c = 0; c < components.size(); ++c) {
+        const std::span<const int> slots = components.component(c);
+        for (int i = 0; i < iterations; ++i) {
+            const bool done = gaussSeidel || denseComponent(w, slots, components.loops[c])
+                                  ? solveJointPositions(joints, slots, states)
+                                  : projectComponent(joints, slots, states, w);
+            if (done) {
+                break;
+            }
+        }
+    }
+}
+
+void solveJointsDirect(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
+                       const JointStep& step, bool useBias, JointDirectScratch& w) {
+    // The loopy groups' joints are the Gauss-Seidel pass's alone (markLoopyJoints()).
+    findJointComponents(joints, order, states.size(), w.components, true);
+    const JointComponents& components = w.components;
+    for (std::size_t c = 0; c < components.size(); ++c) {
+        const std::span<const int> slots = components.component(c);
+        if (!denseComponent(w, slots, components.loops[c])) {
+            solveComponent(joints, slots, states, step, useBias, w);
+        }
+    }
 }
 
 } // namespace e2d::physics::detail

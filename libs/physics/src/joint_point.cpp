@@ -71,6 +71,8 @@ void storeGroups(std::span<const PointJointLanes<N>> groups, std::span<Joint> jo
 void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
                      bool quadsAllowed, PointJointGroups& groups, std::vector<int>& entries) {
     const std::size_t n = slots.size();
+    // Direct (quadsAllowed false): only the loopy groups' hinges, which the direct solve leaves.
+    auto grouped = [&](const Joint& j) { return isPointJoint(j) && (quadsAllowed || j.loopy); };
     std::size_t first = 0;
     while (first < n) {
         std::size_t end = first + 1;
@@ -81,8 +83,8 @@ void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, 
         // are left (with eight lanes), then fours. A lone hinge left over (a chain's levels
         // hold one joint each) is cheaper solved alone than in a group of padding.
         int points = 0;
-        for (std::size_t k = first; k < end && quadsAllowed; ++k) {
-            points += isPointJoint(joints[static_cast<std::size_t>(slots[k])]) ? 1 : 0;
+        for (std::size_t k = first; k < end; ++k) {
+            points += grouped(joints[static_cast<std::size_t>(slots[k])]) ? 1 : 0;
         }
         int left = points;
         int lane = 0;
@@ -91,7 +93,7 @@ void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, 
         for (std::size_t k = first; k < end && left > 0; ++k) {
             const int s = slots[k];
             const Joint& j = joints[static_cast<std::size_t>(s)];
-            if (!isPointJoint(j)) {
+            if (!grouped(j)) {
                 continue;
             }
             if (lane == width) {
@@ -118,10 +120,10 @@ void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, 
         }
         int seen = 0;
         // A level of plain hinges only, all in groups (a joint grid's), has no other entries.
-        const bool allPacked = quadsAllowed && static_cast<std::size_t>(packed) == end - first;
+        const bool allPacked = static_cast<std::size_t>(packed) == end - first;
         for (std::size_t k = first; k < end && !allPacked; ++k) {
             const int s = slots[k];
-            if (!quadsAllowed || !isPointJoint(joints[static_cast<std::size_t>(s)]) || seen++ >= packed) {
+            if (!grouped(joints[static_cast<std::size_t>(s)]) || seen++ >= packed) {
                 entries.push_back(s);
             }
         }

@@ -80,6 +80,9 @@ struct alignas(64) Joint {
     std::uint16_t generation = 1;
     bool alive = false;
     bool collideConnected = false;
+    // JointSolver::Direct, this step: the joint's connected group has too many closed loops for
+    // the direct solve (tooLoopy(), markLoopyJoints()): Gauss-Seidel, its plain hinges in groups.
+    bool loopy = false;
     Vec2 localAnchorA{0.0f, 0.0f}; // from body A's origin, A's frame (motor: linearOffset)
     Vec2 localAnchorB{0.0f, 0.0f};
     Vec2 localAxisA{1.0f, 0.0f}; // unit
@@ -162,7 +165,7 @@ int bestPointJointLanes();
 // The passes' order from the prepared joints joints[slots[k]] in order, levels[k] their
 // levels (ascending; joints of one level share no moving body): pass entries appended to
 // `entries`, k >= 0 the joint slot k, k < 0 a group of `groups` (PointJointGroups). With
-// `quadsAllowed`, the plain hinges of each level are packed into groups appended to `groups`
+// `quadsAllowed` (without it, those of loopy groups alone: Joint::loopy), the plain hinges of each level are packed into groups appended to `groups`
 // (eights while five or more are left and groups.lanes is 8, then fours; the last group of a
 // level padded; a single hinge left over stays a slot) and go before the level's other
 // joints; a level's joints share no body, so this order gives the same results as slot order.
@@ -270,7 +273,52 @@ struct JointErrors {
 // holds joint slots only (classic mode solves no point joints).
 bool solveJointPositions(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states);
 
-// What projectJointsDirect() keeps between calls (its arrays' capacity).
+// The joints of a pass split into the connected components of their graph over the moving
+// bodies (two joints sharing a moving body are in one; a static or sleeping side joins
+// nothing), each in ascending slot order, the components in the order of their smallest
+// slot. A world with the same joints finds the same components in the same order, whatever
+// its body states' order, pass order or solver blocks, so a pass that goes component by
+// component (the direct solve, the position passes and where they stop) gives the same bits.
+struct JointComponents {
+    std::vector<int> start; // component c holds slots[start[c] .. start[c + 1])
+    std::vector<int> slots;
+    std::vector<int> loops; // each component's independent closed loops through moving bodies
+    std::size_t size() const { return start.empty() ? 0 : start.size() - 1; }
+    std::span<const int> component(std::size_t c) const {
+        return std::span<const int>(slots).subspan(static_cast<std::size_t>(start[c]),
+                                                   static_cast<std::size_t>(start[c + 1] - start[c]));
+    }
+    // A union-find over the body states the joints touch: entries are valid where their stamp
+    // is this call's, so a call costs the joints', not the world's bodies.
+    std::vector<int> parent;
+    std::vector<int> componentOfRoot;
+    std::vector<std::uint32_t> stamp;
+    std::uint32_t generation = 0;
+    std::vector<int> componentOf; // per entry of `sorted`: the slots ascending
+    std::vector<int> sorted;
+    std::vector<int> cursor;
+    std::vector<std::uint8_t> closesLoop;
+};
+
+// Fills `out` from the pass entries `order` (joint slots; groups of plain hinges, k < 0, are
+// skipped, and with `skipLoopy` the joints marked loopy) over `stateCount` body states
+// (joint_components.cpp).
+void findJointComponents(std::span<const Joint> joints, std::span<const int> order, std::size_t stateCount,
+                         JointComponents& out, bool skipLoopy = false);
+
+// A connected group of `joints` joints with `loops` independent closed loops through moving
+// bodies is too loopy for the direct solve when it has more than 8 loops and more than one per
+// 16 joints (a net: its factor fills in and costs more than it saves); Gauss-Seidel there.
+inline bool tooLoopy(std::size_t joints, std::size_t loops) {
+    return loops > std::max<std::size_t>(8, joints / 16);
+}
+
+// Sets Joint::loopy on the joints `slots` (every prepared joint of the step) by tooLoopy() of
+// their connected group: a union-find, no sorting (once per step, JointSolver::Direct).
+void markLoopyJoints(std::span<Joint> joints, std::span<const int> slots, std::size_t stateCount,
+                     JointComponents& scratch);
+
+// What the direct solve keeps between calls (its arrays' capacity, and the step's verdicts).
 struct JointDirectScratch {
     // 3 x 3, row major; a joint's unused rows are padding. Doubles: a long limited arm or a
     // cantilever makes K ill-conditioned enough (1e6 and more) that floats lose the solve.
@@ -287,6 +335,7 @@ struct JointDirectScratch {
         int node; // the other joint
         Block block;
     };
+    JointComponents components;
     std::vector<Rows> rows;
     std::vector<int> rowCount;
     std::vector<std::array<double, 3>> rhs;
@@ -296,39 +345,31 @@ struct JointDirectScratch {
     std::vector<Block> inverseDiag;
     std::vector<std::vector<Entry>> adjacency; // the remaining matrix's blocks by row
     std::vector<std::vector<Entry>> factor;    // each joint's blocks when it was eliminated
-    std::vector<int> bodyJointStart;
-    std::vector<int> bodyJoints;
-    std::vector<int> fill;
+    std::vector<std::pair<int, int>> bodyJoints; // (body state, joint) of the moving sides
     std::vector<int> order;
     std::set<std::pair<int, int>> queue; // (degree, joint) of the joints not eliminated yet
     std::vector<std::uint8_t> released;  // joints whose limit row the velocity solve let go
-    std::vector<int> parent;             // union-find over the moving bodies (tooManyLoops())
-    std::vector<int> sorted;             // the pass's joint slots, ascending
-    // The joints (a pass order's data and size) found to fill in too much this step:
-    // Gauss-Seidel alone for them until the step's position passes (resetDirect()).
-    bool tooDense = false;
-    const int* denseOrder = nullptr;
-    std::size_t denseSize = 0;
-    void resetDense() {
-        tooDense = false;
-        denseOrder = nullptr;
-        denseSize = 0;
-    }
+    // The components (by smallest slot) whose factorisation gave up this step (a net that
+    // fills in too much): Gauss-Seidel alone for them until the next step's prepare.
+    std::vector<int> denseComponents;
+    void resetDense() { denseComponents.clear(); }
 };
 
-// Soft step (SolverDef::JointPositionSolver::Direct): one Newton pass over every rigid row of
-// the joints `order` (slots) at once, K dlambda = -C solved directly (joint_direct.cpp), moving
-// the states' deltaPosition and deltaRotation. True when every error was within the slops
-// before the pass (nothing moved).
-bool projectJointsDirect(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
-                         JointDirectScratch& scratch);
+// Soft step with SolverDef::jointSolver Direct: the step's position passes over the joints
+// `order` (slots), component by component (JointComponents): at most `iterations` Newton
+// passes each, every rigid row of the component at once, K dlambda = -C solved directly
+// (joint_direct.cpp), moving the states' deltaPosition and deltaRotation; a component stops
+// once its errors are within the slops. A component with too many closed loops gets
+// Gauss-Seidel passes (solveJointPositions()) instead; with `gaussSeidel`, every one does.
+void projectJointComponents(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
+                            int iterations, bool gaussSeidel, JointDirectScratch& scratch);
 
 // Soft step with SolverDef::jointSolver Direct: after a Gauss-Seidel pass, the velocities of
 // every rigid row of the joints `order` (slots) and of each revolute limit within reach, solved
-// at once (K dlambda = -(J v + bias)), the impulses added to the joints' accumulated ones (a
-// limit's kept >= 0). False, changing nothing, where the joint graph fills in too much (a
-// large net): Gauss-Seidel alone there.
-bool solveJointsDirect(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
+// component by component (K dlambda = -(J v + bias)), the impulses added to the joints'
+// accumulated ones (a limit's kept >= 0). A component whose graph fills in too much (a large
+// net) is left to the Gauss-Seidel pass.
+void solveJointsDirect(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
                        const JointStep& step, bool useBias, JointDirectScratch& scratch);
 
 // Per-type passes (joint_<type>.cpp).

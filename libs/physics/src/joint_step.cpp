@@ -64,6 +64,7 @@ void World::Impl::prepareJoints(float dt, float h) {
         s.jointBodies.clear();
         s.jointLayout = detail::Simulation::JointLayout::None;
     };
+    s.jointDirect.resetDense();
     if (joints.empty()) {
         reset();
         return;
@@ -107,6 +108,15 @@ void World::Impl::prepareJoints(float dt, float h) {
         }
         detail::prepareJoint(j, viewOf(a), viewOf(b), step);
         s.jointKeys.push_back({static_cast<int>(ji), j.indexA, j.indexB, detail::isPointJoint(j) ? 1 : 0});
+    }
+    if (directJoints(s.def)) {
+        // Which groups of joints the direct solve leaves to Gauss-Seidel: a function of the
+        // keys below, so a kept layout keeps it too.
+        s.jointScratch.clear();
+        for (const Key& key : s.jointKeys) {
+            s.jointScratch.push_back(key.slot);
+        }
+        detail::markLoopyJoints(joints, s.jointScratch, s.sims.size(), s.jointDirect.components);
     }
     static_assert(sizeof(Key) == 4 * sizeof(int), "JointKey compares as ints");
     if (!s.jointKeys.empty() && s.jointKeys.size() == s.lastJointKeys.size() &&
@@ -255,17 +265,8 @@ void World::Impl::projectJoints() {
     if (model == JointSolver::Soft) {
         return;
     }
-    const bool direct = model == JointSolver::Direct;
-    // The velocity passes' verdict on the joint graph holds for its blocks' orders, not for
-    // the whole list: the position passes find out again.
-    s.jointDirect.resetDense();
-    for (int i = 0; i < s.def.jointPositionIterations; ++i) {
-        if (direct ? detail::projectJointsDirect(joints, s.activeJoints, s.states, s.jointDirect)
-                   : detail::solveJointPositions(joints, s.activeJoints, s.states)) {
-            break;
-        }
-    }
-    s.jointDirect.resetDense();
+    detail::projectJointComponents(joints, s.activeJoints, s.states, s.def.jointPositionIterations,
+                                   model == JointSolver::GaussSeidel, s.jointDirect);
 }
 
 void World::Impl::reprojectJointsAfterContinuous() {

@@ -36,10 +36,12 @@ enum class JointSolver : std::uint8_t {
     /// non-linear Gauss-Seidel passes over the position errors at the end of the step. A pass
     /// moves an error about one joint along a chain.
     GaussSeidel,
-    /// As GaussSeidel, and every pass also solves all rigid rows and reached limits of the
-    /// joints at once (a sparse LDL^T of the joint graph: linear time for chains and trees,
-    /// exact for small closed loops), as do the position passes. A joint graph that fills in
-    /// too much (a large net) falls back to GaussSeidel in that step.
+    /// As GaussSeidel, and every pass also solves all rigid rows and reached limits of each
+    /// connected group of joints at once (a sparse LDL^T of the joint graph: linear time for
+    /// chains and trees, exact for small closed loops), as do the position passes. A group
+    /// with more closed loops than max(8, its joints / 16) (a net, which fills in) is solved
+    /// as GaussSeidel. Groups go in the order of their joints' creation slots, so the result
+    /// does not depend on which bodies sleep or in what order the world keeps them.
     Direct,
 };
 
@@ -95,14 +97,14 @@ struct SolverDef {
     /// Soft step with JointSolver::Soft: damping ratio of the rigid parts of joints, finite,
     /// >= 0. Default 2 (Box2D v3's).
     float jointDampingRatio = 2.0f;
-    /// Soft step: how joints are solved. Default JointSolver::Soft (Box2D v3's model). Direct
-    /// holds what Soft cannot (validation/README.md, "Joints"), but is not the default yet: a
-    /// world whose joint layout is rebuilt every step (a body put to sleep and woken every
-    /// other step) does not yet give bit-identical results to one that keeps it.
-    JointSolver jointSolver = JointSolver::Soft;
+    /// Soft step: how joints are solved. Default JointSolver::Direct: rigid joints, limits that
+    /// stop a body dead, chains and heavy loads held (validation/README.md, "Joints"). Soft is
+    /// Box2D v3's model, cheaper on big joint nets that are allowed to stretch. Contacts are
+    /// soft constraints in every joint model. Classic mode does not use it.
+    JointSolver jointSolver = JointSolver::Direct;
     /// Soft step, JointSolver GaussSeidel or Direct: position passes over the joints' errors at
-    /// the end of each step, in [0, 256]; they stop early once every error is within the
-    /// slops (kLinearSlop, 2 degrees). Each corrects a limit or a rod by at most 0.2 m or 8
+    /// the end of each step, in [0, 256]; each connected group of joints stops early once its
+    /// errors are within the slops (kLinearSlop, 2 degrees). Each corrects a limit or a rod by at most 0.2 m or 8
     /// degrees (a bounded push-out: a limit violated by 30 degrees is out in 4 passes, with
     /// no speed). Default 4.
     int jointPositionIterations = 4;
