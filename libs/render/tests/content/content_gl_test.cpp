@@ -284,7 +284,7 @@ TEST_F(ContentGl, ASheetWhoseFrameLiesOutsideItsImageGivesItsError) {
         sheet.checkImageSize(size);
         FAIL() << "no error";
     } catch (const Error& e) {
-        EXPECT_THAT(e.what(), HasSubstr("'" + (dir / "sheet.json").string() + "': frames[\"b\"].frame: frame \"b\" (x 40"));
+        EXPECT_THAT(e.what(), HasSubstr((dir / "sheet.json").string() + ": frames[\"b\"].frame: frame \"b\" (x 40"));
         EXPECT_THAT(e.what(), HasSubstr("outside the 32x32 image loaded from '" + (dir / "small.png").string() + "'"));
     }
     // The frame that fits draws, and the next frame renders.
