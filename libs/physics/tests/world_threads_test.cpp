@@ -305,7 +305,10 @@ TEST(WorldThreads, TheGamesJobSystemRunsTheStepWithTheSameResults) {
     def.finishTask = JobSystem::finish;
     def.userTaskContext = &jobs;
     EXPECT_EQ(run(def, buildMixed, 150), reference);
-    EXPECT_GT(jobs.tasks, 150); // the step's work went through it
+    // The step's work went through it: the narrow phase of every step at least. (This scene has
+    // joints, and the direct joint solve, the default, keeps the contact blocks of a world with
+    // joints on one worker for now: its scratch arrays are one per world.)
+    EXPECT_GE(jobs.tasks, 150);
 }
 
 TEST(WorldThreads, TheDefIsChecked) {
