@@ -4,7 +4,8 @@
 #   2. the same suites under AddressSanitizer + UndefinedBehaviorSanitizer, and the libraries
 #      built as CMAKE_BUILD_TYPE=Release (-O3) with warnings as errors;
 #   3. the libFuzzer targets, each for E2D_FUZZ_SECONDS (default 30), two at a time;
-#   4. the consumer project, built against an install of e2d once per library, linking only it.
+#   4. the consumer project, built against an install of e2d once per library, linking only it;
+#   5. (first, it takes seconds) every C++ file follows .clang-format.
 # Ends with one line "e2d tests: N passed, M failed". Exit status 0 only if all passed.
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -56,6 +57,14 @@ ctest_stage() {
   failed=$((failed + nfail))
   [ "$nfail" -eq 0 ] || failures+=("$name: $nfail of $ntotal tests failed")
 }
+
+stage "format: every C++ file follows .clang-format"
+if "$root/scripts/check-format.sh" 2>&1 | tee "$logs/format.log"; then
+  passed=$((passed + 1))
+else
+  failures+=("format: see $logs/format.log")
+  failed=$((failed + 1))
+fi
 
 ctest_stage "release" release
 ctest_stage "asan+ubsan" asan
