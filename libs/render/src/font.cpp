@@ -29,11 +29,13 @@ struct FreetypeErrorText {
     int code;
     const char* text;
 };
+// clang-format off: the macros open and close an array, which clang-format cannot see
 #undef FTERRORS_H_
 #define FT_ERROR_START_LIST constexpr FreetypeErrorText kFreetypeErrors[] = {
 #define FT_ERRORDEF(e, v, s) {v, s},
 #define FT_ERROR_END_LIST };
 #include FT_ERRORS_H
+// clang-format on
 
 std::string freetypeReason(FT_Error error) {
     char code[16];
