@@ -30,7 +30,8 @@ namespace au = e2d::audio;
 constexpr int kRate = 48000;
 
 std::filesystem::path benchDir() {
-    auto dir = std::filesystem::temp_directory_path() / ("e2d_bench_audio_" + std::to_string(::getpid()));
+    auto dir =
+        std::filesystem::temp_directory_path() / ("e2d_bench_audio_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     return dir;
 }
@@ -95,7 +96,8 @@ au::SoundData tone(double seconds) {
     const auto frames = static_cast<std::size_t>(seconds * kRate);
     data.samples.resize(frames);
     for (std::size_t i = 0; i < frames; ++i) {
-        data.samples[i] = static_cast<float>(0.1 * std::sin(2.0 * std::numbers::pi * 440.0 * i / kRate));
+        data.samples[i] =
+            static_cast<float>(0.1 * std::sin(2.0 * std::numbers::pi * 440.0 * i / kRate));
     }
     return data;
 }
@@ -122,18 +124,21 @@ void BM_SpatialUpdate(benchmark::State& state) {
     const double dt = 1.0 / 60.0;
     for (auto _ : state) {
         t += dt;
-        const glm::vec2 listener{static_cast<float>(10.0 * std::sin(0.3 * t)), static_cast<float>(2.0 * t)};
+        const glm::vec2 listener{static_cast<float>(10.0 * std::sin(0.3 * t)),
+                                 static_cast<float>(2.0 * t)};
         mixer.setListener(listener, 0.0f);
         for (int i = 0; i < voices; ++i) {
             const double a = t * (0.5 + 0.01 * i) + i;
             const float r = 2.0f + 0.2f * static_cast<float>(i % 200);
             mixer.setPosition(ids[static_cast<std::size_t>(i)],
-                              listener + glm::vec2{r * static_cast<float>(std::cos(a)), r * static_cast<float>(std::sin(a))});
+                              listener + glm::vec2{r * static_cast<float>(std::cos(a)),
+                                                   r * static_cast<float>(std::sin(a))});
         }
         mixer.update(dt);
     }
     state.counters["us_per_frame"] =
-        benchmark::Counter(static_cast<double>(state.iterations()) * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+        benchmark::Counter(static_cast<double>(state.iterations()) * 1e-6,
+                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
     state.SetItemsProcessed(state.iterations() * voices);
 }
 BENCHMARK(BM_SpatialUpdate)->Arg(256)->Unit(benchmark::kMicrosecond);
@@ -159,7 +164,8 @@ void BM_LoopbackRender(benchmark::State& state) {
         mixer.render(out);
         benchmark::DoNotOptimize(out.data());
     }
-    state.counters["realtime_x"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["realtime_x"] =
+        benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
     state.SetLabel(std::to_string(voices) + " voices, 1 s at 48 kHz per iteration");
 }
 BENCHMARK(BM_LoopbackRender)->Arg(64)->Unit(benchmark::kMillisecond);
@@ -183,9 +189,9 @@ void decodeStream(benchmark::State& state, const std::filesystem::path& path) {
         benchmark::DoNotOptimize(buffer.data());
     }
     state.SetItemsProcessed(state.iterations() * frames);
-    state.counters["realtime_x"] =
-        benchmark::Counter(static_cast<double>(state.iterations()) * static_cast<double>(frames) / 44100.0,
-                           benchmark::Counter::kIsRate);
+    state.counters["realtime_x"] = benchmark::Counter(static_cast<double>(state.iterations()) *
+                                                          static_cast<double>(frames) / 44100.0,
+                                                      benchmark::Counter::kIsRate);
 }
 
 void decodeWhole(benchmark::State& state, const std::filesystem::path& path) {
@@ -200,15 +206,23 @@ void decodeWhole(benchmark::State& state, const std::filesystem::path& path) {
         benchmark::DoNotOptimize(result.data.samples.data());
     }
     state.SetItemsProcessed(state.iterations() * frames);
-    state.counters["realtime_x"] =
-        benchmark::Counter(static_cast<double>(state.iterations()) * static_cast<double>(frames) / 44100.0,
-                           benchmark::Counter::kIsRate);
+    state.counters["realtime_x"] = benchmark::Counter(static_cast<double>(state.iterations()) *
+                                                          static_cast<double>(frames) / 44100.0,
+                                                      benchmark::Counter::kIsRate);
 }
 
-void BM_DecodeOggStream(benchmark::State& s) { decodeStream(s, writeFile("music.ogg", SF_FORMAT_OGG | SF_FORMAT_VORBIS, 10.0)); }
-void BM_DecodeOggWhole(benchmark::State& s) { decodeWhole(s, writeFile("music.ogg", SF_FORMAT_OGG | SF_FORMAT_VORBIS, 10.0)); }
-void BM_DecodeFlacStream(benchmark::State& s) { decodeStream(s, writeFile("music.flac", SF_FORMAT_FLAC | SF_FORMAT_PCM_16, 10.0)); }
-void BM_DecodeFlacWhole(benchmark::State& s) { decodeWhole(s, writeFile("music.flac", SF_FORMAT_FLAC | SF_FORMAT_PCM_16, 10.0)); }
+void BM_DecodeOggStream(benchmark::State& s) {
+    decodeStream(s, writeFile("music.ogg", SF_FORMAT_OGG | SF_FORMAT_VORBIS, 10.0));
+}
+void BM_DecodeOggWhole(benchmark::State& s) {
+    decodeWhole(s, writeFile("music.ogg", SF_FORMAT_OGG | SF_FORMAT_VORBIS, 10.0));
+}
+void BM_DecodeFlacStream(benchmark::State& s) {
+    decodeStream(s, writeFile("music.flac", SF_FORMAT_FLAC | SF_FORMAT_PCM_16, 10.0));
+}
+void BM_DecodeFlacWhole(benchmark::State& s) {
+    decodeWhole(s, writeFile("music.flac", SF_FORMAT_FLAC | SF_FORMAT_PCM_16, 10.0));
+}
 BENCHMARK(BM_DecodeOggStream)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DecodeOggWhole)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DecodeFlacStream)->Unit(benchmark::kMillisecond);

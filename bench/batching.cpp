@@ -63,17 +63,17 @@ constexpr int kTextures = 8;
 // Scenes, the same for every engine.
 
 struct SceneSprite {
-    glm::vec2 position;   // centre, world units = pixels, origin at the target's centre
-    glm::vec2 velocity;   // pixels per frame (0 for static sprites)
-    int texture;          // 0..kTextures-1 (the sheet case: 0)
-    int frame;            // animation frame (the sheet case), else 0
+    glm::vec2 position; // centre, world units = pixels, origin at the target's centre
+    glm::vec2 velocity; // pixels per frame (0 for static sprites)
+    int texture;        // 0..kTextures-1 (the sheet case: 0)
+    int frame;          // animation frame (the sheet case), else 0
 };
 
 struct Scene {
     std::vector<SceneSprite> sprites;
-    int spriteSize = 8;     // pixels, square
-    bool sheet = false;     // one 8-frame sheet, every sprite animated
-    int moving = 0;         // the first `moving` sprites move
+    int spriteSize = 8; // pixels, square
+    bool sheet = false; // one 8-frame sheet, every sprite animated
+    int moving = 0;     // the first `moving` sprites move
 };
 
 Scene makeScene(int count, int movingPercent, bool sheet, int spriteSize) {
@@ -155,7 +155,8 @@ std::vector<std::uint8_t> sheetImage() {
             const int f = x / kFrame;
             const float dx = static_cast<float>(x % kFrame) + 0.5f - kFrame * 0.5f;
             const float dy = static_cast<float>(y) + 0.5f - kFrame * 0.5f;
-            const bool inside = dx * dx + dy * dy <= (kFrame * 0.5f - 1.0f) * (kFrame * 0.5f - 1.0f);
+            const bool inside =
+                dx * dx + dy * dy <= (kFrame * 0.5f - 1.0f) * (kFrame * 0.5f - 1.0f);
             std::uint8_t* p = &rgba[static_cast<std::size_t>((y * w + x) * 4)];
             p[0] = static_cast<std::uint8_t>(255 - f * 30);
             p[1] = static_cast<std::uint8_t>(40 + f * 25);
@@ -167,7 +168,9 @@ std::vector<std::uint8_t> sheetImage() {
 }
 
 // UV rectangle of a sheet frame (fractions, top-left origin).
-Rect frameUv(int frame) { return Rect{{static_cast<float>(frame) / 8.0f, 0.0f}, {1.0f / 8.0f, 1.0f}}; }
+Rect frameUv(int frame) {
+    return Rect{{static_cast<float>(frame) / 8.0f, 0.0f}, {1.0f / 8.0f, 1.0f}};
+}
 
 double litFraction(const std::uint8_t* rgba, std::size_t pixels) {
     std::size_t lit = 0;
@@ -207,9 +210,13 @@ void buildCase(benchmark::State& state, int count, int movingPercent, bool pan) 
     int frameNumber = 0;
     std::int64_t emitted = 0;
     auto frame = [&] {
-        step(scene, frameNumber, [&](int i) {
-            batcher.setPosition(ids[static_cast<std::size_t>(i)], scene.sprites[static_cast<std::size_t>(i)].position);
-        }, [](int) {});
+        step(
+            scene, frameNumber,
+            [&](int i) {
+                batcher.setPosition(ids[static_cast<std::size_t>(i)],
+                                    scene.sprites[static_cast<std::size_t>(i)].position);
+            },
+            [](int) {});
         const float dx = pan && (frameNumber & 1) != 0 ? 1.0f : 0.0f;
         detail::CameraState camera{{dx, 0.0f}, 0.0f, 1.0f};
         detail::ViewBounds view{{-kWidth + dx, -kHeight * 1.0f}, {kWidth + dx, kHeight * 1.0f}};
@@ -235,7 +242,8 @@ void buildCase(benchmark::State& state, int count, int movingPercent, bool pan) 
     if (counts.drawn != count || batches.size() != kTextures) {
         state.SkipWithError("the batcher did not draw every sprite in one batch per texture");
     }
-    state.counters["emitted_frames"] = static_cast<double>(emitted) / static_cast<double>(state.iterations());
+    state.counters["emitted_frames"] =
+        static_cast<double>(emitted) / static_cast<double>(state.iterations());
     state.counters["batches"] = static_cast<double>(batches.size());
     state.SetItemsProcessed(state.iterations() * count);
 }
@@ -280,14 +288,17 @@ struct SdlTarget {
         if (window == nullptr) {
             return std::string("SDL_CreateWindow: ") + SDL_GetError();
         }
-        renderer = SDL_CreateRenderer(window, -1, SDL_RENDERER_ACCELERATED | SDL_RENDERER_TARGETTEXTURE);
+        renderer =
+            SDL_CreateRenderer(window, -1, SDL_RENDERER_ACCELERATED | SDL_RENDERER_TARGETTEXTURE);
         SDL_RendererInfo info{};
-        if (renderer == nullptr || SDL_GetRendererInfo(renderer, &info) != 0 || std::string(info.name) != "opengl") {
+        if (renderer == nullptr || SDL_GetRendererInfo(renderer, &info) != 0 ||
+            std::string(info.name) != "opengl") {
             return std::string("no SDL OpenGL renderer: ") + SDL_GetError();
         }
         context = SDL_GL_GetCurrentContext();
         // ABGR8888 is R, G, B, A in memory on little-endian machines: Image's byte order.
-        target = SDL_CreateTexture(renderer, SDL_PIXELFORMAT_ABGR8888, SDL_TEXTUREACCESS_TARGET, kWidth, kHeight);
+        target = SDL_CreateTexture(renderer, SDL_PIXELFORMAT_ABGR8888, SDL_TEXTUREACCESS_TARGET,
+                                   kWidth, kHeight);
         if (target == nullptr || SDL_SetRenderTarget(renderer, target) != 0) {
             return std::string("SDL render target: ") + SDL_GetError();
         }
@@ -361,10 +372,12 @@ void frameE2d(benchmark::State& state, Targets& targets, Scene scene, const Rend
     Renderer renderer(*targets.window, def);
     std::vector<TextureId> textures;
     if (scene.sheet) {
-        textures.push_back(renderer.createTexture(Image{kFrame * 8, kFrame, sheetImage()}, kSameFilter));
+        textures.push_back(
+            renderer.createTexture(Image{kFrame * 8, kFrame, sheetImage()}, kSameFilter));
     } else {
         for (int t = 0; t < kTextures; ++t) {
-            textures.push_back(renderer.createTexture(Image{16, 16, textureImage(t, 16)}, kSameFilter));
+            textures.push_back(
+                renderer.createTexture(Image{16, 16, textureImage(t, 16)}, kSameFilter));
         }
     }
     std::vector<SpriteId> ids;
@@ -384,9 +397,16 @@ void frameE2d(benchmark::State& state, Targets& targets, Scene scene, const Rend
     Camera camera(cd);
     int frameNumber = 0;
     auto frame = [&] {
-        step(scene, frameNumber,
-             [&](int i) { renderer.setPosition(ids[static_cast<std::size_t>(i)], scene.sprites[static_cast<std::size_t>(i)].position); },
-             [&](int i) { renderer.setUv(ids[static_cast<std::size_t>(i)], frameUv(scene.sprites[static_cast<std::size_t>(i)].frame)); });
+        step(
+            scene, frameNumber,
+            [&](int i) {
+                renderer.setPosition(ids[static_cast<std::size_t>(i)],
+                                     scene.sprites[static_cast<std::size_t>(i)].position);
+            },
+            [&](int i) {
+                renderer.setUv(ids[static_cast<std::size_t>(i)],
+                               frameUv(scene.sprites[static_cast<std::size_t>(i)].frame));
+            });
         renderer.render(camera);
         glFinish();
         ++frameNumber;
@@ -427,11 +447,13 @@ sf::IntRect sfmlFrameRect(const Scene& scene, int frame) {
 void finishSfml(benchmark::State& state, Targets& targets) {
     const sf::Image image = targets.sfml.getTexture().copyToImage();
     const sf::Vector2u size = image.getSize();
-    state.counters["lit"] = litFraction(image.getPixelsPtr(), static_cast<std::size_t>(size.x) * size.y);
+    state.counters["lit"] =
+        litFraction(image.getPixelsPtr(), static_cast<std::size_t>(size.x) * size.y);
     // copyToImage() gives rows from the top, as Image has them.
     const std::size_t bytes = static_cast<std::size_t>(size.x) * size.y * 4;
     targets.shot(state, Image{static_cast<int>(size.x), static_cast<int>(size.y),
-                              std::vector<std::uint8_t>(image.getPixelsPtr(), image.getPixelsPtr() + bytes)});
+                              std::vector<std::uint8_t>(image.getPixelsPtr(),
+                                                        image.getPixelsPtr() + bytes)});
     state.SetItemsProcessed(state.iterations());
 }
 
@@ -454,15 +476,16 @@ void frameSfmlSprites(benchmark::State& state, Targets& targets, Scene scene) {
     targets.sfml.setView(sfmlView());
     int frameNumber = 0;
     auto frame = [&] {
-        step(scene, frameNumber,
-             [&](int i) {
-                 const glm::vec2 p = scene.sprites[static_cast<std::size_t>(i)].position;
-                 sprites[static_cast<std::size_t>(i)].setPosition(p.x, p.y);
-             },
-             [&](int i) {
-                 sprites[static_cast<std::size_t>(i)].setTextureRect(
-                     sfmlFrameRect(scene, scene.sprites[static_cast<std::size_t>(i)].frame));
-             });
+        step(
+            scene, frameNumber,
+            [&](int i) {
+                const glm::vec2 p = scene.sprites[static_cast<std::size_t>(i)].position;
+                sprites[static_cast<std::size_t>(i)].setPosition(p.x, p.y);
+            },
+            [&](int i) {
+                sprites[static_cast<std::size_t>(i)].setTextureRect(
+                    sfmlFrameRect(scene, scene.sprites[static_cast<std::size_t>(i)].frame));
+            });
         targets.sfml.clear(sf::Color::Black);
         for (const sf::Sprite& sp : sprites) {
             targets.sfml.draw(sp);
@@ -514,8 +537,9 @@ void frameSfmlVertexArrays(benchmark::State& state, Targets& targets, Scene scen
     targets.sfml.setView(sfmlView());
     int frameNumber = 0;
     auto frame = [&] {
-        step(scene, frameNumber, [&](int i) { place(static_cast<std::size_t>(i)); },
-             [&](int i) { look(static_cast<std::size_t>(i)); });
+        step(
+            scene, frameNumber, [&](int i) { place(static_cast<std::size_t>(i)); },
+            [&](int i) { look(static_cast<std::size_t>(i)); });
         targets.sfml.clear(sf::Color::Black);
         for (std::size_t t = 0; t < arrays.size(); ++t) {
             targets.sfml.draw(arrays[t], sf::RenderStates(&textures[t]));
@@ -535,7 +559,8 @@ std::vector<SDL_Texture*> sdlTextures(SDL_Renderer* renderer, const Scene& scene
     for (int t = 0; t < count; ++t) {
         const int w = scene.sheet ? kFrame * 8 : 16;
         const int h = scene.sheet ? kFrame : 16;
-        SDL_Texture* texture = SDL_CreateTexture(renderer, SDL_PIXELFORMAT_ABGR8888, SDL_TEXTUREACCESS_STATIC, w, h);
+        SDL_Texture* texture =
+            SDL_CreateTexture(renderer, SDL_PIXELFORMAT_ABGR8888, SDL_TEXTUREACCESS_STATIC, w, h);
         const std::vector<std::uint8_t> rgba = scene.sheet ? sheetImage() : textureImage(t, 16);
         SDL_UpdateTexture(texture, nullptr, rgba.data(), w * 4);
         SDL_SetTextureScaleMode(texture, SDL_ScaleModeNearest);
@@ -550,8 +575,10 @@ SDL_FPoint sdlPoint(glm::vec2 p) { return {p.x + kWidth * 0.5f, kHeight * 0.5f -
 
 // Reads the target back (rows from the top), frees the textures, reports `lit`.
 void finishSdl(benchmark::State& state, Targets& targets, std::vector<SDL_Texture*>& textures) {
-    Image image{kWidth, kHeight, std::vector<std::uint8_t>(static_cast<std::size_t>(kWidth * kHeight * 4))};
-    if (SDL_RenderReadPixels(targets.sdl.renderer, nullptr, SDL_PIXELFORMAT_ABGR8888, image.pixels.data(), kWidth * 4) != 0) {
+    Image image{kWidth, kHeight,
+                std::vector<std::uint8_t>(static_cast<std::size_t>(kWidth * kHeight * 4))};
+    if (SDL_RenderReadPixels(targets.sdl.renderer, nullptr, SDL_PIXELFORMAT_ABGR8888,
+                             image.pixels.data(), kWidth * 4) != 0) {
         state.SkipWithError("SDL_RenderReadPixels failed");
     }
     state.counters["lit"] = litFraction(image.pixels.data(), image.pixels.size() / 4);
@@ -572,7 +599,8 @@ void frameSdlCopy(benchmark::State& state, Targets& targets, Scene scene) {
     const int source = scene.sheet ? kFrame : 16;
     int frameNumber = 0;
     auto frame = [&] {
-        step(scene, frameNumber, [](int) {}, [](int) {});
+        step(
+            scene, frameNumber, [](int) {}, [](int) {});
         SDL_SetRenderDrawColor(renderer, 0, 0, 0, 255);
         SDL_RenderClear(renderer);
         for (const SceneSprite& s : scene.sprites) {
@@ -631,13 +659,15 @@ void frameSdlGeometry(benchmark::State& state, Targets& targets, Scene scene) {
     }
     int frameNumber = 0;
     auto frame = [&] {
-        step(scene, frameNumber, [&](int i) { place(static_cast<std::size_t>(i)); },
-             [&](int i) { look(static_cast<std::size_t>(i)); });
+        step(
+            scene, frameNumber, [&](int i) { place(static_cast<std::size_t>(i)); },
+            [&](int i) { look(static_cast<std::size_t>(i)); });
         SDL_SetRenderDrawColor(renderer, 0, 0, 0, 255);
         SDL_RenderClear(renderer);
         for (std::size_t t = 0; t < textures.size(); ++t) {
-            SDL_RenderGeometry(renderer, textures[t], vertices[t].data(), static_cast<int>(vertices[t].size()),
-                               indices[t].data(), static_cast<int>(indices[t].size()));
+            SDL_RenderGeometry(renderer, textures[t], vertices[t].data(),
+                               static_cast<int>(vertices[t].size()), indices[t].data(),
+                               static_cast<int>(indices[t].size()));
         }
         SDL_RenderFlush(renderer);
         glFinish();
@@ -702,14 +732,16 @@ void main() { colour = texture(image, uv); })";
         glBindTexture(GL_TEXTURE_2D, textures[t]);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        const std::vector<std::uint8_t> rgba = scene.sheet ? sheetImage() : textureImage(static_cast<int>(t), 16);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, scene.sheet ? kFrame * 8 : 16, scene.sheet ? kFrame : 16, 0, GL_RGBA,
-                     GL_UNSIGNED_BYTE, rgba.data());
+        const std::vector<std::uint8_t> rgba =
+            scene.sheet ? sheetImage() : textureImage(static_cast<int>(t), 16);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, scene.sheet ? kFrame * 8 : 16,
+                     scene.sheet ? kFrame : 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     }
     const float half = static_cast<float>(scene.spriteSize) * 0.5f;
     int frameNumber = 0;
     auto frame = [&] {
-        step(scene, frameNumber, [](int) {}, [](int) {});
+        step(
+            scene, frameNumber, [](int) {}, [](int) {});
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
         glViewport(0, 0, kWidth, kHeight);
         glDisable(GL_DEPTH_TEST);
@@ -806,7 +838,8 @@ void textE2d(benchmark::State& state, Targets& targets) {
     int frameNumber = 0;
     std::size_t glyphs = 0;
     auto frame = [&] {
-        const TextLayout layout = text.draw(*font, strings[static_cast<std::size_t>(frameNumber & 1)], style, where);
+        const TextLayout layout =
+            text.draw(*font, strings[static_cast<std::size_t>(frameNumber & 1)], style, where);
         glyphs = layout.quads.size();
         renderer.render(camera);
         glFinish();
@@ -853,7 +886,8 @@ void textSfml(benchmark::State& state, Targets& targets) {
 // Prints as the console reporter does and hands every run to `forward` as well.
 class GroupReporter : public benchmark::ConsoleReporter {
 public:
-    explicit GroupReporter(std::function<void(const std::vector<Run>&)> forward) : forward_(std::move(forward)) {}
+    explicit GroupReporter(std::function<void(const std::vector<Run>&)> forward)
+        : forward_(std::move(forward)) {}
     void ReportRuns(const std::vector<Run>& reports) override {
         ConsoleReporter::ReportRuns(reports);
         for (const Run& run : reports) {
@@ -880,8 +914,9 @@ public:
             for (const auto& [engine, value] : byEngine) {
                 const double reference = byEngine.begin()->second;
                 if (std::abs(value - reference) > 0.01) {
-                    std::fprintf(stderr, "batching: %s: %s covers %.4f of the target, %s %.4f\n", name.c_str(),
-                                 engine.c_str(), value, byEngine.begin()->first.c_str(), reference);
+                    std::fprintf(stderr, "batching: %s: %s covers %.4f of the target, %s %.4f\n",
+                                 name.c_str(), engine.c_str(), value,
+                                 byEngine.begin()->first.c_str(), reference);
                     ok = false;
                 }
             }
@@ -928,10 +963,11 @@ int main(int argc, char** argv) {
 
     // Every case is registered; --benchmark_filter picks among them as usual.
     auto add = [&](const std::string& name, auto&& function) -> benchmark::internal::Benchmark* {
-        return benchmark::RegisterBenchmark(name.c_str(), [&targets, name, function](benchmark::State& state) {
-            targets.running = name;
-            function(state);
-        });
+        return benchmark::RegisterBenchmark(name.c_str(),
+                                            [&targets, name, function](benchmark::State& state) {
+                                                targets.running = name;
+                                                function(state);
+                                            });
     };
     auto unit = [](benchmark::internal::Benchmark* b, benchmark::TimeUnit u, bool realTime) {
         if (b != nullptr) {
@@ -954,7 +990,9 @@ int main(int argc, char** argv) {
             const int moving = m.moving;
             const bool pan = m.pan;
             unit(add("build/" + std::to_string(count) + "/" + m.name + "/e2d",
-                     [count, moving, pan](benchmark::State& s) { buildCase(s, count, moving, pan); }),
+                     [count, moving, pan](benchmark::State& s) {
+                         buildCase(s, count, moving, pan);
+                     }),
                  benchmark::kMicrosecond, false);
         }
     }
@@ -981,7 +1019,8 @@ int main(int argc, char** argv) {
             const char* name;
             const Scene* scene;
         };
-        const std::array<Frame, 2> frames{Frame{"frame/demo_12k_animated", &demo}, Frame{"frame/100k_8_textures", &many}};
+        const std::array<Frame, 2> frames{Frame{"frame/demo_12k_animated", &demo},
+                                          Frame{"frame/100k_8_textures", &many}};
         // Everything in the GLFW context first, then everything in SFML's: SFML keeps its own
         // idea of the current context and does not recover well from many switches.
         for (const Frame& f : frames) {
@@ -991,10 +1030,13 @@ int main(int argc, char** argv) {
                 RendererDef def;
                 def.forceGl33 = gl33;
                 unit(add(base + (gl33 ? "/e2d_gl33" : "/e2d"),
-                         [&targets, &scene, def](benchmark::State& s) { frameE2d(s, targets, scene, def); }),
+                         [&targets, &scene, def](benchmark::State& s) {
+                             frameE2d(s, targets, scene, def);
+                         }),
                      benchmark::kMillisecond, true);
             }
-            unit(add(base + "/naive", [&targets, &scene](benchmark::State& s) { frameNaive(s, targets, scene); }),
+            unit(add(base + "/naive",
+                     [&targets, &scene](benchmark::State& s) { frameNaive(s, targets, scene); }),
                  benchmark::kMillisecond, true);
         }
         unit(add("text/1000_glyphs/e2d", [&targets](benchmark::State& s) { textE2d(s, targets); }),
@@ -1003,12 +1045,18 @@ int main(int argc, char** argv) {
             const std::string base = f.name;
             const Scene& scene = *f.scene;
             unit(add(base + "/sfml_vertexarray",
-                     [&targets, &scene](benchmark::State& s) { frameSfmlVertexArrays(s, targets, scene); }),
+                     [&targets, &scene](benchmark::State& s) {
+                         frameSfmlVertexArrays(s, targets, scene);
+                     }),
                  benchmark::kMillisecond, true);
-            unit(add(base + "/sfml_sprite", [&targets, &scene](benchmark::State& s) { frameSfmlSprites(s, targets, scene); }),
+            unit(add(base + "/sfml_sprite",
+                     [&targets, &scene](benchmark::State& s) {
+                         frameSfmlSprites(s, targets, scene);
+                     }),
                  benchmark::kMillisecond, true);
         }
-        unit(add("text/1000_glyphs/sfml_text", [&targets](benchmark::State& s) { textSfml(s, targets); }),
+        unit(add("text/1000_glyphs/sfml_text",
+                 [&targets](benchmark::State& s) { textSfml(s, targets); }),
              benchmark::kMicrosecond, true);
         // SDL's context last, after SFML's.
         if (sdl) {
@@ -1016,16 +1064,23 @@ int main(int argc, char** argv) {
                 const std::string base = f.name;
                 const Scene& scene = *f.scene;
                 unit(add(base + "/sdl_geometry",
-                         [&targets, &scene](benchmark::State& s) { frameSdlGeometry(s, targets, scene); }),
+                         [&targets, &scene](benchmark::State& s) {
+                             frameSdlGeometry(s, targets, scene);
+                         }),
                      benchmark::kMillisecond, true);
-                unit(add(base + "/sdl_copy", [&targets, &scene](benchmark::State& s) { frameSdlCopy(s, targets, scene); }),
+                unit(add(base + "/sdl_copy",
+                         [&targets, &scene](benchmark::State& s) {
+                             frameSdlCopy(s, targets, scene);
+                         }),
                      benchmark::kMillisecond, true);
             }
         } else {
-            std::fprintf(stderr, "batching: no SDL2 OpenGL renderer (%s): SDL cases skipped\n", sdlError.c_str());
+            std::fprintf(stderr, "batching: no SDL2 OpenGL renderer (%s): SDL cases skipped\n",
+                         sdlError.c_str());
         }
     } else {
-        std::fprintf(stderr, "batching: no OpenGL (%s): frame and text cases skipped\n", targets.error.c_str());
+        std::fprintf(stderr, "batching: no OpenGL (%s): frame and text cases skipped\n",
+                     targets.error.c_str());
     }
 
     // One run, in registration order (all GLFW-context cases, then all SFML ones); each group
@@ -1039,8 +1094,12 @@ int main(int argc, char** argv) {
     };
     const std::vector<Group> groups{
         {"build/", "CPU: per-frame instance data", "ns per sprite", 1.0, {"e2d"}},
-        {"frame/", "Whole frames, 1024 x 720, llvmpipe", "ms per frame", 1e6,
-         {"e2d", "e2d_gl33", "sfml_vertexarray", "sfml_sprite", "sdl_geometry", "sdl_copy", "naive"}},
+        {"frame/",
+         "Whole frames, 1024 x 720, llvmpipe",
+         "ms per frame",
+         1e6,
+         {"e2d", "e2d_gl33", "sfml_vertexarray", "sfml_sprite", "sdl_geometry", "sdl_copy",
+          "naive"}},
         {"text/", "Text laid out, batched and drawn", "ns per glyph", 1.0, {"e2d", "sfml_text"}},
     };
     std::ostringstream quiet;

@@ -17,9 +17,9 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <random>
-#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -135,7 +135,8 @@ std::vector<Case> makeCases() {
         }
         for (int i = 0; i < kPairsPerCase; ++i) {
             c.pairs.push_back(makePair(i % 32, (i * 7 + 3) % 32, {0.0f, 0.0f}, rng(-3.14f, 3.14f),
-                                       {rng(-0.25f, 0.25f), rng(-0.25f, 0.25f)}, rng(-3.14f, 3.14f)));
+                                       {rng(-0.25f, 0.25f), rng(-0.25f, 0.25f)},
+                                       rng(-3.14f, 3.14f)));
         }
         cases.push_back(std::move(c));
     }
@@ -257,7 +258,8 @@ bool checkAgreement() {
             const int gjk = collideOnce(c, c.pairs[i], Engine::GjkEpa);
             const bool expected = c.expectContact;
             if ((box2d > 0) != expected || (sat > 0) != expected || (gjk > 0) != expected) {
-                std::fprintf(stderr, "%s pair %zu: contact points box2d=%d sat=%d gjk=%d, expected %s\n",
+                std::fprintf(stderr,
+                             "%s pair %zu: contact points box2d=%d sat=%d gjk=%d, expected %s\n",
                              c.name.c_str(), i, box2d, sat, gjk, expected ? "contact" : "none");
                 ok = false;
             }
@@ -368,10 +370,11 @@ void broadPhaseE2d(benchmark::State& state) {
         for (int i = 0; i < kBoxCount; ++i) {
             const float cx = mo.x[base + static_cast<std::size_t>(i)];
             const float cy = mo.y[base + static_cast<std::size_t>(i)];
-            reinserted += bp.moveProxy(keys[static_cast<std::size_t>(i)],
-                                       {{cx - kBoxHalf, cy - kBoxHalf}, {cx + kBoxHalf, cy + kBoxHalf}})
-                              ? 1
-                              : 0;
+            reinserted +=
+                bp.moveProxy(keys[static_cast<std::size_t>(i)],
+                             {{cx - kBoxHalf, cy - kBoxHalf}, {cx + kBoxHalf, cy + kBoxHalf}})
+                    ? 1
+                    : 0;
         }
         bp.prunePairs();
         bp.updatePairs(accept);

@@ -21,7 +21,8 @@ void setupActions(ActionMap& actions) {
         const ActionId id = actions.add("action_" + std::to_string(i));
         // Key's values are GLFW's: A..Z, 0..9 and F1..F25 are consecutive.
         actions.bind(id, Binding::key(Key(static_cast<int>(Key::A) + i % 26)));
-        actions.bind(id, Binding::keyAxis(Key(static_cast<int>(Key::Num0) + i % 10), Key(static_cast<int>(Key::F1) + i % 12)));
+        actions.bind(id, Binding::keyAxis(Key(static_cast<int>(Key::Num0) + i % 10),
+                                          Key(static_cast<int>(Key::F1) + i % 12)));
         actions.bind(id, Binding::gamepadButton(GamepadButton(i % kGamepadButtonCount)));
         actions.bind(id, Binding::gamepadAxis(GamepadAxis(i % kGamepadAxisCount), i % 2 == 1));
     }
@@ -46,7 +47,8 @@ void feedPads(Input& input, int frame) {
         s.guid = "030000005e0400008e02000010010000";
         s.name = "Bench Pad";
         const float t = static_cast<float>(frame) * 0.1f + static_cast<float>(slot);
-        s.axes = {std::sin(t), std::cos(t), std::sin(2.0f * t), std::cos(2.0f * t), std::sin(t), std::cos(t)};
+        s.axes = {std::sin(t),        std::cos(t), std::sin(2.0f * t),
+                  std::cos(2.0f * t), std::sin(t), std::cos(t)};
         s.buttons[static_cast<std::size_t>((frame + slot) % 15)] = GLFW_PRESS;
         input.handleJoystick(slot, s);
     }

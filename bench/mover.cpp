@@ -35,11 +35,12 @@ struct Block {
 };
 
 std::vector<Block> blocks() {
-    std::vector<Block> out{{{0.0f, -0.5f}, {50.0f, 0.5f}},   // floor, top at y = 0
-                           {{-10.0f, 2.0f}, {0.5f, 2.0f}},   // wall, face at x = -9.5
-                           {{-20.0f, 3.0f}, {3.0f, 0.5f}}};  // ceiling block, underside y = 2.5
+    std::vector<Block> out{{{0.0f, -0.5f}, {50.0f, 0.5f}},  // floor, top at y = 0
+                           {{-10.0f, 2.0f}, {0.5f, 2.0f}},  // wall, face at x = -9.5
+                           {{-20.0f, 3.0f}, {3.0f, 0.5f}}}; // ceiling block, underside y = 2.5
     for (int i = 0; i < 300; ++i) {
-        out.push_back({{-30.0f + 2.0f * static_cast<float>(i % 30), 20.0f + 2.0f * static_cast<float>(i / 30)},
+        out.push_back({{-30.0f + 2.0f * static_cast<float>(i % 30),
+                        20.0f + 2.0f * static_cast<float>(i / 30)},
                        {0.5f, 0.5f}});
     }
     return out;
@@ -58,9 +59,10 @@ struct Case {
     ph::Vec2 start;
     ph::Vec2 displacement;
 };
-const std::array<Case, 3> kCases{Case{"flat", {0.0f, kRest}, {kStep, -0.01f}},
-                                 Case{"slope", {14.0f, 4.0f * 0.57735f + 0.5f + 0.358f}, {kStep, -0.01f}},
-                                 Case{"corner", {-9.5f - 0.31f, kRest}, {-kStep, -0.01f}}};
+const std::array<Case, 3> kCases{
+    Case{"flat", {0.0f, kRest}, {kStep, -0.01f}},
+    Case{"slope", {14.0f, 4.0f * 0.57735f + 0.5f + 0.358f}, {kStep, -0.01f}},
+    Case{"corner", {-9.5f - 0.31f, kRest}, {-kStep, -0.01f}}};
 
 ph::World makeE2dWorld() {
     ph::World world;
@@ -148,6 +150,6 @@ int main(int argc, char** argv) {
         benchmark::RegisterBenchmark((name + "/e2d_rays").c_str(), raysE2d)->Arg(arg);
         benchmark::RegisterBenchmark((name + "/e2d_mover").c_str(), moverE2d)->Arg(arg);
     }
-    return e2d::bench::runWithRatios(argc, argv, "box2d_rays", {"box2d_rays", "e2d_rays", "e2d_mover"},
-                                     "ns per character");
+    return e2d::bench::runWithRatios(argc, argv, "box2d_rays",
+                                     {"box2d_rays", "e2d_rays", "e2d_mover"}, "ns per character");
 }

@@ -54,12 +54,8 @@ void fixedStep(benchmark::State& state) {
     state.counters["objects"] = kObjects;
 }
 
-void BM_FixedStep_NoFixedUpdate(benchmark::State& state) {
-    fixedStep<Quiet>(state);
-}
-void BM_FixedStep_EveryObjectHasFixedUpdate(benchmark::State& state) {
-    fixedStep<Busy>(state);
-}
+void BM_FixedStep_NoFixedUpdate(benchmark::State& state) { fixedStep<Quiet>(state); }
+void BM_FixedStep_EveryObjectHasFixedUpdate(benchmark::State& state) { fixedStep<Busy>(state); }
 
 // The peer: the broadcast the scene used to do, every component of every active object.
 void BM_FixedStep_NoFixedUpdate_CallingEveryComponent(benchmark::State& state) {

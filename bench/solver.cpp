@@ -62,8 +62,9 @@ bool takeIntFlag(int& argc, char** argv, const char* name, int& value) {
             const char* end = text + std::strlen(text);
             auto [last, error] = std::from_chars(text, end, value);
             if (error != std::errc{} || last != end || value < 0 || text == end) {
-                std::fprintf(stderr, "e2d_bench_solver: --%s must be a whole number >= 0, got '%s'\n",
-                             name, text);
+                std::fprintf(stderr,
+                             "e2d_bench_solver: --%s must be a whole number >= 0, got '%s'\n", name,
+                             text);
                 std::exit(2);
             }
             found = true;
@@ -143,7 +144,9 @@ void stepE2dWith(benchmark::State& state, const Case* c, int workers) {
         scene.step();
     }
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-    const double perStep = elapsed.count() / static_cast<double>(std::max<benchmark::IterationCount>(state.iterations(), 1));
+    const double perStep =
+        elapsed.count() /
+        static_cast<double>(std::max<benchmark::IterationCount>(state.iterations(), 1));
     // The fastest run of each row (with --benchmark_repetitions=N, the best of N): on a shared
     // machine the other rows' load comes and goes, and the best run is the one it hurt least.
     auto [best, first] = w.e2dSeconds[c->name].try_emplace(workers, perStep);
@@ -169,7 +172,8 @@ void stepE2dThreaded(benchmark::State& state, const Case* c) {
 std::string threadsTable() {
     std::string out = "\nThreads: e2d with " + std::to_string(kThreadedWorkers) +
                       " workers against one, same run (ms per step):\n\n"
-                      "| scene | 1 worker | " + std::to_string(kThreadedWorkers) +
+                      "| scene | 1 worker | " +
+                      std::to_string(kThreadedWorkers) +
                       " workers | speed-up |\n|---|---:|---:|---:|\n";
     for (const auto& [name, byWorkers] : worlds().e2dSeconds) {
         const auto one = byWorkers.find(1);
@@ -262,7 +266,8 @@ std::string standingReport(int steps, bool& e2dStands) {
     const sc::SceneDesc desc = sc::pyramid(100);
     const Standing e2d = standE2d(desc, steps);
     const Standing box2d = standBox2D(desc, steps);
-    e2dStands = e2d.finite && (steps < kStandCheckSteps || (e2d.drift < kMaxDrift && e2d.sag < kMaxSag));
+    e2dStands =
+        e2d.finite && (steps < kStandCheckSteps || (e2d.drift < kMaxDrift && e2d.sag < kMaxSag));
     char buf[512];
     std::snprintf(buf, sizeof buf,
                   "\nLarge pyramid (base 100) after %d steps (%.1f s), top box, metres:\n\n"
@@ -292,18 +297,19 @@ int main(int argc, char** argv) {
         benchmark::RegisterBenchmark(("step/" + c.name + "/e2d").c_str(), stepE2d, &c)
             ->Unit(benchmark::kMillisecond);
         if (c.threads) {
-            benchmark::RegisterBenchmark(("step/" + c.name + "/e2d_2w").c_str(), stepE2dThreaded, &c)
+            benchmark::RegisterBenchmark(("step/" + c.name + "/e2d_2w").c_str(), stepE2dThreaded,
+                                         &c)
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime(); // the CPU time of the calling thread alone says nothing here
         }
     }
     e2d::bench::registerJointBenchmarks(options.settleSteps);
-    const int status =
-        e2d::bench::runWithRatios(argc, argv, "box2d", {"e2d", "e2d_2w", "box2d"}, "ms per step",
-                                  1e6, appendix);
+    const int status = e2d::bench::runWithRatios(argc, argv, "box2d", {"e2d", "e2d_2w", "box2d"},
+                                                 "ms per step", 1e6, appendix);
     std::printf("%s", threadsTable().c_str());
     if (status == 0 && !e2dStands) {
-        std::fprintf(stderr, "e2d's large pyramid did not stand: drift >= %.2f m or sag >= %.2f m\n",
+        std::fprintf(stderr,
+                     "e2d's large pyramid did not stand: drift >= %.2f m or sag >= %.2f m\n",
                      static_cast<double>(kMaxDrift), static_cast<double>(kMaxSag));
         return 1;
     }

@@ -55,8 +55,9 @@ protected:
             render::CameraComponentDef{.referenceSize = {kWidth, kHeight}});
         camera_->addComponent<audio::AudioListener>();
 
-        sources_[0] = {addSource(glm::vec2{-230.0f, 100.0f}, game.asset("assets/beeps.wav").string()),
-                       kBlue, "blue"};
+        sources_[0] = {
+            addSource(glm::vec2{-230.0f, 100.0f}, game.asset("assets/beeps.wav").string()), kBlue,
+            "blue"};
         sources_[1] = {addSource(glm::vec2{250.0f, -90.0f}, game.asset("assets/tune.ogg").string()),
                        kOrange, "orange"};
 
@@ -69,8 +70,8 @@ protected:
     void update(double dt) override {
         auto& game = system<engine::GameSystem>();
         const input::ActionMap& actions = game.actions();
-        camera_->translate(glm::vec2{actions.value("move_x"), actions.value("move_y")} * kListenerSpeed *
-                           static_cast<float>(dt));
+        camera_->translate(glm::vec2{actions.value("move_x"), actions.value("move_y")} *
+                           kListenerSpeed * static_cast<float>(dt));
 
         const audio::SpatialDef& spatial = game.mixer().spatial();
         const glm::vec2 listener{camera_->position()};
@@ -80,8 +81,10 @@ protected:
         for (float side : {-1.0f, 1.0f}) {
             const float minX = listener.x + side * spatial.minPanningDistance;
             const float maxX = listener.x + side * spatial.maxPanningDistance;
-            draw.line({minX, listener.y - kHeight / 2}, {minX, listener.y + kHeight / 2 - 90}, kYellow, 2.0f);
-            draw.line({maxX, listener.y - kHeight / 2}, {maxX, listener.y + kHeight / 2 - 90}, kOrange * 0.8f, 2.0f);
+            draw.line({minX, listener.y - kHeight / 2}, {minX, listener.y + kHeight / 2 - 90},
+                      kYellow, 2.0f);
+            draw.line({maxX, listener.y - kHeight / 2}, {maxX, listener.y + kHeight / 2 - 90},
+                      kOrange * 0.8f, 2.0f);
         }
         draw.circle(listener, 8.0f, kGrey, 2.0f);
 
@@ -89,14 +92,16 @@ protected:
         for (const Source& s : sources_) {
             const glm::vec2 at{s.object->position()};
             if (glm::distance(at, listener) > kSourceRadius) {
-            draw.line(listener, at - kSourceRadius * glm::normalize(at - listener), kGrey, 1.0f);
-        }
+                draw.line(listener, at - kSourceRadius * glm::normalize(at - listener), kGrey,
+                          1.0f);
+            }
             draw.fillCircle(at, kSourceRadius, s.colour);
             const float gain = audio::attenuationGain(spatial, glm::distance(at, listener), 1.0f);
             const audio::StereoGains pan = audio::panGains(spatial, at.x - listener.x);
             const audio::VoiceId voice = s.object->getComponent<audio::AudioSource>()->voice();
             char line[128];
-            std::snprintf(line, sizeof line, "\n%s source: left %.2f, right %.2f (mixer: heard at %.2f)", s.name,
+            std::snprintf(line, sizeof line,
+                          "\n%s source: left %.2f, right %.2f (mixer: heard at %.2f)", s.name,
                           gain * pan.left, gain * pan.right, game.mixer().effectiveGain(voice));
             text += line;
         }

@@ -51,8 +51,9 @@ void drawDistances(render::Drawer& draw, const audio::SpatialDef& spatial, glm::
     draw.circle(listener, 8.0f, kGrey, 2.0f);
 }
 
-class AudioSpatialScene : public core::Scene,
-                          public core::Handles<input::MouseButtonDown, input::MouseButtonUp, input::MouseMoved> {
+class AudioSpatialScene
+    : public core::Scene,
+      public core::Handles<input::MouseButtonDown, input::MouseButtonUp, input::MouseMoved> {
 protected:
     void onInitialize() override {
         auto& game = system<engine::GameSystem>();
@@ -76,16 +77,19 @@ protected:
 
     void on(const input::MouseButtonDown& click) override {
         const glm::vec2 at{source_->position()};
-        if (click.button == input::MouseButton::Left && glm::distance(click.world, at) <= kSourceRadius * 1.5f) {
+        if (click.button == input::MouseButton::Left &&
+            glm::distance(click.world, at) <= kSourceRadius * 1.5f) {
             dragging_ = true;
             grab_ = at - click.world;
         }
     }
     void on(const input::MouseButtonUp& release) override {
-        if (release.button == input::MouseButton::Left) dragging_ = false;
+        if (release.button == input::MouseButton::Left)
+            dragging_ = false;
     }
     void on(const input::MouseMoved& mouse) override {
-        if (dragging_) source_->setPosition(mouse.world + grab_);
+        if (dragging_)
+            source_->setPosition(mouse.world + grab_);
     }
 
     void update(double dt) override {

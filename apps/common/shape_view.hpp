@@ -14,7 +14,6 @@
 #include <e2d/render/drawer.hpp>
 #include <e2d/render/renderer.hpp>
 
-
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -40,7 +39,9 @@ public:
         const float c = std::cos(angle);
         const float s = std::sin(angle);
         // Collider geometry is in the object's frame, in world units.
-        auto toWorld = [&](glm::vec2 p) { return origin + glm::vec2{c * p.x - s * p.y, s * p.x + c * p.y}; };
+        auto toWorld = [&](glm::vec2 p) {
+            return origin + glm::vec2{c * p.x - s * p.y, s * p.x + c * p.y};
+        };
 
         for (const physics::Collider* collider : gameObject()->getComponents<physics::Collider>()) {
             const physics::ShapeGeometry& g = collider->geometry();
@@ -49,7 +50,8 @@ public:
                 draw.fillCircle(centre, circle->radius, fill_);
                 draw.circle(centre, circle->radius, outline_, 1.5f);
                 // A spoke, so rolling shows.
-                draw.line(centre, toWorld(circle->center + glm::vec2{circle->radius, 0.0f}), outline_, 1.5f);
+                draw.line(centre, toWorld(circle->center + glm::vec2{circle->radius, 0.0f}),
+                          outline_, 1.5f);
             } else if (const auto* polygon = std::get_if<physics::Polygon>(&g)) {
                 points_.clear();
                 for (int i = 0; i < polygon->count; ++i) {
@@ -85,11 +87,13 @@ private:
 inline physics::Polygon regularPolygon(int sides, float radius) {
     std::array<physics::Vec2, 8> points{};
     for (int i = 0; i < sides; ++i) {
-        const float a = 2.0f * std::numbers::pi_v<float> * static_cast<float>(i) / static_cast<float>(sides) +
-                        std::numbers::pi_v<float> / 2.0f;
+        const float a =
+            2.0f * std::numbers::pi_v<float> * static_cast<float>(i) / static_cast<float>(sides) +
+            std::numbers::pi_v<float> / 2.0f;
         points[static_cast<std::size_t>(i)] = {radius * std::cos(a), radius * std::sin(a)};
     }
-    return physics::makePolygon(std::span<const physics::Vec2>(points.data(), static_cast<std::size_t>(sides)));
+    return physics::makePolygon(
+        std::span<const physics::Vec2>(points.data(), static_cast<std::size_t>(sides)));
 }
 
 } // namespace e2d::apps

@@ -22,12 +22,12 @@ namespace {
 constexpr float kWidth = 1024.0f;
 constexpr float kHeight = 720.0f;
 constexpr float kCameraSpeed = 120.0f; // world units per second, along x
-constexpr float kMarkerY = -310.0f; // world y of the layer markers (the view spans -360..360)
+constexpr float kMarkerY = -310.0f;    // world y of the layer markers (the view spans -360..360)
 
 struct Layer {
-    float parallax;     // how much of the camera's movement the layer follows
-    float z;            // draw order: larger is nearer
-    float minSize;      // circle diameters, world units
+    float parallax; // how much of the camera's movement the layer follows
+    float z;        // draw order: larger is nearer
+    float minSize;  // circle diameters, world units
     float maxSize;
     render::Color tint; // colour and transparency
     int count;
@@ -49,7 +49,8 @@ public:
         const input::ActionMap& actions = scene()->system<engine::GameSystem>().actions();
         const glm::vec2 push{actions.value("camera_x"), actions.value("camera_y")};
         const float speed = kCameraSpeed;
-        gameObject()->translate((glm::vec2{1.0f, 0.0f} + 3.0f * push) * speed * static_cast<float>(dt));
+        gameObject()->translate((glm::vec2{1.0f, 0.0f} + 3.0f * push) * speed *
+                                static_cast<float>(dt));
     }
 };
 
@@ -80,7 +81,8 @@ protected:
                 const float size = random.range(layer.minSize, layer.maxSize);
                 auto& object = createGameObject();
                 object.setPosition(glm::vec3{random.range(-kWidth, 4 * kWidth),
-                                             random.range(-280.0f + size / 2, kHeight / 2), layer.z});
+                                             random.range(-280.0f + size / 2, kHeight / 2),
+                                             layer.z});
                 object.addComponent<render::SpriteRenderer>(circleOf(layer, size));
             }
         }

@@ -64,14 +64,16 @@ protected:
         addStatic({8.53f, 2.5f}, kSlope, 3.6f, 0.2f, kMaterials[2], kMaterials[2].colour * 0.7f);
 
         for (int i = 0; i < 3; ++i) {
-            addBody({-10.5f + 2.2f * static_cast<float>(i), 5.0f + 3.0f * static_cast<float>(i)}, kMaterials[0]);
+            addBody({-10.5f + 2.2f * static_cast<float>(i), 5.0f + 3.0f * static_cast<float>(i)},
+                    kMaterials[0]);
         }
         // Blocks resting on each slope: along it from its centre, lifted by the slope's and
         // the block's half thickness along its normal.
         const glm::vec2 along{std::cos(kSlope), std::sin(kSlope)};
         const glm::vec2 normal{-along.y, along.x};
         for (int i = 0; i < 3; ++i) {
-            const glm::vec2 offset = (-2.2f + 1.6f * static_cast<float>(i)) * along + 0.72f * normal;
+            const glm::vec2 offset =
+                (-2.2f + 1.6f * static_cast<float>(i)) * along + 0.72f * normal;
             addBody(glm::vec2{0.0f, 2.5f} + offset, kMaterials[1], kSlope);
             addBody(glm::vec2{8.53f, 2.5f} + offset, kMaterials[2], kSlope);
         }
@@ -99,12 +101,17 @@ protected:
         static_cast<void>(dt);
         auto& game = system<engine::GameSystem>();
         const input::ActionMap& actions = game.actions();
-        if (actions.pressed("bouncy")) selected_ = 0;
-        if (actions.pressed("icy")) selected_ = 1;
-        if (actions.pressed("rough")) selected_ = 2;
-        if (actions.pressed("debug")) game.setDebugDraw(!game.debugDraw());
+        if (actions.pressed("bouncy"))
+            selected_ = 0;
+        if (actions.pressed("icy"))
+            selected_ = 1;
+        if (actions.pressed("rough"))
+            selected_ = 2;
+        if (actions.pressed("debug"))
+            game.setDebugDraw(!game.debugDraw());
         // After the material keys, so a key and a click in one frame apply in that order.
-        if (actions.pressed("drop")) addBody(mouse_, kMaterials[selected_]);
+        if (actions.pressed("drop"))
+            addBody(mouse_, kMaterials[selected_]);
 
         char text[160];
         std::snprintf(text, sizeof text,

@@ -84,13 +84,19 @@ protected:
     void update(double dt) override {
         auto& game = system<engine::GameSystem>();
         const input::ActionMap& actions = game.actions();
-        if (actions.pressed("more_sides") && sides_ < 8) ++sides_;
-        if (actions.pressed("fewer_sides") && sides_ > 3) --sides_;
-        if (actions.pressed("mass")) mass_ = (mass_ + 1) % 3;
+        if (actions.pressed("more_sides") && sides_ < 8)
+            ++sides_;
+        if (actions.pressed("fewer_sides") && sides_ > 3)
+            --sides_;
+        if (actions.pressed("mass"))
+            mass_ = (mass_ + 1) % 3;
         // After the choices above, so a key and a click in one frame apply in that order.
-        if (actions.pressed("create")) addPolygon(aim_, sides_, 0.6f, kMasses[mass_], 0.0f);
-        if (actions.pressed("fire")) fire();
-        if (actions.pressed("push")) push();
+        if (actions.pressed("create"))
+            addPolygon(aim_, sides_, 0.6f, kMasses[mass_], 0.0f);
+        if (actions.pressed("fire"))
+            fire();
+        if (actions.pressed("push"))
+            push();
 
         render::Drawer& draw = game.renderer().drawer();
         // The cannon, aimed at the mouse.
@@ -125,7 +131,8 @@ private:
         object.addComponent<apps::ShapeView>(glm::vec4{0.35f, 0.35f, 0.4f, 1.0f});
     }
 
-    core::GameObject& addPolygon(glm::vec2 at, int sides, float radius, const Mass& mass, float angle) {
+    core::GameObject& addPolygon(glm::vec2 at, int sides, float radius, const Mass& mass,
+                                 float angle) {
         auto& object = createGameObject();
         object.setPosition(at);
         object.setOrientation(angle);

@@ -11,8 +11,8 @@
 #include <e2d/render/animated_sprite_renderer.hpp>
 #include <e2d/render/render_system.hpp>
 #include <e2d/render/renderer.hpp>
-#include <e2d/render/sprite_sheet.hpp>
 #include <e2d/render/sprite_renderer.hpp>
+#include <e2d/render/sprite_sheet.hpp>
 #include <e2d/render/text_label.hpp>
 
 #include <chrono>
@@ -70,7 +70,8 @@ protected:
 
         // One parse of the sheet for every sprite; its frames' UV rectangles per animation.
         // Without the sheet (the error is logged) the image path draws the checker placeholder.
-        const render::SpriteSheet* sheet = game.renderSystem().sheet(game.asset("assets/creatures.json"));
+        const render::SpriteSheet* sheet =
+            game.renderSystem().sheet(game.asset("assets/creatures.json"));
         auto creature = [&](const char* animation) {
             if (sheet == nullptr) {
                 return render::AnimatedSpriteRendererDef{
@@ -93,7 +94,8 @@ protected:
             render::AnimatedSpriteRendererDef& def = isCoin ? coin : slime;
             auto& sprite = createGameObject();
             // Centres 16 px (half a sprite) inside each half, so a 32 px lane stays clear.
-            const float x = isCoin ? random.range(16.0f, kWidth / 2 - 32) : random.range(kWidth / 2 + 32, kWidth - 16);
+            const float x = isCoin ? random.range(16.0f, kWidth / 2 - 32)
+                                   : random.range(kWidth / 2 + 32, kWidth - 16);
             sprite.setPosition(glm::vec3{x, random.range(16.0f, kHeight - 56), 0.0f});
             def.animation.startFrame = random.range(0, static_cast<int>(def.frames.size()) - 1);
             sprite.addComponent<render::AnimatedSpriteRenderer>(def);

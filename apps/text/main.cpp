@@ -59,10 +59,14 @@ protected:
         const input::ActionMap& actions = game.actions();
         const int h = horizontal_;
         const int v = vertical_;
-        if (actions.pressed("horizontal")) horizontal_ = (horizontal_ + 1) % 3;
-        if (actions.pressed("horizontal_back")) horizontal_ = (horizontal_ + 2) % 3;
-        if (actions.pressed("vertical")) vertical_ = (vertical_ + 1) % 3;
-        if (actions.pressed("vertical_back")) vertical_ = (vertical_ + 2) % 3;
+        if (actions.pressed("horizontal"))
+            horizontal_ = (horizontal_ + 1) % 3;
+        if (actions.pressed("horizontal_back"))
+            horizontal_ = (horizontal_ + 2) % 3;
+        if (actions.pressed("vertical"))
+            vertical_ = (vertical_ + 1) % 3;
+        if (actions.pressed("vertical_back"))
+            vertical_ = (vertical_ + 2) % 3;
         if (h != horizontal_ || v != vertical_) {
             apply();
         }
@@ -77,8 +81,9 @@ protected:
 private:
     void apply() {
         label_->setAlignment(kHorizontal[horizontal_], kVertical[vertical_]);
-        help_->setText(std::string("H / left / right: horizontal (") + kHorizontalNames[horizontal_] +
-                       ")     V / up / down: vertical (" + kVerticalNames[vertical_] + ")");
+        help_->setText(std::string("H / left / right: horizontal (") +
+                       kHorizontalNames[horizontal_] + ")     V / up / down: vertical (" +
+                       kVerticalNames[vertical_] + ")");
     }
 
     render::TextLabel* label_ = nullptr;

@@ -37,7 +37,8 @@ std::vector<std::string_view> split(std::string_view text, char sep) {
     std::size_t start = 0;
     while (true) {
         const std::size_t end = text.find(sep, start);
-        out.push_back(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
+        out.push_back(text.substr(start, end == std::string_view::npos ? std::string_view::npos
+                                                                       : end - start));
         if (end == std::string_view::npos) {
             return out;
         }
@@ -49,7 +50,8 @@ double number(std::string_view text, std::string_view rule) {
     double value = 0.0;
     const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (ec != std::errc() || ptr != text.data() + text.size()) {
-        throw e2d::core::Error("rule '" + std::string(rule) + "': '" + std::string(text) + "' is not a number");
+        throw e2d::core::Error("rule '" + std::string(rule) + "': '" + std::string(text) +
+                               "' is not a number");
     }
     return value;
 }
@@ -57,8 +59,9 @@ double number(std::string_view text, std::string_view rule) {
 std::vector<int> integers(std::string_view text, std::size_t count, std::string_view rule) {
     const std::vector<std::string_view> parts = split(text, ',');
     if (parts.size() != count) {
-        throw e2d::core::Error("rule '" + std::string(rule) + "': expected " + std::to_string(count) +
-                               " comma-separated numbers in '" + std::string(text) + "'");
+        throw e2d::core::Error("rule '" + std::string(rule) + "': expected " +
+                               std::to_string(count) + " comma-separated numbers in '" +
+                               std::string(text) + "'");
     }
     std::vector<int> out;
     for (std::string_view p : parts) {
@@ -70,9 +73,11 @@ std::vector<int> integers(std::string_view text, std::size_t count, std::string_
 Region region(std::string_view text, std::string_view rule, const Image& image) {
     const std::vector<int> v = integers(text, 4, rule);
     const Region r{v[0], v[1], v[2], v[3]};
-    if (r.w <= 0 || r.h <= 0 || r.x < 0 || r.y < 0 || r.x + r.w > image.width || r.y + r.h > image.height) {
+    if (r.w <= 0 || r.h <= 0 || r.x < 0 || r.y < 0 || r.x + r.w > image.width ||
+        r.y + r.h > image.height) {
         throw e2d::core::Error("rule '" + std::string(rule) + "': region outside the " +
-                               std::to_string(image.width) + " x " + std::to_string(image.height) + " image");
+                               std::to_string(image.width) + " x " + std::to_string(image.height) +
+                               " image");
     }
     return r;
 }
@@ -103,8 +108,9 @@ double inkShare(const Image& image, Region reg) {
             ++histogram[(std::uint32_t{p[0]} << 16) | (std::uint32_t{p[1]} << 8) | p[2]];
         }
     }
-    const auto common = std::max_element(histogram.begin(), histogram.end(),
-                                         [](const auto& a, const auto& b) { return a.second < b.second; });
+    const auto common =
+        std::max_element(histogram.begin(), histogram.end(),
+                         [](const auto& a, const auto& b) { return a.second < b.second; });
     const int r = static_cast<int>((common->first >> 16) & 0xFF);
     const int g = static_cast<int>((common->first >> 8) & 0xFF);
     const int b = static_cast<int>(common->first & 0xFF);
@@ -128,7 +134,8 @@ bool check(const Image& image, std::string_view rule) {
         const double wanted = number(parts[4], rule);
         const double share = colourShare(image, reg, c[0], c[1], c[2], static_cast<int>(tolerance));
         ok = share >= wanted;
-        std::snprintf(line, sizeof line, "%.2f %% of the region within %g of (%d, %d, %d), wanted >= %g %%", share,
+        std::snprintf(line, sizeof line,
+                      "%.2f %% of the region within %g of (%d, %d, %d), wanted >= %g %%", share,
                       tolerance, c[0], c[1], c[2], wanted);
     } else if (kind == "ink" && (parts.size() == 2 || parts.size() == 3)) {
         const Region reg = region(parts[1], rule, image);
@@ -142,8 +149,9 @@ bool check(const Image& image, std::string_view rule) {
         ok = share < 0.1;
         std::snprintf(line, sizeof line, "%.2f %% ink, wanted < 0.1 %%", share);
     } else {
-        throw e2d::core::Error("unknown rule '" + std::string(rule) +
-                               "' (size:W,H, colour:X,Y,W,H:R,G,B:T:P, ink:X,Y,W,H[:P], empty:X,Y,W,H)");
+        throw e2d::core::Error(
+            "unknown rule '" + std::string(rule) +
+            "' (size:W,H, colour:X,Y,W,H:R,G,B:T:P, ink:X,Y,W,H[:P], empty:X,Y,W,H)");
     }
     std::printf("%s %s: %s\n", ok ? "ok  " : "FAIL", std::string(rule).c_str(), line);
     return ok;
@@ -159,7 +167,8 @@ int selfTest() {
         image.pixels[i] = 255;
     }
     const auto set = [&](int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
-        std::uint8_t* p = image.pixels.data() + (static_cast<std::size_t>(y) * 100 + static_cast<std::size_t>(x)) * 4;
+        std::uint8_t* p = image.pixels.data() +
+                          (static_cast<std::size_t>(y) * 100 + static_cast<std::size_t>(x)) * 4;
         p[0] = r;
         p[1] = g;
         p[2] = b;
@@ -174,13 +183,15 @@ int selfTest() {
     }
     e2d::render::writePng(image, "image_check_self_test.png");
     const Image read = e2d::render::loadImage("image_check_self_test.png");
-    const std::vector<std::string> pass{"size:100,50",
-                                        "colour:10,5,20,10:255,0,0:20:100",
-                                        "colour:0,0,40,20:255,0,0:20:25",
-                                        "ink:60,0,40,40:2",
+    const std::vector<std::string> pass{"size:100,50", "colour:10,5,20,10:255,0,0:20:100",
+                                        "colour:0,0,40,20:255,0,0:20:25", "ink:60,0,40,40:2",
                                         "empty:0,20,50,30"};
-    const std::vector<std::string> fail{"size:50,100", "colour:0,0,40,20:255,0,0:20:26", "colour:10,5,20,10:0,0,255:40:1",
-                                        "ink:60,0,40,40:3", "empty:60,0,40,40", "ink:0,20,50,30"};
+    const std::vector<std::string> fail{"size:50,100",
+                                        "colour:0,0,40,20:255,0,0:20:26",
+                                        "colour:10,5,20,10:0,0,255:40:1",
+                                        "ink:60,0,40,40:3",
+                                        "empty:60,0,40,40",
+                                        "ink:0,20,50,30"};
     int wrong = 0;
     for (const std::string& rule : pass) {
         wrong += check(read, rule) ? 0 : 1;
@@ -201,7 +212,9 @@ int main(int argc, char** argv) {
             return selfTest();
         }
         if (argc < 3) {
-            std::fprintf(stderr, "usage: e2d_image_check IMAGE.png RULE... (see apps/tools/image_check.cpp)\n");
+            std::fprintf(
+                stderr,
+                "usage: e2d_image_check IMAGE.png RULE... (see apps/tools/image_check.cpp)\n");
             return 2;
         }
         const Image image = e2d::render::loadImage(argv[1]);

@@ -21,7 +21,8 @@ public:
 
     /// The table: one row per case, one column per engine, then ratios to the baseline. Times
     /// are ns per item divided by `nsPerUnit` (1e6 for ms).
-    std::string markdownTable(const std::string& unit = "ns per pair", double nsPerUnit = 1.0) const;
+    std::string markdownTable(const std::string& unit = "ns per pair",
+                              double nsPerUnit = 1.0) const;
 
     /// Pulls `--e2d_table=PATH` out of argv (before benchmark::Initialize sees it).
     static std::string takeTableFlag(int& argc, char** argv);

@@ -17,7 +17,8 @@ int main() {
     tone.channels = 1;
     tone.sampleRate = 48000;
     for (int i = 0; i < 48000; ++i) {
-        tone.samples.push_back(0.5f * static_cast<float>(std::sin(2.0 * 3.14159265358979 * 1000.0 * i / 48000.0)));
+        tone.samples.push_back(
+            0.5f * static_cast<float>(std::sin(2.0 * 3.14159265358979 * 1000.0 * i / 48000.0)));
     }
     PlayDef play;
     play.spatial = true;
@@ -36,9 +37,11 @@ int main() {
     left = std::sqrt(left / 4800);
     right = std::sqrt(right / 4800);
     if (left > 1e-4 || std::abs(right - 0.5 / std::sqrt(2.0)) > 0.01) {
-        std::fprintf(stderr, "consumer: e2d::audio unexpected mix (left %.4f, right %.4f)\n", left, right);
+        std::fprintf(stderr, "consumer: e2d::audio unexpected mix (left %.4f, right %.4f)\n", left,
+                     right);
         return 1;
     }
-    std::printf("consumer: e2d::audio a tone on the right: left RMS %.4f, right RMS %.4f\n", left, right);
+    std::printf("consumer: e2d::audio a tone on the right: left RMS %.4f, right RMS %.4f\n", left,
+                right);
     return 0;
 }

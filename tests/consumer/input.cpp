@@ -30,9 +30,10 @@ int main() {
         glfwPollEvents();
         input.beginFrame();
         actions.update(input);
-        const MappingLoadResult mappings =
-            loadGamepadMappings("03000000de280000ff11000001000000,Consumer Pad,a:b0,leftx:a0,platform:Linux,");
-        if (Input::fromWindow(window) == &input && actions.pressed("jump") && mappings.loaded == 1) {
+        const MappingLoadResult mappings = loadGamepadMappings(
+            "03000000de280000ff11000001000000,Consumer Pad,a:b0,leftx:a0,platform:Linux,");
+        if (Input::fromWindow(window) == &input && actions.pressed("jump") &&
+            mappings.loaded == 1) {
             std::printf("consumer: input attached, 'jump' pressed by %s, %d mapping loaded\n",
                         std::string(keyName(Key::Space)).c_str(), mappings.loaded);
             status = 0;

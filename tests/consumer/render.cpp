@@ -72,7 +72,8 @@ int run() {
         }
     }
 
-    const std::filesystem::path shot = std::filesystem::temp_directory_path() / "e2d_render_consumer.png";
+    const std::filesystem::path shot =
+        std::filesystem::temp_directory_path() / "e2d_render_consumer.png";
     renderer.screenshot(shot);
     const bool shotWritten = std::filesystem::file_size(shot) > 0;
     const int drawCalls = renderer.stats().drawCalls;
@@ -81,16 +82,19 @@ int run() {
 
     if (r.r != 255 || r.g != 0 || r.b != 0 || b.b != 255 || b.r != 0 || gap.r != 0 || gap.b != 0 ||
         ink == 0 || layout.quads.size() != 3 || !shotWritten || !window.shouldClose()) {
-        std::fprintf(stderr,
-                     "consumer: render did not work (red %d,%d,%d blue %d,%d,%d gap %d,%d,%d, %d ink "
-                     "pixels, %zu glyphs, screenshot %d)\n",
-                     r.r, r.g, r.b, b.r, b.g, b.b, gap.r, gap.g, gap.b, ink, layout.quads.size(),
-                     shotWritten ? 1 : 0);
+        std::fprintf(
+            stderr,
+            "consumer: render did not work (red %d,%d,%d blue %d,%d,%d gap %d,%d,%d, %d ink "
+            "pixels, %zu glyphs, screenshot %d)\n",
+            r.r, r.g, r.b, b.r, b.g, b.b, gap.r, gap.g, gap.b, ink, layout.quads.size(),
+            shotWritten ? 1 : 0);
         return 1;
     }
-    std::printf("consumer: render drew 2 sprites and %zu glyphs in %d draw calls on %s, %d ink pixels, "
-                "screenshot %s\n",
-                layout.quads.size(), drawCalls, window.context().renderer.c_str(), ink, shot.string().c_str());
+    std::printf(
+        "consumer: render drew 2 sprites and %zu glyphs in %d draw calls on %s, %d ink pixels, "
+        "screenshot %s\n",
+        layout.quads.size(), drawCalls, window.context().renderer.c_str(), ink,
+        shot.string().c_str());
     std::filesystem::remove(shot);
     return 0;
 }

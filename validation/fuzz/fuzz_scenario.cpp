@@ -55,8 +55,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         scenario = parseScenario(text, "fuzz");
     } catch (const ScenarioError& e) {
         const std::string message = e.what();
-        check(!message.empty() && message.find(": ") != std::string::npos, "unplaced error: " + message);
-        check(e2d::core::isPrintable(message), "unescaped bytes in: " + e2d::core::printable(message));
+        check(!message.empty() && message.find(": ") != std::string::npos,
+              "unplaced error: " + message);
+        check(e2d::core::isPrintable(message),
+              "unescaped bytes in: " + e2d::core::printable(message));
         return 0;
     }
     // Anything else thrown escapes and libFuzzer reports it.

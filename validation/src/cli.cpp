@@ -34,7 +34,7 @@ struct Options {
     std::vector<std::string> scenarios;
     std::string out = "report";
     std::string dir = E2D_VALIDATION_SCENARIOS_DIR;
-    std::string sweep;        // empty: the mode's default
+    std::string sweep; // empty: the mode's default
     std::vector<std::string> engines;
     bool noFeatures = false;
     int jobs = 0;
@@ -59,15 +59,19 @@ fs::path resolve(const std::string& fileOrName, const fs::path& dir) {
     if (fs::is_regular_file(named)) {
         return named;
     }
-    throw ScenarioError(core::Diagnostic{core::Severity::Error, "--scenario " + fileOrName, 0, 0, {},
-                                         "no such file, and no scenario of that name in " + dir.string() +
-                                             " (see --list)"});
+    throw ScenarioError(core::Diagnostic{core::Severity::Error,
+                                         "--scenario " + fileOrName,
+                                         0,
+                                         0,
+                                         {},
+                                         "no such file, and no scenario of that name in " +
+                                             dir.string() + " (see --list)"});
 }
 
 // Family order of the report, then names in natural order (stack_5 before stack_10).
 void sortScenarios(std::vector<Scenario>& scenarios) {
-    const std::vector<std::string> families{"stacking", "friction", "restitution", "conservation",
-                                            "joints", "hard"};
+    const std::vector<std::string> families{"stacking",     "friction", "restitution",
+                                            "conservation", "joints",   "hard"};
     auto rank = [&](const Scenario& s) {
         return std::find(families.begin(), families.end(), s.family) - families.begin();
     };
@@ -126,9 +130,11 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
                  "against error (report.json, report.html and a summary on stdout)."};
     app.name("e2d-validate");
     auto* all = app.add_flag("--all", o.all, "every scenario, full sweep and feature runs");
-    auto* quick = app.add_flag("--quick", o.quick, "the quick subset (scenarios with \"quick\": true)");
-    auto* scen = app.add_option("--scenario", o.scenarios,
-                                "a scenario file or the name of one in --scenarios-dir (repeatable)");
+    auto* quick =
+        app.add_flag("--quick", o.quick, "the quick subset (scenarios with \"quick\": true)");
+    auto* scen =
+        app.add_option("--scenario", o.scenarios,
+                       "a scenario file or the name of one in --scenarios-dir (repeatable)");
     auto* list = app.add_flag("--list", o.list, "list the scenarios of --scenarios-dir and exit");
     all->excludes(quick)->excludes(scen)->excludes(list);
     quick->excludes(scen)->excludes(list);
@@ -153,7 +159,8 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         out << app.help();
         return kExitPassed;
     } catch (const CLI::ParseError& e) {
-        err << "e2d-validate: " << e.what() << "\n" << "run e2d-validate --help for usage\n";
+        err << "e2d-validate: " << e.what() << "\n"
+            << "run e2d-validate --help for usage\n";
         return kExitBadInput;
     }
     if (!o.all && !o.quick && o.scenarios.empty() && !o.list) {
@@ -179,8 +186,12 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     try {
         if (o.list || o.all || o.quick) {
             if (!fs::is_directory(o.dir)) {
-                throw ScenarioError(
-                    core::Diagnostic{core::Severity::Error, "--scenarios-dir " + o.dir, 0, 0, {}, "not a directory"});
+                throw ScenarioError(core::Diagnostic{core::Severity::Error,
+                                                     "--scenarios-dir " + o.dir,
+                                                     0,
+                                                     0,
+                                                     {},
+                                                     "not a directory"});
             }
             for (const fs::path& file : scenarioFiles(o.dir)) {
                 Scenario s = loadScenario(file);
@@ -210,13 +221,17 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         return kExitBadInput;
     }
 
-    const std::string sweepName = !o.sweep.empty() ? o.sweep : o.all ? "full" : o.quick ? "quick" : "none";
+    const std::string sweepName = !o.sweep.empty() ? o.sweep
+                                  : o.all          ? "full"
+                                  : o.quick        ? "quick"
+                                                   : "none";
     const SweepLevel level = sweepName == "full"    ? SweepLevel::Full
                              : sweepName == "quick" ? SweepLevel::Quick
                                                     : SweepLevel::None;
     const bool features = !o.noFeatures && (o.all || o.quick);
     const std::vector<RunSpec> plan = makePlan(scenarios, o.engines, level, features);
-    const int threads = o.jobs > 0 ? o.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const int threads =
+        o.jobs > 0 ? o.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 
     err << "e2d-validate: " << scenarios.size() << " scenarios, " << plan.size() << " runs on "
         << threads << " threads\n";
@@ -240,27 +255,32 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
                                 std::to_string(100 * static_cast<long long>(step) / steps) + "%)")
             << " after " << static_cast<int>(seconds) << " s\n";
     };
-    report.runs = runPlan(scenarios, plan, threads, [&](int done, int total, const RunResult& r) {
-        const std::lock_guard lock(errMutex);
-        const auto si = static_cast<std::size_t>(r.spec.scenario);
-        if (r.spec.role == RunRole::Baseline) {
-            ++baselineRuns[si];
-            baselinePassed[si] += r.passed ? 1 : 0;
-        }
-        if (--left[si] == 0) {
-            err << "scenario " << scenarios[si].name << " done: " << baselinePassed[si] << " of "
-                << baselineRuns[si] << " baseline runs pass\n";
-        }
-        const int percent = 100 * done / total;
-        if (percent / 5 != lastPercent / 5 || r.seconds > 5.0 || done == total) {
-            lastPercent = percent;
-            const double elapsed =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            err << "[" << done << "/" << total << " " << percent << "% " << static_cast<int>(elapsed)
-                << " s] " << scenarios[static_cast<std::size_t>(r.spec.scenario)].name << " / "
-                << r.spec.config.family() << " " << r.spec.variant << ": " << r.seconds << " s\n";
-        }
-    }, stepProgress);
+    report.runs = runPlan(
+        scenarios, plan, threads,
+        [&](int done, int total, const RunResult& r) {
+            const std::lock_guard lock(errMutex);
+            const auto si = static_cast<std::size_t>(r.spec.scenario);
+            if (r.spec.role == RunRole::Baseline) {
+                ++baselineRuns[si];
+                baselinePassed[si] += r.passed ? 1 : 0;
+            }
+            if (--left[si] == 0) {
+                err << "scenario " << scenarios[si].name << " done: " << baselinePassed[si]
+                    << " of " << baselineRuns[si] << " baseline runs pass\n";
+            }
+            const int percent = 100 * done / total;
+            if (percent / 5 != lastPercent / 5 || r.seconds > 5.0 || done == total) {
+                lastPercent = percent;
+                const double elapsed =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                err << "[" << done << "/" << total << " " << percent << "% "
+                    << static_cast<int>(elapsed) << " s] "
+                    << scenarios[static_cast<std::size_t>(r.spec.scenario)].name << " / "
+                    << r.spec.config.family() << " " << r.spec.variant << ": " << r.seconds
+                    << " s\n";
+            }
+        },
+        stepProgress);
     report.scenarios = std::move(scenarios);
     report.env = collectEnvironment();
     report.env.threads = threads;

@@ -16,12 +16,12 @@ namespace e2d::validation {
 
 /// One body as the metrics see it, in SceneDesc order.
 struct BodyState {
-    glm::vec2 position{0.0f};  ///< body origin, metres
-    float angle = 0.0f;        ///< radians
-    glm::vec2 velocity{0.0f};  ///< centre-of-mass velocity, m/s
+    glm::vec2 position{0.0f}; ///< body origin, metres
+    float angle = 0.0f;       ///< radians
+    glm::vec2 velocity{0.0f}; ///< centre-of-mass velocity, m/s
     float angularVelocity = 0.0f;
-    float mass = 0.0f;         ///< kg; 0 for static and kinematic bodies
-    float inertia = 0.0f;      ///< about the centre of mass, kg m^2
+    float mass = 0.0f;    ///< kg; 0 for static and kinematic bodies
+    float inertia = 0.0f; ///< about the centre of mass, kg m^2
     bool dynamic = false;
     bool awake = true;
 };

@@ -34,8 +34,12 @@ public:
         if (!pushes_.empty()) {
             pushes_.apply(
                 double(steps_) * timeStep_,
-                [&](int i, glm::vec2 f) { scene_.bodies[std::size_t(i)]->ApplyForceToCenter({f.x, f.y}, true); },
-                [&](int i, glm::vec2 j) { scene_.bodies[std::size_t(i)]->ApplyLinearImpulseToCenter({j.x, j.y}, true); });
+                [&](int i, glm::vec2 f) {
+                    scene_.bodies[std::size_t(i)]->ApplyForceToCenter({f.x, f.y}, true);
+                },
+                [&](int i, glm::vec2 j) {
+                    scene_.bodies[std::size_t(i)]->ApplyLinearImpulseToCenter({j.x, j.y}, true);
+                });
         }
         scene_.step(timeStep_);
         ++steps_;
@@ -112,12 +116,14 @@ std::string box2DNotes() {
            "child edges as separate fixtures; wheel and mouse springs take b2LinearStiffness of "
            "the scene's frequency for the two bodies' masses (e2d's soft springs use the "
            "constraint's effective mass); revolute and prismatic springs do not exist in 2.4.1, "
-           "so such a scene fails on Box2D with that reason; penetration is measured between the shapes "
+           "so such a scene fails on Box2D with that reason; penetration is measured between the "
+           "shapes "
            "as the scene gives them (skin excluded), so a resting Box2D box shows a gap of up to "
            "0.015 m, not an overlap. Friction and restitution mix as sqrt(f1 f2) and max(e1, e2).";
 }
 
-std::unique_ptr<Engine> makeBox2DEngine(const scenes::SceneDesc& scene, const EngineConfig& config) {
+std::unique_ptr<Engine> makeBox2DEngine(const scenes::SceneDesc& scene,
+                                        const EngineConfig& config) {
     return std::make_unique<Box2DEngine>(scene, config);
 }
 

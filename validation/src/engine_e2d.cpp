@@ -46,7 +46,9 @@ public:
             pushes_.apply(
                 double(steps_) * timeStep_,
                 [&](int i, glm::vec2 f) { world_.applyForceToCenter(bodies_[std::size_t(i)], f); },
-                [&](int i, glm::vec2 j) { world_.applyLinearImpulseToCenter(bodies_[std::size_t(i)], j); });
+                [&](int i, glm::vec2 j) {
+                    world_.applyLinearImpulseToCenter(bodies_[std::size_t(i)], j);
+                });
         }
         scene_.step();
         ++steps_;
@@ -131,10 +133,10 @@ std::string e2dNotes() {
         << " m/s; friction mixed as " << rule(d.frictionMixing) << ", restitution as "
         << rule(d.restitutionMixing) << "; soft step: contact stiffness " << d.contactHertz
         << " Hz, damping ratio " << d.contactDampingRatio << ", push-out at most "
-        << d.contactPushMaxSpeed << " m/s, joints' rigid rows " << d.jointHertz << " Hz, damping ratio "
-        << d.jointDampingRatio << "; linear speed capped at " << d.maxLinearSpeed
-        << " m/s; sleep after " << d.timeToSleep << " s below " << d.linearSleepTolerance
-        << " m/s.";
+        << d.contactPushMaxSpeed << " m/s, joints' rigid rows " << d.jointHertz
+        << " Hz, damping ratio " << d.jointDampingRatio << "; linear speed capped at "
+        << d.maxLinearSpeed << " m/s; sleep after " << d.timeToSleep << " s below "
+        << d.linearSleepTolerance << " m/s.";
     return out.str();
 }
 

@@ -15,7 +15,8 @@ std::unique_ptr<Engine> makeEngine(const scenes::SceneDesc& scene, const EngineC
     if (config.engine == "e2d") {
         return makeE2dEngine(scene, config);
     }
-    throw EngineError("engine \"" + config.engine + "\" is not available in this build (have: box2d, e2d)");
+    throw EngineError("engine \"" + config.engine +
+                      "\" is not available in this build (have: box2d, e2d)");
 }
 
 std::string translationNotes(const EngineConfig& config) {
@@ -60,7 +61,8 @@ void Pushes::apply(double time, const std::function<void(int, glm::vec2)>& force
 std::string EngineConfig::family() const {
     if (engine == "e2d") {
         // The joint models other than the default are curves of their own (joints family).
-        const std::string joints = solver == "soft" && jointSolver != "direct" ? " joints " + jointSolver : "";
+        const std::string joints =
+            solver == "soft" && jointSolver != "direct" ? " joints " + jointSolver : "";
         return "e2d " + solver + " " + collision + joints;
     }
     return engine;
@@ -71,7 +73,8 @@ std::string EngineConfig::describe() const {
     const char* on = "on";
     const char* off = "off";
     if (engine == "e2d" && solver == "soft") {
-        out << "sub-steps " << subSteps << ", extra relax " << relaxIterations << ", joints " << jointSolver;
+        out << "sub-steps " << subSteps << ", extra relax " << relaxIterations << ", joints "
+            << jointSolver;
     } else {
         out << "vel " << velocityIterations << ", pos " << positionIterations;
     }

@@ -88,7 +88,7 @@ Apexes apexes(const std::vector<Sample>& s, int from) {
     for (std::size_t k = static_cast<std::size_t>(std::max(from, 1)); k < s.size(); ++k) {
         if (s[k - 1].velocity.y > 0.0f && s[k].velocity.y <= 0.0f) {
             a.instants.push_back(s[k].position.y >= s[k - 1].position.y ? static_cast<int>(k)
-                                                                         : static_cast<int>(k) - 1);
+                                                                        : static_cast<int>(k) - 1);
         }
     }
     return a;
@@ -162,13 +162,16 @@ double moved(const std::vector<Sample>& s, int k, glm::vec2 direction) {
         return 0.0;
     }
     const glm::vec2 d = s[static_cast<std::size_t>(k)].position - s.front().position;
-    return direction == glm::vec2(0.0f) ? length(d) : double(d.x) * direction.x + double(d.y) * direction.y;
+    return direction == glm::vec2(0.0f) ? length(d)
+                                        : double(d.x) * direction.x + double(d.y) * direction.y;
 }
 
-CheckResult evaluateOn(const Check& c, const Recording& rec, float gravity, const std::vector<Sample>& s);
+CheckResult evaluateOn(const Check& c, const Recording& rec, float gravity,
+                       const std::vector<Sample>& s);
 
 // evaluateOn with the non-finite guard.
-CheckResult evaluateGuarded(const Check& c, const Recording& rec, float gravity, const std::vector<Sample>& s) {
+CheckResult evaluateGuarded(const Check& c, const Recording& rec, float gravity,
+                            const std::vector<Sample>& s) {
     CheckResult r = evaluateOn(c, rec, gravity, s);
     const int bad = firstNonFinite(c, rec, s);
     if (bad >= 0 || !std::isfinite(r.measured) || !std::isfinite(r.error)) {
@@ -221,7 +224,8 @@ CheckResult evaluateFinite(const Check& c, const Recording& rec, float gravity) 
 
 namespace {
 
-CheckResult evaluateOn(const Check& c, const Recording& rec, float gravity, const std::vector<Sample>& s) {
+CheckResult evaluateOn(const Check& c, const Recording& rec, float gravity,
+                       const std::vector<Sample>& s) {
     CheckResult r;
     r.kind = checkKindName(c.kind);
     r.body = c.body;
@@ -293,8 +297,8 @@ CheckResult evaluateOn(const Check& c, const Recording& rec, float gravity, cons
         r.expected = sliding ? slideDistance(gravity, c.slopeAngle, c.friction, c.time)
                              : rollingDistance(gravity, c.slopeAngle, c.time);
         const int k = rec.instantAt(c.time);
-        r.measured = alongSlope(s[static_cast<std::size_t>(k)].position - s.front().position,
-                                c.slopeAngle);
+        r.measured =
+            alongSlope(s[static_cast<std::size_t>(k)].position - s.front().position, c.slopeAngle);
         r.error = std::abs(r.measured - r.expected);
         r.passed = r.error <= c.tolerance;
         r.detail = "at t = " + fmt(rec.time(k)) + " s";
@@ -439,8 +443,9 @@ CheckResult evaluateOn(const Check& c, const Recording& rec, float gravity, cons
         break;
     }
     case CheckKind::Moves: {
-        r.quantity = c.direction == glm::vec2(0.0f) ? "distance from the start, m"
-                                                   : "distance from the start along the direction, m";
+        r.quantity = c.direction == glm::vec2(0.0f)
+                         ? "distance from the start, m"
+                         : "distance from the start along the direction, m";
         r.expected = c.distance;
         r.tolerance = c.distance;
         r.measured = moved(s, static_cast<int>(s.size()) - 1, c.direction);
@@ -510,13 +515,15 @@ Series seriesFor(const Check& c, const Recording& rec, float gravity, int stride
     case CheckKind::SlideDistance:
         out.name = "distance slid by " + c.body + "; dashed: 1/2 g (sin - mu cos) t^2";
         out.unit = std::string("m");
-        sample(distance,
-               [&](int k) { return slideDistance(gravity, c.slopeAngle, c.friction, rec.time(k)); });
+        sample(distance, [&](int k) {
+            return slideDistance(gravity, c.slopeAngle, c.friction, rec.time(k));
+        });
         break;
     case CheckKind::RollingDistance:
         out.name = "distance rolled by " + c.body + "; dashed: 1/3 g sin t^2";
         out.unit = std::string("m");
-        sample(distance, [&](int k) { return rollingDistance(gravity, c.slopeAngle, rec.time(k)); });
+        sample(distance,
+               [&](int k) { return rollingDistance(gravity, c.slopeAngle, rec.time(k)); });
         break;
     case CheckKind::StoppingDistance:
         out.name = "distance slid by " + c.body + "; dashed: v t - 1/2 mu g t^2";
@@ -537,7 +544,8 @@ Series seriesFor(const Check& c, const Recording& rec, float gravity, int stride
     case CheckKind::JointError:
         break;
     case CheckKind::Period: {
-        out.name = "x of " + c.body + " about its mean; dashed: the same swing at the expected period";
+        out.name =
+            "x of " + c.body + " about its mean; dashed: the same swing at the expected period";
         out.unit = std::string("m");
         double mean = 0.0;
         for (const Sample& x : s) {
@@ -559,10 +567,11 @@ Series seriesFor(const Check& c, const Recording& rec, float gravity, int stride
     case CheckKind::Standing:
         out.name = "horizontal drift of " + c.body + "; dashed: tolerance";
         out.unit = std::string("m");
-        sample([&](int k) {
-                   return std::abs(s[static_cast<std::size_t>(k)].position.x - s.front().position.x);
-               },
-               [&](int) { return c.tolerance; });
+        sample(
+            [&](int k) {
+                return std::abs(s[static_cast<std::size_t>(k)].position.x - s.front().position.x);
+            },
+            [&](int) { return c.tolerance; });
         break;
     default:
         break;

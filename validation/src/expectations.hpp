@@ -36,9 +36,9 @@ struct Impact1D {
 
 /// One check's outcome.
 struct CheckResult {
-    std::string kind;       ///< as in the scenario file
-    std::string body;       ///< tag, if any
-    std::string quantity;   ///< what was measured, with unit
+    std::string kind;     ///< as in the scenario file
+    std::string body;     ///< tag, if any
+    std::string quantity; ///< what was measured, with unit
     double expected = 0.0;
     double measured = 0.0;
     double error = 0.0;     ///< |measured - expected| or the amount over the limit

@@ -74,8 +74,8 @@ void addDominoes(scenes::SceneDesc& scene, int count, float spacing, float push,
     }
     const scenes::ShapeDesc domino = boxShape({0.25f * p.half, p.half}, p);
     for (int i = 0; i < count; ++i) {
-        scenes::BodyDesc body =
-            dynamicBody({p.origin.x + spacing * static_cast<float>(i), p.origin.y + p.half}, domino);
+        scenes::BodyDesc body = dynamicBody(
+            {p.origin.x + spacing * static_cast<float>(i), p.origin.y + p.half}, domino);
         if (i == 0) {
             body.angularVelocity = push;
         }

@@ -13,12 +13,12 @@ namespace e2d::validation {
 /// are metres; `origin` is the point on the ground top where the layout starts.
 struct LayoutParams {
     glm::vec2 origin{0.0f, 0.0f};
-    float half = 0.5f;          ///< box half-size, metres
+    float half = 0.5f; ///< box half-size, metres
     float friction = 0.6f;
     float density = 1.0f;
     float restitution = 0.0f;
-    bool ground = true;         ///< add a static ground box under the layout
-    std::string tag = "top";    ///< tag of the body the metrics follow
+    bool ground = true;      ///< add a static ground box under the layout
+    std::string tag = "top"; ///< tag of the body the metrics follow
 };
 
 /// `count` boxes stacked touching, bottom one resting on y = origin.y. Last box tagged.

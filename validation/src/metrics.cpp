@@ -33,7 +33,8 @@ Recorder::Recorder(const scenes::SceneDesc& scene, float settle) {
         if (j.kind == scenes::JointKind::Revolute || j.kind == scenes::JointKind::Weld) {
             joints_.push_back({i, -1.0f});
         } else if (j.kind == scenes::JointKind::Wheel) {
-            joints_.push_back({i, -1.0f, j.bodyA, scene.bodies[std::size_t(j.bodyA)].angle, j.axis});
+            joints_.push_back(
+                {i, -1.0f, j.bodyA, scene.bodies[std::size_t(j.bodyA)].angle, j.axis});
         } else if (j.kind == scenes::JointKind::Distance && !j.enableSpring && !j.enableLimit) {
             const glm::vec2 d = j.anchorB - j.anchorA;
             joints_.push_back({i, j.length > 0.0f ? j.length : std::sqrt(d.x * d.x + d.y * d.y)});
@@ -92,8 +93,9 @@ void Recorder::record(const Engine& engine, double stepMs) {
     }
     for (const Tagged& t : tags_) {
         const BodyState& s = states_[static_cast<std::size_t>(t.body)];
-        std::vector<Sample>& track = t.extra < 0 ? rec_.tagged[t.tag]
-                                                 : rec_.moreTagged[t.tag][static_cast<std::size_t>(t.extra)];
+        std::vector<Sample>& track =
+            t.extra < 0 ? rec_.tagged[t.tag]
+                        : rec_.moreTagged[t.tag][static_cast<std::size_t>(t.extra)];
         track.push_back({s.position, s.angle, s.velocity});
     }
 }
@@ -142,7 +144,8 @@ Metrics summarize(const Recording& rec, const scenes::SceneDesc& scene) {
     for (int k = 0; k < rec.instants(); ++k) {
         m.maxSpeed = std::max(m.maxSpeed, rec.maxSpeed[static_cast<std::size_t>(k)]);
         if (k >= first) {
-            m.maxPenetration = std::max(m.maxPenetration, rec.penetration[static_cast<std::size_t>(k)]);
+            m.maxPenetration =
+                std::max(m.maxPenetration, rec.penetration[static_cast<std::size_t>(k)]);
         }
         if (!m.timeToSleep && rec.allAsleep[static_cast<std::size_t>(k)]) {
             m.timeToSleep = rec.time(k);

@@ -24,22 +24,22 @@ struct Sample {
 /// state after k steps (time k * timeStep).
 struct Recording {
     float timeStep = 1.0f / 60.0f;
-    float settle = 0.0f;                              ///< seconds before timing starts
+    float settle = 0.0f;                               ///< seconds before timing starts
     std::map<std::string, std::vector<Sample>> tagged; ///< per tag, every instant (first body)
     /// Per tag, the bodies after the first that carry the same tag, each every instant: a
     /// check on a tag judges every body that has it.
     std::map<std::string, std::vector<std::vector<Sample>>> moreTagged;
-    std::vector<float> kineticEnergy;                  ///< J, dynamic bodies
-    std::vector<glm::vec2> momentum;                   ///< kg m/s, dynamic bodies
-    std::vector<float> maxSpeed;                       ///< m/s, fastest dynamic body
+    std::vector<float> kineticEnergy; ///< J, dynamic bodies
+    std::vector<glm::vec2> momentum;  ///< kg m/s, dynamic bodies
+    std::vector<float> maxSpeed;      ///< m/s, fastest dynamic body
     /// m, per instant: the largest joint error, over the revolute and weld joints the distance
     /// between their two anchors, over wheel joints the distance of B's anchor off the axis
     /// through A's anchor (the axis turning with body A), over rigid distance joints
     /// |length - rest length|; empty when the scene has none of these.
     std::vector<float> jointError;
-    std::vector<float> penetration;                    ///< m, deepest contact
-    std::vector<bool> allAsleep;                       ///< every dynamic body asleep
-    std::vector<double> stepMs;                        ///< wall time of each step
+    std::vector<float> penetration; ///< m, deepest contact
+    std::vector<bool> allAsleep;    ///< every dynamic body asleep
+    std::vector<double> stepMs;     ///< wall time of each step
 
     [[nodiscard]] int instants() const { return static_cast<int>(kineticEnergy.size()); }
     [[nodiscard]] float time(int instant) const { return static_cast<float>(instant) * timeStep; }
@@ -80,13 +80,13 @@ private:
 
 /// Summary numbers of a run (see validation/README.md, "Metrics").
 struct Metrics {
-    double msMedian = 0.0;          ///< median ms per step after `settle`
-    double msP95 = 0.0;             ///< 95th percentile ms per step after `settle`
-    float maxPenetration = 0.0f;    ///< deepest contact after `settle`, metres
-    float maxSpeed = 0.0f;          ///< fastest dynamic body over the whole run, m/s
+    double msMedian = 0.0;       ///< median ms per step after `settle`
+    double msP95 = 0.0;          ///< 95th percentile ms per step after `settle`
+    float maxPenetration = 0.0f; ///< deepest contact after `settle`, metres
+    float maxSpeed = 0.0f;       ///< fastest dynamic body over the whole run, m/s
     float finalKineticEnergy = 0.0f;
-    std::optional<float> topDrift;  ///< |x_end - x_start| of the body tagged "top", metres
-    std::optional<bool> standing;   ///< top body within one half-size of its start
+    std::optional<float> topDrift;    ///< |x_end - x_start| of the body tagged "top", metres
+    std::optional<bool> standing;     ///< top body within one half-size of its start
     std::optional<float> timeToSleep; ///< first time every dynamic body was asleep, seconds
 };
 

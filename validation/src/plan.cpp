@@ -60,7 +60,8 @@ std::vector<std::pair<std::string, EngineConfig>> sweepPoints(const EngineConfig
         }
     } else {
         // Velocity iterations do most of the work; position iterations grow slowly with them.
-        const std::vector<std::pair<int, int>> full{{1, 1}, {2, 1}, {4, 2}, {8, 3}, {16, 6}, {32, 10}};
+        const std::vector<std::pair<int, int>> full{{1, 1}, {2, 1},  {4, 2},
+                                                    {8, 3}, {16, 6}, {32, 10}};
         const std::vector<std::pair<int, int>> quick{{2, 1}, {8, 3}};
         for (auto [v, p] : level == SweepLevel::Full ? full : quick) {
             EngineConfig c = awake;
@@ -133,7 +134,8 @@ std::vector<RunSpec> makePlan(const std::vector<Scenario>& scenarios,
             // The joints family sweeps each joint model of the soft step (one collision
             // algorithm: they differ in joints only): the error-against-cost curves of the
             // report's joints plot.
-            if (s.family == "joints" && base.engine == "e2d" && base.solver == "soft" && base.collision == "sat") {
+            if (s.family == "joints" && base.engine == "e2d" && base.solver == "soft" &&
+                base.collision == "sat") {
                 for (const char* model : {"gauss-seidel", "soft"}) {
                     EngineConfig other = base;
                     other.jointSolver = model;

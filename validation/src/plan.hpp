@@ -21,10 +21,10 @@ enum class RunRole {
 [[nodiscard]] std::string effortLabel(const EngineConfig& config);
 
 struct RunSpec {
-    int scenario = 0;        ///< index into the scenario list
+    int scenario = 0; ///< index into the scenario list
     RunRole role = RunRole::Baseline;
     EngineConfig config;
-    std::string variant;     ///< sweep point or feature switch, e.g. "vel 4" or "ccd off"
+    std::string variant; ///< sweep point or feature switch, e.g. "vel 4" or "ccd off"
 };
 
 /// How much of the sweep to run.
@@ -36,13 +36,13 @@ enum class SweepLevel { None, Quick, Full };
 
 /// Sweep points of one baseline: the solver effort (iterations or sub-steps) from low to high,
 /// with sleeping off. The same points for every scenario: nothing is tuned per scenario.
-[[nodiscard]] std::vector<std::pair<std::string, EngineConfig>> sweepPoints(
-    const EngineConfig& baseline, SweepLevel level);
+[[nodiscard]] std::vector<std::pair<std::string, EngineConfig>>
+sweepPoints(const EngineConfig& baseline, SweepLevel level);
 
 /// The baseline with sleeping off and one optional feature switched, labelled ("ccd off",
 /// "speculative 0", ...). Compared with the sweep point at the baseline's effort.
-[[nodiscard]] std::vector<std::pair<std::string, EngineConfig>> featureVariants(
-    const EngineConfig& baseline);
+[[nodiscard]] std::vector<std::pair<std::string, EngineConfig>>
+featureVariants(const EngineConfig& baseline);
 
 /// Every run for `scenarios` on `engines`. Sweep and feature runs only for scenarios whose
 /// `sweep` flag is set.

@@ -22,9 +22,9 @@ struct Environment {
     std::string cpu;
     int cores = 0;
     int threads = 0;
-    std::string date;       ///< UTC, ISO 8601
+    std::string date; ///< UTC, ISO 8601
     std::string command;
-    std::string sweep;      ///< none, quick or full
+    std::string sweep; ///< none, quick or full
     double wallSeconds = 0.0;
 };
 
@@ -53,7 +53,8 @@ struct SummaryCell {
 /// run), and the measurement of every check on each.
 struct HardCaseRow {
     std::size_t scenario = 0;
-    std::vector<std::pair<std::string, const RunResult*>> runs; ///< engine family, run (may be null)
+    std::vector<std::pair<std::string, const RunResult*>>
+        runs; ///< engine family, run (may be null)
     /// Per check: "kind(body) [expected e, tolerance t]: box2d m1, e2d soft sat m2 FAIL (detail), ...".
     std::vector<std::string> numbers;
 };
@@ -63,15 +64,15 @@ struct HardCaseRow {
 /// scenarios.
 struct SweepPoint {
     std::string label;
-    int effort = 0;         ///< iterations or sub-steps: the order along the curve
-    double ms = 0.0;        ///< sum of the median ms/step
-    double error = 0.0;     ///< mean normalised error (1 = at tolerance)
-    int failed = 0;         ///< scenarios with a failed check
+    int effort = 0;     ///< iterations or sub-steps: the order along the curve
+    double ms = 0.0;    ///< sum of the median ms/step
+    double error = 0.0; ///< mean normalised error (1 = at tolerance)
+    int failed = 0;     ///< scenarios with a failed check
     int scenarios = 0;
 };
 /// curves[scenario family][engine family], in order of solver effort.
-[[nodiscard]] std::map<std::string, std::map<std::string, std::vector<SweepPoint>>> sweepCurves(
-    const Report& report);
+[[nodiscard]] std::map<std::string, std::map<std::string, std::vector<SweepPoint>>>
+sweepCurves(const Report& report);
 
 /// The effect of one feature switch on a scenario family, against the reference runs of the
 /// same scenarios: the sweep point at the baseline's effort (sleeping off). The "sleep on" row
@@ -87,8 +88,8 @@ struct FeatureCost {
     int scenarios = 0;
 };
 /// costs[scenario family][engine family]
-[[nodiscard]] std::map<std::string, std::map<std::string, std::vector<FeatureCost>>> featureCosts(
-    const Report& report);
+[[nodiscard]] std::map<std::string, std::map<std::string, std::vector<FeatureCost>>>
+featureCosts(const Report& report);
 
 /// Exit status: 0 when every baseline check passed, 1 otherwise.
 [[nodiscard]] int exitStatus(const Report& report);

@@ -68,7 +68,8 @@ void environmentSection(std::ostringstream& o, const Report& r) {
 
 void enginesSection(std::ostringstream& o, const Report& r) {
     o << "<h2>Engines, settings and translation</h2>\n<table>\n"
-         "<tr><th>engine</th><th>baseline settings</th><th>translation and fixed settings</th></tr>\n";
+         "<tr><th>engine</th><th>baseline settings</th><th>translation and fixed "
+         "settings</th></tr>\n";
     std::set<std::string> seen;
     for (const RunResult& run : r.runs) {
         const std::string f = run.spec.config.family();
@@ -97,7 +98,8 @@ void hardCaseTableHtml(std::ostringstream& o, const Report& r) {
     o << "<th>key numbers (each check: expected, tolerance, each engine's measurement)</th></tr>\n";
     for (const HardCaseRow& row : rows) {
         const Scenario& s = r.scenarios[row.scenario];
-        o << "<tr><td title=\"" << escapeHtml(s.description) << "\">" << escapeHtml(s.name) << "</td>";
+        o << "<tr><td title=\"" << escapeHtml(s.description) << "\">" << escapeHtml(s.name)
+          << "</td>";
         for (const auto& [family, run] : row.runs) {
             if (run == nullptr) {
                 o << "<td>-</td>";
@@ -139,7 +141,9 @@ void summarySection(std::ostringstream& o, const Report& r) {
                 continue;
             }
             const RunResult& run = *it->second.run;
-            const char* cls = it->second.worseThanReference ? "worse" : run.passed ? "pass" : "fail";
+            const char* cls = it->second.worseThanReference ? "worse"
+                              : run.passed                  ? "pass"
+                                                            : "fail";
             std::string tip;
             for (const CheckResult& c : run.checks) {
                 tip += c.kind + ": " + fmt(c.measured) + " vs " + fmt(c.expected) + " (" +
@@ -206,7 +210,8 @@ void familySections(std::ostringstream& o, const Report& r) {
     const std::vector<std::string> families = engineFamilies(r);
     const auto curves = sweepCurves(r);
     const auto costs = featureCosts(r);
-    std::vector<std::string> order{"stacking", "friction", "restitution", "conservation", "joints", "hard"};
+    std::vector<std::string> order{"stacking",     "friction", "restitution",
+                                   "conservation", "joints",   "hard"};
     o << "<h2>Speed against error, per family</h2>\n<p class=\"note\">Each point sums the median "
          "ms/step over the family's swept scenarios (x) and averages their error as a fraction of "
          "tolerance (y; 1 = at the limit, lower is better); points are the sweep of solver effort "
@@ -240,15 +245,20 @@ void familySections(std::ostringstream& o, const Report& r) {
             }
             // Sweep points joined in order of cost.
             plot.series.push_back(s);
-            PlotSeries front{engine + " Pareto front", colorOf(engine, families), paretoFront(pts),
-                             true, false, {}};
+            PlotSeries front{engine + " Pareto front",
+                             colorOf(engine, families),
+                             paretoFront(pts),
+                             true,
+                             false,
+                             {}};
             plot.series.push_back(front);
         }
         plot.title += " (" + std::to_string(scenarios) + " scenarios)";
         o << renderSvg(plot);
     }
     o << "</div>\n";
-    o << "<details><summary>Sweep points as a table (click to open)</summary>\n<table>\n<tr><th>family</th><th>engine</th><th>effort</th>"
+    o << "<details><summary>Sweep points as a table (click to "
+         "open)</summary>\n<table>\n<tr><th>family</th><th>engine</th><th>effort</th>"
          "<th>ms/step (sum)</th><th>mean error / tol</th><th>scenarios failed</th></tr>\n";
     for (const std::string& family : order) {
         auto it = curves.find(family);
@@ -283,7 +293,8 @@ void familySections(std::ostringstream& o, const Report& r) {
         }
         for (const auto& [engine, list] : it->second) {
             for (const FeatureCost& c : list) {
-                const double change = c.baselineMs > 0.0 ? 100.0 * (c.ms / c.baselineMs - 1.0) : 0.0;
+                const double change =
+                    c.baselineMs > 0.0 ? 100.0 * (c.ms / c.baselineMs - 1.0) : 0.0;
                 const bool worse = c.failed > c.baselineFailed;
                 o << "<tr><td>" << family << "</td><td>" << escapeHtml(engine) << "</td><td>"
                   << escapeHtml(c.feature) << "</td><td class=\"num\">" << fmt(c.baselineMs, 3)
@@ -319,8 +330,8 @@ void seriesSection(std::ostringstream& o, const Report& r) {
                     p.yLabel = s.name.substr(0, s.name.find(';')) + ", " + s.unit;
                     p.width = 440.0;
                     p.height = 280.0;
-                    PlotSeries expected{s.name.substr(s.name.find(';') + 2), "#000", {}, true,
-                                        false, {}};
+                    PlotSeries expected{
+                        s.name.substr(s.name.find(';') + 2), "#000", {}, true, false, {}};
                     for (std::size_t j = 0; j < s.t.size() && j < s.expected.size(); ++j) {
                         expected.points.emplace_back(s.t[j], s.expected[j]);
                     }
@@ -328,7 +339,10 @@ void seriesSection(std::ostringstream& o, const Report& r) {
                     plots.push_back(p);
                 }
                 PlotSeries measured{run.spec.config.family(),
-                                    colorOf(run.spec.config.family(), families), {}, false, false,
+                                    colorOf(run.spec.config.family(), families),
+                                    {},
+                                    false,
+                                    false,
                                     {}};
                 for (std::size_t j = 0; j < s.t.size(); ++j) {
                     measured.points.emplace_back(s.t[j], s.measured[j]);
@@ -430,11 +444,11 @@ void runsSection(std::ostringstream& o, const Report& r) {
           << fmt(m.msMedian, 3) << "</td><td class=\"num\">" << fmt(m.msP95, 3)
           << "</td><td class=\"num\">" << fmt(m.maxPenetration, 3) << "</td><td class=\"num\">"
           << fmt(m.maxSpeed, 3) << "</td><td class=\"num\">" << fmt(m.finalKineticEnergy, 3)
-          << "</td><td class=\"num\">" << (m.topDrift ? fmt(*m.topDrift, 3) : "-")
-          << "</td><td>" << (m.standing ? (*m.standing ? "yes" : "no") : "-")
-          << "</td><td class=\"num\">" << (m.timeToSleep ? fmt(*m.timeToSleep, 3) : "-")
-          << "</td><td class=\"num\">" << fmt(run.normalizedError, 3) << "</td><td class=\""
-          << (run.passed ? "pass" : "fail") << "\">"
+          << "</td><td class=\"num\">" << (m.topDrift ? fmt(*m.topDrift, 3) : "-") << "</td><td>"
+          << (m.standing ? (*m.standing ? "yes" : "no") : "-") << "</td><td class=\"num\">"
+          << (m.timeToSleep ? fmt(*m.timeToSleep, 3) : "-") << "</td><td class=\"num\">"
+          << fmt(run.normalizedError, 3) << "</td><td class=\"" << (run.passed ? "pass" : "fail")
+          << "\">"
           << (run.failure.empty() ? (run.passed ? "pass" : "fail") : escapeHtml(run.failure))
           << "</td></tr>\n";
     }
@@ -457,9 +471,10 @@ std::string reportToHtml(const Report& r) {
          "<title>e2d physics validation report</title>\n<style>"
       << kStyle << "</style>\n</head>\n<body>\n";
     o << "<h1>e2d physics validation: e2d and Box2D side by side</h1>\n";
-    o << "<p><b>" << (failed == 0 ? "All " + std::to_string(baselines) + " baseline runs passed."
-                                  : std::to_string(failed) + " of " + std::to_string(baselines) +
-                                        " baseline runs failed a check.")
+    o << "<p><b>"
+      << (failed == 0 ? "All " + std::to_string(baselines) + " baseline runs passed."
+                      : std::to_string(failed) + " of " + std::to_string(baselines) +
+                            " baseline runs failed a check.")
       << "</b> " << r.scenarios.size() << " scenarios, " << r.runs.size() << " runs.</p>\n";
     environmentSection(o, r);
     summarySection(o, r);

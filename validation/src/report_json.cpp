@@ -30,12 +30,9 @@ const char* shapeKindName(scenes::ShapeKind kind) {
 }
 
 json configJson(const EngineConfig& c) {
-    json j{{"engine", c.engine},
-           {"family", c.family()},
-           {"settings", c.describe()},
-           {"continuous", c.continuous},
-           {"sleeping", c.sleeping},
-           {"warmStarting", c.warmStarting}};
+    json j{{"engine", c.engine},       {"family", c.family()},
+           {"settings", c.describe()}, {"continuous", c.continuous},
+           {"sleeping", c.sleeping},   {"warmStarting", c.warmStarting}};
     if (c.engine == "e2d") {
         j["solver"] = c.solver;
         j["collision"] = c.collision;
@@ -145,12 +142,18 @@ json runJson(const Report& report, const RunResult& r) {
 
 json reportToJson(const Report& report) {
     const Environment& e = report.env;
-    json env{{"e2dVersion", e.e2dVersion}, {"box2dVersion", e.box2dVersion},
-             {"compiler", e.compiler},     {"buildType", e.buildType},
-             {"flags", e.flags},           {"cpu", e.cpu},
-             {"cores", e.cores},           {"threads", e.threads},
-             {"date", e.date},             {"command", e.command},
-             {"sweep", e.sweep},           {"wallSeconds", number(e.wallSeconds)}};
+    json env{{"e2dVersion", e.e2dVersion},
+             {"box2dVersion", e.box2dVersion},
+             {"compiler", e.compiler},
+             {"buildType", e.buildType},
+             {"flags", e.flags},
+             {"cpu", e.cpu},
+             {"cores", e.cores},
+             {"threads", e.threads},
+             {"date", e.date},
+             {"command", e.command},
+             {"sweep", e.sweep},
+             {"wallSeconds", number(e.wallSeconds)}};
     json engines = json::array();
     for (const RunResult& r : report.runs) {
         if (r.spec.role != RunRole::Baseline || r.spec.scenario != 0) {
@@ -225,16 +228,11 @@ json reportToJson(const Report& report) {
             features[family][engine] = list;
         }
     }
-    return {{"tool", "e2d-validate"},
-            {"environment", env},
-            {"engines", engines},
-            {"passed", exitStatus(report) == 0},
-            {"hardCases", hardCases},
-            {"summary", summary},
-            {"sweeps", sweeps},
-            {"features", features},
-            {"scenarios", scenarios},
-            {"runs", runs}};
+    return {{"tool", "e2d-validate"}, {"environment", env},
+            {"engines", engines},     {"passed", exitStatus(report) == 0},
+            {"hardCases", hardCases}, {"summary", summary},
+            {"sweeps", sweeps},       {"features", features},
+            {"scenarios", scenarios}, {"runs", runs}};
 }
 
 } // namespace e2d::validation

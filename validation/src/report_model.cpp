@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <set>
+#include <sstream>
 
 namespace e2d::validation {
 
@@ -39,9 +39,9 @@ std::vector<std::map<std::string, SummaryCell>> summaryTable(const Report& repor
             const RunResult& e = *cell.run;
             // Worse: fails where Box2D passes, or (both judged the same) a larger error by more
             // than 10 % of the tolerance.
-            cell.worseThanReference = (b.passed && !e.passed) ||
-                                      (b.passed == e.passed &&
-                                       e.normalizedError > b.normalizedError + 0.1);
+            cell.worseThanReference =
+                (b.passed && !e.passed) ||
+                (b.passed == e.passed && e.normalizedError > b.normalizedError + 0.1);
         }
     }
     return table;
@@ -72,7 +72,8 @@ std::vector<HardCaseRow> hardCaseTable(const Report& report) {
             shown.push_back(f);
         }
     }
-    std::stable_partition(shown.begin(), shown.end(), [](const std::string& f) { return f == "box2d"; });
+    std::stable_partition(shown.begin(), shown.end(),
+                          [](const std::string& f) { return f == "box2d"; });
     const auto table = summaryTable(report);
     std::vector<HardCaseRow> rows;
     for (std::size_t i = 0; i < report.scenarios.size(); ++i) {
@@ -94,7 +95,8 @@ std::vector<HardCaseRow> hardCaseTable(const Report& report) {
                 const CheckResult& c = run->checks[k];
                 if (text.empty()) {
                     text = c.kind + (c.body.empty() ? "" : "(" + c.body + ")") + " [expected " +
-                           shortNumber(c.expected) + ", tolerance " + shortNumber(c.tolerance) + "]:";
+                           shortNumber(c.expected) + ", tolerance " + shortNumber(c.tolerance) +
+                           "]:";
                 } else {
                     text += ",";
                 }
@@ -112,8 +114,8 @@ std::vector<HardCaseRow> hardCaseTable(const Report& report) {
     return rows;
 }
 
-std::map<std::string, std::map<std::string, std::vector<SweepPoint>>> sweepCurves(
-    const Report& report) {
+std::map<std::string, std::map<std::string, std::vector<SweepPoint>>>
+sweepCurves(const Report& report) {
     // family -> engine -> label -> points; only scenarios that have the whole sweep count, so
     // every point of a curve sums the same scenarios.
     std::map<std::string, std::map<std::string, std::map<std::string, SweepPoint>>> acc;
@@ -155,8 +157,8 @@ std::map<std::string, std::map<std::string, std::vector<SweepPoint>>> sweepCurve
     return out;
 }
 
-std::map<std::string, std::map<std::string, std::vector<FeatureCost>>> featureCosts(
-    const Report& report) {
+std::map<std::string, std::map<std::string, std::vector<FeatureCost>>>
+featureCosts(const Report& report) {
     // Reference of each (scenario, engine family): the sweep point at the baseline's effort.
     std::map<std::pair<int, std::string>, const RunResult*> baselines;
     for (const RunResult& r : report.runs) {

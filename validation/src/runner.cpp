@@ -105,8 +105,8 @@ std::vector<RunResult> runPlan(const std::vector<Scenario>& scenarios,
     auto worker = [&] {
         for (std::size_t n = next++; n < order.size(); n = next++) {
             const std::size_t i = order[n];
-            RunResult r =
-                runOne(scenarios[static_cast<std::size_t>(plan[i].scenario)], plan[i], stepProgress);
+            RunResult r = runOne(scenarios[static_cast<std::size_t>(plan[i].scenario)], plan[i],
+                                 stepProgress);
             std::lock_guard lock(mutex);
             results[i] = std::move(r);
             ++done;

@@ -17,15 +17,15 @@ struct RunResult {
     RunSpec spec;
     int bodies = 0;
     int steps = 0;
-    double seconds = 0.0;         ///< wall time of the whole run, recording included
+    double seconds = 0.0; ///< wall time of the whole run, recording included
     Metrics metrics;
     std::vector<CheckResult> checks;
-    std::vector<Series> series;   ///< baseline runs only
-    bool passed = false;          ///< every check passed and the run did not fail
+    std::vector<Series> series; ///< baseline runs only
+    bool passed = false;        ///< every check passed and the run did not fail
     /// Largest error / tolerance over the checks (1 = at the limit): the y axis of the
     /// speed-against-error plots. 0 when the scenario has no checks.
     double normalizedError = 0.0;
-    std::string failure;          ///< set when the engine threw
+    std::string failure; ///< set when the engine threw
 };
 
 /// Called from inside a long run, at most every `kStepProgressSeconds` of wall time, with the

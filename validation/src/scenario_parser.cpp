@@ -32,9 +32,14 @@ std::string typeName(const json& value) {
 // Keys and strings quoted from the file may hold any character JSON can escape (a NUL would
 // cut what() short): the message is made printable here, once.
 // `at` places a problem of the text itself (malformed JSON); the others are placed by `path`.
-[[noreturn]] void fail(const std::string& path, const std::string& message, core::TextPosition at = {0, 0}) {
-    throw ScenarioError(
-        core::Diagnostic{core::Severity::Error, {}, at.line, at.column, core::printable(path), core::printable(message)});
+[[noreturn]] void fail(const std::string& path, const std::string& message,
+                       core::TextPosition at = {0, 0}) {
+    throw ScenarioError(core::Diagnostic{core::Severity::Error,
+                                         {},
+                                         at.line,
+                                         at.column,
+                                         core::printable(path),
+                                         core::printable(message)});
 }
 
 std::string join(const std::string& path, const std::string& key) {
@@ -135,7 +140,8 @@ public:
         }
         if (!value->is_number_integer()) {
             fail(at(key), "expected an integer, got " +
-                              (value->is_number() ? core::formatNumber(value->get<double>()) : typeName(*value)));
+                              (value->is_number() ? core::formatNumber(value->get<double>())
+                                                  : typeName(*value)));
         }
         const auto v = value->get<long long>();
         if (v < lo || v > hi) {
@@ -242,7 +248,8 @@ public:
         if (std::abs(v) > physics::kHuge) {
             fail(path, "must be within e2d's limit of " + core::formatNumber(physics::kHuge) +
                            " (physics::kHuge: metres for positions and sizes, kg/m^2 for "
-                           "density), got " + core::formatNumber(v));
+                           "density), got " +
+                           core::formatNumber(v));
         }
     }
     static void checkWithinE2d(glm::vec2 v, const std::string& path) {
@@ -252,8 +259,8 @@ public:
 
     static void checkAbove(float v, const std::string& path, float lo, bool strict) {
         if (strict ? !(v > lo) : !(v >= lo)) {
-            fail(path, std::string("must be ") + (strict ? "> " : ">= ") + core::formatNumber(lo) + ", got " +
-                           core::formatNumber(v));
+            fail(path, std::string("must be ") + (strict ? "> " : ">= ") + core::formatNumber(lo) +
+                           ", got " + core::formatNumber(v));
         }
     }
 
@@ -284,8 +291,9 @@ void parseChain(Object& o, scenes::ShapeDesc& shape) {
     const std::size_t minimum = shape.loop ? 3 : 2;
     if (points.size() < minimum || points.size() > kMaxChainPoints) {
         fail(o.at("points"), std::string(shape.loop ? "a loop" : "a chain") + " needs " +
-                                 std::to_string(minimum) + " to " + std::to_string(kMaxChainPoints) +
-                                 " points, got " + std::to_string(points.size()));
+                                 std::to_string(minimum) + " to " +
+                                 std::to_string(kMaxChainPoints) + " points, got " +
+                                 std::to_string(points.size()));
     }
     for (std::size_t i = 0; i < points.size(); ++i) {
         const glm::vec2 p = Object::toVec2(points[i], indexed(o.at("points"), i));
@@ -299,9 +307,10 @@ void parseChain(Object& o, scenes::ShapeDesc& shape) {
         const glm::vec2 d = shape.points[next] - shape.points[i];
         const float gap = std::sqrt(d.x * d.x + d.y * d.y);
         if (!(gap >= physics::kLinearSlop)) {
-            fail(indexed(o.at("points"), next),
-                 "must be at least physics::kLinearSlop (" + core::formatNumber(physics::kLinearSlop) +
-                     " m) from points[" + std::to_string(i) + "], got " + core::formatNumber(gap));
+            fail(indexed(o.at("points"), next), "must be at least physics::kLinearSlop (" +
+                                                    core::formatNumber(physics::kLinearSlop) +
+                                                    " m) from points[" + std::to_string(i) +
+                                                    "], got " + core::formatNumber(gap));
         }
     }
     for (const char* key : {"ghostBefore", "ghostAfter"}) {
@@ -318,8 +327,9 @@ void parseChain(Object& o, scenes::ShapeDesc& shape) {
     if (const json* materials = o.get("materials")) {
         requireArray(*materials, o.at("materials"));
         if (materials->size() != 1 && materials->size() != segments) {
-            fail(o.at("materials"), "give one material or one per segment (" + std::to_string(segments) +
-                                        "), got " + std::to_string(materials->size()));
+            fail(o.at("materials"), "give one material or one per segment (" +
+                                        std::to_string(segments) + "), got " +
+                                        std::to_string(materials->size()));
         }
         for (std::size_t i = 0; i < materials->size(); ++i) {
             Object m((*materials)[i], indexed(o.at("materials"), i));
@@ -327,7 +337,8 @@ void parseChain(Object& o, scenes::ShapeDesc& shape) {
             material.friction = m.numberAbove("friction", shape.friction, 0.0f, false);
             material.restitution = m.numberAbove("restitution", shape.restitution, 0.0f, false);
             if (material.restitution > 1.0f) {
-                fail(m.at("restitution"), "must be in [0, 1] (e2d's limit), got " + core::formatNumber(material.restitution));
+                fail(m.at("restitution"), "must be in [0, 1] (e2d's limit), got " +
+                                              core::formatNumber(material.restitution));
             }
             m.finish();
             shape.materials.push_back(material);
@@ -338,12 +349,14 @@ void parseChain(Object& o, scenes::ShapeDesc& shape) {
 scenes::ShapeDesc parseShape(const json& value, const std::string& path) {
     Object o(value, path);
     scenes::ShapeDesc shape;
-    const std::string type = o.choice("type", {"box", "polygon", "circle", "capsule", "segment", "chain"});
+    const std::string type =
+        o.choice("type", {"box", "polygon", "circle", "capsule", "segment", "chain"});
     shape.density = o.numberAbove("density", 1.0f, 0.0f, false);
     shape.friction = o.numberAbove("friction", 0.6f, 0.0f, false);
     shape.restitution = o.numberAbove("restitution", 0.0f, 0.0f, false);
     if (shape.restitution > 1.0f) {
-        fail(o.at("restitution"), "must be in [0, 1] (e2d's limit), got " + core::formatNumber(shape.restitution));
+        fail(o.at("restitution"),
+             "must be in [0, 1] (e2d's limit), got " + core::formatNumber(shape.restitution));
     }
     if (type == "box") {
         shape.kind = scenes::ShapeKind::Box;
@@ -374,8 +387,8 @@ scenes::ShapeDesc parseShape(const json& value, const std::string& path) {
         }
         if (distinct.size() < 3) {
             fail(o.at("points"), "e2d welds points closer than physics::kLinearSlop (" +
-                                     core::formatNumber(physics::kLinearSlop) + " m): " +
-                                     std::to_string(distinct.size()) + " of " +
+                                     core::formatNumber(physics::kLinearSlop) +
+                                     " m): " + std::to_string(distinct.size()) + " of " +
                                      std::to_string(shape.points.size()) +
                                      " are distinct, a polygon needs 3");
         }
@@ -454,7 +467,8 @@ scenes::BodyDesc parseBody(const json& value, const std::string& path, float dur
     body.tag = o.string("tag", "");
     body.gravityScale = o.number("gravityScale", 1.0f);
     if (std::abs(body.gravityScale) > 1000.0f) {
-        fail(o.at("gravityScale"), "must be in [-1000, 1000], got " + core::formatNumber(body.gravityScale));
+        fail(o.at("gravityScale"),
+             "must be in [-1000, 1000], got " + core::formatNumber(body.gravityScale));
     }
     body.force = o.vec2("force", {0.0f, 0.0f});
     if (const json* impulses = o.get("impulses")) {
@@ -463,13 +477,16 @@ scenes::BodyDesc parseBody(const json& value, const std::string& path, float dur
             Object im((*impulses)[i], indexed(o.at("impulses"), i));
             const float time = im.numberAbove("time", 0.0f, 0.0f, false);
             if (time > duration) {
-                fail(im.at("time"), "must be <= duration (" + core::formatNumber(duration) + "), got " + core::formatNumber(time));
+                fail(im.at("time"), "must be <= duration (" + core::formatNumber(duration) +
+                                        "), got " + core::formatNumber(time));
             }
-            body.impulses.emplace_back(time, Object::toVec2(im.require("impulse"), im.at("impulse")));
+            body.impulses.emplace_back(time,
+                                       Object::toVec2(im.require("impulse"), im.at("impulse")));
             im.finish();
         }
     }
-    if (body.kind != scenes::BodyKind::Dynamic && (body.force != glm::vec2(0.0f) || !body.impulses.empty())) {
+    if (body.kind != scenes::BodyKind::Dynamic &&
+        (body.force != glm::vec2(0.0f) || !body.impulses.empty())) {
         fail(o.at(body.force != glm::vec2(0.0f) ? "force" : "impulses"),
              "only a dynamic body can be pushed");
     }
@@ -502,7 +519,8 @@ LayoutParams parseLayout(Object& o, const std::string& defaultTag) {
     Object::checkWithinE2d(p.density, o.at("density"));
     p.restitution = o.numberAbove("restitution", 0.0f, 0.0f, false);
     if (p.restitution > 1.0f) {
-        fail(o.at("restitution"), "must be in [0, 1] (e2d's limit), got " + core::formatNumber(p.restitution));
+        fail(o.at("restitution"),
+             "must be in [0, 1] (e2d's limit), got " + core::formatNumber(p.restitution));
     }
     p.ground = o.boolean("ground", true);
     p.tag = o.string("tag", defaultTag);
@@ -598,7 +616,8 @@ Check parseCheck(const json& value, const std::string& path, const Scenario& sce
     auto timeWithin = [&](const char* key) {
         const float t = positive(key);
         if (t > scenario.duration) {
-            fail(o.at(key), "must be <= duration (" + core::formatNumber(scenario.duration) + "), got " + core::formatNumber(t));
+            fail(o.at(key), "must be <= duration (" + core::formatNumber(scenario.duration) +
+                                "), got " + core::formatNumber(t));
         }
         return t;
     };
@@ -617,7 +636,8 @@ Check parseCheck(const json& value, const std::string& path, const Scenario& sce
         c.restY = o.requireNumber("restY");
         c.restitution = o.requireNumber("restitution");
         if (!(c.restitution >= 0.0f && c.restitution <= 1.0f)) {
-            fail(o.at("restitution"), "must be in [0, 1], got " + core::formatNumber(c.restitution));
+            fail(o.at("restitution"),
+                 "must be in [0, 1], got " + core::formatNumber(c.restitution));
         }
         break;
     case CheckKind::SlideDistance:
@@ -625,8 +645,9 @@ Check parseCheck(const json& value, const std::string& path, const Scenario& sce
         tolerance();
         c.slopeAngle = o.angle("slope", 0.0f);
         if (!(c.slopeAngle > 0.0f && c.slopeAngle < 0.5f * std::numbers::pi_v<float>)) {
-            fail(o.at("slopeDeg"), "the slope must be in (0, 90) degrees, got " +
-                                       core::formatNumber(c.slopeAngle * 180.0f / std::numbers::pi_v<float>));
+            fail(o.at("slopeDeg"),
+                 "the slope must be in (0, 90) degrees, got " +
+                     core::formatNumber(c.slopeAngle * 180.0f / std::numbers::pi_v<float>));
         }
         if (c.kind == CheckKind::SlideDistance) {
             c.friction = o.numberAbove("friction", 0.0f, 0.0f, false);
@@ -676,16 +697,16 @@ Check parseCheck(const json& value, const std::string& path, const Scenario& sce
     }
     case CheckKind::JointError: {
         c.limit = positive("limit");
-        const bool measured = std::any_of(scenario.scene.joints.begin(), scenario.scene.joints.end(),
-                                          [](const scenes::JointDesc& j) {
-                                              return j.kind == scenes::JointKind::Revolute ||
-                                                     j.kind == scenes::JointKind::Weld ||
-                                                     j.kind == scenes::JointKind::Wheel ||
-                                                     (j.kind == scenes::JointKind::Distance &&
-                                                      !j.enableSpring && !j.enableLimit);
-                                          });
+        const bool measured = std::any_of(
+            scenario.scene.joints.begin(), scenario.scene.joints.end(),
+            [](const scenes::JointDesc& j) {
+                return j.kind == scenes::JointKind::Revolute || j.kind == scenes::JointKind::Weld ||
+                       j.kind == scenes::JointKind::Wheel ||
+                       (j.kind == scenes::JointKind::Distance && !j.enableSpring && !j.enableLimit);
+            });
         if (!measured) {
-            fail(o.at("type"), "the scene has no joint this check measures (revolute, weld, wheel or rigid distance)");
+            fail(o.at("type"), "the scene has no joint this check measures (revolute, weld, wheel "
+                               "or rigid distance)");
         }
         break;
     }
@@ -843,7 +864,8 @@ private:
 
 // A joint's body: an index into the file's `bodies` array (after the generators' bodies in the
 // scene), or a tag that exactly one body carries.
-int jointBody(Object& o, const std::string& key, const scenes::SceneDesc& scene, std::size_t generated) {
+int jointBody(Object& o, const std::string& key, const scenes::SceneDesc& scene,
+              std::size_t generated) {
     const json& v = o.require(key);
     if (v.is_string()) {
         const std::string tag = v.get<std::string>();
@@ -870,14 +892,15 @@ int jointBody(Object& o, const std::string& key, const scenes::SceneDesc& scene,
     }
     const std::size_t own = scene.bodies.size() - generated;
     if (own == 0) {
-        fail(o.at(key), "the file has no bodies to join by index (generators' bodies are named by tag)");
+        fail(o.at(key),
+             "the file has no bodies to join by index (generators' bodies are named by tag)");
     }
     const int index = o.integer(key, 0, 0, static_cast<int>(own) - 1);
     return static_cast<int>(generated) + index;
 }
 
-scenes::JointDesc parseJoint(const json& value, const std::string& path, const scenes::SceneDesc& scene,
-                             std::size_t generated) {
+scenes::JointDesc parseJoint(const json& value, const std::string& path,
+                             const scenes::SceneDesc& scene, std::size_t generated) {
     Object o(value, path);
     scenes::JointDesc j;
     const std::string type =
@@ -892,7 +915,8 @@ scenes::JointDesc parseJoint(const json& value, const std::string& path, const s
     j.bodyA = jointBody(o, "bodyA", scene, generated);
     j.bodyB = jointBody(o, "bodyB", scene, generated);
     if (j.bodyA == j.bodyB) {
-        fail(o.at("bodyB"), "must differ from bodyA (both are body " + std::to_string(j.bodyA) + ")");
+        fail(o.at("bodyB"),
+             "must differ from bodyA (both are body " + std::to_string(j.bodyA) + ")");
     }
     if (scene.bodies[std::size_t(j.bodyA)].kind != scenes::BodyKind::Dynamic &&
         scene.bodies[std::size_t(j.bodyB)].kind != scenes::BodyKind::Dynamic) {
@@ -909,8 +933,8 @@ scenes::JointDesc parseJoint(const json& value, const std::string& path, const s
         const bool low = o.has(lowKey) || (angle && o.has(lowKey + "Deg"));
         const bool high = o.has(highKey) || (angle && o.has(highKey + "Deg"));
         if (low != high) {
-            fail(o.at(low ? highKey : lowKey), "required field is missing (a limit needs " + lowKey +
-                                                   " and " + highKey + ")");
+            fail(o.at(low ? highKey : lowKey),
+                 "required field is missing (a limit needs " + lowKey + " and " + highKey + ")");
         }
         if (!low) {
             return;
@@ -921,14 +945,16 @@ scenes::JointDesc parseJoint(const json& value, const std::string& path, const s
         Object::checkWithinE2d(j.lower, o.at(lowKey));
         Object::checkWithinE2d(j.upper, o.at(highKey));
         if (!(j.lower <= j.upper)) {
-            fail(o.at(highKey), "must be >= " + lowKey + " (" + core::formatNumber(j.lower) + "), got " + core::formatNumber(j.upper));
+            fail(o.at(highKey), "must be >= " + lowKey + " (" + core::formatNumber(j.lower) +
+                                    "), got " + core::formatNumber(j.upper));
         }
     };
     auto motor = [&](const char* maxKey) {
         if (!o.has(maxKey)) {
             if (o.has("motorSpeed")) {
-                fail(o.at(maxKey), std::string("required field is missing (a motor needs motorSpeed and ") +
-                                       maxKey + ")");
+                fail(o.at(maxKey),
+                     std::string("required field is missing (a motor needs motorSpeed and ") +
+                         maxKey + ")");
             }
             return;
         }
@@ -943,7 +969,8 @@ scenes::JointDesc parseJoint(const json& value, const std::string& path, const s
     auto spring = [&](bool required, float defaultHertz, float defaultRatio) {
         if (!required && !o.has("hertz")) {
             if (o.has("dampingRatio")) {
-                fail(o.at("hertz"), "required field is missing (a spring needs hertz; dampingRatio alone does nothing)");
+                fail(o.at("hertz"), "required field is missing (a spring needs hertz; dampingRatio "
+                                    "alone does nothing)");
             }
             return;
         }
@@ -999,7 +1026,8 @@ scenes::JointDesc parseJoint(const json& value, const std::string& path, const s
         j.maxTorque = o.numberAbove("maxTorque", 1.0f, 0.0f, false);
         j.correctionFactor = o.numberAbove("correctionFactor", 0.3f, 0.0f, false);
         if (j.correctionFactor > 1.0f) {
-            fail(o.at("correctionFactor"), "must be in [0, 1], got " + core::formatNumber(j.correctionFactor));
+            fail(o.at("correctionFactor"),
+                 "must be in [0, 1], got " + core::formatNumber(j.correctionFactor));
         }
         break;
     }
@@ -1021,8 +1049,9 @@ scenes::JointDesc parseJoint(const json& value, const std::string& path, const s
         // e2d and Box2D both hold lengths below the linear slop at the slop.
         if (j.length < physics::kLinearSlop) {
             fail(o.at(o.has("length") ? "length" : "anchorB"),
-                 "the length must be at least physics::kLinearSlop (" + core::formatNumber(physics::kLinearSlop) +
-                     " m), got " + core::formatNumber(j.length));
+                 "the length must be at least physics::kLinearSlop (" +
+                     core::formatNumber(physics::kLinearSlop) + " m), got " +
+                     core::formatNumber(j.length));
         }
         range("minLength", "maxLength", false);
         if (j.enableLimit && j.lower < 0.0f) {
@@ -1040,8 +1069,9 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     // Printing or copying a value recurses once per level: bound the depth before parsing.
     if (const auto deep = core::findJsonNestingBeyond(text)) {
         const core::TextPosition at = core::positionOf(text, *deep);
-        fail("", "arrays and objects nest deeper than " + std::to_string(core::kMaxJsonDepth) +
-                     " levels; a scenario needs 6",
+        fail("",
+             "arrays and objects nest deeper than " + std::to_string(core::kMaxJsonDepth) +
+                 " levels; a scenario needs 6",
              at);
     }
     json document;
@@ -1057,7 +1087,8 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     if (s.name.empty()) {
         fail("name", "must not be empty");
     }
-    s.family = root.choice("family", {"stacking", "friction", "restitution", "conservation", "joints", "hard"});
+    s.family = root.choice(
+        "family", {"stacking", "friction", "restitution", "conservation", "joints", "hard"});
     s.description = root.string("description", "");
     s.measures = root.string("measures", "");
     s.duration = root.numberAbove("duration", 5.0f, 0.0f, true);
@@ -1066,7 +1097,8 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     }
     s.settle = root.numberAbove("settle", std::min(1.0f, 0.5f * s.duration), 0.0f, false);
     if (s.settle >= s.duration) {
-        fail("settle", "must be < duration (" + core::formatNumber(s.duration) + "), got " + core::formatNumber(s.settle));
+        fail("settle", "must be < duration (" + core::formatNumber(s.duration) + "), got " +
+                           core::formatNumber(s.settle));
     }
     s.quick = root.boolean("quick", false);
     s.sweep = root.boolean("sweep", true);
@@ -1084,7 +1116,8 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     if (const double steps = std::round(double(s.duration) / s.scene.timeStep); steps > kMaxSteps) {
         fail("timeStep", "duration / timeStep must be at most " + core::formatNumber(kMaxSteps) +
                              " steps (600 s at 600 Hz), got " + core::formatNumber(s.duration) +
-                             " s / " + core::formatNumber(s.scene.timeStep) + " s = " + core::formatNumber(steps));
+                             " s / " + core::formatNumber(s.scene.timeStep) +
+                             " s = " + core::formatNumber(steps));
     }
     parseSettings(root, s);
 
@@ -1107,7 +1140,8 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
     if (const json* joints = root.get("joints")) {
         requireArray(*joints, "joints");
         for (std::size_t i = 0; i < joints->size(); ++i) {
-            s.scene.joints.push_back(parseJoint((*joints)[i], indexed("joints", i), s.scene, generated));
+            s.scene.joints.push_back(
+                parseJoint((*joints)[i], indexed("joints", i), s.scene, generated));
         }
     }
     if (const json* checks = root.get("checks")) {
@@ -1123,7 +1157,11 @@ Scenario parseScenario(std::string_view text, const std::string& fallbackName) {
 Scenario loadScenario(const std::filesystem::path& file) {
     const core::TextFile text = core::readTextFile(file);
     if (!text.ok()) {
-        throw ScenarioError(core::Diagnostic{core::Severity::Error, core::printable(file.string()), 0, 0, {},
+        throw ScenarioError(core::Diagnostic{core::Severity::Error,
+                                             core::printable(file.string()),
+                                             0,
+                                             0,
+                                             {},
                                              "cannot read the file (" + text.error + ")"});
     }
     try {

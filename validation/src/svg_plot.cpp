@@ -156,7 +156,8 @@ std::string renderSvg(const Plot& plot) {
       << "\" font-family=\"sans-serif\" font-size=\"11\">\n";
     o << "<rect x=\"0\" y=\"0\" width=\"" << num(w) << "\" height=\"" << num(h)
       << "\" fill=\"#fff\"/>\n";
-    o << "<text x=\"" << num(w / 2) << "\" y=\"16\" text-anchor=\"middle\" font-size=\"13\" "
+    o << "<text x=\"" << num(w / 2)
+      << "\" y=\"16\" text-anchor=\"middle\" font-size=\"13\" "
          "font-weight=\"bold\">"
       << escapeHtml(plot.title) << "</text>\n";
     // Grid and ticks.
@@ -171,14 +172,14 @@ std::string renderSvg(const Plot& plot) {
         const double py = sy(t);
         o << "<line x1=\"" << num(left) << "\" y1=\"" << num(py) << "\" x2=\"" << num(left + pw)
           << "\" y2=\"" << num(py) << "\" stroke=\"#e4e4e4\"/>\n";
-        o << "<text x=\"" << num(left - 4) << "\" y=\"" << num(py + 4)
-          << "\" text-anchor=\"end\">" << num(t) << "</text>\n";
+        o << "<text x=\"" << num(left - 4) << "\" y=\"" << num(py + 4) << "\" text-anchor=\"end\">"
+          << num(t) << "</text>\n";
     }
     o << "<rect x=\"" << num(left) << "\" y=\"" << num(top) << "\" width=\"" << num(pw)
       << "\" height=\"" << num(ph) << "\" fill=\"none\" stroke=\"#888\"/>\n";
     o << "<text x=\"" << num(left + pw / 2) << "\" y=\"" << num(top + ph + 32)
-      << "\" text-anchor=\"middle\">" << escapeHtml(plot.xLabel)
-      << (plot.logX ? " (log)" : "") << "</text>\n";
+      << "\" text-anchor=\"middle\">" << escapeHtml(plot.xLabel) << (plot.logX ? " (log)" : "")
+      << "</text>\n";
     o << "<text transform=\"translate(14," << num(top + ph / 2)
       << ") rotate(-90)\" text-anchor=\"middle\">" << escapeHtml(plot.yLabel)
       << (plot.logY ? " (log)" : "") << "</text>\n";

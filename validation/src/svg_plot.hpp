@@ -10,11 +10,11 @@ namespace e2d::validation {
 /// One curve of a plot.
 struct PlotSeries {
     std::string name;
-    std::string color;                           ///< CSS colour
+    std::string color; ///< CSS colour
     std::vector<std::pair<double, double>> points;
     bool dashed = false;
-    bool markers = false;                        ///< a dot at each point
-    std::vector<std::string> labels;             ///< optional, one per point, shown on hover
+    bool markers = false;            ///< a dot at each point
+    std::vector<std::string> labels; ///< optional, one per point, shown on hover
 };
 
 struct Plot {
@@ -36,8 +36,8 @@ struct Plot {
 
 /// The points of `points` that no other point beats on both axes (lower x and lower y are
 /// better), sorted by x: the Pareto front of a speed-against-error sweep.
-[[nodiscard]] std::vector<std::pair<double, double>> paretoFront(
-    std::vector<std::pair<double, double>> points);
+[[nodiscard]] std::vector<std::pair<double, double>>
+paretoFront(std::vector<std::pair<double, double>> points);
 
 /// Escapes &, <, >, " for HTML text and attributes.
 [[nodiscard]] std::string escapeHtml(const std::string& text);

@@ -36,7 +36,8 @@ class CliTest : public ::testing::Test {
 protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() /
-               ("e2d_cli_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+               ("e2d_cli_test_" +
+                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }

@@ -286,7 +286,8 @@ TEST(Evaluate, PeriodOfASampledSwing) {
     const double w = 2.0 * kPi / period;
     for (int k = 0; k <= 600; ++k) {
         const double t = k * double(rec.timeStep);
-        rec.tagged["bob"].push_back({{static_cast<float>(0.3 * std::cos(w * t)), 0.0f}, 0.0f,
+        rec.tagged["bob"].push_back({{static_cast<float>(0.3 * std::cos(w * t)), 0.0f},
+                                     0.0f,
                                      {static_cast<float>(-0.3 * w * std::sin(w * t)), 0.0f}});
         rec.kineticEnergy.push_back(0.0f);
     }
@@ -334,7 +335,9 @@ public:
     [[nodiscard]] int bodyCount() const override { return static_cast<int>(bodies.size()); }
     void readBodies(std::vector<BodyState>& out) const override { out = bodies; }
     [[nodiscard]] float maxPenetration() const override { return 0.0f; }
-    void readJointAnchors(std::vector<std::pair<glm::vec2, glm::vec2>>& out) const override { out = anchors; }
+    void readJointAnchors(std::vector<std::pair<glm::vec2, glm::vec2>>& out) const override {
+        out = anchors;
+    }
 };
 
 // A wheel joint's error is its wheel's anchor off the suspension axis, which turns with body A:

@@ -66,8 +66,8 @@ TEST(ReportHtml, IsSelfContainedAndBalanced) {
         SCOPED_TRACE(tag);
         const std::string close = std::string("</") + tag + ">";
         // "<p" also starts "<path": count only the element itself ("<p>" or "<p ").
-        const std::size_t opens = count(html, std::string("<") + tag + ">") +
-                                  count(html, std::string("<") + tag + " ");
+        const std::size_t opens =
+            count(html, std::string("<") + tag + ">") + count(html, std::string("<") + tag + " ");
         EXPECT_EQ(opens, count(html, close));
     }
     EXPECT_EQ(html.find("<script"), std::string::npos);
@@ -134,9 +134,10 @@ TEST(ReportModel, HardCasesHeadTheSummary) {
         r.checks = {c};
         return r;
     };
-    report.runs = {run(0, "box2d", "soft", "sat", true, 1.0), run(1, "e2d", "soft", "sat", false, 3.4),
-                   run(1, "e2d", "soft", "gjk", false, 3.5), run(1, "box2d", "soft", "sat", true, 0.5),
-                   run(1, "e2d", "classic", "gjk", true, 0.25)};
+    report.runs = {
+        run(0, "box2d", "soft", "sat", true, 1.0), run(1, "e2d", "soft", "sat", false, 3.4),
+        run(1, "e2d", "soft", "gjk", false, 3.5), run(1, "box2d", "soft", "sat", true, 0.5),
+        run(1, "e2d", "classic", "gjk", true, 0.25)};
     const std::vector<HardCaseRow> rows = hardCaseTable(report);
     ASSERT_EQ(rows.size(), 1u);
     EXPECT_EQ(rows[0].scenario, 1u);
@@ -145,10 +146,13 @@ TEST(ReportModel, HardCasesHeadTheSummary) {
     EXPECT_EQ(rows[0].runs[1].first, "e2d soft sat");
     EXPECT_EQ(rows[0].runs[2].first, "e2d classic gjk"); // no classic SAT run to prefer
     ASSERT_EQ(rows[0].numbers.size(), 1u);
-    EXPECT_EQ(rows[0].numbers[0], "maxSpeed [expected 3, tolerance 3]: box2d 0.5, e2d soft sat 3.4 FAIL, "
-                                  "e2d classic gjk 0.25");
+    EXPECT_EQ(rows[0].numbers[0],
+              "maxSpeed [expected 3, tolerance 3]: box2d 0.5, e2d soft sat 3.4 FAIL, "
+              "e2d classic gjk 0.25");
     const std::string summary = reportSummary(report);
-    EXPECT_EQ(summary.rfind("HARD  packed_discs: box2d PASS; e2d soft sat FAIL; e2d classic gjk PASS;", 0), 0u)
+    EXPECT_EQ(summary.rfind(
+                  "HARD  packed_discs: box2d PASS; e2d soft sat FAIL; e2d classic gjk PASS;", 0),
+              0u)
         << summary;
     const std::string html = reportToHtml(report);
     EXPECT_LT(html.find("id=\"hard-cases\""), html.find("<table class=\"summary\">"));

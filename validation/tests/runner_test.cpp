@@ -166,11 +166,13 @@ TEST(Runner, AScenarioBox2DCannotBuildFailsThatRunOnly) {
     const Scenario s = parseScenario(R"({"family": "hard", "duration": 0.5, "bodies": [
         {"type": "static", "position": [0, -1], "shape": {"type": "box", "halfExtents": [5, 1]}},
         {"position": [0, 0.0001], "tag": "speck", "shape": {"type": "box", "halfExtents": [0.0001, 0.0001]}}],
-        "checks": [{"type": "maxSpeed", "limit": 5}]})", "speck");
+        "checks": [{"type": "maxSpeed", "limit": 5}]})",
+                                     "speck");
     const RunResult box = runOne(s, box2d(8, 3));
     EXPECT_FALSE(box.passed);
-    EXPECT_EQ(box.failure, "Box2D 2.4 cannot build this scene: body 1 (\"speck\"), shape 0: box area "
-                           "4e-08 m^2 is not above b2_epsilon (Box2D 2.4's ComputeMass asserts)");
+    EXPECT_EQ(box.failure,
+              "Box2D 2.4 cannot build this scene: body 1 (\"speck\"), shape 0: box area "
+              "4e-08 m^2 is not above b2_epsilon (Box2D 2.4's ComputeMass asserts)");
     const RunResult ours = runOne(s, e2d("soft", 4, 8, 3));
     EXPECT_TRUE(ours.failure.empty()) << ours.failure;
     const std::vector<RunResult> all =
@@ -216,7 +218,8 @@ TEST(Runner, AnAbsurdVelocityNeverPassesOnInfinity) {
     const Scenario s = parseScenario(R"({"family": "hard", "duration": 0.2, "gravity": [0, 0],
         "bodies": [{"position": [0, 0], "linearVelocity": [1e30, 1e30], "tag": "ball",
                     "shape": {"type": "circle", "radius": 0.5}}],
-        "checks": [{"type": "maxSpeed", "limit": 1000}]})", "absurd");
+        "checks": [{"type": "maxSpeed", "limit": 1000}]})",
+                                     "absurd");
     for (const RunSpec& spec : {box2d(8, 3), e2d("soft", 4, 8, 3)}) {
         SCOPED_TRACE(spec.config.engine);
         const RunResult r = runOne(s, spec);
@@ -228,11 +231,14 @@ TEST(Runner, AnAbsurdVelocityNeverPassesOnInfinity) {
 TEST(Runner, LongRunsReportTheirProgress) {
     const Scenario s = shipped("drop_e050");
     std::vector<int> seen;
-    const RunResult r = runOne(s, box2d(8, 3), [&](const RunSpec&, int step, int steps, double seconds) {
-        EXPECT_EQ(steps, r.steps == 0 ? steps : r.steps);
-        EXPECT_GE(seconds, 0.0);
-        seen.push_back(step);
-    }, 0.0);
+    const RunResult r = runOne(
+        s, box2d(8, 3),
+        [&](const RunSpec&, int step, int steps, double seconds) {
+            EXPECT_EQ(steps, r.steps == 0 ? steps : r.steps);
+            EXPECT_GE(seconds, 0.0);
+            seen.push_back(step);
+        },
+        0.0);
     ASSERT_FALSE(seen.empty());
     EXPECT_EQ(seen.front(), 0); // the world is built
     EXPECT_EQ(seen.back(), r.steps);
@@ -305,7 +311,8 @@ TEST(Runner, ACheckOnASharedTagJudgesEveryBody) {
     const RunResult thrown = runOne(withSpeed("20"), box2d(8, 3));
     ASSERT_EQ(thrown.checks.size(), 1u);
     EXPECT_FALSE(thrown.checks[0].passed);
-    EXPECT_THAT(thrown.checks[0].detail, ::testing::StartsWith("worst of 2 bodies tagged top: body 2"));
+    EXPECT_THAT(thrown.checks[0].detail,
+                ::testing::StartsWith("worst of 2 bodies tagged top: body 2"));
 }
 
 // The joints of a scene are built in both engines: the shipped pendulum swings at its analytic
@@ -359,7 +366,9 @@ TEST(Runner, JointErrorCanFail) {
 }
 
 // The engines every joint and chain test runs on.
-std::vector<RunSpec> allEngines() { return {box2d(8, 3), e2d("soft", 4, 8, 3), e2d("classic", 4, 8, 3)}; }
+std::vector<RunSpec> allEngines() {
+    return {box2d(8, 3), e2d("soft", 4, 8, 3), e2d("classic", 4, 8, 3)};
+}
 
 // A wheel under a static body on a vertical suspension of f = 2 Hz (damping ratio 1) sags by
 // g / (2 pi f)^2 = 0.0633 m, its anchor staying on the axis; a wheel motor in zero gravity
@@ -370,13 +379,16 @@ TEST(Runner, WheelJointSpringAndMotor) {
         {"position": [0, 1], "tag": "wheel", "shape": {"type": "circle", "radius": 0.2}}],
         "joints": [{"type": "wheel", "bodyA": 0, "bodyB": 1, "anchor": [0, 1], "hertz": 2, "dampingRatio": 1}],
         "checks": [{"type": "moves", "body": "wheel", "distance": 0.01, "direction": [0, -1]},
-                   {"type": "jointError", "limit": 0.001}]})", "wheel_sag");
+                   {"type": "jointError", "limit": 0.001}]})",
+                                       "wheel_sag");
     const double omega = 2.0 * 3.14159265358979 * 2.0;
-    const Scenario spin = parseScenario(R"({"family": "hard", "duration": 2, "gravity": [0, 0], "bodies": [
+    const Scenario spin =
+        parseScenario(R"({"family": "hard", "duration": 2, "gravity": [0, 0], "bodies": [
         {"type": "static", "position": [0, 2], "shape": {"type": "box", "halfExtents": [0.5, 0.1]}},
         {"position": [0, 1], "tag": "wheel", "shape": {"type": "circle", "radius": 0.2}}],
         "joints": [{"type": "wheel", "bodyA": 0, "bodyB": 1, "anchor": [0, 1], "motorSpeed": 3, "maxMotorTorque": 10}],
-        "checks": [{"type": "turn", "body": "wheel", "minTurn": 5}]})", "wheel_spin");
+        "checks": [{"type": "turn", "body": "wheel", "minTurn": 5}]})",
+                      "wheel_spin");
     for (const RunSpec& spec : allEngines()) {
         SCOPED_TRACE(spec.config.family());
         const RunResult r = runOne(sag, spec);
@@ -393,21 +405,26 @@ TEST(Runner, WheelJointSpringAndMotor) {
 // below a 1 kg box's weight lets it fall at (10 - 5) m/s^2 or faster: at least 10 m in 2 s. A
 // motor joint drives a box to the offset it is given from a static body (2 m to the right).
 TEST(Runner, MouseAndMotorJoints) {
-    const Scenario pull = parseScenario(R"({"family": "hard", "duration": 4, "gravity": [0, 0], "bodies": [
+    const Scenario pull =
+        parseScenario(R"({"family": "hard", "duration": 4, "gravity": [0, 0], "bodies": [
         {"type": "static", "position": [0, -5], "shape": {"type": "box"}},
         {"position": [0, 0], "tag": "box", "shape": {"type": "box"}}],
         "joints": [{"type": "mouse", "bodyA": 0, "bodyB": "box", "target": [1, 0], "hertz": 2, "dampingRatio": 1}],
-        "checks": [{"type": "moves", "body": "box", "distance": 0.5, "direction": [1, 0]}]})", "mouse_pull");
+        "checks": [{"type": "moves", "body": "box", "distance": 0.5, "direction": [1, 0]}]})",
+                      "mouse_pull");
     const Scenario weak = parseScenario(R"({"family": "hard", "duration": 2, "bodies": [
         {"type": "static", "position": [0, -50], "shape": {"type": "box"}},
         {"position": [0, 0], "tag": "box", "shape": {"type": "box"}}],
         "joints": [{"type": "mouse", "bodyA": 0, "bodyB": "box", "target": [0, 0], "maxForce": 5}],
-        "checks": [{"type": "moves", "body": "box", "distance": 9.9, "direction": [0, -1]}]})", "mouse_weak");
-    const Scenario motor = parseScenario(R"({"family": "hard", "duration": 4, "gravity": [0, 0], "bodies": [
+        "checks": [{"type": "moves", "body": "box", "distance": 9.9, "direction": [0, -1]}]})",
+                                        "mouse_weak");
+    const Scenario motor =
+        parseScenario(R"({"family": "hard", "duration": 4, "gravity": [0, 0], "bodies": [
         {"type": "static", "position": [0, 0], "shape": {"type": "box", "halfExtents": [0.1, 0.1]}},
         {"position": [0, 1], "tag": "box", "shape": {"type": "box"}}],
         "joints": [{"type": "motor", "bodyA": 0, "bodyB": "box", "linearOffset": [2, 1], "maxForce": 100, "maxTorque": 100}],
-        "checks": [{"type": "moves", "body": "box", "distance": 1, "direction": [1, 0]}]})", "motor");
+        "checks": [{"type": "moves", "body": "box", "distance": 1, "direction": [1, 0]}]})",
+                      "motor");
     for (const RunSpec& spec : allEngines()) {
         SCOPED_TRACE(spec.config.family());
         const RunResult p = runOne(pull, spec);
@@ -430,13 +447,16 @@ TEST(Runner, RevoluteSpringIsE2dOnly) {
         return parseScenario(std::string(R"({"family": "hard", "duration": 2, "bodies": [
             {"type": "static", "position": [0, 0], "shape": {"type": "box", "halfExtents": [0.1, 0.1]}},
             {"position": [0.5, 0], "tag": "bar", "shape": {"type": "box", "halfExtents": [0.5, 0.05]}}],
-            "joints": [{"type": "revolute", "bodyA": 0, "bodyB": "bar", "anchor": [0, 0])") + spring + R"(}],
-            "checks": [{"type": "turn", "body": "bar", "maxTurn": 1}]})", "bar");
+            "joints": [{"type": "revolute", "bodyA": 0, "bodyB": "bar", "anchor": [0, 0])") +
+                                 spring + R"(}],
+            "checks": [{"type": "turn", "body": "bar", "maxTurn": 1}]})",
+                             "bar");
     };
     const Scenario sprung = bar(R"(, "hertz": 10, "dampingRatio": 1)");
     const RunResult box = runOne(sprung, box2d(8, 3));
-    EXPECT_EQ(box.failure, "Box2D 2.4 cannot build this scene: joint 0: Box2D 2.4.1's revolute joint has no "
-                           "spring (b2RevoluteJointDef has no stiffness; Box2D v3's has one)");
+    EXPECT_EQ(box.failure,
+              "Box2D 2.4 cannot build this scene: joint 0: Box2D 2.4.1's revolute joint has no "
+              "spring (b2RevoluteJointDef has no stiffness; Box2D v3's has one)");
     for (const RunSpec& spec : {e2d("soft", 4, 8, 3), e2d("classic", 4, 8, 3)}) {
         SCOPED_TRACE(spec.config.family());
         const RunResult held = runOne(sprung, spec);
@@ -457,15 +477,19 @@ TEST(Runner, ChainFloorWithAMaterialPerSegment) {
     for (int i = 0; i <= 60; ++i) {
         points += (i == 0 ? "" : ", ") + std::string("[") + std::to_string(20.0 - 0.5 * i) + ", 0]";
         if (i < 60) {
-            materials += (i == 0 ? "" : ", ") + std::string(20.0 - 0.5 * i > 0.0 ? R"({"friction": 0.25})" : R"({"friction": 0})");
+            materials +=
+                (i == 0 ? "" : ", ") +
+                std::string(20.0 - 0.5 * i > 0.0 ? R"({"friction": 0.25})" : R"({"friction": 0})");
         }
     }
     const Scenario s = parseScenario(R"({"family": "hard", "duration": 4, "bodies": [
-        {"type": "static", "shape": {"type": "chain", "points": [)" + points + R"(], "materials": [)" + materials + R"(]}},
+        {"type": "static", "shape": {"type": "chain", "points": [)" +
+                                         points + R"(], "materials": [)" + materials + R"(]}},
         {"position": [-8, 0.5], "linearVelocity": [4, 0], "tag": "box", "shape": {"type": "box", "friction": 1}}],
         "checks": [{"type": "moves", "body": "box", "distance": 9, "direction": [1, 0]},
                    {"type": "bounds", "body": "box", "lower": [-9, 0.45], "upper": [12, 0.55]},
-                   {"type": "turn", "body": "box", "maxTurnDeg": 1}]})", "chain_floor");
+                   {"type": "turn", "body": "box", "maxTurnDeg": 1}]})",
+                                     "chain_floor");
     for (const RunSpec& spec : allEngines()) {
         SCOPED_TRACE(spec.config.family());
         const RunResult r = runOne(s, spec);

@@ -83,7 +83,9 @@ TEST_P(SnapshotRoundTrip, StepsOnBitForBit) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Shipped, SnapshotRoundTrip, testing::ValuesIn(shippedScenarios()),
-                         [](const testing::TestParamInfo<std::string>& param) { return param.param; });
+                         [](const testing::TestParamInfo<std::string>& param) {
+                             return param.param;
+                         });
 
 } // namespace
 } // namespace e2d::validation

@@ -41,7 +41,8 @@ std::uint64_t runHash(const Scenario& scenario, int workers, int lanes, ph::Join
         for (ph::BodyId id : scene.bodies) {
             const ph::Transform xf = scene.world.transform(id);
             const ph::Vec2 v = scene.world.linearVelocity(id);
-            for (float x : {xf.p.x, xf.p.y, xf.q.c, xf.q.s, v.x, v.y, scene.world.angularVelocity(id)}) {
+            for (float x :
+                 {xf.p.x, xf.p.y, xf.q.c, xf.q.s, v.x, v.y, scene.world.angularVelocity(id)}) {
                 add(x);
             }
         }

@@ -2,9 +2,9 @@
 #include "level.hpp"
 
 #include <e2d/core/component.hpp>
-#include <e2d/physics/contact_info.hpp>
 #include <e2d/physics/character_controller.hpp>
 #include <e2d/physics/collider.hpp>
+#include <e2d/physics/contact_info.hpp>
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
@@ -28,9 +28,11 @@ constexpr e2d::core::Mask kTrigger{4};
 constexpr float kGravity = -25.0f * kTile;
 
 // Tells the level which sensors the player's object entered.
-class SensorRelay final : public e2d::core::Component, public e2d::core::Handles<e2d::physics::TriggerEnter> {
+class SensorRelay final : public e2d::core::Component,
+                          public e2d::core::Handles<e2d::physics::TriggerEnter> {
 public:
-    explicit SensorRelay(std::function<void(const GameObject*)> entered) : entered_(std::move(entered)) {}
+    explicit SensorRelay(std::function<void(const GameObject*)> entered)
+        : entered_(std::move(entered)) {}
     void on(const e2d::physics::TriggerEnter& contact) override { entered_(contact.other); }
 
 private:
@@ -145,8 +147,10 @@ Level::Level(e2d::core::Scene& scene, const PlayerTuning& tuning)
     shuttle.oneWay = true;
     platforms_.push_back(shuttle);
     for (MovingPlatform& platform : platforms_) {
-        platform.object = &place(scene, platform.oneWay ? "shuttle" : "lift", platform.positionAt(0.0));
-        platform.object->addComponent<ph::Rigidbody>(ph::RigidbodyDef{.type = ph::BodyType::Kinematic});
+        platform.object =
+            &place(scene, platform.oneWay ? "shuttle" : "lift", platform.positionAt(0.0));
+        platform.object->addComponent<ph::Rigidbody>(
+            ph::RigidbodyDef{.type = ph::BodyType::Kinematic});
         platform.object->addComponent<ph::Collider>(ph::makeBox(platform.half.x, platform.half.y),
                                                     platform.oneWay ? oneWay : solid);
     }
@@ -167,7 +171,8 @@ Level::Level(e2d::core::Scene& scene, const PlayerTuning& tuning)
         return collider == nullptr || !collider->def().oneWay || contact.normal.y >= 0.7f;
     };
     character_ = player_->addComponent<ph::CharacterController>(character);
-    player_->addComponent<SensorRelay>([this](const GameObject* other) { touches_.push_back(other); });
+    player_->addComponent<SensorRelay>(
+        [this](const GameObject* other) { touches_.push_back(other); });
 }
 
 glm::vec2 Level::playerPosition() const { return glm::vec2(player_->position()); }
@@ -271,7 +276,8 @@ void Level::touched(const GameObject* other) {
         won_ = true;
         events_.won = true;
     }
-    if (std::find(hazardObjects_.begin(), hazardObjects_.end(), other) != hazardObjects_.end() && !won_) {
+    if (std::find(hazardObjects_.begin(), hazardObjects_.end(), other) != hazardObjects_.end() &&
+        !won_) {
         dead_ = true;
         events_.died = true;
     }
@@ -288,7 +294,8 @@ void Level::movePlatforms(float dt) {
     // Velocities that reach the timetable's position at the end of the step: the platform
     // never drifts from it, and pushes and carries the player like any moving body.
     for (const MovingPlatform& platform : platforms_) {
-        platform.object->getComponent<ph::Rigidbody>()->setTargetTransform(platform.positionAt(time_ + dt), 0.0f);
+        platform.object->getComponent<ph::Rigidbody>()->setTargetTransform(
+            platform.positionAt(time_ + dt), 0.0f);
     }
 }
 
@@ -296,7 +303,8 @@ void Level::readGround() {
     // What the character stood on after its last move.
     grounded_ = character_->isGrounded();
     groundVelocity_ = grounded_ ? character_->groundVelocity() : glm::vec2{0.0f, 0.0f};
-    const ph::Collider* ground = grounded_ ? physics_.collider(character_->lastMove().groundShape) : nullptr;
+    const ph::Collider* ground =
+        grounded_ ? physics_.collider(character_->lastMove().groundShape) : nullptr;
     const ph::Rigidbody* moving = ground != nullptr ? ground->rigidbody() : nullptr;
     onMoving_ = moving != nullptr && moving->type() == ph::BodyType::Kinematic;
     onOneWay_ = ground != nullptr && ground->def().oneWay && moving == nullptr;

@@ -131,12 +131,16 @@ public:
     [[nodiscard]] int stepsOnOneWay() const noexcept { return stepsOnOneWay_; }
 
     // Layout and objects, for drawing -----------------------------------------------------
-    [[nodiscard]] static glm::vec2 playerHalfSize() noexcept { return glm::vec2{0.35f, 0.6f} * kTile; }
+    [[nodiscard]] static glm::vec2 playerHalfSize() noexcept {
+        return glm::vec2{0.35f, 0.6f} * kTile;
+    }
     [[nodiscard]] e2d::core::GameObject& player() const noexcept { return *player_; }
     [[nodiscard]] const std::vector<glm::vec2>& terrain() const noexcept { return terrain_; }
     [[nodiscard]] const std::vector<Coin>& coins() const noexcept { return coins_; }
     [[nodiscard]] const std::vector<Box>& hazards() const noexcept { return hazards_; }
-    [[nodiscard]] const std::vector<MovingPlatform>& platforms() const noexcept { return platforms_; }
+    [[nodiscard]] const std::vector<MovingPlatform>& platforms() const noexcept {
+        return platforms_;
+    }
     [[nodiscard]] const Box& oneWay() const noexcept { return oneWay_; }
     [[nodiscard]] const Box& goal() const noexcept { return goal_; }
     /// The lowest y the player may reach before falling out of the world counts as death.
@@ -159,7 +163,7 @@ private:
     const e2d::core::GameObject* goalObject_ = nullptr;
     e2d::core::GameObject* player_ = nullptr;
     e2d::physics::CharacterController* character_ = nullptr;
-    glm::vec2 velocity_{0.0f, 0.0f}; // the player's, world units/s
+    glm::vec2 velocity_{0.0f, 0.0f};                    // the player's, world units/s
     std::vector<const e2d::core::GameObject*> touches_; // sensors entered since the last step
     StepEvents events_;
     double time_ = 0.0;

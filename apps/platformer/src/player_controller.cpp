@@ -30,7 +30,8 @@ PlayerStep PlayerController::step(const PlayerInput& input, glm::vec2 velocity, 
     // A body still rising from its own jump is not grounded, whatever the feet touch: otherwise
     // the first step of a jump next to a ledge would count as a landing and allow a double jump.
     // ("rising": faster than the ground by a twentieth of a jump's start.)
-    const bool onGround = grounded && !(rising_ && velocity.y > groundVelocity.y + 0.05f * tuning_.jumpSpeed);
+    const bool onGround =
+        grounded && !(rising_ && velocity.y > groundVelocity.y + 0.05f * tuning_.jumpSpeed);
     if (onGround) {
         airTime_ = 0.0f;
         jumpUsed_ = false;
@@ -53,7 +54,8 @@ PlayerStep PlayerController::step(const PlayerInput& input, glm::vec2 velocity, 
     } else if (std::abs(move) > 0.1f) {
         // In the air only an asked-for direction steers; letting go keeps the momentum (a jump
         // off a moving platform keeps its speed).
-        out.velocity.x = approach(velocity.x, move * tuning_.runSpeed, tuning_.airAcceleration * dt);
+        out.velocity.x =
+            approach(velocity.x, move * tuning_.runSpeed, tuning_.airAcceleration * dt);
     }
 
     const bool canJump = !jumpUsed_ && (onGround || airTime_ <= tuning_.coyoteTime);

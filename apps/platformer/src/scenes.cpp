@@ -296,21 +296,23 @@ private:
 
     void buildProps(GameSystem& game) {
         for (const Box& hazard : level_->hazards()) {
-            for (float x = hazard.center.x - hazard.half.x; x < hazard.center.x + hazard.half.x - 0.01f * kTile;
-                 x += kTile) {
+            for (float x = hazard.center.x - hazard.half.x;
+                 x < hazard.center.x + hazard.half.x - 0.01f * kTile; x += kTile) {
                 makeSprite(*this, textured(game, "spikes.png", {kTile, 2.0f * hazard.half.y}),
                            {x + 0.5f * kTile, hazard.center.y}, kZProps);
             }
         }
         const Box& oneWay = level_->oneWay();
-        for (float x = oneWay.center.x - oneWay.half.x; x < oneWay.center.x + oneWay.half.x - 0.01f * kTile;
-             x += kTile) {
+        for (float x = oneWay.center.x - oneWay.half.x;
+             x < oneWay.center.x + oneWay.half.x - 0.01f * kTile; x += kTile) {
             makeSprite(*this, textured(game, "plank.png", glm::vec2{1.0f, 0.3f} * kTile),
-                       {x + 0.5f * kTile, oneWay.center.y + oneWay.half.y - 0.15f * kTile}, kZProps);
+                       {x + 0.5f * kTile, oneWay.center.y + oneWay.half.y - 0.15f * kTile},
+                       kZProps);
         }
         // The platforms' and coins' sprites go on their objects, and move with them.
         for (const MovingPlatform& platform : level_->platforms()) {
-            platform.object->setPosition(glm::vec3(platform.object->position().x, platform.object->position().y, kZProps));
+            platform.object->setPosition(
+                glm::vec3(platform.object->position().x, platform.object->position().y, kZProps));
             platform.object->addComponent<render::SpriteRenderer>(
                 textured(game, "platform.png", 2.0f * platform.half));
         }
@@ -319,7 +321,8 @@ private:
             GameObject& sprite = createGameObject();
             coin.object->addChild(sprite);
             sprite.setPosition(glm::vec3(0.0f, 0.0f, kZProps));
-            sprite.addComponent<render::SpriteRenderer>(textured(game, "coin.png", glm::vec2{0.7f, 0.7f} * kTile));
+            sprite.addComponent<render::SpriteRenderer>(
+                textured(game, "coin.png", glm::vec2{0.7f, 0.7f} * kTile));
             coins_.push_back(&sprite);
         }
         const Box& goal = level_->goal();
@@ -357,15 +360,16 @@ private:
         jumpSound_ = mixer.load(game.asset("assets/jump.wav"));
         hurtSound_ = mixer.load(game.asset("assets/hurt.wav"));
         winSound_ = mixer.load(game.asset("assets/win.wav"));
-        const audio::SoundId music = mixer.load(game.asset("assets/music.ogg"), audio::LoadMode::Stream);
+        const audio::SoundId music =
+            mixer.load(game.asset("assets/music.ogg"), audio::LoadMode::Stream);
         audio::PlayDef def;
         def.loop = true;
         def.gain = 0.5f;
         def.bus = audio::Bus::Music;
         def.fadeIn = 1.0;
         music_ = mixer.play(music, def);
-        session_.musicStreaming = mixer.isValid(music_) &&
-                                  mixer.soundInfo(music).mode == audio::LoadMode::Stream;
+        session_.musicStreaming =
+            mixer.isValid(music_) && mixer.soundInfo(music).mode == audio::LoadMode::Stream;
     }
 
     enum class Pose { Idle, Run, Jump, Fall };
@@ -384,7 +388,8 @@ private:
 
     [[nodiscard]] std::span<const int> framesOf(Pose pose) const {
         const auto index = static_cast<std::size_t>(pose);
-        return index < frames_.size() ? std::span<const int>(frames_[index]) : std::span<const int>();
+        return index < frames_.size() ? std::span<const int>(frames_[index])
+                                      : std::span<const int>();
     }
 
     void update(double dt) override {
@@ -415,12 +420,15 @@ private:
             sprite->setVisible(!coin.collected);
             // A gentle bob and a spin (scaling x) so coins catch the eye.
             const double phase = level_->time() * 3.0 + static_cast<double>(i);
-            coins_[i]->setPosition(glm::vec3(0.0f, 0.08f * kTile * static_cast<float>(std::sin(phase)), kZProps));
-            coins_[i]->setScale({static_cast<float>(std::abs(std::cos(phase * 0.7))) * 0.8f + 0.2f, 1.0f});
+            coins_[i]->setPosition(
+                glm::vec3(0.0f, 0.08f * kTile * static_cast<float>(std::sin(phase)), kZProps));
+            coins_[i]->setScale(
+                {static_cast<float>(std::abs(std::cos(phase * 0.7))) * 0.8f + 0.2f, 1.0f});
         }
         followPlayer(dt);
-        hudText(game, "Coins " + std::to_string(level_->score()) + " / " +
-                          std::to_string(level_->coinCount()),
+        hudText(game,
+                "Coins " + std::to_string(level_->score()) + " / " +
+                    std::to_string(level_->coinCount()),
                 {-620.0f, 330.0f}, 32, render::HorizontalAlign::Left, {255, 230, 90, 255});
         if (level_->won()) {
             hudText(game, "Goal!", {0.0f, 120.0f}, 72, render::HorizontalAlign::Center,
@@ -500,7 +508,8 @@ private:
         const float k = 1.0f - static_cast<float>(std::exp(-6.0 * dt));
         at += (target - at) * k;
         const float halfWidth = kReference.x * 0.5f;
-        at.x = std::clamp(at.x, -4.0f * kTile + halfWidth - 96.0f, 36.0f * kTile - halfWidth + 96.0f);
+        at.x =
+            std::clamp(at.x, -4.0f * kTile + halfWidth - 96.0f, 36.0f * kTile - halfWidth + 96.0f);
         at.y = std::max(at.y, -3.5f * kTile + kReference.y * 0.5f - 200.0f);
         camera_->setPosition(at);
     }

@@ -13,11 +13,11 @@ namespace platformer {
 /// What the runs so far came to, shared by the scenes.
 struct Session {
     std::string lastScene = "TitleScene"; ///< the scene running when the game stopped
-    int score = 0;       ///< coins collected in the last run of the level
-    int coinCount = 0;   ///< coins in the level
-    int coinVoices = 0;  ///< coin sounds that started on a voice, over every run
-    int jumps = 0;       ///< jumps in the last run
-    int runs = 0;        ///< times the level was started
+    int score = 0;                        ///< coins collected in the last run of the level
+    int coinCount = 0;                    ///< coins in the level
+    int coinVoices = 0;                   ///< coin sounds that started on a voice, over every run
+    int jumps = 0;                        ///< jumps in the last run
+    int runs = 0;                         ///< times the level was started
     int deaths = 0;
     int wins = 0;
     double levelTime = 0.0; ///< seconds of level time in the last run

@@ -52,8 +52,9 @@ struct Outcome {
 class LevelRun {
 public:
     LevelRun() {
-        registry.add("Level", e2d::core::SceneFunctions{
-                                  .initialize = [this](e2d::core::Scene& s) { level = std::make_unique<Level>(s); }});
+        registry.add("Level", e2d::core::SceneFunctions{.initialize = [this](e2d::core::Scene& s) {
+                         level = std::make_unique<Level>(s);
+                     }});
         director.addSystem(physics);
         director.start("Level");
     }
@@ -118,8 +119,9 @@ Outcome play(const std::vector<Hold>& script, double limit, double timeOffset = 
         if (std::getenv("TRACE") && i % 6 == 0) {
             std::printf("t=%.2f p=(%.2f,%.2f) v=(%.2f,%.2f) g=%d lift=%.2f score=%d\n", t,
                         level.playerPosition().x / kTile, level.playerPosition().y / kTile,
-                        level.playerVelocity().x / kTile, level.playerVelocity().y / kTile, level.grounded(),
-                        level.platforms()[0].object->position().y / kTile, level.score());
+                        level.playerVelocity().x / kTile, level.playerVelocity().y / kTile,
+                        level.grounded(), level.platforms()[0].object->position().y / kTile,
+                        level.score());
         }
     }
     run.won = level.won();
@@ -137,9 +139,9 @@ Outcome play(const std::vector<Hold>& script, double limit, double timeOffset = 
 // The winning run, then the bonus: stop on the one-way platform under the shuttle, jump up
 // through it while it waits, ride it to the bonus coin and back, run off it onto the goal.
 std::vector<Hold> bonusScript(double shift = 0.0) {
-    return {{0.0, 1.0f, false},          {0.55, 1.0f, true},          {0.95, 1.0f, false},
-            {1.6, 1.0f, true},           {2.0, 1.0f, false},          {5.75, 1.0f, true},
-            {6.25, 1.0f, false},         {6.55 + shift, 0.0f, false}, {7.2 + shift, 0.0f, true},
+    return {{0.0, 1.0f, false},         {0.55, 1.0f, true},          {0.95, 1.0f, false},
+            {1.6, 1.0f, true},          {2.0, 1.0f, false},          {5.75, 1.0f, true},
+            {6.25, 1.0f, false},        {6.55 + shift, 0.0f, false}, {7.2 + shift, 0.0f, true},
             {7.6 + shift, 0.0f, false}, {14.4 + shift, 1.0f, false}};
 }
 
@@ -154,7 +156,7 @@ TEST(PlatformerLevel, ScriptedRunCollectsEveryCoinRidesTheLiftAndReachesTheGoal)
     EXPECT_TRUE(run.won);
     EXPECT_FALSE(run.dead);
     EXPECT_EQ(run.score, 3);
-    EXPECT_EQ(run.coinEvents, 3); // each coin counted once
+    EXPECT_EQ(run.coinEvents, 3);     // each coin counted once
     EXPECT_GT(run.stepsOnMoving, 30); // stood on the lift while it rose
     EXPECT_GT(run.stepsOnOneWay, 5);  // jumped up through the one-way platform and landed on it
     EXPECT_GT(run.maxY, 8.0f * kTile + Level::playerHalfSize().y - 0.05f * kTile);
@@ -178,7 +180,8 @@ TEST(PlatformerLevel, ACheckpointRestoredMidLevelFinishesTheRunTheSame) {
         detour.input.jumpHeld = true;
         detour.input.jumpPressed = true;
         const Outcome restored = play(winningScript(), 20.0, 0.0, &detour);
-        EXPECT_GT(glm::length(detour.reached - detour.from), 1.0f * kTile) << "the detour went elsewhere";
+        EXPECT_GT(glm::length(detour.reached - detour.from), 1.0f * kTile)
+            << "the detour went elsewhere";
         EXPECT_TRUE(restored.won);
         EXPECT_EQ(restored.score, straight.score);
         EXPECT_EQ(restored.jumps, straight.jumps);
@@ -198,7 +201,8 @@ TEST(PlatformerLevel, TheShuttleCarriesThePlayerToTheBonusCoin) {
         EXPECT_EQ(run.score, 4) << "shift " << shift;
         EXPECT_EQ(run.jumps, 4) << "shift " << shift;
         // Stood on the shuttle (top at 10 m).
-        EXPECT_GT(run.maxY, 10.0f * kTile + Level::playerHalfSize().y - 0.05f * kTile) << "shift " << shift;
+        EXPECT_GT(run.maxY, 10.0f * kTile + Level::playerHalfSize().y - 0.05f * kTile)
+            << "shift " << shift;
     }
 }
 

@@ -79,9 +79,9 @@ void audio(const std::filesystem::path& folder) {
     writeSound(beeps, folder / "beeps.wav");
 
     // A four-bar tune over a bass line at 120 bpm (8 s, loops seamlessly).
-    const std::vector<Note> melody = {
-        {72, 1}, {76, 1}, {79, 1}, {76, 1}, {74, 1}, {77, 1}, {81, 1}, {77, 1},
-        {76, 1}, {79, 1}, {84, 1}, {79, 1}, {77, 0.5}, {76, 0.5}, {74, 1}, {72, 2}};
+    const std::vector<Note> melody = {{72, 1},   {76, 1},   {79, 1}, {76, 1}, {74, 1}, {77, 1},
+                                      {81, 1},   {77, 1},   {76, 1}, {79, 1}, {84, 1}, {79, 1},
+                                      {77, 0.5}, {76, 0.5}, {74, 1}, {72, 2}};
     const std::vector<Note> bass = {{48, 4}, {50, 4}, {52, 4}, {43, 4}};
     Sound tune = sequence(melody, 120, Wave::Square, {0.01, 0.08, 0.5, 0.08}, 0.25);
     mixInto(tune, sequence(bass, 120, Wave::Triangle, {0.02, 0.2, 0.8, 0.2}, 0.5), 0);
@@ -94,8 +94,7 @@ void audio(const std::filesystem::path& folder) {
 void register_demos(Registry& registry) {
     registry.add({"sprites", "coin and slime animations in one TexturePacker sheet", sprites});
     registry.add({"parallax", "a white soft circle for tinted translucent layers", parallax});
-    registry.add({"audio", "a looping beep and a looping tune for the spatial audio demos",
-                  audio});
+    registry.add({"audio", "a looping beep and a looping tune for the spatial audio demos", audio});
 }
 
 } // namespace e2d::assetgen

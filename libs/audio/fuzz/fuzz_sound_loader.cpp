@@ -20,7 +20,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     e2d::audio::DecodeLimits limits;
     limits.maxFrames = 1 << 20; // keeps one input's memory small
     const auto bytes = std::as_bytes(std::span(data, size));
-    const e2d::audio::DecodeResult result = e2d::audio::decodeSoundMemory(bytes, "fuzz-input", limits);
+    const e2d::audio::DecodeResult result =
+        e2d::audio::decodeSoundMemory(bytes, "fuzz-input", limits);
     if (!result.ok()) {
         if (!result.data.samples.empty() || result.error.find("fuzz-input") == std::string::npos) {
             std::fprintf(stderr, "error without the name or with data: %s\n", result.error.c_str());
@@ -29,19 +30,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     }
     const auto& sound = result.data;
-    const bool valid = sound.channels >= 1 && sound.channels <= limits.maxChannels &&
-                       sound.sampleRate >= limits.minSampleRate && sound.sampleRate <= limits.maxSampleRate &&
-                       sound.frames() >= 1 && sound.frames() <= limits.maxFrames &&
-                       sound.samples.size() == static_cast<std::size_t>(sound.frames() * sound.channels);
+    const bool valid =
+        sound.channels >= 1 && sound.channels <= limits.maxChannels &&
+        sound.sampleRate >= limits.minSampleRate && sound.sampleRate <= limits.maxSampleRate &&
+        sound.frames() >= 1 && sound.frames() <= limits.maxFrames &&
+        sound.samples.size() == static_cast<std::size_t>(sound.frames() * sound.channels);
     for (float s : sound.samples) {
         if (!(std::abs(s) <= limits.maxSampleMagnitude)) {
-            std::fprintf(stderr, "a sample that is not finite or beyond the limit: %g\n", static_cast<double>(s));
+            std::fprintf(stderr, "a sample that is not finite or beyond the limit: %g\n",
+                         static_cast<double>(s));
             std::abort();
         }
     }
     if (!valid) {
-        std::fprintf(stderr, "sound outside the limits: %d channels, %d Hz, %lld frames\n", sound.channels,
-                     sound.sampleRate, static_cast<long long>(sound.frames()));
+        std::fprintf(stderr, "sound outside the limits: %d channels, %d Hz, %lld frames\n",
+                     sound.channels, sound.sampleRate, static_cast<long long>(sound.frames()));
         std::abort();
     }
     return 0;

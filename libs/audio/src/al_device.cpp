@@ -40,8 +40,9 @@ std::string sortFailureOutput(const std::string& text, std::vector<std::string>&
         lines.emplace_back(line);
         if (const std::size_t at = line.find("(EE) "); openal && at != std::string_view::npos) {
             std::string_view message = line.substr(at + 5);
-            if (const std::size_t colon = message.find(": "); colon != std::string_view::npos &&
-                                                               message.substr(0, colon).find(' ') == std::string_view::npos) {
+            if (const std::size_t colon = message.find(": ");
+                colon != std::string_view::npos &&
+                message.substr(0, colon).find(' ') == std::string_view::npos) {
                 message.remove_prefix(colon + 2);
             }
             reason = message;
@@ -84,7 +85,8 @@ std::unique_ptr<Device> Device::openDevice(const std::string& name, int sources,
     return device;
 }
 
-std::unique_ptr<Device> Device::openLoopback(int sampleRate, int sources, ALCdevice* given, std::string& error) {
+std::unique_ptr<Device> Device::openLoopback(int sampleRate, int sources, ALCdevice* given,
+                                             std::string& error) {
     auto open = alcProc<LPALCLOOPBACKOPENDEVICESOFT>(nullptr, "alcLoopbackOpenDeviceSOFT");
     if (alcIsExtensionPresent(nullptr, "ALC_SOFT_loopback") == ALC_FALSE || open == nullptr) {
         error = "the OpenAL implementation has no loopback device (ALC_SOFT_loopback)";
@@ -99,13 +101,20 @@ std::unique_ptr<Device> Device::openLoopback(int sampleRate, int sources, ALCdev
         error = "cannot open the loopback device";
         return nullptr;
     }
-    device->renderSamples_ = alcProc<LPALCRENDERSAMPLESSOFT>(device->device_, "alcRenderSamplesSOFT");
-    const ALCint attributes[] = {ALC_FORMAT_CHANNELS_SOFT, ALC_STEREO_SOFT,
-                                 ALC_FORMAT_TYPE_SOFT, ALC_FLOAT_SOFT,
-                                 ALC_FREQUENCY, sampleRate,
-                                 ALC_HRTF_SOFT, ALC_FALSE,
-                                 ALC_MONO_SOURCES, sources,
-                                 ALC_STEREO_SOURCES, 0,
+    device->renderSamples_ =
+        alcProc<LPALCRENDERSAMPLESSOFT>(device->device_, "alcRenderSamplesSOFT");
+    const ALCint attributes[] = {ALC_FORMAT_CHANNELS_SOFT,
+                                 ALC_STEREO_SOFT,
+                                 ALC_FORMAT_TYPE_SOFT,
+                                 ALC_FLOAT_SOFT,
+                                 ALC_FREQUENCY,
+                                 sampleRate,
+                                 ALC_HRTF_SOFT,
+                                 ALC_FALSE,
+                                 ALC_MONO_SOURCES,
+                                 sources,
+                                 ALC_STEREO_SOURCES,
+                                 0,
                                  0};
     if (!device->finishOpen(attributes, error)) {
         return nullptr;
@@ -175,9 +184,7 @@ bool Device::connected() const {
     return value != ALC_FALSE;
 }
 
-void Device::render(float* out, int frames) const {
-    renderSamples_(device_, out, frames);
-}
+void Device::render(float* out, int frames) const { renderSamples_(device_, out, frames); }
 
 void Device::deferUpdates() const {
     if (deferUpdates_ != nullptr) {

@@ -20,11 +20,13 @@ public:
     /// Null, and `error` says why in one line, when there is no such device or no context;
     /// then `libraryLines` gets what OpenAL Soft and ALSA printed to stderr meanwhile (kept off
     /// stderr: see StderrCapture).
-    static std::unique_ptr<Device> openDevice(const std::string& name, int sources, std::string& error,
+    static std::unique_ptr<Device> openDevice(const std::string& name, int sources,
+                                              std::string& error,
                                               std::vector<std::string>& libraryLines);
     /// A loopback device mixing stereo floats at `sampleRate` Hz: `given` (not owned: never
     /// closed here) or, when null, one opened (and closed) here.
-    static std::unique_ptr<Device> openLoopback(int sampleRate, int sources, ALCdevice* given, std::string& error);
+    static std::unique_ptr<Device> openLoopback(int sampleRate, int sources, ALCdevice* given,
+                                                std::string& error);
     ~Device();
     Device(const Device&) = delete;
     Device& operator=(const Device&) = delete;

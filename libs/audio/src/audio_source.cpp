@@ -42,7 +42,9 @@ AudioSource::AudioSource(AudioSourceDef def) : def_(std::move(def)) {
 
 AudioSource::~AudioSource() = default;
 
-Mixer* AudioSource::mixer() const noexcept { return system_ != nullptr ? &system_->mixer() : nullptr; }
+Mixer* AudioSource::mixer() const noexcept {
+    return system_ != nullptr ? &system_->mixer() : nullptr;
+}
 
 PlayDef AudioSource::playDef(double fadeIn) const {
     PlayDef play;
@@ -142,7 +144,9 @@ void AudioSource::setClip(std::string path, bool stream) {
     def_.clip = std::move(path);
     def_.stream = stream;
     if (Mixer* m = mixer()) {
-        sound_ = def_.clip.empty() ? SoundId{} : m->load(def_.clip, stream ? LoadMode::Stream : LoadMode::Whole);
+        sound_ = def_.clip.empty()
+                     ? SoundId{}
+                     : m->load(def_.clip, stream ? LoadMode::Stream : LoadMode::Whole);
     }
 }
 

@@ -27,7 +27,8 @@ void checkSpatial(const SpatialDef& s, const char* function) {
     check(s.maxPanningDistance, "spatial.maxPanningDistance");
     if (s.maxAttenuationDistance <= s.minAttenuationDistance) {
         throwInvalid(function, "spatial.maxAttenuationDistance",
-                     "> minAttenuationDistance (" + core::formatNumber(s.minAttenuationDistance) + ")",
+                     "> minAttenuationDistance (" + core::formatNumber(s.minAttenuationDistance) +
+                         ")",
                      s.maxAttenuationDistance);
     }
     if (s.maxPanningDistance <= s.minPanningDistance) {
@@ -48,7 +49,8 @@ void checkDef(const MixerDef& def) {
         throwInvalid(kCtor, "loopbackSampleRate", "in 8000..192000", def.loopbackSampleRate);
     }
     if (def.loopbackDevice != nullptr && def.output != Output::Loopback) {
-        throw core::Error(std::string(kCtor) + ": loopbackDevice is given but output is not Output::Loopback");
+        throw core::Error(std::string(kCtor) +
+                          ": loopbackDevice is given but output is not Output::Loopback");
     }
     if (def.voiceCount < 1 || def.voiceCount > 1024) {
         throwInvalid(kCtor, "voiceCount", "in 1..1024", def.voiceCount);
@@ -85,7 +87,8 @@ void checkDef(const MixerDef& def) {
 // Impl: device -----------------------------------------------------------------------------
 
 Mixer::Impl::Impl(const MixerDef& d)
-    : def(d), logger(d.logger != nullptr ? d.logger : &ownLogger), masterGain(d.masterGain), spatial(d.spatial) {
+    : def(d), logger(d.logger != nullptr ? d.logger : &ownLogger), masterGain(d.masterGain),
+      spatial(d.spatial) {
     voices.resize(static_cast<std::size_t>(def.voiceCount));
     openOutput(false);
 }
@@ -107,11 +110,13 @@ bool Mixer::Impl::openOutput(bool reopening) {
         error = "no output requested (Output::None)";
     } else {
         // Reopening goes to the default device: the named one may be the one that went away.
-        device = detail::Device::openDevice(reopening ? std::string() : def.deviceName, sources, error, libraryLines);
+        device = detail::Device::openDevice(reopening ? std::string() : def.deviceName, sources,
+                                            error, libraryLines);
     }
     if (!device) {
-        goSilent(error, def.output == Output::Device ? " (ALSOFT_DRIVERS=null chooses silence without looking for a device)"
-                                                     : "");
+        goSilent(error, def.output == Output::Device
+                            ? " (ALSOFT_DRIVERS=null chooses silence without looking for a device)"
+                            : "");
         for (const std::string& line : libraryLines) {
             logger->debug("audio::Mixer: while opening the device: " + line);
         }
@@ -145,8 +150,8 @@ void Mixer::Impl::createDeviceObjects() {
             const std::string name = device->name();
             releaseDeviceObjects();
             device.reset();
-            goSilent("cannot create " + std::to_string(2 * def.voiceCount) + " OpenAL sources on '" + name +
-                     "'");
+            goSilent("cannot create " + std::to_string(2 * def.voiceCount) +
+                     " OpenAL sources on '" + name + "'");
             return;
         }
         voice.sourceLeft = ids[0];
@@ -225,7 +230,9 @@ Mixer::~Mixer() = default;
 
 bool Mixer::hasDevice() const noexcept { return impl_->device != nullptr; }
 
-int Mixer::sampleRate() const noexcept { return impl_->device ? impl_->device->sampleRate() : 48000; }
+int Mixer::sampleRate() const noexcept {
+    return impl_->device ? impl_->device->sampleRate() : 48000;
+}
 
 bool Mixer::reopen() {
     Impl& m = *impl_;
@@ -245,7 +252,8 @@ bool Mixer::reopen() {
 void Mixer::render(std::span<float> interleavedStereo) {
     constexpr const char* fn = "audio::Mixer::render()";
     if (impl_->def.output != Output::Loopback) {
-        throw core::Error(std::string(fn) + ": only a loopback mixer (Output::Loopback) renders into memory");
+        throw core::Error(std::string(fn) +
+                          ": only a loopback mixer (Output::Loopback) renders into memory");
     }
     if (!impl_->device) {
         throw core::Error(std::string(fn) + ": the loopback device could not be opened");
@@ -318,7 +326,8 @@ SoundId Mixer::load(const std::filesystem::path& path, LoadMode mode) {
         }
     }
     if (!sound.info.ok()) {
-        m.logger->error("audio::Mixer::load(): " + sound.info.error + " (the sound plays as silence)");
+        m.logger->error("audio::Mixer::load(): " + sound.info.error +
+                        " (the sound plays as silence)");
     }
     m.uploadSound(sound);
     m.sounds.push_back(std::move(sound));
@@ -331,22 +340,26 @@ SoundId Mixer::add(SoundData data, std::string name) {
     constexpr const char* fn = "audio::Mixer::add()";
     Impl& m = *impl_;
     if (data.channels < 1 || data.channels > m.def.limits.maxChannels) {
-        throwInvalid(fn, "data.channels", "in 1.." + std::to_string(m.def.limits.maxChannels), data.channels);
+        throwInvalid(fn, "data.channels", "in 1.." + std::to_string(m.def.limits.maxChannels),
+                     data.channels);
     }
-    if (data.sampleRate < m.def.limits.minSampleRate || data.sampleRate > m.def.limits.maxSampleRate) {
+    if (data.sampleRate < m.def.limits.minSampleRate ||
+        data.sampleRate > m.def.limits.maxSampleRate) {
         throwInvalid(fn, "data.sampleRate",
                      "in " + std::to_string(m.def.limits.minSampleRate) + ".." +
                          std::to_string(m.def.limits.maxSampleRate),
                      data.sampleRate);
     }
     if (data.frames() < 1 || data.samples.size() % static_cast<std::size_t>(data.channels) != 0) {
-        throwInvalid(fn, "data.samples.size()", "a positive multiple of channels", data.samples.size());
+        throwInvalid(fn, "data.samples.size()", "a positive multiple of channels",
+                     data.samples.size());
     }
     const float limit = m.def.limits.maxSampleMagnitude;
     for (std::size_t i = 0; i < data.samples.size(); ++i) {
         if (!(std::abs(data.samples[i]) <= limit)) {
             throwInvalid(fn, "data.samples[" + std::to_string(i) + "]",
-                         "finite and within +-" + core::formatNumber(limit) + " (limits.maxSampleMagnitude)",
+                         "finite and within +-" + core::formatNumber(limit) +
+                             " (limits.maxSampleMagnitude)",
                          data.samples[i]);
         }
     }
@@ -363,7 +376,8 @@ SoundId Mixer::add(SoundData data, std::string name) {
 
 const SoundInfo& Mixer::soundInfo(SoundId sound) const {
     if (!core::slotOf(sound, impl_->sounds.size())) {
-        throw core::Error("audio::Mixer::soundInfo(): unknown sound id " + std::to_string(sound.index1));
+        throw core::Error("audio::Mixer::soundInfo(): unknown sound id " +
+                          std::to_string(sound.index1));
     }
     return impl_->sounds[sound.index()].info;
 }
@@ -379,12 +393,15 @@ void Mixer::setMasterGain(float gain) {
     impl_->masterGain = gain;
 }
 
-float Mixer::busGain(Bus bus) const noexcept { return impl_->busGains[static_cast<std::size_t>(bus)]; }
+float Mixer::busGain(Bus bus) const noexcept {
+    return impl_->busGains[static_cast<std::size_t>(bus)];
+}
 
 void Mixer::setBusGain(Bus bus, float gain) {
     const auto index = static_cast<std::size_t>(bus);
     if (index >= impl_->busGains.size()) {
-        throwInvalid("audio::Mixer::setBusGain()", "bus", "Music or Effects", static_cast<int>(bus));
+        throwInvalid("audio::Mixer::setBusGain()", "bus", "Music or Effects",
+                     static_cast<int>(bus));
     }
     checkGain(gain, "audio::Mixer::setBusGain()", "gain");
     impl_->busGains[index] = gain;

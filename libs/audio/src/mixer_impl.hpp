@@ -29,7 +29,7 @@ struct Sound {
     std::vector<float> left;  // mono: the only channel
     std::vector<float> right; // empty for mono
     ALuint bufferLeft = 0;
-    ALuint bufferRight = 0; // 0 for mono
+    ALuint bufferRight = 0;         // 0 for mono
     bool streamErrorLogged = false; // a stream of it met damaged data (logged once per sound)
 };
 
@@ -40,9 +40,9 @@ struct Stream {
     std::vector<ALuint> allLeft, allRight;   // every buffer this stream owns
     std::deque<std::int64_t> queuedFrames;   // frames in each queued chunk, oldest first
     std::vector<float> interleaved, left, right;
-    std::int64_t nextFrame = 0;   // file frame the decoder reads next
+    std::int64_t nextFrame = 0;    // file frame the decoder reads next
     std::int64_t playedFrames = 0; // frames of chunks already played and unqueued
-    bool exhausted = false;       // no more data (end of a non-looping file, or an error)
+    bool exhausted = false;        // no more data (end of a non-looping file, or an error)
 };
 
 enum class FadeEnd : std::uint8_t { None, Stop, Pause };

@@ -29,14 +29,17 @@ constexpr std::array<std::uint32_t, 256> makeCrcTable() {
 
 constexpr std::array<std::uint32_t, 256> kCrcTable = makeCrcTable();
 
-std::uint8_t byteAt(std::span<const std::byte> bytes, std::size_t i) { return static_cast<std::uint8_t>(bytes[i]); }
+std::uint8_t byteAt(std::span<const std::byte> bytes, std::size_t i) {
+    return static_cast<std::uint8_t>(bytes[i]);
+}
 
 enum class Page { Complete, Cut, NotAPage, BadChecksum };
 
 // Reads the page starting at `at`; `size` is set when the page is complete.
 Page readPage(std::span<const std::byte> bytes, std::size_t at, std::size_t& size) {
     const std::size_t left = bytes.size() - at;
-    if (std::memcmp(bytes.data() + at, "OggS", std::min<std::size_t>(left, 4)) != 0 || (left > 4 && byteAt(bytes, at + 4) != 0)) {
+    if (std::memcmp(bytes.data() + at, "OggS", std::min<std::size_t>(left, 4)) != 0 ||
+        (left > 4 && byteAt(bytes, at + 4) != 0)) {
         return Page::NotAPage;
     }
     if (left < kHeaderSize) {
@@ -72,7 +75,9 @@ std::string checkOggPages(std::span<const std::byte> bytes) {
     std::size_t at = 0;
     int page = 0;
     bool ended = false; // the last page read carried the end-of-stream flag
-    const auto where = [&] { return "page " + std::to_string(page + 1) + " at byte " + std::to_string(at); };
+    const auto where = [&] {
+        return "page " + std::to_string(page + 1) + " at byte " + std::to_string(at);
+    };
     while (at < bytes.size()) {
         std::size_t size = 0;
         switch (readPage(bytes, at, size)) {
@@ -82,8 +87,8 @@ std::string checkOggPages(std::span<const std::byte> bytes) {
             ++page;
             continue;
         case Page::Cut:
-            return "truncated: the file ends inside Ogg " + where() + " (" + std::to_string(bytes.size() - at) +
-                   " bytes of it are there)";
+            return "truncated: the file ends inside Ogg " + where() + " (" +
+                   std::to_string(bytes.size() - at) + " bytes of it are there)";
         case Page::NotAPage:
             if (ended) {
                 return {};

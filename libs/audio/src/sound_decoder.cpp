@@ -69,7 +69,8 @@ std::vector<std::byte> fileBytes(const std::filesystem::path& path) {
     const std::streamoff size = file ? static_cast<std::streamoff>(file.tellg()) : 0;
     std::vector<std::byte> bytes(static_cast<std::size_t>(std::max<std::streamoff>(size, 0)));
     file.seekg(0);
-    if (!file.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()))) {
+    if (!file.read(reinterpret_cast<char*>(bytes.data()),
+                   static_cast<std::streamsize>(bytes.size()))) {
         bytes.clear();
     }
     return bytes;
@@ -83,8 +84,9 @@ std::string seconds(std::int64_t frames, int rate) {
 
 } // namespace
 
-std::unique_ptr<Decoder> Decoder::open(const std::filesystem::path& path, const DecodeLimits& limits,
-                                       std::string& error, bool checked) {
+std::unique_ptr<Decoder> Decoder::open(const std::filesystem::path& path,
+                                       const DecodeLimits& limits, std::string& error,
+                                       bool checked) {
     std::unique_ptr<Decoder> decoder(new Decoder());
     decoder->name_ = path.string();
     std::error_code ec;
@@ -145,14 +147,17 @@ bool Decoder::finishOpen(const DecodeLimits& limits, std::string& error, bool ch
         end = end == std::string::npos ? log.size() : end;
         const std::string_view line(log.data() + begin, end - begin);
         if (line.starts_with("data") && line.find("(should be") != std::string_view::npos) {
-            error = prefix + "truncated or wrong chunk size (libsndfile: " + std::string(line) + ")";
+            error =
+                prefix + "truncated or wrong chunk size (libsndfile: " + std::string(line) + ")";
             return false;
         }
         begin = end + 1;
     }
     if ((info_.format & SF_FORMAT_TYPEMASK) == SF_FORMAT_OGG && !checked) {
-        const std::vector<std::byte> fromFile = path_.empty() ? std::vector<std::byte>() : fileBytes(path_);
-        if (std::string problem = checkOggPages(path_.empty() ? memory_.bytes : fromFile); !problem.empty()) {
+        const std::vector<std::byte> fromFile =
+            path_.empty() ? std::vector<std::byte>() : fileBytes(path_);
+        if (std::string problem = checkOggPages(path_.empty() ? memory_.bytes : fromFile);
+            !problem.empty()) {
             error = prefix + problem;
             return false;
         }
@@ -186,10 +191,11 @@ std::int64_t Decoder::read(float* out, std::int64_t frames) {
     // libsndfile may return fewer frames than asked before the end: only 0 means the end.
     std::int64_t got = 0;
     while (got < frames) {
-        const sf_count_t n = sf_readf_float(file_, out + got * info_.channels, static_cast<sf_count_t>(frames - got));
+        const sf_count_t n = sf_readf_float(file_, out + got * info_.channels,
+                                            static_cast<sf_count_t>(frames - got));
         if (sf_error(file_) != SF_ERR_NO_ERROR) {
-            setError("damaged or truncated: decoding stopped at " + where(position_ + got) + " (libsndfile: " +
-                     sf_strerror(file_) + ")");
+            setError("damaged or truncated: decoding stopped at " + where(position_ + got) +
+                     " (libsndfile: " + sf_strerror(file_) + ")");
             return -1;
         }
         if (n <= 0) {
@@ -202,7 +208,8 @@ std::int64_t Decoder::read(float* out, std::int64_t frames) {
         const float v = out[i];
         if (!(std::abs(v) <= maxMagnitude_)) {
             std::ostringstream problem;
-            problem << "damaged: sample " << v << " at " << where(position_ + i / info_.channels) << " is ";
+            problem << "damaged: sample " << v << " at " << where(position_ + i / info_.channels)
+                    << " is ";
             if (std::isfinite(v)) {
                 problem << "beyond +-" << maxMagnitude_ << " (DecodeLimits::maxSampleMagnitude)";
             } else {
@@ -214,9 +221,10 @@ std::int64_t Decoder::read(float* out, std::int64_t frames) {
     }
     position_ += got;
     if (got < frames && headerFrames_ > 0 && position_ < headerFrames_) {
-        setError("damaged or truncated: the header announces " + std::to_string(headerFrames_) + " frames (" +
-                 seconds(headerFrames_, info_.samplerate) + "), the data ends after " + std::to_string(position_) +
-                 " (" + seconds(position_, info_.samplerate) + ")");
+        setError("damaged or truncated: the header announces " + std::to_string(headerFrames_) +
+                 " frames (" + seconds(headerFrames_, info_.samplerate) +
+                 "), the data ends after " + std::to_string(position_) + " (" +
+                 seconds(position_, info_.samplerate) + ")");
         return -1;
     }
     return got;
@@ -243,7 +251,8 @@ DecodeResult Decoder::readAll(std::int64_t maxFrames) {
     // The header is untrusted: reserve at most a few MiB up front and grow as data arrives.
     std::vector<float> samples;
     if (headerFrames_ > 0) {
-        samples.reserve(static_cast<std::size_t>(std::min<std::int64_t>(headerFrames_, 1 << 20) * channels));
+        samples.reserve(
+            static_cast<std::size_t>(std::min<std::int64_t>(headerFrames_, 1 << 20) * channels));
     }
     std::int64_t total = 0;
     for (;;) {
@@ -256,7 +265,8 @@ DecodeResult Decoder::readAll(std::int64_t maxFrames) {
         }
         total += got;
         if (total > maxFrames) {
-            result.error = "'" + name_ + "': more than the limit of " + std::to_string(maxFrames) + " frames";
+            result.error =
+                "'" + name_ + "': more than the limit of " + std::to_string(maxFrames) + " frames";
             return result;
         }
         if (got < want) {

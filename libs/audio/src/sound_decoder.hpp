@@ -23,8 +23,9 @@ public:
     /// frame) and, for Ogg, every page of the container (checkOggPages). Returns null and sets
     /// `error` ("'<name>': <reason>") when that fails. `checked`: the file passed this check
     /// before (a streaming voice reopening a loaded sound), so the pages are not read again.
-    static std::unique_ptr<Decoder> open(const std::filesystem::path& path, const DecodeLimits& limits,
-                                         std::string& error, bool checked = false);
+    static std::unique_ptr<Decoder> open(const std::filesystem::path& path,
+                                         const DecodeLimits& limits, std::string& error,
+                                         bool checked = false);
     /// Same over bytes that must outlive the decoder.
     static std::unique_ptr<Decoder> open(std::span<const std::byte> bytes, std::string_view name,
                                          const DecodeLimits& limits, std::string& error);
@@ -58,7 +59,6 @@ public:
     };
 
 private:
-
     Decoder() = default;
     bool finishOpen(const DecodeLimits& limits, std::string& error, bool checked);
     void setError(std::string_view reason);

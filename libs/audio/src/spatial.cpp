@@ -44,7 +44,8 @@ StereoGains panGains(const SpatialDef& def, float offsetX) noexcept {
     return {std::cos(angle), std::sin(angle)};
 }
 
-glm::vec2 listenerSpaceOffset(glm::vec2 source, glm::vec2 listener, float listenerOrientation) noexcept {
+glm::vec2 listenerSpaceOffset(glm::vec2 source, glm::vec2 listener,
+                              float listenerOrientation) noexcept {
     const glm::vec2 d = source - listener;
     if (listenerOrientation == 0.0f) {
         return d;

@@ -61,8 +61,10 @@ void beginFade(Voice& voice, float to, double duration, detail::FadeEnd end) {
 // Impl: voices ------------------------------------------------------------------------------
 
 Voice* Mixer::Impl::find(VoiceId id) noexcept {
-    const std::optional<std::uint32_t> index = core::findSlot(
-        id, voices.size(), [this](std::uint32_t i) { return voices[i].busy ? voices[i].generation : 0u; });
+    const std::optional<std::uint32_t> index =
+        core::findSlot(id, voices.size(), [this](std::uint32_t i) {
+            return voices[i].busy ? voices[i].generation : 0u;
+        });
     return index ? &voices[*index] : nullptr;
 }
 
@@ -96,7 +98,8 @@ int Mixer::Impl::allocateVoice(int priority) {
             continue;
         }
         const Voice& best = voices[static_cast<std::size_t>(victim)];
-        if (voice.gain < best.gain || (voice.gain == best.gain && voice.startOrder < best.startOrder)) {
+        if (voice.gain < best.gain ||
+            (voice.gain == best.gain && voice.startOrder < best.startOrder)) {
             victim = static_cast<int>(i);
         }
     }
@@ -143,12 +146,15 @@ void Mixer::Impl::releaseVoice(Voice& voice) {
 
 void Mixer::Impl::computeGain(Voice& voice, float& left, float& right) const {
     const detail::Sound& sound = sounds[voice.sound.index()];
-    float gain = voice.def.gain * voice.fade * busGains[static_cast<std::size_t>(voice.def.bus)] * masterGain;
+    float gain = voice.def.gain * voice.fade * busGains[static_cast<std::size_t>(voice.def.bus)] *
+                 masterGain;
     StereoGains pan{kCentre, kCentre};
     if (voice.def.spatial) {
         const glm::vec2 d = voice.def.position - listener;
-        gain *= attenuationGain(spatial, std::sqrt(d.x * d.x + d.y * d.y), voice.def.attenuationFactor);
-        pan = panGains(spatial, listenerSpaceOffset(voice.def.position, listener, listenerOrientation).x);
+        gain *=
+            attenuationGain(spatial, std::sqrt(d.x * d.x + d.y * d.y), voice.def.attenuationFactor);
+        pan = panGains(spatial,
+                       listenerSpaceOffset(voice.def.position, listener, listenerOrientation).x);
     }
     if (sound.info.channels == 2) {
         // Stereo keeps its channels apart: full on both sides when centred (or 2D), the pan
@@ -196,8 +202,9 @@ void Mixer::Impl::startVoice(Voice& voice, double startFrame) {
     applyGains(voice);
     if (sound.info.mode == LoadMode::Whole) {
         alSourcei(voice.sourceLeft, AL_BUFFER, static_cast<ALint>(sound.bufferLeft));
-        alSourcei(voice.sourceRight, AL_BUFFER,
-                  static_cast<ALint>(sound.bufferRight != 0 ? sound.bufferRight : sound.bufferLeft));
+        alSourcei(
+            voice.sourceRight, AL_BUFFER,
+            static_cast<ALint>(sound.bufferRight != 0 ? sound.bufferRight : sound.bufferLeft));
         const auto offset = static_cast<ALint>(std::floor(startFrame));
         for (ALuint source : ids) {
             alSourcei(source, AL_LOOPING, voice.def.loop ? AL_TRUE : AL_FALSE);
@@ -262,7 +269,8 @@ bool Mixer::Impl::openStream(Voice& voice, double startFrame) {
     stream.playedFrames = start;
     stream.exhausted = false;
     stream.queuedFrames.clear();
-    const auto chunk = static_cast<std::size_t>(std::max(1.0, std::round(def.streamChunkSeconds * sound.info.sampleRate)));
+    const auto chunk = static_cast<std::size_t>(
+        std::max(1.0, std::round(def.streamChunkSeconds * sound.info.sampleRate)));
     stream.interleaved.resize(chunk * static_cast<std::size_t>(sound.info.channels));
     const auto count = static_cast<std::size_t>(def.streamChunkCount);
     stream.allLeft.assign(count, 0);
@@ -287,7 +295,8 @@ bool Mixer::Impl::fillChunk(Voice& voice, ALuint left, ALuint right) {
     std::int64_t filled = 0;
     bool rewound = false;
     while (filled < chunk && !stream.exhausted) {
-        const std::int64_t got = stream.decoder->read(stream.interleaved.data() + filled * channels, chunk - filled);
+        const std::int64_t got =
+            stream.decoder->read(stream.interleaved.data() + filled * channels, chunk - filled);
         if (got < 0) {
             detail::Sound& damaged = sounds[voice.sound.index()];
             if (!damaged.streamErrorLogged) {
@@ -318,16 +327,21 @@ bool Mixer::Impl::fillChunk(Voice& voice, ALuint left, ALuint right) {
     }
     const auto bytes = static_cast<ALsizei>(filled * static_cast<std::int64_t>(sizeof(float)));
     if (channels == 1) {
-        alBufferData(left, AL_FORMAT_MONO_FLOAT32, stream.interleaved.data(), bytes, sound.info.sampleRate);
+        alBufferData(left, AL_FORMAT_MONO_FLOAT32, stream.interleaved.data(), bytes,
+                     sound.info.sampleRate);
         alSourceQueueBuffers(voice.sourceLeft, 1, &left);
         alSourceQueueBuffers(voice.sourceRight, 1, &left);
     } else {
         for (std::int64_t i = 0; i < filled; ++i) {
-            stream.left[static_cast<std::size_t>(i)] = stream.interleaved[static_cast<std::size_t>(2 * i)];
-            stream.right[static_cast<std::size_t>(i)] = stream.interleaved[static_cast<std::size_t>(2 * i + 1)];
+            stream.left[static_cast<std::size_t>(i)] =
+                stream.interleaved[static_cast<std::size_t>(2 * i)];
+            stream.right[static_cast<std::size_t>(i)] =
+                stream.interleaved[static_cast<std::size_t>(2 * i + 1)];
         }
-        alBufferData(left, AL_FORMAT_MONO_FLOAT32, stream.left.data(), bytes, sound.info.sampleRate);
-        alBufferData(right, AL_FORMAT_MONO_FLOAT32, stream.right.data(), bytes, sound.info.sampleRate);
+        alBufferData(left, AL_FORMAT_MONO_FLOAT32, stream.left.data(), bytes,
+                     sound.info.sampleRate);
+        alBufferData(right, AL_FORMAT_MONO_FLOAT32, stream.right.data(), bytes,
+                     sound.info.sampleRate);
         alSourceQueueBuffers(voice.sourceLeft, 1, &left);
         alSourceQueueBuffers(voice.sourceRight, 1, &right);
     }
@@ -375,7 +389,8 @@ bool Mixer::Impl::advanceFade(Voice& voice, double dt) {
         return true;
     }
     voice.fadeElapsed += dt;
-    const double t = voice.fadeDuration > 0.0 ? std::min(1.0, voice.fadeElapsed / voice.fadeDuration) : 1.0;
+    const double t =
+        voice.fadeDuration > 0.0 ? std::min(1.0, voice.fadeElapsed / voice.fadeDuration) : 1.0;
     voice.fade = voice.fadeFrom + (voice.fadeTo - voice.fadeFrom) * static_cast<float>(t);
     if (t < 1.0) {
         return true;

@@ -32,7 +32,8 @@ inline const std::filesystem::path& tempDir() {
     struct Owned {
         std::filesystem::path dir;
         Owned()
-            : dir(std::filesystem::temp_directory_path() / ("e2d_audio_test_" + std::to_string(::getpid()))) {
+            : dir(std::filesystem::temp_directory_path() /
+                  ("e2d_audio_test_" + std::to_string(::getpid()))) {
             std::filesystem::create_directories(dir);
         }
         Owned(const Owned&) = delete;
@@ -53,8 +54,9 @@ inline std::vector<float> sine(double frequency, double seconds, int rate, float
     const auto frames = static_cast<std::size_t>(std::llround(seconds * rate));
     std::vector<float> samples(frames * static_cast<std::size_t>(channels));
     for (std::size_t i = 0; i < frames; ++i) {
-        const auto value = static_cast<float>(
-            amplitude * std::sin(2.0 * std::numbers::pi * frequency * static_cast<double>(i) / rate));
+        const auto value =
+            static_cast<float>(amplitude * std::sin(2.0 * std::numbers::pi * frequency *
+                                                    static_cast<double>(i) / rate));
         samples[i * static_cast<std::size_t>(channels)] = value;
         if (channels == 2) {
             samples[i * 2 + 1] = value * rightScale;
@@ -75,7 +77,8 @@ inline std::filesystem::path writeSound(const std::string& name, int format, int
     if (file == nullptr) {
         throw std::runtime_error("cannot write " + path.string() + ": " + sf_strerror(nullptr));
     }
-    sf_writef_float(file, samples.data(), static_cast<sf_count_t>(samples.size() / static_cast<std::size_t>(channels)));
+    sf_writef_float(file, samples.data(),
+                    static_cast<sf_count_t>(samples.size() / static_cast<std::size_t>(channels)));
     sf_close(file);
     return path;
 }
@@ -114,8 +117,9 @@ struct Rig {
     static constexpr int kRate = 48000;
 
     std::vector<std::pair<core::LogLevel, std::string>> messages;
-    core::Logger logger{core::LogLevel::Trace,
-                        [this](core::LogLevel level, std::string_view text) { messages.emplace_back(level, std::string(text)); }};
+    core::Logger logger{core::LogLevel::Trace, [this](core::LogLevel level, std::string_view text) {
+                            messages.emplace_back(level, std::string(text));
+                        }};
     Mixer mixer;
 
     explicit Rig(MixerDef def = {}) : mixer(prepare(def, logger)) {}

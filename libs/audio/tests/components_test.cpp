@@ -65,8 +65,8 @@ protected:
     AudioSystem audio{loopbackDef(logger)};
     core::SceneRegistry registry;
     core::SceneDirector director{registry, logger};
-    std::filesystem::path tone = writeSound("component_tone.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, Rig::kRate,
-                                            sine(1000.0, 1.0, Rig::kRate, 0.5f));
+    std::filesystem::path tone = writeSound("component_tone.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT,
+                                            1, Rig::kRate, sine(1000.0, 1.0, Rig::kRate, 0.5f));
 };
 
 TEST_F(AudioComponents, SourceAndListenerFollowTheirObjects) {
@@ -146,7 +146,10 @@ TEST_F(AudioComponents, ASecondListenerWarnsOnceAndStaysInactive) {
     EXPECT_EQ(audio.mixer().listenerPosition(), glm::vec2(0.0f, 0.0f));
     int warnings = 0;
     for (const auto& [level, text] : messages) {
-        warnings += level == core::LogLevel::Warning && text.find("another listener") != std::string::npos ? 1 : 0;
+        warnings +=
+            level == core::LogLevel::Warning && text.find("another listener") != std::string::npos
+                ? 1
+                : 0;
     }
     EXPECT_EQ(warnings, 1);
 }
@@ -196,7 +199,8 @@ TEST_F(AudioComponents, SceneChangeStopsEveryVoice) {
 
 TEST_F(AudioComponents, WithoutAnAudioSystemTheErrorNamesIt) {
     try {
-        start([&](core::Scene& scene) { scene.createGameObject().addComponent<AudioListener>(); }, false);
+        start([&](core::Scene& scene) { scene.createGameObject().addComponent<AudioListener>(); },
+              false);
         FAIL() << "no error";
     } catch (const core::Error& e) {
         EXPECT_THAT(e.what(), ::testing::HasSubstr("AudioSystem"));
@@ -210,7 +214,8 @@ TEST_F(AudioComponents, InvalidDefNamesTheField) {
         AudioSource source(def);
         FAIL() << "no error";
     } catch (const core::Error& e) {
-        EXPECT_STREQ(e.what(), "audio::AudioSource::AudioSource(): pitch must be in 0.01..16, got 40");
+        EXPECT_STREQ(e.what(),
+                     "audio::AudioSource::AudioSource(): pitch must be in 0.01..16, got 40");
     }
 }
 

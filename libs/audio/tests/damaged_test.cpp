@@ -22,7 +22,8 @@ constexpr int kRate = 22050;
 constexpr double kSeconds = 4.0;
 
 std::filesystem::path oggTone(const std::string& name) {
-    return writeSound(name, SF_FORMAT_OGG | SF_FORMAT_VORBIS, 1, kRate, sine(440.0, kSeconds, kRate, 0.5f));
+    return writeSound(name, SF_FORMAT_OGG | SF_FORMAT_VORBIS, 1, kRate,
+                      sine(440.0, kSeconds, kRate, 0.5f));
 }
 
 // Byte offsets of the Ogg pages ("OggS") of a file.
@@ -36,15 +37,16 @@ std::vector<std::size_t> oggPages(const std::vector<char>& bytes) {
     return pages;
 }
 
-std::filesystem::path cutCopy(const std::filesystem::path& from, const std::string& name, std::size_t size) {
+std::filesystem::path cutCopy(const std::filesystem::path& from, const std::string& name,
+                              std::size_t size) {
     auto bytes = readBytes(from);
     bytes.resize(size);
     return writeBytes(name, bytes);
 }
 
 // The same bytes with `count` of them from `at` overwritten.
-std::filesystem::path damagedCopy(const std::filesystem::path& from, const std::string& name, std::size_t at,
-                                  std::size_t count) {
+std::filesystem::path damagedCopy(const std::filesystem::path& from, const std::string& name,
+                                  std::size_t at, std::size_t count) {
     auto bytes = readBytes(from);
     for (std::size_t i = at; i < at + count && i < bytes.size(); ++i) {
         bytes[i] = '\x5a';
@@ -69,14 +71,16 @@ TEST(DamagedOgg, CutFilesAreRefusedWholeAndFromMemory) {
     ASSERT_GE(pages.size(), 4u);
     ASSERT_TRUE(decodeSoundFile(full).ok()) << decodeSoundFile(full).error;
     const auto insidePage = cutCopy(full, "cut_inside.ogg", bytes.size() * 47 / 100);
-    expectRefused(decodeSoundFile(insidePage), insidePage.string(), "truncated: the file ends inside Ogg page");
+    expectRefused(decodeSoundFile(insidePage), insidePage.string(),
+                  "truncated: the file ends inside Ogg page");
     const auto betweenPages = cutCopy(full, "cut_between.ogg", pages[pages.size() / 2]);
     expectRefused(decodeSoundFile(betweenPages), betweenPages.string(),
                   "truncated: the Ogg stream has no end-of-stream page (the file ends after page " +
-                      std::to_string(pages.size() / 2) + ", at byte " + std::to_string(pages[pages.size() / 2]) + ")");
+                      std::to_string(pages.size() / 2) + ", at byte " +
+                      std::to_string(pages[pages.size() / 2]) + ")");
     const auto cut = readBytes(betweenPages);
-    expectRefused(decodeSoundMemory(std::as_bytes(std::span(cut)), "cut-in-memory.ogg"), "cut-in-memory.ogg",
-                  "end-of-stream");
+    expectRefused(decodeSoundMemory(std::as_bytes(std::span(cut)), "cut-in-memory.ogg"),
+                  "cut-in-memory.ogg", "end-of-stream");
     // A tag some tool appended after the last page is no damage.
     auto tagged = bytes;
     tagged.insert(tagged.end(), 128, 'T');
@@ -99,8 +103,10 @@ TEST(DamagedStream, CutAndDamagedOggAreRefusedWhenLoadedAsStreams) {
     const auto damaged = damagedCopy(full, "stream_damaged.ogg", size / 2, 200);
     const SoundId a = rig.mixer.load(cut, LoadMode::Stream);
     const SoundId b = rig.mixer.load(damaged, LoadMode::Stream);
-    EXPECT_THAT(rig.mixer.soundInfo(a).error, HasSubstr("truncated: the file ends inside Ogg page"));
-    EXPECT_THAT(rig.mixer.soundInfo(b).error, HasSubstr("damaged: Ogg page 3 at byte 3446 fails its checksum"));
+    EXPECT_THAT(rig.mixer.soundInfo(a).error,
+                HasSubstr("truncated: the file ends inside Ogg page"));
+    EXPECT_THAT(rig.mixer.soundInfo(b).error,
+                HasSubstr("damaged: Ogg page 3 at byte 3446 fails its checksum"));
     EXPECT_TRUE(rig.mixer.play(a).isNull());
     EXPECT_TRUE(rig.mixer.play(b).isNull());
     EXPECT_EQ(rig.count(core::LogLevel::Error, cut.string()), 1);
@@ -122,7 +128,9 @@ TEST(DamagedStream, DamageFoundWhilePlayingStopsTheStreamWithOneMessage) {
     ASSERT_FALSE(b.isNull());
     const auto out = rig.render(kSeconds + 0.5, 0.05);
     EXPECT_EQ(rig.mixer.state(a), VoiceState::Stopped);
-    EXPECT_EQ(rig.count(core::LogLevel::Error, "stream stopped: '" + damaged.string() + "': damaged or truncated"), 1);
+    EXPECT_EQ(rig.count(core::LogLevel::Error,
+                        "stream stopped: '" + damaged.string() + "': damaged or truncated"),
+              1);
     EXPECT_EQ(rig.messages.size(), 1u);
     // It played up to the damage, then nothing.
     EXPECT_GT(rms(out, 0, kRate).left, 0.1);
@@ -136,7 +144,8 @@ TEST(DamagedStream, CutWavAndFlacFollowTheSameRule) {
     for (const int format : {SF_FORMAT_WAV | SF_FORMAT_PCM_16, SF_FORMAT_FLAC | SF_FORMAT_PCM_16}) {
         Rig rig;
         const std::string ext = (format & SF_FORMAT_TYPEMASK) == SF_FORMAT_WAV ? ".wav" : ".flac";
-        const auto full = writeSound("full" + ext, format, 1, kRate, sine(440.0, kSeconds, kRate, 0.5f));
+        const auto full =
+            writeSound("full" + ext, format, 1, kRate, sine(440.0, kSeconds, kRate, 0.5f));
         const auto cut = cutCopy(full, "cut" + ext, readBytes(full).size() / 2);
         expectRefused(decodeSoundFile(cut), cut.string(), "truncated");
         const SoundId stream = rig.mixer.load(cut, LoadMode::Stream);
@@ -160,18 +169,25 @@ std::vector<float> toneWith(float bad, std::size_t at) {
 TEST(DamagedFloat, HugeAndNonFiniteSamplesAreRefusedWhole) {
     const float kInf = std::numeric_limits<float>::infinity();
     const float kNan = std::numeric_limits<float>::quiet_NaN();
-    const auto huge = writeSound("huge.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, kRate, toneWith(4e12f, 11025));
-    expectRefused(decodeSoundFile(huge), huge.string(), "damaged: sample 4e+12 at 0.50 s (frame 11025) is beyond +-16");
-    const auto nan = writeSound("nan.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, kRate, toneWith(kNan, 100));
+    const auto huge =
+        writeSound("huge.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, kRate, toneWith(4e12f, 11025));
+    expectRefused(decodeSoundFile(huge), huge.string(),
+                  "damaged: sample 4e+12 at 0.50 s (frame 11025) is beyond +-16");
+    const auto nan =
+        writeSound("nan.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, kRate, toneWith(kNan, 100));
     expectRefused(decodeSoundFile(nan), nan.string(), "(frame 100) is not finite");
-    const auto inf = writeSound("inf.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, kRate, toneWith(-kInf, 7));
-    expectRefused(decodeSoundFile(inf), inf.string(), "damaged: sample -inf at 0.00 s (frame 7) is not finite");
+    const auto inf =
+        writeSound("inf.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, kRate, toneWith(-kInf, 7));
+    expectRefused(decodeSoundFile(inf), inf.string(),
+                  "damaged: sample -inf at 0.00 s (frame 7) is not finite");
     // Float files may go a little over full scale: that is not damage.
-    const auto hot = writeSound("hot.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, kRate, toneWith(1.5f, 11025));
+    const auto hot =
+        writeSound("hot.wav", SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, kRate, toneWith(1.5f, 11025));
     EXPECT_TRUE(decodeSoundFile(hot).ok()) << decodeSoundFile(hot).error;
     DecodeLimits strict;
     strict.maxSampleMagnitude = 1.0f;
-    EXPECT_THAT(decodeSoundFile(hot, strict).error, HasSubstr("beyond +-1 (DecodeLimits::maxSampleMagnitude)"));
+    EXPECT_THAT(decodeSoundFile(hot, strict).error,
+                HasSubstr("beyond +-1 (DecodeLimits::maxSampleMagnitude)"));
 }
 
 TEST(DamagedFloat, AStreamStopsAtTheDamageAndTheMixStaysFinite) {
@@ -185,7 +201,9 @@ TEST(DamagedFloat, AStreamStopsAtTheDamageAndTheMixStaysFinite) {
     for (float s : out) {
         ASSERT_TRUE(std::isfinite(s));
     }
-    EXPECT_EQ(rig.count(core::LogLevel::Error, "stream stopped: '" + path.string() + "': damaged: sample nan"), 1);
+    EXPECT_EQ(rig.count(core::LogLevel::Error,
+                        "stream stopped: '" + path.string() + "': damaged: sample nan"),
+              1);
 }
 
 TEST(DamagedFloat, AddRefusesSamplesThatAreNotFinite) {
@@ -195,8 +213,9 @@ TEST(DamagedFloat, AddRefusesSamplesThatAreNotFinite) {
         rig.mixer.add(std::move(data), "generated");
         FAIL() << "expected core::Error";
     } catch (const core::Error& e) {
-        EXPECT_STREQ(e.what(), "audio::Mixer::add(): data.samples[3] must be finite and within +-16 "
-                               "(limits.maxSampleMagnitude), got nan");
+        EXPECT_STREQ(e.what(),
+                     "audio::Mixer::add(): data.samples[3] must be finite and within +-16 "
+                     "(limits.maxSampleMagnitude), got nan");
     }
     MixerDef def;
     def.limits.maxSampleMagnitude = 0.5f;

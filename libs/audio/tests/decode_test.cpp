@@ -29,8 +29,8 @@ TEST_P(DecodeFormats, RoundTripsATone) {
     for (int channels : {1, 2}) {
         const int rate = 44100;
         const auto written = sine(440.0, 0.5, rate, 0.5f, channels, 0.5f);
-        const auto path = writeSound(std::string("tone_") + f.name + std::to_string(channels), f.format, channels,
-                                     rate, written);
+        const auto path = writeSound(std::string("tone_") + f.name + std::to_string(channels),
+                                     f.format, channels, rate, written);
         const DecodeResult result = decodeSoundFile(path);
         ASSERT_TRUE(result.ok()) << result.error;
         EXPECT_EQ(result.data.channels, channels);
@@ -39,13 +39,16 @@ TEST_P(DecodeFormats, RoundTripsATone) {
         double worst = 0.0;
         double sumSq = 0.0;
         for (std::size_t i = 0; i < written.size(); ++i) {
-            worst = std::max(worst, static_cast<double>(std::abs(result.data.samples[i] - written[i])));
+            worst =
+                std::max(worst, static_cast<double>(std::abs(result.data.samples[i] - written[i])));
             sumSq += static_cast<double>(result.data.samples[i]) * result.data.samples[i];
         }
         EXPECT_LE(worst, f.tolerance) << f.name;
         // The RMS of the decoded tone: 0.5/sqrt(2) on the left, half that on the right.
-        const double expected = std::sqrt((sineRms(0.5) * sineRms(0.5) * (channels == 2 ? 1.25 : 1.0)) / channels);
-        EXPECT_NEAR(std::sqrt(sumSq / static_cast<double>(written.size())), expected, 0.01 * expected);
+        const double expected =
+            std::sqrt((sineRms(0.5) * sineRms(0.5) * (channels == 2 ? 1.25 : 1.0)) / channels);
+        EXPECT_NEAR(std::sqrt(sumSq / static_cast<double>(written.size())), expected,
+                    0.01 * expected);
     }
 }
 
@@ -90,7 +93,8 @@ TEST(Decode, RealFreedesktopSounds) {
 // Broken files: an error naming the file and the reason, no data, no crash.
 
 std::filesystem::path goodWav(const std::string& name, int channels = 1) {
-    return writeSound(name, SF_FORMAT_WAV | SF_FORMAT_PCM_16, channels, 22050, sine(440.0, 0.2, 22050, 0.5f, channels));
+    return writeSound(name, SF_FORMAT_WAV | SF_FORMAT_PCM_16, channels, 22050,
+                      sine(440.0, 0.2, 22050, 0.5f, channels));
 }
 
 void putU32(std::vector<char>& bytes, std::size_t at, std::uint32_t value) {
@@ -135,7 +139,8 @@ TEST(DecodeBroken, DataChunkLongerThanFile) {
 }
 
 TEST(DecodeBroken, ZeroLengthData) {
-    expectError(writeSound("empty.wav", SF_FORMAT_WAV | SF_FORMAT_PCM_16, 1, 44100, {}), "no audio frames");
+    expectError(writeSound("empty.wav", SF_FORMAT_WAV | SF_FORMAT_PCM_16, 1, 44100, {}),
+                "no audio frames");
 }
 
 TEST(DecodeBroken, RandomBytes) {
@@ -145,13 +150,15 @@ TEST(DecodeBroken, RandomBytes) {
         b = static_cast<char>(random() & 0xff);
     }
     expectError(writeBytes("random.wav", bytes), "'");
-    const DecodeResult memory = decodeSoundMemory(std::as_bytes(std::span(bytes)), "random-in-memory");
+    const DecodeResult memory =
+        decodeSoundMemory(std::as_bytes(std::span(bytes)), "random-in-memory");
     EXPECT_FALSE(memory.ok());
     EXPECT_THAT(memory.error, HasSubstr("random-in-memory"));
 }
 
 TEST(DecodeBroken, TooManyChannels) {
-    expectError(writeSound("three.wav", SF_FORMAT_WAV | SF_FORMAT_PCM_16, 3, 44100, std::vector<float>(300, 0.1f)),
+    expectError(writeSound("three.wav", SF_FORMAT_WAV | SF_FORMAT_PCM_16, 3, 44100,
+                           std::vector<float>(300, 0.1f)),
                 "3 channels, at most 2");
 }
 
@@ -172,7 +179,8 @@ TEST(DecodeBroken, LongerThanTheLimit) {
 }
 
 TEST(DecodeMemory, SameAsFromFile) {
-    const auto path = writeSound("mem.flac", SF_FORMAT_FLAC | SF_FORMAT_PCM_16, 2, 32000, sine(300.0, 0.3, 32000, 0.4f, 2));
+    const auto path = writeSound("mem.flac", SF_FORMAT_FLAC | SF_FORMAT_PCM_16, 2, 32000,
+                                 sine(300.0, 0.3, 32000, 0.4f, 2));
     const auto bytes = readBytes(path);
     const DecodeResult fromMemory = decodeSoundMemory(std::as_bytes(std::span(bytes)), "mem.flac");
     const DecodeResult fromFile = decodeSoundFile(path);

@@ -75,7 +75,8 @@ TEST(MixerPan, WithinMinPanningDistanceChannelsAreEqual) {
         const ChannelRms r = measureAt({x, 0.0f}, 0.0f);
         EXPECT_NEAR(r.left, r.right, 1e-5) << x;
         // Equal power: each side cos(pi/4) of the tone.
-        EXPECT_NEAR(r.left, sineRms(kAmp) * std::cos(std::numbers::pi / 4), 0.005 * sineRms(kAmp)) << x;
+        EXPECT_NEAR(r.left, sineRms(kAmp) * std::cos(std::numbers::pi / 4), 0.005 * sineRms(kAmp))
+            << x;
     }
 }
 
@@ -403,35 +404,45 @@ TEST(MixerValidation, MessagesNameFunctionFieldAndValue) {
     MixerDef bad;
     bad.output = Output::None;
     bad.voiceCount = 0;
-    EXPECT_EQ(message([&] { Mixer m(bad); }), "audio::Mixer::Mixer(): voiceCount must be in 1..1024, got 0");
+    EXPECT_EQ(message([&] { Mixer m(bad); }),
+              "audio::Mixer::Mixer(): voiceCount must be in 1..1024, got 0");
     bad.voiceCount = 4;
     bad.spatial.maxPanningDistance = 0.5f;
-    EXPECT_EQ(message([&] { Mixer m(bad); }),
-              "audio::Mixer::Mixer(): spatial.maxPanningDistance must be > minPanningDistance (1), got 0.5");
+    EXPECT_EQ(message([&] { Mixer m(bad); }), "audio::Mixer::Mixer(): spatial.maxPanningDistance "
+                                              "must be > minPanningDistance (1), got 0.5");
     bad.spatial = {};
     bad.streamChunkSeconds = 0.05;
-    EXPECT_THAT(message([&] { Mixer m(bad); }), HasSubstr("(streamChunkCount - 1) * streamChunkSeconds must be >= 0.25 s"));
+    EXPECT_THAT(message([&] { Mixer m(bad); }),
+                HasSubstr("(streamChunkCount - 1) * streamChunkSeconds must be >= 0.25 s"));
 
     Rig rig(testDef());
     const SoundId tone = loadTone(rig.mixer);
     PlayDef play;
     play.gain = -1.0f;
-    EXPECT_EQ(message([&] { rig.mixer.play(tone, play); }), "audio::Mixer::play(): gain must be >= 0, got -1");
+    EXPECT_EQ(message([&] { rig.mixer.play(tone, play); }),
+              "audio::Mixer::play(): gain must be >= 0, got -1");
     play.gain = 1.0f;
     play.pitch = 0.0f;
-    EXPECT_EQ(message([&] { rig.mixer.play(tone, play); }), "audio::Mixer::play(): pitch must be in 0.01..16, got 0");
-    EXPECT_EQ(message([&] { rig.mixer.play(SoundId{99}); }), "audio::Mixer::play(): unknown sound id 99");
+    EXPECT_EQ(message([&] { rig.mixer.play(tone, play); }),
+              "audio::Mixer::play(): pitch must be in 0.01..16, got 0");
+    EXPECT_EQ(message([&] { rig.mixer.play(SoundId{99}); }),
+              "audio::Mixer::play(): unknown sound id 99");
     EXPECT_EQ(message([&] { rig.mixer.setMasterGain(-0.5f); }),
               "audio::Mixer::setMasterGain(): gain must be >= 0, got -0.5");
     EXPECT_EQ(message([&] { rig.mixer.stop(VoiceId{}, -1.0); }),
               "audio::Mixer::stop(): fadeOut must be >= 0 seconds, got -1");
-    EXPECT_EQ(message([&] { rig.mixer.update(-0.1); }), "audio::Mixer::update(): dt must be >= 0 seconds, got -0.1");
+    EXPECT_EQ(message([&] { rig.mixer.update(-0.1); }),
+              "audio::Mixer::update(): dt must be >= 0 seconds, got -0.1");
     std::vector<float> odd(3);
     EXPECT_THAT(message([&] { rig.mixer.render(odd); }), HasSubstr("must be even"));
     // The component that is not finite is named with its own value (a sum would hide it).
-    EXPECT_EQ(message([&] { rig.mixer.setPosition(VoiceId{}, {1.0f, std::numeric_limits<float>::infinity()}); }),
+    EXPECT_EQ(message([&] {
+                  rig.mixer.setPosition(VoiceId{}, {1.0f, std::numeric_limits<float>::infinity()});
+              }),
               "audio::Mixer::setPosition(): position.y must be finite, got inf");
-    EXPECT_EQ(message([&] { rig.mixer.setPosition(VoiceId{}, {std::nanf(""), 2.0f}); }),
+    EXPECT_EQ(message([&] {
+                  rig.mixer.setPosition(VoiceId{}, {std::nanf(""), 2.0f});
+              }),
               "audio::Mixer::setPosition(): position.x must be finite, got nan");
 }
 

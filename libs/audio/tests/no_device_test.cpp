@@ -73,8 +73,10 @@ TEST(NoDevice, OneLineThenSilence) {
     char* argv[] = {self.data(), filter.data(), disabled.data(), nullptr};
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_addopen(&actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
+    posix_spawn_file_actions_addopen(&actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
     pid_t pid = 0;
     ASSERT_EQ(posix_spawn(&pid, self.c_str(), &actions, nullptr, argv, envp.data()), 0);
     posix_spawn_file_actions_destroy(&actions);
@@ -89,8 +91,10 @@ TEST(NoDevice, OneLineThenSilence) {
     const auto said = lines(stderrText);
     ASSERT_EQ(said.size(), 1u) << stderrText;
     EXPECT_THAT(said[0], HasSubstr("[warning] audio::Mixer: no default audio device"));
-    EXPECT_THAT(said[0], HasSubstr(
-                             "; running silent (ALSOFT_DRIVERS=null chooses silence without looking for a device)"));
+    EXPECT_THAT(
+        said[0],
+        HasSubstr(
+            "; running silent (ALSOFT_DRIVERS=null chooses silence without looking for a device)"));
 }
 
 } // namespace

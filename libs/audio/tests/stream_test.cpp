@@ -11,8 +11,8 @@ namespace {
 using namespace test;
 using ::testing::HasSubstr;
 
-std::vector<float> renderSound(const std::filesystem::path& path, LoadMode mode, double seconds, bool loop,
-                               int* underruns = nullptr) {
+std::vector<float> renderSound(const std::filesystem::path& path, LoadMode mode, double seconds,
+                               bool loop, int* underruns = nullptr) {
     Rig rig;
     const SoundId sound = rig.mixer.load(path, mode);
     EXPECT_TRUE(rig.mixer.soundInfo(sound).ok()) << rig.mixer.soundInfo(sound).error;
@@ -29,8 +29,9 @@ std::vector<float> renderSound(const std::filesystem::path& path, LoadMode mode,
 TEST(Stream, RendersSampleIdenticalToTheWholeSound) {
     // 1.37 s: not a whole number of 0.1 s chunks. Stereo with different channels, and mono.
     for (int channels : {2, 1}) {
-        const auto path = writeSound("identical" + std::to_string(channels) + ".flac", SF_FORMAT_FLAC | SF_FORMAT_PCM_16,
-                                     channels, Rig::kRate, sine(523.0, 1.37, Rig::kRate, 0.6f, channels, -0.3f));
+        const auto path = writeSound("identical" + std::to_string(channels) + ".flac",
+                                     SF_FORMAT_FLAC | SF_FORMAT_PCM_16, channels, Rig::kRate,
+                                     sine(523.0, 1.37, Rig::kRate, 0.6f, channels, -0.3f));
         const auto whole = renderSound(path, LoadMode::Whole, 1.6, false);
         const auto streamed = renderSound(path, LoadMode::Stream, 1.6, false);
         ASSERT_EQ(whole.size(), streamed.size());
@@ -60,7 +61,9 @@ TEST(Stream, LoopsWithoutGapOrClick) {
     EXPECT_LT(worst, bound);
     // No quiet stretch either: every 10 ms window has the tone's level.
     for (std::size_t from = 0; from + 480 <= out.size() / 2; from += 480) {
-        EXPECT_NEAR(rms(out, from, from + 480).left, sineRms(amplitude) * centre, 0.05 * sineRms(amplitude)) << from;
+        EXPECT_NEAR(rms(out, from, from + 480).left, sineRms(amplitude) * centre,
+                    0.05 * sineRms(amplitude))
+            << from;
     }
 }
 

@@ -35,13 +35,9 @@ double Clock::now() const {
     return latest_ - start_;
 }
 
-double Clock::unscaledTime() const {
-    return now();
-}
+double Clock::unscaledTime() const { return now(); }
 
-double Clock::time() const {
-    return scaledBase_ + (now() - scaleChangedAt_) * scale_;
-}
+double Clock::time() const { return scaledBase_ + (now() - scaleChangedAt_) * scale_; }
 
 void Clock::setTimeScale(double scale) {
     if (!std::isfinite(scale) || scale < 0.0) {

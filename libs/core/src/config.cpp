@@ -31,7 +31,9 @@ bool contains(const ConfigBounds& bounds, double v) {
 }
 
 std::string_view trim(std::string_view s) {
-    const auto isSpace = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f'; };
+    const auto isSpace = [](char c) {
+        return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+    };
     while (!s.empty() && isSpace(s.front())) {
         s.remove_prefix(1);
     }
@@ -129,8 +131,9 @@ void ConfigReport::error(std::string_view file, std::string_view key, std::strin
 
 void ConfigReader::add(std::string_view key, Setter setter) {
     if (key.empty() || !std::all_of(key.begin(), key.end(), isKeyCharacter)) {
-        throw Error("core::ConfigReader::add(): a key must be non-empty, without blanks, '=' or '#', got " +
-                    quote(key));
+        throw Error(
+            "core::ConfigReader::add(): a key must be non-empty, without blanks, '=' or '#', got " +
+            quote(key));
     }
     if (!setter) {
         throw Error("core::ConfigReader::add(): the setter of " + quote(key) + " is empty");
@@ -177,7 +180,8 @@ void ConfigReader::add(std::string_view key, std::string& field) {
     });
 }
 
-std::string ConfigReader::unknownValue(std::string_view value, const std::vector<std::string_view>& names) {
+std::string ConfigReader::unknownValue(std::string_view value,
+                                       const std::vector<std::string_view>& names) {
     std::string message = "unknown value " + quote(value) + ", expected one of: ";
     for (std::size_t i = 0; i < names.size(); ++i) {
         message += (i == 0 ? "" : ", ");
@@ -197,17 +201,21 @@ std::vector<std::string_view> ConfigReader::keys() const {
 
 ConfigReport ConfigReader::read(std::string_view text, std::string_view sourceName) const {
     ConfigReport result;
-    const auto report = [&](Severity severity, int line, std::string_view key, std::string message) {
-        result.diagnostics.add(Diagnostic{severity, printable(sourceName), line, 0, printable(key), std::move(message)});
+    const auto report = [&](Severity severity, int line, std::string_view key,
+                            std::string message) {
+        result.diagnostics.add(Diagnostic{severity, printable(sourceName), line, 0, printable(key),
+                                          std::move(message)});
     };
     // The known key nearest to `key`, if it is near enough to be a typo (at most a third of
     // its letters wrong, and at most 3).
     const auto suggestion = [this](std::string_view key) -> std::string {
         std::string_view best;
-        std::size_t bestDistance = std::min<std::size_t>(3, std::max<std::size_t>(1, key.size() / 3)) + 1;
+        std::size_t bestDistance =
+            std::min<std::size_t>(3, std::max<std::size_t>(1, key.size() / 3)) + 1;
         for (const auto& entry : keys_) {
             const std::string_view known = entry.first;
-            const std::size_t gap = known.size() > key.size() ? known.size() - key.size() : key.size() - known.size();
+            const std::size_t gap =
+                known.size() > key.size() ? known.size() - key.size() : key.size() - known.size();
             if (gap >= bestDistance) {
                 continue;
             }
@@ -251,7 +259,8 @@ ConfigReport ConfigReader::read(std::string_view text, std::string_view sourceNa
         }
         if (const auto previous = result.lines.find(key); previous != result.lines.end()) {
             report(Severity::Warning, lineNumber, key,
-                   "duplicate key, replaces the value set on line " + std::to_string(previous->second));
+                   "duplicate key, replaces the value set on line " +
+                       std::to_string(previous->second));
         }
         if (Problem error = field->second(value)) {
             report(Severity::Error, lineNumber, key, std::move(*error));

@@ -36,12 +36,16 @@ void Diagnostics::add(Diagnostic diagnostic) {
     items_.push_back(std::move(diagnostic));
 }
 
-void Diagnostics::error(std::string_view file, int line, std::string message, std::string_view field) {
-    add(Diagnostic{Severity::Error, std::string(file), line, 0, std::string(field), std::move(message)});
+void Diagnostics::error(std::string_view file, int line, std::string message,
+                        std::string_view field) {
+    add(Diagnostic{Severity::Error, std::string(file), line, 0, std::string(field),
+                   std::move(message)});
 }
 
-void Diagnostics::warning(std::string_view file, int line, std::string message, std::string_view field) {
-    add(Diagnostic{Severity::Warning, std::string(file), line, 0, std::string(field), std::move(message)});
+void Diagnostics::warning(std::string_view file, int line, std::string message,
+                          std::string_view field) {
+    add(Diagnostic{Severity::Warning, std::string(file), line, 0, std::string(field),
+                   std::move(message)});
 }
 
 std::vector<Diagnostic> Diagnostics::only(Severity severity) const {

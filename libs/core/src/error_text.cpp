@@ -17,8 +17,9 @@ std::string numberText(T value) {
     // Fixed notation is still the shortest round-trip text, only without an exponent: "100000"
     // reads better than "1e+05", and nobody counts the zeros of numbers up to 1e9.
     const bool plain = magnitude == T(0) || (magnitude >= T(1.0e-4) && magnitude < T(1.0e9));
-    const auto result = plain ? std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::fixed)
-                              : std::to_chars(buffer, buffer + sizeof(buffer), value);
+    const auto result =
+        plain ? std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::fixed)
+              : std::to_chars(buffer, buffer + sizeof(buffer), value);
     return std::string(buffer, result.ptr);
 }
 
@@ -70,7 +71,8 @@ void throwError(std::string_view function, std::string_view what) {
     throw Error(message);
 }
 
-void throwInvalid(std::string_view function, std::string_view field, std::string_view rule, std::string_view shown) {
+void throwInvalid(std::string_view function, std::string_view field, std::string_view rule,
+                  std::string_view shown) {
     std::string what(field);
     what.append(" must be ").append(rule).append(", got ").append(shown);
     throwError(function, what);

@@ -10,7 +10,8 @@
 
 namespace e2d::core {
 
-FixedStepper::FixedStepper(double step, int maxStepsPerFrame) : step_(step), maxSteps_(maxStepsPerFrame) {
+FixedStepper::FixedStepper(double step, int maxStepsPerFrame)
+    : step_(step), maxSteps_(maxStepsPerFrame) {
     if (!std::isfinite(step) || step <= 0.0) {
         throw Error("core::FixedStepper::FixedStepper(): step must be finite and > 0, got " +
                     formatNumber(step));

@@ -29,14 +29,16 @@ GameLoop::GameLoop(SceneDirector& director, FixedStepper& stepper, Clock& clock,
     : director_(director), stepper_(stepper), clock_(clock), def_(def) {
     constexpr const char* kCtor = "core::GameLoop::GameLoop(): ";
     if (!(def.maxFrameTime > 0.0) || std::isnan(def.maxFrameTime)) {
-        throw Error(std::string(kCtor) + "maxFrameTime must be > 0, got " + formatNumber(def.maxFrameTime));
+        throw Error(std::string(kCtor) + "maxFrameTime must be > 0, got " +
+                    formatNumber(def.maxFrameTime));
     }
     if (!std::isfinite(def.fixedFrameTime) || def.fixedFrameTime < 0.0) {
         throw Error(std::string(kCtor) + "fixedFrameTime must be finite and >= 0, got " +
                     formatNumber(def.fixedFrameTime));
     }
     if (def.frameLimit < 0) {
-        throw Error(std::string(kCtor) + "frameLimit must be >= 0, got " + std::to_string(def.frameLimit));
+        throw Error(std::string(kCtor) + "frameLimit must be >= 0, got " +
+                    std::to_string(def.frameLimit));
     }
     if (def_.observer == nullptr) {
         def_.observer = &quietObserver();
@@ -135,7 +137,8 @@ void GameLoop::render() {
 }
 
 bool GameLoop::running() const noexcept {
-    return started_ && !director_.terminateRequested() && (def_.frameLimit == 0 || frames_ < def_.frameLimit);
+    return started_ && !director_.terminateRequested() &&
+           (def_.frameLimit == 0 || frames_ < def_.frameLimit);
 }
 
 void GameLoop::shutdown() {

@@ -20,9 +20,7 @@ GameObject::GameObject(Scene& scene, GameObjectId id, std::uint32_t serial)
 
 GameObject::~GameObject() = default;
 
-Logger* GameObject::logger() const noexcept {
-    return scene_->logger();
-}
+Logger* GameObject::logger() const noexcept { return scene_->logger(); }
 
 // Transform ------------------------------------------------------------------------------
 
@@ -38,15 +36,14 @@ std::string GameObject::describe() const {
 
 namespace {
 
-bool finite(glm::vec2 v) noexcept {
-    return std::isfinite(v.x) && std::isfinite(v.y);
-}
+bool finite(glm::vec2 v) noexcept { return std::isfinite(v.x) && std::isfinite(v.y); }
 
 } // namespace
 
-void GameObject::refuseNonFinite(const char* function, const char* what, const std::string& value) const {
-    throw Error(std::string("core::GameObject::") + function + "(): " + describe() + " got " + what + " " + value +
-                "; it must be finite");
+void GameObject::refuseNonFinite(const char* function, const char* what,
+                                 const std::string& value) const {
+    throw Error(std::string("core::GameObject::") + function + "(): " + describe() + " got " +
+                what + " " + value + "; it must be finite");
 }
 
 void GameObject::setPosition(glm::vec3 position) {
@@ -72,7 +69,8 @@ void GameObject::setPosition(glm::vec2 position) {
 void GameObject::translate(glm::vec2 delta) {
     const glm::vec2 moved(position_.x + delta.x, position_.y + delta.y);
     if (!finite(moved)) {
-        refuseNonFinite("translate", "delta", formatVector(delta) + " (new position " + formatVector(moved) + ")");
+        refuseNonFinite("translate", "delta",
+                        formatVector(delta) + " (new position " + formatVector(moved) + ")");
     }
     setPosition(glm::vec3(moved, position_.z));
 }
@@ -132,7 +130,8 @@ void GameObject::snapRenderPose() noexcept {
 
 bool GameObject::isInterpolated() const noexcept {
     return stepStamp_ == scene_->fixedSteps_ && scene_->frameAlpha_ < 1.0 &&
-           (stepStartPosition_ != position_ || stepStartScale_ != scale_ || stepStartOrientation_ != orientation_);
+           (stepStartPosition_ != position_ || stepStartScale_ != scale_ ||
+            stepStartOrientation_ != orientation_);
 }
 
 glm::mat4 GameObject::renderTransform() const {
@@ -149,13 +148,15 @@ glm::mat4 GameObject::renderTransform() const {
         const glm::vec3 position = stepStartPosition_ + (position_ - stepStartPosition_) * a;
         const glm::vec2 scale = stepStartScale_ + (scale_ - stepStartScale_) * a;
         // The short way round: a body turning through +-pi does not spin back the long way.
-        const float turn = std::remainder(orientation_ - stepStartOrientation_, 2.0f * std::numbers::pi_v<float>);
+        const float turn =
+            std::remainder(orientation_ - stepStartOrientation_, 2.0f * std::numbers::pi_v<float>);
         local = composeLocal(position, stepStartOrientation_ + turn * a, scale);
     }
     return parent_ != nullptr ? parent_->renderTransform() * local : local;
 }
 
-glm::mat4 GameObject::composeLocal(glm::vec3 position, float orientation, glm::vec2 scale) noexcept {
+glm::mat4 GameObject::composeLocal(glm::vec3 position, float orientation,
+                                   glm::vec2 scale) noexcept {
     const float c = std::cos(orientation);
     const float s = std::sin(orientation);
     glm::mat4 m(1.0f);
@@ -165,9 +166,7 @@ glm::mat4 GameObject::composeLocal(glm::vec3 position, float orientation, glm::v
     return m;
 }
 
-glm::vec3 GameObject::renderPosition() const {
-    return glm::vec3(renderTransform()[3]);
-}
+glm::vec3 GameObject::renderPosition() const { return glm::vec3(renderTransform()[3]); }
 
 float GameObject::renderOrientation() const {
     const glm::mat4 m = renderTransform();
@@ -196,15 +195,14 @@ const glm::mat4& GameObject::localTransform() const {
 
 const glm::mat4& GameObject::worldTransform() const {
     if (worldDirty_) {
-        world_ = parent_ != nullptr ? parent_->worldTransform() * localTransform() : localTransform();
+        world_ =
+            parent_ != nullptr ? parent_->worldTransform() * localTransform() : localTransform();
         worldDirty_ = false;
     }
     return world_;
 }
 
-glm::vec3 GameObject::worldPosition() const {
-    return glm::vec3(worldTransform()[3]);
-}
+glm::vec3 GameObject::worldPosition() const { return glm::vec3(worldTransform()[3]); }
 
 float GameObject::worldOrientation() const {
     const glm::mat4& world = worldTransform();
@@ -232,7 +230,8 @@ void GameObject::addChild(GameObject& child) {
     }
     if (child.isAncestorOf(*this)) {
         throw Error("core::GameObject::addChild(): object " + std::to_string(child.id_.index()) +
-                    " is an ancestor of object " + std::to_string(id_.index()) + ", this would make a cycle");
+                    " is an ancestor of object " + std::to_string(id_.index()) +
+                    ", this would make a cycle");
     }
     if (child.parent_ == this) {
         return;
@@ -273,8 +272,9 @@ void GameObject::detachFromParent() noexcept {
 
 void GameObject::warnRefusedUnique(const std::type_info& type) const {
     if (Logger* log = logger()) {
-        log->warning(std::string("core::GameObject::addComponent(): object ") + std::to_string(id_.index()) +
-                     " already has a unique component of type " + detail::demangledName(type) + ", the new one is refused");
+        log->warning(std::string("core::GameObject::addComponent(): object ") +
+                     std::to_string(id_.index()) + " already has a unique component of type " +
+                     detail::demangledName(type) + ", the new one is refused");
     }
 }
 
@@ -282,13 +282,17 @@ void GameObject::removeComponent(Component* component) {
     if (component == nullptr) {
         throw Error("core::GameObject::removeComponent(): component is null");
     }
-    const auto owns = [component](const std::unique_ptr<Component>& c) { return c.get() == component; };
+    const auto owns = [component](const std::unique_ptr<Component>& c) {
+        return c.get() == component;
+    };
     if (std::none_of(components_.begin(), components_.end(), owns) &&
         std::none_of(pendingAdd_.begin(), pendingAdd_.end(), owns)) {
-        throw Error("core::GameObject::removeComponent(): the component does not belong to object " +
-                    std::to_string(id_.index()));
+        throw Error(
+            "core::GameObject::removeComponent(): the component does not belong to object " +
+            std::to_string(id_.index()));
     }
-    if (std::find(pendingRemove_.begin(), pendingRemove_.end(), component) == pendingRemove_.end()) {
+    if (std::find(pendingRemove_.begin(), pendingRemove_.end(), component) ==
+        pendingRemove_.end()) {
         pendingRemove_.push_back(component);
         queueComponentChange();
     }
@@ -310,8 +314,11 @@ void GameObject::applyPendingComponents() {
     additions.swap(pendingAdd_);
 
     for (Component* component : removals) {
-        const auto owns = [component](const std::unique_ptr<Component>& c) { return c.get() == component; };
-        if (auto queued = std::find_if(additions.begin(), additions.end(), owns); queued != additions.end()) {
+        const auto owns = [component](const std::unique_ptr<Component>& c) {
+            return c.get() == component;
+        };
+        if (auto queued = std::find_if(additions.begin(), additions.end(), owns);
+            queued != additions.end()) {
             additions.erase(queued); // never attached: no events
             continue;
         }

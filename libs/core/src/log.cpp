@@ -24,12 +24,18 @@ void writeToStderr(LogLevel level, std::string_view message) {
 
 std::string_view toString(LogLevel level) noexcept {
     switch (level) {
-    case LogLevel::Trace: return "trace";
-    case LogLevel::Debug: return "debug";
-    case LogLevel::Info: return "info";
-    case LogLevel::Warning: return "warning";
-    case LogLevel::Error: return "error";
-    case LogLevel::Off: return "off";
+    case LogLevel::Trace:
+        return "trace";
+    case LogLevel::Debug:
+        return "debug";
+    case LogLevel::Info:
+        return "info";
+    case LogLevel::Warning:
+        return "warning";
+    case LogLevel::Error:
+        return "error";
+    case LogLevel::Off:
+        return "off";
     }
     return "unknown";
 }
@@ -42,9 +48,7 @@ Logger::Logger(LogLevel minLevel, Sink sink) : level_(minLevel), sink_(std::move
     }
 }
 
-void Logger::setSink(Sink sink) {
-    sink_ = sink ? std::move(sink) : Sink(writeToStderr);
-}
+void Logger::setSink(Sink sink) { sink_ = sink ? std::move(sink) : Sink(writeToStderr); }
 
 bool Logger::enabled(LogLevel level) const noexcept {
     return level != LogLevel::Off && level >= level_;

@@ -4,7 +4,6 @@
 #include <e2d/core/error.hpp>
 #include <e2d/core/error_text.hpp>
 
-
 namespace e2d::core {
 
 Mask MaskRegistry::create(std::string_view name) {

@@ -11,9 +11,7 @@ namespace e2d::core {
 
 Random::Random(std::uint64_t seed) : engine_(seed) {}
 
-void Random::seed(std::uint64_t seed) {
-    engine_.seed(seed);
-}
+void Random::seed(std::uint64_t seed) { engine_.seed(seed); }
 
 int Random::range(int min, int max) {
     if (min > max) {
@@ -22,14 +20,16 @@ int Random::range(int min, int max) {
     }
     // span <= 2^32, so it always fits; values below 2^64 mod span are rejected so that the
     // accepted draws cover a whole number of copies of [0, span).
-    const std::uint64_t span =
-        static_cast<std::uint64_t>(static_cast<std::int64_t>(max) - static_cast<std::int64_t>(min)) + 1;
+    const std::uint64_t span = static_cast<std::uint64_t>(static_cast<std::int64_t>(max) -
+                                                          static_cast<std::int64_t>(min)) +
+                               1;
     const std::uint64_t threshold = (0 - span) % span;
     std::uint64_t draw = engine_();
     while (draw < threshold) {
         draw = engine_();
     }
-    return static_cast<int>(static_cast<std::int64_t>(min) + static_cast<std::int64_t>(draw % span));
+    return static_cast<int>(static_cast<std::int64_t>(min) +
+                            static_cast<std::int64_t>(draw % span));
 }
 
 float Random::range01() {
@@ -50,8 +50,8 @@ float Random::range(float min, float max) {
     if (min == max) {
         return min;
     }
-    const auto value = static_cast<float>(static_cast<double>(min) +
-                                          (static_cast<double>(max) - static_cast<double>(min)) * u);
+    const auto value = static_cast<float>(
+        static_cast<double>(min) + (static_cast<double>(max) - static_cast<double>(min)) * u);
     // Rounding to float can land on max when the interval is a few ulps wide.
     return value < max ? value : std::nextafter(max, min);
 }

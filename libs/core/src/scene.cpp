@@ -33,15 +33,16 @@ GameObject& Scene::createGameObject() {
         slots_.emplace_back();
     }
     Slot& slot = slots_[index];
-    slot.object.reset(new GameObject(*this, GameObjectId::forSlot(index, slot.generation, tag_), objectsCreated_++));
+    slot.object.reset(new GameObject(*this, GameObjectId::forSlot(index, slot.generation, tag_),
+                                     objectsCreated_++));
     pendingAdd_.push_back(slot.object.get());
     return *slot.object;
 }
 
 void Scene::destroyGameObject(GameObject& object) {
     if (object.scene_ != this) {
-        throw Error("core::Scene::destroyGameObject(): object " + std::to_string(object.id().index()) +
-                    " belongs to another scene");
+        throw Error("core::Scene::destroyGameObject(): object " +
+                    std::to_string(object.id().index()) + " belongs to another scene");
     }
     if (!object.pendingDestroy_) {
         object.pendingDestroy_ = true;
@@ -60,8 +61,8 @@ bool Scene::destroyGameObject(GameObjectId id) {
 
 GameObject* Scene::find(GameObjectId id) const noexcept {
     // A free slot's generation is already the next object's; its object is null.
-    const std::optional<std::uint32_t> index =
-        findSlot(id, slots_.size(), [this](std::uint32_t i) { return slots_[i].generation; }, tag_);
+    const std::optional<std::uint32_t> index = findSlot(
+        id, slots_.size(), [this](std::uint32_t i) { return slots_[i].generation; }, tag_);
     return index ? slots_[*index].object.get() : nullptr;
 }
 
@@ -69,7 +70,8 @@ namespace {
 
 // Joined objects, then those waiting to join, skipping those waiting to be destroyed.
 template <class F>
-void forEachLive(const std::vector<GameObject*>& joined, const std::vector<GameObject*>& pending, F&& f) {
+void forEachLive(const std::vector<GameObject*>& joined, const std::vector<GameObject*>& pending,
+                 F&& f) {
     for (const auto* list : {&joined, &pending}) {
         for (GameObject* o : *list) {
             if (!o->isPendingDestroy() && !f(*o)) {
@@ -138,9 +140,7 @@ void Scene::attachHost(SceneHost* host, std::string name) {
     }
 }
 
-Logger* Scene::logger() const noexcept {
-    return host_ != nullptr ? &host_->logger() : nullptr;
-}
+Logger* Scene::logger() const noexcept { return host_ != nullptr ? &host_->logger() : nullptr; }
 
 SceneHost& Scene::requireHost(const char* function) const {
     if (host_ == nullptr) {
@@ -151,29 +151,25 @@ SceneHost& Scene::requireHost(const char* function) const {
 
 void Scene::throwNoSystem(const std::type_info& type) const {
     if (host_ == nullptr) {
-        throw Error("core::Scene::system(): the scene has no host yet to look up " + detail::demangledName(type) +
-                    " in (a scene's constructor runs before its host attaches: look systems up in onInitialize() "
+        throw Error("core::Scene::system(): the scene has no host yet to look up " +
+                    detail::demangledName(type) +
+                    " in (a scene's constructor runs before its host attaches: look systems up in "
+                    "onInitialize() "
                     "or later)");
     }
-    throw Error(std::string("core::Scene::system(): no system of type ") + detail::demangledName(type) +
-                " is registered with the scene's host");
+    throw Error(std::string("core::Scene::system(): no system of type ") +
+                detail::demangledName(type) + " is registered with the scene's host");
 }
 
 void Scene::changeToScene(std::string_view name) {
     requireHost("changeToScene").changeToScene(name);
 }
 
-void Scene::terminateGame() {
-    requireHost("terminateGame").terminateGame();
-}
+void Scene::terminateGame() { requireHost("terminateGame").terminateGame(); }
 
-int Scene::windowWidth() const {
-    return requireHost("windowWidth").windowSize().x;
-}
+int Scene::windowWidth() const { return requireHost("windowWidth").windowSize().x; }
 
-int Scene::windowHeight() const {
-    return requireHost("windowHeight").windowSize().y;
-}
+int Scene::windowHeight() const { return requireHost("windowHeight").windowSize().y; }
 
 int Scene::referenceWindowWidth() const {
     return requireHost("referenceWindowWidth").referenceWindowSize().x;
@@ -227,9 +223,11 @@ void Scene::destroyPending() {
 
     const auto dying = [](const GameObject* o) { return o->beingDestroyed_; };
     objects_.erase(std::remove_if(objects_.begin(), objects_.end(), dying), objects_.end());
-    pendingAdd_.erase(std::remove_if(pendingAdd_.begin(), pendingAdd_.end(), dying), pendingAdd_.end());
-    componentChanges_.erase(std::remove_if(componentChanges_.begin(), componentChanges_.end(), dying),
-                            componentChanges_.end());
+    pendingAdd_.erase(std::remove_if(pendingAdd_.begin(), pendingAdd_.end(), dying),
+                      pendingAdd_.end());
+    componentChanges_.erase(
+        std::remove_if(componentChanges_.begin(), componentChanges_.end(), dying),
+        componentChanges_.end());
     for (GameObject* object : batch) {
         if (object->parent_ != nullptr && !object->parent_->beingDestroyed_) {
             object->detachFromParent();
@@ -253,7 +251,8 @@ void Scene::destroyPending() {
 
 void Scene::beginFrame() {
     if (dispatchDepth_ > 0) {
-        throw Error("core::Scene::beginFrame(): called from inside an event of scene '" + name_ + "'");
+        throw Error("core::Scene::beginFrame(): called from inside an event of scene '" + name_ +
+                    "'");
     }
     DispatchGuard guard(*this);
     inFixedSteps_ = false;
@@ -317,8 +316,9 @@ template <class Channel, class Receiver>
 void insertSorted(Channel& channel, const Receiver& receiver) {
     auto& list = channel.receivers;
     // Usually at the end: objects and components are attached in the order they get serials.
-    const auto at = std::upper_bound(list.begin(), list.end(), receiver.order,
-                                     [](std::uint64_t order, const Receiver& r) { return order < r.order; });
+    const auto at =
+        std::upper_bound(list.begin(), list.end(), receiver.order,
+                         [](std::uint64_t order, const Receiver& r) { return order < r.order; });
     list.insert(at, receiver);
 }
 
@@ -336,7 +336,8 @@ void clearSlot(Channel& channel, std::uint64_t order) {
 } // namespace
 
 void Scene::addReceivers(Component& component, std::uint32_t objectSerial) {
-    component.deliveryOrder_ = (static_cast<std::uint64_t>(objectSerial) << 32) | componentsAttached_++;
+    component.deliveryOrder_ =
+        (static_cast<std::uint64_t>(objectSerial) << 32) | componentsAttached_++;
     const std::uint64_t order = component.deliveryOrder_;
     if (component.hasUpdate_) {
         insertSorted(updates_, Receiver{order, &component, &component});
@@ -375,7 +376,8 @@ void Scene::compactChannels() {
     const auto compact = [](Channel& channel) {
         if (channel.hasHoles) {
             auto& list = channel.receivers;
-            list.erase(std::remove_if(list.begin(), list.end(), [](const Receiver& r) { return r.component == nullptr; }),
+            list.erase(std::remove_if(list.begin(), list.end(),
+                                      [](const Receiver& r) { return r.component == nullptr; }),
                        list.end());
             channel.hasHoles = false;
         }
@@ -389,7 +391,8 @@ void Scene::compactChannels() {
 
 void Scene::dispatchTerminate() {
     if (dispatchDepth_ > 0) {
-        throw Error("core::Scene::dispatchTerminate(): called from inside an event of scene '" + name_ + "'");
+        throw Error("core::Scene::dispatchTerminate(): called from inside an event of scene '" +
+                    name_ + "'");
     }
     {
         DispatchGuard guard(*this);

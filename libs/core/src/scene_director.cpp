@@ -53,7 +53,8 @@ bool SceneDirector::applyPendingChange() {
 bool SceneDirector::switchTo(std::string_view name) {
     if (!registry_.contains(name)) {
         logger_.error("core::SceneDirector: unknown scene " + quote(name) +
-                      (scene_ ? ", keeping scene " + quote(scene_->name()) : std::string(", no scene is running")));
+                      (scene_ ? ", keeping scene " + quote(scene_->name())
+                              : std::string(", no scene is running")));
         return false;
     }
     if (scene_) {
@@ -71,12 +72,8 @@ bool SceneDirector::switchTo(std::string_view name) {
     return true;
 }
 
-void SceneDirector::changeToScene(std::string_view name) {
-    pending_ = std::string(name);
-}
+void SceneDirector::changeToScene(std::string_view name) { pending_ = std::string(name); }
 
-void SceneDirector::terminateGame() {
-    terminate_ = true;
-}
+void SceneDirector::terminateGame() { terminate_ = true; }
 
 } // namespace e2d::core

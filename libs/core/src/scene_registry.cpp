@@ -4,7 +4,6 @@
 #include <e2d/core/error.hpp>
 #include <e2d/core/error_text.hpp>
 
-
 namespace e2d::core {
 
 void SceneRegistry::add(std::string name, Factory factory) {
@@ -22,7 +21,8 @@ void SceneRegistry::add(std::string name, Factory factory) {
 }
 
 void SceneRegistry::add(std::string name, SceneFunctions functions) {
-    add(std::move(name), [functions = std::move(functions)] { return std::make_unique<FunctionScene>(functions); });
+    add(std::move(name),
+        [functions = std::move(functions)] { return std::make_unique<FunctionScene>(functions); });
 }
 
 std::unique_ptr<Scene> SceneRegistry::create(std::string_view name) const {

@@ -23,8 +23,8 @@ bool StateMachine::owns(const State& state) const noexcept {
 
 void StateMachine::addTransition(State& from, State& to, Condition condition) {
     if (!owns(from) || !owns(to)) {
-        throw Error(std::string("core::StateMachine::addTransition(): the ") + (owns(from) ? "'to'" : "'from'") +
-                    " state does not belong to this machine");
+        throw Error(std::string("core::StateMachine::addTransition(): the ") +
+                    (owns(from) ? "'to'" : "'from'") + " state does not belong to this machine");
     }
     if (!condition) {
         throw Error("core::StateMachine::addTransition(): condition is empty");
@@ -42,7 +42,8 @@ void StateMachine::enter(State& state) {
 
 void StateMachine::start(State& initial) {
     if (!owns(initial)) {
-        throw Error("core::StateMachine::start(): the initial state does not belong to this machine");
+        throw Error(
+            "core::StateMachine::start(): the initial state does not belong to this machine");
     }
     enter(initial);
 }

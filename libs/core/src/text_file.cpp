@@ -27,7 +27,8 @@ TextFile readTextFile(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary);
     if (!file) {
         const int code = errno;
-        out.error = code != 0 ? std::generic_category().message(code) : std::string("it cannot be opened");
+        out.error =
+            code != 0 ? std::generic_category().message(code) : std::string("it cannot be opened");
         return out;
     }
     out.text.assign(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());

@@ -51,10 +51,10 @@ TEST(Clock, HalfScaleHalvesTime) {
 TEST(Clock, ChangingTheScaleDoesNotMakeTimeJump) {
     ManualTime t;
     Clock clock(t.source());
-    t.now += 4.0;            // 4 s at scale 1
+    t.now += 4.0; // 4 s at scale 1
     clock.setTimeScale(2.0);
     EXPECT_EQ(clock.time(), 4.0);
-    t.now += 1.5;            // 1.5 s at scale 2 -> +3
+    t.now += 1.5; // 1.5 s at scale 2 -> +3
     EXPECT_EQ(clock.time(), 7.0);
     clock.setTimeScale(0.0); // paused
     t.now += 100.0;
@@ -79,9 +79,9 @@ TEST(Clock, ScaleChangeBetweenTicksSplitsTheDelta) {
     ManualTime t;
     Clock clock(t.source());
     clock.tick();
-    t.now += 1.0;            // 1 s at scale 1
+    t.now += 1.0; // 1 s at scale 1
     clock.setTimeScale(3.0);
-    t.now += 0.5;            // 0.5 s at scale 3
+    t.now += 0.5; // 0.5 s at scale 3
     EXPECT_EQ(clock.tick(), 2.5);
 }
 
@@ -105,7 +105,8 @@ TEST(Clock, RejectsBadScaleAndKeepsTheOldOne) {
         clock.setTimeScale(-1.0);
         FAIL() << "expected core::Error";
     } catch (const e2d::core::Error& e) {
-        EXPECT_STREQ(e.what(), "core::Clock::setTimeScale(): scale must be finite and >= 0, got -1");
+        EXPECT_STREQ(e.what(),
+                     "core::Clock::setTimeScale(): scale must be finite and >= 0, got -1");
     }
     EXPECT_THROW(clock.setTimeScale(std::numeric_limits<double>::infinity()), e2d::core::Error);
     EXPECT_THROW(clock.setTimeScale(std::numeric_limits<double>::quiet_NaN()), e2d::core::Error);
@@ -113,8 +114,9 @@ TEST(Clock, RejectsBadScaleAndKeepsTheOldOne) {
 }
 
 TEST(Clock, RejectsAnEmptySource) {
-    EXPECT_THAT([] { Clock clock{Clock::TimeSource{}}; },
-                testing::ThrowsMessage<e2d::core::Error>(HasSubstr("time source must not be empty")));
+    EXPECT_THAT(
+        [] { Clock clock{Clock::TimeSource{}}; },
+        testing::ThrowsMessage<e2d::core::Error>(HasSubstr("time source must not be empty")));
 }
 
 TEST(Clock, DefaultSourceIsMonotonic) {

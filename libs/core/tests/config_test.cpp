@@ -90,36 +90,37 @@ TEST(ConfigReader, ReadsEveryTypeWithWhitespaceCommentsCrlfAndABom) {
 
 TEST(ConfigReader, EveryErrorKindWithItsLineAndWrongValuesKeepTheField) {
     Reader r;
-    const ConfigReport report = r.reader.read("width = abc\n"          // 1: not a number
-                                              "width = 12px\n"         // 2: trailing junk
-                                              "width = 1.5\n"          // 3: not an integer
-                                              "width = -5\n"           // 4: below the minimum
-                                              "width = 99999999999\n"  // 5: overflows int
-                                              "shape = oval\n"         // 6: unknown enum value
-                                              "just some words\n"      // 7: missing '='
-                                              " = 5\n"                 // 8: empty key
-                                              "gain = 2\n"             // 9: above the maximum
-                                              "step = 0\n"             // 10: must be > 0
-                                              "gain = inf\n"           // 11: not finite
-                                              "gain = 1e60\n"          // 12: overflows float
-                                              "smooth = yes\n"         // 13: not a boolean
-                                              "frames =\n",            // 14: empty value
+    const ConfigReport report = r.reader.read("width = abc\n"         // 1: not a number
+                                              "width = 12px\n"        // 2: trailing junk
+                                              "width = 1.5\n"         // 3: not an integer
+                                              "width = -5\n"          // 4: below the minimum
+                                              "width = 99999999999\n" // 5: overflows int
+                                              "shape = oval\n"        // 6: unknown enum value
+                                              "just some words\n"     // 7: missing '='
+                                              " = 5\n"                // 8: empty key
+                                              "gain = 2\n"            // 9: above the maximum
+                                              "step = 0\n"            // 10: must be > 0
+                                              "gain = inf\n"          // 11: not finite
+                                              "gain = 1e60\n"         // 12: overflows float
+                                              "smooth = yes\n"        // 13: not a boolean
+                                              "frames =\n",           // 14: empty value
                                               "game.cfg");
-    EXPECT_THAT(texts(report),
-                ElementsAre("game.cfg:1: width: expected an integer, got 'abc'",
-                            "game.cfg:2: width: expected an integer, got '12px'",
-                            "game.cfg:3: width: expected an integer, got '1.5'",
-                            "game.cfg:4: width: must be >= 1, got -5",
-                            "game.cfg:5: width: integer out of range, got '99999999999'",
-                            "game.cfg:6: shape: unknown value 'oval', expected one of: round, square",
-                            "game.cfg:7: expected 'key = value', got 'just some words'",
-                            "game.cfg:8: empty key before '=' in '= 5'",
-                            "game.cfg:9: gain: must be in [0, 1], got 2",
-                            "game.cfg:10: step: must be in (0, 1], got 0",
-                            "game.cfg:11: gain: expected a finite number, got 'inf'",
-                            "game.cfg:12: gain: number out of range, got '1e60'",
-                            "game.cfg:13: smooth: expected true or false, got 'yes'",
-                            "game.cfg:14: frames: expected an integer, got ''"));
+    EXPECT_THAT(
+        texts(report),
+        ElementsAre("game.cfg:1: width: expected an integer, got 'abc'",
+                    "game.cfg:2: width: expected an integer, got '12px'",
+                    "game.cfg:3: width: expected an integer, got '1.5'",
+                    "game.cfg:4: width: must be >= 1, got -5",
+                    "game.cfg:5: width: integer out of range, got '99999999999'",
+                    "game.cfg:6: shape: unknown value 'oval', expected one of: round, square",
+                    "game.cfg:7: expected 'key = value', got 'just some words'",
+                    "game.cfg:8: empty key before '=' in '= 5'",
+                    "game.cfg:9: gain: must be in [0, 1], got 2",
+                    "game.cfg:10: step: must be in (0, 1], got 0",
+                    "game.cfg:11: gain: expected a finite number, got 'inf'",
+                    "game.cfg:12: gain: number out of range, got '1e60'",
+                    "game.cfg:13: smooth: expected true or false, got 'yes'",
+                    "game.cfg:14: frames: expected an integer, got ''"));
     for (const Diagnostic& d : report.diagnostics) {
         EXPECT_EQ(d.severity, Severity::Error);
     }
@@ -161,14 +162,15 @@ TEST(ConfigReader, UnknownKeysSuggestTheNearestKnownKey) {
 
 TEST(ConfigReader, RawBytesInMessagesAreEscaped) {
     Reader r;
-    const std::string text = std::string("wi\0dth = 3\n", 11) + "width = 1\x1b[2J\n" + "shape = \xff\xfe\n" +
-                             "\x01\x02 no equals\n";
+    const std::string text = std::string("wi\0dth = 3\n", 11) + "width = 1\x1b[2J\n" +
+                             "shape = \xff\xfe\n" + "\x01\x02 no equals\n";
     const ConfigReport report = r.reader.read(text, "bin.cfg");
-    EXPECT_THAT(texts(report),
-                ElementsAre("bin.cfg:1: wi\\x00dth: unknown key, ignored (did you mean 'width'?)",
-                            "bin.cfg:2: width: expected an integer, got '1\\x1b[2J'",
-                            "bin.cfg:3: shape: unknown value '\\xff\\xfe', expected one of: round, square",
-                            "bin.cfg:4: expected 'key = value', got '\\x01\\x02 no equals'"));
+    EXPECT_THAT(
+        texts(report),
+        ElementsAre("bin.cfg:1: wi\\x00dth: unknown key, ignored (did you mean 'width'?)",
+                    "bin.cfg:2: width: expected an integer, got '1\\x1b[2J'",
+                    "bin.cfg:3: shape: unknown value '\\xff\\xfe', expected one of: round, square",
+                    "bin.cfg:4: expected 'key = value', got '\\x01\\x02 no equals'"));
     for (const std::string& line : texts(report)) {
         EXPECT_EQ(line.find('\0'), std::string::npos);
         EXPECT_EQ(line.find('\x1b'), std::string::npos);
@@ -195,27 +197,32 @@ TEST(ConfigReader, EmptyTextChangesNothing) {
 
 TEST(ConfigReader, MissingFileOrFolderWarnsAndChangesNothing) {
     Reader r;
-    const std::filesystem::path path = std::filesystem::temp_directory_path() / "e2d-core-test-does-not-exist.cfg";
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / "e2d-core-test-does-not-exist.cfg";
     const ConfigReport report = r.reader.load(path);
     ASSERT_EQ(report.diagnostics.size(), 1u);
     EXPECT_EQ(report.diagnostics[0].severity, Severity::Warning);
     EXPECT_EQ(report.diagnostics[0].line, 0);
-    EXPECT_EQ(report.diagnostics[0].toString(), path.string() + ": cannot read the file (no such file), using the defaults");
+    EXPECT_EQ(report.diagnostics[0].toString(),
+              path.string() + ": cannot read the file (no such file), using the defaults");
     EXPECT_EQ(r.settings.width, 640);
     const ConfigReport folder = r.reader.load(std::filesystem::temp_directory_path());
     ASSERT_EQ(folder.diagnostics.size(), 1u);
     EXPECT_EQ(folder.diagnostics[0].severity, Severity::Warning);
-    EXPECT_EQ(folder.diagnostics[0].message, "cannot read the file (it is a directory), using the defaults");
+    EXPECT_EQ(folder.diagnostics[0].message,
+              "cannot read the file (it is a directory), using the defaults");
 }
 
 TEST(ConfigReader, LoadsAFile) {
     Reader r;
-    const std::filesystem::path path = std::filesystem::temp_directory_path() / "e2d-core-test-load.cfg";
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / "e2d-core-test-load.cfg";
     std::ofstream(path, std::ios::binary) << "# test\ntitle = Loaded Game\nwidth = x\n";
     const ConfigReport report = r.reader.load(path);
     std::filesystem::remove(path);
     EXPECT_EQ(r.settings.title, "Loaded Game");
-    EXPECT_THAT(texts(report), ElementsAre(path.string() + ":3: width: expected an integer, got 'x'"));
+    EXPECT_THAT(texts(report),
+                ElementsAre(path.string() + ":3: width: expected an integer, got 'x'"));
 }
 
 TEST(ConfigReader, ChecksAcrossKeysAreReportedOnTheLineOfTheKey) {

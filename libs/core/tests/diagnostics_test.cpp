@@ -11,18 +11,25 @@
 using namespace e2d::core;
 
 TEST(Diagnostics, OneFormatLeavesOutWhatIsAbsent) {
-    EXPECT_EQ((Diagnostic{Severity::Error, "game.cfg", 12, 0, "windowWidth", "expected an integer, got 'abc'"}.toString()),
+    EXPECT_EQ((Diagnostic{Severity::Error, "game.cfg", 12, 0, "windowWidth",
+                          "expected an integer, got 'abc'"}
+                   .toString()),
               "game.cfg:12: windowWidth: expected an integer, got 'abc'");
-    EXPECT_EQ((Diagnostic{Severity::Error, "pads.txt", 3, 7, "", "GUID must be 32 hex digits"}.toString()),
+    EXPECT_EQ((Diagnostic{Severity::Error, "pads.txt", 3, 7, "", "GUID must be 32 hex digits"}
+                   .toString()),
               "pads.txt:3:7: GUID must be 32 hex digits");
-    EXPECT_EQ((Diagnostic{Severity::Warning, "sheet.json", 0, 5, "frames[0].w", "expected an integer"}.toString()),
-              "sheet.json: frames[0].w: expected an integer")
+    EXPECT_EQ(
+        (Diagnostic{Severity::Warning, "sheet.json", 0, 5, "frames[0].w", "expected an integer"}
+             .toString()),
+        "sheet.json: frames[0].w: expected an integer")
         << "a column without a line means nothing";
-    EXPECT_EQ((Diagnostic{Severity::Warning, "missing.cfg", 0, 0, "", "cannot read the file"}.toString()),
-              "missing.cfg: cannot read the file");
+    EXPECT_EQ(
+        (Diagnostic{Severity::Warning, "missing.cfg", 0, 0, "", "cannot read the file"}.toString()),
+        "missing.cfg: cannot read the file");
     EXPECT_EQ((Diagnostic{Severity::Error, "", 3, 7, "bodies[2]", "not valid JSON"}.toString()),
               "line 3, column 7: bodies[2]: not valid JSON");
-    EXPECT_EQ((Diagnostic{Severity::Error, "", 0, 0, "radius", "must be > 0"}.toString()), "radius: must be > 0");
+    EXPECT_EQ((Diagnostic{Severity::Error, "", 0, 0, "radius", "must be > 0"}.toString()),
+              "radius: must be > 0");
 }
 
 TEST(Diagnostics, OkMeansNoErrorsWarningsAllowed) {
@@ -46,12 +53,15 @@ TEST(Diagnostics, OkMeansNoErrorsWarningsAllowed) {
     EXPECT_EQ(d.errors()[0].message, "expected '='");
     ASSERT_EQ(d.warnings().size(), 2u);
     EXPECT_EQ(d.warnings()[1].line, 3);
-    EXPECT_EQ(d.toString(), "a.txt:1: unknown field 'q', ignored\na.txt:2: key: expected '='\na.txt:3: duplicate");
+    EXPECT_EQ(
+        d.toString(),
+        "a.txt:1: unknown field 'q', ignored\na.txt:2: key: expected '='\na.txt:3: duplicate");
 }
 
 TEST(Diagnostics, ParseErrorIsACoreErrorThatKeepsItsDiagnostic) {
     try {
-        throw ParseError(Diagnostic{Severity::Error, "s.json", 0, 0, "frames", "expected an array"}, "render::SpriteSheet: ");
+        throw ParseError(Diagnostic{Severity::Error, "s.json", 0, 0, "frames", "expected an array"},
+                         "render::SpriteSheet: ");
     } catch (const Error& e) {
         EXPECT_STREQ(e.what(), "render::SpriteSheet: s.json: frames: expected an array");
         const auto* parse = dynamic_cast<const ParseError*>(&e);
@@ -61,7 +71,8 @@ TEST(Diagnostics, ParseErrorIsACoreErrorThatKeepsItsDiagnostic) {
 }
 
 TEST(TextFile, ReadsEveryByteOrSaysWhyNot) {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "e2d-core-text-file-test";
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "e2d-core-text-file-test";
     std::filesystem::create_directories(dir);
     const std::filesystem::path path = dir / "bytes.txt";
     const std::string bytes("a\r\nb\0c\xFF", 7);
@@ -80,7 +91,8 @@ TEST(TextFile, ReadsEveryByteOrSaysWhyNot) {
         static_cast<void>(readRequiredTextFile(dir, "input::ActionMap::load()"));
         ADD_FAILURE() << "a directory was read";
     } catch (const Error& e) {
-        EXPECT_EQ(e.what(), "input::ActionMap::load(): cannot read '" + dir.string() + "': it is a directory");
+        EXPECT_EQ(e.what(), "input::ActionMap::load(): cannot read '" + dir.string() +
+                                "': it is a directory");
     }
 
     std::filesystem::permissions(path, std::filesystem::perms::none);

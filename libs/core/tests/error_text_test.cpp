@@ -51,7 +51,8 @@ TEST(ErrorText, WholeNumbersAndVectors) {
     EXPECT_EQ(formatNumber(-3), "-3");
     EXPECT_EQ(formatNumber(std::uint64_t{18446744073709551615u}), "18446744073709551615");
     EXPECT_EQ(formatVector(glm::vec2(1.0f, 6.0e5f)), "(1, 600000)");
-    EXPECT_EQ(formatVector(glm::vec3(0.5f, -2.0f, std::numeric_limits<float>::quiet_NaN())), "(0.5, -2, nan)");
+    EXPECT_EQ(formatVector(glm::vec3(0.5f, -2.0f, std::numeric_limits<float>::quiet_NaN())),
+              "(0.5, -2, nan)");
     EXPECT_EQ(formatVector(glm::ivec2(640, -1)), "(640, -1)");
 }
 
@@ -76,16 +77,21 @@ TEST(ErrorText, LongValuesAreCutOnACharacterBoundary) {
 }
 
 TEST(ErrorText, ThrownMessagesNameFunctionFieldAndValue) {
-    EXPECT_EQ(messageOf([] { throwError("core::Thing::set()", "no thing"); }), "core::Thing::set(): no thing");
+    EXPECT_EQ(messageOf([] { throwError("core::Thing::set()", "no thing"); }),
+              "core::Thing::set(): no thing");
     EXPECT_EQ(messageOf([] { throwInvalid("core::Thing::set()", "def.size", ">= 0", -1.5f); }),
               "core::Thing::set(): def.size must be >= 0, got -1.5");
     EXPECT_EQ(messageOf([] { throwInvalid("core::Thing::set()", "count", "in [1, 8]", 9); }),
               "core::Thing::set(): count must be in [1, 8], got 9");
     EXPECT_EQ(messageOf([] { throwInvalid("f()", "at", "inside", glm::vec2(1.0f, 2.0f)); }),
               "f(): at must be inside, got (1, 2)");
-    EXPECT_EQ(messageOf([] { requireFinite("f()", "zoom", std::numeric_limits<float>::infinity()); }),
-              "f(): zoom must be finite, got inf");
-    EXPECT_EQ(messageOf([] { requireFinite("f()", "p", glm::vec2(0.0f, std::numeric_limits<float>::quiet_NaN())); }),
+    EXPECT_EQ(
+        messageOf([] { requireFinite("f()", "zoom", std::numeric_limits<float>::infinity()); }),
+        "f(): zoom must be finite, got inf");
+    EXPECT_EQ(messageOf([] {
+                  requireFinite("f()", "p",
+                                glm::vec2(0.0f, std::numeric_limits<float>::quiet_NaN()));
+              }),
               "f(): p must be finite, got (0, nan)");
     EXPECT_EQ(messageOf([] { requireFinite("f()", "p", glm::vec2(0.0f, 1.0f)); }), "no error");
 }

@@ -117,19 +117,22 @@ TEST(FixedStepper, ResetForgetsLeftoverAndDroppedTime) {
 
 TEST(FixedStepper, ValidatesConstructorArguments) {
     EXPECT_THAT([] { FixedStepper s(0.0, 5); },
-                ThrowsMessage<Error>("core::FixedStepper::FixedStepper(): step must be finite and > 0, got 0"));
+                ThrowsMessage<Error>(
+                    "core::FixedStepper::FixedStepper(): step must be finite and > 0, got 0"));
     EXPECT_THAT([] { FixedStepper s(-0.5, 5); }, ThrowsMessage<Error>(HasSubstr("got -0.5")));
     EXPECT_THAT([] { FixedStepper s(std::numeric_limits<double>::infinity(), 5); },
                 ThrowsMessage<Error>(HasSubstr("step must be finite and > 0, got inf")));
     EXPECT_THAT([] { FixedStepper s(0.25, 0); },
-                ThrowsMessage<Error>("core::FixedStepper::FixedStepper(): maxStepsPerFrame must be >= 1, got 0"));
+                ThrowsMessage<Error>(
+                    "core::FixedStepper::FixedStepper(): maxStepsPerFrame must be >= 1, got 0"));
 }
 
 TEST(FixedStepper, RejectsBadFrameTimeAndStaysUnchanged) {
     FixedStepper stepper(0.25, 4);
     stepper.advance(0.125);
     EXPECT_THAT([&] { stepper.advance(-1.0); },
-                ThrowsMessage<Error>("core::FixedStepper::advance(): frameDt must be finite and >= 0, got -1"));
+                ThrowsMessage<Error>(
+                    "core::FixedStepper::advance(): frameDt must be finite and >= 0, got -1"));
     EXPECT_THROW(stepper.advance(std::numeric_limits<double>::quiet_NaN()), Error);
     EXPECT_EQ(stepper.accumulated(), 0.125);
 }

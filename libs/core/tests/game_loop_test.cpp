@@ -35,9 +35,7 @@ namespace {
 
 std::vector<std::string>* gCalls = nullptr;
 
-void record(std::string call) {
-    gCalls->push_back(std::move(call));
-}
+void record(std::string call) { gCalls->push_back(std::move(call)); }
 
 class CountingComponent : public Component {
 public:
@@ -103,7 +101,9 @@ private:
 // A director with the two scenes and a physics-like system, on a manual clock.
 class LoopParts : public testing::Test {
 protected:
-    LoopParts() : logger(LogLevel::Off), director(registry, logger), stepper(0.25, 3), clock([this] { return now; }) {
+    LoopParts()
+        : logger(LogLevel::Off), director(registry, logger), stepper(0.25, 3),
+          clock([this] { return now; }) {
         gCalls = &calls;
         FirstScene::leaveOnUpdate = false;
         registry.add<FirstScene>("First");
@@ -149,11 +149,13 @@ TEST_F(GameLoopTest, FrameRunsFixedStepsThenUpdateThenRender) {
     EXPECT_EQ(info.fixedSteps, 2);
     EXPECT_EQ(info.alpha, 0.5);
     EXPECT_FALSE(info.sceneChanged);
-    EXPECT_THAT(calls, ElementsAre("physics.begin", "renderer.begin",                                       //
-                                   "scene.fixed", "component.fixed", "physics.fixed", "renderer.fixed",     //
-                                   "scene.fixed", "component.fixed", "physics.fixed", "renderer.fixed",     //
-                                   "scene.update", "component.update", "physics.update", "renderer.update", //
-                                   "physics.render", "renderer.render"));
+    EXPECT_THAT(calls,
+                ElementsAre("physics.begin", "renderer.begin",                                   //
+                            "scene.fixed", "component.fixed", "physics.fixed", "renderer.fixed", //
+                            "scene.fixed", "component.fixed", "physics.fixed", "renderer.fixed", //
+                            "scene.update", "component.update", "physics.update",
+                            "renderer.update", //
+                            "physics.render", "renderer.render"));
     EXPECT_EQ(physics.lastStep, 0.25);
     EXPECT_EQ(physics.lastDt, 0.625);
     EXPECT_EQ(renderer.lastAlpha, 0.5);
@@ -189,9 +191,10 @@ TEST_F(GameLoopTest, SceneChangeHappensAtTheStartOfTheNextFrame) {
     EXPECT_TRUE(info.sceneChanged);
     EXPECT_EQ(director.sceneName(), "Second");
     // The 0.125 s left from the first scene are forgotten: 0.125 s is no step yet.
-    EXPECT_THAT(calls, ElementsAre("first.term", "physics.clear", "renderer.clear", "second.init", "physics.begin",
-                                   "renderer.begin", "second.update", "physics.update", "renderer.update",
-                                   "physics.render", "renderer.render"));
+    EXPECT_THAT(calls,
+                ElementsAre("first.term", "physics.clear", "renderer.clear", "second.init",
+                            "physics.begin", "renderer.begin", "second.update", "physics.update",
+                            "renderer.update", "physics.render", "renderer.render"));
     EXPECT_EQ(info.fixedSteps, 0);
     EXPECT_EQ(info.alpha, 0.5);
     // SecondScene asked to end the game.
@@ -233,10 +236,14 @@ public:
 
     static std::string name(e2d::core::FramePhase phase) {
         switch (phase) {
-        case e2d::core::FramePhase::Begin: return "begin";
-        case e2d::core::FramePhase::FixedSteps: return "fixed";
-        case e2d::core::FramePhase::Update: return "update";
-        case e2d::core::FramePhase::Render: return "render";
+        case e2d::core::FramePhase::Begin:
+            return "begin";
+        case e2d::core::FramePhase::FixedSteps:
+            return "fixed";
+        case e2d::core::FramePhase::Update:
+            return "update";
+        case e2d::core::FramePhase::Render:
+            return "render";
         }
         return "?";
     }
@@ -285,12 +292,12 @@ TEST_F(EngineLoopTest, TheObserverSeesEveryPhaseAndEverySystemCallInOrder) {
     loop.start("First");
     calls.clear();
     const FrameInfo info = loop.frame();
-    EXPECT_THAT(calls, ElementsAre("frame 0",                                                  //
-                                   "[begin", "(watched", "physics.begin", ")", "begin]",       //
-                                   "[fixed", "scene.fixed", "component.fixed", "(watched",     //
-                                   "physics.fixed", ")", "fixed]",                             //
-                                   "[update", "scene.update", "component.update", "(watched",  //
-                                   "physics.update", ")", "update]",                           //
+    EXPECT_THAT(calls, ElementsAre("frame 0",                                                 //
+                                   "[begin", "(watched", "physics.begin", ")", "begin]",      //
+                                   "[fixed", "scene.fixed", "component.fixed", "(watched",    //
+                                   "physics.fixed", ")", "fixed]",                            //
+                                   "[update", "scene.update", "component.update", "(watched", //
+                                   "physics.update", ")", "update]",                          //
                                    "[render", "(watched", "physics.render", ")", "render]"));
     ASSERT_EQ(observer.ended.size(), 1u);
     EXPECT_EQ(observer.ended[0].index, 0);
@@ -320,8 +327,10 @@ TEST_F(EngineLoopTest, BadDefsAreRefusedNamingTheField) {
         }
         return "(no error)";
     };
-    EXPECT_EQ(errorOf({.maxFrameTime = 0.0}), "core::GameLoop::GameLoop(): maxFrameTime must be > 0, got 0");
+    EXPECT_EQ(errorOf({.maxFrameTime = 0.0}),
+              "core::GameLoop::GameLoop(): maxFrameTime must be > 0, got 0");
     EXPECT_EQ(errorOf({.fixedFrameTime = -1.0}),
               "core::GameLoop::GameLoop(): fixedFrameTime must be finite and >= 0, got -1");
-    EXPECT_EQ(errorOf({.frameLimit = -2}), "core::GameLoop::GameLoop(): frameLimit must be >= 0, got -2");
+    EXPECT_EQ(errorOf({.frameLimit = -2}),
+              "core::GameLoop::GameLoop(): frameLimit must be >= 0, got -2");
 }

@@ -223,23 +223,31 @@ TEST(GameObjectTransform, NonFiniteValuesAreRefusedAtTheSetterNamingTheObject) {
     crate.setOrientation(0.25f);
 
     EXPECT_THAT([&] { crate.setPosition(glm::vec2(kNan, 0.0f)); },
-                ThrowsMessage<Error>("core::GameObject::setPosition(): object 'crate' got position (nan, 0); "
-                                     "it must be finite"));
+                ThrowsMessage<Error>(
+                    "core::GameObject::setPosition(): object 'crate' got position (nan, 0); "
+                    "it must be finite"));
     EXPECT_THAT([&] { crate.setPosition(glm::vec3(0.0f, 0.0f, -kInf)); },
-                ThrowsMessage<Error>("core::GameObject::setPosition(): object 'crate' got position (0, 0, -inf); "
-                                     "it must be finite"));
-    EXPECT_THAT([&] { crate.translate({kInf, 1.0f}); },
-                ThrowsMessage<Error>("core::GameObject::translate(): object 'crate' got delta (inf, 1) "
-                                     "(new position (inf, 3)); it must be finite"));
+                ThrowsMessage<Error>(
+                    "core::GameObject::setPosition(): object 'crate' got position (0, 0, -inf); "
+                    "it must be finite"));
+    EXPECT_THAT(
+        [&] {
+            crate.translate({kInf, 1.0f});
+        },
+        ThrowsMessage<Error>("core::GameObject::translate(): object 'crate' got delta (inf, 1) "
+                             "(new position (inf, 3)); it must be finite"));
     // A scale is reported as a scale, not as a bad rotation further down.
-    EXPECT_THAT([&] { crate.setScale(kNan); },
-                ThrowsMessage<Error>("core::GameObject::setScale(): object 'crate' got scale (nan, nan); "
-                                     "it must be finite"));
+    EXPECT_THAT(
+        [&] { crate.setScale(kNan); },
+        ThrowsMessage<Error>("core::GameObject::setScale(): object 'crate' got scale (nan, nan); "
+                             "it must be finite"));
     EXPECT_THAT([&] { crate.setOrientation(kInf); },
-                ThrowsMessage<Error>("core::GameObject::setOrientation(): object 'crate' got orientation inf; "
-                                     "it must be finite"));
+                ThrowsMessage<Error>(
+                    "core::GameObject::setOrientation(): object 'crate' got orientation inf; "
+                    "it must be finite"));
     EXPECT_THAT([&] { crate.rotate(kNan); },
-                ThrowsMessage<Error>("core::GameObject::rotate(): object 'crate' got angle nan; it must be finite"));
+                ThrowsMessage<Error>(
+                    "core::GameObject::rotate(): object 'crate' got angle nan; it must be finite"));
     // Nothing changed.
     expectNear(crate.position(), {1.0f, 2.0f, 3.0f});
     expectNear(crate.scale(), {2.0f, 0.5f});
@@ -249,11 +257,16 @@ TEST(GameObjectTransform, NonFiniteValuesAreRefusedAtTheSetterNamingTheObject) {
     // Without a name the tag names the object, without either its index.
     GameObject& coin = scene.createGameObject();
     coin.setTag("coin");
-    EXPECT_THAT([&] { coin.setScale({1.0f, kInf}); },
-                ThrowsMessage<Error>(HasSubstr("core::GameObject::setScale(): object tagged 'coin' got scale (1, inf)")));
+    EXPECT_THAT(
+        [&] {
+            coin.setScale({1.0f, kInf});
+        },
+        ThrowsMessage<Error>(
+            HasSubstr("core::GameObject::setScale(): object tagged 'coin' got scale (1, inf)")));
     GameObject& plain = scene.createGameObject();
     EXPECT_THAT([&] { plain.setPosition(glm::vec2(kNan)); },
-                ThrowsMessage<Error>(HasSubstr("core::GameObject::setPosition(): object 2 got position (nan, nan)")));
+                ThrowsMessage<Error>(HasSubstr(
+                    "core::GameObject::setPosition(): object 2 got position (nan, nan)")));
 }
 
 TEST(GameObjectRenderPose, ChangesDuringFixedStepsAreDrawnBetweenStatesAndChildrenFollow) {
@@ -276,7 +289,8 @@ TEST(GameObjectRenderPose, ChangesDuringFixedStepsAreDrawnBetweenStatesAndChildr
     expectNear(body.renderPosition(), {2.5f, 0.0f, 0.0f});
     expectNear(label.renderPosition(), {2.5f, 5.0f, 0.0f}); // the child from the same pose
     expectNear(still.renderPosition(), {-3.0f, 0.0f, 0.0f});
-    expectNear(body.worldPosition(), {10.0f, 0.0f, 0.0f}); // the object itself is where the step put it
+    expectNear(body.worldPosition(),
+               {10.0f, 0.0f, 0.0f}); // the object itself is where the step put it
 
     scene.dispatchUpdate(0.1);
     scene.dispatchFixedUpdate(0.1); // 10 -> 20
@@ -332,11 +346,13 @@ TEST(GameObjectHierarchy, RefusesCyclesAndSelf) {
     b.addChild(c);
     EXPECT_TRUE(a.isAncestorOf(c));
     EXPECT_FALSE(c.isAncestorOf(a));
-    EXPECT_THAT([&] { c.addChild(a); },
-                ThrowsMessage<Error>("core::GameObject::addChild(): object 0 is an ancestor of object 2, "
-                                     "this would make a cycle"));
-    EXPECT_THAT([&] { a.addChild(a); },
-                ThrowsMessage<Error>("core::GameObject::addChild(): object 0 cannot be its own child"));
+    EXPECT_THAT(
+        [&] { c.addChild(a); },
+        ThrowsMessage<Error>("core::GameObject::addChild(): object 0 is an ancestor of object 2, "
+                             "this would make a cycle"));
+    EXPECT_THAT(
+        [&] { a.addChild(a); },
+        ThrowsMessage<Error>("core::GameObject::addChild(): object 0 cannot be its own child"));
     // Unchanged.
     EXPECT_EQ(a.parent(), nullptr);
     EXPECT_THAT(c.children(), testing::IsEmpty());
@@ -350,9 +366,11 @@ TEST(GameObjectHierarchy, RefusesOtherScenesAndStrangers) {
     GameObject& a = one.createGameObject();
     GameObject& b = one.createGameObject();
     GameObject& stranger = two.createGameObject();
-    EXPECT_THAT([&] { a.addChild(stranger); }, ThrowsMessage<Error>(HasSubstr("belongs to another scene")));
+    EXPECT_THAT([&] { a.addChild(stranger); },
+                ThrowsMessage<Error>(HasSubstr("belongs to another scene")));
     EXPECT_THAT([&] { a.removeChild(b); },
-                ThrowsMessage<Error>("core::GameObject::removeChild(): object 1 is not a child of object 0"));
+                ThrowsMessage<Error>(
+                    "core::GameObject::removeChild(): object 1 is not a child of object 0"));
 }
 
 // Components -----------------------------------------------------------------------------
@@ -418,8 +436,9 @@ TEST(GameObjectComponents, UniqueComponentRefusedEvenWhilePending) {
     EXPECT_EQ(o.addComponent<SpecialBody>(), nullptr); // a SpecialBody is a Body
     ASSERT_EQ(host.messages.size(), 2u);
     EXPECT_EQ(host.messages[0].first, LogLevel::Warning);
-    EXPECT_THAT(host.messages[0].second, HasSubstr("core::GameObject::addComponent(): object 0 already has a "
-                                                   "unique component"));
+    EXPECT_THAT(host.messages[0].second,
+                HasSubstr("core::GameObject::addComponent(): object 0 already has a "
+                          "unique component"));
     scene.beginFrame();
     EXPECT_EQ(o.addComponent<Body>(), nullptr); // now attached
     EXPECT_EQ(o.getComponents<Body>().size(), 1u);
@@ -494,8 +513,10 @@ TEST(GameObjectComponents, RemoveRejectsForeignOrNullComponents) {
     GameObject& a = scene.createGameObject();
     GameObject& b = scene.createGameObject();
     Tag* onB = b.addComponent<Tag>(1);
-    EXPECT_THAT([&] { a.removeComponent(onB); },
-                ThrowsMessage<Error>("core::GameObject::removeComponent(): the component does not belong to object 0"));
+    EXPECT_THAT(
+        [&] { a.removeComponent(onB); },
+        ThrowsMessage<Error>(
+            "core::GameObject::removeComponent(): the component does not belong to object 0"));
     EXPECT_THAT([&] { a.removeComponent(nullptr); },
                 ThrowsMessage<Error>("core::GameObject::removeComponent(): component is null"));
 }
@@ -540,11 +561,11 @@ TEST(GameObjectComponents, AddAndRemoveFromInsideUpdateAreSafe) {
     log.clear();
 
     scene.beginFrame();
-    EXPECT_THAT(log.events, ElementsAre("victim:term", "victim:removed", "victim:destroyed", "late:added", "late:init"));
+    EXPECT_THAT(log.events, ElementsAre("victim:term", "victim:removed", "victim:destroyed",
+                                        "late:added", "late:init"));
     log.clear();
 
     scene.dispatchUpdate(0.1);
     EXPECT_THAT(log.events, ElementsAre("after:update", "late:update"));
     EXPECT_EQ(mutator->updates, 2);
 }
-

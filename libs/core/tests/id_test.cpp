@@ -55,7 +55,10 @@ struct Pool {
     [[nodiscard]] std::optional<std::uint32_t> find(ThingId id) const {
         return findSlot(
             id, slots.size(),
-            [this](std::uint32_t i) { return slots[i].alive ? slots[i].generation : std::uint16_t{0}; }, tag);
+            [this](std::uint32_t i) {
+                return slots[i].alive ? slots[i].generation : std::uint16_t{0};
+            },
+            tag);
     }
 };
 

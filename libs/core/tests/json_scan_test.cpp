@@ -25,7 +25,8 @@ TEST(JsonScan, FindsTheBracketThatOpensOneLevelTooMany) {
 TEST(JsonScan, BracketsInStringsDoNotCount) {
     EXPECT_EQ(findJsonNestingBeyond(R"({"[[[[": "{{{{"})", 1), std::nullopt);
     // An escaped quote does not end the string; an escaped backslash does not escape the quote.
-    EXPECT_EQ(findJsonNestingBeyond(R"(["\"[[[", "\\", [[0]]])", 2), std::optional<std::size_t>(17));
+    EXPECT_EQ(findJsonNestingBeyond(R"(["\"[[[", "\\", [[0]]])", 2),
+              std::optional<std::size_t>(17));
 }
 
 TEST(JsonScan, AHundredThousandLevelsCutShortOrNotAreFoundInConstantStack) {

@@ -16,7 +16,9 @@ namespace {
 struct Captured {
     std::vector<std::pair<LogLevel, std::string>> messages;
     Logger::Sink sink() {
-        return [this](LogLevel level, std::string_view message) { messages.emplace_back(level, std::string(message)); };
+        return [this](LogLevel level, std::string_view message) {
+            messages.emplace_back(level, std::string(message));
+        };
     }
 };
 

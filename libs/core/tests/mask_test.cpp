@@ -66,8 +66,10 @@ TEST(MaskRegistry, GetAndContains) {
     EXPECT_EQ(masks.get("b"), b);
     EXPECT_TRUE(masks.contains("a"));
     EXPECT_FALSE(masks.contains("c"));
-    EXPECT_THAT([&] { (void)masks.get("c"); }, ThrowsMessage<Error>("core::MaskRegistry::get(): no mask named 'c'"));
-    EXPECT_THAT([&] { masks.create(""); }, ThrowsMessage<Error>("core::MaskRegistry::create(): name must not be empty"));
+    EXPECT_THAT([&] { (void)masks.get("c"); },
+                ThrowsMessage<Error>("core::MaskRegistry::get(): no mask named 'c'"));
+    EXPECT_THAT([&] { masks.create(""); },
+                ThrowsMessage<Error>("core::MaskRegistry::create(): name must not be empty"));
 }
 
 TEST(MaskRegistry, SixtyFourMasksAtMost) {
@@ -80,9 +82,10 @@ TEST(MaskRegistry, SixtyFourMasksAtMost) {
         ASSERT_EQ(masks.create(name).bits(), std::uint64_t{1} << i);
     }
     EXPECT_EQ(masks.get("m63").bits(), std::uint64_t{1} << 63);
-    EXPECT_THAT([&] { masks.create("one-too-many"); },
-                ThrowsMessage<Error>("core::MaskRegistry::create(): cannot create mask 'one-too-many', "
-                                     "the limit of 64 masks is reached"));
+    EXPECT_THAT(
+        [&] { masks.create("one-too-many"); },
+        ThrowsMessage<Error>("core::MaskRegistry::create(): cannot create mask 'one-too-many', "
+                             "the limit of 64 masks is reached"));
     EXPECT_EQ(masks.size(), 64);
     EXPECT_FALSE(masks.contains("one-too-many"));
     // Existing names are still fine at the limit.

@@ -9,7 +9,8 @@ using e2d::core::printable;
 
 TEST(Printable, KeepsTextAndUtf8AndEscapesTheRest) {
     EXPECT_EQ(printable("width = 12"), "width = 12");
-    EXPECT_EQ(printable("caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x8E\xAE"), "caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x8E\xAE");
+    EXPECT_EQ(printable("caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x8E\xAE"),
+              "caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x8E\xAE");
     EXPECT_EQ(printable(std::string("a\0b", 3)), "a\\x00b");
     EXPECT_EQ(printable("tab\there\r\n"), "tab\\there\\r\\n");
     EXPECT_EQ(printable("back\\slash"), "back\\\\slash");

@@ -161,13 +161,18 @@ TEST(Random, Range01IsOnA24BitGrid) {
 
 TEST(Random, RejectsInvertedOrNonFiniteBounds) {
     Random random(1);
-    EXPECT_THAT([&] { random.range(5, 3); },
-                ThrowsMessage<Error>("core::Random::range(): min must be <= max, got min 5, max 3"));
-    EXPECT_THAT([&] { random.range(1.5f, -1.0f); },
-                ThrowsMessage<Error>(
-                    "core::Random::range(): bounds must be finite with min <= max, got min 1.5, max -1"));
+    EXPECT_THAT(
+        [&] { random.range(5, 3); },
+        ThrowsMessage<Error>("core::Random::range(): min must be <= max, got min 5, max 3"));
+    EXPECT_THAT(
+        [&] { random.range(1.5f, -1.0f); },
+        ThrowsMessage<Error>(
+            "core::Random::range(): bounds must be finite with min <= max, got min 1.5, max -1"));
     EXPECT_THROW(random.range(0.0f, std::numeric_limits<float>::infinity()), Error);
     EXPECT_THROW(random.range(std::numeric_limits<float>::quiet_NaN(), 1.0f), Error);
-    EXPECT_THAT([&] { random.range(-std::numeric_limits<float>::max(), std::numeric_limits<float>::max()); },
-                ThrowsMessage<Error>(testing::HasSubstr("max - min overflows a float")));
+    EXPECT_THAT(
+        [&] {
+            random.range(-std::numeric_limits<float>::max(), std::numeric_limits<float>::max());
+        },
+        ThrowsMessage<Error>(testing::HasSubstr("max - min overflows a float")));
 }

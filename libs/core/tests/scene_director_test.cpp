@@ -55,11 +55,12 @@ public:
 class SceneDirectorTest : public testing::Test {
 protected:
     SceneDirectorTest()
-        : logger(LogLevel::Trace, [this](LogLevel level, std::string_view message) {
-              if (level >= LogLevel::Warning) {
-                  problems.emplace_back(message);
-              }
-          }),
+        : logger(LogLevel::Trace,
+                 [this](LogLevel level, std::string_view message) {
+                     if (level >= LogLevel::Warning) {
+                         problems.emplace_back(message);
+                     }
+                 }),
           director(registry, logger) {
         gLog = &log;
         registry.add<MenuScene>("Menu");
@@ -99,8 +100,9 @@ TEST_F(SceneDirectorTest, ChangeHappensOnApplyAndTerminatesTheOldSceneThenClears
     EXPECT_TRUE(director.applyPendingChange());
     EXPECT_EQ(director.sceneName(), "Level");
     EXPECT_FALSE(director.pendingChange().has_value());
-    EXPECT_THAT(log.events, ElementsAre("menu:sceneTerm", "menuObject:term", "menuObject:destroyed", "system:clear",
-                                        "level:sceneInit", "levelObject:added", "levelObject:init"));
+    EXPECT_THAT(log.events, ElementsAre("menu:sceneTerm", "menuObject:term", "menuObject:destroyed",
+                                        "system:clear", "level:sceneInit", "levelObject:added",
+                                        "levelObject:init"));
     EXPECT_FALSE(director.applyPendingChange()); // nothing pending any more
 }
 
@@ -132,8 +134,9 @@ TEST_F(SceneDirectorTest, LastRequestWinsAndSameNameRestarts) {
     log.clear();
     EXPECT_TRUE(director.applyPendingChange());
     EXPECT_EQ(director.sceneName(), "Menu");
-    EXPECT_THAT(log.events, ElementsAre("menu:sceneTerm", "menuObject:term", "menuObject:destroyed", "system:clear",
-                                        "menu:sceneInit", "menuObject:added", "menuObject:init"));
+    EXPECT_THAT(log.events, ElementsAre("menu:sceneTerm", "menuObject:term", "menuObject:destroyed",
+                                        "system:clear", "menu:sceneInit", "menuObject:added",
+                                        "menuObject:init"));
     static_cast<void>(first); // the old instance is gone; only its events are checked
 }
 
@@ -143,7 +146,8 @@ TEST_F(SceneDirectorTest, StopTerminatesTheScene) {
     director.stop();
     EXPECT_EQ(director.scene(), nullptr);
     EXPECT_EQ(director.sceneName(), "");
-    EXPECT_THAT(log.events, ElementsAre("level:sceneTerm", "levelObject:term", "levelObject:destroyed"));
+    EXPECT_THAT(log.events,
+                ElementsAre("level:sceneTerm", "levelObject:term", "levelObject:destroyed"));
 }
 
 TEST_F(SceneDirectorTest, HostServices) {
@@ -160,7 +164,8 @@ TEST_F(SceneDirectorTest, HostServices) {
 }
 
 TEST_F(SceneDirectorTest, SystemsAreRegisteredOnce) {
-    EXPECT_THAT(std::vector<System*>(director.systems().begin(), director.systems().end()), ElementsAre(&system));
+    EXPECT_THAT(std::vector<System*>(director.systems().begin(), director.systems().end()),
+                ElementsAre(&system));
     EXPECT_THROW(director.addSystem(system), e2d::core::Error);
 }
 

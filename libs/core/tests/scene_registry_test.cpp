@@ -67,39 +67,49 @@ TEST(SceneRegistry, RejectsDuplicateEmptyAndNull) {
     SceneRegistry registry;
     registry.add<MenuScene>("Menu");
     EXPECT_THAT([&] { registry.add<LevelScene>("Menu"); },
-                ThrowsMessage<Error>("core::SceneRegistry::add(): a scene named 'Menu' is already registered"));
+                ThrowsMessage<Error>(
+                    "core::SceneRegistry::add(): a scene named 'Menu' is already registered"));
     EXPECT_THAT([&] { registry.add<MenuScene>(""); },
                 ThrowsMessage<Error>("core::SceneRegistry::add(): scene name must not be empty"));
-    EXPECT_THAT([&] { registry.add("Null", SceneRegistry::Factory{}); },
-                ThrowsMessage<Error>("core::SceneRegistry::add(): factory for scene 'Null' is empty"));
+    EXPECT_THAT(
+        [&] { registry.add("Null", SceneRegistry::Factory{}); },
+        ThrowsMessage<Error>("core::SceneRegistry::add(): factory for scene 'Null' is empty"));
     EXPECT_THAT(registry.names(), ElementsAre("Menu"));
 }
 
 TEST(SceneRegistry, FunctionScenesRunTheirFunctionsAtTheirEvents) {
     SceneRegistry registry;
     std::vector<std::string> seen;
-    registry.add("Functions", e2d::core::SceneFunctions{
-                                  .initialize = [&](Scene& s) { seen.push_back(s.createGameObject().isInitialized() ? "init?" : "init"); },
-                                  .update = [&](Scene&, double dt) { seen.push_back("update " + std::to_string(dt)); },
-                                  .fixedUpdate = [&](Scene&, double step) { seen.push_back("fixed " + std::to_string(step)); },
-                                  .terminate = [&](Scene&) { seen.push_back("terminate"); },
-                              });
+    registry.add(
+        "Functions",
+        e2d::core::SceneFunctions{
+            .initialize =
+                [&](Scene& s) {
+                    seen.push_back(s.createGameObject().isInitialized() ? "init?" : "init");
+                },
+            .update = [&](Scene&, double dt) { seen.push_back("update " + std::to_string(dt)); },
+            .fixedUpdate = [&](Scene&,
+                               double step) { seen.push_back("fixed " + std::to_string(step)); },
+            .terminate = [&](Scene&) { seen.push_back("terminate"); },
+        });
     registry.add("Empty", e2d::core::SceneFunctions{});
     for (int round = 0; round < 2; ++round) {
         std::unique_ptr<Scene> scene = registry.create("Functions");
         ASSERT_NE(scene, nullptr);
         scene->dispatchInitialize();
-        EXPECT_EQ(scene->gameObjects().size(), 1u) << "the object created in initialize joined the scene";
+        EXPECT_EQ(scene->gameObjects().size(), 1u)
+            << "the object created in initialize joined the scene";
         scene->dispatchFixedUpdate(0.5);
         scene->dispatchUpdate(0.25);
         scene->dispatchTerminate();
     }
-    EXPECT_THAT(seen, ElementsAre("init", "fixed 0.500000", "update 0.250000", "terminate", "init", "fixed 0.500000",
-                                  "update 0.250000", "terminate"));
+    EXPECT_THAT(seen, ElementsAre("init", "fixed 0.500000", "update 0.250000", "terminate", "init",
+                                  "fixed 0.500000", "update 0.250000", "terminate"));
     std::unique_ptr<Scene> empty = registry.create("Empty");
     empty->dispatchInitialize();
     empty->dispatchUpdate(0.25);
     empty->dispatchTerminate();
     EXPECT_THAT([&] { registry.add("Functions", e2d::core::SceneFunctions{}); },
-                ThrowsMessage<Error>("core::SceneRegistry::add(): a scene named 'Functions' is already registered"));
+                ThrowsMessage<Error>(
+                    "core::SceneRegistry::add(): a scene named 'Functions' is already registered"));
 }

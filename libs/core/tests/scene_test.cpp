@@ -59,7 +59,8 @@ TEST(Scene, ObjectsCreatedInOnInitializeJoinAtOnce) {
     EventLog log;
     RecordingScene scene(log);
     scene.dispatchInitialize();
-    EXPECT_THAT(log.events, ElementsAre("scene:init", "a1:added", "a2:added", "b1:added", "a1:init", "a2:init", "b1:init"));
+    EXPECT_THAT(log.events, ElementsAre("scene:init", "a1:added", "a2:added", "b1:added", "a1:init",
+                                        "a2:init", "b1:init"));
     EXPECT_THAT(scene.gameObjects(), ElementsAre(scene.first, scene.second));
     EXPECT_TRUE(scene.first->isInitialized());
 }
@@ -267,13 +268,14 @@ TEST(Scene, DestroyingAParentDestroysItsChildrenParentsFirst) {
     log.clear();
 
     const GameObjectId ids[] = {root.id(), child.id(), grandchild.id()};
-    scene.destroyGameObject(child);      // also covered by the root's destruction
+    scene.destroyGameObject(child); // also covered by the root's destruction
     EXPECT_TRUE(scene.destroyGameObject(root.id()));
     scene.beginFrame();
 
     // All terminations first (everything still intact), then the destructions.
-    EXPECT_THAT(log.events, ElementsAre("child:term", "grandchild:term", "root:term", "child:destroyed",
-                                        "grandchild:destroyed", "root:destroyed"));
+    EXPECT_THAT(log.events,
+                ElementsAre("child:term", "grandchild:term", "root:term", "child:destroyed",
+                            "grandchild:destroyed", "root:destroyed"));
     for (const GameObjectId id : ids) {
         EXPECT_EQ(scene.find(id), nullptr);
     }
@@ -315,7 +317,7 @@ TEST(Scene, StaleIdIsDetectedAfterTheSlotIsReused) {
     scene.beginFrame();
 
     GameObject& reuser = scene.createGameObject();
-    EXPECT_EQ(reuser.id().index(), old.index()); // same slot...
+    EXPECT_EQ(reuser.id().index(), old.index());       // same slot...
     EXPECT_NE(reuser.id().generation, old.generation); // ...new generation
     EXPECT_EQ(scene.find(old), nullptr);
     EXPECT_EQ(scene.find(reuser.id()), &reuser);
@@ -359,7 +361,8 @@ TEST(Scene, DestroyRejectsObjectsOfAnotherScene) {
     Scene two;
     GameObject& stranger = two.createGameObject();
     EXPECT_THAT([&] { one.destroyGameObject(stranger); },
-                ThrowsMessage<Error>("core::Scene::destroyGameObject(): object 0 belongs to another scene"));
+                ThrowsMessage<Error>(
+                    "core::Scene::destroyGameObject(): object 0 belongs to another scene"));
 }
 
 TEST(Scene, TerminateCallsOnTerminateEverywhereAndInvalidatesIds) {
@@ -372,8 +375,9 @@ TEST(Scene, TerminateCallsOnTerminateEverywhereAndInvalidatesIds) {
     log.clear();
 
     scene.dispatchTerminate();
-    EXPECT_THAT(log.events, ElementsAre("scene:term", "a1:term", "a2:term", "b1:term", "a1:destroyed",
-                                        "a2:destroyed", "b1:destroyed", "late:destroyed"));
+    EXPECT_THAT(log.events,
+                ElementsAre("scene:term", "a1:term", "a2:term", "b1:term", "a1:destroyed",
+                            "a2:destroyed", "b1:destroyed", "late:destroyed"));
     for (const GameObjectId id : ids) {
         EXPECT_EQ(scene.find(id), nullptr);
     }
@@ -419,10 +423,12 @@ TEST(Scene, HostServices) {
 TEST(Scene, HostServicesWithoutAHostThrow) {
     Scene scene;
     EXPECT_EQ(scene.logger(), nullptr);
-    EXPECT_THAT([&] { scene.changeToScene("X"); },
-                ThrowsMessage<Error>("core::Scene::changeToScene(): the scene has no host attached"));
+    EXPECT_THAT(
+        [&] { scene.changeToScene("X"); },
+        ThrowsMessage<Error>("core::Scene::changeToScene(): the scene has no host attached"));
     EXPECT_THAT([&] { scene.terminateGame(); }, ThrowsMessage<Error>(HasSubstr("terminateGame()")));
-    EXPECT_THAT([&] { (void)scene.windowWidth(); }, ThrowsMessage<Error>(HasSubstr("windowWidth()")));
+    EXPECT_THAT([&] { (void)scene.windowWidth(); },
+                ThrowsMessage<Error>(HasSubstr("windowWidth()")));
 }
 
 TEST(Scene, ComponentsAddedToALiveObjectAreInitialisedOnAttach) {
@@ -488,12 +494,14 @@ TEST(Scene, InactiveObjectsAndTheirDescendantsGetNoFrameOrInputEvents) {
     scene.dispatchUpdate(0.02);
     scene.dispatchFixedUpdate(0.01);
     scene.dispatch(Ping{65});
-    EXPECT_THAT(log.events, ElementsAre("scene:update", "b1:update", "scene:fixed", "b1:fixed", "scene:ping", "b1:ping"));
+    EXPECT_THAT(log.events, ElementsAre("scene:update", "b1:update", "scene:fixed", "b1:fixed",
+                                        "scene:ping", "b1:ping"));
 
     log.clear();
     scene.first->setActive(true);
     scene.dispatchUpdate(0.02);
-    EXPECT_THAT(log.events, ElementsAre("scene:update", "a1:update", "a2:update", "b1:update", "c1:update"));
+    EXPECT_THAT(log.events,
+                ElementsAre("scene:update", "a1:update", "a2:update", "b1:update", "c1:update"));
 }
 
 TEST(Scene, ObjectsAreFoundByNameAndTag) {

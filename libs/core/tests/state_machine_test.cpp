@@ -158,15 +158,21 @@ TEST(StateMachine, RejectsForeignStatesAndEmptyConditions) {
     StateMachine other;
     auto& mine = machine.addState<Traced>(log, "mine");
     auto& theirs = other.addState<Traced>(log, "theirs");
-    EXPECT_THAT([&] { machine.addTransition(mine, theirs, [] { return true; }); },
-                ThrowsMessage<Error>("core::StateMachine::addTransition(): the 'to' state does not belong to this machine"));
+    EXPECT_THAT(
+        [&] { machine.addTransition(mine, theirs, [] { return true; }); },
+        ThrowsMessage<Error>(
+            "core::StateMachine::addTransition(): the 'to' state does not belong to this machine"));
     EXPECT_THAT([&] { machine.addTransition(theirs, mine, [] { return true; }); },
-                ThrowsMessage<Error>("core::StateMachine::addTransition(): the 'from' state does not belong to this machine"));
+                ThrowsMessage<Error>("core::StateMachine::addTransition(): the 'from' state does "
+                                     "not belong to this machine"));
     EXPECT_THAT([&] { machine.addTransition(mine, mine, {}); },
                 ThrowsMessage<Error>("core::StateMachine::addTransition(): condition is empty"));
-    EXPECT_THAT([&] { machine.start(theirs); },
-                ThrowsMessage<Error>("core::StateMachine::start(): the initial state does not belong to this machine"));
-    EXPECT_THAT([&] { machine.changeState(theirs); }, ThrowsMessage<Error>(testing::HasSubstr("changeState()")));
+    EXPECT_THAT(
+        [&] { machine.start(theirs); },
+        ThrowsMessage<Error>(
+            "core::StateMachine::start(): the initial state does not belong to this machine"));
+    EXPECT_THAT([&] { machine.changeState(theirs); },
+                ThrowsMessage<Error>(testing::HasSubstr("changeState()")));
     EXPECT_THAT([&] { machine.addState(std::unique_ptr<State>()); },
                 ThrowsMessage<Error>("core::StateMachine::addState(): state is null"));
     EXPECT_EQ(machine.current(), nullptr);
@@ -188,5 +194,6 @@ TEST(StateMachineComponent, RunsWithItsObjectAndExitsOnTerminate) {
     scene.dispatchUpdate(0.25);
     EXPECT_EQ(machine.current(), &jump);
     scene.dispatchTerminate();
-    EXPECT_THAT(log, ElementsAre("walk.enter", "walk.update", "walk.update", "walk.exit", "jump.enter", "jump.exit"));
+    EXPECT_THAT(log, ElementsAre("walk.enter", "walk.update", "walk.update", "walk.exit",
+                                 "jump.enter", "jump.exit"));
 }

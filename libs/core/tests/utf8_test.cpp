@@ -27,7 +27,8 @@ std::vector<char32_t> decodeAll(std::string_view text) {
 } // namespace
 
 TEST(Utf8, DecodesOneToFourByteSequences) {
-    EXPECT_THAT(decodeAll("A\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80"), testing::ElementsAre(U'A', U'\u00E9', U'\u20AC', U'\U0001F600'));
+    EXPECT_THAT(decodeAll("A\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80"),
+                testing::ElementsAre(U'A', U'\u00E9', U'\u20AC', U'\U0001F600'));
     EXPECT_THAT(decodeAll(std::string_view("\0z", 2)), testing::ElementsAre(U'\0', U'z'));
 }
 

@@ -14,8 +14,8 @@ Int wholeNumber(std::string_view option, std::string_view text, Int min) {
     Int value{};
     const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (ec != std::errc() || ptr != text.data() + text.size() || value < min) {
-        throw core::Error(std::string(option) + ": expected a whole number >= " + std::to_string(min) + ", got '" +
-                          std::string(text) + "'");
+        throw core::Error(std::string(option) + ": expected a whole number >= " +
+                          std::to_string(min) + ", got '" + std::string(text) + "'");
     }
     return value;
 }
@@ -88,8 +88,10 @@ std::string usage(std::string_view program) {
            "  --frames N           run N frames of exactly 1/60 s, then exit (hidden window)\n"
            "  --screenshot FILE    save the last frame as a PNG\n"
            "  --seed N             seed of the game's random numbers\n"
-           "  --input-script FILE  timed input, one per line: '<frame> <press|release|tap> <action, key:x,\n"
-           "                       mouse:left or button:a>', '<frame> move mouse <x> <y>', '<frame> move axis:leftx <v>'\n"
+           "  --input-script FILE  timed input, one per line: '<frame> <press|release|tap> "
+           "<action, key:x,\n"
+           "                       mouse:left or button:a>', '<frame> move mouse <x> <y>', "
+           "'<frame> move axis:leftx <v>'\n"
            "  --debug-draw         start with the physics debug draw on\n"
            "  --profile            start with the frame profile overlay on\n"
            "  --show               keep the window visible with --frames\n"

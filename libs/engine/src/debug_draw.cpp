@@ -49,7 +49,9 @@ int drawPhysics(const physics::World& world, const render::Camera& camera, doubl
         if (world.isSensor(shape)) {
             c = color(DebugDrawColors::kSensor);
         }
-        const auto point = [&](physics::Vec2 local) { return toWorld(physics::transformPoint(xf, local)); };
+        const auto point = [&](physics::Vec2 local) {
+            return toWorld(physics::transformPoint(xf, local));
+        };
         std::visit(
             [&](const auto& g) {
                 using T = std::decay_t<decltype(g)>;
@@ -57,7 +59,8 @@ int drawPhysics(const physics::World& world, const render::Camera& camera, doubl
                     const glm::vec2 centre = point(g.center);
                     drawer.circle(centre, g.radius * upm, c, 2.0f);
                     // A radius shows the rotation.
-                    drawer.line(centre, centre + toWorld(physics::rotate(xf.q, {g.radius, 0.0f})), c, 2.0f);
+                    drawer.line(centre, centre + toWorld(physics::rotate(xf.q, {g.radius, 0.0f})),
+                                c, 2.0f);
                 } else if constexpr (std::is_same_v<T, physics::Capsule>) {
                     const glm::vec2 a = point(g.center1);
                     const glm::vec2 b = point(g.center2);
@@ -88,10 +91,12 @@ int drawPhysics(const physics::World& world, const render::Camera& camera, doubl
                 } else {
                     std::array<glm::vec2, physics::kMaxPolygonVertices> points{};
                     for (int i = 0; i < g.count; ++i) {
-                        points[static_cast<std::size_t>(i)] = point(g.vertices[static_cast<std::size_t>(i)]);
+                        points[static_cast<std::size_t>(i)] =
+                            point(g.vertices[static_cast<std::size_t>(i)]);
                     }
-                    drawer.polygon(std::span<const glm::vec2>(points.data(), static_cast<std::size_t>(g.count)), c,
-                                   2.0f);
+                    drawer.polygon(std::span<const glm::vec2>(points.data(),
+                                                              static_cast<std::size_t>(g.count)),
+                                   c, 2.0f);
                 }
             },
             world.shapeGeometry(shape));
@@ -131,7 +136,8 @@ int drawPhysics(const physics::World& world, const render::Camera& camera, doubl
         for (int i = 0; i < m.pointCount; ++i) {
             const glm::vec2 p = toWorld(m.points[i].point);
             drawer.fillCircle(p, 4.0f * pixel, color(DebugDrawColors::kContact));
-            drawer.line(p, p + glm::vec2(m.normal) * (20.0f * pixel), color(DebugDrawColors::kNormal), 2.0f);
+            drawer.line(p, p + glm::vec2(m.normal) * (20.0f * pixel),
+                        color(DebugDrawColors::kNormal), 2.0f);
         }
     });
     return static_cast<int>(shapes.size());

@@ -54,7 +54,8 @@ core::ConfigReader readerFor(EngineConfig& c) {
     r.add("allowedPenetration", c.allowedPenetration, kNonNegative);
     r.add("penetrationBiasFactor", c.penetrationBiasFactor, ConfigBounds{0.0, 1.0});
     r.add("minRigidbodySpeed", c.minRigidbodySpeed, kNonNegative);
-    r.add("physicsWorkers", c.physicsWorkers, ConfigBounds{1.0, static_cast<double>(physics::kMaxWorkers)});
+    r.add("physicsWorkers", c.physicsWorkers,
+          ConfigBounds{1.0, static_cast<double>(physics::kMaxWorkers)});
     r.add("unitsPerMetre", c.unitsPerMetre, kPositive);
     // SOUND
     r.add("minAttenuationDistance", c.minAttenuationDistance, kNonNegative);
@@ -81,17 +82,20 @@ core::ConfigReader readerFor(EngineConfig& c) {
 
 // A min above its max is blamed on whichever of the two was written last; both go back to
 // their defaults, which are consistent.
-void checkOrder(EngineConfig& c, core::ConfigReport& report, std::string_view file, std::string_view minKey,
-                float EngineConfig::*minField, std::string_view maxKey, float EngineConfig::*maxField) {
+void checkOrder(EngineConfig& c, core::ConfigReport& report, std::string_view file,
+                std::string_view minKey, float EngineConfig::*minField, std::string_view maxKey,
+                float EngineConfig::*maxField) {
     if (c.*minField <= c.*maxField) {
         return;
     }
     if (report.lineOf(maxKey) > report.lineOf(minKey)) {
         report.error(file, maxKey,
-                     "must be >= " + std::string(minKey) + " (" + core::formatNumber(c.*minField) + "), got " + core::formatNumber(c.*maxField));
+                     "must be >= " + std::string(minKey) + " (" + core::formatNumber(c.*minField) +
+                         "), got " + core::formatNumber(c.*maxField));
     } else {
         report.error(file, minKey,
-                     "must be <= " + std::string(maxKey) + " (" + core::formatNumber(c.*maxField) + "), got " + core::formatNumber(c.*minField));
+                     "must be <= " + std::string(maxKey) + " (" + core::formatNumber(c.*maxField) +
+                         "), got " + core::formatNumber(c.*minField));
     }
     const EngineConfig defaults;
     c.*minField = defaults.*minField;
@@ -121,12 +125,14 @@ physics::WorldDef makeWorldDef(const EngineConfig& config) {
 namespace {
 
 // The checks across keys.
-EngineConfigResult finish(EngineConfigResult result, core::ConfigReport report, std::string_view sourceName) {
+EngineConfigResult finish(EngineConfigResult result, core::ConfigReport report,
+                          std::string_view sourceName) {
     EngineConfig& c = result.config;
-    checkOrder(c, report, sourceName, "minAttenuationDistance", &EngineConfig::minAttenuationDistance,
-               "maxAttenuationDistance", &EngineConfig::maxAttenuationDistance);
-    checkOrder(c, report, sourceName, "minPanningDistance", &EngineConfig::minPanningDistance, "maxPanningDistance",
-               &EngineConfig::maxPanningDistance);
+    checkOrder(c, report, sourceName, "minAttenuationDistance",
+               &EngineConfig::minAttenuationDistance, "maxAttenuationDistance",
+               &EngineConfig::maxAttenuationDistance);
+    checkOrder(c, report, sourceName, "minPanningDistance", &EngineConfig::minPanningDistance,
+               "maxPanningDistance", &EngineConfig::maxPanningDistance);
     result.diagnostics = std::move(report.diagnostics);
     return result;
 }
@@ -148,7 +154,8 @@ EngineConfigResult loadEngineConfig(const std::filesystem::path& path, bool requ
         if (required) {
             result.diagnostics.error(core::printable(path.string()), 0, message);
         } else {
-            result.diagnostics.warning(core::printable(path.string()), 0, message + ", using the defaults");
+            result.diagnostics.warning(core::printable(path.string()), 0,
+                                       message + ", using the defaults");
         }
         result.config.assetRoot = std::filesystem::current_path(ec);
         return result;

@@ -17,14 +17,15 @@ FrameTimes FrameProfile::mean() const noexcept {
 std::string FrameProfile::toString() const {
     const FrameTimes m = mean();
     char buffer[512];
-    std::snprintf(buffer, sizeof buffer,
-                  "frame profile: %lld frames, %lld fixed steps, %lld spikes clamped, %.3f s dropped, "
-                  "%lld scene changes\n"
-                  "  mean ms per frame: input %.3f, fixed steps %.3f (physics %.3f), update %.3f "
-                  "(audio %.3f), render %.3f, total %.3f; longest frame %.3f ms",
-                  static_cast<long long>(frames), static_cast<long long>(fixedSteps),
-                  static_cast<long long>(spikes), droppedSeconds, static_cast<long long>(sceneChanges), m.input,
-                  m.fixedSteps, m.physics, m.update, m.audio, m.render, m.total, maxFrameMs);
+    std::snprintf(
+        buffer, sizeof buffer,
+        "frame profile: %lld frames, %lld fixed steps, %lld spikes clamped, %.3f s dropped, "
+        "%lld scene changes\n"
+        "  mean ms per frame: input %.3f, fixed steps %.3f (physics %.3f), update %.3f "
+        "(audio %.3f), render %.3f, total %.3f; longest frame %.3f ms",
+        static_cast<long long>(frames), static_cast<long long>(fixedSteps),
+        static_cast<long long>(spikes), droppedSeconds, static_cast<long long>(sceneChanges),
+        m.input, m.fixedSteps, m.physics, m.update, m.audio, m.render, m.total, maxFrameMs);
     return buffer;
 }
 

@@ -24,8 +24,8 @@ void FrameStart::beginFrame() {
 
 void FrameStart::render(double /*alpha*/) {
     if (state_.debugDraw) {
-        drawPhysics(state_.physics->world(), state_.renderSystem->activeCamera(), state_.config.unitsPerMetre,
-                    state_.renderer->drawer());
+        drawPhysics(state_.physics->world(), state_.renderSystem->activeCamera(),
+                    state_.config.unitsPerMetre, state_.renderer->drawer());
     }
 }
 

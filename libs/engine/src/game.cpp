@@ -77,15 +77,17 @@ struct Running {
     detail::FrameStart frameStart;
     detail::FrameEnd frameEnd;
 
-    Running(detail::GameState& state, const render::WindowDef& windowDef, const render::RendererDef& rendererDef,
-            const audio::MixerDef& mixerDef, const core::SceneRegistry& scenes, std::uint64_t seed)
-        : window(windowDef), renderer(window, rendererDef), renderSystem(renderer, nullptr, state.logger),
-          input(inputDef(state)), audio(mixerDef),
-          physics(makeWorldDef(state.config), static_cast<float>(state.config.unitsPerMetre)), random(seed),
-          game(state), director(scenes, *state.logger),
-          inputSystem(input, director, &actions, input::InputSystemDef{false, state.config.keyRepeat}),
-          overlay(renderSystem, *state.profile, static_cast<float>(state.config.maxCameraDepth)), frameStart(state),
-          frameEnd(state) {
+    Running(detail::GameState& state, const render::WindowDef& windowDef,
+            const render::RendererDef& rendererDef, const audio::MixerDef& mixerDef,
+            const core::SceneRegistry& scenes, std::uint64_t seed)
+        : window(windowDef), renderer(window, rendererDef),
+          renderSystem(renderer, nullptr, state.logger), input(inputDef(state)), audio(mixerDef),
+          physics(makeWorldDef(state.config), static_cast<float>(state.config.unitsPerMetre)),
+          random(seed), game(state), director(scenes, *state.logger),
+          inputSystem(input, director, &actions,
+                      input::InputSystemDef{false, state.config.keyRepeat}),
+          overlay(renderSystem, *state.profile, static_cast<float>(state.config.maxCameraDepth)),
+          frameStart(state), frameEnd(state) {
         state.window = &window;
         state.renderer = &renderer;
         state.renderSystem = &renderSystem;
@@ -107,7 +109,8 @@ struct Running {
         def.screenToWorld = [this](glm::vec2 screen) {
             const glm::vec2 scale = window.contentScale();
             const glm::vec2 framebuffer{screen.x * scale.x,
-                                        static_cast<float>(window.framebufferSize().y) - screen.y * scale.y};
+                                        static_cast<float>(window.framebufferSize().y) -
+                                            screen.y * scale.y};
             return renderSystem.activeCamera().screenToWorld(framebuffer);
         };
         return def;
@@ -123,8 +126,9 @@ struct Startup {
     std::optional<int> exitCode;
 };
 
-std::optional<input::Key> keyOf(const std::string& name, const char* field, const std::string& configName,
-                               core::Logger& logger, Startup& startup) {
+std::optional<input::Key> keyOf(const std::string& name, const char* field,
+                                const std::string& configName, core::Logger& logger,
+                                Startup& startup) {
     if (name.empty()) {
         return std::nullopt;
     }
@@ -136,11 +140,13 @@ std::optional<input::Key> keyOf(const std::string& name, const char* field, cons
     return key;
 }
 
-Startup readStartup(int argc, char** argv, std::string_view defaultConfig, const core::SceneRegistry& scenes,
-                    core::Logger& logger, detail::GameState& state) {
+Startup readStartup(int argc, char** argv, std::string_view defaultConfig,
+                    const core::SceneRegistry& scenes, core::Logger& logger,
+                    detail::GameState& state) {
     Startup startup;
-    startup.program = argc > 0 && argv[0] != nullptr ? std::filesystem::path(argv[0]).filename().string()
-                                                     : std::string("game");
+    startup.program = argc > 0 && argv[0] != nullptr
+                          ? std::filesystem::path(argv[0]).filename().string()
+                          : std::string("game");
     std::vector<std::string_view> args;
     for (int i = 1; i < argc; ++i) {
         args.emplace_back(argv[i]);
@@ -165,7 +171,8 @@ Startup readStartup(int argc, char** argv, std::string_view defaultConfig, const
     if (!required) {
         configPath = std::filesystem::path(defaultConfig);
         if (configPath.is_relative()) {
-            const std::filesystem::path beside = programFolder(argc > 0 ? argv[0] : nullptr) / configPath;
+            const std::filesystem::path beside =
+                programFolder(argc > 0 ? argv[0] : nullptr) / configPath;
             std::error_code ec;
             if (std::filesystem::is_regular_file(beside, ec)) {
                 configPath = beside;
@@ -174,7 +181,9 @@ Startup readStartup(int argc, char** argv, std::string_view defaultConfig, const
     }
     EngineConfigResult loaded = loadEngineConfig(configPath, required);
     for (const core::Diagnostic& d : loaded.diagnostics) {
-        logger.log(d.severity == core::Severity::Error ? core::LogLevel::Error : core::LogLevel::Warning, d.toString());
+        logger.log(d.severity == core::Severity::Error ? core::LogLevel::Error
+                                                       : core::LogLevel::Warning,
+                   d.toString());
     }
     if (!loaded.diagnostics.ok()) {
         logger.error(startup.program + ": the configuration has errors, not starting");
@@ -187,7 +196,8 @@ Startup readStartup(int argc, char** argv, std::string_view defaultConfig, const
     state.screenshot = options.screenshot;
     state.debugDraw = state.config.debugDraw || options.debugDraw;
     const EngineConfig& config = state.config;
-    const std::string configName = config.file.empty() ? std::string("configuration") : config.file.string();
+    const std::string configName =
+        config.file.empty() ? std::string("configuration") : config.file.string();
 
     if (config.firstScene.empty() || !scenes.contains(config.firstScene)) {
         std::string names;
@@ -195,8 +205,9 @@ Startup readStartup(int argc, char** argv, std::string_view defaultConfig, const
             names += (names.empty() ? "" : ", ") + n;
         }
         logger.error(configName + ": firstScene: " +
-                     (config.firstScene.empty() ? std::string("not set")
-                                                : "no scene is registered as '" + config.firstScene + "'") +
+                     (config.firstScene.empty()
+                          ? std::string("not set")
+                          : "no scene is registered as '" + config.firstScene + "'") +
                      " (registered: " + (names.empty() ? std::string("none") : names) + ")");
         startup.exitCode = kExitUsage;
         return startup;
@@ -219,7 +230,8 @@ Startup readStartup(int argc, char** argv, std::string_view defaultConfig, const
 
 /// Opens the window and creates every system; nullptr (the reason logged, `exitCode` set)
 /// when that fails.
-std::unique_ptr<Running> openSystems(detail::GameState& state, const core::SceneRegistry& scenes, Startup& startup) {
+std::unique_ptr<Running> openSystems(detail::GameState& state, const core::SceneRegistry& scenes,
+                                     Startup& startup) {
     const EngineConfig& config = state.config;
     const CommandLine& options = startup.options;
     core::Logger& logger = *state.logger;
@@ -239,8 +251,8 @@ std::unique_ptr<Running> openSystems(detail::GameState& state, const core::Scene
     mixerDef.logger = &logger;
     mixerDef.voiceCount = config.voiceCount;
     mixerDef.masterGain = config.masterGain;
-    mixerDef.spatial = {config.minAttenuationDistance, config.maxAttenuationDistance, config.minPanningDistance,
-                        config.maxPanningDistance};
+    mixerDef.spatial = {config.minAttenuationDistance, config.maxAttenuationDistance,
+                        config.minPanningDistance, config.maxPanningDistance};
     const std::uint64_t seed = options.seed.value_or(config.randomSeed);
 
     std::unique_ptr<Running> running;
@@ -249,16 +261,19 @@ std::unique_ptr<Running> openSystems(detail::GameState& state, const core::Scene
     } catch (const core::Error& e) {
         const std::string what = e.what();
         const bool display = what.rfind("render::", 0) == 0;
-        logger.error(startup.program + ": " + (display ? "cannot open the game window: " : "cannot start: ") + what +
-                     (display && std::getenv("DISPLAY") == nullptr
-                          ? " (no display: set DISPLAY, or run under xvfb-run / scripts/with-display.sh)"
-                          : ""));
+        logger.error(
+            startup.program + ": " +
+            (display ? "cannot open the game window: " : "cannot start: ") + what +
+            (display && std::getenv("DISPLAY") == nullptr
+                 ? " (no display: set DISPLAY, or run under xvfb-run / scripts/with-display.sh)"
+                 : ""));
         startup.exitCode = display ? kExitNoDisplay : kExitUsage;
         return nullptr;
     }
     Running& r = *running;
     r.overlay.setVisible(config.showProfile || options.profile);
-    const std::string configName = config.file.empty() ? std::string("configuration") : config.file.string();
+    const std::string configName =
+        config.file.empty() ? std::string("configuration") : config.file.string();
     if (!config.bindingsFile.empty()) {
         try {
             r.actions.load(r.game.asset(config.bindingsFile));
@@ -320,11 +335,12 @@ int Game::run(int argc, char** argv, std::string_view defaultConfig) {
     core::Clock clock;
     core::FixedStepper stepper(config.fixedTimestep, config.maxStepsPerFrame);
     detail::ProfileRecorder recorder(profile_, state.frame, running->physics, running->audio);
-    core::GameLoop loop(running->director, stepper, clock,
-                        core::GameLoopDef{.maxFrameTime = config.maxFrameTime,
-                                          .fixedFrameTime = state.headless ? kHeadlessFrameTime : 0.0,
-                                          .frameLimit = state.frameLimit,
-                                          .observer = &recorder});
+    core::GameLoop loop(
+        running->director, stepper, clock,
+        core::GameLoopDef{.maxFrameTime = config.maxFrameTime,
+                          .fixedFrameTime = state.headless ? kHeadlessFrameTime : 0.0,
+                          .frameLimit = state.frameLimit,
+                          .observer = &recorder});
 
     // The loop.
     int exitCode = kExitOk;

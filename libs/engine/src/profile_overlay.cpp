@@ -27,7 +27,8 @@ void ProfileOverlay::refresh() {
                   "render %.2f  audio %.2f  input %.2f",
                   total, total > 0.0 ? 1000.0 / total : 0.0, mean(now.update, then.update),
                   mean(now.fixedSteps, then.fixedSteps), mean(now.physics, then.physics),
-                  mean(now.render, then.render), mean(now.audio, then.audio), mean(now.input, then.input));
+                  mean(now.render, then.render), mean(now.audio, then.audio),
+                  mean(now.input, then.input));
     text_ = buffer;
     since_ = profile_;
 }

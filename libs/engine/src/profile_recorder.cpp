@@ -15,9 +15,7 @@ void ProfileRecorder::frameStarted(std::int64_t index) {
     frameStart_ = Stopwatch::now();
 }
 
-void ProfileRecorder::phaseStarted(core::FramePhase /*phase*/) {
-    phaseStart_ = Stopwatch::now();
-}
+void ProfileRecorder::phaseStarted(core::FramePhase /*phase*/) { phaseStart_ = Stopwatch::now(); }
 
 void ProfileRecorder::phaseEnded(core::FramePhase phase) {
     const double ms = msSince(phaseStart_);

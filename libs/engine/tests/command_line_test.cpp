@@ -39,8 +39,9 @@ TEST(CommandLine, NothingGivesTheDefaults) {
 }
 
 TEST(CommandLine, EveryOptionInBothSpellings) {
-    const CommandLine c = parse({"--frames", "300", "--screenshot=out/shot.png", "--config", "my game.txt", "--seed=42",
-                                 "--input-script", "run.txt", "--debug-draw", "--profile", "--show", "-h"});
+    const CommandLine c = parse({"--frames", "300", "--screenshot=out/shot.png", "--config",
+                                 "my game.txt", "--seed=42", "--input-script", "run.txt",
+                                 "--debug-draw", "--profile", "--show", "-h"});
     EXPECT_EQ(c.frames, 300);
     EXPECT_EQ(c.screenshot, "out/shot.png");
     EXPECT_EQ(c.config, "my game.txt");
@@ -70,8 +71,8 @@ TEST(CommandLine, ErrorsNameTheArgument) {
 
 TEST(CommandLine, UsageListsEveryOption) {
     const std::string text = engine::usage("e2d_demo");
-    for (const char* option : {"--config", "--frames", "--screenshot", "--seed", "--input-script", "--debug-draw",
-                               "--profile", "--show", "--help"}) {
+    for (const char* option : {"--config", "--frames", "--screenshot", "--seed", "--input-script",
+                               "--debug-draw", "--profile", "--show", "--help"}) {
         EXPECT_THAT(text, testing::HasSubstr(option));
     }
     EXPECT_THAT(text, testing::StartsWith("usage: e2d_demo"));

@@ -30,11 +30,16 @@ std::vector<std::string> texts(const EngineConfigResult& r, core::Severity sever
     }
     return out;
 }
-std::vector<std::string> errors(const EngineConfigResult& r) { return texts(r, core::Severity::Error); }
-std::vector<std::string> warnings(const EngineConfigResult& r) { return texts(r, core::Severity::Warning); }
+std::vector<std::string> errors(const EngineConfigResult& r) {
+    return texts(r, core::Severity::Error);
+}
+std::vector<std::string> warnings(const EngineConfigResult& r) {
+    return texts(r, core::Severity::Warning);
+}
 
 std::filesystem::path writeTemp(const std::string& name, const std::string& text) {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "e2d_engine_config_test";
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "e2d_engine_config_test";
     std::filesystem::create_directories(dir);
     const std::filesystem::path path = dir / name;
     std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
@@ -112,7 +117,8 @@ TEST(EngineConfig, PhysicsKeysAreSIWhateverTheUnitsPerMetre) {
     EXPECT_EQ(defaults.solver.mode, physics::SolverMode::SoftStep);
     EXPECT_EQ(defaults.workerCount, 1);
     // The seed's position-correction defaults are the classic solver's own, bit for bit.
-    EXPECT_EQ(defaults.solver.classicAllowedPenetration, physics::SolverDef{}.classicAllowedPenetration);
+    EXPECT_EQ(defaults.solver.classicAllowedPenetration,
+              physics::SolverDef{}.classicAllowedPenetration);
     EXPECT_EQ(defaults.solver.classicPositionBias, physics::SolverDef{}.classicPositionBias);
 
     // More allowed penetration than the solver takes is capped; a bias factor of 0 (no
@@ -149,7 +155,8 @@ TEST(EngineConfig, DefaultsMakeAPixelCrateFallAsItLooks) {
     for (int i = 0; i < 80; ++i) {
         world.step(1.0f / 60.0f);
     }
-    const float fallenPixels = -world.transform(body).p.y * static_cast<float>(defaults.unitsPerMetre);
+    const float fallenPixels =
+        -world.transform(body).p.y * static_cast<float>(defaults.unitsPerMetre);
     // 1/2 g t^2 with g = 9.81 m/s^2 = 981 px/s^2 and t = 80/60 s: about 872 px.
     EXPECT_NEAR(fallenPixels, 0.5f * 981.0f * (80.0f / 60.0f) * (80.0f / 60.0f), 15.0f);
     EXPECT_EQ(defaults.unitsPerMetre, 100.0);
@@ -188,44 +195,49 @@ TEST(EngineConfig, PenetrationKeysTuneAClassicWorld) {
 }
 
 TEST(EngineConfig, BadValuesAreErrorsNamingFileLineAndKey) {
-    const std::filesystem::path path = writeTemp("bad.txt",
-                                                 "#DISPLAY\n"
-                                                 "windowWidth = wide\n"
-                                                 "screenFitMode = stretch\n"
-                                                 "msaaSamples = -1\n"
-                                                 "#PHYSICS\n"
-                                                 "fixedTimestep = 0\n"
-                                                 "unitsPerMetre = -100\n"
-                                                 "vsync = maybe\n"
-                                                 "this line has no equals sign\n"
-                                                 "voiceCount = 2000\n"
-                                                 "physicsWorkers = 0\n");
+    const std::filesystem::path path = writeTemp("bad.txt", "#DISPLAY\n"
+                                                            "windowWidth = wide\n"
+                                                            "screenFitMode = stretch\n"
+                                                            "msaaSamples = -1\n"
+                                                            "#PHYSICS\n"
+                                                            "fixedTimestep = 0\n"
+                                                            "unitsPerMetre = -100\n"
+                                                            "vsync = maybe\n"
+                                                            "this line has no equals sign\n"
+                                                            "voiceCount = 2000\n"
+                                                            "physicsWorkers = 0\n");
     const EngineConfigResult r = loadEngineConfig(path, true);
     const std::string f = path.string();
-    EXPECT_THAT(errors(r),
-                ElementsAre(f + ":2: windowWidth: expected an integer, got 'wide'",
-                            f + ":3: screenFitMode: unknown value 'stretch', expected one of: expand, widthFit, "
-                                "heightFit, bestFit",
-                            f + ":4: msaaSamples: must be in [0, 16], got -1",
-                            f + ":6: fixedTimestep: must be in (0, 1], got 0",
-                            f + ":7: unitsPerMetre: must be > 0, got -100",
-                            f + ":8: vsync: expected true or false, got 'maybe'",
-                            f + ":9: expected 'key = value', got 'this line has no equals sign'",
-                            f + ":10: voiceCount: must be in [1, 1024], got 2000",
-                            f + ":11: physicsWorkers: must be in [1, 64], got 0"));
+    EXPECT_THAT(
+        errors(r),
+        ElementsAre(
+            f + ":2: windowWidth: expected an integer, got 'wide'",
+            f + ":3: screenFitMode: unknown value 'stretch', expected one of: expand, widthFit, "
+                "heightFit, bestFit",
+            f + ":4: msaaSamples: must be in [0, 16], got -1",
+            f + ":6: fixedTimestep: must be in (0, 1], got 0",
+            f + ":7: unitsPerMetre: must be > 0, got -100",
+            f + ":8: vsync: expected true or false, got 'maybe'",
+            f + ":9: expected 'key = value', got 'this line has no equals sign'",
+            f + ":10: voiceCount: must be in [1, 1024], got 2000",
+            f + ":11: physicsWorkers: must be in [1, 64], got 0"));
     EXPECT_THAT(warnings(r), IsEmpty());
 }
 
 TEST(EngineConfig, UnknownAndDuplicateKeysAreWarningsWithTheirLine) {
-    const std::filesystem::path path =
-        writeTemp("warn.txt", "firstScene = A\nwindowWidht = 800\nfirstScene = B\n\n  gravityZ = 3\nphysicsWorker = 2\n");
+    const std::filesystem::path path = writeTemp(
+        "warn.txt",
+        "firstScene = A\nwindowWidht = 800\nfirstScene = B\n\n  gravityZ = 3\nphysicsWorker = 2\n");
     const EngineConfigResult r = loadEngineConfig(path, true);
     const std::string f = path.string();
     EXPECT_THAT(errors(r), IsEmpty());
-    EXPECT_THAT(warnings(r), ElementsAre(f + ":2: windowWidht: unknown key, ignored (did you mean 'windowWidth'?)",
-                                        f + ":3: firstScene: duplicate key, replaces the value set on line 1",
-                                        f + ":5: gravityZ: unknown key, ignored (did you mean 'gravityX'?)",
-                                        f + ":6: physicsWorker: unknown key, ignored (did you mean 'physicsWorkers'?)"));
+    EXPECT_THAT(
+        warnings(r),
+        ElementsAre(
+            f + ":2: windowWidht: unknown key, ignored (did you mean 'windowWidth'?)",
+            f + ":3: firstScene: duplicate key, replaces the value set on line 1",
+            f + ":5: gravityZ: unknown key, ignored (did you mean 'gravityX'?)",
+            f + ":6: physicsWorker: unknown key, ignored (did you mean 'physicsWorkers'?)"));
     EXPECT_EQ(r.config.firstScene, "B");
     EXPECT_EQ(r.config.windowWidth, engine::EngineConfig{}.windowWidth);
 }
@@ -233,51 +245,59 @@ TEST(EngineConfig, UnknownAndDuplicateKeysAreWarningsWithTheirLine) {
 TEST(EngineConfig, MissingFileIsAnErrorOnlyWhenRequired) {
     const std::filesystem::path missing = kData / "no-such-config.txt";
     const EngineConfigResult required = loadEngineConfig(missing, true);
-    EXPECT_THAT(errors(required), ElementsAre(missing.string() + ": cannot read the configuration file (no such file)"));
+    EXPECT_THAT(
+        errors(required),
+        ElementsAre(missing.string() + ": cannot read the configuration file (no such file)"));
     const EngineConfigResult optional = loadEngineConfig(missing, false);
     EXPECT_THAT(errors(optional), IsEmpty());
-    EXPECT_THAT(warnings(optional),
-                ElementsAre(missing.string() + ": cannot read the configuration file (no such file), using the defaults"));
+    EXPECT_THAT(
+        warnings(optional),
+        ElementsAre(missing.string() +
+                    ": cannot read the configuration file (no such file), using the defaults"));
     EXPECT_EQ(optional.config.windowWidth, engine::EngineConfig{}.windowWidth);
     EXPECT_TRUE(optional.config.file.empty());
     // A folder is not a configuration file.
-    EXPECT_THAT(errors(loadEngineConfig(kData, true)), ElementsAre(HasSubstr("cannot read the configuration file (it is a directory)")));
+    EXPECT_THAT(errors(loadEngineConfig(kData, true)),
+                ElementsAre(HasSubstr("cannot read the configuration file (it is a directory)")));
 }
 
 // --- The game's keys through the text reader (each key's range, enums, checks across keys) ---
 
 TEST(EngineConfig, EveryErrorKindWithItsLineNumberAndWrongValuesKeepTheirDefaults) {
-    const EngineConfigResult r = engine::parseEngineConfig("windowWidth = abc\n"              // 1: not a number
-                                                           "windowHeight = 12px\n"            // 2: trailing junk
-                                                           "fontSize = 1.5\n"                 // 3: not an integer
-                                                           "referenceWindowWidth = -5\n"      // 4: below its minimum
-                                                           "referenceWindowHeight = 99999999999\n" // 5: overflows int
-                                                           "screenFitMode = stretch\n"        // 6: unknown enum value
-                                                           "just some words\n"                // 7: missing '='
-                                                           " = 5\n"                           // 8: empty key
-                                                           "masterGain = -0.5\n"              // 9: below minimum
-                                                           "penetrationBiasFactor = 2\n"      // 10: above maximum
-                                                           "fixedTimestep = 0\n"              // 11: must be > 0
-                                                           "gravityY = inf\n"                 // 12: not finite
-                                                           "maxCameraDepth = 1e60\n"          // 13: overflows float
-                                                           "collisionResolutionSteps =\n",    // 14: empty value
-                                                           "game.cfg");
-    EXPECT_THAT(errors(r),
-                ElementsAre("game.cfg:1: windowWidth: expected an integer, got 'abc'",
-                            "game.cfg:2: windowHeight: expected an integer, got '12px'",
-                            "game.cfg:3: fontSize: expected an integer, got '1.5'",
-                            "game.cfg:4: referenceWindowWidth: must be >= 1, got -5",
-                            "game.cfg:5: referenceWindowHeight: integer out of range, got '99999999999'",
-                            "game.cfg:6: screenFitMode: unknown value 'stretch', expected one of: expand, widthFit, "
-                            "heightFit, bestFit",
-                            "game.cfg:7: expected 'key = value', got 'just some words'",
-                            "game.cfg:8: empty key before '=' in '= 5'",
-                            "game.cfg:9: masterGain: must be >= 0, got -0.5",
-                            "game.cfg:10: penetrationBiasFactor: must be in [0, 1], got 2",
-                            "game.cfg:11: fixedTimestep: must be in (0, 1], got 0",
-                            "game.cfg:12: gravityY: expected a finite number, got 'inf'",
-                            "game.cfg:13: maxCameraDepth: number out of range, got '1e60'",
-                            "game.cfg:14: collisionResolutionSteps: expected an integer, got ''"));
+    const EngineConfigResult r =
+        engine::parseEngineConfig("windowWidth = abc\n"                   // 1: not a number
+                                  "windowHeight = 12px\n"                 // 2: trailing junk
+                                  "fontSize = 1.5\n"                      // 3: not an integer
+                                  "referenceWindowWidth = -5\n"           // 4: below its minimum
+                                  "referenceWindowHeight = 99999999999\n" // 5: overflows int
+                                  "screenFitMode = stretch\n"             // 6: unknown enum value
+                                  "just some words\n"                     // 7: missing '='
+                                  " = 5\n"                                // 8: empty key
+                                  "masterGain = -0.5\n"                   // 9: below minimum
+                                  "penetrationBiasFactor = 2\n"           // 10: above maximum
+                                  "fixedTimestep = 0\n"                   // 11: must be > 0
+                                  "gravityY = inf\n"                      // 12: not finite
+                                  "maxCameraDepth = 1e60\n"               // 13: overflows float
+                                  "collisionResolutionSteps =\n",         // 14: empty value
+                                  "game.cfg");
+    EXPECT_THAT(
+        errors(r),
+        ElementsAre("game.cfg:1: windowWidth: expected an integer, got 'abc'",
+                    "game.cfg:2: windowHeight: expected an integer, got '12px'",
+                    "game.cfg:3: fontSize: expected an integer, got '1.5'",
+                    "game.cfg:4: referenceWindowWidth: must be >= 1, got -5",
+                    "game.cfg:5: referenceWindowHeight: integer out of range, got '99999999999'",
+                    "game.cfg:6: screenFitMode: unknown value 'stretch', expected one of: expand, "
+                    "widthFit, "
+                    "heightFit, bestFit",
+                    "game.cfg:7: expected 'key = value', got 'just some words'",
+                    "game.cfg:8: empty key before '=' in '= 5'",
+                    "game.cfg:9: masterGain: must be >= 0, got -0.5",
+                    "game.cfg:10: penetrationBiasFactor: must be in [0, 1], got 2",
+                    "game.cfg:11: fixedTimestep: must be in (0, 1], got 0",
+                    "game.cfg:12: gravityY: expected a finite number, got 'inf'",
+                    "game.cfg:13: maxCameraDepth: number out of range, got '1e60'",
+                    "game.cfg:14: collisionResolutionSteps: expected an integer, got ''"));
     const engine::EngineConfig defaults;
     EXPECT_EQ(r.config.windowWidth, defaults.windowWidth);
     EXPECT_EQ(r.config.referenceWindowWidth, defaults.referenceWindowWidth);
@@ -288,21 +308,25 @@ TEST(EngineConfig, EveryErrorKindWithItsLineNumberAndWrongValuesKeepTheirDefault
 }
 
 TEST(EngineConfig, EnumsAreTheLibrariesOwnTypesSpelledAsInTheFile) {
-    const EngineConfigResult r = engine::parseEngineConfig("screenFitMode = expand\nwindowMode = borderless\n"
-                                                           "textureFilteringMode = linear\nphysicsSolver = classic\n");
+    const EngineConfigResult r =
+        engine::parseEngineConfig("screenFitMode = expand\nwindowMode = borderless\n"
+                                  "textureFilteringMode = linear\nphysicsSolver = classic\n");
     EXPECT_THAT(errors(r), IsEmpty());
     EXPECT_EQ(r.config.screenFitMode, render::ScreenFit::Expand);
     EXPECT_EQ(r.config.windowMode, render::WindowMode::Borderless);
     EXPECT_EQ(r.config.textureFilteringMode, render::TextureFilter::Linear);
     EXPECT_EQ(r.config.physicsSolver, physics::SolverMode::Classic);
-    EXPECT_EQ(engine::parseEngineConfig("screenFitMode = bestFit").config.screenFitMode, render::ScreenFit::BestFit);
-    EXPECT_THAT(errors(engine::parseEngineConfig("windowMode = Windowed\ntextureFilteringMode = bilinear\n"
-                                                 "physicsSolver = box2d",
-                                                 "c")),
-                ElementsAre("c:1: windowMode: unknown value 'Windowed', expected one of: windowed, fullscreen, "
-                            "borderless",
-                            "c:2: textureFilteringMode: unknown value 'bilinear', expected one of: nearest, linear",
-                            "c:3: physicsSolver: unknown value 'box2d', expected one of: softStep, classic"));
+    EXPECT_EQ(engine::parseEngineConfig("screenFitMode = bestFit").config.screenFitMode,
+              render::ScreenFit::BestFit);
+    EXPECT_THAT(
+        errors(engine::parseEngineConfig("windowMode = Windowed\ntextureFilteringMode = bilinear\n"
+                                         "physicsSolver = box2d",
+                                         "c")),
+        ElementsAre(
+            "c:1: windowMode: unknown value 'Windowed', expected one of: windowed, fullscreen, "
+            "borderless",
+            "c:2: textureFilteringMode: unknown value 'bilinear', expected one of: nearest, linear",
+            "c:3: physicsSolver: unknown value 'box2d', expected one of: softStep, classic"));
 }
 
 TEST(EngineConfig, MinAboveMaxIsBlamedOnTheLaterKeyAndResetsBoth) {
@@ -310,9 +334,11 @@ TEST(EngineConfig, MinAboveMaxIsBlamedOnTheLaterKeyAndResetsBoth) {
                                                            "maxAttenuationDistance = 500\n"
                                                            "minPanningDistance = 700\n",
                                                            "game.cfg");
-    EXPECT_THAT(errors(r),
-                ElementsAre("game.cfg:2: maxAttenuationDistance: must be >= minAttenuationDistance (600), got 500",
-                            "game.cfg:3: minPanningDistance: must be <= maxPanningDistance (512), got 700"));
+    EXPECT_THAT(
+        errors(r),
+        ElementsAre(
+            "game.cfg:2: maxAttenuationDistance: must be >= minAttenuationDistance (600), got 500",
+            "game.cfg:3: minPanningDistance: must be <= maxPanningDistance (512), got 700"));
     EXPECT_EQ(r.config.minAttenuationDistance, 256.0f);
     EXPECT_EQ(r.config.maxAttenuationDistance, 512.0f);
     EXPECT_EQ(r.config.minPanningDistance, 256.0f);
@@ -320,15 +346,16 @@ TEST(EngineConfig, MinAboveMaxIsBlamedOnTheLaterKeyAndResetsBoth) {
 }
 
 TEST(EngineConfig, E2dKeysBadValuesNameLineAndKey) {
-    const EngineConfigResult r = engine::parseEngineConfig("vsync = yes\nmsaaSamples = 17\nunitsPerMetre = 0\n"
-                                                           "voiceCount = 0\nkeyRepeat = 1\nmaxFrameTime = 11\n",
-                                                           "g.cfg");
+    const EngineConfigResult r =
+        engine::parseEngineConfig("vsync = yes\nmsaaSamples = 17\nunitsPerMetre = 0\n"
+                                  "voiceCount = 0\nkeyRepeat = 1\nmaxFrameTime = 11\n",
+                                  "g.cfg");
     EXPECT_THAT(errors(r), ElementsAre("g.cfg:1: vsync: expected true or false, got 'yes'",
-                                      "g.cfg:2: msaaSamples: must be in [0, 16], got 17",
-                                      "g.cfg:3: unitsPerMetre: must be > 0, got 0",
-                                      "g.cfg:4: voiceCount: must be in [1, 1024], got 0",
-                                      "g.cfg:5: keyRepeat: expected true or false, got '1'",
-                                      "g.cfg:6: maxFrameTime: must be in (0, 10], got 11"));
+                                       "g.cfg:2: msaaSamples: must be in [0, 16], got 17",
+                                       "g.cfg:3: unitsPerMetre: must be > 0, got 0",
+                                       "g.cfg:4: voiceCount: must be in [1, 1024], got 0",
+                                       "g.cfg:5: keyRepeat: expected true or false, got '1'",
+                                       "g.cfg:6: maxFrameTime: must be in (0, 10], got 11"));
 }
 
 } // namespace

@@ -73,11 +73,12 @@ std::filesystem::path writeFile(const std::filesystem::path& path, const std::st
 
 /// A 160 x 120 game whose first scene is `first`, plus `extra` config lines.
 std::filesystem::path writeConfig(const std::string& first, const std::string& extra = {}) {
-    return writeFile(tempDir() / "config.txt", "firstScene = " + first +
-                                                   "\nreferenceWindowWidth = 160\nreferenceWindowHeight = 120\n"
-                                                   "windowWidth = 160\nwindowHeight = 120\nscreenFitMode = bestFit\n"
-                                                   "printProfile = true\n" +
-                                                   extra);
+    return writeFile(tempDir() / "config.txt",
+                     "firstScene = " + first +
+                         "\nreferenceWindowWidth = 160\nreferenceWindowHeight = 120\n"
+                         "windowWidth = 160\nwindowHeight = 120\nscreenFitMode = bestFit\n"
+                         "printProfile = true\n" +
+                         extra);
 }
 
 /// A scene running `setup` at initialisation and `each` every frame (update).
@@ -127,7 +128,8 @@ GameRun run(Game& game, std::vector<std::string> args) {
 GameSystem& gameOf(const core::Scene& scene) { return scene.system<GameSystem>(); }
 
 bool near(const std::uint8_t* p, int r, int g, int b, int tolerance) {
-    return std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance && std::abs(p[2] - b) <= tolerance;
+    return std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance &&
+           std::abs(p[2] - b) <= tolerance;
 }
 
 int countColour(const render::Image& image, int r, int g, int b, int tolerance) {
@@ -170,7 +172,8 @@ TEST(Game, HeadlessRunsExactlyNFramesOfOneStepEachAndSavesTheLastFrame) {
             ++updates;
         });
     const std::filesystem::path shot = shotPath("shot.png");
-    const GameRun r = run(game, {"--config", writeConfig("Red").string(), "--frames", "120", "--screenshot", shot.string()});
+    const GameRun r = run(game, {"--config", writeConfig("Red").string(), "--frames", "120",
+                                 "--screenshot", shot.string()});
     ASSERT_EQ(r.code, 0) << r.all();
     // 120 frames of exactly 1/60 s with a 1/60 s step: one step each, none dropped.
     EXPECT_EQ(updates, 120);
@@ -209,7 +212,8 @@ TEST(Game, TerminateGameEndsTheRunAndTheLastFrameIsStillSaved) {
             }
         });
     const std::filesystem::path shot = shotPath("short.png");
-    const GameRun r = run(game, {"--config", writeConfig("Short").string(), "--frames", "100", "--screenshot", shot.string()});
+    const GameRun r = run(game, {"--config", writeConfig("Short").string(), "--frames", "100",
+                                 "--screenshot", shot.string()});
     ASSERT_EQ(r.code, 0) << r.all();
     EXPECT_EQ(game.profile().frames, 5);
     const render::Image image = render::loadImage(shot);
@@ -217,11 +221,13 @@ TEST(Game, TerminateGameEndsTheRunAndTheLastFrameIsStillSaved) {
 }
 
 TEST(Game, SeedMakesTheRandomNumbersReproducible) {
-    const auto firstNumber = [](std::vector<std::string> extra, const std::string& configExtra = {}) {
+    const auto firstNumber = [](std::vector<std::string> extra,
+                                const std::string& configExtra = {}) {
         Game game;
         std::uint64_t value = 0;
         addScene(game, "Dice", [&](core::Scene& s) { value = gameOf(s).random().next(); });
-        std::vector<std::string> args{"--config", writeConfig("Dice", configExtra).string(), "--frames", "1"};
+        std::vector<std::string> args{"--config", writeConfig("Dice", configExtra).string(),
+                                      "--frames", "1"};
         args.insert(args.end(), extra.begin(), extra.end());
         EXPECT_EQ(run(game, args).code, 0);
         return value;
@@ -256,7 +262,8 @@ TEST(Game, AGameRunInsideARunningGameIsRefusedAndTheOuterGameKeepsWorking) {
             sizeAfter = gameOf(s).window().size();
         });
     const std::filesystem::path shot = shotPath("outer.png");
-    const GameRun r = run(outer, {"--config", writeConfig("Outer").string(), "--frames", "6", "--screenshot", shot.string()});
+    const GameRun r = run(outer, {"--config", writeConfig("Outer").string(), "--frames", "6",
+                                  "--screenshot", shot.string()});
     EXPECT_NE(inner.code, 0) << inner.all();
     EXPECT_EQ(inner.count("GLFW is already initialised in this process"), 1) << inner.all();
     ASSERT_EQ(r.code, 0) << r.all();
@@ -286,8 +293,11 @@ TEST(Game, BadConfigurationExitsWith2NamingFileLineAndKey) {
     const GameRun r = run(game, {"--config", config.string(), "--frames", "1"});
     EXPECT_EQ(r.code, 2);
     // writeConfig puts 7 lines first: gravityY is on line 8, the misspelt key on line 9.
-    EXPECT_EQ(r.count("error: " + config.string() + ":8: gravityY: expected a number, got 'down'"), 1) << r.all();
-    EXPECT_EQ(r.count("warning: " + config.string() + ":9: windowWidht: unknown key, ignored"), 1) << r.all();
+    EXPECT_EQ(r.count("error: " + config.string() + ":8: gravityY: expected a number, got 'down'"),
+              1)
+        << r.all();
+    EXPECT_EQ(r.count("warning: " + config.string() + ":9: windowWidht: unknown key, ignored"), 1)
+        << r.all();
 
     const GameRun missing = run(game, {"--config", (tempDir() / "none.txt").string()});
     EXPECT_EQ(missing.code, 2);
@@ -296,14 +306,17 @@ TEST(Game, BadConfigurationExitsWith2NamingFileLineAndKey) {
     game.scenes().add("B", core::SceneFunctions{});
     const GameRun unknown = run(game, {"--config", writeConfig("Nope").string(), "--frames", "1"});
     EXPECT_EQ(unknown.code, 2);
-    EXPECT_EQ(unknown.count("firstScene: no scene is registered as 'Nope' (registered: A, B)"), 1) << unknown.all();
+    EXPECT_EQ(unknown.count("firstScene: no scene is registered as 'Nope' (registered: A, B)"), 1)
+        << unknown.all();
 
-    const GameRun key = run(game, {"--config", writeConfig("A", "debugDrawKey = f99\n").string(), "--frames", "1"});
+    const GameRun key =
+        run(game, {"--config", writeConfig("A", "debugDrawKey = f99\n").string(), "--frames", "1"});
     EXPECT_EQ(key.code, 2);
     EXPECT_EQ(key.count("debugDrawKey: unknown key name 'f99'"), 1) << key.all();
 
     const GameRun bindings =
-        run(game, {"--config", writeConfig("A", "bindingsFile = missing-bindings.txt\n").string(), "--frames", "1"});
+        run(game, {"--config", writeConfig("A", "bindingsFile = missing-bindings.txt\n").string(),
+                   "--frames", "1"});
     EXPECT_EQ(bindings.code, 2);
     EXPECT_EQ(bindings.count("bindingsFile:"), 1) << bindings.all();
     EXPECT_EQ(bindings.count("missing-bindings.txt"), 1) << bindings.all();
@@ -335,8 +348,8 @@ TEST(Game, SceneChangeReleasesSpritesVoicesBodiesAndTextures) {
     };
     const auto count = [](core::Scene& s) {
         GameSystem& g = gameOf(s);
-        return Counts{g.renderer().spriteCount(), g.mixer().stats().voicesInUse, g.world().bodyCount(),
-                      g.renderer().textureCount()};
+        return Counts{g.renderer().spriteCount(), g.mixer().stats().voicesInUse,
+                      g.world().bodyCount(), g.renderer().textureCount()};
     };
     Counts inA;
     Counts atB;
@@ -353,7 +366,8 @@ TEST(Game, SceneChangeReleasesSpritesVoicesBodiesAndTextures) {
                 o.addComponent<render::SpriteRenderer>(def);
                 if (i < 4) {
                     o.addComponent<physics::Rigidbody>(physics::RigidbodyDef{});
-                    o.addComponent<physics::Collider>(physics::ShapeGeometry{physics::makeBox(1.0f, 1.0f)});
+                    o.addComponent<physics::Collider>(
+                        physics::ShapeGeometry{physics::makeBox(1.0f, 1.0f)});
                 }
             }
             audio::SoundData tone;
@@ -400,7 +414,8 @@ TEST(Game, MissingAssetIsReportedOnceAndThePlaceholderIsDrawn) {
         }
     });
     const std::filesystem::path shot = shotPath("missing.png.shot.png");
-    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "10", "--screenshot", shot.string()});
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "10",
+                                 "--screenshot", shot.string()});
     ASSERT_EQ(r.code, 0) << r.all();
     EXPECT_EQ(r.count("missing.png"), 1) << r.all();
     // The magenta/black checker stands in.
@@ -413,7 +428,8 @@ TEST(Game, InputScriptPressesActionsAndKeysOnTheirFrames) {
     struct Seen {
         std::vector<std::int64_t> jumpPressed, jumpHeld, jumpReleased, keyDown, keyUp, mouseDown;
     } seen;
-    struct KeyLog : core::Component, core::Handles<input::KeyDown, input::KeyUp, input::MouseButtonDown> {
+    struct KeyLog : core::Component,
+                    core::Handles<input::KeyDown, input::KeyUp, input::MouseButtonDown> {
         explicit KeyLog(Seen& s) : seen(s) {}
         void on(const input::KeyDown& e) override {
             if (e.key == input::Key::A) {
@@ -450,10 +466,13 @@ TEST(Game, InputScriptPressesActionsAndKeysOnTheirFrames) {
         });
     const std::filesystem::path dir = tempDir();
     const std::filesystem::path script =
-        writeFile(dir / "run.txt", "# jump from frame 2 to 5, tap A at 7, click at 3\n2 press jump\n5 release jump\n"
-                                   "7 tap key:a\n3 tap fire\n");
-    const std::string config = writeConfig("A", "bindingsFile = " + (kData / "bindings.txt").string() + "\n").string();
-    const GameRun r = run(game, {"--config", config, "--frames", "10", "--input-script", script.string()});
+        writeFile(dir / "run.txt",
+                  "# jump from frame 2 to 5, tap A at 7, click at 3\n2 press jump\n5 release jump\n"
+                  "7 tap key:a\n3 tap fire\n");
+    const std::string config =
+        writeConfig("A", "bindingsFile = " + (kData / "bindings.txt").string() + "\n").string();
+    const GameRun r =
+        run(game, {"--config", config, "--frames", "10", "--input-script", script.string()});
     ASSERT_EQ(r.code, 0) << r.all();
     EXPECT_EQ(seen.jumpPressed, (std::vector<std::int64_t>{2}));
     EXPECT_EQ(seen.jumpHeld, (std::vector<std::int64_t>{2, 3, 4}));
@@ -467,24 +486,32 @@ TEST(Game, InputScriptErrorsNameTheLine) {
     Game game;
     addScene(game, "A", {});
     const std::filesystem::path dir = tempDir();
-    const std::string config = writeConfig("A", "bindingsFile = " + (kData / "bindings.txt").string() + "\n").string();
+    const std::string config =
+        writeConfig("A", "bindingsFile = " + (kData / "bindings.txt").string() + "\n").string();
     const auto errorOf = [&](const std::string& text) {
         const std::filesystem::path script = writeFile(dir / "bad.txt", text);
-        const GameRun r = run(game, {"--config", config, "--frames", "2", "--input-script", script.string()});
+        const GameRun r =
+            run(game, {"--config", config, "--frames", "2", "--input-script", script.string()});
         EXPECT_EQ(r.code, 2) << text;
         return r.all();
     };
     const std::string bad = (dir / "bad.txt").string();
     EXPECT_THAT(errorOf("0 press jump\n1 push jump\n"),
                 HasSubstr(bad + ":2: expected press, release, tap or move, got 'push'"));
-    EXPECT_THAT(errorOf("\n4 press dance\n"),
-                HasSubstr(bad + ":2: 'dance' is not an action of the game (nor a binding such as key:space)"));
-    EXPECT_THAT(errorOf("4 press padonly\n"),
-                HasSubstr(bad + ":1: action 'padonly' has no keyboard or mouse-button binding to press"));
-    EXPECT_THAT(errorOf("4 press key:nokey\n"), HasSubstr(bad + ":1: input::parseBinding(): unknown key name"));
-    EXPECT_THAT(errorOf("4 press axis:lefty\n"),
-                HasSubstr(bad + ":1: 'axis:lefty': only key:, mouse: and button: bindings can be pressed"));
-    const GameRun missing = run(game, {"--config", config, "--input-script", (dir / "none.txt").string()});
+    EXPECT_THAT(
+        errorOf("\n4 press dance\n"),
+        HasSubstr(bad +
+                  ":2: 'dance' is not an action of the game (nor a binding such as key:space)"));
+    EXPECT_THAT(
+        errorOf("4 press padonly\n"),
+        HasSubstr(bad + ":1: action 'padonly' has no keyboard or mouse-button binding to press"));
+    EXPECT_THAT(errorOf("4 press key:nokey\n"),
+                HasSubstr(bad + ":1: input::parseBinding(): unknown key name"));
+    EXPECT_THAT(
+        errorOf("4 press axis:lefty\n"),
+        HasSubstr(bad + ":1: 'axis:lefty': only key:, mouse: and button: bindings can be pressed"));
+    const GameRun missing =
+        run(game, {"--config", config, "--input-script", (dir / "none.txt").string()});
     EXPECT_EQ(missing.code, 2);
     EXPECT_EQ(missing.count("none.txt: cannot read the input script"), 1) << missing.all();
 }
@@ -505,7 +532,8 @@ TEST(Game, BodiesAreDrawnBetweenTheirLastTwoStatesSoConstantSpeedLooksEven) {
         void onTerminate() override { scene()->system<render::RenderSystem>().removeHook(*this); }
         void beforeRender(render::Renderer& renderer) override {
             const auto* sprite = gameObject()->getComponent<render::SpriteRenderer>();
-            samples.push_back({gameObject()->worldPosition().x, renderer.sprite(sprite->sprite()).position.x});
+            samples.push_back(
+                {gameObject()->worldPosition().x, renderer.sprite(sprite->sprite()).position.x});
         }
         std::vector<Sample>& samples;
     };
@@ -529,8 +557,10 @@ TEST(Game, BodiesAreDrawnBetweenTheirLastTwoStatesSoConstantSpeedLooksEven) {
         }
     });
     addScene(game, "B", setup);
-    const GameRun r = run(game, {"--config", writeConfig("A", "fixedTimestep = 0.0333333333333333\ngravityY = 0\n").string(),
-                                 "--frames", "40"});
+    const GameRun r =
+        run(game, {"--config",
+                   writeConfig("A", "fixedTimestep = 0.0333333333333333\ngravityY = 0\n").string(),
+                   "--frames", "40"});
     ASSERT_EQ(r.code, 0) << r.all();
     ASSERT_EQ(samples.size(), 40u);
     EXPECT_EQ(game.profile().fixedSteps, 20);
@@ -545,7 +575,8 @@ TEST(Game, BodiesAreDrawnBetweenTheirLastTwoStatesSoConstantSpeedLooksEven) {
         // frame. Drawn one step behind the physics state, at most.
         EXPECT_NEAR(samples[i].drawn - samples[i - 1].drawn, 0.5f, 1e-3f) << i;
         const float objectStep = samples[i].object - samples[i - 1].object;
-        EXPECT_TRUE(std::abs(objectStep) < 1e-4f || std::abs(objectStep - 1.0f) < 1e-3f) << i << " " << objectStep;
+        EXPECT_TRUE(std::abs(objectStep) < 1e-4f || std::abs(objectStep - 1.0f) < 1e-3f)
+            << i << " " << objectStep;
         objectMoves += objectStep > 0.5f ? 1 : 0;
         EXPECT_LE(samples[i].drawn, samples[i].object + 1e-4f);
         EXPECT_GE(samples[i].drawn, samples[i].object - 1.0f - 1e-4f);
@@ -560,8 +591,8 @@ std::array<int, 4> colourBox(const render::Image& image, int r, int g, int b, in
         for (int x = 0; x < image.width; ++x) {
             if (near(image.at(x, y), r, g, b, tolerance)) {
                 box = box[0] < 0 ? std::array<int, 4>{x, y, x, y}
-                                 : std::array<int, 4>{std::min(box[0], x), std::min(box[1], y), std::max(box[2], x),
-                                                      std::max(box[3], y)};
+                                 : std::array<int, 4>{std::min(box[0], x), std::min(box[1], y),
+                                                      std::max(box[2], x), std::max(box[3], y)};
             }
         }
     }
@@ -578,8 +609,8 @@ TEST(Game, ABodysSpriteChildLabelLineAndCameraAreDrawnFromOnePose) {
         void update(double) override {
             const glm::vec2 at{gameObject()->renderPosition()};
             scene()->system<GameSystem>().renderer().drawer().line(at + glm::vec2{-30.0f, -25.0f},
-                                                                    at + glm::vec2{30.0f, -25.0f},
-                                                                    {0.0f, 0.0f, 1.0f, 1.0f}, 2.0f);
+                                                                   at + glm::vec2{30.0f, -25.0f},
+                                                                   {0.0f, 0.0f, 1.0f, 1.0f}, 2.0f);
         }
     };
     const auto shoot = [](float speed, const std::string& name) {
@@ -612,8 +643,8 @@ TEST(Game, ABodysSpriteChildLabelLineAndCameraAreDrawnFromOnePose) {
             body.addChild(camera);
         });
         const std::filesystem::path shot = shotPath(name);
-        const GameRun r = run(game, {"--config", writeConfig("A", "gravityY = 0\n").string(), "--frames", "10",
-                                     "--screenshot", shot.string()});
+        const GameRun r = run(game, {"--config", writeConfig("A", "gravityY = 0\n").string(),
+                                     "--frames", "10", "--screenshot", shot.string()});
         EXPECT_EQ(r.code, 0) << r.all();
         return render::loadImage(shot);
     };
@@ -641,8 +672,10 @@ TEST(Game, AFrameTimeSpikeIsClampedAndCounted) {
         }
     });
     // Not headless (no --frames): real frame times.
-    const GameRun r = run(game, {"--config", writeConfig("A", "maxFrameTime = 0.2\nmaxStepsPerFrame = 20\nvsync = false\n")
-                                             .string()});
+    const GameRun r = run(
+        game,
+        {"--config",
+         writeConfig("A", "maxFrameTime = 0.2\nmaxStepsPerFrame = 20\nvsync = false\n").string()});
     ASSERT_EQ(r.code, 0) << r.all();
     EXPECT_GE(game.profile().spikes, 1);
     // 7 frames, one of them 0.4 s counted as 0.2 s: at most 0.2 s + 6 ordinary frames of steps.
@@ -658,11 +691,13 @@ int debugGreenPixels(const std::vector<std::string>& extraArgs, const std::strin
     addScene(game, "A", [](core::Scene& s) {
         core::GameObject& ground = s.createGameObject();
         ground.setPosition(glm::vec2{0.0f, -20.0f});
-        ground.addComponent<physics::Collider>(physics::ShapeGeometry{physics::makeBox(50.0f, 10.0f)});
+        ground.addComponent<physics::Collider>(
+            physics::ShapeGeometry{physics::makeBox(50.0f, 10.0f)});
     });
     const std::filesystem::path shot = shotPath("debug.png");
-    std::vector<std::string> args{"--config", writeConfig("A", configExtra).string(), "--frames", "5", "--screenshot",
-                                  shot.string()};
+    std::vector<std::string> args{"--config",     writeConfig("A", configExtra).string(),
+                                  "--frames",     "5",
+                                  "--screenshot", shot.string()};
     args.insert(args.end(), extraArgs.begin(), extraArgs.end());
     const GameRun r = run(game, args);
     EXPECT_EQ(r.code, 0) << r.all();
@@ -682,7 +717,8 @@ TEST(Game, PhysicsDebugDrawIsToggledByFlagConfigAndKey) {
     const std::filesystem::path script = writeFile(tempDir() / "toggle.txt", "1 tap key:f1\n");
     EXPECT_EQ(debugGreenPixels({"--input-script", script.string()}, ""), flag);
     // Pressed twice: off again.
-    const std::filesystem::path twice = writeFile(tempDir() / "twice.txt", "1 tap key:f1\n3 tap key:f1\n");
+    const std::filesystem::path twice =
+        writeFile(tempDir() / "twice.txt", "1 tap key:f1\n3 tap key:f1\n");
     EXPECT_EQ(debugGreenPixels({"--input-script", twice.string()}, ""), 0);
     // Another key, by config.
     const std::filesystem::path tab = writeFile(tempDir() / "tab.txt", "1 tap key:tab\n");
@@ -711,11 +747,12 @@ TEST(Game, PhysicsDebugDrawShowsJointsInTheirOwnColour) {
             rope.localAnchorA = {0.0f, -20.0f};
             rope.localAnchorB = {0.0f, -20.0f};
             rope.length = 80.0f;
-            b.addComponent<physics::JointComponent>(physics, physics::JointComponentDef{rope, a.id()});
+            b.addComponent<physics::JointComponent>(physics,
+                                                    physics::JointComponentDef{rope, a.id()});
         });
         const std::filesystem::path shot = shotPath(debug ? "joint.png" : "joint_off.png");
-        std::vector<std::string> args{"--config", writeConfig("A").string(), "--frames", "5", "--screenshot",
-                                      shot.string()};
+        std::vector<std::string> args{
+            "--config", writeConfig("A").string(), "--frames", "5", "--screenshot", shot.string()};
         if (debug) {
             args.emplace_back("--debug-draw");
         }
@@ -757,14 +794,15 @@ TEST(Game, PhysicsDebugDrawShowsJointsInTheirOwnColour) {
     EXPECT_GE(joint(on, 117, 57, 123, 63), 20);
     // Nothing of that colour elsewhere: the three lines' strips hold it all.
     const int all = joint(on, 0, 0, on.width - 1, on.height - 1);
-    const int inStrips = joint(on, 36, 36, 44, 64) + joint(on, 116, 36, 124, 64) + joint(on, 45, 56, 115, 64);
+    const int inStrips =
+        joint(on, 36, 36, 44, 64) + joint(on, 116, 36, 124, 64) + joint(on, 45, 56, 115, 64);
     EXPECT_EQ(all, inStrips);
 }
 
 TEST(Game, InputScriptMovesTheMouseClicksAndDrivesGamepads) {
     struct Seen : core::Component,
-                  core::Handles<input::MouseButtonDown, input::GamepadConnected, input::GamepadButtonDown,
-                                input::GamepadButtonUp> {
+                  core::Handles<input::MouseButtonDown, input::GamepadConnected,
+                                input::GamepadButtonDown, input::GamepadButtonUp> {
         explicit Seen(std::vector<std::string>& out) : events(out) {}
         std::vector<std::string>& events;
         void on(const input::MouseButtonDown& e) override {
@@ -772,12 +810,16 @@ TEST(Game, InputScriptMovesTheMouseClicksAndDrivesGamepads) {
                              std::to_string(static_cast<int>(e.world.x)) + "," +
                              std::to_string(static_cast<int>(e.world.y)));
         }
-        void on(const input::GamepadConnected& e) override { events.push_back("connected " + std::to_string(e.gamepad)); }
+        void on(const input::GamepadConnected& e) override {
+            events.push_back("connected " + std::to_string(e.gamepad));
+        }
         void on(const input::GamepadButtonDown& e) override {
-            events.push_back("down " + std::to_string(e.gamepad) + ":" + std::to_string(static_cast<int>(e.button)));
+            events.push_back("down " + std::to_string(e.gamepad) + ":" +
+                             std::to_string(static_cast<int>(e.button)));
         }
         void on(const input::GamepadButtonUp& e) override {
-            events.push_back("up " + std::to_string(e.gamepad) + ":" + std::to_string(static_cast<int>(e.button)));
+            events.push_back("up " + std::to_string(e.gamepad) + ":" +
+                             std::to_string(static_cast<int>(e.button)));
         }
     };
     std::vector<std::string> seen;
@@ -793,21 +835,23 @@ TEST(Game, InputScriptMovesTheMouseClicksAndDrivesGamepads) {
             rightTrigger.push_back(in.gamepadAxis(1, input::GamepadAxis::RightTrigger));
             aDown.push_back(in.isGamepadButtonDown(0, input::GamepadButton::A));
         });
-    const std::filesystem::path script = writeFile(tempDir() / "pads.txt",
-                                                   "1 move mouse 120 90\n"
-                                                   "1 tap mouse:left\n"
-                                                   "2 press button:a\n"
-                                                   "3 move axis:leftx 0.6\n"
-                                                   "4 move axis@1:righttrigger 1\n"
-                                                   "5 release button:a\n"
-                                                   "6 move axis:leftx 0\n");
-    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "8", "--input-script",
-                                 script.string()});
+    const std::filesystem::path script =
+        writeFile(tempDir() / "pads.txt", "1 move mouse 120 90\n"
+                                          "1 tap mouse:left\n"
+                                          "2 press button:a\n"
+                                          "3 move axis:leftx 0.6\n"
+                                          "4 move axis@1:righttrigger 1\n"
+                                          "5 release button:a\n"
+                                          "6 move axis:leftx 0\n");
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "8",
+                                 "--input-script", script.string()});
     ASSERT_EQ(r.code, 0) << r.all();
     // 160 x 120 window, camera at the origin: window pixel (120, 90) is world (40, -30).
-    EXPECT_THAT(seen, testing::ElementsAre("connected 0", "connected 1", "mouse 0 at 40,-30", "down 0:0",
-                                                   "down 1:" + std::to_string(static_cast<int>(input::GamepadButton::RightTrigger)),
-                                                   "up 0:0"));
+    EXPECT_THAT(
+        seen, testing::ElementsAre(
+                  "connected 0", "connected 1", "mouse 0 at 40,-30", "down 0:0",
+                  "down 1:" + std::to_string(static_cast<int>(input::GamepadButton::RightTrigger)),
+                  "up 0:0"));
     ASSERT_EQ(leftX.size(), 8u);
     // The stick through its default 0.2 radial dead zone: (0.6 - 0.2) / 0.8 = 0.5.
     EXPECT_EQ(leftX[2], 0.0f);
@@ -825,21 +869,24 @@ TEST(Game, InputScriptGamepadErrorsNameTheLine) {
     addScene(game, "A", [](core::Scene&) {});
     const auto errorOf = [&](const std::string& text) {
         const std::filesystem::path script = writeFile(tempDir() / "bad.txt", text);
-        const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "1", "--input-script",
-                                     script.string()});
+        const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "1",
+                                     "--input-script", script.string()});
         EXPECT_EQ(r.code, 2) << r.all();
         return r.all();
     };
     const std::string bad = (tempDir() / "bad.txt").string();
-    EXPECT_THAT(errorOf("0 press axis:leftx\n"), HasSubstr(bad + ":1: 'axis:leftx': only key:, mouse: and button: "
-                                                                  "bindings can be pressed"));
-    EXPECT_THAT(errorOf("0 tap key:a\n1 move key:a 1\n"),
-                HasSubstr(bad + ":2: move: expected 'mouse' or a gamepad axis (axis:leftx), got 'key:a'"));
+    EXPECT_THAT(errorOf("0 press axis:leftx\n"),
+                HasSubstr(bad + ":1: 'axis:leftx': only key:, mouse: and button: "
+                                "bindings can be pressed"));
+    EXPECT_THAT(
+        errorOf("0 tap key:a\n1 move key:a 1\n"),
+        HasSubstr(bad + ":2: move: expected 'mouse' or a gamepad axis (axis:leftx), got 'key:a'"));
     const std::string unknown = errorOf("0 move axis:sideways 1\n");
     EXPECT_THAT(unknown, HasSubstr(bad + ":1: "));
     EXPECT_THAT(unknown, HasSubstr("'sideways'"));
-    EXPECT_THAT(errorOf("0 move axis:lefttrigger -0.5\n"),
-                HasSubstr(bad + ":1: move axis:lefttrigger: a trigger's value is in [0, 1], got -0.5"));
+    EXPECT_THAT(
+        errorOf("0 move axis:lefttrigger -0.5\n"),
+        HasSubstr(bad + ":1: move axis:lefttrigger: a trigger's value is in [0, 1], got -0.5"));
 }
 
 // --- Frame profile overlay ---------------------------------------------------------------------
@@ -865,7 +912,8 @@ OverlayRun overlayRun(const std::vector<std::string>& extraArgs, const std::stri
         },
         [&on](core::Scene& s) { on = gameOf(s).profileOverlay(); });
     const std::filesystem::path shot = shotPath(name + ".png");
-    std::vector<std::string> args{"--config", writeConfig("A", configExtra).string(), "--frames", "20",
+    std::vector<std::string> args{"--config",     writeConfig("A", configExtra).string(),
+                                  "--frames",     "20",
                                   "--screenshot", shot.string()};
     args.insert(args.end(), extraArgs.begin(), extraArgs.end());
     const GameRun r = run(game, args);
@@ -925,8 +973,10 @@ TEST(Game, ProfileOverlayIsDrawnTopLeftWhenTurnedOnByFlagConfigOrKey) {
     const OverlayRun key = overlayRun({"--input-script", once.string()}, "", "key");
     EXPECT_TRUE(key.on);
     EXPECT_GT(overlayInk(key.image, 0, 0, 149, 59).text, 150);
-    const std::filesystem::path twice = writeFile(tempDir() / "twice.txt", "2 tap key:f4\n5 tap key:f4\n");
-    const OverlayRun keyTwice = overlayRun({"--input-script", twice.string()}, "profileKey = f4\n", "twice");
+    const std::filesystem::path twice =
+        writeFile(tempDir() / "twice.txt", "2 tap key:f4\n5 tap key:f4\n");
+    const OverlayRun keyTwice =
+        overlayRun({"--input-script", twice.string()}, "profileKey = f4\n", "twice");
     EXPECT_FALSE(keyTwice.on);
     EXPECT_EQ(overlayInk(keyTwice.image, 0, 0, 159, 119).text, 0);
 }
@@ -948,8 +998,8 @@ TEST(Game, ProfileOverlayStaysAfterASceneChange) {
         s.createGameObject().addComponent<render::SpriteRenderer>(def);
     });
     const std::filesystem::path shot = shotPath("changed.png");
-    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "20", "--profile",
-                                 "--screenshot", shot.string()});
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "20",
+                                 "--profile", "--screenshot", shot.string()});
     ASSERT_EQ(r.code, 0) << r.all();
     EXPECT_EQ(game.profile().sceneChanges, 1);
     const OverlayInk ink = overlayInk(render::loadImage(shot), 0, 0, 149, 59);
@@ -960,7 +1010,8 @@ TEST(Game, ProfileOverlayStaysAfterASceneChange) {
 TEST(Game, UnknownProfileKeyIsAConfigError) {
     Game game;
     addScene(game, "A", [](core::Scene&) {});
-    const GameRun r = run(game, {"--config", writeConfig("A", "profileKey = f99\n").string(), "--frames", "1"});
+    const GameRun r =
+        run(game, {"--config", writeConfig("A", "profileKey = f99\n").string(), "--frames", "1"});
     EXPECT_EQ(r.code, 2) << r.all();
     EXPECT_EQ(r.count("profileKey: unknown key name 'f99'"), 1) << r.all();
 }
@@ -979,7 +1030,8 @@ TEST(Game, InactiveObjectsAreNeitherUpdatedNorDrawnAndObjectsAreFoundByNameAndTa
     addScene(
         game, "A",
         [&](core::Scene& s) {
-            const auto square = [&](const char* name, glm::vec2 at, render::Color colour, int& counter) {
+            const auto square = [&](const char* name, glm::vec2 at, render::Color colour,
+                                    int& counter) {
                 core::GameObject& o = s.createGameObject();
                 o.setName(name);
                 o.setTag("square");
@@ -997,7 +1049,8 @@ TEST(Game, InactiveObjectsAreNeitherUpdatedNorDrawnAndObjectsAreFoundByNameAndTa
         },
         [&](core::Scene& s) { EXPECT_EQ(s.findFirstByTag("square"), s.findByName("green")); });
     const std::filesystem::path shot = shotPath("active.png");
-    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "5", "--screenshot", shot.string()});
+    const GameRun r = run(game, {"--config", writeConfig("A").string(), "--frames", "5",
+                                 "--screenshot", shot.string()});
     ASSERT_EQ(r.code, 0) << r.all();
     EXPECT_EQ(activeUpdates, 5);
     EXPECT_EQ(inactiveUpdates, 0);

@@ -26,7 +26,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     const e2d::input::MappingParseResult result = e2d::input::parseGamepadMappings(text, "fuzz");
     const auto lineCount = static_cast<int>(std::count(text.begin(), text.end(), '\n')) + 1;
-    check(result.lines.size() + static_cast<std::size_t>(result.diagnostics.errorCount()) + static_cast<std::size_t>(result.otherPlatform) <=
+    check(result.lines.size() + static_cast<std::size_t>(result.diagnostics.errorCount()) +
+              static_cast<std::size_t>(result.otherPlatform) <=
           static_cast<std::size_t>(lineCount));
     int previous = 0;
     for (const e2d::core::Diagnostic& e : result.diagnostics.errors()) {
@@ -42,11 +43,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     for (const std::string& line : result.lines) {
         check(line.size() < 1024);
-        check(std::none_of(line.begin(), line.end(),
-                           [](char c) { return static_cast<unsigned char>(c) < 0x20 && c != '\t'; }));
+        check(std::none_of(line.begin(), line.end(), [](char c) {
+            return static_cast<unsigned char>(c) < 0x20 && c != '\t';
+        }));
         // No field after the GUID and the name starts with an output modifier (a name may).
-        const std::string_view fields = std::string_view(line).substr(line.find(',', line.find(',') + 1));
-        check(fields.find(",+") == std::string_view::npos && fields.find(",-") == std::string_view::npos);
+        const std::string_view fields =
+            std::string_view(line).substr(line.find(',', line.find(',') + 1));
+        check(fields.find(",+") == std::string_view::npos &&
+              fields.find(",-") == std::string_view::npos);
         const e2d::input::MappingParseResult again = e2d::input::parseGamepadMappings(line);
         check(again.diagnostics.empty() && again.lines.size() == 1 && again.lines[0] == line);
     }

@@ -29,14 +29,19 @@ std::string checkBinding(const Binding& b) {
     case BindingKind::KeyAxis:
         return key(b.code) && key(b.negativeKey) ? "" : "key pair out of range";
     case BindingKind::MouseButton:
-        return b.code >= 0 && b.code < kMouseButtonCount ? "" : "mouse button " + std::to_string(b.code) + " out of range";
+        return b.code >= 0 && b.code < kMouseButtonCount
+                   ? ""
+                   : "mouse button " + std::to_string(b.code) + " out of range";
     case BindingKind::GamepadButton:
     case BindingKind::GamepadAxis: {
-        const int count = b.kind == BindingKind::GamepadButton ? kGamepadButtonCount : kGamepadAxisCount;
+        const int count =
+            b.kind == BindingKind::GamepadButton ? kGamepadButtonCount : kGamepadAxisCount;
         if (b.code < 0 || b.code >= count) {
             return "gamepad code " + std::to_string(b.code) + " out of range";
         }
-        return b.gamepad >= -1 && b.gamepad < kMaxGamepads ? "" : "gamepad slot " + std::to_string(b.gamepad) + " out of range";
+        return b.gamepad >= -1 && b.gamepad < kMaxGamepads
+                   ? ""
+                   : "gamepad slot " + std::to_string(b.gamepad) + " out of range";
     }
     }
     return "unknown binding kind";
@@ -46,21 +51,24 @@ std::string checkBinding(const Binding& b) {
 
 ActionMap::ActionMap(ActionMapDef def) : def_(def) {
     if (!(def_.pressThreshold > 0.0f && def_.pressThreshold <= 1.0f)) {
-        throw core::Error("input::ActionMap::ActionMap(): pressThreshold must be in (0, 1], got " + core::formatNumber(def_.pressThreshold));
+        throw core::Error("input::ActionMap::ActionMap(): pressThreshold must be in (0, 1], got " +
+                          core::formatNumber(def_.pressThreshold));
     }
     if (!(def_.listenAxisThreshold > 0.0f && def_.listenAxisThreshold <= 1.0f)) {
-        throw core::Error("input::ActionMap::ActionMap(): listenAxisThreshold must be in (0, 1], got " +
-                          core::formatNumber(def_.listenAxisThreshold));
+        throw core::Error(
+            "input::ActionMap::ActionMap(): listenAxisThreshold must be in (0, 1], got " +
+            core::formatNumber(def_.listenAxisThreshold));
     }
 }
 
 ActionId ActionMap::add(std::string_view name) {
     if (!detail::isActionName(name)) {
-        throw core::Error("input::ActionMap::add(): " + std::string(detail::kActionNameRule) + ", got " +
-                          core::quote(name));
+        throw core::Error("input::ActionMap::add(): " + std::string(detail::kActionNameRule) +
+                          ", got " + core::quote(name));
     }
     if (!find(name).isNull()) {
-        throw core::Error("input::ActionMap::add(): action '" + std::string(name) + "' already exists");
+        throw core::Error("input::ActionMap::add(): action '" + std::string(name) +
+                          "' already exists");
     }
     actions_.push_back(Action{std::string(name), {}, 0.0f, false, false, false});
     return ActionId::forSlot(static_cast<std::uint32_t>(actions_.size() - 1));
@@ -96,48 +104,38 @@ ActionMap::Action& ActionMap::at(ActionId id, const char* function) {
 ActionId ActionMap::require(std::string_view name, const char* function) const {
     const ActionId id = find(name);
     if (id.isNull()) {
-        throw core::Error(std::string("input::ActionMap::") + function + "(): no action named " + core::quote(name));
+        throw core::Error(std::string("input::ActionMap::") + function + "(): no action named " +
+                          core::quote(name));
     }
     return id;
 }
 
-const std::string& ActionMap::name(ActionId id) const {
-    return at(id, "name").name;
-}
+const std::string& ActionMap::name(ActionId id) const { return at(id, "name").name; }
 
 void ActionMap::bind(ActionId id, const Binding& binding) {
     Action& action = at(id, "bind");
     if (std::string problem = checkBinding(binding); !problem.empty()) {
         throw core::Error("input::ActionMap::bind(): " + problem);
     }
-    if (std::find(action.bindings.begin(), action.bindings.end(), binding) == action.bindings.end()) {
+    if (std::find(action.bindings.begin(), action.bindings.end(), binding) ==
+        action.bindings.end()) {
         action.bindings.push_back(binding);
     }
 }
 
-void ActionMap::clearBindings(ActionId id) {
-    at(id, "clearBindings").bindings.clear();
-}
+void ActionMap::clearBindings(ActionId id) { at(id, "clearBindings").bindings.clear(); }
 
 std::span<const Binding> ActionMap::bindings(ActionId id) const {
     return at(id, "bindings").bindings;
 }
 
-bool ActionMap::pressed(ActionId id) const {
-    return at(id, "pressed").pressed;
-}
+bool ActionMap::pressed(ActionId id) const { return at(id, "pressed").pressed; }
 
-bool ActionMap::held(ActionId id) const {
-    return at(id, "held").held;
-}
+bool ActionMap::held(ActionId id) const { return at(id, "held").held; }
 
-bool ActionMap::released(ActionId id) const {
-    return at(id, "released").released;
-}
+bool ActionMap::released(ActionId id) const { return at(id, "released").released; }
 
-float ActionMap::value(ActionId id) const {
-    return at(id, "value").value;
-}
+float ActionMap::value(ActionId id) const { return at(id, "value").value; }
 
 // Evaluation ---------------------------------------------------------------------------------
 
@@ -170,17 +168,16 @@ void ActionMap::evaluate(Action& action, const Input& input) const {
             }
             tapped = tapped || input.wasMouseButtonPressed(MouseButton(b.code));
             break;
-        case BindingKind::KeyAxis:
-        {
+        case BindingKind::KeyAxis: {
             const Key positive{b.code};
             const Key negative{b.negativeKey};
-            offer((input.isKeyDown(positive) ? 1.0f : 0.0f) - (input.isKeyDown(negative) ? 1.0f : 0.0f));
+            offer((input.isKeyDown(positive) ? 1.0f : 0.0f) -
+                  (input.isKeyDown(negative) ? 1.0f : 0.0f));
             if (input.isKeyDown(positive) || input.isKeyDown(negative)) {
                 digitalDown = true;
             }
             tapped = tapped || input.wasKeyPressed(positive) || input.wasKeyPressed(negative);
-        }
-            break;
+        } break;
         case BindingKind::GamepadButton: {
             int first = 0;
             int last = 0;
@@ -270,7 +267,8 @@ void ActionMap::listenStep(const Input& input) {
     if (listenMode_ == ListenMode::Replace) {
         action.bindings.clear();
     }
-    if (std::find(action.bindings.begin(), action.bindings.end(), *found) == action.bindings.end()) {
+    if (std::find(action.bindings.begin(), action.bindings.end(), *found) ==
+        action.bindings.end()) {
         action.bindings.push_back(*found);
     }
     captured_ = found;

@@ -20,7 +20,8 @@ namespace {
 
 std::string nameOf(std::string_view name, int code, const char* kind) {
     if (name.empty()) {
-        throw core::Error(std::string("input::formatBinding(): ") + kind + " " + std::to_string(code) + " has no name");
+        throw core::Error(std::string("input::formatBinding(): ") + kind + " " +
+                          std::to_string(code) + " has no name");
     }
     return std::string(name);
 }
@@ -41,7 +42,8 @@ Binding parseBinding(std::string_view text) {
         if (kind != "button" && kind != "axis") {
             fail("a gamepad slot (@N) applies to button and axis only", text);
         }
-        if (slot.empty() || slot.size() > 2 || slot.find_first_not_of("0123456789") != std::string_view::npos ||
+        if (slot.empty() || slot.size() > 2 ||
+            slot.find_first_not_of("0123456789") != std::string_view::npos ||
             std::stoi(std::string(slot)) >= kMaxGamepads) {
             fail("gamepad slot must be 0..15, got " + core::quote(slot), text);
         }
@@ -93,7 +95,8 @@ Binding parseBinding(std::string_view text) {
         }
         fail("unknown gamepad axis name " + core::quote(name), text);
     }
-    fail("unknown binding kind " + core::quote(kind) + " (expected key, keys, mouse, button, axis)", text);
+    fail("unknown binding kind " + core::quote(kind) + " (expected key, keys, mouse, button, axis)",
+         text);
 }
 
 std::string formatBinding(const Binding& b) {
@@ -104,14 +107,16 @@ std::string formatBinding(const Binding& b) {
         slot.append("@").append(std::to_string(b.gamepad));
     }
     switch (b.kind) {
-    case BindingKind::Key: return "key:" + nameOf(keyName(Key(b.code)), b.code, "key");
+    case BindingKind::Key:
+        return "key:" + nameOf(keyName(Key(b.code)), b.code, "key");
     case BindingKind::KeyAxis:
         return "keys:" + nameOf(keyName(Key(b.negativeKey)), b.negativeKey, "key") + "/" +
                nameOf(keyName(Key(b.code)), b.code, "key");
     case BindingKind::MouseButton:
         return "mouse:" + nameOf(mouseButtonName(MouseButton(b.code)), b.code, "mouse button");
     case BindingKind::GamepadButton:
-        return "button" + slot + ":" + nameOf(gamepadButtonName(GamepadButton(b.code)), b.code, "gamepad button");
+        return "button" + slot + ":" +
+               nameOf(gamepadButtonName(GamepadButton(b.code)), b.code, "gamepad button");
     case BindingKind::GamepadAxis:
         return "axis" + slot + ":" + (b.inverted ? "-" : "") +
                nameOf(gamepadAxisName(GamepadAxis(b.code)), b.code, "gamepad axis");

@@ -37,7 +37,8 @@ void ActionMap::loadFromString(std::string_view text, std::string_view source) {
     text = core::withoutByteOrderMark(text);
     int lineNumber = 0;
     const auto fail = [&](const std::string& what) {
-        throw core::ParseError(core::Diagnostic{core::Severity::Error, core::printable(source), lineNumber, 0, {}, what});
+        throw core::ParseError(core::Diagnostic{
+            core::Severity::Error, core::printable(source), lineNumber, 0, {}, what});
     };
     while (!text.empty()) {
         ++lineNumber;
@@ -65,7 +66,8 @@ void ActionMap::loadFromString(std::string_view text, std::string_view source) {
         while (!rest.empty()) {
             const std::size_t comma = rest.find(',');
             const std::string_view item = trim(rest.substr(0, comma));
-            rest = comma == std::string_view::npos ? std::string_view{} : trim(rest.substr(comma + 1));
+            rest =
+                comma == std::string_view::npos ? std::string_view{} : trim(rest.substr(comma + 1));
             if (item.empty()) {
                 fail("empty binding");
             }
@@ -112,7 +114,8 @@ std::string ActionMap::toString() const {
 void ActionMap::save(const std::filesystem::path& path) const {
     const std::string text = toString();
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    if (!file || !file.write(text.data(), static_cast<std::streamsize>(text.size())) || !file.flush()) {
+    if (!file || !file.write(text.data(), static_cast<std::streamsize>(text.size())) ||
+        !file.flush()) {
         throw core::Error("input::ActionMap::save(): cannot write '" + path.string() + "'");
     }
 }

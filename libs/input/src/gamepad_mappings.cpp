@@ -23,19 +23,39 @@ namespace {
 constexpr std::size_t kMaxLine = 1023;
 constexpr std::size_t kMaxName = 127;
 
-constexpr std::array<std::string_view, 21> kElementFields = {
-    "a", "b", "x", "y", "back", "start", "guide", "leftshoulder", "rightshoulder", "leftstick", "rightstick",
-    "dpup", "dpright", "dpdown", "dpleft", "lefttrigger", "righttrigger", "leftx", "lefty", "rightx", "righty"};
+constexpr std::array<std::string_view, 21> kElementFields = {"a",
+                                                             "b",
+                                                             "x",
+                                                             "y",
+                                                             "back",
+                                                             "start",
+                                                             "guide",
+                                                             "leftshoulder",
+                                                             "rightshoulder",
+                                                             "leftstick",
+                                                             "rightstick",
+                                                             "dpup",
+                                                             "dpright",
+                                                             "dpdown",
+                                                             "dpleft",
+                                                             "lefttrigger",
+                                                             "righttrigger",
+                                                             "leftx",
+                                                             "lefty",
+                                                             "rightx",
+                                                             "righty"};
 // SDL fields GLFW has no use for (and skips); their elements are still checked.
 constexpr std::array<std::string_view, 11> kIgnoredElementFields = {
-    "misc1", "misc2", "misc3", "misc4", "misc5", "misc6", "paddle1", "paddle2", "paddle3", "paddle4", "touchpad"};
+    "misc1",   "misc2",   "misc3",   "misc4",   "misc5",   "misc6",
+    "paddle1", "paddle2", "paddle3", "paddle4", "touchpad"};
 // SDL fields with free-form values.
 constexpr std::array<std::string_view, 4> kTextFields = {"crc", "hint", "sdk>=", "sdk<="};
 // The axes an SDL output modifier can name (+leftx: the element drives the positive half only).
-constexpr std::array<std::string_view, 6> kSplitAxes = {"leftx", "lefty", "rightx", "righty", "lefttrigger",
-                                                        "righttrigger"};
+constexpr std::array<std::string_view, 6> kSplitAxes = {"leftx",  "lefty",       "rightx",
+                                                        "righty", "lefttrigger", "righttrigger"};
 // SDL's platform names (the database's "platform:" values).
-constexpr std::array<std::string_view, 5> kPlatforms = {"Windows", "Mac OS X", "Linux", "Android", "iOS"};
+constexpr std::array<std::string_view, 5> kPlatforms = {"Windows", "Mac OS X", "Linux", "Android",
+                                                        "iOS"};
 
 constexpr std::string_view kPlatform = "Linux";
 
@@ -43,13 +63,9 @@ bool contains(auto const& list, std::string_view s) {
     return std::find(list.begin(), list.end(), s) != list.end();
 }
 
-bool isHex(char c) {
-    return std::isxdigit(static_cast<unsigned char>(c)) != 0;
-}
+bool isHex(char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; }
 
-bool isDigit(char c) {
-    return c >= '0' && c <= '9';
-}
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
 
 // Fields are short; a long value is cut in messages.
 
@@ -148,19 +164,23 @@ LineCheck checkLine(std::string_view line) {
         return check;
     };
     if (line.size() > kMaxLine) {
-        return fail("line is " + std::to_string(line.size()) + " bytes, GLFW takes at most " + std::to_string(kMaxLine));
+        return fail("line is " + std::to_string(line.size()) + " bytes, GLFW takes at most " +
+                    std::to_string(kMaxLine));
     }
     // GLFW reads C strings and splits lines at '\r' as well as '\n'.
     for (char c : line) {
         if (static_cast<unsigned char>(c) < 0x20 && c != '\t') {
-            return fail("control character " + std::to_string(static_cast<int>(c)) + " in the line");
+            return fail("control character " + std::to_string(static_cast<int>(c)) +
+                        " in the line");
         }
     }
     // Another platform's line is not for GLFW here, whatever it holds (Windows lines may name
     // the "xinput" GUID, which GLFW cannot parse).
-    if (const std::string_view platform = platformOf(line); !platform.empty() && platform != kPlatform) {
+    if (const std::string_view platform = platformOf(line);
+        !platform.empty() && platform != kPlatform) {
         if (!contains(kPlatforms, platform)) {
-            return fail("unknown platform " + core::quote(platform, 40) + " (SDL's are Windows, Mac OS X, Linux, Android, iOS)");
+            return fail("unknown platform " + core::quote(platform, 40) +
+                        " (SDL's are Windows, Mac OS X, Linux, Android, iOS)");
         }
         check.otherPlatform = true;
         return check;
@@ -180,7 +200,8 @@ LineCheck checkLine(std::string_view line) {
         return fail("the name is empty");
     }
     if (name.size() > kMaxName) {
-        return fail("name is " + std::to_string(name.size()) + " bytes, GLFW takes at most " + std::to_string(kMaxName));
+        return fail("name is " + std::to_string(name.size()) + " bytes, GLFW takes at most " +
+                    std::to_string(kMaxName));
     }
     if (nameEnd == std::string_view::npos) {
         return fail("expected fields after the name");
@@ -206,19 +227,24 @@ LineCheck checkLine(std::string_view line) {
         if (modifier) {
             key.remove_prefix(1);
             if (!contains(kSplitAxes, key)) {
-                return fail("an output modifier (+/-) applies to an axis (leftx ... righttrigger), got " + core::quote(field, 40));
+                return fail(
+                    "an output modifier (+/-) applies to an axis (leftx ... righttrigger), got " +
+                    core::quote(field, 40));
             }
         } else if (key == "platform" || contains(kTextFields, key)) {
             check.kept.append(field).append(",");
             continue;
         } else if (!contains(kElementFields, key) && !contains(kIgnoredElementFields, key)) {
             // GLFW skips fields it does not know, and so does the mapping here.
-            check.warnings.push_back("unknown field " + core::quote(key, 40) + " ignored (SDL's gamepad fields are a, b, x, y, "
-                                     "back, start, guide, dp*, left*, right*, misc1-6, paddle1-4, touchpad)");
+            check.warnings.push_back(
+                "unknown field " + core::quote(key, 40) +
+                " ignored (SDL's gamepad fields are a, b, x, y, "
+                "back, start, guide, dp*, left*, right*, misc1-6, paddle1-4, touchpad)");
             continue;
         }
         if (std::string problem = checkElement(value); !problem.empty()) {
-            return fail("field " + core::quote(field.substr(0, colon), 40) + ": " + problem + ", got " + core::quote(value, 40));
+            return fail("field " + core::quote(field.substr(0, colon), 40) + ": " + problem +
+                        ", got " + core::quote(value, 40));
         }
         if (modifier) {
             // GLFW 3.3 refuses a whole mapping that holds one (it has no half-axis outputs).
@@ -233,8 +259,8 @@ LineCheck checkLine(std::string_view line) {
         for (const std::string& d : dropped) {
             list += (list.empty() ? "" : ", ") + d;
         }
-        check.warnings.push_back("output modifier" + std::string(dropped.size() > 1 ? "s " : " ") + list +
-                                 " left out (GLFW 3.3 has no half-axis outputs)");
+        check.warnings.push_back("output modifier" + std::string(dropped.size() > 1 ? "s " : " ") +
+                                 list + " left out (GLFW 3.3 has no half-axis outputs)");
     }
     if (elements == 0) {
         return fail("no button or axis fields");
@@ -261,7 +287,8 @@ MappingParseResult parseGamepadMappings(std::string_view text, std::string_view 
         const std::size_t end = text.find('\n');
         std::string_view line = text.substr(0, end);
         text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
-        while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) {
+        while (!line.empty() &&
+               (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) {
             line.remove_suffix(1);
         }
         while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) {
@@ -276,11 +303,12 @@ MappingParseResult parseGamepadMappings(std::string_view text, std::string_view 
         // closing ',' or the platform field that every line before it has.
         if (end == std::string_view::npos && mappingLines > 0 &&
             ((allClosed && !closed) || (allWithPlatform && !withPlatform))) {
-            result.diagnostics.error(file, lineNumber,
-                                     "the text ends inside this line (no newline after it, and no " +
-                                         std::string(allClosed && !closed ? "',' closing its last field"
-                                                                          : "platform field") +
-                                         " as every line before it has): cut short?");
+            result.diagnostics.error(
+                file, lineNumber,
+                "the text ends inside this line (no newline after it, and no " +
+                    std::string(allClosed && !closed ? "',' closing its last field"
+                                                     : "platform field") +
+                    " as every line before it has): cut short?");
             break;
         }
         ++mappingLines;
@@ -322,10 +350,12 @@ MappingLoadResult loadGamepadMappings(std::string_view text, std::string_view so
 }
 
 MappingLoadResult loadGamepadMappingsFile(const std::filesystem::path& path) {
-    return loadGamepadMappings(core::readRequiredTextFile(path, "input::loadGamepadMappingsFile()"), path.string());
+    return loadGamepadMappings(core::readRequiredTextFile(path, "input::loadGamepadMappingsFile()"),
+                               path.string());
 }
 
-std::string makeGamepadMapping(std::string_view guid, std::string_view name, std::string_view fields) {
+std::string makeGamepadMapping(std::string_view guid, std::string_view name,
+                               std::string_view fields) {
     std::string line = std::string(guid) + "," + std::string(name) + "," + std::string(fields);
     if (line.find('\n') != std::string::npos) {
         throw core::Error("input::makeGamepadMapping(): the mapping must be one line");

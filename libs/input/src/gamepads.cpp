@@ -14,13 +14,9 @@ namespace e2d::input {
 
 namespace {
 
-bool validSlot(int slot) noexcept {
-    return slot >= 0 && slot < kMaxGamepads;
-}
+bool validSlot(int slot) noexcept { return slot >= 0 && slot < kMaxGamepads; }
 
-bool validPadButton(int button) noexcept {
-    return button >= 0 && button < kGamepadButtonCount;
-}
+bool validPadButton(int button) noexcept { return button >= 0 && button < kGamepadButtonCount; }
 
 } // namespace
 
@@ -43,7 +39,8 @@ float Input::applyTriggerDeadZone(float raw, float deadZone) noexcept {
 
 void Input::handleJoystick(int slot, const JoystickSnapshot& snapshot) {
     if (!validSlot(slot)) {
-        throw core::Error("input::Input::handleJoystick(): slot must be in [0, 15], got " + std::to_string(slot));
+        throw core::Error("input::Input::handleJoystick(): slot must be in [0, 15], got " +
+                          std::to_string(slot));
     }
     PendingPad& pending = pendingPads_[static_cast<std::size_t>(slot)];
     pending.fed = true;
@@ -83,7 +80,8 @@ void Input::pollJoysticks() {
                 snap.gamepad = false;
             }
             // Triggers rest at -1 in GLFW's state: an unmapped pad reads as released.
-            snap.axes[GLFW_GAMEPAD_AXIS_LEFT_TRIGGER] = snap.gamepad ? snap.axes[GLFW_GAMEPAD_AXIS_LEFT_TRIGGER] : -1.0f;
+            snap.axes[GLFW_GAMEPAD_AXIS_LEFT_TRIGGER] =
+                snap.gamepad ? snap.axes[GLFW_GAMEPAD_AXIS_LEFT_TRIGGER] : -1.0f;
             snap.axes[GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER] =
                 snap.gamepad ? snap.axes[GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER] : -1.0f;
         }
@@ -154,16 +152,19 @@ void Input::applyPad(int slot, PendingPad& pending) {
     std::array<float, kGamepadAxisCount> axes{};
     for (int stick = 0; stick < 2; ++stick) {
         const auto x = static_cast<std::size_t>(stick * 2);
-        const glm::vec2 v = applyStickDeadZone(glm::vec2(snap.axes[x], snap.axes[x + 1]), def_.stickDeadZone);
+        const glm::vec2 v =
+            applyStickDeadZone(glm::vec2(snap.axes[x], snap.axes[x + 1]), def_.stickDeadZone);
         axes[x] = v.x;
         axes[x + 1] = v.y;
     }
-    for (std::size_t t = GLFW_GAMEPAD_AXIS_LEFT_TRIGGER; t <= GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER; ++t) {
+    for (std::size_t t = GLFW_GAMEPAD_AXIS_LEFT_TRIGGER; t <= GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
+         ++t) {
         axes[t] = applyTriggerDeadZone(snap.axes[t], def_.triggerDeadZone);
     }
 
     for (int button = 0; button <= GLFW_GAMEPAD_BUTTON_LAST; ++button) {
-        setPadButton(slot, pad, button, snap.buttons[static_cast<std::size_t>(button)] == GLFW_PRESS);
+        setPadButton(slot, pad, button,
+                     snap.buttons[static_cast<std::size_t>(button)] == GLFW_PRESS);
     }
     setPadButton(slot, pad, static_cast<int>(GamepadButton::LeftTrigger),
                  axes[GLFW_GAMEPAD_AXIS_LEFT_TRIGGER] >= def_.triggerPressThreshold);
@@ -185,7 +186,8 @@ void Input::applyPad(int slot, PendingPad& pending) {
 }
 
 bool Input::isGamepadConnected(int slot) const noexcept {
-    return validSlot(slot) && pads_[static_cast<std::size_t>(slot)].present && pads_[static_cast<std::size_t>(slot)].gamepad;
+    return validSlot(slot) && pads_[static_cast<std::size_t>(slot)].present &&
+           pads_[static_cast<std::size_t>(slot)].gamepad;
 }
 
 bool Input::isGamepadButtonDown(int slot, GamepadButton button) const noexcept {

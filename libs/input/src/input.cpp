@@ -3,8 +3,8 @@
 
 #include <e2d/core/error.hpp>
 #include <e2d/core/error_text.hpp>
-#include <e2d/input/input_script.hpp>
 #include <e2d/core/log.hpp>
+#include <e2d/input/input_script.hpp>
 
 #include <GLFW/glfw3.h>
 
@@ -17,35 +17,48 @@ namespace e2d::input {
 
 namespace {
 
-bool validKey(int key) noexcept {
-    return key >= 0 && key <= kKeyLast;
-}
+bool validKey(int key) noexcept { return key >= 0 && key <= kKeyLast; }
 
-bool validButton(int button) noexcept {
-    return button >= 0 && button < kMouseButtonCount;
-}
+bool validButton(int button) noexcept { return button >= 0 && button < kMouseButtonCount; }
 
 } // namespace
 
 std::string_view toString(EventType type) noexcept {
     switch (type) {
-    case EventType::KeyDown: return "KeyDown";
-    case EventType::KeyUp: return "KeyUp";
-    case EventType::KeyRepeat: return "KeyRepeat";
-    case EventType::Text: return "Text";
-    case EventType::MouseButtonDown: return "MouseButtonDown";
-    case EventType::MouseButtonUp: return "MouseButtonUp";
-    case EventType::MouseMove: return "MouseMove";
-    case EventType::Scroll: return "Scroll";
-    case EventType::FocusGained: return "FocusGained";
-    case EventType::FocusLost: return "FocusLost";
-    case EventType::GamepadConnected: return "GamepadConnected";
-    case EventType::GamepadDisconnected: return "GamepadDisconnected";
-    case EventType::GamepadButtonDown: return "GamepadButtonDown";
-    case EventType::GamepadButtonUp: return "GamepadButtonUp";
-    case EventType::GamepadAxis: return "GamepadAxis";
-    case EventType::JoystickConnected: return "JoystickConnected";
-    case EventType::JoystickDisconnected: return "JoystickDisconnected";
+    case EventType::KeyDown:
+        return "KeyDown";
+    case EventType::KeyUp:
+        return "KeyUp";
+    case EventType::KeyRepeat:
+        return "KeyRepeat";
+    case EventType::Text:
+        return "Text";
+    case EventType::MouseButtonDown:
+        return "MouseButtonDown";
+    case EventType::MouseButtonUp:
+        return "MouseButtonUp";
+    case EventType::MouseMove:
+        return "MouseMove";
+    case EventType::Scroll:
+        return "Scroll";
+    case EventType::FocusGained:
+        return "FocusGained";
+    case EventType::FocusLost:
+        return "FocusLost";
+    case EventType::GamepadConnected:
+        return "GamepadConnected";
+    case EventType::GamepadDisconnected:
+        return "GamepadDisconnected";
+    case EventType::GamepadButtonDown:
+        return "GamepadButtonDown";
+    case EventType::GamepadButtonUp:
+        return "GamepadButtonUp";
+    case EventType::GamepadAxis:
+        return "GamepadAxis";
+    case EventType::JoystickConnected:
+        return "JoystickConnected";
+    case EventType::JoystickDisconnected:
+        return "JoystickDisconnected";
     }
     return "?";
 }
@@ -53,15 +66,16 @@ std::string_view toString(EventType type) noexcept {
 Input::Input(InputDef def) : def_(std::move(def)) {
     const auto check = [](bool ok, const char* field, const std::string& rule, float value) {
         if (!ok) {
-            throw core::Error(std::string("input::Input::Input(): ") + field + " must be " + rule + ", got " +
-                              core::formatNumber(value));
+            throw core::Error(std::string("input::Input::Input(): ") + field + " must be " + rule +
+                              ", got " + core::formatNumber(value));
         }
     };
-    check(def_.stickDeadZone >= 0.0f && def_.stickDeadZone < 1.0f, "stickDeadZone", "in [0, 1)", def_.stickDeadZone);
-    check(def_.triggerDeadZone >= 0.0f && def_.triggerDeadZone < 1.0f, "triggerDeadZone", "in [0, 1)",
-          def_.triggerDeadZone);
-    check(def_.triggerPressThreshold > 0.0f && def_.triggerPressThreshold <= 1.0f, "triggerPressThreshold",
-          "in (0, 1]", def_.triggerPressThreshold);
+    check(def_.stickDeadZone >= 0.0f && def_.stickDeadZone < 1.0f, "stickDeadZone", "in [0, 1)",
+          def_.stickDeadZone);
+    check(def_.triggerDeadZone >= 0.0f && def_.triggerDeadZone < 1.0f, "triggerDeadZone",
+          "in [0, 1)", def_.triggerDeadZone);
+    check(def_.triggerPressThreshold > 0.0f && def_.triggerPressThreshold <= 1.0f,
+          "triggerPressThreshold", "in (0, 1]", def_.triggerPressThreshold);
     if (def_.maxQueuedEvents < 1) {
         throw core::Error("input::Input::Input(): maxQueuedEvents must be >= 1, got 0");
     }
@@ -72,9 +86,7 @@ Input::Input(InputDef def) : def_(std::move(def)) {
     attach(window);
 }
 
-Input::~Input() {
-    attach(nullptr);
-}
+Input::~Input() { attach(nullptr); }
 
 void Input::setScreenToWorld(std::function<glm::vec2(glm::vec2)> converter) {
     def_.screenToWorld = std::move(converter);
@@ -96,7 +108,9 @@ void Input::queue(const Event& event) {
 
 void Input::handleKey(int key, int scancode, int action, int mods) {
     Event e;
-    e.type = action == GLFW_PRESS ? EventType::KeyDown : action == GLFW_RELEASE ? EventType::KeyUp : EventType::KeyRepeat;
+    e.type = action == GLFW_PRESS     ? EventType::KeyDown
+             : action == GLFW_RELEASE ? EventType::KeyUp
+                                      : EventType::KeyRepeat;
     e.code = key;
     e.scancode = scancode;
     e.mods = mods;
@@ -178,9 +192,10 @@ void Input::beginFrame() {
 
     if (dropped_ != droppedReported_) {
         if (def_.logger != nullptr) {
-            def_.logger->warning("input::Input::beginFrame(): " + core::formatNumber(dropped_ - droppedReported_) +
-                                 " events dropped (more than maxQueuedEvents = " + core::formatNumber(def_.maxQueuedEvents) +
-                                 " queued in one frame)");
+            def_.logger->warning(
+                "input::Input::beginFrame(): " + core::formatNumber(dropped_ - droppedReported_) +
+                " events dropped (more than maxQueuedEvents = " +
+                core::formatNumber(def_.maxQueuedEvents) + " queued in one frame)");
         }
         droppedReported_ = dropped_;
     }

@@ -47,19 +47,22 @@ std::vector<std::string_view> words(std::string_view line) {
 }
 
 [[noreturn]] void fail(std::string_view source, int line, const std::string& message) {
-    throw core::ParseError(core::Diagnostic{core::Severity::Error, core::printable(source), line, 0, {}, message});
+    throw core::ParseError(
+        core::Diagnostic{core::Severity::Error, core::printable(source), line, 0, {}, message});
 }
 
 // Bounded, so a tap's release (frame + 1) cannot overflow.
 std::int64_t parseFrame(std::string_view word, std::string_view source, int line) {
     std::int64_t frame = 0;
     const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), frame);
-    if (ec == std::errc::invalid_argument || ptr != word.data() + word.size() || (ec == std::errc() && frame < 0)) {
+    if (ec == std::errc::invalid_argument || ptr != word.data() + word.size() ||
+        (ec == std::errc() && frame < 0)) {
         fail(source, line, "frame must be a whole number >= 0, got " + core::quote(word));
     }
     if (ec != std::errc() || frame > kMaxScriptFrame) {
-        fail(source, line, "frame must be a whole number in [0, " + std::to_string(kMaxScriptFrame) + "], got " +
-                               core::quote(word));
+        fail(source, line,
+             "frame must be a whole number in [0, " + std::to_string(kMaxScriptFrame) + "], got " +
+                 core::quote(word));
     }
     return frame;
 }
@@ -75,34 +78,38 @@ std::optional<float> number(std::string_view word) {
 }
 
 // `<frame> move mouse <x> <y>` or `<frame> move axis:<name> <value>`.
-ScriptEvent parseMove(const std::vector<std::string_view>& w, std::string_view line, std::string_view source,
-                      int lineNumber) {
+ScriptEvent parseMove(const std::vector<std::string_view>& w, std::string_view line,
+                      std::string_view source, int lineNumber) {
     ScriptEvent event;
     event.frame = parseFrame(w[0], source, lineNumber);
     event.kind = ScriptEvent::Kind::Move;
     event.target = std::string(w[2]);
     event.line = lineNumber;
     const auto rest = [&](std::size_t from) {
-        const std::size_t at = w.size() > from ? static_cast<std::size_t>(w[from].data() - line.data()) : line.size();
+        const std::size_t at =
+            w.size() > from ? static_cast<std::size_t>(w[from].data() - line.data()) : line.size();
         return std::string(line.substr(at));
     };
     if (w[2] == "mouse") {
         const std::optional<float> x = w.size() == 5 ? number(w[3]) : std::nullopt;
         const std::optional<float> y = w.size() == 5 ? number(w[4]) : std::nullopt;
         if (!x || !y) {
-            fail(source, lineNumber, "move mouse: expected '<x> <y>' in window pixels, got " + core::quote(rest(3)));
+            fail(source, lineNumber,
+                 "move mouse: expected '<x> <y>' in window pixels, got " + core::quote(rest(3)));
         }
         event.x = *x;
         event.y = *y;
         return event;
     }
     if (w[2].substr(0, 4) != "axis") {
-        fail(source, lineNumber, "move: expected 'mouse' or a gamepad axis (axis:leftx), got " + core::quote(w[2]));
+        fail(source, lineNumber,
+             "move: expected 'mouse' or a gamepad axis (axis:leftx), got " + core::quote(w[2]));
     }
     const std::optional<float> value = w.size() == 4 ? number(w[3]) : std::nullopt;
     if (!value || *value < -1.0f || *value > 1.0f) {
-        fail(source, lineNumber, "move " + core::printable(w[2]) + ": expected one value in [-1, 1], got " +
-                                     core::quote(rest(3)));
+        fail(source, lineNumber,
+             "move " + core::printable(w[2]) + ": expected one value in [-1, 1], got " +
+                 core::quote(rest(3)));
     }
     event.x = *value;
     return event;
@@ -135,12 +142,14 @@ InputScript parseInputScript(std::string_view text, std::string_view source) {
         const std::string target(w[2]);
         if (w[1] == "press" || w[1] == "release") {
             script.events.push_back(
-                {frame, w[1] == "press" ? ScriptEvent::Kind::Press : ScriptEvent::Kind::Release, target, lineNumber});
+                {frame, w[1] == "press" ? ScriptEvent::Kind::Press : ScriptEvent::Kind::Release,
+                 target, lineNumber});
         } else if (w[1] == "tap") {
             script.events.push_back({frame, ScriptEvent::Kind::Press, target, lineNumber});
             script.events.push_back({frame + 1, ScriptEvent::Kind::Release, target, lineNumber});
         } else {
-            fail(source, lineNumber, "expected press, release, tap or move, got " + core::quote(w[1]));
+            fail(source, lineNumber,
+                 "expected press, release, tap or move, got " + core::quote(w[1]));
         }
     }
     std::stable_sort(script.events.begin(), script.events.end(),
@@ -151,8 +160,13 @@ InputScript parseInputScript(std::string_view text, std::string_view source) {
 InputScript loadInputScript(const std::filesystem::path& path) {
     const core::TextFile file = core::readTextFile(path);
     if (!file.ok()) {
-        throw core::ParseError(core::Diagnostic{core::Severity::Error, core::printable(path.string()), 0, 0, {},
-                                                "cannot read the input script (" + file.error + ")"});
+        throw core::ParseError(
+            core::Diagnostic{core::Severity::Error,
+                             core::printable(path.string()),
+                             0,
+                             0,
+                             {},
+                             "cannot read the input script (" + file.error + ")"});
     }
     return parseInputScript(file.text, path.string());
 }

@@ -151,20 +151,23 @@ constexpr std::array<std::string_view, kMouseButtonCount> kMouseButtons = {
     "left", "right", "middle", "button4", "button5", "button6", "button7", "button8"};
 
 constexpr std::array<std::string_view, kGamepadButtonCount> kGamepadButtons = {
-    "a", "b", "x", "y", "leftshoulder", "rightshoulder", "back", "start", "guide", "leftstick",
-    "rightstick", "dpup", "dpright", "dpdown", "dpleft", "lefttrigger", "righttrigger"};
+    "a",       "b",      "x",      "y",           "leftshoulder", "rightshoulder",
+    "back",    "start",  "guide",  "leftstick",   "rightstick",   "dpup",
+    "dpright", "dpdown", "dpleft", "lefttrigger", "righttrigger"};
 
 constexpr std::array<std::string_view, kGamepadAxisCount> kGamepadAxes = {
     "leftx", "lefty", "rightx", "righty", "lefttrigger", "righttrigger"};
 
 bool equalsIgnoringCase(std::string_view a, std::string_view b) noexcept {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
            });
 }
 
 template <class Enum, std::size_t N>
-std::optional<Enum> indexOf(const std::array<std::string_view, N>& names, std::string_view name) noexcept {
+std::optional<Enum> indexOf(const std::array<std::string_view, N>& names,
+                            std::string_view name) noexcept {
     for (std::size_t i = 0; i < N; ++i) {
         if (equalsIgnoringCase(names[i], name)) {
             return static_cast<Enum>(i);
@@ -198,7 +201,9 @@ std::optional<Key> keyFromName(std::string_view name) noexcept {
     return std::nullopt;
 }
 
-std::string_view mouseButtonName(MouseButton button) noexcept { return nameAt(kMouseButtons, button); }
+std::string_view mouseButtonName(MouseButton button) noexcept {
+    return nameAt(kMouseButtons, button);
+}
 
 std::optional<MouseButton> mouseButtonFromName(std::string_view name) noexcept {
     if (auto button = indexOf<MouseButton>(kMouseButtons, name)) {
@@ -216,7 +221,9 @@ std::optional<MouseButton> mouseButtonFromName(std::string_view name) noexcept {
     return std::nullopt;
 }
 
-std::string_view gamepadButtonName(GamepadButton button) noexcept { return nameAt(kGamepadButtons, button); }
+std::string_view gamepadButtonName(GamepadButton button) noexcept {
+    return nameAt(kGamepadButtons, button);
+}
 
 std::optional<GamepadButton> gamepadButtonFromName(std::string_view name) noexcept {
     return indexOf<GamepadButton>(kGamepadButtons, name);

@@ -28,7 +28,8 @@ ScriptedInput::ScriptedInput(const InputScript& script, const ActionMap& actions
     events_.reserve(script.events.size());
     for (const ScriptEvent& event : script.events) {
         const Resolved resolved = resolve(event, script, actions);
-        if (resolved.kind == Resolved::Kind::PadButton || resolved.kind == Resolved::Kind::PadAxis) {
+        if (resolved.kind == Resolved::Kind::PadButton ||
+            resolved.kind == Resolved::Kind::PadAxis) {
             plugIn(resolved.slot); // connected from the first frame
         }
         events_.push_back(resolved);
@@ -38,7 +39,8 @@ ScriptedInput::ScriptedInput(const InputScript& script, const ActionMap& actions
 ScriptedInput::Resolved ScriptedInput::resolve(const ScriptEvent& event, const InputScript& script,
                                                const ActionMap& actions) {
     const auto fail = [&](const std::string& why) -> Resolved {
-        throw core::ParseError(core::Diagnostic{core::Severity::Error, core::printable(script.source), event.line, 0, {}, why});
+        throw core::ParseError(core::Diagnostic{
+            core::Severity::Error, core::printable(script.source), event.line, 0, {}, why});
     };
     const std::string target = core::quote(event.target);
     Resolved r;
@@ -71,13 +73,14 @@ ScriptedInput::Resolved ScriptedInput::resolve(const ScriptEvent& event, const I
         }
         const Binding axis = parse(event.target);
         if (axis.kind != BindingKind::GamepadAxis) {
-            return fail("move: " + target + " is not a gamepad axis (axis:leftx, axis@1:righttrigger)");
+            return fail("move: " + target +
+                        " is not a gamepad axis (axis:leftx, axis@1:righttrigger)");
         }
         const float value = axis.inverted ? -event.x : event.x;
         const bool trigger = isTrigger(axis.code);
         if (trigger && value < 0.0f) {
-            return fail("move " + core::printable(event.target) + ": a trigger's value is in [0, 1], got " +
-                        core::formatNumber(event.x));
+            return fail("move " + core::printable(event.target) +
+                        ": a trigger's value is in [0, 1], got " + core::formatNumber(event.x));
         }
         r.kind = Resolved::Kind::PadAxis;
         r.code = axis.code;
@@ -107,8 +110,10 @@ ScriptedInput::Resolved ScriptedInput::resolve(const ScriptEvent& event, const I
         r.slot = std::max(binding.gamepad, 0);
         return r;
     }
-    return fail(target + ": only key:, mouse: and button: bindings can be pressed (axes are moved: '<frame> move " +
-                core::printable(event.target) + " <value>')");
+    return fail(
+        target +
+        ": only key:, mouse: and button: bindings can be pressed (axes are moved: '<frame> move " +
+        core::printable(event.target) + " <value>')");
 }
 
 void ScriptedInput::plugIn(int slot) {
@@ -149,8 +154,9 @@ void ScriptedInput::feed(Input& input, std::int64_t frame) {
         case Resolved::Kind::PadButton:
             if (const auto button = static_cast<GamepadButton>(e.code);
                 button == GamepadButton::LeftTrigger || button == GamepadButton::RightTrigger) {
-                const int axis = button == GamepadButton::LeftTrigger ? GLFW_GAMEPAD_AXIS_LEFT_TRIGGER
-                                                                      : GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
+                const int axis = button == GamepadButton::LeftTrigger
+                                     ? GLFW_GAMEPAD_AXIS_LEFT_TRIGGER
+                                     : GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER;
                 pads_[slot].axes[static_cast<std::size_t>(axis)] = e.press ? 1.0f : -1.0f;
             } else {
                 pads_[slot].buttons[static_cast<std::size_t>(e.code)] = e.press ? 1 : 0;

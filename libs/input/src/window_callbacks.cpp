@@ -42,9 +42,12 @@ void focusCallback(GLFWwindow* window, int focused) {
 
 int glfwCursorMode(CursorMode mode) {
     switch (mode) {
-    case CursorMode::Hidden: return GLFW_CURSOR_HIDDEN;
-    case CursorMode::Captured: return GLFW_CURSOR_DISABLED;
-    case CursorMode::Normal: break;
+    case CursorMode::Hidden:
+        return GLFW_CURSOR_HIDDEN;
+    case CursorMode::Captured:
+        return GLFW_CURSOR_DISABLED;
+    case CursorMode::Normal:
+        break;
     }
     return GLFW_CURSOR_NORMAL;
 }
@@ -59,7 +62,8 @@ Input* Input::fromWindow(GLFWwindow* window) noexcept {
     // without trusting whatever else may be stored there.
     const GLFWkeyfun current = glfwSetKeyCallback(window, nullptr);
     glfwSetKeyCallback(window, current);
-    return current == &keyCallback ? static_cast<Input*>(glfwGetWindowUserPointer(window)) : nullptr;
+    return current == &keyCallback ? static_cast<Input*>(glfwGetWindowUserPointer(window))
+                                   : nullptr;
 }
 
 void Input::attach(GLFWwindow* window) {

@@ -187,14 +187,17 @@ TEST(Actions, ListeningBindsTheNextInput) {
 TEST(Actions, BadNamesHandlesAndBindingsAreRefused) {
     ActionMap actions;
     const ActionId a = actions.add("a");
-    EXPECT_EQ(errorOf([&] { actions.add("a"); }), "input::ActionMap::add(): action 'a' already exists");
+    EXPECT_EQ(errorOf([&] { actions.add("a"); }),
+              "input::ActionMap::add(): action 'a' already exists");
     EXPECT_EQ(errorOf([&] { actions.add("has space"); }),
-              "input::ActionMap::add(): action name must be letters, digits, '_', '-' or '.', got 'has space'");
+              "input::ActionMap::add(): action name must be letters, digits, '_', '-' or '.', got "
+              "'has space'");
     EXPECT_EQ(errorOf([&] { static_cast<void>(actions.held(ActionId{})); }),
               "input::ActionMap::held(): no action with id 0");
     EXPECT_EQ(errorOf([&] { static_cast<void>(actions.pressed("nope")); }),
               "input::ActionMap::pressed(): no action named 'nope'");
-    EXPECT_EQ(errorOf([&] { actions.bind(a, Binding::key(Key{9999})); }), "input::ActionMap::bind(): key 9999 out of range");
+    EXPECT_EQ(errorOf([&] { actions.bind(a, Binding::key(Key{9999})); }),
+              "input::ActionMap::bind(): key 9999 out of range");
     EXPECT_EQ(errorOf([&] { actions.bind(a, Binding::gamepadButton(GamepadButton::A, 16)); }),
               "input::ActionMap::bind(): gamepad slot 16 out of range");
     EXPECT_EQ(errorOf([] { ActionMap m(ActionMapDef{0.0f}); }),
@@ -212,8 +215,9 @@ TEST(Bindings, TextFormsRoundTrip) {
                            Binding::gamepadButton(GamepadButton::LeftTrigger, 15),
                            Binding::gamepadAxis(GamepadAxis::LeftY, true),
                            Binding::gamepadAxis(GamepadAxis::RightTrigger, false, 3)};
-    const char* text[] = {"key:space", "keys:left/right", "mouse:middle", "button:start", "button@15:lefttrigger",
-                          "axis:-lefty", "axis@3:righttrigger"};
+    const char* text[] = {"key:space",          "keys:left/right",       "mouse:middle",
+                          "button:start",       "button@15:lefttrigger", "axis:-lefty",
+                          "axis@3:righttrigger"};
     for (std::size_t i = 0; i < std::size(all); ++i) {
         EXPECT_EQ(formatBinding(all[i]), text[i]);
         EXPECT_EQ(parseBinding(text[i]), all[i]) << text[i];
@@ -222,18 +226,28 @@ TEST(Bindings, TextFormsRoundTrip) {
 }
 
 TEST(Bindings, BadTextSaysWhatIsWrong) {
-    const auto message = [](std::string_view t) { return errorOf([&] { static_cast<void>(parseBinding(t)); }); };
-    EXPECT_EQ(message("key:spcae"), "input::parseBinding(): unknown key name 'spcae' in 'key:spcae'");
-    EXPECT_EQ(message("space"), "input::parseBinding(): expected <kind>:<name> (key, keys, mouse, button, axis) in 'space'");
-    EXPECT_EQ(message("keys:a"), "input::parseBinding(): expected keys:<negative>/<positive> in 'keys:a'");
+    const auto message = [](std::string_view t) {
+        return errorOf([&] { static_cast<void>(parseBinding(t)); });
+    };
+    EXPECT_EQ(message("key:spcae"),
+              "input::parseBinding(): unknown key name 'spcae' in 'key:spcae'");
+    EXPECT_EQ(message("space"), "input::parseBinding(): expected <kind>:<name> (key, keys, mouse, "
+                                "button, axis) in 'space'");
+    EXPECT_EQ(message("keys:a"),
+              "input::parseBinding(): expected keys:<negative>/<positive> in 'keys:a'");
     EXPECT_EQ(message("keys:a/dd"), "input::parseBinding(): unknown key name 'dd' in 'keys:a/dd'");
-    EXPECT_EQ(message("mouse:thumb"), "input::parseBinding(): unknown mouse button name 'thumb' in 'mouse:thumb'");
-    EXPECT_EQ(message("button:z"), "input::parseBinding(): unknown gamepad button name 'z' in 'button:z'");
+    EXPECT_EQ(message("mouse:thumb"),
+              "input::parseBinding(): unknown mouse button name 'thumb' in 'mouse:thumb'");
+    EXPECT_EQ(message("button:z"),
+              "input::parseBinding(): unknown gamepad button name 'z' in 'button:z'");
     EXPECT_EQ(message("axis:-"), "input::parseBinding(): unknown gamepad axis name '' in 'axis:-'");
-    EXPECT_EQ(message("button@16:a"), "input::parseBinding(): gamepad slot must be 0..15, got '16' in 'button@16:a'");
-    EXPECT_EQ(message("key@1:a"), "input::parseBinding(): a gamepad slot (@N) applies to button and axis only in 'key@1:a'");
-    EXPECT_EQ(message("joy:a"),
-              "input::parseBinding(): unknown binding kind 'joy' (expected key, keys, mouse, button, axis) in 'joy:a'");
+    EXPECT_EQ(message("button@16:a"),
+              "input::parseBinding(): gamepad slot must be 0..15, got '16' in 'button@16:a'");
+    EXPECT_EQ(
+        message("key@1:a"),
+        "input::parseBinding(): a gamepad slot (@N) applies to button and axis only in 'key@1:a'");
+    EXPECT_EQ(message("joy:a"), "input::parseBinding(): unknown binding kind 'joy' (expected key, "
+                                "keys, mouse, button, axis) in 'joy:a'");
     EXPECT_EQ(message("key:"), "input::parseBinding(): missing name after ':' in 'key:'");
 }
 

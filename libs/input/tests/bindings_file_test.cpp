@@ -9,8 +9,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -43,7 +43,8 @@ TEST(BindingsFile, LoadsEveryActionWithItsBindings) {
     EXPECT_THAT(actions.bindings(actions.find("jump")),
                 ElementsAre(Binding::key(Key::Space), Binding::gamepadButton(GamepadButton::A)));
     EXPECT_THAT(actions.bindings(actions.find("move_x")),
-                ElementsAre(Binding::keyAxis(Key::A, Key::D), Binding::gamepadAxis(GamepadAxis::LeftX),
+                ElementsAre(Binding::keyAxis(Key::A, Key::D),
+                            Binding::gamepadAxis(GamepadAxis::LeftX),
                             Binding::gamepadAxis(GamepadAxis::RightX, true, 1)));
     EXPECT_THAT(actions.bindings(actions.find("fire")),
                 ElementsAre(Binding::mouseButton(MouseButton::Left),
@@ -52,7 +53,8 @@ TEST(BindingsFile, LoadsEveryActionWithItsBindings) {
 }
 
 TEST(BindingsFile, SaveThenLoadGivesTheSameMap) {
-    const std::filesystem::path path = std::filesystem::path(::testing::TempDir()) / "e2d_input_bindings.txt";
+    const std::filesystem::path path =
+        std::filesystem::path(::testing::TempDir()) / "e2d_input_bindings.txt";
     ActionMap original;
     original.loadFromString(kFile);
     original.bind(original.add("menu"), Binding::key(Key::F10));
@@ -63,7 +65,9 @@ TEST(BindingsFile, SaveThenLoadGivesTheSameMap) {
     ASSERT_EQ(loaded.size(), original.size());
     for (std::uint32_t i = 1; i <= original.size(); ++i) {
         EXPECT_EQ(loaded.name(ActionId{i}), original.name(ActionId{i}));
-        EXPECT_TRUE(std::ranges::equal(loaded.bindings(ActionId{i}), original.bindings(ActionId{i}))) << i;
+        EXPECT_TRUE(
+            std::ranges::equal(loaded.bindings(ActionId{i}), original.bindings(ActionId{i})))
+            << i;
     }
     EXPECT_EQ(loaded.toString(), original.toString());
     std::filesystem::remove(path);
@@ -87,14 +91,18 @@ TEST(BindingsFile, MalformedLinesNameFileAndLineAndChangeNothing) {
     const auto message = [&](std::string_view text) {
         return errorOf([&] { actions.loadFromString(text, "controls.txt"); });
     };
-    EXPECT_EQ(message("jump = key:up\nfire = key:spcae\n"), "controls.txt:2: unknown key name 'spcae' in 'key:spcae'");
-    EXPECT_EQ(message("# c\n\njump key:up\n"), "controls.txt:3: expected '<action> = <binding>, ...'");
+    EXPECT_EQ(message("jump = key:up\nfire = key:spcae\n"),
+              "controls.txt:2: unknown key name 'spcae' in 'key:spcae'");
+    EXPECT_EQ(message("# c\n\njump key:up\n"),
+              "controls.txt:3: expected '<action> = <binding>, ...'");
     EXPECT_EQ(message("jump = key:up,,key:w\n"), "controls.txt:1: empty binding");
     EXPECT_EQ(message("ju mp = key:up\n"),
               "controls.txt:1: action name must be letters, digits, '_', '-' or '.', got 'ju mp'");
-    EXPECT_EQ(message(" = key:up\n"), "controls.txt:1: action name must be letters, digits, '_', '-' or '.', got ''");
+    EXPECT_EQ(message(" = key:up\n"),
+              "controls.txt:1: action name must be letters, digits, '_', '-' or '.', got ''");
     EXPECT_EQ(message("a = key:up\na = key:w\n"), "controls.txt:2: action 'a' is listed twice");
-    EXPECT_EQ(message("a = button:fire\n"), "controls.txt:1: unknown gamepad button name 'fire' in 'button:fire'");
+    EXPECT_EQ(message("a = button:fire\n"),
+              "controls.txt:1: unknown gamepad button name 'fire' in 'button:fire'");
     // Nothing of the failed loads stuck.
     EXPECT_EQ(actions.size(), 1u);
     EXPECT_THAT(actions.bindings(jump), ElementsAre(Binding::key(Key::W)));
@@ -116,15 +124,17 @@ TEST(BindingsFile, RawBytesInMessagesAreEscaped) {
     const auto message = [&](std::string_view text) {
         return errorOf([&] { actions.loadFromString(text, "controls.txt"); });
     };
-    EXPECT_EQ(message("\x01jump = key:space\n"),
-              "controls.txt:1: action name must be letters, digits, '_', '-' or '.', got '\\x01jump'");
+    EXPECT_EQ(
+        message("\x01jump = key:space\n"),
+        "controls.txt:1: action name must be letters, digits, '_', '-' or '.', got '\\x01jump'");
     EXPECT_EQ(message(std::string_view("jump = key:sp\0ace\n", 19)),
               "controls.txt:1: unknown key name 'sp\\x00ace' in 'key:sp\\x00ace'");
     EXPECT_EQ(message("jump = button:\xff\xfe\n"),
               "controls.txt:1: unknown gamepad button name '\\xff\\xfe' in 'button:\\xff\\xfe'");
     // Printable UTF-8 stays as it is.
-    EXPECT_EQ(message("saut\xc3\xa9 = key:space\n"),
-              "controls.txt:1: action name must be letters, digits, '_', '-' or '.', got 'saut\xc3\xa9'");
+    EXPECT_EQ(
+        message("saut\xc3\xa9 = key:space\n"),
+        "controls.txt:1: action name must be letters, digits, '_', '-' or '.', got 'saut\xc3\xa9'");
     EXPECT_EQ(errorOf([&] { static_cast<void>(actions.held("\x1b[2J")); }),
               "input::ActionMap::held(): no action named '\\x1b[2J'");
 }
@@ -143,15 +153,18 @@ TEST(BindingsFile, AnErrorKeepsItsDiagnostic) {
 
 TEST(BindingsFile, UnreadableAndUnwritableFilesAreNamed) {
     ActionMap actions;
-    EXPECT_EQ(errorOf([&] { actions.load("/nonexistent/e2d/controls.txt"); }),
-              "input::ActionMap::load(): cannot read '/nonexistent/e2d/controls.txt': no such file");
+    EXPECT_EQ(
+        errorOf([&] { actions.load("/nonexistent/e2d/controls.txt"); }),
+        "input::ActionMap::load(): cannot read '/nonexistent/e2d/controls.txt': no such file");
     // A directory opens as a stream that reads nothing: it loaded zero actions with no error.
     const std::string dir = ::testing::TempDir();
-    EXPECT_EQ(errorOf([&] { actions.load(dir); }), "input::ActionMap::load(): cannot read '" + dir + "': it is a directory");
+    EXPECT_EQ(errorOf([&] { actions.load(dir); }),
+              "input::ActionMap::load(): cannot read '" + dir + "': it is a directory");
     EXPECT_EQ(errorOf([&] { actions.save("/nonexistent/e2d/controls.txt"); }),
               "input::ActionMap::save(): cannot write '/nonexistent/e2d/controls.txt'");
     // A file error names the file path as the source.
-    const std::filesystem::path path = std::filesystem::path(::testing::TempDir()) / "e2d_input_bad_bindings.txt";
+    const std::filesystem::path path =
+        std::filesystem::path(::testing::TempDir()) / "e2d_input_bad_bindings.txt";
     std::ofstream(path) << "jump = key:space\n\nfire = mouse:nine\n";
     EXPECT_EQ(errorOf([&] { actions.load(path); }),
               path.string() + ":3: unknown mouse button name 'nine' in 'mouse:nine'");

@@ -52,7 +52,8 @@ TEST(Gamepads, RadialDeadZoneKeepsTheDirectionAndRescalesTheLength) {
     // Each axis alone below the dead zone but the length beyond it: radial, so it moves.
     const glm::vec2 diagonal = Input::applyStickDeadZone({0.18f, 0.18f}, dz);
     const float rawLength = std::sqrt(2.0f) * 0.18f;
-    EXPECT_THAT(std::hypot(diagonal.x, diagonal.y), FloatNear((rawLength - dz) / (1.0f - dz), 1e-6f));
+    EXPECT_THAT(std::hypot(diagonal.x, diagonal.y),
+                FloatNear((rawLength - dz) / (1.0f - dz), 1e-6f));
     EXPECT_FLOAT_EQ(diagonal.x, diagonal.y);
     const glm::vec2 edge = Input::applyStickDeadZone({0.0f, -1.0f}, dz);
     EXPECT_EQ(edge, glm::vec2(0.0f, -1.0f));
@@ -66,7 +67,7 @@ TEST(Gamepads, RadialDeadZoneKeepsTheDirectionAndRescalesTheLength) {
 
 TEST(Gamepads, TriggersRestAtZeroAndRescaleAboveTheirDeadZone) {
     EXPECT_EQ(Input::applyTriggerDeadZone(-1.0f, 0.1f), 0.0f);
-    EXPECT_EQ(Input::applyTriggerDeadZone(-0.85f, 0.1f), 0.0f); // travel 0.075
+    EXPECT_EQ(Input::applyTriggerDeadZone(-0.85f, 0.1f), 0.0f);                   // travel 0.075
     EXPECT_THAT(Input::applyTriggerDeadZone(0.1f, 0.1f), FloatNear(0.5f, 1e-6f)); // travel 0.55
     EXPECT_EQ(Input::applyTriggerDeadZone(1.0f, 0.1f), 1.0f);
     EXPECT_EQ(Input::applyTriggerDeadZone(NAN, 0.1f), 0.0f);
@@ -86,8 +87,9 @@ TEST(Gamepads, ConnectButtonsAxesAndDisconnectArriveAsEvents) {
     s.axes[GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER] = 0.5f; // travel 0.75 -> (0.75-0.1)/0.9 = 0.722 >= 0.5
     input.handleJoystick(3, s);
     input.beginFrame();
-    EXPECT_THAT(describe(input), ElementsAre("GamepadButtonDown 3 a", "GamepadButtonDown 3 righttrigger",
-                                             "GamepadAxis 3 leftx", "GamepadAxis 3 righttrigger"));
+    EXPECT_THAT(describe(input),
+                ElementsAre("GamepadButtonDown 3 a", "GamepadButtonDown 3 righttrigger",
+                            "GamepadAxis 3 leftx", "GamepadAxis 3 righttrigger"));
     EXPECT_TRUE(input.isGamepadButtonDown(3, GamepadButton::A));
     EXPECT_TRUE(input.wasGamepadButtonPressed(3, GamepadButton::RightTrigger));
     EXPECT_THAT(input.gamepadAxis(3, GamepadAxis::LeftX), FloatNear(0.5f, 1e-6f));
@@ -104,8 +106,9 @@ TEST(Gamepads, ConnectButtonsAxesAndDisconnectArriveAsEvents) {
     JoystickSnapshot gone;
     input.handleJoystick(3, gone);
     input.beginFrame();
-    EXPECT_THAT(describe(input), ElementsAre("GamepadButtonUp 3 a", "GamepadButtonUp 3 righttrigger",
-                                             "GamepadDisconnected 3", "JoystickDisconnected 3"));
+    EXPECT_THAT(describe(input),
+                ElementsAre("GamepadButtonUp 3 a", "GamepadButtonUp 3 righttrigger",
+                            "GamepadDisconnected 3", "JoystickDisconnected 3"));
     EXPECT_FALSE(input.isGamepadConnected(3));
     EXPECT_FALSE(input.isGamepadButtonDown(3, GamepadButton::A));
     EXPECT_EQ(input.gamepadAxis(3, GamepadAxis::LeftX), 0.0f);
@@ -123,7 +126,8 @@ TEST(Gamepads, SixteenPadsAtOnceAreIndependent) {
     for (int slot = 0; slot < kMaxGamepads; ++slot) {
         EXPECT_TRUE(input.isGamepadConnected(slot));
         for (int b = 0; b < 15; ++b) {
-            EXPECT_EQ(input.isGamepadButtonDown(slot, GamepadButton(b)), b == slot % 15) << slot << " " << b;
+            EXPECT_EQ(input.isGamepadButtonDown(slot, GamepadButton(b)), b == slot % 15)
+                << slot << " " << b;
         }
     }
     EXPECT_EQ(input.joysticks().size(), 16u);

@@ -27,16 +27,21 @@ std::vector<std::string> describe(const Input& input) {
         case EventType::KeyDown:
         case EventType::KeyUp:
         case EventType::KeyRepeat:
-            s += " " + std::string(keyName(Key(e.code))) + " m" + std::to_string(e.mods) + " s" + std::to_string(e.scancode);
+            s += " " + std::string(keyName(Key(e.code))) + " m" + std::to_string(e.mods) + " s" +
+                 std::to_string(e.scancode);
             break;
-        case EventType::Text: s += " U+" + std::to_string(e.code); break;
+        case EventType::Text:
+            s += " U+" + std::to_string(e.code);
+            break;
         case EventType::MouseButtonDown:
         case EventType::MouseButtonUp:
         case EventType::MouseMove:
         case EventType::Scroll:
-            s += " " + std::to_string(e.code) + " @" + std::to_string(int(e.screen.x)) + "," + std::to_string(int(e.screen.y));
+            s += " " + std::to_string(e.code) + " @" + std::to_string(int(e.screen.x)) + "," +
+                 std::to_string(int(e.screen.y));
             break;
-        default: break;
+        default:
+            break;
         }
         out.push_back(s);
     }
@@ -46,17 +51,29 @@ std::vector<std::string> describe(const Input& input) {
 // Polling, bindings and names take the events' enums; a bare number (a GLFW code,
 // `button == 0`) does not compile. `Code` is the argument type tried.
 template <class Code>
-concept PollsKeys = requires(const Input& in, Code c) { in.isKeyDown(c); };
+concept PollsKeys = requires(const Input& in, Code c) {
+    in.isKeyDown(c);
+};
 template <class Code>
-concept PollsMouseButtons = requires(const Input& in, Code c) { in.wasMouseButtonPressed(c); };
+concept PollsMouseButtons = requires(const Input& in, Code c) {
+    in.wasMouseButtonPressed(c);
+};
 template <class Code>
-concept PollsPadButtons = requires(const Input& in, Code c) { in.isGamepadButtonDown(0, c); };
+concept PollsPadButtons = requires(const Input& in, Code c) {
+    in.isGamepadButtonDown(0, c);
+};
 template <class Code>
-concept PollsPadAxes = requires(const Input& in, Code c) { in.gamepadAxis(0, c); };
+concept PollsPadAxes = requires(const Input& in, Code c) {
+    in.gamepadAxis(0, c);
+};
 template <class Code>
-concept BindsKeys = requires(Code c) { Binding::key(c); };
+concept BindsKeys = requires(Code c) {
+    Binding::key(c);
+};
 template <class Code>
-concept NamesKeys = requires(Code c) { keyName(c); };
+concept NamesKeys = requires(Code c) {
+    keyName(c);
+};
 static_assert(PollsKeys<Key> && !PollsKeys<int>);
 static_assert(PollsMouseButtons<MouseButton> && !PollsMouseButtons<int>);
 static_assert(PollsPadButtons<GamepadButton> && !PollsPadButtons<int>);
@@ -88,9 +105,10 @@ TEST(InputEvents, AFrameDeliversEveryKindInTheOrderItWasQueued) {
     input.handleChar(U'\u00e9');
     input.beginFrame();
     EXPECT_THAT(describe(input),
-                ElementsAre("MouseMove 0 @10,20", "KeyDown x m1 s53", "Text U+88", "MouseButtonDown 1 @10,20",
-                            "KeyRepeat x m1 s53", "MouseMove 0 @15,25", "Scroll 0 @15,25", "MouseButtonUp 1 @15,25",
-                            "KeyUp x m0 s53", "Text U+233"));
+                ElementsAre("MouseMove 0 @10,20", "KeyDown x m1 s53", "Text U+88",
+                            "MouseButtonDown 1 @10,20", "KeyRepeat x m1 s53", "MouseMove 0 @15,25",
+                            "Scroll 0 @15,25", "MouseButtonUp 1 @15,25", "KeyUp x m0 s53",
+                            "Text U+233"));
     EXPECT_EQ(input.text(), U"X\u00e9");
     // The next frame starts empty.
     input.beginFrame();
@@ -148,7 +166,8 @@ TEST(InputEvents, FocusLossReleasesEverythingHeldBeforeReportingIt) {
     input.handleKey(GLFW_KEY_A, 38, GLFW_RELEASE, 0);
     input.handleMouseButton(GLFW_MOUSE_BUTTON_MIDDLE, GLFW_RELEASE, 0);
     input.beginFrame();
-    EXPECT_THAT(describe(input), ElementsAre("KeyUp a m0 s38", "KeyUp left_shift m0 s50", "MouseButtonUp 2 @5,6", "FocusLost"));
+    EXPECT_THAT(describe(input), ElementsAre("KeyUp a m0 s38", "KeyUp left_shift m0 s50",
+                                             "MouseButtonUp 2 @5,6", "FocusLost"));
     EXPECT_FALSE(input.isKeyDown(Key::A));
     EXPECT_FALSE(input.isKeyDown(Key::LeftShift));
     EXPECT_FALSE(input.isMouseButtonDown(MouseButton::Middle));
@@ -163,7 +182,9 @@ TEST(InputEvents, FocusLossReleasesEverythingHeldBeforeReportingIt) {
 TEST(InputEvents, MouseEventsCarryWorldPositionsFromTheConverter) {
     InputDef def;
     // A camera 2 pixels per unit, centred on a 200x100 window, y up.
-    def.screenToWorld = [](glm::vec2 s) { return glm::vec2((s.x - 100.0f) / 2.0f, (50.0f - s.y) / 2.0f); };
+    def.screenToWorld = [](glm::vec2 s) {
+        return glm::vec2((s.x - 100.0f) / 2.0f, (50.0f - s.y) / 2.0f);
+    };
     Input input(def);
     input.handleCursorPos(140.0, 30.0);
     input.handleMouseButton(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, 0);
@@ -202,7 +223,8 @@ TEST(InputEvents, MouseDeltaAndScrollSumOverTheFrame) {
 
 TEST(InputEvents, AFullQueueDropsTheRestAndSaysSo) {
     std::vector<std::string> logged;
-    core::Logger logger(core::LogLevel::Info, [&](core::LogLevel, std::string_view m) { logged.emplace_back(m); });
+    core::Logger logger(core::LogLevel::Info,
+                        [&](core::LogLevel, std::string_view m) { logged.emplace_back(m); });
     InputDef def;
     def.maxQueuedEvents = 3;
     def.logger = &logger;
@@ -236,7 +258,8 @@ TEST(InputEvents, BadSettingsAreRefusedByName) {
     EXPECT_EQ(message(def), "input::Input::Input(): triggerDeadZone must be in [0, 1), got -0.5");
     def = {};
     def.triggerPressThreshold = 0.0f;
-    EXPECT_EQ(message(def), "input::Input::Input(): triggerPressThreshold must be in (0, 1], got 0");
+    EXPECT_EQ(message(def),
+              "input::Input::Input(): triggerPressThreshold must be in (0, 1], got 0");
     def = {};
     def.maxQueuedEvents = 0;
     EXPECT_EQ(message(def), "input::Input::Input(): maxQueuedEvents must be >= 1, got 0");

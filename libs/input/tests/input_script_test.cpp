@@ -39,7 +39,8 @@ TEST(InputScript, EventsAreSortedByFrameKeepingLineOrder) {
                                            "run.txt");
     EXPECT_EQ(s.source, "run.txt");
     ASSERT_EQ(s.events.size(), 5u);
-    const auto expect = [&](std::size_t i, std::int64_t frame, Kind kind, const std::string& target, int line) {
+    const auto expect = [&](std::size_t i, std::int64_t frame, Kind kind, const std::string& target,
+                            int line) {
         EXPECT_EQ(s.events[i].frame, frame) << i;
         EXPECT_EQ(s.events[i].kind, kind) << i;
         EXPECT_EQ(s.events[i].target, target) << i;
@@ -53,11 +54,14 @@ TEST(InputScript, EventsAreSortedByFrameKeepingLineOrder) {
 }
 
 TEST(InputScript, MalformedLinesNameFileAndLine) {
-    EXPECT_EQ(errorOf("0 press jump\njump\n"), "run.txt:2: expected '<frame> <press|release|tap> <target>', got 'jump'");
+    EXPECT_EQ(errorOf("0 press jump\njump\n"),
+              "run.txt:2: expected '<frame> <press|release|tap> <target>', got 'jump'");
     EXPECT_EQ(errorOf("x press jump"), "run.txt:1: frame must be a whole number >= 0, got 'x'");
     EXPECT_EQ(errorOf("-1 press jump"), "run.txt:1: frame must be a whole number >= 0, got '-1'");
-    EXPECT_EQ(errorOf("\n\n1.5 press jump"), "run.txt:3: frame must be a whole number >= 0, got '1.5'");
-    EXPECT_EQ(errorOf("3 hold jump"), "run.txt:1: expected press, release, tap or move, got 'hold'");
+    EXPECT_EQ(errorOf("\n\n1.5 press jump"),
+              "run.txt:3: frame must be a whole number >= 0, got '1.5'");
+    EXPECT_EQ(errorOf("3 hold jump"),
+              "run.txt:1: expected press, release, tap or move, got 'hold'");
     EXPECT_EQ(errorOf("3 press jump now"),
               "run.txt:1: expected '<frame> <press|release|tap> <target>', got '3 press jump now'");
     EXPECT_TRUE(parseInputScript("").events.empty());
@@ -97,24 +101,31 @@ TEST(InputScript, MovesCarryTheCursorPositionOrTheAxisValue) {
 }
 
 TEST(InputScript, MalformedMovesNameFileLineAndValue) {
-    EXPECT_EQ(errorOf("1 move mouse 12"), "run.txt:1: move mouse: expected '<x> <y>' in window pixels, got '12'");
-    EXPECT_EQ(errorOf("1 move mouse 12 y"), "run.txt:1: move mouse: expected '<x> <y>' in window pixels, got '12 y'");
+    EXPECT_EQ(errorOf("1 move mouse 12"),
+              "run.txt:1: move mouse: expected '<x> <y>' in window pixels, got '12'");
+    EXPECT_EQ(errorOf("1 move mouse 12 y"),
+              "run.txt:1: move mouse: expected '<x> <y>' in window pixels, got '12 y'");
     EXPECT_EQ(errorOf("1 move mouse 1 2 3"),
               "run.txt:1: move mouse: expected '<x> <y>' in window pixels, got '1 2 3'");
     EXPECT_EQ(errorOf("\n1 move axis:leftx 1.5"),
               "run.txt:2: move axis:leftx: expected one value in [-1, 1], got '1.5'");
-    EXPECT_EQ(errorOf("1 move axis:leftx"), "run.txt:1: move axis:leftx: expected one value in [-1, 1], got ''");
-    EXPECT_EQ(errorOf("1 move axis:leftx nan"), "run.txt:1: move axis:leftx: expected one value in [-1, 1], got 'nan'");
-    EXPECT_EQ(errorOf("1 move jump 1"), "run.txt:1: move: expected 'mouse' or a gamepad axis (axis:leftx), got 'jump'");
+    EXPECT_EQ(errorOf("1 move axis:leftx"),
+              "run.txt:1: move axis:leftx: expected one value in [-1, 1], got ''");
+    EXPECT_EQ(errorOf("1 move axis:leftx nan"),
+              "run.txt:1: move axis:leftx: expected one value in [-1, 1], got 'nan'");
+    EXPECT_EQ(errorOf("1 move jump 1"),
+              "run.txt:1: move: expected 'mouse' or a gamepad axis (axis:leftx), got 'jump'");
 }
 
 TEST(InputScript, FramesAreBoundedSoATapCannotOverflow) {
     // A tap's release is one frame later: at INT64_MAX it was signed overflow (UBSan) and the
     // release landed at frame -2^63.
-    EXPECT_EQ(errorOf("\n9223372036854775807 tap key:space"),
-              "run.txt:2: frame must be a whole number in [0, 1000000000], got '9223372036854775807'");
+    EXPECT_EQ(
+        errorOf("\n9223372036854775807 tap key:space"),
+        "run.txt:2: frame must be a whole number in [0, 1000000000], got '9223372036854775807'");
     EXPECT_EQ(errorOf("99999999999999999999999 press key:space"),
-              "run.txt:1: frame must be a whole number in [0, 1000000000], got '99999999999999999999999'");
+              "run.txt:1: frame must be a whole number in [0, 1000000000], got "
+              "'99999999999999999999999'");
     EXPECT_EQ(errorOf("1000000001 press key:space"),
               "run.txt:1: frame must be a whole number in [0, 1000000000], got '1000000001'");
     const InputScript s = parseInputScript("1000000000 tap key:space");
@@ -168,15 +179,19 @@ TEST(ScriptedInput, FeedsTheInputQueueAndPollingStateOnItsFrames) {
 }
 
 TEST(ScriptedInput, TargetsThatCannotBePlayedNameTheLine) {
-    EXPECT_EQ(playError("\n0 press jump"), "run.txt:2: 'jump' is not an action of the game (nor a binding such as key:space)");
-    EXPECT_THAT(playError("0 press key:spcae"), testing::StartsWith("run.txt:1: input::parseBinding(): unknown key name"));
-    EXPECT_EQ(playError("0 press axis:leftx"),
-              "run.txt:1: 'axis:leftx': only key:, mouse: and button: bindings can be pressed (axes are moved: "
-              "'<frame> move axis:leftx <value>')");
-    EXPECT_EQ(playError("0 move axis:lefttrigger -0.5"), "run.txt:1: move axis:lefttrigger: a trigger's value is in [0, 1], got -0.5");
+    EXPECT_EQ(playError("\n0 press jump"),
+              "run.txt:2: 'jump' is not an action of the game (nor a binding such as key:space)");
+    EXPECT_THAT(playError("0 press key:spcae"),
+                testing::StartsWith("run.txt:1: input::parseBinding(): unknown key name"));
+    EXPECT_EQ(playError("0 press axis:leftx"), "run.txt:1: 'axis:leftx': only key:, mouse: and "
+                                               "button: bindings can be pressed (axes are moved: "
+                                               "'<frame> move axis:leftx <value>')");
+    EXPECT_EQ(playError("0 move axis:lefttrigger -0.5"),
+              "run.txt:1: move axis:lefttrigger: a trigger's value is in [0, 1], got -0.5");
     input::ActionMap actions;
     actions.bind(actions.add("steer"), input::Binding::gamepadAxis(input::GamepadAxis::LeftX));
-    EXPECT_EQ(playError("0 press steer", actions), "run.txt:1: action 'steer' has no keyboard or mouse-button binding to press");
+    EXPECT_EQ(playError("0 press steer", actions),
+              "run.txt:1: action 'steer' has no keyboard or mouse-button binding to press");
 }
 
 TEST(InputScript, AnErrorKeepsItsDiagnostic) {

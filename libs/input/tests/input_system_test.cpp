@@ -30,9 +30,10 @@ namespace {
 using ::testing::ElementsAre;
 
 class Listener : public core::Component,
-                 public core::Handles<KeyDown, KeyUp, KeyRepeat, TextEntered, MouseButtonDown, MouseButtonUp,
-                                      MouseMoved, MouseScrolled, FocusGained, FocusLost, GamepadConnected,
-                                      GamepadDisconnected, GamepadButtonDown, GamepadButtonUp, GamepadAxisMoved> {
+                 public core::Handles<KeyDown, KeyUp, KeyRepeat, TextEntered, MouseButtonDown,
+                                      MouseButtonUp, MouseMoved, MouseScrolled, FocusGained,
+                                      FocusLost, GamepadConnected, GamepadDisconnected,
+                                      GamepadButtonDown, GamepadButtonUp, GamepadAxisMoved> {
 public:
     explicit Listener(std::vector<std::string>& log) : log_(log) {}
     void onInitialize() override {
@@ -45,22 +46,34 @@ public:
         }
     }
     static std::string n(auto code) { return std::to_string(static_cast<int>(code)); }
-    void on(const KeyDown& e) override { log_.push_back("keyDown " + n(e.key) + " " + n(e.scancode) + " " + n(e.mods)); }
+    void on(const KeyDown& e) override {
+        log_.push_back("keyDown " + n(e.key) + " " + n(e.scancode) + " " + n(e.mods));
+    }
     void on(const KeyUp& e) override { log_.push_back("keyUp " + n(e.key)); }
     void on(const KeyRepeat& e) override { log_.push_back("keyRepeat " + n(e.key)); }
-    void on(const TextEntered& e) override { log_.push_back("text " + std::to_string(std::uint32_t(e.codepoint))); }
+    void on(const TextEntered& e) override {
+        log_.push_back("text " + std::to_string(std::uint32_t(e.codepoint)));
+    }
     void on(const MouseButtonDown& e) override {
         log_.push_back("mouseDown " + n(e.button) + " " + n(e.screen.x) + " " + n(e.world.x));
     }
     void on(const MouseButtonUp& e) override { log_.push_back("mouseUp " + n(e.button)); }
-    void on(const MouseMoved& e) override { log_.push_back("move " + n(e.screen.y) + " " + n(e.world.y)); }
+    void on(const MouseMoved& e) override {
+        log_.push_back("move " + n(e.screen.y) + " " + n(e.world.y));
+    }
     void on(const MouseScrolled& e) override { log_.push_back("scroll " + n(e.offset.y)); }
     void on(const FocusGained&) override { log_.push_back("focus in"); }
     void on(const FocusLost&) override { log_.push_back("focus out"); }
     void on(const GamepadConnected& e) override { log_.push_back("padConnected " + n(e.gamepad)); }
-    void on(const GamepadDisconnected& e) override { log_.push_back("padDisconnected " + n(e.gamepad)); }
-    void on(const GamepadButtonDown& e) override { log_.push_back("padDown " + n(e.gamepad) + " " + n(e.button)); }
-    void on(const GamepadButtonUp& e) override { log_.push_back("padUp " + n(e.gamepad) + " " + n(e.button)); }
+    void on(const GamepadDisconnected& e) override {
+        log_.push_back("padDisconnected " + n(e.gamepad));
+    }
+    void on(const GamepadButtonDown& e) override {
+        log_.push_back("padDown " + n(e.gamepad) + " " + n(e.button));
+    }
+    void on(const GamepadButtonUp& e) override {
+        log_.push_back("padUp " + n(e.gamepad) + " " + n(e.button));
+    }
     void on(const GamepadAxisMoved& e) override {
         log_.push_back("padAxis " + n(e.gamepad) + " " + n(e.axis) + " " + n(e.value * 100));
     }
@@ -85,7 +98,9 @@ TEST(InputSystem, EventsReachComponentsInOrderThroughCoreEvents) {
     std::vector<std::string> log;
     core::Logger logger(core::LogLevel::Off);
     core::SceneRegistry registry;
-    registry.add("main", [&log] { return std::unique_ptr<core::Scene>(std::make_unique<ListenerScene>(log)); });
+    registry.add("main", [&log] {
+        return std::unique_ptr<core::Scene>(std::make_unique<ListenerScene>(log));
+    });
     core::SceneDirector director(registry, logger);
     InputDef def;
     def.screenToWorld = [](glm::vec2 s) { return s * 10.0f; };
@@ -113,8 +128,8 @@ TEST(InputSystem, EventsReachComponentsInOrderThroughCoreEvents) {
     pad.buttons[GLFW_GAMEPAD_BUTTON_B] = GLFW_PRESS;
     input.handleJoystick(5, pad);
     loop.frame();
-    EXPECT_THAT(log, ElementsAre("keyDown 32 65 2", "keyRepeat 32", "text 32", "move 4 40", "mouseDown 1 3 30",
-                                 "scroll -2", "keyUp 32", "padConnected 5",
+    EXPECT_THAT(log, ElementsAre("keyDown 32 65 2", "keyRepeat 32", "text 32", "move 4 40",
+                                 "mouseDown 1 3 30", "scroll -2", "keyUp 32", "padConnected 5",
                                  "padDown 5 1", "padAxis 5 1 100", "jump pressed"));
     log.clear();
 
@@ -129,7 +144,9 @@ TEST(InputSystem, KeyRepeatCanBeKeptFromTheScene) {
     std::vector<std::string> log;
     core::Logger logger(core::LogLevel::Off);
     core::SceneRegistry registry;
-    registry.add("main", [&log] { return std::unique_ptr<core::Scene>(std::make_unique<ListenerScene>(log)); });
+    registry.add("main", [&log] {
+        return std::unique_ptr<core::Scene>(std::make_unique<ListenerScene>(log));
+    });
     core::SceneDirector director(registry, logger);
     Input input;
     InputSystemDef def;
@@ -165,13 +182,16 @@ TEST(InputSystem, EventsCarryTypedKeysButtonsAndAxes) {
     struct Typed : core::Scene, core::Handles<KeyDown, MouseButtonUp, GamepadAxisMoved> {
         std::vector<std::string> seen;
         void on(const KeyDown& e) override {
-            if (e.key == Key::Escape && (e.mods & kModShift) != 0) seen.push_back("shift+escape");
+            if (e.key == Key::Escape && (e.mods & kModShift) != 0)
+                seen.push_back("shift+escape");
         }
         void on(const MouseButtonUp& e) override {
-            if (e.button == MouseButton::Middle) seen.push_back("middle up");
+            if (e.button == MouseButton::Middle)
+                seen.push_back("middle up");
         }
         void on(const GamepadAxisMoved& e) override {
-            if (e.axis == GamepadAxis::LeftTrigger) seen.push_back("left trigger");
+            if (e.axis == GamepadAxis::LeftTrigger)
+                seen.push_back("left trigger");
         }
     } scene;
     Input input;

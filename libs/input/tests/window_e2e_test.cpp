@@ -34,15 +34,20 @@ std::string describe(const Event& e) {
     switch (e.type) {
     case EventType::KeyDown:
     case EventType::KeyUp:
-    case EventType::KeyRepeat: return s + " " + std::string(keyName(Key(e.code))) + " mods=" + std::to_string(e.mods);
-    case EventType::Text: return s + " U+" + std::to_string(e.code);
+    case EventType::KeyRepeat:
+        return s + " " + std::string(keyName(Key(e.code))) + " mods=" + std::to_string(e.mods);
+    case EventType::Text:
+        return s + " U+" + std::to_string(e.code);
     case EventType::MouseButtonDown:
     case EventType::MouseButtonUp:
-        return s + " " + std::string(mouseButtonName(MouseButton(e.code))) + " @" + std::to_string(int(e.screen.x)) + "," +
-               std::to_string(int(e.screen.y));
-    case EventType::MouseMove: return s + " @" + std::to_string(int(e.screen.x)) + "," + std::to_string(int(e.screen.y));
-    case EventType::Scroll: return s + " " + std::to_string(int(e.delta.x)) + "," + std::to_string(int(e.delta.y));
-    default: return s;
+        return s + " " + std::string(mouseButtonName(MouseButton(e.code))) + " @" +
+               std::to_string(int(e.screen.x)) + "," + std::to_string(int(e.screen.y));
+    case EventType::MouseMove:
+        return s + " @" + std::to_string(int(e.screen.x)) + "," + std::to_string(int(e.screen.y));
+    case EventType::Scroll:
+        return s + " " + std::to_string(int(e.delta.x)) + "," + std::to_string(int(e.delta.y));
+    default:
+        return s;
     }
 }
 
@@ -67,7 +72,8 @@ std::string output(const std::string& command) {
 class WindowInput : public ::testing::Test {
 protected:
     void SetUp() override {
-        ASSERT_EQ(std::system("command -v xdotool >/dev/null"), 0) << "xdotool is missing (Debian package xdotool)";
+        ASSERT_EQ(std::system("command -v xdotool >/dev/null"), 0)
+            << "xdotool is missing (Debian package xdotool)";
         // Xvfb resets when its last client leaves (the previous test's glfwTerminate) and
         // refuses connections for a moment while it does: retry for up to 2 s.
         bool initialised = false;
@@ -97,8 +103,9 @@ protected:
         windowId_ = output("xdotool search --sync --name '^" + title_ + "$' | head -n 1");
         ASSERT_FALSE(windowId_.empty()) << "xdotool did not find the window";
         // GLFW focuses a window when it is shown; wait until X says so.
-        ASSERT_TRUE(pumpUntil([&] { return glfwGetWindowAttrib(window_, GLFW_FOCUSED) == GLFW_TRUE; }))
-            << "the window never got focus";
+        ASSERT_TRUE(pumpUntil([&] {
+            return glfwGetWindowAttrib(window_, GLFW_FOCUSED) == GLFW_TRUE;
+        })) << "the window never got focus";
         events_.clear();
     }
 
@@ -160,22 +167,25 @@ protected:
     std::vector<Event> events_;
 };
 
-constexpr auto kKeys = {EventType::KeyDown, EventType::KeyUp, EventType::KeyRepeat, EventType::Text};
+constexpr auto kKeys = {EventType::KeyDown, EventType::KeyUp, EventType::KeyRepeat,
+                        EventType::Text};
 
 TEST_F(WindowInput, KeysWithModifiersAndTheirTextArriveInOrder) {
     xdotool("key a");
     xdotool("key shift+x");
     xdotool("key ctrl+s");
     ASSERT_TRUE(pumpUntil([&] {
-        return std::count_if(events_.begin(), events_.end(), [](const Event& e) { return e.type == EventType::KeyUp; }) == 5;
+        return std::count_if(events_.begin(), events_.end(),
+                             [](const Event& e) { return e.type == EventType::KeyUp; }) == 5;
     }));
     // X11 reports the modifiers held before the event (so shift's own press has none and its
     // release has shift), and xdotool releases a chord's keys in the order it pressed them.
-    EXPECT_THAT(seen(kKeys), ElementsAre("KeyDown a mods=0", "Text U+97", "KeyUp a mods=0",                 //
-                                         "KeyDown left_shift mods=0", "KeyDown x mods=1", "Text U+88",     //
-                                         "KeyUp left_shift mods=1", "KeyUp x mods=0",                      //
-                                         "KeyDown left_control mods=0", "KeyDown s mods=2",                //
-                                         "KeyUp left_control mods=2", "KeyUp s mods=0")); // no text with ctrl
+    EXPECT_THAT(seen(kKeys),
+                ElementsAre("KeyDown a mods=0", "Text U+97", "KeyUp a mods=0",            //
+                            "KeyDown left_shift mods=0", "KeyDown x mods=1", "Text U+88", //
+                            "KeyUp left_shift mods=1", "KeyUp x mods=0",                  //
+                            "KeyDown left_control mods=0", "KeyDown s mods=2",            //
+                            "KeyUp left_control mods=2", "KeyUp s mods=0")); // no text with ctrl
     EXPECT_FALSE(input_->isKeyDown(Key::A));
     EXPECT_FALSE(input_->isKeyDown(Key::LeftControl));
 }
@@ -239,7 +249,8 @@ TEST_F(WindowInput, MouseMovesClicksAndScrollArriveWithPositions) {
     xdotool("click 4");
     xdotool("click 5");
     ASSERT_TRUE(pumpUntil([&] {
-        return std::count_if(events_.begin(), events_.end(), [](const Event& e) { return e.type == EventType::Scroll; }) == 2;
+        return std::count_if(events_.begin(), events_.end(),
+                             [](const Event& e) { return e.type == EventType::Scroll; }) == 2;
     }));
     EXPECT_THAT(seen({EventType::MouseButtonDown, EventType::MouseButtonUp, EventType::Scroll}),
                 ElementsAre("MouseButtonDown left @100,120", "MouseButtonUp left @100,120", //

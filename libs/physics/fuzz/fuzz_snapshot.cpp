@@ -53,8 +53,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (size < 1) {
         return 0;
     }
-    const std::vector<std::uint8_t> input =
-        (data[0] & 1) != 0 ? std::vector<std::uint8_t>(data + 1, data + size) : sealed(data + 1, size - 1);
+    const std::vector<std::uint8_t> input = (data[0] & 1) != 0
+                                                ? std::vector<std::uint8_t>(data + 1, data + size)
+                                                : sealed(data + 1, size - 1);
 
     World world;
     const BodyId body = world.createBody({});

@@ -120,8 +120,7 @@ struct Snapshot {
 bool same(const Snapshot& a, const Snapshot& b) {
     return a.transform.p == b.transform.p && a.transform.q.c == b.transform.q.c &&
            a.transform.q.s == b.transform.q.s && a.linearVelocity == b.linearVelocity &&
-           a.angularVelocity == b.angularVelocity && a.awake == b.awake &&
-           a.enabled == b.enabled;
+           a.angularVelocity == b.angularVelocity && a.awake == b.awake && a.enabled == b.enabled;
 }
 
 Snapshot snapshot(const World& world, BodyId id) {
@@ -155,8 +154,7 @@ void expectRejected(const World& world, const std::vector<BodyId>& bodies, F&& b
     }
 }
 
-void createBody(FuzzedDataProvider& data, World& world, std::vector<BodyId>& bodies,
-                float extent) {
+void createBody(FuzzedDataProvider& data, World& world, std::vector<BodyId>& bodies, float extent) {
     BodyDef bd;
     int type = data.ConsumeIntegralInRange<int>(0, 9);
     bd.type = type < 2 ? BodyType::Static : type < 3 ? BodyType::Kinematic : BodyType::Dynamic;
@@ -382,7 +380,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
             } else {
                 // Only the step's own checks (non-finite, out of range) disable a body during
                 // a step, and each reports what it disabled.
-                bool wasOutOfRange = std::find(outOfRange.begin(), outOfRange.end(), id) != outOfRange.end();
+                bool wasOutOfRange =
+                    std::find(outOfRange.begin(), outOfRange.end(), id) != outOfRange.end();
                 check((wasReported || wasOutOfRange) == static_cast<bool>(enabledBefore[i]));
             }
         }

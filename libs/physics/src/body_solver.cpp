@@ -96,7 +96,8 @@ void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> sta
 }
 
 void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states,
-                         std::span<const int> indices, Vec2 gravity, float h, float maxLinearSpeed) {
+                         std::span<const int> indices, Vec2 gravity, float h,
+                         float maxLinearSpeed) {
     const SpeedCaps caps = speedCaps(maxLinearSpeed, h);
     for (int i : indices) {
         const auto k = static_cast<std::size_t>(i);
@@ -204,16 +205,16 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
             if (r == 0) { // the extra sweeps are the contacts' (SolverStep)
                 solveJointsOf(step, blockJoints, true);
             }
-            solveWide(wide, firstLevel, endLevel, step.states, invH, true,
-                      def.contactPushMaxSpeed, backward, reversePoints);
+            solveWide(wide, firstLevel, endLevel, step.states, invH, true, def.contactPushMaxSpeed,
+                      backward, reversePoints);
         }
         integratePositions(step.states, bodies, h, def.maxLinearSpeed);
         for (int r = 0; r <= relaxIterations; ++r) {
             if (r <= def.relaxIterations) {
                 solveJointsOf(step, blockJoints, false);
             }
-            solveWide(wide, firstLevel, endLevel, step.states, invH, false,
-                      def.contactPushMaxSpeed, !backward, reversePoints);
+            solveWide(wide, firstLevel, endLevel, step.states, invH, false, def.contactPushMaxSpeed,
+                      !backward, reversePoints);
         }
     }
     applyRestitutionWide(wide, restitution, step.states, def.restitutionThreshold, h);

@@ -5,8 +5,8 @@
 #include <e2d/core/error_text.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/scene.hpp>
-#include <e2d/physics/contact_info.hpp>
 #include <e2d/physics/collider.hpp>
+#include <e2d/physics/contact_info.hpp>
 #include <e2d/physics/physics_system.hpp>
 
 #include "object_pose.hpp"
@@ -139,7 +139,8 @@ void CharacterController::onTerminate() {
 
 CharacterMover& CharacterController::mover() {
     if (!mover_) {
-        throw core::Error("physics::CharacterController::mover(): the object is not in a scene yet");
+        throw core::Error(
+            "physics::CharacterController::mover(): the object is not in a scene yet");
     }
     return *mover_;
 }
@@ -150,7 +151,7 @@ const MoveResult& CharacterController::move(Vec2 motion) {
     }
     if (!isFinite(motion)) {
         core::throwError("physics::CharacterController::move()",
-                     "motion must be finite, got " + core::formatVector(motion));
+                         "motion must be finite, got " + core::formatVector(motion));
     }
     PhysicsSystem& system = sys();
     const float upm = system.unitsPerMetre();

@@ -25,17 +25,21 @@ constexpr float kMinHorizontal = 0.05f;
 
 void requireField(bool ok, const char* field, const std::string& rule, const std::string& got) {
     if (!ok) {
-        core::throwError(kConstructor, std::string("def.") + field + " must be " + rule + ", got " + got);
+        core::throwError(kConstructor,
+                         std::string("def.") + field + " must be " + rule + ", got " + got);
     }
 }
 
 CharacterMoverDef checked(CharacterMoverDef def) {
     const Capsule& c = def.capsule;
-    requireField(isWithinHuge(c.center1), "capsule.center1", "finite and within kHuge", core::formatVector(c.center1));
-    requireField(isWithinHuge(c.center2), "capsule.center2", "finite and within kHuge", core::formatVector(c.center2));
+    requireField(isWithinHuge(c.center1), "capsule.center1", "finite and within kHuge",
+                 core::formatVector(c.center1));
+    requireField(isWithinHuge(c.center2), "capsule.center2", "finite and within kHuge",
+                 core::formatVector(c.center2));
     requireField(isWithinHuge(c.radius) && c.radius > 0.0f, "capsule.radius", "finite and > 0",
                  core::formatNumber(c.radius));
-    requireField(isWithinHuge(def.position), "position", "finite and within kHuge", core::formatVector(def.position));
+    requireField(isWithinHuge(def.position), "position", "finite and within kHuge",
+                 core::formatVector(def.position));
     requireField(isFinite(def.up) && std::fabs(length(def.up) - 1.0f) <= 1.0e-3f, "up",
                  "a unit vector", core::formatVector(def.up));
     requireField(std::isfinite(def.skin) && def.skin >= 0.0f && def.skin <= c.radius, "skin",
@@ -43,11 +47,13 @@ CharacterMoverDef checked(CharacterMoverDef def) {
                  core::formatNumber(def.skin));
     requireField(std::isfinite(def.maxSlopeAngle) && def.maxSlopeAngle >= 0.0f &&
                      def.maxSlopeAngle < kHalfPi,
-                 "maxSlopeAngle", "finite and in [0, pi/2) radians", core::formatNumber(def.maxSlopeAngle));
+                 "maxSlopeAngle", "finite and in [0, pi/2) radians",
+                 core::formatNumber(def.maxSlopeAngle));
     requireField(std::isfinite(def.maxPushOut) && def.maxPushOut > 0.0f, "maxPushOut",
                  "finite and > 0", core::formatNumber(def.maxPushOut));
     requireField(std::isfinite(def.groundSnapDistance) && def.groundSnapDistance >= 0.0f,
-                 "groundSnapDistance", "finite and >= 0", core::formatNumber(def.groundSnapDistance));
+                 "groundSnapDistance", "finite and >= 0",
+                 core::formatNumber(def.groundSnapDistance));
     def.up = normalize(def.up);
     return def;
 }
@@ -62,7 +68,8 @@ CharacterMover::CharacterMover(const CharacterMoverDef& def)
 void CharacterMover::setPosition(Vec2 position) {
     if (!isWithinHuge(position)) {
         core::throwError("physics::CharacterMover::setPosition()",
-                     "position must be finite and within kHuge, got " + core::formatVector(position));
+                         "position must be finite and within kHuge, got " +
+                             core::formatVector(position));
     }
     position_ = position;
     last_ = MoveResult{};
@@ -75,17 +82,18 @@ void CharacterMover::setContactFilter(MoverContactFilter filter) {
 }
 
 Capsule CharacterMover::worldCapsule() const {
-    return {def_.capsule.center1 + position_, def_.capsule.center2 + position_, def_.capsule.radius};
+    return {def_.capsule.center1 + position_, def_.capsule.center2 + position_,
+            def_.capsule.radius};
 }
 
 MoveResult CharacterMover::move(const World& world, Vec2 displacement) {
     if (!isWithinHuge(displacement) || !isWithinHuge(position_ + displacement)) {
         core::throwError("physics::CharacterMover::move()",
-                     "displacement must be finite and keep the mover within kHuge, got " +
-                         core::formatVector(displacement));
+                         "displacement must be finite and keep the mover within kHuge, got " +
+                             core::formatVector(displacement));
     }
-    const detail::MoverQuery query{&world,        def_.capsule, def_.skin,
-                                   def_.filter,   def_.ignoreBody, def_.up,
+    const detail::MoverQuery query{&world,       def_.capsule,       def_.skin,
+                                   def_.filter,  def_.ignoreBody,    def_.up,
                                    cosMaxSlope_, &def_.contactFilter};
     const Vec2 up = def_.up;
     // Surfaces this close count as touched (for the solver and for the contacts reported).
@@ -200,7 +208,8 @@ MoveResult CharacterMover::move(const World& world, Vec2 displacement) {
         }
     }
     if (grounded) {
-        result.groundVelocity = world.linearVelocityAtWorldPoint(result.groundBody, result.groundPoint);
+        result.groundVelocity =
+            world.linearVelocityAtWorldPoint(result.groundBody, result.groundPoint);
     }
     last_ = result;
     return result;

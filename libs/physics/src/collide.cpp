@@ -34,46 +34,49 @@ Manifold collide(const ShapeGeometry& a, const Transform& xfA, const ShapeGeomet
         return detail::swapped(collideChainSegment(std::get<ChainSegment>(b), xfB, a, xfA, margin));
     }
     switch (ta * kTypes + tb) {
-    case kCircle * kTypes + kCircle:
+    case kCircle* kTypes + kCircle:
         return collideCircles(std::get<Circle>(a), xfA, std::get<Circle>(b), xfB, margin);
-    case kCircle * kTypes + kCapsule:
+    case kCircle* kTypes + kCapsule:
         return detail::swapped(
             collideCapsuleAndCircle(std::get<Capsule>(b), xfB, std::get<Circle>(a), xfA, margin));
-    case kCircle * kTypes + kSegment:
+    case kCircle* kTypes + kSegment:
         return detail::swapped(
             collideSegmentAndCircle(std::get<Segment>(b), xfB, std::get<Circle>(a), xfA, margin));
-    case kCircle * kTypes + kPolygon:
+    case kCircle* kTypes + kPolygon:
         return detail::swapped(
             collidePolygonAndCircle(std::get<Polygon>(b), xfB, std::get<Circle>(a), xfA, margin));
 
-    case kCapsule * kTypes + kCircle:
+    case kCapsule* kTypes + kCircle:
         return collideCapsuleAndCircle(std::get<Capsule>(a), xfA, std::get<Circle>(b), xfB, margin);
-    case kCapsule * kTypes + kCapsule:
+    case kCapsule* kTypes + kCapsule:
         return collideCapsules(std::get<Capsule>(a), xfA, std::get<Capsule>(b), xfB, margin);
-    case kCapsule * kTypes + kSegment:
+    case kCapsule* kTypes + kSegment:
         return detail::swapped(
             collideSegmentAndCapsule(std::get<Segment>(b), xfB, std::get<Capsule>(a), xfA, margin));
-    case kCapsule * kTypes + kPolygon:
+    case kCapsule* kTypes + kPolygon:
         return detail::swapped(
             collidePolygonAndCapsule(std::get<Polygon>(b), xfB, std::get<Capsule>(a), xfA, margin));
 
-    case kSegment * kTypes + kCircle:
+    case kSegment* kTypes + kCircle:
         return collideSegmentAndCircle(std::get<Segment>(a), xfA, std::get<Circle>(b), xfB, margin);
-    case kSegment * kTypes + kCapsule:
-        return collideSegmentAndCapsule(std::get<Segment>(a), xfA, std::get<Capsule>(b), xfB, margin);
-    case kSegment * kTypes + kSegment:
+    case kSegment* kTypes + kCapsule:
+        return collideSegmentAndCapsule(std::get<Segment>(a), xfA, std::get<Capsule>(b), xfB,
+                                        margin);
+    case kSegment* kTypes + kSegment:
         return Manifold{}; // segments are static level geometry and have no area to push apart
-    case kSegment * kTypes + kPolygon:
-        return collideSegmentAndPolygon(std::get<Segment>(a), xfA, std::get<Polygon>(b), xfB, margin);
+    case kSegment* kTypes + kPolygon:
+        return collideSegmentAndPolygon(std::get<Segment>(a), xfA, std::get<Polygon>(b), xfB,
+                                        margin);
 
-    case kPolygon * kTypes + kCircle:
+    case kPolygon* kTypes + kCircle:
         return collidePolygonAndCircle(std::get<Polygon>(a), xfA, std::get<Circle>(b), xfB, margin);
-    case kPolygon * kTypes + kCapsule:
-        return collidePolygonAndCapsule(std::get<Polygon>(a), xfA, std::get<Capsule>(b), xfB, margin);
-    case kPolygon * kTypes + kSegment:
+    case kPolygon* kTypes + kCapsule:
+        return collidePolygonAndCapsule(std::get<Polygon>(a), xfA, std::get<Capsule>(b), xfB,
+                                        margin);
+    case kPolygon* kTypes + kSegment:
         return detail::swapped(
             collideSegmentAndPolygon(std::get<Segment>(b), xfB, std::get<Polygon>(a), xfA, margin));
-    case kPolygon * kTypes + kPolygon:
+    case kPolygon* kTypes + kPolygon:
         return collidePolygonPair(std::get<Polygon>(a), xfA, std::get<Polygon>(b), xfB, algorithm,
                                   margin);
     default:

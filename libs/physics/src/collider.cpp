@@ -19,7 +19,8 @@ Collider::Collider(PhysicsSystem& system, const ShapeGeometry& geometry, const C
     system_ = &system;
 }
 
-Collider::Collider(const ShapeGeometry& geometry, const ColliderDef& def) : geometry_(geometry), def_(def) {
+Collider::Collider(const ShapeGeometry& geometry, const ColliderDef& def)
+    : geometry_(geometry), def_(def) {
     validate(geometry, "physics::Collider::Collider()");
     using detail::component_check::requireNonNegative;
     constexpr const char* kConstructor = "Collider::Collider";
@@ -34,8 +35,9 @@ Collider::~Collider() = default;
 PhysicsSystem& Collider::sys() const {
     if (system_ == nullptr) {
         if (scene() == nullptr) {
-            throw core::Error("physics::Collider::system(): the Collider has no PhysicsSystem (it was made "
-                              "without one and its object is not in a scene)");
+            throw core::Error(
+                "physics::Collider::system(): the Collider has no PhysicsSystem (it was made "
+                "without one and its object is not in a scene)");
         }
         system_ = &scene()->system<PhysicsSystem>();
     }
@@ -97,7 +99,8 @@ void Collider::attach() {
     } catch (const core::Error&) {
         // The geometry was valid when the component was made: its scale made it degenerate.
         // No shape until the scale grows (see the class comment).
-        detail::component_check::requireFinitePlacement(object, "Collider", placed_.linear, placed_.offset);
+        detail::component_check::requireFinitePlacement(object, "Collider", placed_.linear,
+                                                        placed_.offset);
         return;
     }
     if (owner_ != nullptr) {

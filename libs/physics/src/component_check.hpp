@@ -39,12 +39,14 @@ inline void requireUnitInterval(const char* function, const char* field, float v
 // "physics::Rigidbody on object 'crate': ..."
 [[noreturn]] inline void failOn(const core::GameObject& object, std::string_view component,
                                 const std::string& what) {
-    throw core::Error("physics::" + std::string(component) + " on " + object.describe() + ": " + what);
+    throw core::Error("physics::" + std::string(component) + " on " + object.describe() + ": " +
+                      what);
 }
 
 // The object's world position must be within the World's range (kHuge metres), reported in
 // the world units the user gave.
-inline void requireInRange(const core::GameObject& object, std::string_view component, float unitsPerMetre) {
+inline void requireInRange(const core::GameObject& object, std::string_view component,
+                           float unitsPerMetre) {
     const glm::vec3 p = object.worldPosition();
     const Vec2 units{p.x, p.y};
     const Vec2 metres = units / unitsPerMetre;
@@ -55,8 +57,9 @@ inline void requireInRange(const core::GameObject& object, std::string_view comp
     failOn(object, component,
            "world position " + core::formatVector(units) +
                " world units is out of the physics range (finite, |x| and |y| <= " +
-               core::formatNumber(kHuge * unitsPerMetre) + " world units: " + core::formatNumber(kHuge) +
-               " m at " + core::formatNumber(unitsPerMetre) + " units per metre)");
+               core::formatNumber(kHuge * unitsPerMetre) +
+               " world units: " + core::formatNumber(kHuge) + " m at " +
+               core::formatNumber(unitsPerMetre) + " units per metre)");
 }
 
 // A collider's placement on its body (its object's scale and pose relative to the body) must
@@ -69,7 +72,8 @@ inline void requireFinitePlacement(const core::GameObject& object, std::string_v
     if (!finite) {
         failOn(object, component,
                "the object's scale, orientation or position relative to its body is not finite "
-               "(scale " + core::formatVector(object.scale()) + ", orientation " +
+               "(scale " +
+                   core::formatVector(object.scale()) + ", orientation " +
                    core::formatNumber(object.orientation()) + ")");
     }
 }

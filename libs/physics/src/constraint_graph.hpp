@@ -14,7 +14,6 @@ namespace e2d::physics::detail {
 
 class ConstraintLevels {
 public:
-
     // Forgets every level; `stateCount` moving bodies (BodyState indices 0..stateCount-1).
     void reset(int stateCount);
 

@@ -46,7 +46,8 @@ void World::Impl::createContact(int shapeA, int shapeB) {
     c.friction = detail::mixFriction(s.def, a.friction, b.friction);
     c.restitution = detail::mixRestitution(s.def, a.restitution, b.restitution);
     c.rollingResistance = std::max(a.rollingResistance, b.rollingResistance);
-    c.touchEvents = c.sensor ? a.sensorEvents && b.sensorEvents : a.contactEvents && b.contactEvents;
+    c.touchEvents =
+        c.sensor ? a.sensorEvents && b.sensorEvents : a.contactEvents && b.contactEvents;
     c.hitEvents = a.hitEvents && b.hitEvents;
     c.alive = true;
     for (int side = 0; side < 2; ++side) {
@@ -122,8 +123,8 @@ bool World::Impl::updateManifold(detail::Contact& c, float dt) const {
     const detail::Body& ba = body(c.bodyA);
     const detail::Body& bb = body(c.bodyB);
     if (c.sensor) {
-        Manifold m = collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
-                             collisionAlgorithm, 0.0f);
+        Manifold m =
+            collide(sa.geometry, ba.transform, sb.geometry, bb.transform, collisionAlgorithm, 0.0f);
         return m.pointCount > 0;
     }
     // Speculative margin: the fixed one plus how far the pair can close in one step, so a
@@ -164,7 +165,9 @@ bool World::Impl::updateManifold(detail::Contact& c, float dt) const {
 void World::Impl::updateContacts(float dt) {
     detail::Simulation& s = sim;
     broadPhase.updatePairs(
-        [this](std::uint64_t a, std::uint64_t b) { return shouldPair(static_cast<int>(a), static_cast<int>(b)); },
+        [this](std::uint64_t a, std::uint64_t b) {
+            return shouldPair(static_cast<int>(a), static_cast<int>(b));
+        },
         [this](std::uint64_t ud) { return pairQueryMask(static_cast<int>(ud)); });
     for (const detail::ProxyPair& p : broadPhase.newPairs()) {
         createContact(static_cast<int>(p.userDataA), static_cast<int>(p.userDataB));
@@ -185,7 +188,8 @@ void World::Impl::updateContacts(float dt) {
     auto updatePiece = [&](int begin, int end, int /*worker*/) {
         for (int ci = begin; ci < end; ++ci) {
             if (ci + kPrefetchAhead < end) {
-                const detail::Contact& ahead = s.contacts[static_cast<std::size_t>(ci + kPrefetchAhead)];
+                const detail::Contact& ahead =
+                    s.contacts[static_cast<std::size_t>(ci + kPrefetchAhead)];
                 if (ahead.alive) {
                     detail::prefetchObject(&shape(ahead.shapeA));
                     detail::prefetchObject(&shape(ahead.shapeB));

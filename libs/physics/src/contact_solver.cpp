@@ -80,7 +80,8 @@ bool isPushedApart(const Manifold& m, const ContactBodyView& a, const ContactBod
     for (int i = 0; i < m.pointCount; ++i) {
         float load = 0.0f; // (K lambda)_i
         for (int j = 0; j < m.pointCount; ++j) {
-            const float k = linear + a.invInertia * rnA[i] * rnA[j] + b.invInertia * rnB[i] * rnB[j];
+            const float k =
+                linear + a.invInertia * rnA[i] * rnA[j] + b.invInertia * rnB[i] * rnB[j];
             load += k * m.points[j].normalImpulse;
         }
         if (-m.points[i].separation > kLinearSlop + restPerImpulse * std::max(load, 0.0f)) {

@@ -136,16 +136,16 @@ float solvePositionsClassic(std::span<ContactConstraint> constraints, std::span<
             // rotation, k can be huge while the free axis takes the whole shift: a normal a
             // millionth of a radian off the locked axis asked for a slide of the overlap times
             // a million (8 000 km in one step, a fuzz finding).
-            const float shift = std::max(length(scale(c.invMassA, p)), length(scale(c.invMassB, p)));
+            const float shift =
+                std::max(length(scale(c.invMassA, p)), length(scale(c.invMassB, p)));
             if (shift > kMaxCorrection) {
                 p *= kMaxCorrection / shift;
             }
             sa->deltaPosition -= scale(c.invMassA, p);
-            sa->deltaRotation = integrateRotation(sa->deltaRotation,
-                                                  -c.invInertiaA * cross(prA, p));
+            sa->deltaRotation =
+                integrateRotation(sa->deltaRotation, -c.invInertiaA * cross(prA, p));
             sb->deltaPosition += scale(c.invMassB, p);
-            sb->deltaRotation = integrateRotation(sb->deltaRotation,
-                                                  c.invInertiaB * cross(prB, p));
+            sb->deltaRotation = integrateRotation(sb->deltaRotation, c.invInertiaB * cross(prB, p));
         }
     }
     return minSeparation;

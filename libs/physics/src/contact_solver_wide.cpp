@@ -112,8 +112,8 @@ void storeLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const i
         for (int first = levelStart[k]; first < end; first += N, ++g) {
             const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
             for (int lane = 0; lane < N && first + lane < end; ++lane) {
-                ContactConstraint& c =
-                    constraints[static_cast<std::size_t>(levelOrder[static_cast<std::size_t>(first + lane)])];
+                ContactConstraint& c = constraints[static_cast<std::size_t>(
+                    levelOrder[static_cast<std::size_t>(first + lane)])];
                 for (int i = 0; i < c.pointCount; ++i) {
                     ContactConstraintPoint& cp = c.points[i];
                     const WidePointT<N>& wp = w.points[i];
@@ -160,8 +160,8 @@ void restituteLanes(std::vector<WideConstraintT<N>>& groups, std::span<const int
                     std::span<const WideRestitution> list, std::span<BodyState> states,
                     float threshold, float h) {
     for (const WideRestitution& r : list) {
-        WideConstraintT<N>& w =
-            groups[static_cast<std::size_t>(wideStart[static_cast<std::size_t>(r.level)] + r.at / N)];
+        WideConstraintT<N>& w = groups[static_cast<std::size_t>(
+            wideStart[static_cast<std::size_t>(r.level)] + r.at / N)];
         const int lane = r.at % N;
         // The scalar pass on a copy of the lane, so both paths run the same code.
         ContactConstraint c;
@@ -241,8 +241,9 @@ void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constrai
     const std::size_t levelCount = levelStart.empty() ? 0 : levelStart.size() - 1;
     for (std::size_t k = 0; k < levelCount; ++k) {
         for (int slot = levelStart[k]; slot < levelStart[k + 1]; ++slot) {
-            packWideLane(wide, static_cast<int>(k), slot - levelStart[k],
-                         constraints[static_cast<std::size_t>(levelOrder[static_cast<std::size_t>(slot)])]);
+            packWideLane(
+                wide, static_cast<int>(k), slot - levelStart[k],
+                constraints[static_cast<std::size_t>(levelOrder[static_cast<std::size_t>(slot)])]);
         }
     }
 }
@@ -273,7 +274,8 @@ std::span<const int> levelRange(const WideContacts& wide, int firstLevel, int en
         return {};
     }
     return std::span<const int>(wide.levelStart)
-        .subspan(static_cast<std::size_t>(firstLevel), static_cast<std::size_t>(endLevel - firstLevel) + 1);
+        .subspan(static_cast<std::size_t>(firstLevel),
+                 static_cast<std::size_t>(endLevel - firstLevel) + 1);
 }
 
 } // namespace

@@ -108,8 +108,8 @@ E2D_WIDE_FN F keep(I lanes, F updated, F old) {
 
 // The scalar pass's point-by-point normal solve, on the lanes of `lanes`.
 template <bool kReversePoints, bool kMasked>
-E2D_WIDE_FN void solvePoints(Constraint& c, WideBody& a, WideBody& b, I lanes, F invH,
-                             bool useBias, float pushMaxSpeed) {
+E2D_WIDE_FN void solvePoints(Constraint& c, WideBody& a, WideBody& b, I lanes, F invH, bool useBias,
+                             float pushMaxSpeed) {
     const F nx = c.normalX;
     const F ny = c.normalY;
     const F zero = splat(0.0f);
@@ -121,7 +121,8 @@ E2D_WIDE_FN void solvePoints(Constraint& c, WideBody& a, WideBody& b, I lanes, F
         Target t = targetOf(c, s, invH, useBias, pushMaxSpeed);
         F vn = normalVelocityOf(cp, c, a, b);
         noteImpact(cp, lanes, vn, s, invH, useBias);
-        F impulse = (-cp.normalMass) * t.massScale * (vn + t.bias) - t.impulseScale * cp.normalImpulse;
+        F impulse =
+            (-cp.normalMass) * t.massScale * (vn + t.bias) - t.impulseScale * cp.normalImpulse;
         F newImpulse = maxOf(cp.normalImpulse + impulse, zero);
         impulse = newImpulse - cp.normalImpulse;
         cp.normalImpulse = keep<kMasked>(lanes, newImpulse, cp.normalImpulse);
@@ -131,18 +132,20 @@ E2D_WIDE_FN void solvePoints(Constraint& c, WideBody& a, WideBody& b, I lanes, F
         F py = impulse * ny;
         a.vx = keep<kMasked>(lanes, a.vx - c.invMassAx * px, a.vx);
         a.vy = keep<kMasked>(lanes, a.vy - c.invMassAy * py, a.vy);
-        a.w = keep<kMasked>(lanes, a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px), a.w);
+        a.w =
+            keep<kMasked>(lanes, a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px), a.w);
         b.vx = keep<kMasked>(lanes, b.vx + c.invMassBx * px, b.vx);
         b.vy = keep<kMasked>(lanes, b.vy + c.invMassBy * py, b.vy);
-        b.w = keep<kMasked>(lanes, b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px), b.w);
+        b.w =
+            keep<kMasked>(lanes, b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px), b.w);
     }
 }
 
 // The scalar pass's block solve (solveBlock() on each point's soft right-hand side) on the
 // lanes of `lanes`.
 template <bool kMasked>
-E2D_WIDE_FN void solveBlock(Constraint& c, WideBody& a, WideBody& b, I lanes, F invH,
-                            bool useBias, float pushMaxSpeed) {
+E2D_WIDE_FN void solveBlock(Constraint& c, WideBody& a, WideBody& b, I lanes, F invH, bool useBias,
+                            float pushMaxSpeed) {
     const F zero = splat(0.0f);
     Point& cp1 = c.points[0];
     Point& cp2 = c.points[1];
@@ -179,8 +182,10 @@ E2D_WIDE_FN void solveBlock(Constraint& c, WideBody& a, WideBody& b, I lanes, F 
     F d2 = x2 - acc2;
     cp1.normalImpulse = keep<kMasked>(lanes, x1, acc1);
     cp2.normalImpulse = keep<kMasked>(lanes, x2, acc2);
-    cp1.maxNormalImpulse = keep<kMasked>(lanes, maxOf(cp1.maxNormalImpulse, d1), cp1.maxNormalImpulse);
-    cp2.maxNormalImpulse = keep<kMasked>(lanes, maxOf(cp2.maxNormalImpulse, d2), cp2.maxNormalImpulse);
+    cp1.maxNormalImpulse =
+        keep<kMasked>(lanes, maxOf(cp1.maxNormalImpulse, d1), cp1.maxNormalImpulse);
+    cp2.maxNormalImpulse =
+        keep<kMasked>(lanes, maxOf(cp2.maxNormalImpulse, d2), cp2.maxNormalImpulse);
     F p1x = d1 * c.normalX;
     F p1y = d1 * c.normalY;
     F p2x = d2 * c.normalX;
@@ -260,8 +265,8 @@ E2D_WIDE_FN void solveOne(Constraint& c, std::span<BodyState> states, float invH
 }
 
 // levelStart: the group boundaries of the levels to run (absolute indices into constraints).
-E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints, std::span<const int> levelStart,
-                              std::span<BodyState> states) {
+E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints,
+                              std::span<const int> levelStart, std::span<BodyState> states) {
     if (levelStart.size() < 2) {
         return;
     }
@@ -272,15 +277,15 @@ E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints, std::span
 
 template <bool kReversePoints>
 E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<const int> levelStart,
-                          std::span<BodyState> states, float invH, bool useBias,
-                          float pushMaxSpeed, bool backward) {
+                          std::span<BodyState> states, float invH, bool useBias, float pushMaxSpeed,
+                          bool backward) {
     if (levelStart.size() < 2) {
         return;
     }
     if (!backward) {
         for (int g = levelStart.front(); g < levelStart.back(); ++g) {
-            solveOne<kReversePoints>(constraints[static_cast<std::size_t>(g)], states, invH, useBias,
-                                     pushMaxSpeed);
+            solveOne<kReversePoints>(constraints[static_cast<std::size_t>(g)], states, invH,
+                                     useBias, pushMaxSpeed);
         }
         return;
     }
@@ -375,7 +380,8 @@ E2D_WIDE_FN void prepareGroup(const Manifolds& in, Constraint& c) {
         cp.anchorAy = select(present, rAy, zero);
         cp.anchorBx = select(present, rBx, zero);
         cp.anchorBy = select(present, rBy, zero);
-        cp.baseSeparation = select(present, separation - ((rBx - rAx) * nx + (rBy - rAy) * ny), zero);
+        cp.baseSeparation =
+            select(present, separation - ((rBx - rAx) * nx + (rBy - rAy) * ny), zero);
         cp.normalImpulse = select(present, vectorOf(mp.normalImpulse), zero);
         cp.tangentImpulse = select(present, vectorOf(mp.tangentImpulse), zero);
         cp.maxNormalImpulse = zero;

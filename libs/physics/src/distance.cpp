@@ -17,15 +17,17 @@ ShapeProxy makeProxy(std::span<const Vec2> points, float radius) {
                           std::to_string(points.size()));
     }
     if (!isFinite(radius) || radius < 0.0f || radius > kHuge) {
-        throw core::Error("physics::makeProxy(): radius must be finite, >= 0 and within kHuge, got " +
-                          core::formatNumber(radius));
+        throw core::Error(
+            "physics::makeProxy(): radius must be finite, >= 0 and within kHuge, got " +
+            core::formatNumber(radius));
     }
     ShapeProxy proxy;
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (!isFinite(points[i]) || std::fabs(points[i].x) > kHuge ||
             std::fabs(points[i].y) > kHuge) {
             throw core::Error("physics::makeProxy(): point " + std::to_string(i) +
-                              " must be finite and within kHuge, got " + core::formatVector(points[i]));
+                              " must be finite and within kHuge, got " +
+                              core::formatVector(points[i]));
         }
         proxy.points[i] = points[i];
     }

@@ -58,8 +58,9 @@ void DynamicTree::throwBadQueryBox(const Aabb& box) {
 void DynamicTree::throwBadRay(const RayCastInput& input) {
     throw core::Error("physics::DynamicTree::rayCast(): ray must be finite with maxFraction >= 0, "
                       "got origin " +
-                      core::formatVector(input.origin) + " translation " + core::formatVector(input.translation) +
-                      " maxFraction " + core::formatNumber(input.maxFraction));
+                      core::formatVector(input.origin) + " translation " +
+                      core::formatVector(input.translation) + " maxFraction " +
+                      core::formatNumber(input.maxFraction));
 }
 
 void DynamicTree::throwBadProxy(int proxyId, const char* function) {
@@ -807,7 +808,8 @@ void DynamicTree::buildFrom(std::vector<int>& leafIds) {
                     if (i > j) {
                         break;
                     }
-                    std::swap(leaves[static_cast<std::size_t>(i)], leaves[static_cast<std::size_t>(j)]);
+                    std::swap(leaves[static_cast<std::size_t>(i)],
+                              leaves[static_cast<std::size_t>(j)]);
                     leftCenters.add(leaves[static_cast<std::size_t>(i)].center);
                     rightCenters.add(leaves[static_cast<std::size_t>(j)].center);
                     ++i;
@@ -829,7 +831,8 @@ void DynamicTree::buildFrom(std::vector<int>& leafIds) {
             leftCenters = Bounds{};
             rightCenters = Bounds{};
             for (int i = task.begin; i < task.end; ++i) {
-                (i < mid ? leftCenters : rightCenters).add(leaves[static_cast<std::size_t>(i)].center);
+                (i < mid ? leftCenters : rightCenters)
+                    .add(leaves[static_cast<std::size_t>(i)].center);
             }
         }
         tasks.push_back({mid, task.end, node, 2, rightCenters});
@@ -925,9 +928,9 @@ void DynamicTree::buildMorton(const std::vector<int>& leafIds) {
         if (first != last) {
             const int bit = 31 - std::countl_zero(first ^ last);
             // First key in the range with `bit` set: the codes share every higher bit.
-            auto it = std::partition_point(
-                keys.begin() + task.begin, keys.begin() + task.end,
-                [bit](const Key& k) { return ((k.code >> bit) & 1u) == 0; });
+            auto it =
+                std::partition_point(keys.begin() + task.begin, keys.begin() + task.end,
+                                     [bit](const Key& k) { return ((k.code >> bit) & 1u) == 0; });
             mid = static_cast<int>(it - keys.begin());
         }
         tasks.push_back({mid, task.end, node, 2});

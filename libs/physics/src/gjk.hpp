@@ -33,7 +33,7 @@ inline int supportIndex(PointSet set, Vec2 direction) {
 // A vertex of the Minkowski difference B - A.
 struct SimplexVertex {
     Vec2 w{0.0f, 0.0f}; // b.points[indexB] - a.points[indexA]
-    float a = 1.0f;      // barycentric weight of the closest point
+    float a = 1.0f;     // barycentric weight of the closest point
     int indexA = 0;
     int indexB = 0;
 };

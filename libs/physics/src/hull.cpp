@@ -14,16 +14,18 @@ namespace detail {
 
 Hull computeHull(std::span<const Vec2> points, const char* function) {
     if (points.size() < 3) {
-        core::throwError(function, "expected at least 3 points, got " + std::to_string(points.size()));
+        core::throwError(function,
+                         "expected at least 3 points, got " + std::to_string(points.size()));
     }
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (!isFinite(points[i])) {
             core::throwError(function, "point " + std::to_string(i) + " is not finite, got " +
-                               core::formatVector(points[i]));
+                                           core::formatVector(points[i]));
         }
         if (!isWithinHuge(points[i])) {
             core::throwError(function, "point " + std::to_string(i) + " is beyond kHuge (" +
-                               core::formatNumber(kHuge) + " m), got " + core::formatVector(points[i]));
+                                           core::formatNumber(kHuge) + " m), got " +
+                                           core::formatVector(points[i]));
         }
     }
 
@@ -49,9 +51,10 @@ Hull computeHull(std::span<const Vec2> points, const char* function) {
         }
     }
     if (unique.size() < 3) {
-        core::throwError(function, "expected at least 3 distinct points (points closer than kLinearSlop are "
-                       "welded), got " +
-                           std::to_string(unique.size()));
+        core::throwError(function,
+                         "expected at least 3 distinct points (points closer than kLinearSlop are "
+                         "welded), got " +
+                             std::to_string(unique.size()));
     }
 
     // Andrew's monotone chain over the x-sorted points; exact collinear points are dropped by
@@ -96,8 +99,9 @@ Hull computeHull(std::span<const Vec2> points, const char* function) {
         core::throwError(function, "the points are collinear (the hull has no area)");
     }
     if (hull.size() > static_cast<std::size_t>(kMaxPolygonVertices)) {
-        core::throwError(function, std::to_string(hull.size()) + " points on the convex hull, at most " +
-                           std::to_string(kMaxPolygonVertices) + " allowed");
+        core::throwError(function, std::to_string(hull.size()) +
+                                       " points on the convex hull, at most " +
+                                       std::to_string(kMaxPolygonVertices) + " allowed");
     }
 
     Hull result;

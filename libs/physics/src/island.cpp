@@ -102,8 +102,8 @@ void World::Impl::updateSleep(float dt) {
         }
         detail::BodyMotion& m = b.motion;
         float w = std::abs(b.angularVelocity);
-        if (!m.enableSleep ||
-            dot(b.linearVelocity, b.linearVelocity) > linearTolSq || w > angularTol) {
+        if (!m.enableSleep || dot(b.linearVelocity, b.linearVelocity) > linearTolSq ||
+            w > angularTol) {
             m.sleepTime = 0.0f;
         } else {
             m.sleepTime += dt;

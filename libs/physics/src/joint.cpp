@@ -43,7 +43,8 @@ void ordered(JointType t, const char* lowerName, float lower, const char* upperN
 void unitAxis(JointType t, Vec2 axis) {
     finite(t, "localAxisA", axis);
     if (!(lengthSquared(axis) > 1e-12f)) {
-        check::fail(kCreate, field(t, "localAxisA") + " must be non-zero, got " + check::text(axis));
+        check::fail(kCreate,
+                    field(t, "localAxisA") + " must be non-zero, got " + check::text(axis));
     }
 }
 
@@ -69,7 +70,8 @@ detail::Joint jointFrom(const JointDef& def) {
                 finite(t, "length", d.length);
                 if (!(d.length >= kLinearSlop)) {
                     check::fail(kCreate, field(t, "length") + " must be >= kLinearSlop (" +
-                                             check::text(kLinearSlop) + " m), got " + check::text(d.length));
+                                             check::text(kLinearSlop) + " m), got " +
+                                             check::text(d.length));
                 }
                 nonNegative(t, "hertz", d.hertz);
                 nonNegative(t, "dampingRatio", d.dampingRatio);
@@ -94,7 +96,8 @@ detail::Joint jointFrom(const JointDef& def) {
                 finite(t, "angularOffset", d.angularOffset);
                 nonNegative(t, "maxForce", d.maxForce);
                 nonNegative(t, "maxTorque", d.maxTorque);
-                if (!(isFinite(d.correctionFactor) && d.correctionFactor >= 0.0f && d.correctionFactor <= 1.0f)) {
+                if (!(isFinite(d.correctionFactor) && d.correctionFactor >= 0.0f &&
+                      d.correctionFactor <= 1.0f)) {
                     check::fail(kCreate, field(t, "correctionFactor") + " must be in [0, 1], got " +
                                              check::text(d.correctionFactor));
                 }
@@ -108,7 +111,8 @@ detail::Joint jointFrom(const JointDef& def) {
                 finite(t, "localAnchorB", d.localAnchorB);
                 finite(t, "hertz", d.hertz);
                 if (!(d.hertz > 0.0f)) {
-                    check::fail(kCreate, field(t, "hertz") + " must be > 0, got " + check::text(d.hertz));
+                    check::fail(kCreate,
+                                field(t, "hertz") + " must be > 0, got " + check::text(d.hertz));
                 }
                 nonNegative(t, "dampingRatio", d.dampingRatio);
                 nonNegative(t, "maxForce", d.maxForce);
@@ -117,13 +121,15 @@ detail::Joint jointFrom(const JointDef& def) {
                 j.hertz = d.hertz;
                 j.dampingRatio = d.dampingRatio;
                 j.maxMotorForce = d.maxForce;
-            } else if constexpr (std::is_same_v<D, PrismaticJointDef> || std::is_same_v<D, WheelJointDef>) {
+            } else if constexpr (std::is_same_v<D, PrismaticJointDef> ||
+                                 std::is_same_v<D, WheelJointDef>) {
                 finite(t, "localAnchorA", d.localAnchorA);
                 finite(t, "localAnchorB", d.localAnchorB);
                 unitAxis(t, d.localAxisA);
                 nonNegative(t, "hertz", d.hertz);
                 nonNegative(t, "dampingRatio", d.dampingRatio);
-                ordered(t, "lowerTranslation", d.lowerTranslation, "upperTranslation", d.upperTranslation);
+                ordered(t, "lowerTranslation", d.lowerTranslation, "upperTranslation",
+                        d.upperTranslation);
                 finite(t, "motorSpeed", d.motorSpeed);
                 j.localAnchorA = d.localAnchorA;
                 j.localAnchorB = d.localAnchorB;
@@ -189,7 +195,11 @@ detail::Joint jointFrom(const JointDef& def) {
 }
 
 std::pair<BodyId, BodyId> bodiesOf(const JointDef& def) {
-    return std::visit([](const auto& d) { return std::pair<BodyId, BodyId>{d.bodyA, d.bodyB}; }, def);
+    return std::visit(
+        [](const auto& d) {
+            return std::pair<BodyId, BodyId>{d.bodyA, d.bodyB};
+        },
+        def);
 }
 
 } // namespace
@@ -200,13 +210,20 @@ JointType jointTypeOf(const JointDef& def) { return static_cast<JointType>(def.i
 
 const char* jointTypeName(JointType type) {
     switch (type) {
-    case JointType::Distance: return "distance";
-    case JointType::Motor: return "motor";
-    case JointType::Mouse: return "mouse";
-    case JointType::Prismatic: return "prismatic";
-    case JointType::Revolute: return "revolute";
-    case JointType::Weld: return "weld";
-    case JointType::Wheel: return "wheel";
+    case JointType::Distance:
+        return "distance";
+    case JointType::Motor:
+        return "motor";
+    case JointType::Mouse:
+        return "mouse";
+    case JointType::Prismatic:
+        return "prismatic";
+    case JointType::Revolute:
+        return "revolute";
+    case JointType::Weld:
+        return "weld";
+    case JointType::Wheel:
+        return "wheel";
     }
     return "unknown";
 }
@@ -266,11 +283,13 @@ JointId World::createJoint(const JointDef& def) {
     const int bodyA = w.require(idA, kCreate);
     const int bodyB = w.require(idB, kCreate);
     if (bodyA == bodyB) {
-        check::fail(kCreate, field(jointTypeOf(def), "bodyA") + " and def.bodyB must differ, got the same body");
+        check::fail(kCreate, field(jointTypeOf(def), "bodyA") +
+                                 " and def.bodyB must differ, got the same body");
     }
     if (w.body(bodyA).type != BodyType::Dynamic && w.body(bodyB).type != BodyType::Dynamic) {
-        check::fail(kCreate, field(jointTypeOf(def), "bodyA") +
-                                 " or def.bodyB must be dynamic, got two bodies that no force moves");
+        check::fail(kCreate,
+                    field(jointTypeOf(def), "bodyA") +
+                        " or def.bodyB must be dynamic, got two bodies that no force moves");
     }
     detail::Joint made = jointFrom(def);
     made.bodyA = bodyA;
@@ -310,7 +329,8 @@ JointId World::createJoint(const JointDef& def) {
             const int side = c.bodyA == bodyA ? 0 : 1;
             const int next = c.next[side];
             if ((side == 0 ? c.bodyB : c.bodyA) == bodyB) {
-                w.broadPhase.removePair(static_cast<std::uint64_t>(c.shapeA), static_cast<std::uint64_t>(c.shapeB));
+                w.broadPhase.removePair(static_cast<std::uint64_t>(c.shapeA),
+                                        static_cast<std::uint64_t>(c.shapeB));
                 w.destroyContact(ci, true);
             }
             ci = next;
@@ -328,7 +348,9 @@ void World::destroyJoint(JointId id) {
 
 bool World::isValid(JointId id) const { return impl_->find(id) != kNullIndex; }
 
-JointType World::jointType(JointId id) const { return impl_->joint(impl_->require(id, "jointType")).type; }
+JointType World::jointType(JointId id) const {
+    return impl_->joint(impl_->require(id, "jointType")).type;
+}
 
 BodyId World::jointBodyA(JointId id) const {
     return impl_->bodyId(impl_->joint(impl_->require(id, "jointBodyA")).bodyA);
@@ -361,7 +383,8 @@ void World::setJointUserData(JointId id, std::uint64_t userData) {
 Vec2 World::jointAnchorA(JointId id) const {
     const Impl& w = *impl_;
     const detail::Joint& j = w.joint(w.require(id, "jointAnchorA"));
-    return j.type == JointType::Mouse ? j.target : transformPoint(w.body(j.bodyA).transform, j.localAnchorA);
+    return j.type == JointType::Mouse ? j.target
+                                      : transformPoint(w.body(j.bodyA).transform, j.localAnchorA);
 }
 
 Vec2 World::jointAnchorB(JointId id) const {
@@ -405,7 +428,8 @@ namespace {
 
 // The joint at `id` if its type is one of `types`, else an error naming the function.
 template <typename Impl>
-detail::Joint& typed(Impl& w, JointId id, const char* function, std::initializer_list<JointType> types) {
+detail::Joint& typed(Impl& w, JointId id, const char* function,
+                     std::initializer_list<JointType> types) {
     detail::Joint& j = w.joint(w.require(id, function));
     for (JointType t : types) {
         if (j.type == t) {
@@ -442,8 +466,8 @@ void World::setJointMotorSpeed(JointId id, float speed) {
 void World::setJointMaxMotorForce(JointId id, float force) {
     check::requireNonNegative("setJointMaxMotorForce", "force", force);
     detail::Joint& j = typed(*impl_, id, "setJointMaxMotorForce",
-                             {JointType::Distance, JointType::Prismatic, JointType::Revolute, JointType::Wheel,
-                              JointType::Mouse, JointType::Motor});
+                             {JointType::Distance, JointType::Prismatic, JointType::Revolute,
+                              JointType::Wheel, JointType::Mouse, JointType::Motor});
     j.maxMotorForce = force;
     wakeEnds(*impl_, j);
 }
@@ -459,7 +483,8 @@ void World::setJointLimits(JointId id, float lower, float upper) {
     check::requireFinite(fn, "lower", lower);
     check::requireFinite(fn, "upper", upper);
     if (!(lower <= upper)) {
-        check::fail(fn, "lower must be <= upper, got " + check::text(lower) + " > " + check::text(upper));
+        check::fail(fn, "lower must be <= upper, got " + check::text(lower) + " > " +
+                            check::text(upper));
     }
     detail::Joint& j = typed(*impl_, id, fn, kMotorTypes);
     if (j.type == JointType::Distance) {
@@ -478,8 +503,8 @@ void World::setJointSpring(JointId id, float hertz, float dampingRatio) {
     check::requireNonNegative(fn, "hertz", hertz);
     check::requireNonNegative(fn, "dampingRatio", dampingRatio);
     detail::Joint& j = typed(*impl_, id, fn,
-                             {JointType::Distance, JointType::Prismatic, JointType::Revolute, JointType::Wheel,
-                              JointType::Mouse, JointType::Weld});
+                             {JointType::Distance, JointType::Prismatic, JointType::Revolute,
+                              JointType::Wheel, JointType::Mouse, JointType::Weld});
     if (j.type == JointType::Mouse && !(hertz > 0.0f)) {
         check::fail(fn, "a mouse joint's hertz must be > 0, got " + check::text(hertz));
     }

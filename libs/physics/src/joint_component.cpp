@@ -9,8 +9,8 @@
 #include <e2d/physics/rigidbody.hpp>
 
 #include "component_check.hpp"
-#include "object_pose.hpp"
 #include "joint_def_check.hpp"
+#include "object_pose.hpp"
 
 #include <string>
 #include <string_view>
@@ -92,7 +92,8 @@ std::string inComponentTerms(std::string what) {
         what.erase(0, kCreatePrefix.size());
     }
     // The joint type's name before the first field ("revolute def.").
-    if (const auto first = what.find(" def."); first != std::string::npos && what.find(' ') == first) {
+    if (const auto first = what.find(" def.");
+        first != std::string::npos && what.find(' ') == first) {
         what.erase(0, first + 1);
     }
     std::string out;
@@ -119,7 +120,8 @@ void validate(const JointDef& def, const char* function, const std::string& note
 
 } // namespace
 
-JointComponent::JointComponent(PhysicsSystem& system, const JointComponentDef& def) : JointComponent(def) {
+JointComponent::JointComponent(PhysicsSystem& system, const JointComponentDef& def)
+    : JointComponent(def) {
     system_ = &system;
     static_cast<void>(validateInMetres("JointComponent"));
 }
@@ -145,18 +147,22 @@ JointDef JointComponent::validateInMetres(const char* function) const {
 PhysicsSystem& JointComponent::system() const {
     if (system_ == nullptr) {
         if (scene() == nullptr) {
-            throw core::Error("physics::JointComponent::system(): the JointComponent has no PhysicsSystem "
-                              "(it was made without one and its object is not in a scene)");
+            throw core::Error(
+                "physics::JointComponent::system(): the JointComponent has no PhysicsSystem "
+                "(it was made without one and its object is not in a scene)");
         }
         system_ = &scene()->system<PhysicsSystem>();
     }
     return *system_;
 }
 
-bool JointComponent::isConnected() const { return !joint_.isNull() && system().world().isValid(joint_); }
+bool JointComponent::isConnected() const {
+    return !joint_.isNull() && system().world().isValid(joint_);
+}
 
 Vec2 JointComponent::reactionForce() const {
-    return isConnected() ? system().toUnits(system().world().jointReactionForce(joint_)) : Vec2{0.0f, 0.0f};
+    return isConnected() ? system().toUnits(system().world().jointReactionForce(joint_))
+                         : Vec2{0.0f, 0.0f};
 }
 
 float JointComponent::reactionTorque() const {
@@ -197,16 +203,16 @@ void JointComponent::onInitialize() {
             fail("onInitialize", "def.connectedObject names no object of the scene");
         }
         if (other == &self) {
-            fail("onInitialize", "def.connectedObject is the " + self.describe() +
-                                     " itself");
+            fail("onInitialize", "def.connectedObject is the " + self.describe() + " itself");
         }
         theirs = other->getComponent<Rigidbody>();
         anchorPose = detail::worldPose(*other, upm);
     }
     const bool ownMoves = own->type() == BodyType::Dynamic;
     if (!ownMoves && (theirs == nullptr || theirs->type() != BodyType::Dynamic)) {
-        fail("onInitialize", "neither the Rigidbody of the " + self.describe() +
-                                 " nor def.connectedObject's is dynamic: no force would move the joint");
+        fail("onInitialize",
+             "neither the Rigidbody of the " + self.describe() +
+                 " nor def.connectedObject's is dynamic: no force would move the joint");
     }
     BodyId bodyA;
     if (theirs != nullptr) {

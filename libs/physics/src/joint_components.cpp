@@ -88,8 +88,8 @@ void markLoopyJoints(std::span<Joint> joints, std::span<const int> slots, std::s
     }
 }
 
-void findJointComponents(std::span<const Joint> joints, std::span<const int> order, std::size_t stateCount,
-                         JointComponents& out, bool skipLoopy) {
+void findJointComponents(std::span<const Joint> joints, std::span<const int> order,
+                         std::size_t stateCount, JointComponents& out, bool skipLoopy) {
     out.sorted.clear();
     for (int k : order) {
         if (k >= 0 && !(skipLoopy && joints[static_cast<std::size_t>(k)].loopy)) {

@@ -36,8 +36,8 @@ struct RowJ {
 // stays >= 0 (a limit). Position rows: a limit only when violated, its error capped (a bounded
 // push-out). Velocity rows: a revolute joint's nearer limit once it is within the angular slop
 // or pushing, signed so that c >= 0 is allowed.
-int jointRows(Joint& j, const BodyState& a, const BodyState& b, bool velocity, bool released, RowJ rows[3],
-              float c[3], float* acc[3], bool oneSided[3], JointErrors& worst) {
+int jointRows(Joint& j, const BodyState& a, const BodyState& b, bool velocity, bool released,
+              RowJ rows[3], float c[3], float* acc[3], bool oneSided[3], JointErrors& worst) {
     int n = 0;
     auto add = [&](RowJ row, float C, float* accumulated, bool limit) {
         rows[n] = row;
@@ -70,7 +70,8 @@ int jointRows(Joint& j, const BodyState& a, const BodyState& b, bool velocity, b
             slide(u, cross(f.rA, u), cross(f.rB, u), C, &j.springImpulse);
             worst.linear = std::max(worst.linear, std::abs(C));
         } else if (!velocity && j.enableLimit && len > 0.0f) {
-            const float C = pastLimit(len, std::max(j.minLength, kLinearSlop), j.maxLength, kMaxLinearCorrection);
+            const float C = pastLimit(len, std::max(j.minLength, kLinearSlop), j.maxLength,
+                                      kMaxLinearCorrection);
             if (C != 0.0f) {
                 const Vec2 u = (1.0f / len) * f.d;
                 slide(u, cross(f.rA, u), cross(f.rB, u), C, nullptr);
@@ -82,7 +83,8 @@ int jointRows(Joint& j, const BodyState& a, const BodyState& b, bool velocity, b
     case JointType::Revolute:
         point(currentFrame(j, a, b));
         if (j.enableLimit && !velocity) {
-            const float C = pastLimit(currentAngle(j, a, b), j.lower, j.upper, kMaxAngularCorrection);
+            const float C =
+                pastLimit(currentAngle(j, a, b), j.lower, j.upper, kMaxAngularCorrection);
             if (C != 0.0f) {
                 angle(C, nullptr);
             }
@@ -109,7 +111,8 @@ int jointRows(Joint& j, const BodyState& a, const BodyState& b, bool velocity, b
     case JointType::Wheel: {
         const SlideFrame s = currentSlide(j, a, b);
         const float perp = dot(s.perp, s.f.d);
-        slide(s.perp, s.s1, s.s2, perp, j.type == JointType::Prismatic ? &j.linearImpulse.x : &j.perpImpulse);
+        slide(s.perp, s.s1, s.s2, perp,
+              j.type == JointType::Prismatic ? &j.linearImpulse.x : &j.perpImpulse);
         worst.linear = std::max(worst.linear, std::abs(perp));
         if (j.type == JointType::Prismatic) {
             angle(currentAngle(j, a, b), &j.linearImpulse.y);
@@ -135,7 +138,8 @@ int jointRows(Joint& j, const BodyState& a, const BodyState& b, bool velocity, b
                 const float C = lowerSide ? value - j.lower : j.upper - value;
                 float* impulse = lowerSide ? &j.lowerImpulse : &j.upperImpulse;
                 if (C < kLinearSlop || *impulse > 0.0f) {
-                    add({-side * s.axis, -side * s.a1, side * s.axis, side * s.a2}, C, impulse, true);
+                    add({-side * s.axis, -side * s.a1, side * s.axis, side * s.a2}, C, impulse,
+                        true);
                 }
             }
         }
@@ -147,7 +151,8 @@ int jointRows(Joint& j, const BodyState& a, const BodyState& b, bool velocity, b
 
 // Row r of one side times that side's inverse mass times row s of the same side.
 inline double coupling(Vec2 l1, float a1, Vec2 l2, float a2, Vec2 invMass, float invInertia) {
-    return double(l1.x) * invMass.x * l2.x + double(l1.y) * invMass.y * l2.y + double(a1) * invInertia * a2;
+    return double(l1.x) * invMass.x * l2.x + double(l1.y) * invMass.y * l2.y +
+           double(a1) * invInertia * a2;
 }
 
 Block mul(const Block& x, const Block& y) {
@@ -159,9 +164,7 @@ Block mul(const Block& x, const Block& y) {
     }
     return r;
 }
-Block transposed(const Block& x) {
-    return {x[0], x[3], x[6], x[1], x[4], x[7], x[2], x[5], x[8]};
-}
+Block transposed(const Block& x) { return {x[0], x[3], x[6], x[1], x[4], x[7], x[2], x[5], x[8]}; }
 // x^-1 of a symmetric positive definite 3x3 (its padding rows are the identity).
 Block inverse(const Block& x) {
     const double c00 = x[4] * x[8] - x[5] * x[7];
@@ -204,8 +207,8 @@ constexpr std::size_t kWorkPerJoint = 64;
 
 // Builds the rows of the joints `order` and their matrix K = J M^-1 J^T (diagonal blocks and
 // the blocks of joints sharing a body); w.rhs gets -C. Returns the errors met.
-JointErrors assemble(std::span<Joint> joints, std::span<const int> order, std::span<const BodyState> states,
-                     bool velocity, JointDirectScratch& w) {
+JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
+                     std::span<const BodyState> states, bool velocity, JointDirectScratch& w) {
     const std::size_t n = order.size();
     w.rows.resize(n);
     w.rowCount.resize(n);
@@ -228,8 +231,8 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order, std::s
         JointDirectScratch::Rows& r = w.rows[p];
         RowJ rows[3];
         const bool released = velocity && w.released[p] != 0;
-        const int count =
-            jointRows(j, stateOf(j.indexA), stateOf(j.indexB), velocity, released, rows, c, r.acc, r.oneSided, worst);
+        const int count = jointRows(j, stateOf(j.indexA), stateOf(j.indexB), velocity, released,
+                                    rows, c, r.acc, r.oneSided, worst);
         w.rowCount[p] = count;
         for (int i = 0; i < 3; ++i) {
             r.linA[i] = i < count ? rows[i].linA : Vec2{0.0f, 0.0f};
@@ -245,8 +248,10 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order, std::s
             for (int k = 0; k < 3; ++k) {
                 if (i < count && k < count) {
                     d[static_cast<std::size_t>(3 * i + k)] =
-                        coupling(r.linA[i], r.angA[i], r.linA[k], r.angA[k], j.invMassA, j.invInertiaA) +
-                        coupling(r.linB[i], r.angB[i], r.linB[k], r.angB[k], j.invMassB, j.invInertiaB);
+                        coupling(r.linA[i], r.angA[i], r.linA[k], r.angA[k], j.invMassA,
+                                 j.invInertiaA) +
+                        coupling(r.linB[i], r.angB[i], r.linB[k], r.angB[k], j.invMassB,
+                                 j.invInertiaB);
                 } else {
                     d[static_cast<std::size_t>(3 * i + k)] = i == k ? 1.0 : 0.0;
                 }
@@ -268,7 +273,8 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order, std::s
     // The joints of each moving body, to find which joints share one.
     std::sort(w.bodyJoints.begin(), w.bodyJoints.end());
     // Off-diagonal blocks: joints p and q sharing body s couple through it.
-    auto side = [&](std::size_t p, int s, Vec2 (&lin)[3], float (&ang)[3], Vec2& invMass, float& invInertia) {
+    auto side = [&](std::size_t p, int s, Vec2(&lin)[3], float(&ang)[3], Vec2& invMass,
+                    float& invInertia) {
         const Joint& j = joints[static_cast<std::size_t>(order[p])];
         const JointDirectScratch::Rows& r = w.rows[p];
         const bool isA = j.indexA == s;
@@ -310,7 +316,9 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order, std::s
     // bodies' order must not decide.
     for (std::size_t p = 0; p < n; ++p) {
         std::sort(w.adjacency[p].begin(), w.adjacency[p].end(),
-                  [](const JointDirectScratch::Entry& x, const JointDirectScratch::Entry& y) { return x.node < y.node; });
+                  [](const JointDirectScratch::Entry& x, const JointDirectScratch::Entry& y) {
+                      return x.node < y.node;
+                  });
     }
     return worst;
 }
@@ -351,7 +359,9 @@ bool factor(JointDirectScratch& w) {
             const auto i = static_cast<std::size_t>(ei.node);
             auto& list = w.adjacency[i];
             list.erase(std::remove_if(list.begin(), list.end(),
-                                      [&](const JointDirectScratch::Entry& e) { return e.node == static_cast<int>(p); }),
+                                      [&](const JointDirectScratch::Entry& e) {
+                                          return e.node == static_cast<int>(p);
+                                      }),
                        list.end());
             const Block left = mul(transposed(ei.block), dInv);
             for (const auto& ek : neighbours) {
@@ -370,7 +380,8 @@ bool factor(JointDirectScratch& w) {
             }
         }
         for (const auto& ei : neighbours) {
-            w.queue.insert({static_cast<int>(w.adjacency[static_cast<std::size_t>(ei.node)].size()), ei.node});
+            w.queue.insert(
+                {static_cast<int>(w.adjacency[static_cast<std::size_t>(ei.node)].size()), ei.node});
         }
     }
     return true;
@@ -440,13 +451,14 @@ void applyRows(const Joint& j, const JointDirectScratch::Rows& r, int count, con
 // tooLoopy(), or its factorisation gave up earlier this step.
 bool denseComponent(const JointDirectScratch& w, std::span<const int> slots, int loops) {
     return tooLoopy(slots.size(), static_cast<std::size_t>(loops)) ||
-           std::find(w.denseComponents.begin(), w.denseComponents.end(), slots.front()) != w.denseComponents.end();
+           std::find(w.denseComponents.begin(), w.denseComponents.end(), slots.front()) !=
+               w.denseComponents.end();
 }
 
 // One Newton position pass over a component. True when every error was within the slops
 // before the pass (nothing moved).
-bool projectComponent(std::span<Joint> joints, std::span<const int> slots, std::span<BodyState> states,
-                      JointDirectScratch& w) {
+bool projectComponent(std::span<Joint> joints, std::span<const int> slots,
+                      std::span<BodyState> states, JointDirectScratch& w) {
     w.released.assign(slots.size(), 0);
     const JointErrors worst = assemble(joints, slots, states, false, w);
     if (worst.linear <= kLinearSlop && worst.angular <= kAngularSlop) {
@@ -458,16 +470,17 @@ bool projectComponent(std::span<Joint> joints, std::span<const int> slots, std::
     }
     solveFactored(w);
     for (std::size_t p = 0; p < slots.size(); ++p) {
-        applyRows(joints[static_cast<std::size_t>(slots[p])], w.rows[p], w.rowCount[p], w.solution[p].data(), states,
-                  true);
+        applyRows(joints[static_cast<std::size_t>(slots[p])], w.rows[p], w.rowCount[p],
+                  w.solution[p].data(), states, true);
     }
     return false;
 }
 
 // The velocity solve of one component; false, changing nothing, when its factorisation gives
 // up (then marked dense for the step).
-bool solveComponent(std::span<Joint> joints, std::span<const int> slots, std::span<BodyState> states,
-                    const JointStep& step, bool useBias, JointDirectScratch& w) {
+bool solveComponent(std::span<Joint> joints, std::span<const int> slots,
+                    std::span<BodyState> states, const JointStep& step, bool useBias,
+                    JointDirectScratch& w) {
     // rhs = -(J v + bias): the rows' velocities to zero, a limit not reached yet only stopped
     // at it (speculative), position errors left to the projection (rigid rows: the softness's
     // bias, 0 by default). A limit that would pull is released and the rest solved again (an
@@ -490,7 +503,8 @@ bool solveComponent(std::span<Joint> joints, std::span<const int> slots, std::sp
             const BodyState& a = stateOf(j.indexA);
             const BodyState& b = stateOf(j.indexB);
             for (int i = 0; i < w.rowCount[p]; ++i) {
-                const float Cdot = dot(r.linA[i], a.linearVelocity) + r.angA[i] * a.angularVelocity +
+                const float Cdot = dot(r.linA[i], a.linearVelocity) +
+                                   r.angA[i] * a.angularVelocity +
                                    dot(r.linB[i], b.linearVelocity) + r.angB[i] * b.angularVelocity;
                 const float C = w.error[p][static_cast<std::size_t>(i)];
                 const float bias = r.oneSided[i] && C > 0.0f ? C * step.invH : soft.biasRate * C;
@@ -529,8 +543,9 @@ bool solveComponent(std::span<Joint> joints, std::span<const int> slots, std::sp
 
 } // namespace
 
-void projectJointComponents(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
-                            int iterations, bool gaussSeidel, JointDirectScratch& w) {
+void projectJointComponents(std::span<Joint> joints, std::span<const int> order,
+                            std::span<BodyState> states, int iterations, bool gaussSeidel,
+                            JointDirectScratch& w) {
     findJointComponents(joints, order, states.size(), w.components);
     const JointComponents& components = w.components;
     for (std::size_t c = 0; c < components.size(); ++c) {
@@ -546,8 +561,9 @@ void projectJointComponents(std::span<Joint> joints, std::span<const int> order,
     }
 }
 
-void solveJointsDirect(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
-                       const JointStep& step, bool useBias, JointDirectScratch& w) {
+void solveJointsDirect(std::span<Joint> joints, std::span<const int> order,
+                       std::span<BodyState> states, const JointStep& step, bool useBias,
+                       JointDirectScratch& w) {
     // The loopy groups' joints are the Gauss-Seidel pass's alone (markLoopyJoints()).
     findJointComponents(joints, order, states.size(), w.components, true);
     const JointComponents& components = w.components;

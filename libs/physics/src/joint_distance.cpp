@@ -26,18 +26,22 @@ void solveDistance(Joint& j, BodyState& a, BodyState& b, const JointStep& step, 
     }
     if (j.enableSpring && j.hertz > 0.0f) {
         // A real spring: it acts while relaxing too.
-        float impulse = solveSoftRow(j.springImpulse, j.axialMass, length - j.length, Cdot(), j.springSoftness);
+        float impulse =
+            solveSoftRow(j.springImpulse, j.axialMass, length - j.length, Cdot(), j.springSoftness);
         applyPointImpulse(j, a, b, f.rA, f.rB, impulse * axis);
     }
     if (j.enableMotor) {
-        float impulse = solveMotorRow(j.motorImpulse, j.axialMass, j.motorSpeed, Cdot(), j.maxMotorForce * step.h);
+        float impulse = solveMotorRow(j.motorImpulse, j.axialMass, j.motorSpeed, Cdot(),
+                                      j.maxMotorForce * step.h);
         applyPointImpulse(j, a, b, f.rA, f.rB, impulse * axis);
     }
     if (j.enableLimit) {
         const float minLength = std::max(j.minLength, kLinearSlop);
-        float lower = solveLimitRow(j.lowerImpulse, j.axialMass, length - minLength, Cdot(), step, useBias);
+        float lower =
+            solveLimitRow(j.lowerImpulse, j.axialMass, length - minLength, Cdot(), step, useBias);
         applyPointImpulse(j, a, b, f.rA, f.rB, lower * axis);
-        float upper = solveLimitRow(j.upperImpulse, j.axialMass, j.maxLength - length, -Cdot(), step, useBias);
+        float upper = solveLimitRow(j.upperImpulse, j.axialMass, j.maxLength - length, -Cdot(),
+                                    step, useBias);
         applyPointImpulse(j, a, b, f.rA, f.rB, -upper * axis);
     }
 }

@@ -16,8 +16,9 @@ void solveMouse(Joint& j, BodyState& /*a*/, BodyState& b, const JointStep& step,
     Vec2 C = j.deltaCenter + b.deltaPosition + rB;
     Vec2 Cdot = b.linearVelocity + cross(b.angularVelocity, rB);
     const Softness& soft = j.springSoftness;
-    Vec2 impulse = -soft.massScale * solve22(pointMatrix(j, Vec2{0.0f, 0.0f}, rB), Cdot + soft.biasRate * C) -
-                   soft.impulseScale * j.linearImpulse;
+    Vec2 impulse =
+        -soft.massScale * solve22(pointMatrix(j, Vec2{0.0f, 0.0f}, rB), Cdot + soft.biasRate * C) -
+        soft.impulseScale * j.linearImpulse;
     Vec2 old = j.linearImpulse;
     j.linearImpulse += impulse;
     float maxImpulse = j.maxMotorForce * step.h;

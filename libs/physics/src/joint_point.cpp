@@ -13,7 +13,8 @@ namespace {
 // A lane's prepared fields: the joint's first cache line only (the layout's indices and slot
 // stay as packed).
 template <int N>
-__attribute__((always_inline)) inline void refreshLane(PointJointLanes<N>& q, int lane, const Joint& j) {
+__attribute__((always_inline)) inline void refreshLane(PointJointLanes<N>& q, int lane,
+                                                       const Joint& j) {
     q.invInertiaA[lane] = j.invInertiaA;
     q.invInertiaB[lane] = j.invInertiaB;
     q.invMassAx[lane] = j.invMassA.x;
@@ -68,8 +69,9 @@ void storeGroups(std::span<const PointJointLanes<N>> groups, std::span<Joint> jo
 
 } // namespace
 
-void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
-                     bool quadsAllowed, PointJointGroups& groups, std::vector<int>& entries) {
+void packJointPasses(std::span<const Joint> joints, std::span<const int> slots,
+                     std::span<const int> levels, bool quadsAllowed, PointJointGroups& groups,
+                     std::vector<int>& entries) {
     const std::size_t n = slots.size();
     // Direct (quadsAllowed false): only the loopy groups' hinges, which the direct solve leaves.
     auto grouped = [&](const Joint& j) { return isPointJoint(j) && (quadsAllowed || j.loopy); };
@@ -157,7 +159,9 @@ namespace {
 } // namespace
 } // namespace lanes4
 
-void warmStartPointQuad(PointJointQuad& q, std::span<BodyState> states) { lanes4::warmStartHinges(q, states); }
+void warmStartPointQuad(PointJointQuad& q, std::span<BodyState> states) {
+    lanes4::warmStartHinges(q, states);
+}
 
 void solvePointQuad(PointJointQuad& q, std::span<BodyState> states, const Softness& soft) {
     lanes4::solveHinges(q, states, soft);
@@ -173,12 +177,13 @@ namespace {
 } // namespace
 } // namespace lanes8
 
-__attribute__((target("avx2"))) void warmStartPointOctet(PointJointOctet& q, std::span<BodyState> states) {
+__attribute__((target("avx2"))) void warmStartPointOctet(PointJointOctet& q,
+                                                         std::span<BodyState> states) {
     lanes8::warmStartHinges(q, states);
 }
 
-__attribute__((target("avx2"))) void solvePointOctet(PointJointOctet& q, std::span<BodyState> states,
-                                                     const Softness& soft) {
+__attribute__((target("avx2"))) void
+solvePointOctet(PointJointOctet& q, std::span<BodyState> states, const Softness& soft) {
     lanes8::solveHinges(q, states, soft);
 }
 

@@ -31,7 +31,8 @@ struct HingeBodies {
     BodyState* outB[N];
 };
 
-E2D_WIDE_FN __attribute__((always_inline)) HingeSides gather(const Hinges& q, const HingeBodies& at) {
+E2D_WIDE_FN __attribute__((always_inline)) HingeSides gather(const Hinges& q,
+                                                             const HingeBodies& at) {
     HingeSides s;
     loadRows(at.inA, 0, s.avx, s.avy, s.aw, s.aflags);
     loadRows(at.inB, 0, s.bvx, s.bvy, s.bw, s.bflags);
@@ -50,8 +51,8 @@ E2D_WIDE_FN __attribute__((always_inline)) HingeSides gather(const Hinges& q, co
 
 // applyPointImpulse(j, a, b, rA, rB, p, 0): A gets -p, B gets +p; then the velocities go back
 // (A's lanes first, then B's: the lanes' bodies are distinct, so the order does not matter).
-E2D_WIDE_FN __attribute__((always_inline)) void applyAndScatter(const Hinges& q, HingeSides s, HingeBodies& at, F px,
-                                                                F py) {
+E2D_WIDE_FN __attribute__((always_inline)) void applyAndScatter(const Hinges& q, HingeSides s,
+                                                                HingeBodies& at, F px, F py) {
     const F zero = splat(0.0f);
     s.avx = s.avx - lanes(q.invMassAx) * px;
     s.avy = s.avy - lanes(q.invMassAy) * py;
@@ -63,8 +64,8 @@ E2D_WIDE_FN __attribute__((always_inline)) void applyAndScatter(const Hinges& q,
     storeRows(s.bvx, s.bvy, s.bw, s.bflags, at.outB);
 }
 
-E2D_WIDE_FN __attribute__((always_inline)) void bodiesOf(const Hinges& q, std::span<BodyState> states,
-                                                         HingeBodies& at) {
+E2D_WIDE_FN __attribute__((always_inline)) void
+bodiesOf(const Hinges& q, std::span<BodyState> states, HingeBodies& at) {
     lanesOf(q.indexA, states, at.sink, at.inA, at.outA);
     lanesOf(q.indexB, states, at.sink, at.inB, at.outB);
 }
@@ -88,9 +89,11 @@ E2D_WIDE_FN void solveHinges(Hinges& q, std::span<BodyState> states, const Softn
     // pointMatrix()
     const F iA = lanes(q.invInertiaA);
     const F iB = lanes(q.invInertiaB);
-    const F k11 = ((lanes(q.invMassAx) + lanes(q.invMassBx)) + (iA * s.rAy) * s.rAy) + (iB * s.rBy) * s.rBy;
+    const F k11 =
+        ((lanes(q.invMassAx) + lanes(q.invMassBx)) + (iA * s.rAy) * s.rAy) + (iB * s.rBy) * s.rBy;
     const F k12 = ((-iA) * s.rAx) * s.rAy - (iB * s.rBx) * s.rBy;
-    const F k22 = ((lanes(q.invMassAy) + lanes(q.invMassBy)) + (iA * s.rAx) * s.rAx) + (iB * s.rBx) * s.rBx;
+    const F k22 =
+        ((lanes(q.invMassAy) + lanes(q.invMassBy)) + (iA * s.rAx) * s.rAx) + (iB * s.rBx) * s.rBx;
     // rhs = Cdot + biasRate * d; solve22(): det inverted where it is not zero (and no lane
     // divides by zero)
     const F bias = splat(soft.biasRate);

@@ -67,7 +67,8 @@ JointErrors fixJoint(const Joint& j, BodyState& a, BodyState& b) {
         if (!j.enableSpring && !j.enableLimit) {
             C = std::clamp(len - j.length, -kMaxLinearCorrection, kMaxLinearCorrection);
         } else if (j.enableLimit) {
-            C = pastLimit(len, std::max(j.minLength, kLinearSlop), j.maxLength, kMaxLinearCorrection);
+            C = pastLimit(len, std::max(j.minLength, kLinearSlop), j.maxLength,
+                          kMaxLinearCorrection);
         }
         if (C != 0.0f) {
             shift(j, a, b, f.rA, f.rB, (-j.axialMass * C) * normalize(f.d), 0.0f);
@@ -77,7 +78,8 @@ JointErrors fixJoint(const Joint& j, BodyState& a, BodyState& b) {
     }
     case JointType::Revolute:
         if (j.enableLimit && j.axialMass > 0.0f) {
-            const float C = pastLimit(currentAngle(j, a, b), j.lower, j.upper, kMaxAngularCorrection);
+            const float C =
+                pastLimit(currentAngle(j, a, b), j.lower, j.upper, kMaxAngularCorrection);
             turn(j, a, b, -j.axialMass * C);
             e.angular = std::abs(C);
         }
@@ -98,7 +100,8 @@ JointErrors fixJoint(const Joint& j, BodyState& a, BodyState& b) {
         const SlideFrame s = currentSlide(j, a, b);
         const float iA = j.invInertiaA;
         const float iB = j.invInertiaB;
-        Mat22 k{axisMass(j.invMassA, s.perp) + axisMass(j.invMassB, s.perp) + iA * s.s1 * s.s1 + iB * s.s2 * s.s2,
+        Mat22 k{axisMass(j.invMassA, s.perp) + axisMass(j.invMassB, s.perp) + iA * s.s1 * s.s1 +
+                    iB * s.s2 * s.s2,
                 iA * s.s1 + iB * s.s2, iA + iB};
         if (k.k22 == 0.0f) {
             k.k22 = 1.0f;
@@ -135,7 +138,8 @@ JointErrors fixJoint(const Joint& j, BodyState& a, BodyState& b) {
 
 } // namespace
 
-bool solveJointPositions(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states) {
+bool solveJointPositions(std::span<Joint> joints, std::span<const int> order,
+                         std::span<BodyState> states) {
     JointErrors worst;
     for (int k : order) {
         Joint& j = joints[static_cast<std::size_t>(k)];

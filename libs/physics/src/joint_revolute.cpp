@@ -16,7 +16,8 @@ namespace {
 // and held by its hinge loses its speed in both at once, where one row after the other hands
 // the door's momentum back and forth and leaves a rebound. The limit stays one-sided: if the
 // block would pull, the point is solved alone with the limit's impulse at zero.
-void solveRevolutePointAndLimit(Joint& j, BodyState& a, BodyState& b, const JointStep& step, bool useBias) {
+void solveRevolutePointAndLimit(Joint& j, BodyState& a, BodyState& b, const JointStep& step,
+                                bool useBias) {
     const float angle = currentAngle(j, a, b);
     const bool lowerSide = angle - j.lower <= j.upper - angle;
     const float side = lowerSide ? 1.0f : -1.0f;
@@ -49,7 +50,8 @@ void solveRevolutePointAndLimit(Joint& j, BodyState& a, BodyState& b, const Join
         const float c33 = k.k11 * k.k22 - k.k12 * k.k12;
         const Vec2 r{-pointRhs.x, -pointRhs.y};
         const float r3 = -limitRhs;
-        point = {det * (c11 * r.x + c12 * r.y + c13 * r3), det * (c12 * r.x + c22 * r.y + c23 * r3)};
+        point = {det * (c11 * r.x + c12 * r.y + c13 * r3),
+                 det * (c12 * r.x + c22 * r.y + c23 * r3)};
         limit = det * (c13 * r.x + c23 * r.y + c33 * r3);
     }
     if (limitImpulse + limit < 0.0f) {
@@ -71,10 +73,12 @@ void solveRevolute(Joint& j, BodyState& a, BodyState& b, const JointStep& step, 
     };
     auto Cdot = [&] { return b.angularVelocity - a.angularVelocity; };
     if (j.enableSpring && j.hertz > 0.0f) {
-        turn(solveSoftRow(j.springImpulse, j.axialMass, currentAngle(j, a, b), Cdot(), j.springSoftness));
+        turn(solveSoftRow(j.springImpulse, j.axialMass, currentAngle(j, a, b), Cdot(),
+                          j.springSoftness));
     }
     if (j.enableMotor) {
-        turn(solveMotorRow(j.motorImpulse, j.axialMass, j.motorSpeed, Cdot(), j.maxMotorForce * step.h));
+        turn(solveMotorRow(j.motorImpulse, j.axialMass, j.motorSpeed, Cdot(),
+                           j.maxMotorForce * step.h));
     }
     if (j.enableLimit && step.blockLimit && j.lower < j.upper) {
         solveRevolutePointAndLimit(j, a, b, step, useBias);
@@ -88,8 +92,9 @@ void solveRevolute(Joint& j, BodyState& a, BodyState& b, const JointStep& step, 
     const JointFrame f = currentFrame(j, a, b);
     const Softness soft = rigidSoftness(step, useBias);
     Vec2 Cdot2 = relativeVelocity(a, b, f.rA, f.rB);
-    Vec2 impulse = -soft.massScale * solve22(pointMatrix(j, f.rA, f.rB), Cdot2 + soft.biasRate * f.d) -
-                   soft.impulseScale * j.linearImpulse;
+    Vec2 impulse =
+        -soft.massScale * solve22(pointMatrix(j, f.rA, f.rB), Cdot2 + soft.biasRate * f.d) -
+        soft.impulseScale * j.linearImpulse;
     j.linearImpulse += impulse;
     applyPointImpulse(j, a, b, f.rA, f.rB, impulse);
 }

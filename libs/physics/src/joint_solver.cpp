@@ -60,8 +60,9 @@ void prepareJoint(Joint& j, const JointBodyView& a, const JointBodyView& b, cons
     // less than kAngleFollowCos from where its angle was last followed, the angle waits (no
     // atan2f).
     const Rot rotation = invMulRot(a.q, b.q);
-    const bool follow = !isPointJoint(j) ||
-                        rotation.c * j.angleRotation.c + rotation.s * j.angleRotation.s < kAngleFollowCos;
+    const bool follow =
+        !isPointJoint(j) ||
+        rotation.c * j.angleRotation.c + rotation.s * j.angleRotation.s < kAngleFollowCos;
     const float relative = follow ? wrapAngle(rotation.angle() - j.referenceAngle) : j.angle;
     j.angle0 = relative;
     if (!j.enableMotor) {
@@ -142,13 +143,27 @@ inline void withStates(Joint& j, std::span<BodyState> states, F&& f) {
 void warmStartJoint(Joint& j, std::span<BodyState> states) {
     withStates(j, states, [&](BodyState& a, BodyState& b) {
         switch (j.type) {
-        case JointType::Distance: warmStartDistance(j, a, b); break;
-        case JointType::Motor: warmStartMotor(j, a, b); break;
-        case JointType::Mouse: warmStartMouse(j, a, b); break;
-        case JointType::Prismatic: warmStartPrismatic(j, a, b); break;
-        case JointType::Revolute: warmStartRevolute(j, a, b); break;
-        case JointType::Weld: warmStartWeld(j, a, b); break;
-        case JointType::Wheel: warmStartWheel(j, a, b); break;
+        case JointType::Distance:
+            warmStartDistance(j, a, b);
+            break;
+        case JointType::Motor:
+            warmStartMotor(j, a, b);
+            break;
+        case JointType::Mouse:
+            warmStartMouse(j, a, b);
+            break;
+        case JointType::Prismatic:
+            warmStartPrismatic(j, a, b);
+            break;
+        case JointType::Revolute:
+            warmStartRevolute(j, a, b);
+            break;
+        case JointType::Weld:
+            warmStartWeld(j, a, b);
+            break;
+        case JointType::Wheel:
+            warmStartWheel(j, a, b);
+            break;
         }
     });
 }
@@ -156,13 +171,27 @@ void warmStartJoint(Joint& j, std::span<BodyState> states) {
 void solveJoint(Joint& j, std::span<BodyState> states, const JointStep& step, bool useBias) {
     withStates(j, states, [&](BodyState& a, BodyState& b) {
         switch (j.type) {
-        case JointType::Distance: solveDistance(j, a, b, step, useBias); break;
-        case JointType::Motor: solveMotor(j, a, b, step, useBias); break;
-        case JointType::Mouse: solveMouse(j, a, b, step, useBias); break;
-        case JointType::Prismatic: solvePrismatic(j, a, b, step, useBias); break;
-        case JointType::Revolute: solveRevolute(j, a, b, step, useBias); break;
-        case JointType::Weld: solveWeld(j, a, b, step, useBias); break;
-        case JointType::Wheel: solveWheel(j, a, b, step, useBias); break;
+        case JointType::Distance:
+            solveDistance(j, a, b, step, useBias);
+            break;
+        case JointType::Motor:
+            solveMotor(j, a, b, step, useBias);
+            break;
+        case JointType::Mouse:
+            solveMouse(j, a, b, step, useBias);
+            break;
+        case JointType::Prismatic:
+            solvePrismatic(j, a, b, step, useBias);
+            break;
+        case JointType::Revolute:
+            solveRevolute(j, a, b, step, useBias);
+            break;
+        case JointType::Weld:
+            solveWeld(j, a, b, step, useBias);
+            break;
+        case JointType::Wheel:
+            solveWheel(j, a, b, step, useBias);
+            break;
         }
     });
 }
@@ -180,7 +209,8 @@ void storeJointReaction(Joint& j, std::span<const BodyState> states, float invH)
     float torque = 0.0f;
     switch (j.type) {
     case JointType::Distance:
-        force = (j.springImpulse + j.motorImpulse + j.lowerImpulse - j.upperImpulse) * normalize(f.d);
+        force =
+            (j.springImpulse + j.motorImpulse + j.lowerImpulse - j.upperImpulse) * normalize(f.d);
         break;
     case JointType::Motor:
     case JointType::Weld:

@@ -13,8 +13,8 @@
 #include <cstdint>
 #include <iterator>
 #include <set>
-#include <utility>
 #include <span>
+#include <utility>
 #include <vector>
 
 // Joints as the world stores them (one slot each, every type's fields in one struct) and the
@@ -98,7 +98,8 @@ struct alignas(64) Joint {
     Vec2 reactionForce{0.0f, 0.0f};
     float reactionTorque = 0.0f;
 };
-static_assert(offsetof(Joint, maxMotorForce) + sizeof(float) <= 128, "the solver's fields fit two cache lines");
+static_assert(offsetof(Joint, maxMotorForce) + sizeof(float) <= 128,
+              "the solver's fields fit two cache lines");
 
 // Whether a prepared joint is a plain hinge: a revolute joint with nothing but its point (no
 // spring, motor or limit: a chain's, a net's, or a ragdoll's hinge without limits). The soft
@@ -169,8 +170,9 @@ int bestPointJointLanes();
 // (eights while five or more are left and groups.lanes is 8, then fours; the last group of a
 // level padded; a single hinge left over stays a slot) and go before the level's other
 // joints; a level's joints share no body, so this order gives the same results as slot order.
-void packJointPasses(std::span<const Joint> joints, std::span<const int> slots, std::span<const int> levels,
-                     bool quadsAllowed, PointJointGroups& groups, std::vector<int>& entries);
+void packJointPasses(std::span<const Joint> joints, std::span<const int> slots,
+                     std::span<const int> levels, bool quadsAllowed, PointJointGroups& groups,
+                     std::vector<int>& entries);
 // Copies every lane's prepared fields again from its joint: the groups' layout kept, the
 // joints prepared anew.
 void refreshPointJointGroups(PointJointGroups& groups, std::span<const Joint> joints);
@@ -271,7 +273,8 @@ struct JointErrors {
 // Classic mode: one non-linear Gauss-Seidel pass over the rigid parts' position errors
 // (joint_position.cpp). True when every error was within the slops before the pass. `order`
 // holds joint slots only (classic mode solves no point joints).
-bool solveJointPositions(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states);
+bool solveJointPositions(std::span<Joint> joints, std::span<const int> order,
+                         std::span<BodyState> states);
 
 // The joints of a pass split into the connected components of their graph over the moving
 // bodies (two joints sharing a moving body are in one; a static or sleeping side joins
@@ -285,8 +288,8 @@ struct JointComponents {
     std::vector<int> loops; // each component's independent closed loops through moving bodies
     std::size_t size() const { return start.empty() ? 0 : start.size() - 1; }
     std::span<const int> component(std::size_t c) const {
-        return std::span<const int>(slots).subspan(static_cast<std::size_t>(start[c]),
-                                                   static_cast<std::size_t>(start[c + 1] - start[c]));
+        return std::span<const int>(slots).subspan(
+            static_cast<std::size_t>(start[c]), static_cast<std::size_t>(start[c + 1] - start[c]));
     }
     // A union-find over the body states the joints touch: entries are valid where their stamp
     // is this call's, so a call costs the joints', not the world's bodies.
@@ -303,8 +306,8 @@ struct JointComponents {
 // Fills `out` from the pass entries `order` (joint slots; groups of plain hinges, k < 0, are
 // skipped, and with `skipLoopy` the joints marked loopy) over `stateCount` body states
 // (joint_components.cpp).
-void findJointComponents(std::span<const Joint> joints, std::span<const int> order, std::size_t stateCount,
-                         JointComponents& out, bool skipLoopy = false);
+void findJointComponents(std::span<const Joint> joints, std::span<const int> order,
+                         std::size_t stateCount, JointComponents& out, bool skipLoopy = false);
 
 // A connected group of `joints` joints with `loops` independent closed loops through moving
 // bodies is too loopy for the direct solve when it has more than 8 loops and more than one per
@@ -323,13 +326,13 @@ struct JointDirectScratch {
     // 3 x 3, row major; a joint's unused rows are padding. Doubles: a long limited arm or a
     // cantilever makes K ill-conditioned enough (1e6 and more) that floats lose the solve.
     using Block = std::array<double, 9>;
-    struct Rows {                       // a joint's rows: the motion of B's side minus A's
+    struct Rows { // a joint's rows: the motion of B's side minus A's
         Vec2 linA[3];
         float angA[3];
         Vec2 linB[3];
         float angB[3];
-        float* acc[3];     // the joint's accumulated impulse each row adds to (velocity solve)
-        bool oneSided[3];  // a limit: its accumulated impulse stays >= 0
+        float* acc[3];    // the joint's accumulated impulse each row adds to (velocity solve)
+        bool oneSided[3]; // a limit: its accumulated impulse stays >= 0
     };
     struct Entry {
         int node; // the other joint
@@ -343,8 +346,8 @@ struct JointDirectScratch {
     std::vector<std::array<double, 3>> solution;
     std::vector<Block> diag;
     std::vector<Block> inverseDiag;
-    std::vector<std::vector<Entry>> adjacency; // the remaining matrix's blocks by row
-    std::vector<std::vector<Entry>> factor;    // each joint's blocks when it was eliminated
+    std::vector<std::vector<Entry>> adjacency;   // the remaining matrix's blocks by row
+    std::vector<std::vector<Entry>> factor;      // each joint's blocks when it was eliminated
     std::vector<std::pair<int, int>> bodyJoints; // (body state, joint) of the moving sides
     std::vector<int> order;
     std::set<std::pair<int, int>> queue; // (degree, joint) of the joints not eliminated yet
@@ -361,16 +364,18 @@ struct JointDirectScratch {
 // (joint_direct.cpp), moving the states' deltaPosition and deltaRotation; a component stops
 // once its errors are within the slops. A component with too many closed loops gets
 // Gauss-Seidel passes (solveJointPositions()) instead; with `gaussSeidel`, every one does.
-void projectJointComponents(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
-                            int iterations, bool gaussSeidel, JointDirectScratch& scratch);
+void projectJointComponents(std::span<Joint> joints, std::span<const int> order,
+                            std::span<BodyState> states, int iterations, bool gaussSeidel,
+                            JointDirectScratch& scratch);
 
 // Soft step with SolverDef::jointSolver Direct: after a Gauss-Seidel pass, the velocities of
 // every rigid row of the joints `order` (slots) and of each revolute limit within reach, solved
 // component by component (K dlambda = -(J v + bias)), the impulses added to the joints'
 // accumulated ones (a limit's kept >= 0). A component whose graph fills in too much (a large
 // net) is left to the Gauss-Seidel pass.
-void solveJointsDirect(std::span<Joint> joints, std::span<const int> order, std::span<BodyState> states,
-                       const JointStep& step, bool useBias, JointDirectScratch& scratch);
+void solveJointsDirect(std::span<Joint> joints, std::span<const int> order,
+                       std::span<BodyState> states, const JointStep& step, bool useBias,
+                       JointDirectScratch& scratch);
 
 // Per-type passes (joint_<type>.cpp).
 void warmStartDistance(Joint& j, BodyState& a, BodyState& b);
@@ -508,18 +513,20 @@ inline SlideFrame currentSlide(const Joint& j, const BodyState& a, const BodySta
     const Vec2 axis = rotate(a.deltaRotation, j.axisA);
     const Vec2 perp = leftPerp(axis);
     const Vec2 arm = f.d + f.rA;
-    return {f, axis, perp, cross(arm, axis), cross(f.rB, axis), cross(arm, perp), cross(f.rB, perp)};
+    return {
+        f, axis, perp, cross(arm, axis), cross(f.rB, axis), cross(arm, perp), cross(f.rB, perp)};
 }
 // Impulse p along `dir` with lever arms (l1, l2), plus angular impulse l on both.
-inline void applySlideImpulse(const Joint& j, BodyState& a, BodyState& b, Vec2 dir, float p, float l1,
-                              float l2, float l = 0.0f) {
+inline void applySlideImpulse(const Joint& j, BodyState& a, BodyState& b, Vec2 dir, float p,
+                              float l1, float l2, float l = 0.0f) {
     a.linearVelocity -= j.invMassA * (p * dir);
     a.angularVelocity -= j.invInertiaA * (p * l1 + l);
     b.linearVelocity += j.invMassB * (p * dir);
     b.angularVelocity += j.invInertiaB * (p * l2 + l);
 }
 inline float slideVelocity(const BodyState& a, const BodyState& b, Vec2 dir, float l1, float l2) {
-    return dot(dir, b.linearVelocity - a.linearVelocity) + l2 * b.angularVelocity - l1 * a.angularVelocity;
+    return dot(dir, b.linearVelocity - a.linearVelocity) + l2 * b.angularVelocity -
+           l1 * a.angularVelocity;
 }
 
 } // namespace e2d::physics::detail

@@ -95,9 +95,9 @@ void World::Impl::prepareJoints(float dt, float h) {
         }
         const detail::Body& a = body(j.bodyA);
         const detail::Body& b = body(j.bodyB);
-        const bool moving = j.type == JointType::Mouse
-                                ? b.motion.solverIndex != kNullIndex
-                                : a.motion.solverIndex != kNullIndex || b.motion.solverIndex != kNullIndex;
+        const bool moving = j.type == JointType::Mouse ? b.motion.solverIndex != kNullIndex
+                                                       : a.motion.solverIndex != kNullIndex ||
+                                                             b.motion.solverIndex != kNullIndex;
         if (!a.enabled || !b.enabled) {
             j.reactionForce = {0.0f, 0.0f};
             j.reactionTorque = 0.0f;
@@ -107,7 +107,8 @@ void World::Impl::prepareJoints(float dt, float h) {
             continue; // asleep: keeps the reaction it fell asleep with
         }
         detail::prepareJoint(j, viewOf(a), viewOf(b), step);
-        s.jointKeys.push_back({static_cast<int>(ji), j.indexA, j.indexB, detail::isPointJoint(j) ? 1 : 0});
+        s.jointKeys.push_back(
+            {static_cast<int>(ji), j.indexA, j.indexB, detail::isPointJoint(j) ? 1 : 0});
     }
     if (directJoints(s.def)) {
         // Which groups of joints the direct solve leaves to Gauss-Seidel: a function of the
@@ -120,7 +121,8 @@ void World::Impl::prepareJoints(float dt, float h) {
     }
     static_assert(sizeof(Key) == 4 * sizeof(int), "JointKey compares as ints");
     if (!s.jointKeys.empty() && s.jointKeys.size() == s.lastJointKeys.size() &&
-        std::memcmp(s.jointKeys.data(), s.lastJointKeys.data(), s.jointKeys.size() * sizeof(Key)) == 0) {
+        std::memcmp(s.jointKeys.data(), s.lastJointKeys.data(), s.jointKeys.size() * sizeof(Key)) ==
+            0) {
         // The same joints, sides and kinds as last step: its levels and pass order hold.
         s.jointBodies = s.lastJointBodies;
         s.jointsReused = true;
@@ -148,8 +150,10 @@ void World::Impl::orderJoints() {
     for (std::size_t k = 0; k < n; ++k) {
         const detail::Simulation::ConstraintBodies& jb = s.jointBodies[k];
         // A static or sleeping side (-1) is a fixed state of the joint's own.
-        const int lastA = jb.indexA >= 0 ? s.jointBodyLevel[static_cast<std::size_t>(jb.indexA)] : -1;
-        const int lastB = jb.indexB >= 0 ? s.jointBodyLevel[static_cast<std::size_t>(jb.indexB)] : -1;
+        const int lastA =
+            jb.indexA >= 0 ? s.jointBodyLevel[static_cast<std::size_t>(jb.indexA)] : -1;
+        const int lastB =
+            jb.indexB >= 0 ? s.jointBodyLevel[static_cast<std::size_t>(jb.indexB)] : -1;
         const int level = std::max(lastA, lastB) + 1;
         if (jb.indexA >= 0) {
             s.jointBodyLevel[static_cast<std::size_t>(jb.indexA)] = level;
@@ -170,8 +174,8 @@ void World::Impl::orderJoints() {
     // says each one's level.
     s.jointSorted.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
-        s.jointSorted[static_cast<std::size_t>(s.jointLevelStart[static_cast<std::size_t>(s.jointLevel[k])]++)] =
-            static_cast<int>(k);
+        s.jointSorted[static_cast<std::size_t>(
+            s.jointLevelStart[static_cast<std::size_t>(s.jointLevel[k])]++)] = static_cast<int>(k);
     }
     s.jointScratch.assign(s.activeJoints.begin(), s.activeJoints.end());
     s.jointBodiesScratch.assign(s.jointBodies.begin(), s.jointBodies.end());
@@ -188,7 +192,8 @@ void World::Impl::packJoints() {
     detail::Simulation& s = sim;
     // Classic mode's position pass reads the joint slots: no groups there.
     const bool groups = s.def.mode == SolverMode::SoftStep && !directJoints(s.def);
-    const auto layout = groups ? detail::Simulation::JointLayout::Scalar : detail::Simulation::JointLayout::ScalarNoGroups;
+    const auto layout = groups ? detail::Simulation::JointLayout::Scalar
+                               : detail::Simulation::JointLayout::ScalarNoGroups;
     if (s.jointsReused && s.jointLayout == layout) {
         // Last step's entries and groups, the lanes' fields from the joints prepared anew.
         detail::refreshPointJointGroups(s.pointJoints, joints);
@@ -198,7 +203,8 @@ void World::Impl::packJoints() {
     s.jointOrder.clear();
     s.pointJoints.clear();
     s.pointJoints.lanes = std::min(detail::bestPointJointLanes(), s.simdLanes);
-    detail::packJointPasses(joints, s.activeJoints, s.activeJointLevels, groups, s.pointJoints, s.jointOrder);
+    detail::packJointPasses(joints, s.activeJoints, s.activeJointLevels, groups, s.pointJoints,
+                            s.jointOrder);
     s.jointLayout = layout;
 }
 
@@ -230,7 +236,8 @@ void World::Impl::assignJointBlocks(bool scheduleKept) {
     s.jointScratch.resize(n);
     s.jointSorted.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
-        const std::size_t to = static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(blockOf(k))]++);
+        const std::size_t to =
+            static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(blockOf(k))]++);
         s.jointScratch[to] = s.activeJoints[k];
         s.jointSorted[to] = s.activeJointLevels[k];
     }
@@ -241,9 +248,11 @@ void World::Impl::assignJointBlocks(bool scheduleKept) {
     for (std::size_t b = 0; b < blocks; ++b) {
         const int end = s.blockJointStart[b + 1];
         const auto count = static_cast<std::size_t>(end - first);
-        detail::packJointPasses(joints, std::span<const int>(s.jointScratch).subspan(static_cast<std::size_t>(first), count),
-                                std::span<const int>(s.jointSorted).subspan(static_cast<std::size_t>(first), count),
-                                !directJoints(s.def), s.pointJoints, s.blockJoints);
+        detail::packJointPasses(
+            joints,
+            std::span<const int>(s.jointScratch).subspan(static_cast<std::size_t>(first), count),
+            std::span<const int>(s.jointSorted).subspan(static_cast<std::size_t>(first), count),
+            !directJoints(s.def), s.pointJoints, s.blockJoints);
         first = end;
         s.blockJointStart[b + 1] = static_cast<int>(s.blockJoints.size());
     }

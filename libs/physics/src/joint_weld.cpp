@@ -11,7 +11,8 @@ void warmStartWeld(Joint& j, BodyState& a, BodyState& b) {
 
 void solveWeld(Joint& j, BodyState& a, BodyState& b, const JointStep& step, bool useBias) {
     {
-        const Softness soft = j.angularHertz > 0.0f ? j.angularSoftness : rigidSoftness(step, useBias);
+        const Softness soft =
+            j.angularHertz > 0.0f ? j.angularSoftness : rigidSoftness(step, useBias);
         float impulse = solveSoftRow(j.angularImpulse, j.angularMass, currentAngle(j, a, b),
                                      b.angularVelocity - a.angularVelocity, soft);
         a.angularVelocity -= j.invInertiaA * impulse;
@@ -20,8 +21,9 @@ void solveWeld(Joint& j, BodyState& a, BodyState& b, const JointStep& step, bool
     const JointFrame f = currentFrame(j, a, b);
     const Softness soft = j.hertz > 0.0f ? j.springSoftness : rigidSoftness(step, useBias);
     Vec2 Cdot = relativeVelocity(a, b, f.rA, f.rB);
-    Vec2 impulse = -soft.massScale * solve22(pointMatrix(j, f.rA, f.rB), Cdot + soft.biasRate * f.d) -
-                   soft.impulseScale * j.linearImpulse;
+    Vec2 impulse =
+        -soft.massScale * solve22(pointMatrix(j, f.rA, f.rB), Cdot + soft.biasRate * f.d) -
+        soft.impulseScale * j.linearImpulse;
     j.linearImpulse += impulse;
     applyPointImpulse(j, a, b, f.rA, f.rB, impulse);
 }

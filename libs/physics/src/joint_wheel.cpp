@@ -14,8 +14,9 @@ void warmStartWheel(Joint& j, BodyState& a, BodyState& b) {
 
 void solveWheel(Joint& j, BodyState& a, BodyState& b, const JointStep& step, bool useBias) {
     if (j.enableMotor) {
-        float impulse = solveMotorRow(j.motorImpulse, j.angularMass, j.motorSpeed,
-                                      b.angularVelocity - a.angularVelocity, j.maxMotorForce * step.h);
+        float impulse =
+            solveMotorRow(j.motorImpulse, j.angularMass, j.motorSpeed,
+                          b.angularVelocity - a.angularVelocity, j.maxMotorForce * step.h);
         a.angularVelocity -= j.invInertiaA * impulse;
         b.angularVelocity += j.invInertiaB * impulse;
     }
@@ -27,15 +28,18 @@ void solveWheel(Joint& j, BodyState& a, BodyState& b, const JointStep& step, boo
         push(solveSoftRow(j.springImpulse, j.axialMass, translation, Cdot(), j.springSoftness));
     }
     if (j.enableLimit) {
-        push(solveLimitRow(j.lowerImpulse, j.axialMass, translation - j.lower, Cdot(), step, useBias));
-        push(-solveLimitRow(j.upperImpulse, j.axialMass, j.upper - translation, -Cdot(), step, useBias));
+        push(solveLimitRow(j.lowerImpulse, j.axialMass, translation - j.lower, Cdot(), step,
+                           useBias));
+        push(-solveLimitRow(j.upperImpulse, j.axialMass, j.upper - translation, -Cdot(), step,
+                            useBias));
     }
     // B's anchor stays on the line.
     const float k = axisMass(j.invMassA, s.perp) + axisMass(j.invMassB, s.perp) +
                     j.invInertiaA * s.s1 * s.s1 + j.invInertiaB * s.s2 * s.s2;
     const float perpMass = k > 0.0f ? 1.0f / k : 0.0f;
-    float impulse = solveSoftRow(j.perpImpulse, perpMass, dot(s.perp, s.f.d),
-                                 slideVelocity(a, b, s.perp, s.s1, s.s2), rigidSoftness(step, useBias));
+    float impulse =
+        solveSoftRow(j.perpImpulse, perpMass, dot(s.perp, s.f.d),
+                     slideVelocity(a, b, s.perp, s.s1, s.s2), rigidSoftness(step, useBias));
     applySlideImpulse(j, a, b, s.perp, impulse, s.s1, s.s2);
 }
 

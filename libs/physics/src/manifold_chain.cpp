@@ -115,8 +115,10 @@ Polygon polygonInFrame(const ShapeGeometry& g, const Transform& bInA) {
         p = std::get<Polygon>(g);
     }
     for (int i = 0; i < p.count; ++i) {
-        p.vertices[static_cast<std::size_t>(i)] = transformPoint(bInA, p.vertices[static_cast<std::size_t>(i)]);
-        p.normals[static_cast<std::size_t>(i)] = rotate(bInA.q, p.normals[static_cast<std::size_t>(i)]);
+        p.vertices[static_cast<std::size_t>(i)] =
+            transformPoint(bInA, p.vertices[static_cast<std::size_t>(i)]);
+        p.normals[static_cast<std::size_t>(i)] =
+            rotate(bInA.q, p.normals[static_cast<std::size_t>(i)]);
     }
     p.centroid = transformPoint(bInA, p.centroid);
     return p;

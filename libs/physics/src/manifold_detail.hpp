@@ -24,8 +24,8 @@ inline constexpr float kFaceOffset = 0.01f * kLinearSlop;
 // A manifold in A's local frame, before the move to world space: only the fields the pair
 // routines compute. Only the first `count` points are written: nothing is zeroed.
 struct LocalManifold {
-    Vec2 normal;          // from A to B, A's frame
-    Vec2 points[2];       // midway between the surfaces, A's frame
+    Vec2 normal;    // from A to B, A's frame
+    Vec2 points[2]; // midway between the surfaces, A's frame
     float separations[2];
     std::uint16_t ids[2];
     int count;
@@ -37,8 +37,8 @@ struct LocalManifold {
 inline ManifoldPoint toWorldPoint(Vec2 local, float separation, std::uint16_t id,
                                   const Transform& xfA, Vec2 shift) {
     const Vec2 anchorA = rotate(xfA.q, local);
-    return ManifoldPoint{anchorA + xfA.p, anchorA, anchorA + shift, separation, 0.0f, 0.0f, id,
-                         false};
+    return ManifoldPoint{
+        anchorA + xfA.p, anchorA, anchorA + shift, separation, 0.0f, 0.0f, id, false};
 }
 
 inline Manifold localToWorld(const LocalManifold& m, const Transform& xfA, const Transform& xfB) {
@@ -48,12 +48,11 @@ inline Manifold localToWorld(const LocalManifold& m, const Transform& xfA, const
         return Manifold{};
     }
     const Vec2 shift = xfA.p - xfB.p;
-    return Manifold{
-        rotate(xfA.q, m.normal),
-        {toWorldPoint(m.points[0], m.separations[0], m.ids[0], xfA, shift),
-         m.count > 1 ? toWorldPoint(m.points[1], m.separations[1], m.ids[1], xfA, shift)
-                     : ManifoldPoint{}},
-        m.count};
+    return Manifold{rotate(xfA.q, m.normal),
+                    {toWorldPoint(m.points[0], m.separations[0], m.ids[0], xfA, shift),
+                     m.count > 1 ? toWorldPoint(m.points[1], m.separations[1], m.ids[1], xfA, shift)
+                                 : ManifoldPoint{}},
+                    m.count};
 }
 
 // One point in A's frame: the usual result of the round-shape routines.

@@ -48,8 +48,8 @@ inline Manifold onePoint(Vec2 normal, Vec2 point, Vec2 anchorA, Vec2 anchorB, fl
 
 // One point between two round features: cores at pA and pB (A's frame) `distance` apart along
 // unit `normal`, radii rA and rB.
-detail::LocalManifold singlePoint(Vec2 pA, Vec2 pB, Vec2 normal, float distance, float rA,
-                                  float rB, std::uint16_t id) {
+detail::LocalManifold singlePoint(Vec2 pA, Vec2 pB, Vec2 normal, float distance, float rA, float rB,
+                                  std::uint16_t id) {
     detail::LocalManifold m;
     m.normal = normal;
     m.points[0] = 0.5f * ((pA + rA * normal) + (pB - rB * normal));
@@ -153,8 +153,8 @@ inline FaceSeparation maxFaceSeparation(const Polygon& a, __m128 cx, __m128 cy) 
 
 } // namespace
 
-Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b, const Transform& xfB,
-                        float margin) {
+Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
+                        const Transform& xfB, float margin) {
     // Centres relative to A's origin along world axes: no frame change is needed for two
     // circles, and the anchors come out directly.
     const Vec2 cA = rotate(xfA.q, a.center);
@@ -321,18 +321,18 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
         // (the scalar path's products and sum). dot(c - v2, e) is exactly -dot(v2 - c, e) (up
         // to the sign of a zero, which no comparison with 0 sees), so the tests match it.
         // Vec2 is only 4-byte aligned: _mm_loadl_epi64 reads through an unaligned type.
-        const __m128 v12 = _mm_loadh_pi(
-            _mm_castsi128_ps(
-                _mm_loadl_epi64(reinterpret_cast<const __m128i*>(&a.vertices[face].x))),
-            reinterpret_cast<const __m64*>(&a.vertices[next].x));
+        const __m128 v12 = _mm_loadh_pi(_mm_castsi128_ps(_mm_loadl_epi64(
+                                            reinterpret_cast<const __m128i*>(&a.vertices[face].x))),
+                                        reinterpret_cast<const __m64*>(&a.vertices[next].x));
         const __m128 d = _mm_sub_ps(_mm_unpacklo_ps(cx, cy), v12);
         const __m128 e = _mm_sub_ps(_mm_movehl_ps(v12, v12), v12);
         const __m128 p = _mm_mul_ps(d, _mm_movelh_ps(e, e));
         const __m128 u = _mm_add_ps(p, _mm_shuffle_ps(p, p, _MM_SHUFFLE(2, 3, 0, 1)));
         // Lane 2 negated: both lanes then read "< 0: beyond this vertex".
-        const int beyond = _mm_movemask_ps(_mm_cmplt_ps(
-                               _mm_xor_ps(u, _mm_setr_ps(0.0f, 0.0f, -0.0f, 0.0f)),
-                               _mm_setzero_ps())) & 5;
+        const int beyond =
+            _mm_movemask_ps(_mm_cmplt_ps(_mm_xor_ps(u, _mm_setr_ps(0.0f, 0.0f, -0.0f, 0.0f)),
+                                         _mm_setzero_ps())) &
+            5;
         if (beyond != 0) {
             // Vertex region: the distance to the vertex, tested squared so that a pair beyond
             // the margin costs no square root.

@@ -66,9 +66,10 @@ inline WorkFrame workFrameOf(const Polygon& a, const Transform& xfA) {
 // Shared by both search paths, so that they can differ only in how they find the axis.
 // Forced inline: with four callers GCC kept it out of line, and the PolygonRefs and the result
 // went through memory on every touching pair's critical path.
-[[gnu::always_inline]] inline LocalManifold contactOnAxis(const PolygonRef& localA, const PolygonRef& localB,
-                                   float margin, bool flip, int edge1, int incident,
-                                   float separation) {
+[[gnu::always_inline]] inline LocalManifold contactOnAxis(const PolygonRef& localA,
+                                                          const PolygonRef& localB, float margin,
+                                                          bool flip, int edge1, int incident,
+                                                          float separation) {
     const float radius = localA.radius + localB.radius;
     const float limit = margin + radius;
     const PolygonRef& poly1 = flip ? localB : localA;
@@ -82,9 +83,8 @@ inline WorkFrame workFrameOf(const Polygon& a, const Transform& xfA) {
         const int i12 = i11 + 1 < poly1.count ? i11 + 1 : 0;
         const int i21 = incident;
         const int i22 = i21 + 1 < poly2.count ? i21 + 1 : 0;
-        const detail::SegmentDistance sd =
-            detail::segmentDistance(poly1.vertices[i11], poly1.vertices[i12], poly2.vertices[i21],
-                                    poly2.vertices[i22]);
+        const detail::SegmentDistance sd = detail::segmentDistance(
+            poly1.vertices[i11], poly1.vertices[i12], poly2.vertices[i21], poly2.vertices[i22]);
         if (sd.distanceSquared > limit * limit) {
             return noContact();
         }
@@ -244,8 +244,9 @@ inline int findIncidentEdge(Vec2 reference, const Lanes<G>& normals) {
 // GA, GB: registers per coordinate for A and B (1 up to 4 vertices, 2 up to 8). Inlined into
 // collidePolygons so that choosing the instance costs two compares, not a second call.
 template <int GA, int GB>
-[[gnu::always_inline]] inline Manifold collideLanes(const Polygon& a, const Transform& xfA, const Polygon& b,
-                      const Transform& xfB, float margin) {
+[[gnu::always_inline]] inline Manifold collideLanes(const Polygon& a, const Transform& xfA,
+                                                    const Polygon& b, const Transform& xfB,
+                                                    float margin) {
     const auto [frame, origin, shift] = workFrameOf(a, xfA);
     // Work in A's frame: B's vertices are moved there first, its normals only once A's faces
     // found no separating axis, so separated pairs skip that work.

@@ -11,7 +11,8 @@ namespace {
 void checkDensity(float density) {
     if (!isWithinHuge(density) || density < 0.0f) {
         core::throwError("physics::computeMass()",
-                     "density must be finite and in [0, kHuge (" + core::formatNumber(kHuge) + " kg/m^2)], got " + core::formatNumber(density));
+                         "density must be finite and in [0, kHuge (" + core::formatNumber(kHuge) +
+                             " kg/m^2)], got " + core::formatNumber(density));
     }
 }
 

@@ -71,7 +71,8 @@ void forEachCandidate(const MoverQuery& query, const Aabb& box, Vec2 center,
 // leans past the end), where the chain goes on flat or turns up (towards its front): the
 // neighbouring segment's face already holds the mover there, and the corner's tilted normal would
 // make it bump over every seam. Where the chain turns down (a hilltop) the corner is real and kept.
-bool coveredByNeighbour(const ChainSegment& chain, const Transform& xf, const MoverContact& contact) {
+bool coveredByNeighbour(const ChainSegment& chain, const Transform& xf,
+                        const MoverContact& contact) {
     const Segment& seg = chain.segment;
     const Vec2 edge = seg.point2 - seg.point1;
     const Vec2 normal = invRotate(xf.q, contact.normal);
@@ -185,8 +186,8 @@ float castMover(const MoverQuery& query, Vec2 position, Vec2 translation,
         cast.maxFraction = best;
         const CastOutput out = shapeCast(cast);
         if (out.hit) {
-            const MoverContact met{candidate.id, candidate.body, out.point, out.normal, 0.0f,
-                                   surfaceOf(query, out.normal)};
+            const MoverContact met{candidate.id, candidate.body, out.point,
+                                   out.normal,   0.0f,           surfaceOf(query, out.normal)};
             if (out.fraction < best && accepted(query, met)) {
                 best = out.fraction;
             }

@@ -14,8 +14,8 @@ namespace e2d::physics::detail {
 /// What both queries need to know about the mover.
 struct MoverQuery {
     const World* world = nullptr;
-    Capsule capsule{};   ///< relative to the position, metres
-    float skin = 0.0f;   ///< metres
+    Capsule capsule{}; ///< relative to the position, metres
+    float skin = 0.0f; ///< metres
     QueryFilter filter{};
     BodyId ignoreBody{};
     Vec2 up{0.0f, 1.0f};

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "object_pose.hpp"
 
-#include <glm/mat4x4.hpp>
 #include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 #include <glm/vec4.hpp>
 
@@ -32,8 +32,8 @@ void setWorldPose(core::GameObject& object, const Pose& metres, float unitsPerMe
         return;
     }
     // The parent's world matrix may scale; its inverse takes the world point into its frame.
-    const glm::vec4 local =
-        glm::inverse(parent->worldTransform()) * glm::vec4(pose.position.x, pose.position.y, 0.0f, 1.0f);
+    const glm::vec4 local = glm::inverse(parent->worldTransform()) *
+                            glm::vec4(pose.position.x, pose.position.y, 0.0f, 1.0f);
     object.setPosition(glm::vec3(local.x, local.y, z));
     object.setOrientation(pose.angle - parent->worldOrientation());
 }
@@ -72,8 +72,8 @@ void relativePlacement(const core::GameObject& body, const core::GameObject& des
     offset = scale * offset;
 }
 
-ShapeGeometry placedGeometry(const ShapeGeometry& geometry, const glm::mat2& linear, glm::vec2 offset,
-                             float unitsPerMetre) {
+ShapeGeometry placedGeometry(const ShapeGeometry& geometry, const glm::mat2& linear,
+                             glm::vec2 offset, float unitsPerMetre) {
     if (linear == glm::mat2(1.0f) && offset == glm::vec2(0.0f) && unitsPerMetre == 1.0f) {
         return geometry;
     }
@@ -90,10 +90,15 @@ ShapeGeometry placedGeometry(const ShapeGeometry& geometry, const glm::mat2& lin
         ShapeGeometry operator()(const Capsule& c) const {
             return Capsule{p(c.center1), p(c.center2), l(c.radius)};
         }
-        ShapeGeometry operator()(const Segment& g) const { return Segment{p(g.point1), p(g.point2)}; }
+        ShapeGeometry operator()(const Segment& g) const {
+            return Segment{p(g.point1), p(g.point2)};
+        }
         ShapeGeometry operator()(const ChainSegment& g) const {
-            return ChainSegment{{p(g.segment.point1), p(g.segment.point2)}, p(g.ghost1),
-                                p(g.ghost2), g.hasGhost1, g.hasGhost2};
+            return ChainSegment{{p(g.segment.point1), p(g.segment.point2)},
+                                p(g.ghost1),
+                                p(g.ghost2),
+                                g.hasGhost1,
+                                g.hasGhost2};
         }
         ShapeGeometry operator()(const Polygon& poly) const {
             std::vector<Vec2> points(poly.vertices.begin(), poly.vertices.begin() + poly.count);
@@ -106,9 +111,10 @@ ShapeGeometry placedGeometry(const ShapeGeometry& geometry, const glm::mat2& lin
     ShapeGeometry placed = std::visit(Mapper{linear, offset, radiusScale, unitsPerMetre}, geometry);
     validate(placed, "physics::Collider");
     // A round shape shrunk below the linear slop is as degenerate as a polygon would be.
-    const float radius = std::holds_alternative<Circle>(placed)    ? std::get<Circle>(placed).radius
-                         : std::holds_alternative<Capsule>(placed) ? std::get<Capsule>(placed).radius
-                                                                   : kLinearSlop;
+    const float radius = std::holds_alternative<Circle>(placed) ? std::get<Circle>(placed).radius
+                         : std::holds_alternative<Capsule>(placed)
+                             ? std::get<Capsule>(placed).radius
+                             : kLinearSlop;
     if (!(radius >= kLinearSlop)) {
         throw core::Error("physics::Collider: the scaled radius " + std::to_string(radius) +
                           " m is below the linear slop");
@@ -125,7 +131,9 @@ bool movedApart(const Pose& a, Vec2 position, float angle) {
 
 bool placementsDiffer(const glm::mat2& linearA, glm::vec2 offsetA, const glm::mat2& linearB,
                       glm::vec2 offsetB) {
-    const auto differ = [](float a, float b) { return !(std::fabs(a - b) <= 1e-5f * (1.0f + std::fabs(a))); };
+    const auto differ = [](float a, float b) {
+        return !(std::fabs(a - b) <= 1e-5f * (1.0f + std::fabs(a)));
+    };
     return differ(linearA[0][0], linearB[0][0]) || differ(linearA[0][1], linearB[0][1]) ||
            differ(linearA[1][0], linearB[1][0]) || differ(linearA[1][1], linearB[1][1]) ||
            differ(offsetA.x, offsetB.x) || differ(offsetA.y, offsetB.y);

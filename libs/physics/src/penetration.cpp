@@ -20,7 +20,7 @@ struct Polytope {
     Vec2 w[kMaxPolytope];
     int indexA[kMaxPolytope];
     int indexB[kMaxPolytope];
-    Vec2 normal[kMaxPolytope]; // outward normal of edge i -> i + 1
+    Vec2 normal[kMaxPolytope];    // outward normal of edge i -> i + 1
     float distance[kMaxPolytope]; // signed distance of that edge's line from the origin
     int count = 0;
 

@@ -43,8 +43,9 @@ void PhysicsSystem::restoreSnapshot(const PhysicsSnapshot& snapshot) {
         object.snapRenderPose();
     }
     for (CharacterController* c : characters_) {
-        const auto saved = std::find_if(snapshot.characters_.begin(), snapshot.characters_.end(),
-                                        [c](const PhysicsSnapshot::Character& s) { return s.component == c; });
+        const auto saved =
+            std::find_if(snapshot.characters_.begin(), snapshot.characters_.end(),
+                         [c](const PhysicsSnapshot::Character& s) { return s.component == c; });
         if (saved == snapshot.characters_.end()) {
             continue; // made after the save: it goes on from where it is
         }

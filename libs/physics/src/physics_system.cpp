@@ -23,7 +23,8 @@ namespace {
 float checkedScale(float unitsPerMetre) {
     if (!std::isfinite(unitsPerMetre) || unitsPerMetre <= 0.0f) {
         throw core::Error("physics::PhysicsSystem::PhysicsSystem(): unitsPerMetre must be finite "
-                          "and > 0, got " + core::formatNumber(unitsPerMetre));
+                          "and > 0, got " +
+                          core::formatNumber(unitsPerMetre));
     }
     return unitsPerMetre;
 }
@@ -43,7 +44,8 @@ PhysicsSystem::~PhysicsSystem() = default;
 
 std::optional<RayResult> PhysicsSystem::castRayClosest(Vec2 origin, Vec2 translation,
                                                        const QueryFilter& filter) const {
-    std::optional<RayResult> hit = world_.castRayClosest(toMetres(origin), toMetres(translation), filter);
+    std::optional<RayResult> hit =
+        world_.castRayClosest(toMetres(origin), toMetres(translation), filter);
     if (hit) {
         hit->point = toUnits(hit->point);
     }
@@ -52,18 +54,22 @@ std::optional<RayResult> PhysicsSystem::castRayClosest(Vec2 origin, Vec2 transla
 
 std::vector<RayResult> PhysicsSystem::castRayAll(Vec2 origin, Vec2 translation,
                                                  const QueryFilter& filter) const {
-    std::vector<RayResult> hits = world_.castRayAll(toMetres(origin), toMetres(translation), filter);
+    std::vector<RayResult> hits =
+        world_.castRayAll(toMetres(origin), toMetres(translation), filter);
     for (RayResult& hit : hits) {
         hit.point = toUnits(hit.point);
     }
     return hits;
 }
 
-std::optional<RayResult> PhysicsSystem::castShape(const ShapeGeometry& geometry, Vec2 position, float angle,
-                                                  Vec2 translation, const QueryFilter& filter) const {
-    const ShapeGeometry metres = detail::placedGeometry(geometry, glm::mat2(1.0f), {0.0f, 0.0f}, unitsPerMetre_);
-    std::optional<RayResult> hit = world_.castShape(
-        metres, Transform{toMetres(position), Rot::fromAngle(angle)}, toMetres(translation), filter);
+std::optional<RayResult> PhysicsSystem::castShape(const ShapeGeometry& geometry, Vec2 position,
+                                                  float angle, Vec2 translation,
+                                                  const QueryFilter& filter) const {
+    const ShapeGeometry metres =
+        detail::placedGeometry(geometry, glm::mat2(1.0f), {0.0f, 0.0f}, unitsPerMetre_);
+    std::optional<RayResult> hit =
+        world_.castShape(metres, Transform{toMetres(position), Rot::fromAngle(angle)},
+                         toMetres(translation), filter);
     if (hit) {
         hit->point = toUnits(hit->point);
     }
@@ -78,10 +84,12 @@ std::vector<ShapeId> PhysicsSystem::overlapAabb(const Aabb& box, const QueryFilt
     return world_.overlapAabb(Aabb{toMetres(box.lower), toMetres(box.upper)}, filter);
 }
 
-std::vector<ShapeId> PhysicsSystem::overlapShape(const ShapeGeometry& geometry, Vec2 position, float angle,
-                                                 const QueryFilter& filter) const {
-    const ShapeGeometry metres = detail::placedGeometry(geometry, glm::mat2(1.0f), {0.0f, 0.0f}, unitsPerMetre_);
-    return world_.overlapShape(metres, Transform{toMetres(position), Rot::fromAngle(angle)}, filter);
+std::vector<ShapeId> PhysicsSystem::overlapShape(const ShapeGeometry& geometry, Vec2 position,
+                                                 float angle, const QueryFilter& filter) const {
+    const ShapeGeometry metres =
+        detail::placedGeometry(geometry, glm::mat2(1.0f), {0.0f, 0.0f}, unitsPerMetre_);
+    return world_.overlapShape(metres, Transform{toMetres(position), Rot::fromAngle(angle)},
+                               filter);
 }
 
 // --- bookkeeping ---
@@ -167,8 +175,9 @@ void PhysicsSystem::updatePreSolve() {
     // Installed lazily (a world without rules pays no callback per contact) and kept once
     // installed: removing it is not allowed from inside a step, where a collider may go.
     if (ruledColliders_ > 0 && !preSolveInstalled_) {
-        world_.setPreSolveCallback(
-            [this](ShapeId a, ShapeId b, const Manifold& manifold) { return preSolve(a, b, manifold); });
+        world_.setPreSolveCallback([this](ShapeId a, ShapeId b, const Manifold& manifold) {
+            return preSolve(a, b, manifold);
+        });
         preSolveInstalled_ = true;
     }
 }
@@ -227,8 +236,8 @@ bool PhysicsSystem::preSolve(ShapeId a, ShapeId b, const Manifold& manifold) con
         }
         if (self->def_.preSolve) {
             Collider* o = const_cast<Collider*>(other);
-            return self->def_.preSolve(contactFor(&manifold, selfIsA, o != nullptr ? o->gameObject() : nullptr,
-                                                  o, unitsPerMetre_));
+            return self->def_.preSolve(contactFor(
+                &manifold, selfIsA, o != nullptr ? o->gameObject() : nullptr, o, unitsPerMetre_));
         }
         return true;
     };
@@ -361,12 +370,13 @@ void PhysicsSystem::dispatchEvents() {
     } reset{dispatching_};
     // Sends the event to the collider's object, and to its Rigidbody's object when that is an
     // ancestor (a compound body hears of its children's contacts).
-    const auto send = [this]<class Event>(Collider* receiver, Event, const Manifold* manifold, bool receiverIsA,
-                                          Collider* other) {
+    const auto send = [this]<class Event>(Collider* receiver, Event, const Manifold* manifold,
+                                          bool receiverIsA, Collider* other) {
         if (receiver == nullptr) {
             return;
         }
-        const Event event{contactFor(manifold, receiverIsA, other != nullptr ? other->gameObject() : nullptr, other,
+        const Event event{contactFor(manifold, receiverIsA,
+                                     other != nullptr ? other->gameObject() : nullptr, other,
                                      unitsPerMetre_)};
         core::GameObject* object = receiver->gameObject();
         Rigidbody* owner = receiver->owner_;
@@ -382,9 +392,10 @@ void PhysicsSystem::dispatchEvents() {
         // narrow phase, before the solver moved them).
         Manifold now = e.manifold;
         if (world_.isValid(e.shapeA) && world_.isValid(e.shapeB)) {
-            now = collide(world_.shapeGeometry(e.shapeA), world_.transform(world_.shapeBody(e.shapeA)),
-                          world_.shapeGeometry(e.shapeB), world_.transform(world_.shapeBody(e.shapeB)),
-                          world_.collisionAlgorithm(), world_.speculativeDistance());
+            now = collide(
+                world_.shapeGeometry(e.shapeA), world_.transform(world_.shapeBody(e.shapeA)),
+                world_.shapeGeometry(e.shapeB), world_.transform(world_.shapeBody(e.shapeB)),
+                world_.collisionAlgorithm(), world_.speculativeDistance());
             if (now.pointCount == 0) {
                 now = e.manifold;
             }

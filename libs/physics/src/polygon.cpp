@@ -12,14 +12,17 @@ namespace {
 
 void checkRadius(float radius, const char* function) {
     if (!isWithinHuge(radius) || radius < 0.0f) {
-        core::throwError(function, "radius must be finite and in [0, kHuge (" + core::formatNumber(kHuge) + " m)], got " + core::formatNumber(radius));
+        core::throwError(function, "radius must be finite and in [0, kHuge (" +
+                                       core::formatNumber(kHuge) + " m)], got " +
+                                       core::formatNumber(radius));
     }
 }
 
 void checkHalfExtent(float value, const char* name, const char* function) {
     if (!isWithinHuge(value) || value <= 0.0f) {
-        core::throwError(function, std::string("half-extent ") + name + " must be finite and in (0, kHuge (" + core::formatNumber(kHuge) + " m)], got " +
-                                   core::formatNumber(value));
+        core::throwError(function,
+                         std::string("half-extent ") + name + " must be finite and in (0, kHuge (" +
+                             core::formatNumber(kHuge) + " m)], got " + core::formatNumber(value));
     }
 }
 
@@ -54,14 +57,15 @@ Polygon finishPolygon(const Vec2* vertices, int count, float radius) {
 Polygon makeFromHull(const Hull& hull, float radius, const char* function) {
     checkRadius(radius, function);
     if (hull.count < 3 || hull.count > kMaxPolygonVertices) {
-        core::throwError(function, "hull has " + std::to_string(hull.count) + " points, expected 3 to " +
-                                   std::to_string(kMaxPolygonVertices) + " (use computeHull())");
+        core::throwError(function,
+                         "hull has " + std::to_string(hull.count) + " points, expected 3 to " +
+                             std::to_string(kMaxPolygonVertices) + " (use computeHull())");
     }
     for (int i = 0; i < hull.count; ++i) {
         if (!isWithinHuge(hull.points[i])) {
             core::throwError(function, "hull point " + std::to_string(i) +
-                                       " must be finite and within kHuge, got " +
-                                       core::formatVector(hull.points[i]));
+                                           " must be finite and within kHuge, got " +
+                                           core::formatVector(hull.points[i]));
         }
     }
     // A hand-made hull must still be strictly convex and counter-clockwise, or the normals and
@@ -71,9 +75,10 @@ Polygon makeFromHull(const Hull& hull, float radius, const char* function) {
         Vec2 b = hull.points[(i + 1) % hull.count];
         Vec2 c = hull.points[(i + 2) % hull.count];
         if (!(cross(b - a, c - b) > 0.0f)) {
-            core::throwError(function, "hull is not strictly convex and counter-clockwise at point " +
-                                       std::to_string((i + 1) % hull.count) + " " +
-                                       core::formatVector(b) + " (use computeHull())");
+            core::throwError(function,
+                             "hull is not strictly convex and counter-clockwise at point " +
+                                 std::to_string((i + 1) % hull.count) + " " +
+                                 core::formatVector(b) + " (use computeHull())");
         }
     }
     return finishPolygon(hull.points.data(), hull.count, radius);
@@ -113,7 +118,8 @@ Polygon makeOffsetBox(float hx, float hy, Vec2 center, float angle) {
     checkHalfExtent(hx, "hx", kFunction);
     checkHalfExtent(hy, "hy", kFunction);
     if (!isWithinHuge(center)) {
-        core::throwError(kFunction, "center must be finite and within kHuge, got " + core::formatVector(center));
+        core::throwError(kFunction, "center must be finite and within kHuge, got " +
+                                        core::formatVector(center));
     }
     if (!std::isfinite(angle)) {
         core::throwError(kFunction, "angle must be finite, got " + core::formatNumber(angle));
@@ -143,10 +149,13 @@ void validate(const ShapeGeometry& shape, const char* function) {
     case ShapeType::Circle: {
         const auto& circle = std::get<Circle>(shape);
         if (!isWithinHuge(circle.center)) {
-            core::throwError(function, "circle center must be finite and within kHuge, got " + core::formatVector(circle.center));
+            core::throwError(function, "circle center must be finite and within kHuge, got " +
+                                           core::formatVector(circle.center));
         }
         if (!isWithinHuge(circle.radius) || circle.radius <= 0.0f) {
-            core::throwError(function, "circle radius must be finite and in (0, kHuge (" + core::formatNumber(kHuge) + " m)], got " + core::formatNumber(circle.radius));
+            core::throwError(function, "circle radius must be finite and in (0, kHuge (" +
+                                           core::formatNumber(kHuge) + " m)], got " +
+                                           core::formatNumber(circle.radius));
         }
         return;
     }
@@ -154,24 +163,31 @@ void validate(const ShapeGeometry& shape, const char* function) {
         const auto& capsule = std::get<Capsule>(shape);
         if (!isWithinHuge(capsule.center1) || !isWithinHuge(capsule.center2)) {
             core::throwError(function, "capsule centers must be finite and within kHuge, got " +
-                               core::formatVector(capsule.center1) + " and " + core::formatVector(capsule.center2));
+                                           core::formatVector(capsule.center1) + " and " +
+                                           core::formatVector(capsule.center2));
         }
         if (!isWithinHuge(capsule.radius) || capsule.radius <= 0.0f) {
-            core::throwError(function, "capsule radius must be finite and in (0, kHuge (" + core::formatNumber(kHuge) + " m)], got " + core::formatNumber(capsule.radius));
+            core::throwError(function, "capsule radius must be finite and in (0, kHuge (" +
+                                           core::formatNumber(kHuge) + " m)], got " +
+                                           core::formatNumber(capsule.radius));
         }
         // A capsule shorter than the slop has no usable axis; a Circle says what is meant.
         float len = distance(capsule.center1, capsule.center2);
         if (!(len >= kLinearSlop)) {
-            core::throwError(function, "capsule centers must be at least kLinearSlop (" + core::formatNumber(kLinearSlop) +
-                               " m) apart, got " + core::formatNumber(len) + " (use a Circle)");
+            core::throwError(function, "capsule centers must be at least kLinearSlop (" +
+                                           core::formatNumber(kLinearSlop) + " m) apart, got " +
+                                           core::formatNumber(len) + " (use a Circle)");
         }
         return;
     }
     case ShapeType::ChainSegment: {
         const auto& chain = std::get<ChainSegment>(shape);
-        if ((chain.hasGhost1 && !isWithinHuge(chain.ghost1)) || (chain.hasGhost2 && !isWithinHuge(chain.ghost2))) {
-            core::throwError(function, "chain segment ghost points must be finite and within kHuge, got " +
-                               core::formatVector(chain.ghost1) + " and " + core::formatVector(chain.ghost2));
+        if ((chain.hasGhost1 && !isWithinHuge(chain.ghost1)) ||
+            (chain.hasGhost2 && !isWithinHuge(chain.ghost2))) {
+            core::throwError(function,
+                             "chain segment ghost points must be finite and within kHuge, got " +
+                                 core::formatVector(chain.ghost1) + " and " +
+                                 core::formatVector(chain.ghost2));
         }
         validate(chain.segment, function);
         return;
@@ -180,37 +196,45 @@ void validate(const ShapeGeometry& shape, const char* function) {
         const auto& segment = std::get<Segment>(shape);
         if (!isWithinHuge(segment.point1) || !isWithinHuge(segment.point2)) {
             core::throwError(function, "segment points must be finite and within kHuge, got " +
-                               core::formatVector(segment.point1) + " and " + core::formatVector(segment.point2));
+                                           core::formatVector(segment.point1) + " and " +
+                                           core::formatVector(segment.point2));
         }
         float len = distance(segment.point1, segment.point2);
         if (!(len >= kLinearSlop)) {
-            core::throwError(function, "segment points must be at least kLinearSlop (" + core::formatNumber(kLinearSlop) +
-                               " m) apart, got " + core::formatNumber(len));
+            core::throwError(function, "segment points must be at least kLinearSlop (" +
+                                           core::formatNumber(kLinearSlop) + " m) apart, got " +
+                                           core::formatNumber(len));
         }
         return;
     }
     case ShapeType::Polygon: {
         const auto& polygon = std::get<Polygon>(shape);
         if (polygon.count < 3 || polygon.count > kMaxPolygonVertices) {
-            core::throwError(function, "polygon has " + std::to_string(polygon.count) + " vertices, expected 3 to " +
-                               std::to_string(kMaxPolygonVertices) + " (use makePolygon())");
+            core::throwError(function, "polygon has " + std::to_string(polygon.count) +
+                                           " vertices, expected 3 to " +
+                                           std::to_string(kMaxPolygonVertices) +
+                                           " (use makePolygon())");
         }
         if (!isWithinHuge(polygon.radius) || polygon.radius < 0.0f) {
-            core::throwError(function, "polygon radius must be finite and in [0, kHuge (" + core::formatNumber(kHuge) + " m)], got " + core::formatNumber(polygon.radius));
+            core::throwError(function, "polygon radius must be finite and in [0, kHuge (" +
+                                           core::formatNumber(kHuge) + " m)], got " +
+                                           core::formatNumber(polygon.radius));
         }
         if (!isWithinHuge(polygon.centroid)) {
             core::throwError(function, "polygon centroid must be finite and within kHuge, got " +
-                               core::formatVector(polygon.centroid));
+                                           core::formatVector(polygon.centroid));
         }
         for (int i = 0; i < polygon.count; ++i) {
             if (!isWithinHuge(polygon.vertices[i])) {
                 core::throwError(function, "polygon vertex " + std::to_string(i) +
-                                   " must be finite and within kHuge, got " + core::formatVector(polygon.vertices[i]));
+                                               " must be finite and within kHuge, got " +
+                                               core::formatVector(polygon.vertices[i]));
             }
             Vec2 n = polygon.normals[i];
             if (!isFinite(n) || std::fabs(lengthSquared(n) - 1.0f) > 1.0e-3f) {
-                core::throwError(function, "polygon normal " + std::to_string(i) + " must be a unit vector, got " +
-                                   core::formatVector(n) + " (use makePolygon())");
+                core::throwError(function, "polygon normal " + std::to_string(i) +
+                                               " must be a unit vector, got " +
+                                               core::formatVector(n) + " (use makePolygon())");
             }
         }
         for (int i = 0; i < polygon.count; ++i) {
@@ -218,8 +242,9 @@ void validate(const ShapeGeometry& shape, const char* function) {
             Vec2 b = polygon.vertices[(i + 1) % polygon.count];
             Vec2 c = polygon.vertices[(i + 2) % polygon.count];
             if (!(cross(b - a, c - b) > 0.0f)) {
-                core::throwError(function, "polygon is not strictly convex and counter-clockwise at vertex " +
-                                   std::to_string((i + 1) % polygon.count) + " (use makePolygon())");
+                core::throwError(
+                    function, "polygon is not strictly convex and counter-clockwise at vertex " +
+                                  std::to_string((i + 1) % polygon.count) + " (use makePolygon())");
             }
         }
         return;

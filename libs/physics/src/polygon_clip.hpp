@@ -33,7 +33,7 @@ struct PolygonScratch {
 /// Shared by SAT and GJK/EPA so both algorithms clip the same way. Inline: called out of line,
 /// its arguments and result went through memory on every pair's critical path.
 static inline LocalManifold clipPolygons(const PolygonRef& a, const PolygonRef& b, int edgeA,
-                                        int edgeB, bool flip, float margin) {
+                                         int edgeB, bool flip, float margin) {
     // poly1 holds the reference edge i11 -> i12, poly2 the incident edge i21 -> i22.
     const PolygonRef& poly1 = flip ? b : a;
     const PolygonRef& poly2 = flip ? a : b;
@@ -114,6 +114,5 @@ static inline LocalManifold clipPolygons(const PolygonRef& a, const PolygonRef& 
     }
     return m;
 }
-
 
 } // namespace e2d::physics::detail

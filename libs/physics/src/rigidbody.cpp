@@ -39,7 +39,9 @@ void requireFiniteArg(const char* function, const char* name, Vec2 value) {
 
 } // namespace
 
-Rigidbody::Rigidbody(PhysicsSystem& system, const RigidbodyDef& def) : Rigidbody(def) { system_ = &system; }
+Rigidbody::Rigidbody(PhysicsSystem& system, const RigidbodyDef& def) : Rigidbody(def) {
+    system_ = &system;
+}
 
 Rigidbody::Rigidbody(const RigidbodyDef& def) : def_(def) {
     if (def.type == BodyType::Static) {
@@ -60,8 +62,9 @@ Rigidbody::~Rigidbody() = default;
 PhysicsSystem& Rigidbody::sys() const {
     if (system_ == nullptr) {
         if (scene() == nullptr) {
-            throw core::Error("physics::Rigidbody::system(): the Rigidbody has no PhysicsSystem (it was made "
-                              "without one and its object is not in a scene)");
+            throw core::Error(
+                "physics::Rigidbody::system(): the Rigidbody has no PhysicsSystem (it was made "
+                "without one and its object is not in a scene)");
         }
         system_ = &scene()->system<PhysicsSystem>();
     }
@@ -108,7 +111,8 @@ void Rigidbody::onInitialize() {
     ensureBody();
     // Colliders on this object and below it that should ride on this body (they attached to a
     // static body, or to a Rigidbody further up, before this one existed) move onto it.
-    sys().reattachColliders([this](const Collider& c) { return c.findOwner() == this && c.owner_ != this; });
+    sys().reattachColliders(
+        [this](const Collider& c) { return c.findOwner() == this && c.owner_ != this; });
 }
 
 void Rigidbody::onTerminate() {
@@ -161,7 +165,8 @@ void Rigidbody::applyTarget(float timeStep) {
     }
     const Target target = *target_;
     target_.reset();
-    sys().world().setTargetTransform(body_, sys().toMetres(target.position), target.angle, timeStep);
+    sys().world().setTargetTransform(body_, sys().toMetres(target.position), target.angle,
+                                     timeStep);
 }
 
 // The world speaks metres; the component speaks world units (see PhysicsSystem): lengths scale
@@ -300,14 +305,16 @@ void Rigidbody::applyImpulseAtPoint(Vec2 impulse, Vec2 point) {
     requireFiniteArg("applyImpulseAtPoint", "impulse", impulse);
     requireFiniteArg("applyImpulseAtPoint", "point", point);
     now("applyImpulseAtPoint", [impulse, point](Rigidbody& rb) {
-        rb.sys().world().applyLinearImpulse(rb.body_, rb.sys().toMetres(impulse), rb.sys().toMetres(point));
+        rb.sys().world().applyLinearImpulse(rb.body_, rb.sys().toMetres(impulse),
+                                            rb.sys().toMetres(point));
     });
 }
 
 void Rigidbody::applyAngularImpulse(float impulse) {
     requireFiniteArg("applyAngularImpulse", "impulse", impulse);
     now("applyAngularImpulse", [impulse](Rigidbody& rb) {
-        rb.sys().world().applyAngularImpulse(rb.body_, rb.sys().toMetres(rb.sys().toMetres(impulse)));
+        rb.sys().world().applyAngularImpulse(rb.body_,
+                                             rb.sys().toMetres(rb.sys().toMetres(impulse)));
     });
 }
 

@@ -43,8 +43,8 @@ struct BodyMotion {
     // a body that moves more than minExtent in a step may tunnel (continuous collision).
     float minExtent = 0.0f;
     float maxExtent = 0.0f;
-    int contactHead = -1;  // intrusive list of the body's contacts
-    int solverIndex = -1;  // index in this step's awake arrays, -1 when not awake
+    int contactHead = -1; // intrusive list of the body's contacts
+    int solverIndex = -1; // index in this step's awake arrays, -1 when not awake
     bool fixedRotation = false;
     bool lockX = false;
     bool lockY = false;

@@ -50,8 +50,7 @@ public:
             put(std::bit_cast<std::uint32_t>(value), 4);
         } else {
             static_assert(std::is_integral_v<T>);
-            put(static_cast<std::uint64_t>(static_cast<std::make_unsigned_t<T>>(value)),
-                sizeof(T));
+            put(static_cast<std::uint64_t>(static_cast<std::make_unsigned_t<T>>(value)), sizeof(T));
         }
     }
     // A sequence's length (u32); `minElementBytes` is the reader's business.
@@ -69,7 +68,8 @@ public:
     // Overwrites `width` bytes at `offset` (a header field known only at the end).
     void patch(std::size_t offset, std::uint64_t value, int width) {
         for (int i = 0; i < width; ++i) {
-            bytes_[offset + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(value >> (8 * i));
+            bytes_[offset + static_cast<std::size_t>(i)] =
+                static_cast<std::uint8_t>(value >> (8 * i));
         }
     }
 
@@ -156,7 +156,8 @@ public:
             fail("section", std::string("truncated: expected section '") + fourChars + "'", 0);
         }
         for (int i = 0; i < 4; ++i) {
-            if (bytes_[pos_ + static_cast<std::size_t>(i)] != static_cast<std::uint8_t>(fourChars[i])) {
+            if (bytes_[pos_ + static_cast<std::size_t>(i)] !=
+                static_cast<std::uint8_t>(fourChars[i])) {
                 fail("section", std::string("expected section '") + fourChars + "'", 0);
             }
         }
@@ -245,8 +246,7 @@ void field(Io& io, const char* name, T& value) {
     io.primitive(name, value);
 }
 template <class Io, class T>
-    requires(!SnapshotPrimitive<T>)
-void field(Io& io, const char* name, T& value) {
+requires(!SnapshotPrimitive<T>) void field(Io& io, const char* name, T& value) {
     auto scope = io.scope(name);
     transfer(io, value);
 }

@@ -15,8 +15,8 @@ enum BodyFlag : std::uint8_t {
     kLockY = 2,        // ... along y
     kLockRotation = 4, // fixed rotation
     kIsBullet = 8,
-    kIsFast = 16,      // moved far enough this step to need time of impact
-    kNonFinite = 32,   // its velocity overflowed this step: held still, disabled afterwards
+    kIsFast = 16,    // moved far enough this step to need time of impact
+    kNonFinite = 32, // its velocity overflowed this step: held still, disabled afterwards
 };
 
 // What the sub-step loops touch, and nothing else, so many fit in a cache line. Static bodies
@@ -35,10 +35,10 @@ struct BodyState {
 
 // Everything else the step needs about an awake moving body.
 struct BodySim {
-    Transform transform{};     // body origin
-    Vec2 center{0.0f, 0.0f};   // world centre of mass
-    Vec2 center0{0.0f, 0.0f};  // centre of mass at the start of the step
-    Rot rotation0{};           // rotation at the start of the step
+    Transform transform{};    // body origin
+    Vec2 center{0.0f, 0.0f};  // world centre of mass
+    Vec2 center0{0.0f, 0.0f}; // centre of mass at the start of the step
+    Rot rotation0{};          // rotation at the start of the step
     Vec2 localCenter{0.0f, 0.0f};
     // What the float centre at the end of the step cannot hold (BodyMotion::positionResidual),
     // set by finalizePositions().

@@ -37,21 +37,23 @@ void requireNonNegative(const char* name, float value) {
 
 void requireInterval(const char* name, float value, float lo, float hi) {
     if (!(std::isfinite(value) && value >= lo && value <= hi)) {
-        fail(std::string(name) + " must be finite and in [" + core::formatNumber(lo) + ", " + core::formatNumber(hi) + "], got " +
-             core::formatNumber(value));
+        fail(std::string(name) + " must be finite and in [" + core::formatNumber(lo) + ", " +
+             core::formatNumber(hi) + "], got " + core::formatNumber(value));
     }
 }
 
 bool isRule(MixingRule rule) {
     auto r = static_cast<int>(rule);
-    return r >= static_cast<int>(MixingRule::GeometricMean) && r <= static_cast<int>(MixingRule::Multiply);
+    return r >= static_cast<int>(MixingRule::GeometricMean) &&
+           r <= static_cast<int>(MixingRule::Multiply);
 }
 
 } // namespace
 
 void validate(const SolverDef& def) {
     auto mode = static_cast<int>(def.mode);
-    if (mode != static_cast<int>(SolverMode::SoftStep) && mode != static_cast<int>(SolverMode::Classic)) {
+    if (mode != static_cast<int>(SolverMode::SoftStep) &&
+        mode != static_cast<int>(SolverMode::Classic)) {
         fail("mode must be SoftStep or Classic, got " + std::to_string(mode));
     }
     requireRange("subSteps", def.subSteps, 1, 64);
@@ -67,7 +69,8 @@ void validate(const SolverDef& def) {
     requireNonNegative("jointDampingRatio", def.jointDampingRatio);
     requireRange("jointPositionIterations", def.jointPositionIterations, 0, 256);
     auto jointSolver = static_cast<int>(def.jointSolver);
-    if (jointSolver != static_cast<int>(JointSolver::Soft) && jointSolver != static_cast<int>(JointSolver::GaussSeidel) &&
+    if (jointSolver != static_cast<int>(JointSolver::Soft) &&
+        jointSolver != static_cast<int>(JointSolver::GaussSeidel) &&
         jointSolver != static_cast<int>(JointSolver::Direct)) {
         fail("jointSolver must be Soft, GaussSeidel or Direct, got " + std::to_string(jointSolver));
     }

@@ -69,7 +69,8 @@ TaskPool::~TaskPool() {
 
 void TaskPool::run(TaskFunction task, int itemCount, int pieceSize, void* context) {
     // At most kMaxPieces pieces.
-    pieceSize = std::max({pieceSize, 1, static_cast<int>(static_cast<std::uint32_t>(itemCount) / kMaxPieces) + 1});
+    pieceSize = std::max(
+        {pieceSize, 1, static_cast<int>(static_cast<std::uint32_t>(itemCount) / kMaxPieces) + 1});
     const auto pieceCount = static_cast<std::uint32_t>((itemCount + pieceSize - 1) / pieceSize);
     task_ = task;
     context_ = context;
@@ -88,7 +89,8 @@ void TaskPool::run(TaskFunction task, int itemCount, int pieceSize, void* contex
         wake_.notify_all();
     }
     runPieces(generation, 0);
-    for (int spins = 0; done_.load(std::memory_order_acquire) != static_cast<int>(pieceCount); ++spins) {
+    for (int spins = 0; done_.load(std::memory_order_acquire) != static_cast<int>(pieceCount);
+         ++spins) {
         if (spins < spins_) {
             pause();
         } else {

@@ -41,7 +41,7 @@ private:
     int spins_ = 0;
     std::mutex mutex_;
     std::condition_variable wake_;
-    int sleeping_ = 0; // threads waiting on wake_ (mutex_)
+    int sleeping_ = 0;  // threads waiting on wake_ (mutex_)
     bool stop_ = false; // (mutex_)
     // The task's generation, piece count and next unclaimed piece in one word (see pack()): a
     // piece is claimed by one compare-and-swap that also checks which task it belongs to, so a

@@ -49,9 +49,9 @@ inline const BodyState kStaticState{};
 // (a static side: `sink`, never read). Unconditional stores cost less than a branch per lane.
 // Plain code for every width: it inlines into the AVX2 kernels as into the others.
 template <int N>
-__attribute__((always_inline)) inline void lanesOf(const int (&index)[N], std::span<BodyState> states,
-                                                   BodyState& sink, const BodyState* (&in)[N],
-                                                   BodyState* (&out)[N]) {
+__attribute__((always_inline)) inline void
+lanesOf(const int (&index)[N], std::span<BodyState> states, BodyState& sink,
+        const BodyState* (&in)[N], BodyState* (&out)[N]) {
     for (int i = 0; i < N; ++i) {
         const bool moving = index[i] >= 0;
         BodyState* s = states.data() + (moving ? index[i] : 0);
@@ -64,8 +64,10 @@ __attribute__((always_inline)) inline void lanesOf(const int (&index)[N], std::s
 // load, and rows transpose into lane vectors (and back) with shuffles only, which move bits
 // unchanged (flags included).
 static_assert(sizeof(BodyState) == 32, "BodyState must stay two 16-byte rows");
-static_assert(offsetof(BodyState, linearVelocity) == 0 && offsetof(BodyState, angularVelocity) == 8 &&
-                  offsetof(BodyState, deltaPosition) == 16 && offsetof(BodyState, deltaRotation) == 24,
+static_assert(offsetof(BodyState, linearVelocity) == 0 &&
+                  offsetof(BodyState, angularVelocity) == 8 &&
+                  offsetof(BodyState, deltaPosition) == 16 &&
+                  offsetof(BodyState, deltaRotation) == 24,
               "BodyState rows out of order");
 
 inline Float4 loadRow(const BodyState* s, std::size_t offset) {
@@ -153,9 +155,7 @@ using F = Float8;
 using I = Int8;
 
 E2D_AVX2_FN F splat(float x) { return F{x, x, x, x, x, x, x, x}; }
-E2D_AVX2_FN F select(I mask, F a, F b) {
-    return _mm256_blendv_ps(b, a, (__m256)mask);
-}
+E2D_AVX2_FN F select(I mask, F a, F b) { return _mm256_blendv_ps(b, a, (__m256)mask); }
 E2D_AVX2_FN F maxOf(F a, F b) { return _mm256_max_ps(b, a); }
 E2D_AVX2_FN bool anyLane(I mask) { return _mm256_movemask_ps((__m256)mask) != 0; }
 E2D_AVX2_FN bool allLanes(I mask) { return _mm256_movemask_ps((__m256)mask) == 0xFF; }
@@ -173,8 +173,8 @@ E2D_AVX2_FN void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c
 }
 
 E2D_AVX2_FN F joinRows(const BodyState* low, const BodyState* high, std::size_t offset) {
-    return __builtin_shufflevector(loadRow(low, offset), loadRow(high, offset), 0, 1, 2, 3, 4, 5,
-                                   6, 7);
+    return __builtin_shufflevector(loadRow(low, offset), loadRow(high, offset), 0, 1, 2, 3, 4, 5, 6,
+                                   7);
 }
 
 E2D_AVX2_FN void loadRows(const BodyState* const (&s)[N], std::size_t offset, F& c0, F& c1, F& c2,

@@ -38,17 +38,17 @@ void validateWorldDef(const WorldDef& def) {
         check::fail(fn, "def.jointCapacity must be >= 0, got " + std::to_string(def.jointCapacity));
     }
     if (def.shapeCapacity < 0) {
-        check::fail(fn,
-                    "def.shapeCapacity must be >= 0, got " + std::to_string(def.shapeCapacity));
+        check::fail(fn, "def.shapeCapacity must be >= 0, got " + std::to_string(def.shapeCapacity));
     }
     if (def.workerCount < 1 || def.workerCount > kMaxWorkers) {
-        check::fail(fn, "def.workerCount must be in [1, " + std::to_string(kMaxWorkers) + "], got " +
-                            std::to_string(def.workerCount));
+        check::fail(fn, "def.workerCount must be in [1, " + std::to_string(kMaxWorkers) +
+                            "], got " + std::to_string(def.workerCount));
     }
     if ((def.enqueueTask == nullptr) != (def.finishTask == nullptr)) {
-        check::fail(fn, std::string("def.enqueueTask and def.finishTask must both be set or both be "
-                                    "null, got only ") +
-                            (def.enqueueTask != nullptr ? "enqueueTask" : "finishTask"));
+        check::fail(fn,
+                    std::string("def.enqueueTask and def.finishTask must both be set or both be "
+                                "null, got only ") +
+                        (def.enqueueTask != nullptr ? "enqueueTask" : "finishTask"));
     }
     if (def.simdLanes != 4 && def.simdLanes != 8) {
         check::fail(fn, "def.simdLanes must be 4 or 8, got " + std::to_string(def.simdLanes));
@@ -59,8 +59,8 @@ void validateBodyDef(const BodyDef& def) {
     const char* fn = "createBody";
     auto type = static_cast<int>(def.type);
     if (type < 0 || type >= kBodyTypeCount) {
-        check::fail(fn, "def.type must be Static, Kinematic or Dynamic, got " +
-                            std::to_string(type));
+        check::fail(fn,
+                    "def.type must be Static, Kinematic or Dynamic, got " + std::to_string(type));
     }
     check::requirePosition(fn, "def.position", def.position);
     check::requireFinite(fn, "def.angle", def.angle);
@@ -106,7 +106,8 @@ std::string describe(const char* type, Id id) {
 template <class Id>
 [[noreturn]] void failHandle(const char* function, const char* type, Id id, std::uint16_t tag) {
     if (!id.isNull() && id.owner != tag) {
-        check::fail(function, describe(type, id) + " belongs to another world (this world's tag is " +
+        check::fail(function, describe(type, id) +
+                                  " belongs to another world (this world's tag is " +
                                   std::to_string(tag) + ")");
     }
     check::fail(function, "stale or null " + describe(type, id));
@@ -146,7 +147,8 @@ void World::Impl::requireUnlocked(const char* function) const {
             lockedHook != nullptr ? std::string("the ") + lockedHook + " callback" : "the callback";
         check::fail(function, "cannot run inside " + callback + " of " + lockedBy +
                                   "() (it would change what the callback is walking); collect "
-                                  "the ids and call it after " + lockedBy + "() returns");
+                                  "the ids and call it after " +
+                                  lockedBy + "() returns");
     }
 }
 
@@ -154,8 +156,8 @@ void World::Impl::createProxy(int shapeIndex) {
     detail::Shape& s = shape(shapeIndex);
     // A sensor that sees non-dynamic bodies lives in the dynamic tree whatever its body: moving
     // kinematic shapes look it up there, and its own moves look through every tree.
-    const BodyType treeType = s.isSensor && s.sensorSeesNonDynamic ? BodyType::Dynamic
-                                                                   : body(s.body).type;
+    const BodyType treeType =
+        s.isSensor && s.sensorSeesNonDynamic ? BodyType::Dynamic : body(s.body).type;
     s.proxyKey = broadPhase.createProxy(s.aabb, treeType, s.filter.categoryBits,
                                         static_cast<std::uint64_t>(shapeIndex));
 }
@@ -217,7 +219,8 @@ bool World::Impl::shouldPair(int shapeA, int shapeB) const {
     if (typeA != BodyType::Dynamic && typeB != BodyType::Dynamic) {
         // Only a sensor that sees non-dynamic bodies pairs without a dynamic body, and never
         // static with static.
-        const bool wide = (a.isSensor && a.sensorSeesNonDynamic) || (b.isSensor && b.sensorSeesNonDynamic);
+        const bool wide =
+            (a.isSensor && a.sensorSeesNonDynamic) || (b.isSensor && b.sensorSeesNonDynamic);
         if (!wide || (typeA == BodyType::Static && typeB == BodyType::Static)) {
             return false;
         }

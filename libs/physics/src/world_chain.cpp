@@ -19,8 +19,8 @@ constexpr const char* kFunction = "createChain";
 
 void requireRestitution(const char* name, float value) {
     if (!(isFinite(value) && value >= 0.0f && value <= 1.0f)) {
-        check::fail(kFunction, std::string(name) + " must be finite and in [0, 1], got " +
-                                   check::text(value));
+        check::fail(kFunction,
+                    std::string(name) + " must be finite and in [0, 1], got " + check::text(value));
     }
 }
 
@@ -29,8 +29,9 @@ void validateChainDef(const ChainDef& def) {
     const std::size_t minimum = def.isLoop ? 3 : 2;
     if (n < minimum) {
         check::fail(kFunction, std::string("def.points must hold at least ") +
-                                   std::to_string(minimum) + (def.isLoop ? " points for a loop" : " points") +
-                                   ", got " + std::to_string(n));
+                                   std::to_string(minimum) +
+                                   (def.isLoop ? " points for a loop" : " points") + ", got " +
+                                   std::to_string(n));
     }
     for (std::size_t i = 0; i < n; ++i) {
         const std::string name = "def.points[" + std::to_string(i) + "]";
@@ -43,7 +44,8 @@ void validateChainDef(const ChainDef& def) {
         if (!(gap >= kLinearSlop)) {
             check::fail(kFunction, "def.points[" + std::to_string(i) + "] and def.points[" +
                                        std::to_string(j) + "] must be at least kLinearSlop (" +
-                                       check::text(kLinearSlop) + " m) apart, got " + check::text(gap));
+                                       check::text(kLinearSlop) + " m) apart, got " +
+                                       check::text(gap));
         }
     }
     if (def.ghostBefore) {
@@ -53,7 +55,8 @@ void validateChainDef(const ChainDef& def) {
         check::requirePosition(kFunction, "def.ghostAfter", *def.ghostAfter);
     }
     if (def.isLoop && (def.ghostBefore || def.ghostAfter)) {
-        check::fail(kFunction, "a loop has no ends: def.ghostBefore and def.ghostAfter must be empty");
+        check::fail(kFunction,
+                    "a loop has no ends: def.ghostBefore and def.ghostAfter must be empty");
     }
     const std::size_t materials = def.materials.size();
     if (materials > 1 && materials != segments) {
@@ -71,7 +74,8 @@ void validateChainDef(const ChainDef& def) {
     }
     check::requireNonNegative(kFunction, "def.shape.friction", def.shape.friction);
     requireRestitution("def.shape.restitution", def.shape.restitution);
-    check::requireNonNegative(kFunction, "def.shape.rollingResistance", def.shape.rollingResistance);
+    check::requireNonNegative(kFunction, "def.shape.rollingResistance",
+                              def.shape.rollingResistance);
 }
 
 } // namespace

@@ -32,8 +32,8 @@ Extents extentsOf(const ShapeGeometry& geometry, Vec2 center) {
             if constexpr (std::is_same_v<T, Circle>) {
                 return {g.radius, length(g.center - center) + g.radius};
             } else if constexpr (std::is_same_v<T, Capsule>) {
-                return {g.radius,
-                        std::max(length(g.center1 - center), length(g.center2 - center)) + g.radius};
+                return {g.radius, std::max(length(g.center1 - center), length(g.center2 - center)) +
+                                      g.radius};
             } else if constexpr (std::is_same_v<T, Segment>) {
                 return {kLinearSlop,
                         std::max(length(g.point1 - center), length(g.point2 - center))};

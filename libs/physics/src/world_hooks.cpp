@@ -160,14 +160,18 @@ int World::explode(const ExplosionDef& def) {
         float lo = kHuge;
         float hi = -kHuge;
         for (int k = 0; k < input.proxyB.count; ++k) {
-            const float t = dot(transformPoint(b.transform, input.proxyB.points[static_cast<std::size_t>(k)]) - def.position, across);
+            const float t =
+                dot(transformPoint(b.transform, input.proxyB.points[static_cast<std::size_t>(k)]) -
+                        def.position,
+                    across);
             lo = std::min(lo, t);
             hi = std::max(hi, t);
         }
         const float width = hi - lo + 2.0f * input.proxyB.radius;
         const float strength =
-            dist <= def.radius ? 1.0f
-                               : (def.falloff > 0.0f ? 1.0f - (dist - def.radius) / def.falloff : 0.0f);
+            dist <= def.radius
+                ? 1.0f
+                : (def.falloff > 0.0f ? 1.0f - (dist - def.radius) / def.falloff : 0.0f);
         const float magnitude = def.impulsePerLength * width * strength;
         if (!(magnitude != 0.0f)) {
             continue;
@@ -222,8 +226,8 @@ void World::setBodyType(BodyId id, BodyType type) {
     const int index = w.require(id, "setBodyType");
     const int typeIndex = static_cast<int>(type);
     if (typeIndex < 0 || typeIndex >= kBodyTypeCount) {
-        check::fail("setBodyType", "type must be Static, Kinematic or Dynamic, got " +
-                                       std::to_string(typeIndex));
+        check::fail("setBodyType",
+                    "type must be Static, Kinematic or Dynamic, got " + std::to_string(typeIndex));
     }
     detail::Body& b = w.body(index);
     if (b.type == type) {
@@ -275,8 +279,8 @@ void World::setShapeRestitution(ShapeId id, float restitution) {
     Impl& w = *impl_;
     const int index = w.require(id, "setShapeRestitution");
     if (!(isFinite(restitution) && restitution >= 0.0f && restitution <= 1.0f)) {
-        check::fail("setShapeRestitution", "restitution must be finite and in [0, 1], got " +
-                                               check::text(restitution));
+        check::fail("setShapeRestitution",
+                    "restitution must be finite and in [0, 1], got " + check::text(restitution));
     }
     w.shape(index).restitution = restitution;
     w.refreshContactMaterials(index);
@@ -353,8 +357,8 @@ void World::Impl::refreshContactMaterials(int shapeIndex) {
             c.friction = detail::mixFriction(sim.def, a.friction, b.friction);
             c.restitution = detail::mixRestitution(sim.def, a.restitution, b.restitution);
             c.rollingResistance = std::max(a.rollingResistance, b.rollingResistance);
-            c.touchEvents = c.sensor ? a.sensorEvents && b.sensorEvents
-                                     : a.contactEvents && b.contactEvents;
+            c.touchEvents =
+                c.sensor ? a.sensorEvents && b.sensorEvents : a.contactEvents && b.contactEvents;
             c.hitEvents = a.hitEvents && b.hitEvents;
         }
         ci = c.next[side];

@@ -6,8 +6,8 @@
 #include "broad_phase.hpp"
 #include "id_pool.hpp"
 #include "joint_solver.hpp"
-#include "slot_array.hpp"
 #include "simulation.hpp"
+#include "slot_array.hpp"
 #include "task_pool.hpp"
 #include "world_hooks.hpp"
 
@@ -91,7 +91,10 @@ struct World::Impl {
     [[nodiscard]] int findIn(const Slots& slots, Id id) const {
         const auto index = core::findSlot(
             id, slots.size(),
-            [&slots](std::uint32_t i) { return slots[i].alive ? slots[i].generation : std::uint16_t{0}; }, tag);
+            [&slots](std::uint32_t i) {
+                return slots[i].alive ? slots[i].generation : std::uint16_t{0};
+            },
+            tag);
         return index ? static_cast<int>(*index) : detail::kNullIndex;
     }
     // The function whose callback is running (overlapAabb, forEachCandidatePair,

@@ -11,7 +11,9 @@ void World::updatePairs() {
     Impl& w = *impl_;
     w.requireUnlocked("updatePairs");
     w.broadPhase.updatePairs(
-        [&w](std::uint64_t a, std::uint64_t b) { return w.shouldPair(static_cast<int>(a), static_cast<int>(b)); },
+        [&w](std::uint64_t a, std::uint64_t b) {
+            return w.shouldPair(static_cast<int>(a), static_cast<int>(b));
+        },
         [&w](std::uint64_t ud) { return w.pairQueryMask(static_cast<int>(ud)); });
     // A pair lives while the fat boxes overlap. A fat box changes only when its proxy moves,
     // and the next update looks at moved proxies again, so a dropped pair whose boxes come

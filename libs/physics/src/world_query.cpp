@@ -35,9 +35,8 @@ void checkRay(const char* function, Vec2 origin, Vec2 translation) {
     }
     // Beyond kHuge nothing can be hit, and the end point must stay representable.
     if (!isWithinHuge(origin + translation)) {
-        check::fail(function, "origin + translation must be within kHuge (" +
-                                  check::text(kHuge) + " m), got " +
-                                  check::text(origin + translation));
+        check::fail(function, "origin + translation must be within kHuge (" + check::text(kHuge) +
+                                  " m), got " + check::text(origin + translation));
     }
 }
 
@@ -84,8 +83,8 @@ std::optional<RayResult> entryHit(const detail::Shape& shape, const Transform& x
     if (!out.hit) {
         return std::nullopt;
     }
-    return RayResult{{}, transformPoint(xf, out.point), rotate(xf.q, out.normal), out.fraction,
-                     false};
+    return RayResult{
+        {}, transformPoint(xf, out.point), rotate(xf.q, out.normal), out.fraction, false};
 }
 
 // Where the ray leaves the shape. The exit of a convex shape is the entry of the same ray cast
@@ -199,8 +198,7 @@ std::optional<RayResult> World::rayCastShape(ShapeId id, Vec2 origin, Vec2 trans
     checkRay("rayCastShape", origin, translation);
     const detail::Shape& shape = w.shape(index);
     std::optional<RayResult> hit =
-        firstHit(shape, w.body(shape.body).transform, {origin, translation, 1.0f},
-                 ignoreBackFaces);
+        firstHit(shape, w.body(shape.body).transform, {origin, translation, 1.0f}, ignoreBackFaces);
     if (hit) {
         hit->shape = id;
     }
@@ -251,8 +249,7 @@ std::vector<ShapeId> World::overlapPoint(Vec2 point, const QueryFilter& filter) 
             auto index = static_cast<int>(userData);
             const detail::Shape& shape = w.shape(index);
             if (passes(shape, filter) &&
-                testPoint(shape.geometry,
-                          invTransformPoint(w.body(shape.body).transform, point))) {
+                testPoint(shape.geometry, invTransformPoint(w.body(shape.body).transform, point))) {
                 result.push_back(w.shapeId(index));
             }
             return true;

@@ -125,11 +125,21 @@ void transfer(Io& io, ShapeGeometry& g) {
     field(io, "type", type);
     if constexpr (Io::kReading) {
         switch (type) {
-        case ShapeType::Circle: g = Circle{}; break;
-        case ShapeType::Capsule: g = Capsule{}; break;
-        case ShapeType::Segment: g = Segment{}; break;
-        case ShapeType::Polygon: g = Polygon{}; break;
-        case ShapeType::ChainSegment: g = ChainSegment{}; break;
+        case ShapeType::Circle:
+            g = Circle{};
+            break;
+        case ShapeType::Capsule:
+            g = Capsule{};
+            break;
+        case ShapeType::Segment:
+            g = Segment{};
+            break;
+        case ShapeType::Polygon:
+            g = Polygon{};
+            break;
+        case ShapeType::ChainSegment:
+            g = ChainSegment{};
+            break;
         }
     }
     std::visit([&](auto& shape) { transfer(io, shape); }, g);
@@ -466,7 +476,9 @@ struct SnapshotAccess {
     static int proxyCount(const DynamicTree& tree) { return tree.proxyCount_; }
     static const auto& infos(const BroadPhase& bp) { return bp.infos_; }
     static const std::vector<int>& moveBuffer(const BroadPhase& bp) { return bp.moveBuffer_; }
-    static const std::vector<PairEntry>& pairSlots(const BroadPhase& bp) { return bp.pairs_.slots_; }
+    static const std::vector<PairEntry>& pairSlots(const BroadPhase& bp) {
+        return bp.pairs_.slots_;
+    }
     static const PairSet& pairSet(const BroadPhase& bp) { return bp.pairs_; }
     static const std::vector<int>& freeSlots(const IdPool& pool) { return pool.free_; }
 };
@@ -568,8 +580,10 @@ std::span<const std::uint8_t> readHeader(std::span<const std::uint8_t> bytes) {
     reader.primitive("layout", h.layout);
     if (h.layout != kLayout) {
         reader.fail("layout",
-                    "layout " + std::to_string(h.layout) + " (polygon vertices, index and float "
-                    "widths), this build's is " + std::to_string(kLayout),
+                    "layout " + std::to_string(h.layout) +
+                        " (polygon vertices, index and float "
+                        "widths), this build's is " +
+                        std::to_string(kLayout),
                     4);
     }
     reader.primitive("payloadBytes", h.payloadBytes);
@@ -692,11 +706,23 @@ public:
             require(isFinite(b.linearVelocity) && isFinite(b.angularVelocity),
                     at("bodies", i, "linearVelocity"), "must be finite");
             const detail::BodyMotion& m = b.motion;
-            const float values[] = {m.localCenter.x, m.localCenter.y, m.mass, m.inertia,
-                                    m.invMass, m.invInertia, m.force.x, m.force.y, m.torque,
-                                    m.linearDamping, m.angularDamping, m.gravityScale,
-                                    m.positionResidual.x, m.positionResidual.y, m.sleepTime,
-                                    m.minExtent, m.maxExtent};
+            const float values[] = {m.localCenter.x,
+                                    m.localCenter.y,
+                                    m.mass,
+                                    m.inertia,
+                                    m.invMass,
+                                    m.invInertia,
+                                    m.force.x,
+                                    m.force.y,
+                                    m.torque,
+                                    m.linearDamping,
+                                    m.angularDamping,
+                                    m.gravityScale,
+                                    m.positionResidual.x,
+                                    m.positionResidual.y,
+                                    m.sleepTime,
+                                    m.minExtent,
+                                    m.maxExtent};
             for (float v : values) {
                 require(isFinite(v), at("bodies", i, "motion"), "every number must be finite");
             }
@@ -715,9 +741,11 @@ public:
                     "the list holds " + std::to_string(count) + " shapes, shapeCount says " +
                         std::to_string(b.shapeCount));
             shapesListed += static_cast<std::size_t>(count);
-            jointsListed_ += listLength(
-                b.jointHead, static_cast<int>(i), w_.joints.size(), at("bodies", i, "jointHead"),
-                [&](int j) -> const detail::Joint* { return liveJoint(j) ? &w_.joint(j) : nullptr; });
+            jointsListed_ +=
+                listLength(b.jointHead, static_cast<int>(i), w_.joints.size(),
+                           at("bodies", i, "jointHead"), [&](int j) -> const detail::Joint* {
+                               return liveJoint(j) ? &w_.joint(j) : nullptr;
+                           });
             contactsListed_ += listLength(
                 m.contactHead, static_cast<int>(i), w_.sim.contacts.size(),
                 at("bodies", i, "motion.contactHead"), [&](int c) -> const detail::Contact* {
@@ -766,8 +794,8 @@ public:
             const int key = s.proxyKey;
             bool ok = key >= 0 && detail::proxyTypeOf(key) == treeType;
             if (ok) {
-                const DynamicTree& tree = SnapshotAccess::tree(
-                    w_.broadPhase, static_cast<std::size_t>(key & 3));
+                const DynamicTree& tree =
+                    SnapshotAccess::tree(w_.broadPhase, static_cast<std::size_t>(key & 3));
                 ok = tree.isProxy(detail::proxyIdOf(key)) &&
                      tree.userData(detail::proxyIdOf(key)) == i;
             }
@@ -792,8 +820,8 @@ public:
             require(j.generation != 0, at("joints", i, "generation"), "must not be 0 when live");
         }
         require(jointsListed_ == 2 * live, "joints",
-                "the bodies' joint lists hold " + std::to_string(jointsListed_) +
-                    " entries, the " + std::to_string(live) + " live joints need twice that");
+                "the bodies' joint lists hold " + std::to_string(jointsListed_) + " entries, the " +
+                    std::to_string(live) + " live joints need twice that");
     }
 
     void contacts() const {
@@ -820,14 +848,16 @@ public:
                     "must be in [0, 2], got " + std::to_string(c.manifold.pointCount));
         }
         require(static_cast<std::size_t>(s.contactCount) == live && s.contactCount >= 0,
-                "contactCount", "must count the " + std::to_string(live) + " live contacts, got " +
-                                    std::to_string(s.contactCount));
+                "contactCount",
+                "must count the " + std::to_string(live) + " live contacts, got " +
+                    std::to_string(s.contactCount));
         std::vector<unsigned char> seen(s.contacts.size(), 0);
         for (std::size_t k = 0; k < s.freeContacts.size(); ++k) {
             const int c = s.freeContacts[k];
             require(c >= 0 && static_cast<std::size_t>(c) < s.contacts.size() && !liveContact(c) &&
                         seen[static_cast<std::size_t>(c)] == 0,
-                    at("freeContacts", k), "must name a dead contact once, got " + std::to_string(c));
+                    at("freeContacts", k),
+                    "must name a dead contact once, got " + std::to_string(c));
             seen[static_cast<std::size_t>(c)] = 1;
         }
         require(s.freeContacts.size() + live == s.contacts.size(), "freeContacts",
@@ -851,9 +881,10 @@ public:
             int leaves = 0;
             const int root = SnapshotAccess::root(tree);
             if (root != DynamicTree::kNullProxy) {
-                require(inRange(root) && nodes[static_cast<std::size_t>(root)].parent ==
-                                             DynamicTree::kNullProxy,
-                        path + ".root", "must name a node without parent, got " + std::to_string(root));
+                require(inRange(root) &&
+                            nodes[static_cast<std::size_t>(root)].parent == DynamicTree::kNullProxy,
+                        path + ".root",
+                        "must name a node without parent, got " + std::to_string(root));
                 std::vector<int> stack{root};
                 seen[static_cast<std::size_t>(root)] = 1;
                 while (!stack.empty()) {
@@ -862,8 +893,8 @@ public:
                     const auto& node = nodes[static_cast<std::size_t>(index)];
                     const std::string where = path + ".nodes[" + std::to_string(index) + "]";
                     if (node.child1 == DynamicTree::kNullProxy) {
-                        require(node.child2 == DynamicTree::kNullProxy && node.height == 0,
-                                where, "a leaf must have height 0 and no children");
+                        require(node.child2 == DynamicTree::kNullProxy && node.height == 0, where,
+                                "a leaf must have height 0 and no children");
                         ++leaves;
                         continue;
                     }
@@ -948,7 +979,8 @@ public:
                          live[static_cast<std::size_t>(key)] != 0 &&
                          infos[static_cast<std::size_t>(key)].moveIndex == static_cast<int>(k)),
                     at("broadPhase.moveBuffer", k),
-                    "must be -1 or a live proxy whose moveIndex is here, got " + std::to_string(key));
+                    "must be -1 or a live proxy whose moveIndex is here, got " +
+                        std::to_string(key));
         }
         std::vector<int> pairCounts(infos.size(), 0);
         const std::vector<detail::PairEntry>& slots = SnapshotAccess::pairSlots(bp);
@@ -984,7 +1016,8 @@ public:
                 continue;
             }
             require(info.moveIndex == -1 ||
-                        (info.moveIndex >= 0 && static_cast<std::size_t>(info.moveIndex) < moves.size() &&
+                        (info.moveIndex >= 0 &&
+                         static_cast<std::size_t>(info.moveIndex) < moves.size() &&
                          moves[static_cast<std::size_t>(info.moveIndex)] == static_cast<int>(key)),
                     path + ".moveIndex", "must be -1 or where the move buffer lists the proxy");
         }
@@ -1000,12 +1033,13 @@ private:
         int prev = kNullIndex;
         for (int k = head; k != kNullIndex;) {
             const auto* e = get(k);
-            require(e != nullptr && (e->bodyA == bodyIndex || e->bodyB == bodyIndex) &&
-                        count < slots,
-                    path, "the list must link live elements of this body, got " + std::to_string(k));
+            require(
+                e != nullptr && (e->bodyA == bodyIndex || e->bodyB == bodyIndex) && count < slots,
+                path, "the list must link live elements of this body, got " + std::to_string(k));
             const int side = e->bodyA == bodyIndex ? 0 : 1;
             require(e->prev[side] == prev, path,
-                    "element " + std::to_string(k) + " is not linked back to " + std::to_string(prev));
+                    "element " + std::to_string(k) + " is not linked back to " +
+                        std::to_string(prev));
             ++count;
             prev = k;
             k = e->next[side];
@@ -1034,7 +1068,8 @@ std::vector<std::uint8_t> World::saveSnapshot() const {
     // The writer only reads the state (impl_ is not const behind a const World).
     detail::transferWorld(writer, *impl_);
     std::vector<std::uint8_t>& bytes = writer.bytes();
-    const std::span<const std::uint8_t> payload(bytes.data() + kHeaderBytes, bytes.size() - kHeaderBytes);
+    const std::span<const std::uint8_t> payload(bytes.data() + kHeaderBytes,
+                                                bytes.size() - kHeaderBytes);
     writer.patch(16, payload.size(), 8);
     writer.patch(24, fnv1a(payload), 8);
     return std::move(bytes);
@@ -1047,7 +1082,8 @@ void World::restoreSnapshot(std::span<const std::uint8_t> snapshot) {
     detail::SnapshotReader reader(payload, kHeaderBytes, kRestore);
     detail::transferWorld(reader, *fresh);
     if (reader.remaining() != 0) {
-        reader.fail("END.", std::to_string(reader.remaining()) + " bytes after the last section", 0);
+        reader.fail("END.", std::to_string(reader.remaining()) + " bytes after the last section",
+                    0);
     }
     Checker check(*fresh);
     auto section = [&](const char* name) { check.section(name, reader.sectionOffset(name)); };

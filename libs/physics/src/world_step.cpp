@@ -21,9 +21,8 @@ namespace {
 
 bool isFiniteState(const detail::BodySim& s, const detail::BodyState& st) {
     return (st.flags & detail::kNonFinite) == 0 && isFinite(s.center) && isFinite(s.transform.p) &&
-           isFinite(s.positionResidual) && isFinite(s.transform.q.c) &&
-           isFinite(s.transform.q.s) && isFinite(st.linearVelocity) &&
-           isFinite(st.angularVelocity);
+           isFinite(s.positionResidual) && isFinite(s.transform.q.c) && isFinite(s.transform.q.s) &&
+           isFinite(st.linearVelocity) && isFinite(st.angularVelocity);
 }
 
 } // namespace
@@ -139,7 +138,8 @@ void World::Impl::scheduleWide(int constraintCount) {
     }
     // Block `blockCount` holds the bodies no constraint touches: no levels.
     for (int b = 0; b < blockCount; ++b) {
-        s.blockLevelStart[static_cast<std::size_t>(b) + 1] += s.blockLevelStart[static_cast<std::size_t>(b)];
+        s.blockLevelStart[static_cast<std::size_t>(b) + 1] +=
+            s.blockLevelStart[static_cast<std::size_t>(b)];
     }
     s.blockLevelStart.push_back(s.blockLevelStart.back());
     const int levelCount = s.blockLevelStart[static_cast<std::size_t>(blockCount)];
@@ -163,7 +163,8 @@ void World::Impl::scheduleWide(int constraintCount) {
     s.slotContact.resize(count);
     s.slotBodies.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
-        const auto slot = static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])]++);
+        const auto slot =
+            static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(s.constraintLevel[k])]++);
         s.slotConstraint[slot] = static_cast<int>(k);
         s.slotContact[slot] = s.constraintContacts[k];
         s.slotBodies[slot] = s.constraintBodies[k];
@@ -180,19 +181,21 @@ void World::Impl::scheduleWide(int constraintCount) {
     s.blockBodyStart.assign(static_cast<std::size_t>(blockCount) + 2, 0);
     s.bodyBlock.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        int block = s.islandBlock[static_cast<std::size_t>(detail::findRoot(parent, static_cast<int>(i)))];
+        int block =
+            s.islandBlock[static_cast<std::size_t>(detail::findRoot(parent, static_cast<int>(i)))];
         block = block < 0 ? blockCount : block;
         s.bodyBlock[i] = block;
         ++s.blockBodyStart[static_cast<std::size_t>(block) + 1];
     }
     for (int b = 0; b <= blockCount; ++b) {
-        s.blockBodyStart[static_cast<std::size_t>(b) + 1] += s.blockBodyStart[static_cast<std::size_t>(b)];
+        s.blockBodyStart[static_cast<std::size_t>(b) + 1] +=
+            s.blockBodyStart[static_cast<std::size_t>(b)];
     }
     s.levelNext.assign(s.blockBodyStart.begin(), s.blockBodyStart.end() - 1);
     s.blockBodies.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        s.blockBodies[static_cast<std::size_t>(s.levelNext[static_cast<std::size_t>(s.bodyBlock[i])]++)] =
-            static_cast<int>(i);
+        s.blockBodies[static_cast<std::size_t>(
+            s.levelNext[static_cast<std::size_t>(s.bodyBlock[i])]++)] = static_cast<int>(i);
     }
 }
 
@@ -240,19 +243,20 @@ void World::Impl::solve(float dt) {
         bs.minExtent = m.minExtent;
         bs.bodyIndex = static_cast<int>(bi);
         bs.flags = m.isBullet ? std::uint32_t{detail::kIsBullet} : 0u;
-        s.stateRigid.push_back(bs.invMass.x == 0.0f && bs.invMass.y == 0.0f && bs.invInertia == 0.0f);
+        s.stateRigid.push_back(bs.invMass.x == 0.0f && bs.invMass.y == 0.0f &&
+                               bs.invInertia == 0.0f);
         detail::BodyState& st = s.states.emplace_back();
         st.deltaPosition = m.positionResidual;
         // A kinematic body keeps its velocity; a locked axis has none.
         st.linearVelocity = {m.lockX && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.x,
                              m.lockY && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.y};
-        st.angularVelocity = m.invInertia == 0.0f && b.type == BodyType::Dynamic
-                                 ? 0.0f
-                                 : b.angularVelocity;
+        st.angularVelocity =
+            m.invInertia == 0.0f && b.type == BodyType::Dynamic ? 0.0f : b.angularVelocity;
         // Velocities set beyond the caps (a finite 1e38 spin) are capped before the contacts
         // read them: integration would cap them anyway, and a contact's approach speed taken
         // from the raw value could overflow its restitution and hit event.
-        detail::clampVelocity(st.linearVelocity, st.angularVelocity, def.maxLinearSpeed, integrationStep);
+        detail::clampVelocity(st.linearVelocity, st.angularVelocity, def.maxLinearSpeed,
+                              integrationStep);
     }
 
     prepareJoints(dt, integrationStep);
@@ -328,7 +332,8 @@ void World::Impl::solve(float dt) {
         // (The build below rewrites every lane of every group, padding included.)
         auto sameAsLast = [](const auto& now, const auto& last) {
             return now.size() == last.size() &&
-                   (now.empty() || std::memcmp(now.data(), last.data(), now.size() * sizeof(now[0])) == 0);
+                   (now.empty() ||
+                    std::memcmp(now.data(), last.data(), now.size() * sizeof(now[0])) == 0);
         };
         static_assert(sizeof(detail::Simulation::ConstraintBodies) == 2 * sizeof(int));
         const bool same = s.wideScheduleValid && s.stateRigid == s.lastStateRigid &&
@@ -341,7 +346,9 @@ void World::Impl::solve(float dt) {
             // moving body, so the wide solver takes several at a time. A rigid side is not
             // moving: the constraint never changes its velocity.
             auto moving = [&](int k) {
-                return k == kNullIndex || s.stateRigid[static_cast<std::size_t>(k)] != 0 ? kNullIndex : k;
+                return k == kNullIndex || s.stateRigid[static_cast<std::size_t>(k)] != 0
+                           ? kNullIndex
+                           : k;
             };
             s.levels.reset(static_cast<int>(s.sims.size()));
             s.constraintLevel.clear();
@@ -403,8 +410,8 @@ void World::Impl::solve(float dt) {
     };
 
     const detail::JointStep jointStep = detail::makeJointStep(def, integrationStep, &s.jointDirect);
-    detail::SolverStep step{s.sims, s.states, s.constraints, gravity, dt, &def,
-                            joints, s.jointOrder, jointStep, &s.pointJoints};
+    detail::SolverStep step{s.sims, s.states, s.constraints, gravity,   dt,
+                            &def,   joints,   s.jointOrder,  jointStep, &s.pointJoints};
     auto pushOutSweeps = [](detail::SolverStep& st, bool on) {
         st.extraSolveIterations = on ? detail::kPushOutSolveIterations : 0;
         st.extraRelaxIterations = on ? detail::kPushOutRelaxIterations : 0;
@@ -439,10 +446,11 @@ void World::Impl::solve(float dt) {
                         }
                         if (slot + kPrefetchAhead < constraintCount) {
                             detail::prefetchObject(&s.contacts[static_cast<std::size_t>(
-                    s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
+                                s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
                         }
                         const auto at = static_cast<std::size_t>(slot);
-                        const detail::Contact& c = s.contacts[static_cast<std::size_t>(s.slotContact[at])];
+                        const detail::Contact& c =
+                            s.contacts[static_cast<std::size_t>(s.slotContact[at])];
                         const detail::ContactBodyView a = viewOf(c.bodyA, s.slotBodies[at].indexA);
                         const detail::ContactBodyView b = viewOf(c.bodyB, s.slotBodies[at].indexB);
                         in.setLane(lane, c.manifold, a, b, c.friction, softnessOf(a, b));
@@ -480,31 +488,37 @@ void World::Impl::solve(float dt) {
                 blockPushOut = buildBlock(lanes4, firstLevel, endLevel, worker.restitution);
             }
             pushOutSweeps(blockStep, blockPushOut);
-            worker.extraRelaxIterations = std::max(worker.extraRelaxIterations, blockStep.extraRelaxIterations);
+            worker.extraRelaxIterations =
+                std::max(worker.extraRelaxIterations, blockStep.extraRelaxIterations);
             detail::solveSoftStepBlock(
                 blockStep, s.wideContacts, firstLevel, endLevel,
-                blockBodies.subspan(static_cast<std::size_t>(s.blockBodyStart[b]),
-                                    static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b])),
+                blockBodies.subspan(
+                    static_cast<std::size_t>(s.blockBodyStart[b]),
+                    static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b])),
                 worker.restitution,
                 s.activeJoints.empty()
                     ? std::span<const int>{}
                     : std::span<const int>(s.blockJoints)
                           .subspan(static_cast<std::size_t>(s.blockJointStart[b]),
-                                   static_cast<std::size_t>(s.blockJointStart[b + 1] - s.blockJointStart[b])));
+                                   static_cast<std::size_t>(s.blockJointStart[b + 1] -
+                                                            s.blockJointStart[b])));
             // Contacts are visited in slot order, twice a block: gathered before it is solved
             // and their impulses stored right after, while its lanes are in cache. A level's
             // contacts lie one island apart in the array, too far for the hardware prefetcher:
             // fetch the ones a few slots ahead.
-            detail::visitWide(s.wideContacts, s.levelStart, firstLevel, endLevel,
-                              [&](int slot, const detail::WideLaneResult& r) {
-                if (slot + kPrefetchAhead < constraintCount) {
-                    detail::prefetchObject(&s.contacts[static_cast<std::size_t>(
-                        s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
-                }
-                const int ci = s.slotContact[static_cast<std::size_t>(slot)];
-                store(worker.hits, ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount,
-                      r.normalImpulse, r.tangentImpulse, r.relativeVelocity, r.maxNormalImpulse);
-            });
+            detail::visitWide(
+                s.wideContacts, s.levelStart, firstLevel, endLevel,
+                [&](int slot, const detail::WideLaneResult& r) {
+                    if (slot + kPrefetchAhead < constraintCount) {
+                        detail::prefetchObject(&s.contacts[static_cast<std::size_t>(
+                            s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
+                    }
+                    const int ci = s.slotContact[static_cast<std::size_t>(slot)];
+                    store(worker.hits, ci,
+                          s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount,
+                          r.normalImpulse, r.tangentImpulse, r.relativeVelocity,
+                          r.maxNormalImpulse);
+                });
         };
         const int blockCount = static_cast<int>(s.blockLevelStart.size()) - 1;
         // The direct joint solve keeps its arrays in one place (JointStep::direct): its blocks
@@ -517,7 +531,8 @@ void World::Impl::solve(float dt) {
         }
         auto solveBlocks = [&](int begin, int end, int worker) {
             for (int b = begin; b < end; ++b) {
-                solveBlock(static_cast<std::size_t>(b), s.blockWorkers[static_cast<std::size_t>(worker)]);
+                solveBlock(static_cast<std::size_t>(b),
+                           s.blockWorkers[static_cast<std::size_t>(worker)]);
             }
         };
         if (oneWorker) {

@@ -73,7 +73,9 @@ bool testFilter(std::uint64_t a, std::uint64_t b) { return !(a % 5 == 0 && b % 5
 // Categories and masks of the random scene's proxies (userData i): one of three categories,
 // and a mask that leaves one out (every fourth proxy takes all).
 std::uint64_t categoryOf(std::uint64_t i) { return std::uint64_t{1} << (i % 3); }
-std::uint64_t maskOf(std::uint64_t i) { return i % 4 == 0 ? ~std::uint64_t{0} : ~categoryOf(i + 1); }
+std::uint64_t maskOf(std::uint64_t i) {
+    return i % 4 == 0 ? ~std::uint64_t{0} : ~categoryOf(i + 1);
+}
 bool maskFilter(std::uint64_t a, std::uint64_t b) {
     return testFilter(a, b) && (maskOf(a) & categoryOf(b)) != 0 && (maskOf(b) & categoryOf(a)) != 0;
 }

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 // CharacterController on game objects of a real scene, in pixels (100 world units per metre).
 #include <e2d/core/component.hpp>
-#include <e2d/physics/contact_info.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/log.hpp>
@@ -10,6 +9,7 @@
 #include <e2d/core/scene_registry.hpp>
 #include <e2d/physics/character_controller.hpp>
 #include <e2d/physics/collider.hpp>
+#include <e2d/physics/contact_info.hpp>
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
@@ -30,10 +30,10 @@ using physics::Collider;
 using physics::CollisionEnter;
 using physics::CollisionExit;
 using physics::ContactInfo;
-using physics::TriggerEnter;
-using physics::TriggerExit;
 using physics::PhysicsSystem;
 using physics::Rigidbody;
+using physics::TriggerEnter;
+using physics::TriggerExit;
 
 constexpr float kDt = 1.0f / 60.0f;
 constexpr float kGravity = -1000.0f; // px/s^2
@@ -121,8 +121,8 @@ TEST_F(CharacterControllerTest, RidesAKinematicRigidbodyPlatform) {
     start([&](core::Scene& s) {
         lift = &s.createGameObject();
         lift->setPosition(glm::vec2{0.0f, 0.0f});
-        lift->addComponent<Rigidbody>(physics::RigidbodyDef{
-            .type = physics::BodyType::Kinematic, .linearVelocity = {120.0f, 60.0f}});
+        lift->addComponent<Rigidbody>(physics::RigidbodyDef{.type = physics::BodyType::Kinematic,
+                                                            .linearVelocity = {120.0f, 60.0f}});
         lift->addComponent<Collider>(physics::makeBox(150.0f, 20.0f));
         player = &s.createGameObject();
         player->setPosition(glm::vec2{0.0f, 20.0f + kRest});
@@ -220,8 +220,9 @@ TEST_F(CharacterControllerTest, TellsBothObjectsAboutWallsAndStaticTriggers) {
     ASSERT_EQ(wallLog->kinds(), std::vector<std::string>{"enter"});
     EXPECT_EQ(wallLog->events[0].info.other, player);
     EXPECT_NEAR(wallLog->events[0].info.points[0].normal.x, -1.0f, 1e-4f); // towards the player
-    EXPECT_NEAR(wallLog->events[0].info.points[0].point.x, 450.0f, 0.1f); // world units
-    ASSERT_EQ(playerLog->kinds(), (std::vector<std::string>{"trigger-enter", "trigger-exit", "enter"}));
+    EXPECT_NEAR(wallLog->events[0].info.points[0].point.x, 450.0f, 0.1f);  // world units
+    ASSERT_EQ(playerLog->kinds(),
+              (std::vector<std::string>{"trigger-enter", "trigger-exit", "enter"}));
     EXPECT_EQ(playerLog->events[0].info.other, coin);
     EXPECT_EQ(playerLog->events[2].info.other, wall);
 

@@ -354,8 +354,8 @@ TEST(CharacterMover, BumpsItsHeadOnACeiling) {
 TEST(CharacterMover, RidesAKinematicPlatformWithItsGroundVelocity) {
     World world;
     const Vec2 platformVelocity{1.0f, 0.5f};
-    const BodyId platform = addBody(world, {0.0f, 0.0f}, makeBox(1.5f, 0.2f),
-                                    BodyType::Kinematic, platformVelocity);
+    const BodyId platform =
+        addBody(world, {0.0f, 0.0f}, makeBox(1.5f, 0.2f), BodyType::Kinematic, platformVelocity);
     CharacterMover rider(moverAt({0.0f, 0.2f + kRest}));
     CharacterMover passenger(moverAt({0.0f, 0.2f + kRest})); // does not add the ground velocity
     rider.move(world, {0.0f, 0.0f});
@@ -411,8 +411,8 @@ TEST(CharacterMover, SqueezedByAPlatformItStaysAboveTheFloorAndFinite) {
     World world;
     addFloor(world);
     // A kinematic slab coming down at 1 m/s onto the mover's head (head top at 1.61 m).
-    const BodyId slab = addBody(world, {0.0f, 2.0f}, makeBox(2.0f, 0.2f), BodyType::Kinematic,
-                                {0.0f, -1.0f});
+    const BodyId slab =
+        addBody(world, {0.0f, 2.0f}, makeBox(2.0f, 0.2f), BodyType::Kinematic, {0.0f, -1.0f});
     CharacterMover mover(moverAt({0.0f, kRest}));
     for (int i = 0; i < 40; ++i) {
         world.step(kDt);
@@ -473,20 +473,27 @@ TEST(CharacterMover, DefErrorsNameTheFieldAndValue) {
     EXPECT_EQ(make([](CharacterMoverDef& d) { d.capsule.radius = 0.0f; }),
               "physics::CharacterMover::CharacterMover(): def.capsule.radius must be finite and "
               "> 0, got 0");
-    EXPECT_EQ(make([](CharacterMoverDef& d) { d.up = {0.0f, 2.0f}; }),
-              "physics::CharacterMover::CharacterMover(): def.up must be a unit vector, got (0, 2)");
+    EXPECT_EQ(
+        make([](CharacterMoverDef& d) {
+            d.up = {0.0f, 2.0f};
+        }),
+        "physics::CharacterMover::CharacterMover(): def.up must be a unit vector, got (0, 2)");
     EXPECT_EQ(make([](CharacterMoverDef& d) { d.maxSlopeAngle = 2.0f; }),
               "physics::CharacterMover::CharacterMover(): def.maxSlopeAngle must be finite and in "
               "[0, pi/2) radians, got 2");
     EXPECT_EQ(make([](CharacterMoverDef& d) { d.maxPushOut = 0.0f; }),
               "physics::CharacterMover::CharacterMover(): def.maxPushOut must be finite and > 0, "
               "got 0");
-    EXPECT_EQ(make([](CharacterMoverDef& d) { d.position = {NAN, 0.0f}; }),
+    EXPECT_EQ(make([](CharacterMoverDef& d) {
+                  d.position = {NAN, 0.0f};
+              }),
               "physics::CharacterMover::CharacterMover(): def.position must be finite and within "
               "kHuge, got (nan, 0)");
     World world;
     CharacterMover mover;
-    EXPECT_EQ(errorOf([&] { mover.move(world, {INFINITY, 0.0f}); }),
+    EXPECT_EQ(errorOf([&] {
+                  mover.move(world, {INFINITY, 0.0f});
+              }),
               "physics::CharacterMover::move(): displacement must be finite and keep the mover "
               "within kHuge, got (inf, 0)");
     EXPECT_EQ(mover.position(), Vec2(0.0f, 0.0f)); // nothing moved

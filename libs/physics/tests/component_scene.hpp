@@ -4,12 +4,12 @@
 #pragma once
 
 #include <e2d/core/component.hpp>
-#include <e2d/physics/contact_info.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/log.hpp>
 #include <e2d/core/scene.hpp>
 #include <e2d/core/scene_director.hpp>
 #include <e2d/core/scene_registry.hpp>
+#include <e2d/physics/contact_info.hpp>
 #include <e2d/physics/physics_system.hpp>
 
 #include <gtest/gtest.h>
@@ -51,7 +51,8 @@ public:
 };
 
 /// Records the physics events its object receives.
-class EventLog : public core::Component, public core::Handles<CollisionEnter, CollisionExit, TriggerEnter, TriggerExit> {
+class EventLog : public core::Component,
+                 public core::Handles<CollisionEnter, CollisionExit, TriggerEnter, TriggerExit> {
 public:
     struct Event {
         std::string kind;

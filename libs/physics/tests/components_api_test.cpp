@@ -73,7 +73,8 @@ TEST_F(ComponentsApiTest, RigidbodyUsedRightAfterAddComponentActsWhenTheBodyIsMa
         other->setLinearVelocity({1.0f, 0.0f});
         FAIL() << "no error";
     } catch (const core::Error& e) {
-        EXPECT_NE(std::string(e.what()).find("physics::Rigidbody::setLinearVelocity(): the Rigidbody on object "),
+        EXPECT_NE(std::string(e.what()).find(
+                      "physics::Rigidbody::setLinearVelocity(): the Rigidbody on object "),
                   std::string::npos)
             << e.what();
     }
@@ -139,15 +140,15 @@ TEST_F(ComponentsApiTest, PreSolveRuleSeesTheContactInWorldUnitsAndCanRefuseIt) 
     glm::vec2 normal{0.0f};
     world.start([&](core::Scene& s) {
         core::GameObject& floor = s.createGameObject();
-        floor.addComponent<Collider>(physics::makeBox(200.0f, 10.0f),
-                                     ColliderDef{.preSolve = [&](const ContactInfo& c) {
-                                         if (++calls == 1) { // the first touch, on the floor's top
-                                             normal = c.points[0].normal;
-                                             EXPECT_EQ(c.other, box);
-                                             EXPECT_NEAR(c.points[0].point.y, 10.0f, 3.0f) << "units";
-                                         }
-                                         return false;
-                                     }});
+        floor.addComponent<Collider>(
+            physics::makeBox(200.0f, 10.0f), ColliderDef{.preSolve = [&](const ContactInfo& c) {
+                if (++calls == 1) { // the first touch, on the floor's top
+                    normal = c.points[0].normal;
+                    EXPECT_EQ(c.other, box);
+                    EXPECT_NEAR(c.points[0].point.y, 10.0f, 3.0f) << "units";
+                }
+                return false;
+            }});
         box = &s.createGameObject();
         box->setPosition(glm::vec2{0.0f, 40.0f});
         box->addComponent<Rigidbody>();
@@ -203,8 +204,8 @@ TEST_F(ComponentsApiTest, SensorSeesAKinematicBodyWhenAskedTo) {
         blind = b.addComponent<EventLog>();
         core::GameObject& mover = s.createGameObject();
         mover.setPosition(glm::vec2{-300.0f, 0.0f});
-        mover.addComponent<Rigidbody>(RigidbodyDef{.type = physics::BodyType::Kinematic,
-                                                   .linearVelocity = {600.0f, 0.0f}});
+        mover.addComponent<Rigidbody>(
+            RigidbodyDef{.type = physics::BodyType::Kinematic, .linearVelocity = {600.0f, 0.0f}});
         mover.addComponent<Collider>(physics::makeBox(10.0f, 10.0f));
     });
     frames(60);
@@ -229,8 +230,11 @@ TEST_F(ComponentsApiTest, QueriesTakeAndGiveWorldUnits) {
     EXPECT_EQ(physics.overlapPoint({305.0f, 50.0f}).size(), 1u);
     EXPECT_TRUE(physics.overlapPoint({250.0f, 50.0f}).empty());
     EXPECT_EQ(physics.overlapAabb({{280.0f, 90.0f}, {295.0f, 95.0f}}).size(), 1u);
-    EXPECT_EQ(physics.overlapShape(physics::Circle{{0.0f, 0.0f}, 15.0f}, {280.0f, 0.0f}, 0.0f).size(), 1u);
-    const auto cast = physics.castShape(physics::Circle{{0.0f, 0.0f}, 20.0f}, {0.0f, 0.0f}, 0.0f, {1000.0f, 0.0f});
+    EXPECT_EQ(
+        physics.overlapShape(physics::Circle{{0.0f, 0.0f}, 15.0f}, {280.0f, 0.0f}, 0.0f).size(),
+        1u);
+    const auto cast = physics.castShape(physics::Circle{{0.0f, 0.0f}, 20.0f}, {0.0f, 0.0f}, 0.0f,
+                                        {1000.0f, 0.0f});
     ASSERT_TRUE(cast);
     EXPECT_NEAR(cast->point.x, 290.0f, 0.5f);
     EXPECT_NEAR(cast->fraction, 0.27f, 0.002f);

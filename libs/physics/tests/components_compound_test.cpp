@@ -122,7 +122,8 @@ TEST_F(CompoundTest, RemovingTheChildColliderOrTheRigidbody) {
     frames(1);
     ASSERT_FALSE(childBody().isNull());
     EXPECT_EQ(physics.world().bodyType(childBody()), physics::BodyType::Static);
-    EXPECT_EQ(physics.world().bodyCount(), 2) << "the crate's collider and the child's, both static";
+    EXPECT_EQ(physics.world().bodyCount(), 2)
+        << "the crate's collider and the child's, both static";
 }
 
 TEST_F(CompoundTest, RigidbodyAddedLaterTakesItsChildrensColliders) {

@@ -44,8 +44,8 @@ TEST(ComponentErrors, ABodyFarOutIsReportedInWorldUnitsNamingItsObject) {
                           crate.addComponent<Rigidbody>();
                       }),
               "physics::Rigidbody on object 'crate': world position (1e+30, 0) world units is out "
-                          "of the physics range (finite, |x| and |y| <= 50000000 world units: 500000 m at 100 "
-                          "units per metre)");
+              "of the physics range (finite, |x| and |y| <= 50000000 world units: 500000 m at 100 "
+              "units per metre)");
 }
 
 TEST(ComponentErrors, AStaticColliderMovedFarOutByHandNamesItsObjectByTag) {
@@ -58,9 +58,11 @@ TEST(ComponentErrors, AStaticColliderMovedFarOutByHandNamesItsObjectByTag) {
     });
     s.frames(1);
     wall->setPosition(glm::vec2{0.0f, -3e6f});
-    EXPECT_EQ(errorOf(s), "physics::Collider on object tagged 'wall': world position (0, -3000000) world units "
-                          "is out of the physics range (finite, |x| and |y| <= 500000 world units: 500000 m at 1 "
-                          "units per metre)");
+    EXPECT_EQ(
+        errorOf(s),
+        "physics::Collider on object tagged 'wall': world position (0, -3000000) world units "
+        "is out of the physics range (finite, |x| and |y| <= 500000 world units: 500000 m at 1 "
+        "units per metre)");
 }
 
 // Finite scales whose product overflows (the setters refuse only non-finite values).
@@ -76,7 +78,8 @@ TEST(ComponentErrors, AScaleThatOverflowsUnderAColliderNamesTheObjectAndItsScale
                           coin.setScale(glm::vec2{1e20f, 1.0f});
                           coin.addComponent<Collider>(physics::makeBox(1.0f, 1.0f));
                       }),
-              "physics::Collider on object 'coin': the object's scale, orientation or position relative to its "
+              "physics::Collider on object 'coin': the object's scale, orientation or position "
+              "relative to its "
               "body is not finite (scale (1e+20, 1), orientation 0)");
 }
 

@@ -3,7 +3,6 @@
 // 100 units per metre, with every length, speed, force and torque 100 (or 100^2) times larger,
 // must move exactly as the same scene at 1 unit per metre, its positions 100 times larger.
 #include <e2d/core/component.hpp>
-#include <e2d/physics/contact_info.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/log.hpp>
@@ -11,6 +10,7 @@
 #include <e2d/core/scene_director.hpp>
 #include <e2d/core/scene_registry.hpp>
 #include <e2d/physics/collider.hpp>
+#include <e2d/physics/contact_info.hpp>
 #include <e2d/physics/joint_component.hpp>
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
@@ -67,36 +67,38 @@ Outcome simulate(float s, int steps) {
     core::GameObject* bob = nullptr;
     FirstContact* contact = nullptr;
     registry.add("Scaled", core::SceneFunctions{.initialize = [&](core::Scene& scene) {
-        core::GameObject& ground = scene.createGameObject();
-        ground.setPosition(glm::vec2{0.0f, -1.0f * s});
-        ground.addComponent<Collider>(physics::makeBox(20.0f * s, 1.0f * s));
+                     core::GameObject& ground = scene.createGameObject();
+                     ground.setPosition(glm::vec2{0.0f, -1.0f * s});
+                     ground.addComponent<Collider>(physics::makeBox(20.0f * s, 1.0f * s));
 
-        box = &scene.createGameObject();
-        box->setPosition(glm::vec2{0.5f * s, 3.0f * s});
-        box->setOrientation(0.25f);
-        physics::RigidbodyDef boxDef;
-        boxDef.linearVelocity = {1.0f * s, 0.0f};
-        boxDef.angularVelocity = 0.5f;
-        box->addComponent<Rigidbody>(boxDef);
-        box->addComponent<Collider>(physics::makeBox(0.5f * s, 0.25f * s));
-        contact = box->addComponent<FirstContact>();
+                     box = &scene.createGameObject();
+                     box->setPosition(glm::vec2{0.5f * s, 3.0f * s});
+                     box->setOrientation(0.25f);
+                     physics::RigidbodyDef boxDef;
+                     boxDef.linearVelocity = {1.0f * s, 0.0f};
+                     boxDef.angularVelocity = 0.5f;
+                     box->addComponent<Rigidbody>(boxDef);
+                     box->addComponent<Collider>(physics::makeBox(0.5f * s, 0.25f * s));
+                     contact = box->addComponent<FirstContact>();
 
-        ball = &scene.createGameObject();
-        ball->setPosition(glm::vec2{-4.0f * s, 6.0f * s});
-        ball->addComponent<Rigidbody>();
-        ball->addComponent<Collider>(physics::Circle{{0.0f, 0.0f}, 0.5f * s},
-                                     physics::ColliderDef{.density = 2.0f, .restitution = 0.5f});
+                     ball = &scene.createGameObject();
+                     ball->setPosition(glm::vec2{-4.0f * s, 6.0f * s});
+                     ball->addComponent<Rigidbody>();
+                     ball->addComponent<Collider>(
+                         physics::Circle{{0.0f, 0.0f}, 0.5f * s},
+                         physics::ColliderDef{.density = 2.0f, .restitution = 0.5f});
 
-        // A pendulum hung from the world point (6, 5) m, its bob 1 m to the right.
-        bob = &scene.createGameObject();
-        bob->setPosition(glm::vec2{7.0f * s, 5.0f * s});
-        bob->addComponent<Rigidbody>();
-        bob->addComponent<Collider>(physics::Circle{{0.0f, 0.0f}, 0.25f * s});
-        physics::RevoluteJointDef hinge;
-        hinge.localAnchorA = {6.0f * s, 5.0f * s};
-        hinge.localAnchorB = {-1.0f * s, 0.0f};
-        bob->addComponent<physics::JointComponent>(physics, physics::JointComponentDef{hinge, {}});
-    }});
+                     // A pendulum hung from the world point (6, 5) m, its bob 1 m to the right.
+                     bob = &scene.createGameObject();
+                     bob->setPosition(glm::vec2{7.0f * s, 5.0f * s});
+                     bob->addComponent<Rigidbody>();
+                     bob->addComponent<Collider>(physics::Circle{{0.0f, 0.0f}, 0.25f * s});
+                     physics::RevoluteJointDef hinge;
+                     hinge.localAnchorA = {6.0f * s, 5.0f * s};
+                     hinge.localAnchorB = {-1.0f * s, 0.0f};
+                     bob->addComponent<physics::JointComponent>(
+                         physics, physics::JointComponentDef{hinge, {}});
+                 }});
     director.addSystem(physics);
     EXPECT_TRUE(director.start("Scaled"));
     Outcome run;
@@ -119,7 +121,8 @@ Outcome simulate(float s, int steps) {
         if (i >= 20 && i < 40) {
             ballBody->applyForce({0.0f, 4.0f * s});
             ballBody->applyTorque(0.5f * s * s);
-            boxBody->applyForceAtPoint({3.0f * s, 0.0f}, glm::vec2(box->position()) + glm::vec2{0.0f, 0.25f * s});
+            boxBody->applyForceAtPoint({3.0f * s, 0.0f},
+                                       glm::vec2(box->position()) + glm::vec2{0.0f, 0.25f * s});
         }
         physics.fixedUpdate(kStep);
         for (core::GameObject* o : {box, ball, bob}) {
@@ -197,8 +200,9 @@ TEST(PhysicsScale, UnitsPerMetreMustBeFiniteAndPositive) {
             PhysicsSystem system{physics::WorldDef{}, bad};
             FAIL() << "accepted " << bad;
         } catch (const core::Error& e) {
-            EXPECT_NE(std::string(e.what()).find("physics::PhysicsSystem::PhysicsSystem(): unitsPerMetre must "
-                                                 "be finite and > 0, got "),
+            EXPECT_NE(std::string(e.what()).find(
+                          "physics::PhysicsSystem::PhysicsSystem(): unitsPerMetre must "
+                          "be finite and > 0, got "),
                       std::string::npos)
                 << e.what();
         }
@@ -215,7 +219,8 @@ TEST(PhysicsScale, JointDefsAreCheckedInMetresAfterScaling) {
         FAIL() << "accepted a 3 mm joint";
     } catch (const core::Error& e) {
         EXPECT_NE(std::string(e.what()).find("length"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("(in metres: the def's world units divided by unitsPerMetre 100)"),
+        EXPECT_NE(std::string(e.what()).find(
+                      "(in metres: the def's world units divided by unitsPerMetre 100)"),
                   std::string::npos)
             << e.what();
     }

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Rigidbody, Collider and PhysicsSystem driving game objects of a real scene.
 #include <e2d/core/component.hpp>
-#include <e2d/physics/contact_info.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/core/game_object.hpp>
 #include <e2d/core/log.hpp>
@@ -9,6 +8,7 @@
 #include <e2d/core/scene_director.hpp>
 #include <e2d/core/scene_registry.hpp>
 #include <e2d/physics/collider.hpp>
+#include <e2d/physics/contact_info.hpp>
 #include <e2d/physics/physics_system.hpp>
 #include <e2d/physics/rigidbody.hpp>
 
@@ -163,8 +163,9 @@ TEST_F(ComponentsTest, RigidbodyIsUniqueAndRejectsBadDefinitions) {
         Rigidbody rb(physics, bad);
         FAIL() << "negative damping accepted";
     } catch (const core::Error& e) {
-        EXPECT_STREQ(e.what(),
-                     "physics::Rigidbody::Rigidbody(): def.linearDamping must be finite and >= 0, got -1");
+        EXPECT_STREQ(
+            e.what(),
+            "physics::Rigidbody::Rigidbody(): def.linearDamping must be finite and >= 0, got -1");
     }
     physics::RigidbodyDef staticDef;
     staticDef.type = physics::BodyType::Static;
@@ -214,9 +215,9 @@ TEST_F(ComponentsTest, ImpulseAndFreezeFlagsActThroughTheComponent) {
     });
     frames(1);
     EXPECT_NEAR(rb->mass(), 1.0f, 1e-5f);
-    rb->applyLinearImpulse({2.0f, 3.0f});            // y is frozen
+    rb->applyLinearImpulse({2.0f, 3.0f});                // y is frozen
     rb->applyImpulseAtPoint({0.0f, 1.0f}, {0.5f, 0.0f}); // would spin it, rotation is frozen
-    frames(30);                                       // 0.5 s at 2 m/s
+    frames(30);                                          // 0.5 s at 2 m/s
     EXPECT_NEAR(o->position().x, 1.0f, 0.02f);
     EXPECT_NEAR(o->position().y, 0.0f, 1e-5f);
     EXPECT_NEAR(o->orientation(), 0.0f, 1e-6f);
@@ -231,10 +232,12 @@ TEST_F(ComponentsTest, ColliderAddedBeforeItsRigidbodyRidesOnIt) {
     });
     frames(1);
     Collider* c = o->getComponent<Collider>();
-    EXPECT_EQ(physics.world().bodyType(physics.world().shapeBody(c->shape())), physics::BodyType::Static);
+    EXPECT_EQ(physics.world().bodyType(physics.world().shapeBody(c->shape())),
+              physics::BodyType::Static);
     o->addComponent<Rigidbody>(physics);
     frames(31);
-    EXPECT_EQ(physics.world().bodyType(physics.world().shapeBody(c->shape())), physics::BodyType::Dynamic);
+    EXPECT_EQ(physics.world().bodyType(physics.world().shapeBody(c->shape())),
+              physics::BodyType::Dynamic);
     EXPECT_LT(o->position().y, 9.0f) << "it falls once it has a Rigidbody";
     EXPECT_EQ(physics.world().bodyCount(), 1) << "the static body it had is gone";
 
@@ -244,7 +247,8 @@ TEST_F(ComponentsTest, ColliderAddedBeforeItsRigidbodyRidesOnIt) {
     const float y = o->position().y;
     frames(30);
     EXPECT_EQ(o->position().y, y);
-    EXPECT_EQ(physics.world().bodyType(physics.world().shapeBody(c->shape())), physics::BodyType::Static);
+    EXPECT_EQ(physics.world().bodyType(physics.world().shapeBody(c->shape())),
+              physics::BodyType::Static);
 }
 
 TEST_F(ComponentsTest, ChildObjectFollowsItsBodyInWorldSpace) {
@@ -332,20 +336,20 @@ TEST_F(ComponentsTest, BodyDestroyedThroughTheWorldInsideACollisionEventLeavesIt
         core::SceneRegistry reg;
         core::SceneDirector dir{reg, logger};
         reg.add("Test", core::SceneFunctions{.initialize = [&](core::Scene& s) {
-            // A dynamic floor (so the other object has a Rigidbody too), held by zero gravity.
-            floor = &s.createGameObject();
-            physics::RigidbodyDef still;
-            still.gravityScale = 0.0f;
-            floor->addComponent<Rigidbody>(system, still);
-            floor->addComponent<Collider>(system, physics::makeBox(5.0f, 0.5f));
-            ball = &s.createGameObject();
-            ball->setPosition(glm::vec2{0.0f, 2.0f});
-            physics::RigidbodyDef falling;
-            falling.linearVelocity = {0.0f, -5.0f};
-            ball->addComponent<Rigidbody>(system, falling);
-            ball->addComponent<Collider>(system, physics::Circle{{0.0f, 0.0f}, 0.25f});
-            destroyer = ball->addComponent<BodyDestroyer>(system, own);
-        }});
+                    // A dynamic floor (so the other object has a Rigidbody too), held by zero gravity.
+                    floor = &s.createGameObject();
+                    physics::RigidbodyDef still;
+                    still.gravityScale = 0.0f;
+                    floor->addComponent<Rigidbody>(system, still);
+                    floor->addComponent<Collider>(system, physics::makeBox(5.0f, 0.5f));
+                    ball = &s.createGameObject();
+                    ball->setPosition(glm::vec2{0.0f, 2.0f});
+                    physics::RigidbodyDef falling;
+                    falling.linearVelocity = {0.0f, -5.0f};
+                    ball->addComponent<Rigidbody>(system, falling);
+                    ball->addComponent<Collider>(system, physics::Circle{{0.0f, 0.0f}, 0.25f});
+                    destroyer = ball->addComponent<BodyDestroyer>(system, own);
+                }});
         dir.addSystem(system);
         ASSERT_TRUE(dir.start("Test"));
         auto run = [&](int n) {
@@ -413,8 +417,8 @@ TEST(ComponentsWithoutSystem, DefOnlyComponentsInASceneWithoutPhysicsNameTheMiss
     core::Logger logger{core::LogLevel::Off};
     core::SceneRegistry registry;
     registry.add("Test", core::SceneFunctions{.initialize = [](core::Scene& scene) {
-        scene.createGameObject().addComponent<Rigidbody>(physics::RigidbodyDef{});
-    }});
+                     scene.createGameObject().addComponent<Rigidbody>(physics::RigidbodyDef{});
+                 }});
     core::SceneDirector director{registry, logger};
     try {
         director.start("Test");

@@ -88,9 +88,8 @@ Manifold groundManifold(const PlaneBody& b) {
         }
         int next = (lowest + 1) % 4;
         int prev = (lowest + 3) % 4;
-        int second = transformPoint(xf, corners[next]).y < transformPoint(xf, corners[prev]).y
-                         ? next
-                         : prev;
+        int second =
+            transformPoint(xf, corners[next]).y < transformPoint(xf, corners[prev]).y ? next : prev;
         addPoint(transformPoint(xf, corners[lowest]), static_cast<std::uint16_t>(lowest));
         addPoint(transformPoint(xf, corners[second]), static_cast<std::uint16_t>(second));
     }
@@ -122,8 +121,11 @@ struct Harness {
             if (m.pointCount > 0) {
                 ContactBodyView ground;
                 ContactBodyView body{rotate(b.sim.transform.q, b.sim.localCenter),
-                                     b.state.linearVelocity, b.state.angularVelocity,
-                                     b.sim.invMass, b.sim.invInertia, static_cast<int>(i)};
+                                     b.state.linearVelocity,
+                                     b.state.angularVelocity,
+                                     b.sim.invMass,
+                                     b.sim.invInertia,
+                                     static_cast<int>(i)};
                 ContactConstraint c;
                 prepareContact(c, m, ground, body, material, softness.vsStatic);
                 c.pressAcceleration = -gravity.y; // normal +y
@@ -497,8 +499,8 @@ ContactConstraint twoPointConstraint(Vec2 velocity, float angularVelocity, float
     for (int i = 0; i < 2; ++i) {
         ManifoldPoint& mp = m.points[i];
         mp.point = {i == 0 ? -1.0f : 1.0f, 0.0f};
-        mp.anchorA = mp.point;                      // ground origin at (0, 0)
-        mp.anchorB = mp.point - Vec2{0.0f, 0.5f};  // body centre at (0, 0.5)
+        mp.anchorA = mp.point;                    // ground origin at (0, 0)
+        mp.anchorB = mp.point - Vec2{0.0f, 0.5f}; // body centre at (0, 0.5)
         mp.separation = 0.0f;
         mp.id = static_cast<std::uint16_t>(i);
     }

@@ -20,10 +20,10 @@ TEST(ConstraintLevels, EachConstraintGoesOneAboveItsBodiesLastLevel) {
     levels.reset(4);
     // Body chain 0-1-2-3, then each end against the ground (-1).
     EXPECT_EQ(levels.assign(0, 1), 0);
-    EXPECT_EQ(levels.assign(1, 2), 1); // after (0,1) on body 1
-    EXPECT_EQ(levels.assign(2, 3), 2); // after (1,2) on body 2
-    EXPECT_EQ(levels.assign(0, -1), 1); // after (0,1) on body 0
-    EXPECT_EQ(levels.assign(3, -1), 3); // after (2,3) on body 3
+    EXPECT_EQ(levels.assign(1, 2), 1);   // after (0,1) on body 1
+    EXPECT_EQ(levels.assign(2, 3), 2);   // after (1,2) on body 2
+    EXPECT_EQ(levels.assign(0, -1), 1);  // after (0,1) on body 0
+    EXPECT_EQ(levels.assign(3, -1), 3);  // after (2,3) on body 3
     EXPECT_EQ(levels.assign(-1, -1), 0); // nothing to wait for
     const std::vector<int> expected{2, 2, 1, 1};
     EXPECT_EQ(levels.counts(), expected);
@@ -130,7 +130,8 @@ Schedule scheduleOf(const Problem& p) {
     s.levelStart.assign(static_cast<std::size_t>(s.levelCount) + 1, 0);
     for (int k = 0; k < s.levelCount; ++k) {
         s.levelStart[static_cast<std::size_t>(k) + 1] =
-            s.levelStart[static_cast<std::size_t>(k)] + levels.counts()[static_cast<std::size_t>(k)];
+            s.levelStart[static_cast<std::size_t>(k)] +
+            levels.counts()[static_cast<std::size_t>(k)];
     }
     std::vector<int> next(s.levelStart.begin(), s.levelStart.end() - 1);
     s.order.resize(p.constraints.size());
@@ -144,8 +145,10 @@ Schedule scheduleOf(const Problem& p) {
 void expectSame(const Problem& scalar, const Problem& wide) {
     ASSERT_EQ(scalar.states.size(), wide.states.size());
     for (std::size_t i = 0; i < scalar.states.size(); ++i) {
-        EXPECT_EQ(scalar.states[i].linearVelocity.x, wide.states[i].linearVelocity.x) << "body " << i;
-        EXPECT_EQ(scalar.states[i].linearVelocity.y, wide.states[i].linearVelocity.y) << "body " << i;
+        EXPECT_EQ(scalar.states[i].linearVelocity.x, wide.states[i].linearVelocity.x)
+            << "body " << i;
+        EXPECT_EQ(scalar.states[i].linearVelocity.y, wide.states[i].linearVelocity.y)
+            << "body " << i;
         EXPECT_EQ(scalar.states[i].angularVelocity, wide.states[i].angularVelocity) << "body " << i;
     }
     for (std::size_t k = 0; k < scalar.constraints.size(); ++k) {
@@ -201,8 +204,10 @@ TEST(WideContactSolver, MatchesTheScalarPassesBitForBit) {
             for (int round = 0; round < 4; ++round) {
                 bool reversePoints = round >= 2;
                 warmStartWide(packed, wide.states);
-                solveWide(packed, wide.states, 1.0f / kH, true, kPushMaxSpeed, false, reversePoints);
-                solveWide(packed, wide.states, 1.0f / kH, false, kPushMaxSpeed, true, reversePoints);
+                solveWide(packed, wide.states, 1.0f / kH, true, kPushMaxSpeed, false,
+                          reversePoints);
+                solveWide(packed, wide.states, 1.0f / kH, false, kPushMaxSpeed, true,
+                          reversePoints);
             }
             storeWide(packed, wide.constraints, order, levelStart);
 
@@ -267,7 +272,8 @@ void expectSameGroups(const Problem& p, const Schedule& schedule) {
     ASSERT_EQ(static_cast<int>(actual.size()), groups);
     ASSERT_EQ(expected.size(), actual.size());
     for (std::size_t g = 0; g < expected.size(); ++g) {
-        EXPECT_EQ(std::memcmp(&expected[g], &actual[g], sizeof(WideConstraintT<N>)), 0) << "group " << g;
+        EXPECT_EQ(std::memcmp(&expected[g], &actual[g], sizeof(WideConstraintT<N>)), 0)
+            << "group " << g;
     }
 }
 

@@ -30,8 +30,6 @@ ShapeProxy pointProxy(Vec2 p, float radius) {
     return makeProxy(points, radius);
 }
 
-
-
 void expectFinite(const DistanceOutput& out) {
     EXPECT_TRUE(isFinite(out.pointA));
     EXPECT_TRUE(isFinite(out.pointB));
@@ -54,9 +52,10 @@ TEST(MakeProxy, RejectsBadInput) {
                 ::testing::ThrowsMessage<core::Error>(HasSubstr(
                     "physics::makeProxy(): radius must be finite, >= 0 and within kHuge, got -1")));
     std::vector<Vec2> bad{{0.0f, 0.0f}, {NAN, 1.0f}};
-    EXPECT_THAT([&] { (void)makeProxy(bad, 0.0f); },
-                ::testing::ThrowsMessage<core::Error>(
-                    HasSubstr("physics::makeProxy(): point 1 must be finite and within kHuge, got (nan, 1)")));
+    EXPECT_THAT(
+        [&] { (void)makeProxy(bad, 0.0f); },
+        ::testing::ThrowsMessage<core::Error>(HasSubstr(
+            "physics::makeProxy(): point 1 must be finite and within kHuge, got (nan, 1)")));
     std::vector<Vec2> far{{0.0f, 0.0f}, {1.0f, 6.0e5f}};
     EXPECT_THAT([&] { (void)makeProxy(far, 0.0f); },
                 ::testing::ThrowsMessage<core::Error>(HasSubstr("got (1, 600000)")));
@@ -121,8 +120,8 @@ TEST(ShapeDistance, BoxBoxVertexVertex) {
 
 // Circles of radius 1 and 0.5, centres 5 apart along (3, 4): gap 3.5.
 TEST(ShapeDistance, CircleCircle) {
-    DistanceOutput out = shapeDistance(pair(makeProxy(Circle{{0, 0}, 1.0f}), at(0, 0),
-                                            makeProxy(Circle{{0, 0}, 0.5f}), at(3, 4)));
+    DistanceOutput out = shapeDistance(
+        pair(makeProxy(Circle{{0, 0}, 1.0f}), at(0, 0), makeProxy(Circle{{0, 0}, 0.5f}), at(3, 4)));
     expectFinite(out);
     EXPECT_NEAR(out.distance, 3.5f, kTol);
     EXPECT_NEAR(out.pointA.x, 0.6f, kTol);
@@ -140,9 +139,8 @@ TEST(ShapeDistance, CircleCircle) {
 // A 4 x 2 box turned 90 degrees at (10, 10) spans x in [9, 11]; a circle of radius 0.5 at
 // (13, 10) is 1.5 from it.
 TEST(ShapeDistance, CircleBoxTransformed) {
-    DistanceOutput out =
-        shapeDistance(pair(boxProxy(2, 1), at(10, 10, 0.5f * 3.14159265f),
-                           makeProxy(Circle{{0.5f, 0.0f}, 0.5f}), at(12.5f, 10)));
+    DistanceOutput out = shapeDistance(pair(boxProxy(2, 1), at(10, 10, 0.5f * 3.14159265f),
+                                            makeProxy(Circle{{0.5f, 0.0f}, 0.5f}), at(12.5f, 10)));
     expectFinite(out);
     EXPECT_NEAR(out.distance, 1.5f, 1e-4f);
     EXPECT_NEAR(out.pointA.x, 11.0f, 1e-4f);
@@ -153,8 +151,8 @@ TEST(ShapeDistance, CircleBoxTransformed) {
 
 // Rounded shapes whose rounded surfaces overlap: distance 0, one point in the overlap.
 TEST(ShapeDistance, RoundedOverlapGivesZero) {
-    DistanceOutput out = shapeDistance(pair(boxProxy(1, 1, 0.2f), at(0, 0),
-                                            makeProxy(Circle{{0, 0}, 0.5f}), at(1.5f, 0)));
+    DistanceOutput out = shapeDistance(
+        pair(boxProxy(1, 1, 0.2f), at(0, 0), makeProxy(Circle{{0, 0}, 0.5f}), at(1.5f, 0)));
     expectFinite(out);
     EXPECT_EQ(out.distance, 0.0f);
     EXPECT_EQ(out.pointA, out.pointB);
@@ -192,8 +190,8 @@ TEST(ShapeDistance, WarmStartGivesSameAnswer) {
     ShapeProxy b = makeProxy(hexagon, 0.0f);
     SimplexCache cache;
     for (int step = 0; step < 20; ++step) {
-        Transform xfB = at(2.5f - 0.02f * static_cast<float>(step), 0.4f,
-                           0.05f * static_cast<float>(step));
+        Transform xfB =
+            at(2.5f - 0.02f * static_cast<float>(step), 0.4f, 0.05f * static_cast<float>(step));
         DistanceInput input = pair(a, at(0, 0), b, xfB);
         DistanceOutput cold = shapeDistance(input);
         SimplexCache before = cache;
@@ -267,13 +265,15 @@ TEST(ShapeDistance, OnePointProxies) {
 }
 
 TEST(ShapeDistance, DuplicatedPoints) {
-    std::vector<Vec2> doubled{{-1, -1}, {-1, -1}, {1, -1}, {1, -1}, {1, 1}, {1, 1}, {-1, 1}, {-1, 1}};
+    std::vector<Vec2> doubled{{-1, -1}, {-1, -1}, {1, -1}, {1, -1},
+                              {1, 1},   {1, 1},   {-1, 1}, {-1, 1}};
     ShapeProxy box = makeProxy(doubled, 0.0f);
     for (int i = 0; i < 16; ++i) {
         float angle = static_cast<float>(i) * 0.3927f;
         Transform xfB = at(3.0f * std::cos(angle), 3.0f * std::sin(angle), angle);
         DistanceOutput out = shapeDistance(pair(box, at(0, 0), box, xfB));
-        DistanceOutput reference = shapeDistance(pair(boxProxy(1, 1), at(0, 0), boxProxy(1, 1), xfB));
+        DistanceOutput reference =
+            shapeDistance(pair(boxProxy(1, 1), at(0, 0), boxProxy(1, 1), xfB));
         expectFinite(out);
         EXPECT_NEAR(out.distance, reference.distance, 1e-5f) << i;
     }

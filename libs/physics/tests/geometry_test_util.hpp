@@ -29,7 +29,9 @@ std::string errorMessage(F&& f) {
     return {};
 }
 
-inline Transform makeTransform(float x, float y, float angle) { return {{x, y}, Rot::fromAngle(angle)}; }
+inline Transform makeTransform(float x, float y, float angle) {
+    return {{x, y}, Rot::fromAngle(angle)};
+}
 inline Transform at(float x, float y, float angle = 0.0f) { return makeTransform(x, y, angle); }
 
 // A GJK/EPA query of two proxies at two transforms.
@@ -63,7 +65,8 @@ private:
 // their scalar paths); `pair` names the case in the failure message.
 inline void expectSameManifoldBits(const Manifold& simd, const Manifold& scalar, int pair) {
     ASSERT_EQ(simd.pointCount, scalar.pointCount) << "pair " << pair;
-    EXPECT_EQ(std::bit_cast<std::uint64_t>(simd.normal), std::bit_cast<std::uint64_t>(scalar.normal))
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(simd.normal),
+              std::bit_cast<std::uint64_t>(scalar.normal))
         << "pair " << pair;
     for (int i = 0; i < 2; ++i) {
         const ManifoldPoint& p = simd.points[i];
@@ -81,7 +84,7 @@ inline void expectSameManifoldBits(const Manifold& simd, const Manifold& scalar,
     }
 }
 
-#define E2D_EXPECT_VEC2_NEAR(actual, ex, ey, tol)                                                    \
+#define E2D_EXPECT_VEC2_NEAR(actual, ex, ey, tol)                                                  \
     do {                                                                                           \
         const ::e2d::physics::Vec2 e2dActual_ = (actual);                                          \
         EXPECT_NEAR(e2dActual_.x, (ex), (tol)) << #actual ".x";                                    \

@@ -41,7 +41,8 @@ void expectStrictlyConvexCcw(const Hull& hull) {
 }
 
 TEST(Hull, SquareWithInteriorPointsKeepsTheCorners) {
-    std::vector<Vec2> points{{0.5f, 0.5f}, {0, 0}, {0.2f, 0.7f}, {1, 0}, {1, 1}, {0.9f, 0.1f}, {0, 1}};
+    std::vector<Vec2> points{{0.5f, 0.5f}, {0, 0},       {0.2f, 0.7f}, {1, 0},
+                             {1, 1},       {0.9f, 0.1f}, {0, 1}};
     Hull hull = computeHull(points);
     ASSERT_EQ(hull.count, 4);
     for (Vec2 corner : {Vec2{0, 0}, Vec2{1, 0}, Vec2{1, 1}, Vec2{0, 1}}) {

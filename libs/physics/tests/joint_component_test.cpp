@@ -32,7 +32,6 @@ using physics::JointComponentDef;
 using physics::PhysicsSystem;
 using physics::Rigidbody;
 
-
 class JointComponentTest : public ::testing::Test, public physics::test::ComponentScene {
 protected:
     core::GameObject& ball(core::Scene& s, glm::vec2 at, float radius = 0.25f) {
@@ -67,7 +66,8 @@ TEST_F(JointComponentTest, BallHungFromTheWorldCarriesItsWeight) {
     EXPECT_NEAR(bob->position().x, 2.0f, 1e-3f);
     EXPECT_NEAR(bob->position().y, 4.0f, 5e-3f);
     // Knocked sideways, it swings on its 1 m circle.
-    bob->getComponent<Rigidbody>()->applyLinearImpulse({bob->getComponent<Rigidbody>()->mass() * 2.0f, 0.0f});
+    bob->getComponent<Rigidbody>()->applyLinearImpulse(
+        {bob->getComponent<Rigidbody>()->mass() * 2.0f, 0.0f});
     frames(20);
     const float r = std::hypot(bob->position().x - 2.0f, bob->position().y - 5.0f);
     EXPECT_GT(bob->position().x, 2.2f);
@@ -115,7 +115,8 @@ TEST_F(JointComponentTest, JointGoesWithEitherRigidbodyOrTheComponent) {
     start([&](core::Scene& s) {
         a = &ball(s, {0.0f, 0.0f});
         b = &ball(s, {1.0f, 0.0f});
-        joint = b->addComponent<JointComponent>(physics, JointComponentDef{physics::RevoluteJointDef{}, a->id()});
+        joint = b->addComponent<JointComponent>(
+            physics, JointComponentDef{physics::RevoluteJointDef{}, a->id()});
     });
     frames(1);
     ASSERT_TRUE(joint->isConnected());
@@ -129,7 +130,8 @@ TEST_F(JointComponentTest, JointGoesWithEitherRigidbodyOrTheComponent) {
     JointComponent* second = nullptr;
     director.scene()->createGameObject(); // unrelated
     c = &ball(*director.scene(), {3.0f, 0.0f});
-    second = c->addComponent<JointComponent>(physics, JointComponentDef{physics::RevoluteJointDef{}, b->id()});
+    second = c->addComponent<JointComponent>(
+        physics, JointComponentDef{physics::RevoluteJointDef{}, b->id()});
     frames(1);
     ASSERT_TRUE(second->isConnected());
     c->removeComponent(second);
@@ -193,10 +195,12 @@ TEST_F(JointComponentTest, BadDefsAndMissingRigidbodiesAreClearErrors) {
         JointComponent bad(JointComponentDef{d, {}});
         FAIL() << "no error";
     } catch (const core::Error& e) {
-        EXPECT_NE(std::string(e.what()).find("physics::JointComponent::JointComponent(): def.joint.length must be"),
+        EXPECT_NE(std::string(e.what()).find(
+                      "physics::JointComponent::JointComponent(): def.joint.length must be"),
                   std::string::npos)
             << e.what();
-        EXPECT_NE(std::string(e.what()).find("-2"), std::string::npos) << "the value as given: " << e.what();
+        EXPECT_NE(std::string(e.what()).find("-2"), std::string::npos)
+            << "the value as given: " << e.what();
     }
     core::GameObject* lonely = nullptr;
     core::GameObject* selfish = nullptr;
@@ -212,17 +216,21 @@ TEST_F(JointComponentTest, BadDefsAndMissingRigidbodiesAreClearErrors) {
         frames(1);
         FAIL() << "no error";
     } catch (const core::Error& e) {
-        EXPECT_STREQ(e.what(), "physics::JointComponent::onInitialize(): the object 'lonely' has no Rigidbody "
-                               "to connect");
+        EXPECT_STREQ(
+            e.what(),
+            "physics::JointComponent::onInitialize(): the object 'lonely' has no Rigidbody "
+            "to connect");
     }
     lonely->removeComponent(lonely->getComponent<JointComponent>());
-    selfish->addComponent<JointComponent>(JointComponentDef{physics::RevoluteJointDef{}, selfish->id()});
+    selfish->addComponent<JointComponent>(
+        JointComponentDef{physics::RevoluteJointDef{}, selfish->id()});
     try {
         frames(1);
         FAIL() << "no error";
     } catch (const core::Error& e) {
-        EXPECT_STREQ(e.what(), "physics::JointComponent::onInitialize(): def.connectedObject is the object "
-                               "tagged 'rope' itself");
+        EXPECT_STREQ(e.what(),
+                     "physics::JointComponent::onInitialize(): def.connectedObject is the object "
+                     "tagged 'rope' itself");
     }
 }
 
@@ -248,7 +256,8 @@ TEST_F(JointComponentTest, DefOnlyJointHangsABallFromAWallWithoutARigidbody) {
     ASSERT_TRUE(hinge->isConnected());
     EXPECT_EQ(&hinge->system(), &physics);
     const glm::vec2 anchor{6.0f, 3.0f};
-    EXPECT_NEAR(glm::length(glm::vec2(bob->position()) - anchor), 0.5f, 0.02f) << "held on its rope";
+    EXPECT_NEAR(glm::length(glm::vec2(bob->position()) - anchor), 0.5f, 0.02f)
+        << "held on its rope";
     EXPECT_LT(bob->position().y, 2.7f) << "hanging below the anchor";
 }
 

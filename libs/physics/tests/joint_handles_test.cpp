@@ -33,15 +33,18 @@ TEST(JointHandles, JointIdsCarryTheirWorld) {
     EXPECT_FALSE(ja == jb);
     EXPECT_FALSE(b.isValid(ja));
     EXPECT_EQ(errorText([&] { (void)b.jointReactionForce(ja); }),
-              "physics::World::jointReactionForce(): JointId (index1 1, generation 1, world 21) belongs to "
+              "physics::World::jointReactionForce(): JointId (index1 1, generation 1, world 21) "
+              "belongs to "
               "another world (this world's tag is 22)");
     EXPECT_EQ(errorText([&] { b.destroyJoint(ja); }),
-              "physics::World::destroyJoint(): JointId (index1 1, generation 1, world 21) belongs to another "
+              "physics::World::destroyJoint(): JointId (index1 1, generation 1, world 21) belongs "
+              "to another "
               "world (this world's tag is 22)");
     EXPECT_TRUE(b.isValid(jb)) << "nothing of b's was touched";
     // A joint across worlds: a's body in b is refused by its tag.
     EXPECT_NE(errorText([&] { b.createJoint(WeldJointDef{.bodyA = groundB, .bodyB = discA}); })
-                  .find("physics::World::createJoint(): BodyId (index1 2, generation 1, world 21) belongs to another world"),
+                  .find("physics::World::createJoint(): BodyId (index1 2, generation 1, world 21) "
+                        "belongs to another world"),
               std::string::npos);
     EXPECT_EQ(b.jointCount(), 1);
     // Ids listed by the world carry the tag too.
@@ -54,23 +57,27 @@ TEST(JointHandles, NoJointIsMadeOrDestroyedInsideACallback) {
     BodyId ground = addStatic(world);
     world.createShape(ground, {}, makeBox(5.0f, 0.5f));
     BodyId disc = addDisc(world, {0.0f, 2.0f}, 0.5f);
-    JointId rope = world.createJoint(DistanceJointDef{.bodyA = ground, .bodyB = disc, .length = 2.0f});
+    JointId rope =
+        world.createJoint(DistanceJointDef{.bodyA = ground, .bodyB = disc, .length = 2.0f});
     const Aabb all{{-10.0f, -10.0f}, {10.0f, 10.0f}};
-    EXPECT_EQ(errorText([&] {
-                  world.overlapAabb(all, {}, [&](ShapeId) {
-                      world.createJoint(WeldJointDef{.bodyA = ground, .bodyB = disc});
-                      return true;
-                  });
-              }),
-              "physics::World::createJoint(): cannot run inside the callback of overlapAabb() (it would change "
-              "what the callback is walking); collect the ids and call it after overlapAabb() returns");
-    EXPECT_NE(errorText([&] {
-                  world.overlapAabb(all, {}, [&](ShapeId) {
-                      world.destroyJoint(rope);
-                      return true;
-                  });
-              }).find("physics::World::destroyJoint(): cannot run inside the callback of overlapAabb()"),
-              std::string::npos);
+    EXPECT_EQ(
+        errorText([&] {
+            world.overlapAabb(all, {}, [&](ShapeId) {
+                world.createJoint(WeldJointDef{.bodyA = ground, .bodyB = disc});
+                return true;
+            });
+        }),
+        "physics::World::createJoint(): cannot run inside the callback of overlapAabb() (it would "
+        "change "
+        "what the callback is walking); collect the ids and call it after overlapAabb() returns");
+    EXPECT_NE(
+        errorText([&] {
+            world.overlapAabb(all, {}, [&](ShapeId) {
+                world.destroyJoint(rope);
+                return true;
+            });
+        }).find("physics::World::destroyJoint(): cannot run inside the callback of overlapAabb()"),
+        std::string::npos);
     EXPECT_EQ(world.jointCount(), 1);
     EXPECT_TRUE(world.isValid(rope));
     // Reading a joint and changing its motor or spring inside a walk is allowed.
@@ -107,7 +114,8 @@ TEST(JointHandles, JointViewForwardsToTheWorld) {
     EXPECT_EQ(world.jointUserData(hinge.id()), 77u);
     hinge.destroy();
     EXPECT_FALSE(hinge.isValid());
-    E2D_EXPECT_ERROR((void)hinge.reactionForce(), "physics::World::jointReactionForce(): stale or null JointId");
+    E2D_EXPECT_ERROR((void)hinge.reactionForce(),
+                     "physics::World::jointReactionForce(): stale or null JointId");
 }
 
 } // namespace

@@ -111,7 +111,9 @@ void levelOrder(const Scene& s, std::vector<int>& slots, std::vector<int>& level
 // A soft step's joint passes: warm start, solve, two relaxations, twice.
 void runPasses(Scene& s, PointJointGroups& groups, std::span<const int> order) {
     const float h = 1.0f / 240.0f;
-    const JointStep step{h, 1.0f / h, makeSoftness(physics::SolverDef{}.jointHertz, physics::SolverDef{}.jointDampingRatio, h)};
+    const JointStep step{
+        h, 1.0f / h,
+        makeSoftness(physics::SolverDef{}.jointHertz, physics::SolverDef{}.jointDampingRatio, h)};
     for (int sub = 0; sub < 2; ++sub) {
         warmStartJoints(s.joints, groups, order, s.states);
         solveJoints(s.joints, groups, order, s.states, step, true);
@@ -181,7 +183,8 @@ void matchSlotOrder(int lanes) {
         }
         EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
         EXPECT_LE(slotHinges, levels.back() + 1);
-        EXPECT_GT(std::count(inQuad.begin(), inQuad.end(), true), static_cast<long>(packed.joints.size() / 2));
+        EXPECT_GT(std::count(inQuad.begin(), inQuad.end(), true),
+                  static_cast<long>(packed.joints.size() / 2));
 
         runPasses(packed, groups, entries);
         storePointJointGroups(groups, packed.joints, 240.0f);
@@ -196,7 +199,8 @@ void matchSlotOrder(int lanes) {
             if (inQuad[k]) {
                 // The quads' reactions are storeJointReaction()'s.
                 storeJointReaction(r, reference.states, 240.0f);
-                EXPECT_EQ(std::memcmp(&r.reactionForce, &p.reactionForce, sizeof(Vec2)), 0) << "joint " << k;
+                EXPECT_EQ(std::memcmp(&r.reactionForce, &p.reactionForce, sizeof(Vec2)), 0)
+                    << "joint " << k;
                 EXPECT_EQ(r.reactionTorque, p.reactionTorque);
             }
             EXPECT_EQ(std::memcmp(&r.linearImpulse, &p.linearImpulse, sizeof(Vec2)), 0)
@@ -209,7 +213,8 @@ void matchSlotOrder(int lanes) {
         const Scene before = randomScene(seed, 60, 150);
         int changed = 0;
         for (std::size_t i = 0; i < before.states.size(); ++i) {
-            changed += before.states[i].linearVelocity != reference.states[i].linearVelocity ? 1 : 0;
+            changed +=
+                before.states[i].linearVelocity != reference.states[i].linearVelocity ? 1 : 0;
         }
         EXPECT_GT(changed, 50);
     }
@@ -264,7 +269,8 @@ TEST(PointJointQuads, ALevelsHingesFillEightsThenFoursAndLeaveALoneOneAlone) {
             want.slots = left;
             EXPECT_EQ(static_cast<int>(groups.octets.size()), want.octets);
             EXPECT_EQ(static_cast<int>(groups.quads.size()), want.quads);
-            EXPECT_EQ(static_cast<int>(std::count_if(entries.begin(), entries.end(), [](int e) { return e >= 0; })),
+            EXPECT_EQ(static_cast<int>(std::count_if(entries.begin(), entries.end(),
+                                                     [](int e) { return e >= 0; })),
                       want.slots);
             EXPECT_EQ(entries.size(), groups.size() + static_cast<std::size_t>(want.slots));
         }

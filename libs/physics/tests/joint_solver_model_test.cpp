@@ -54,7 +54,8 @@ TEST(JointSolverModel, DoorFlungIntoItsLimitStopsDead) {
             largest = std::max(largest, world.jointValue(door.hinge));
         }
         EXPECT_LT(largest, kHalfPi + 2.0f * kDegree) << static_cast<int>(model);
-        EXPECT_NEAR(world.jointValue(door.hinge), kHalfPi, 2.0f * kDegree) << static_cast<int>(model);
+        EXPECT_NEAR(world.jointValue(door.hinge), kHalfPi, 2.0f * kDegree)
+            << static_cast<int>(model);
         EXPECT_NEAR(world.angularVelocity(door.body), 0.0f, 0.01f) << static_cast<int>(model);
     }
     World soft(modelDef(JointSolver::Soft, {0.0f, 0.0f}));
@@ -157,18 +158,20 @@ TEST(JointSolverModel, WeldedCantileverDoesNotSag) {
 
 // The same world stepped twice gives the same bits (the factorisation's order is fixed).
 TEST(JointSolverModel, DirectSolveIsDeterministic) {
-    EXPECT_EQ(heavyChainGap(JointSolver::Direct, 10, 5.0f, 1.0f), heavyChainGap(JointSolver::Direct, 10, 5.0f, 1.0f));
+    EXPECT_EQ(heavyChainGap(JointSolver::Direct, 10, 5.0f, 1.0f),
+              heavyChainGap(JointSolver::Direct, 10, 5.0f, 1.0f));
 }
 
 TEST(JointSolverModel, BadSettingsNameTheField) {
     WorldDef def;
     def.solver.jointPositionIterations = -1;
-    E2D_EXPECT_ERROR(World{def},
-                     "physics::World::World(): def.solver.jointPositionIterations must be in [0, 256], got -1");
+    E2D_EXPECT_ERROR(
+        World{def},
+        "physics::World::World(): def.solver.jointPositionIterations must be in [0, 256], got -1");
     def = {};
     def.solver.jointSolver = static_cast<JointSolver>(7);
-    E2D_EXPECT_ERROR(World{def},
-                     "physics::World::World(): def.solver.jointSolver must be Soft, GaussSeidel or Direct, got 7");
+    E2D_EXPECT_ERROR(World{def}, "physics::World::World(): def.solver.jointSolver must be Soft, "
+                                 "GaussSeidel or Direct, got 7");
 }
 
 } // namespace

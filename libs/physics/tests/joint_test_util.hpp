@@ -31,9 +31,9 @@ inline std::string modeName(const ::testing::TestParamInfo<SolverMode>& info) {
     return info.param == SolverMode::SoftStep ? "SoftStep" : "Classic";
 }
 
-#define E2D_JOINT_MODES(Suite)                                                                    \
-    INSTANTIATE_TEST_SUITE_P(BothModes, Suite,                                                    \
-                             ::testing::Values(SolverMode::SoftStep, SolverMode::Classic),        \
+#define E2D_JOINT_MODES(Suite)                                                                     \
+    INSTANTIATE_TEST_SUITE_P(BothModes, Suite,                                                     \
+                             ::testing::Values(SolverMode::SoftStep, SolverMode::Classic),         \
                              ::e2d::physics::test::modeName)
 
 inline BodyId addStatic(World& world, Vec2 position = {0.0f, 0.0f}) {

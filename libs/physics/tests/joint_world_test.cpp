@@ -12,7 +12,8 @@
 namespace e2d::physics::test {
 namespace {
 
-RevoluteJointDef hinge(BodyId a, BodyId b, Vec2 anchorA = {0.0f, 0.0f}, Vec2 anchorB = {0.0f, 0.0f}) {
+RevoluteJointDef hinge(BodyId a, BodyId b, Vec2 anchorA = {0.0f, 0.0f},
+                       Vec2 anchorB = {0.0f, 0.0f}) {
     RevoluteJointDef def;
     def.bodyA = a;
     def.bodyB = b;
@@ -53,9 +54,13 @@ TEST(JointWorld, StaleAndNullJointIdsAreErrors) {
     JointId j = world.createJoint(hinge(a, b));
     world.destroyJoint(j);
     EXPECT_FALSE(world.isValid(j));
-    E2D_EXPECT_ERROR((void)world.jointType(j), "physics::World::jointType(): stale or null JointId (index1 1, generation 1, world ");
-    E2D_EXPECT_ERROR(world.destroyJoint(j), "physics::World::destroyJoint(): stale or null JointId");
-    E2D_EXPECT_ERROR((void)world.jointReactionForce(JointId{}), "physics::World::jointReactionForce(): stale or null JointId (index1 0");
+    E2D_EXPECT_ERROR(
+        (void)world.jointType(j),
+        "physics::World::jointType(): stale or null JointId (index1 1, generation 1, world ");
+    E2D_EXPECT_ERROR(world.destroyJoint(j),
+                     "physics::World::destroyJoint(): stale or null JointId");
+    E2D_EXPECT_ERROR((void)world.jointReactionForce(JointId{}),
+                     "physics::World::jointReactionForce(): stale or null JointId (index1 0");
     // The slot is reused with a new generation: the old id stays stale.
     JointId again = world.createJoint(hinge(a, b));
     EXPECT_EQ(again.index1, j.index1);
@@ -70,43 +75,58 @@ TEST(JointWorld, DefsAreValidatedWithFunctionFieldAndValue) {
     BodyId b = addDisc(world, {1.0f, 0.0f}, 0.2f);
     E2D_EXPECT_ERROR(world.createJoint(hinge(a, a)),
                      "physics::World::createJoint(): revolute def.bodyA and def.bodyB must differ");
-    E2D_EXPECT_ERROR(world.createJoint(hinge(a, BodyId{})), "physics::World::createJoint(): stale or null BodyId");
-    E2D_EXPECT_ERROR(world.createJoint(hinge(a, addStatic(world))),
-                     "physics::World::createJoint(): revolute def.bodyA or def.bodyB must be dynamic");
+    E2D_EXPECT_ERROR(world.createJoint(hinge(a, BodyId{})),
+                     "physics::World::createJoint(): stale or null BodyId");
+    E2D_EXPECT_ERROR(
+        world.createJoint(hinge(a, addStatic(world))),
+        "physics::World::createJoint(): revolute def.bodyA or def.bodyB must be dynamic");
     RevoluteJointDef r = hinge(a, b);
     r.lowerAngle = 1.0f;
     r.upperAngle = 0.5f;
-    E2D_EXPECT_ERROR(world.createJoint(r),
-                     "physics::World::createJoint(): revolute def.lowerAngle must be <= def.upperAngle, got 1 > 0.5");
+    E2D_EXPECT_ERROR(world.createJoint(r), "physics::World::createJoint(): revolute def.lowerAngle "
+                                           "must be <= def.upperAngle, got 1 > 0.5");
     DistanceJointDef d{.bodyA = a, .bodyB = b};
     d.length = 0.0f;
-    E2D_EXPECT_ERROR(world.createJoint(d), "physics::World::createJoint(): distance def.length must be >= kLinearSlop");
+    E2D_EXPECT_ERROR(world.createJoint(d),
+                     "physics::World::createJoint(): distance def.length must be >= kLinearSlop");
     d.length = 1.0f;
     d.hertz = -2.0f;
-    E2D_EXPECT_ERROR(world.createJoint(d),
-                     "physics::World::createJoint(): distance def.hertz must be finite and >= 0, got -2");
+    E2D_EXPECT_ERROR(
+        world.createJoint(d),
+        "physics::World::createJoint(): distance def.hertz must be finite and >= 0, got -2");
     PrismaticJointDef p{.bodyA = a, .bodyB = b};
     p.localAxisA = {0.0f, 0.0f};
-    E2D_EXPECT_ERROR(world.createJoint(p), "physics::World::createJoint(): prismatic def.localAxisA must be non-zero, got (0, 0)");
+    E2D_EXPECT_ERROR(
+        world.createJoint(p),
+        "physics::World::createJoint(): prismatic def.localAxisA must be non-zero, got (0, 0)");
     MouseJointDef m{.bodyA = a, .bodyB = b};
     m.hertz = 0.0f;
-    E2D_EXPECT_ERROR(world.createJoint(m), "physics::World::createJoint(): mouse def.hertz must be > 0, got 0");
+    E2D_EXPECT_ERROR(world.createJoint(m),
+                     "physics::World::createJoint(): mouse def.hertz must be > 0, got 0");
     MotorJointDef mo{.bodyA = a, .bodyB = b};
     mo.correctionFactor = 2.0f;
-    E2D_EXPECT_ERROR(world.createJoint(mo), "physics::World::createJoint(): motor def.correctionFactor must be in [0, 1], got 2");
+    E2D_EXPECT_ERROR(
+        world.createJoint(mo),
+        "physics::World::createJoint(): motor def.correctionFactor must be in [0, 1], got 2");
     WheelJointDef w{.bodyA = a, .bodyB = b};
     w.maxMotorTorque = NAN;
-    E2D_EXPECT_ERROR(world.createJoint(w), "physics::World::createJoint(): wheel def.maxMotorTorque must be finite and >= 0, got nan");
+    E2D_EXPECT_ERROR(
+        world.createJoint(w),
+        "physics::World::createJoint(): wheel def.maxMotorTorque must be finite and >= 0, got nan");
     WeldJointDef we{.bodyA = a, .bodyB = b};
     we.linearHertz = INFINITY;
-    E2D_EXPECT_ERROR(world.createJoint(we), "physics::World::createJoint(): weld def.linearHertz must be finite and >= 0, got inf");
+    E2D_EXPECT_ERROR(
+        world.createJoint(we),
+        "physics::World::createJoint(): weld def.linearHertz must be finite and >= 0, got inf");
     EXPECT_EQ(world.jointCount(), 0); // nothing half-made
     JointId j = world.createJoint(hinge(a, b));
     E2D_EXPECT_ERROR(world.setMouseJointTarget(j, {0.0f, 0.0f}),
                      "physics::World::setMouseJointTarget(): not supported by a revolute joint");
-    E2D_EXPECT_ERROR(world.setJointLimits(j, 1.0f, -1.0f), "physics::World::setJointLimits(): lower must be <= upper, got 1 > -1");
-    E2D_EXPECT_ERROR((void)world.jointValue(world.createJoint(we = WeldJointDef{.bodyA = a, .bodyB = b})),
-                     "physics::World::jointValue(): a weld joint has no angle, translation or length");
+    E2D_EXPECT_ERROR(world.setJointLimits(j, 1.0f, -1.0f),
+                     "physics::World::setJointLimits(): lower must be <= upper, got 1 > -1");
+    E2D_EXPECT_ERROR(
+        (void)world.jointValue(world.createJoint(we = WeldJointDef{.bodyA = a, .bodyB = b})),
+        "physics::World::jointValue(): a weld joint has no angle, translation or length");
 }
 
 // Two overlapping boxes joined: no contact between them unless collideConnected.
@@ -127,7 +147,8 @@ TEST(JointWorld, CollideConnectedDecidesWhetherTheEndsCollide) {
         const float gap = world.transform(b).p.x - world.transform(a).p.x;
         if (collide) {
             // (A rigid hinge between two equal boxes holds them nearly symmetric: they part slowly.)
-            EXPECT_GT(std::abs(world.transform(b).q.angle() - world.transform(a).q.angle()) + gap, 0.601f);
+            EXPECT_GT(std::abs(world.transform(b).q.angle() - world.transform(a).q.angle()) + gap,
+                      0.601f);
         } else {
             EXPECT_NEAR(gap, 0.6f, 1e-3f);
         }
@@ -145,7 +166,8 @@ std::vector<BodyId> hangChain(World& world, int links, float linkLength, Vec2 to
     for (int i = 0; i < links; ++i) {
         Vec2 center = top + Vec2{(i + 0.5f) * linkLength, 0.0f};
         BodyId link = addPlank(world, center, 0.5f * linkLength, 0.05f);
-        world.createJoint(hinge(prev, link, i == 0 ? Vec2{0.0f, 0.0f} : Vec2{0.5f * linkLength, 0.0f},
+        world.createJoint(hinge(prev, link,
+                                i == 0 ? Vec2{0.0f, 0.0f} : Vec2{0.5f * linkLength, 0.0f},
                                 {-0.5f * linkLength, 0.0f}));
         bodies.push_back(link);
         prev = link;
@@ -163,7 +185,10 @@ TEST_P(JointScene, SameRunTwiceGivesTheSameHash) {
         addGround(world);
         std::vector<BodyId> bodies = hangChain(world, 20, 0.5f, {-5.0f, 8.0f});
         for (int i = 0; i < 10; ++i) {
-            bodies.push_back(addBox(world, {-2.0f + 0.45f * static_cast<float>(i % 5), 0.5f + static_cast<float>(i / 5)}, 0.2f));
+            bodies.push_back(addBox(
+                world,
+                {-2.0f + 0.45f * static_cast<float>(i % 5), 0.5f + static_cast<float>(i / 5)},
+                0.2f));
         }
         run(world, 4.0f);
         return transformsHash(world, bodies);
@@ -183,7 +208,8 @@ TEST_P(JointScene, SwingingChainStaysTogether) {
         world.step(kJointStep);
         for (BodyId link : chain) {
             for (JointId j : world.bodyJoints(link)) {
-                worstGap = std::max(worstGap, length(world.jointAnchorA(j) - world.jointAnchorB(j)));
+                worstGap =
+                    std::max(worstGap, length(world.jointAnchorA(j) - world.jointAnchorB(j)));
             }
         }
     }
@@ -204,7 +230,8 @@ TEST_P(JointScene, HangingChainStretchesAsItsSoftJointsPredict) {
     BodyId last;
     for (int i = 0; i < 20; ++i) {
         last = addPlank(world, {0.0f, 12.0f - 0.25f - 0.5f * static_cast<float>(i)}, 0.05f, 0.25f);
-        world.createJoint(hinge(prev, last, i == 0 ? Vec2{0.0f, 0.0f} : Vec2{0.0f, -0.25f}, {0.0f, 0.25f}));
+        world.createJoint(
+            hinge(prev, last, i == 0 ? Vec2{0.0f, 0.0f} : Vec2{0.0f, -0.25f}, {0.0f, 0.25f}));
         prev = last;
     }
     run(world, 2.0f);
@@ -272,7 +299,8 @@ TEST(JointWorld, DebugDataDescribesEveryJointForDrawing) {
     p.lowerTranslation = -0.25f;
     p.upperTranslation = 0.75f;
     JointId sliderId = world.createJoint(p);
-    JointId mouseId = world.createJoint(MouseJointDef{.bodyA = ground, .bodyB = b, .target = {6.0f, 7.0f}});
+    JointId mouseId =
+        world.createJoint(MouseJointDef{.bodyA = ground, .bodyB = b, .target = {6.0f, 7.0f}});
     world.destroyJoint(hingeId); // a hole in the slots is skipped
     hingeId = world.createJoint(r);
 
@@ -369,16 +397,26 @@ TEST(JointWorld, WideScheduleKeptWithJointsMatchesANewOneEveryStep) {
             w.setTransform(s.boxes[3], {4.0f, 1.5f}, 0.0f);
             break;
         case 40: // box 0 holds the floater on a rod: a joint across two blocks, same contacts
-            s.extra = w.createJoint(DistanceJointDef{.bodyA = s.boxes[0], .bodyB = s.floater, .length = 3.5f});
+            s.extra = w.createJoint(
+                DistanceJointDef{.bodyA = s.boxes[0], .bodyB = s.floater, .length = 3.5f});
             break;
         case 60: // the rod goes, a rod from box 1 takes its place
             w.destroyJoint(s.extra);
-            s.extra = w.createJoint(DistanceJointDef{.bodyA = s.boxes[1], .bodyB = s.floater, .length = 3.5f});
+            s.extra = w.createJoint(
+                DistanceJointDef{.bodyA = s.boxes[1], .bodyB = s.floater, .length = 3.5f});
             break;
-        case 80: w.setAwake(s.chain[3], false); break; // the whole chain sleeps
-        case 90: w.setAwake(s.chain[7], true); break;  // and wakes through its joints
-        case 100: w.destroyBody(s.boxes[1]); s.boxes.erase(s.boxes.begin() + 1); break;
-        default: break;
+        case 80:
+            w.setAwake(s.chain[3], false);
+            break; // the whole chain sleeps
+        case 90:
+            w.setAwake(s.chain[7], true);
+            break; // and wakes through its joints
+        case 100:
+            w.destroyBody(s.boxes[1]);
+            s.boxes.erase(s.boxes.begin() + 1);
+            break;
+        default:
+            break;
         }
         s.all = s.chain;
         s.all.insert(s.all.end(), s.boxes.begin(), s.boxes.end());
@@ -394,7 +432,8 @@ TEST(JointWorld, WideScheduleKeptWithJointsMatchesANewOneEveryStep) {
         fresh.world.setAwake(fresh.far, i % 2 != 0);
         kept.world.step(kJointStep);
         fresh.world.step(kJointStep);
-        ASSERT_EQ(transformsHash(kept.world, kept.all), transformsHash(fresh.world, fresh.all)) << "step " << i;
+        ASSERT_EQ(transformsHash(kept.world, kept.all), transformsHash(fresh.world, fresh.all))
+            << "step " << i;
     }
     EXPECT_NEAR(kept.world.transform(kept.boxes[2]).p.y, 1.5f, 0.05f);
 }
@@ -441,18 +480,25 @@ TEST_P(JointOrderKept, MatchesANewOneEveryStep) {
         constexpr int kCols = 12;
         for (int r = 0; r < kRows; ++r) {
             for (int c = 0; c < kCols; ++c) {
-                s.net.push_back(addDisc(s.world, {-12.0f + 0.5f * static_cast<float>(c), 9.0f - 0.5f * static_cast<float>(r)}, 0.2f));
+                s.net.push_back(addDisc(
+                    s.world,
+                    {-12.0f + 0.5f * static_cast<float>(c), 9.0f - 0.5f * static_cast<float>(r)},
+                    0.2f));
                 const BodyId b = s.net.back();
                 if (c > 0) {
-                    s.netJoints.push_back(s.world.createJoint(hinge(s.net[s.net.size() - 2], b, {0.25f, 0.0f}, {-0.25f, 0.0f})));
+                    s.netJoints.push_back(s.world.createJoint(
+                        hinge(s.net[s.net.size() - 2], b, {0.25f, 0.0f}, {-0.25f, 0.0f})));
                 }
                 if (r > 0) {
-                    s.netJoints.push_back(s.world.createJoint(hinge(s.net[s.net.size() - 1 - kCols], b, {0.0f, -0.25f}, {0.0f, 0.25f})));
+                    s.netJoints.push_back(s.world.createJoint(
+                        hinge(s.net[s.net.size() - 1 - kCols], b, {0.0f, -0.25f}, {0.0f, 0.25f})));
                 }
             }
         }
-        s.netJoints.push_back(s.world.createJoint(hinge(addStatic(s.world, {-12.0f, 9.0f}), s.net.front())));
-        s.netJoints.push_back(s.world.createJoint(hinge(addStatic(s.world, {-12.0f + 0.5f * (kCols - 1), 9.0f}), s.net[kCols - 1])));
+        s.netJoints.push_back(
+            s.world.createJoint(hinge(addStatic(s.world, {-12.0f, 9.0f}), s.net.front())));
+        s.netJoints.push_back(s.world.createJoint(
+            hinge(addStatic(s.world, {-12.0f + 0.5f * (kCols - 1), 9.0f}), s.net[kCols - 1])));
         s.chain = hangChain(s.world, 8, 0.5f, {2.0f, 5.0f});
         for (int i = 0; i < 3; ++i) {
             s.boxes.push_back(addBox(s.world, {5.0f + 1.5f * static_cast<float>(i), 0.5f}, 0.5f));
@@ -469,7 +515,8 @@ TEST_P(JointOrderKept, MatchesANewOneEveryStep) {
             s.boxes.push_back(ball);
         }
         s.pendulum = addDisc(s.world, {61.0f, 60.0f}, 0.2f);
-        s.world.createJoint(hinge(addStatic(s.world, {60.0f, 60.0f}), s.pendulum, {}, {-1.0f, 0.0f}));
+        s.world.createJoint(
+            hinge(addStatic(s.world, {60.0f, 60.0f}), s.pendulum, {}, {-1.0f, 0.0f}));
     };
     auto collect = [](Scene& s) {
         s.all = s.net;
@@ -487,8 +534,12 @@ TEST_P(JointOrderKept, MatchesANewOneEveryStep) {
     auto change = [&](Scene& s, int step) {
         World& w = s.world;
         switch (step) {
-        case 20: w.enableJointMotor(s.netJoints[7], true); break; // no longer a plain hinge
-        case 35: w.enableJointMotor(s.netJoints[7], false); break;
+        case 20:
+            w.enableJointMotor(s.netJoints[7], true);
+            break; // no longer a plain hinge
+        case 35:
+            w.enableJointMotor(s.netJoints[7], false);
+            break;
         case 50: { // the chain's third hinge made again: the same slot, bodies and kind
             const JointId old = w.bodyJoints(s.chain[2]).back();
             const BodyId a = w.jointBodyA(old);
@@ -497,10 +548,18 @@ TEST_P(JointOrderKept, MatchesANewOneEveryStep) {
             s.remade = w.createJoint(hinge(a, b, {0.25f, 0.0f}, {-0.25f, 0.0f}));
             break;
         }
-        case 70: w.setAwake(s.chain[3], false); break; // the whole chain sleeps
-        case 85: w.setAwake(s.chain[7], true); break;  // and wakes through its joints
-        case 100: w.destroyBody(s.boxes[1]); s.boxes.erase(s.boxes.begin() + 1); break;
-        default: break;
+        case 70:
+            w.setAwake(s.chain[3], false);
+            break; // the whole chain sleeps
+        case 85:
+            w.setAwake(s.chain[7], true);
+            break; // and wakes through its joints
+        case 100:
+            w.destroyBody(s.boxes[1]);
+            s.boxes.erase(s.boxes.begin() + 1);
+            break;
+        default:
+            break;
         }
         collect(s);
     };
@@ -524,7 +583,8 @@ TEST_P(JointOrderKept, MatchesANewOneEveryStep) {
         fresh.world.step(kJointStep);
         kept.repackSteps += kept.world.stepCounters().jointRepacks > 0 ? 1 : 0;
         fresh.repackSteps += fresh.world.stepCounters().jointRepacks > 0 ? 1 : 0;
-        ASSERT_EQ(transformsHash(kept.world, kept.all), transformsHash(fresh.world, fresh.all)) << "step " << i;
+        ASSERT_EQ(transformsHash(kept.world, kept.all), transformsHash(fresh.world, fresh.all))
+            << "step " << i;
         const std::vector<float> a = reactions(kept);
         const std::vector<float> b = reactions(fresh);
         ASSERT_EQ(a.size(), b.size());
@@ -535,7 +595,8 @@ TEST_P(JointOrderKept, MatchesANewOneEveryStep) {
     EXPECT_GE(kept.repackSteps, 4);
     EXPECT_EQ(fresh.repackSteps, 150);
     // The net hangs, still joined: its corners' neighbours stay within a few cm of 0.5 m.
-    const float gap = length(kept.world.transform(kept.net[1]).p - kept.world.transform(kept.net[0]).p);
+    const float gap =
+        length(kept.world.transform(kept.net[1]).p - kept.world.transform(kept.net[0]).p);
     EXPECT_NEAR(gap, 0.5f, 0.05f);
 }
 
@@ -548,7 +609,9 @@ TEST(JointWorld, WorldsWithJointsOnSeveralThreadsMatchRunningAlone) {
         addGround(world);
         std::vector<BodyId> bodies = hangChain(world, 30, 0.4f, {-6.0f, 10.0f});
         for (int i = 0; i < 12; ++i) {
-            bodies.push_back(addBox(world, {-3.0f + 0.5f * static_cast<float>(i % 6), 0.5f + static_cast<float>(i / 6)}, 0.2f));
+            bodies.push_back(addBox(
+                world, {-3.0f + 0.5f * static_cast<float>(i % 6), 0.5f + static_cast<float>(i / 6)},
+                0.2f));
         }
         run(world, 3.0f);
         return transformsHash(world, bodies);

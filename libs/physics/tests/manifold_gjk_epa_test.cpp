@@ -18,7 +18,6 @@ using test::at;
 
 constexpr float kPi = 3.14159265f;
 
-
 void expectFinite(const Manifold& m) {
     EXPECT_TRUE(isFinite(m.normal));
     for (int i = 0; i < m.pointCount; ++i) {
@@ -113,7 +112,9 @@ struct Rng {
         float unit = static_cast<float>(engine() >> 8) * (1.0f / 16777216.0f);
         return lo + (hi - lo) * unit;
     }
-    int between(int lo, int hi) { return lo + static_cast<int>(engine() % static_cast<unsigned>(hi - lo + 1)); }
+    int between(int lo, int hi) {
+        return lo + static_cast<int>(engine() % static_cast<unsigned>(hi - lo + 1));
+    }
 };
 
 Polygon randomPolygon(Rng& rng, float scale, float radius) {
@@ -132,8 +133,8 @@ Polygon randomPolygon(Rng& rng, float scale, float radius) {
 }
 
 // Support-based separation of B from A along unit axis n (world).
-float axisSeparation(const Polygon& a, const Transform& xfA, const Polygon& b,
-                     const Transform& xfB, Vec2 n) {
+float axisSeparation(const Polygon& a, const Transform& xfA, const Polygon& b, const Transform& xfB,
+                     Vec2 n) {
     float maxA = -FLT_MAX;
     for (int i = 0; i < a.count; ++i) {
         maxA = std::fmax(maxA, dot(n, transformPoint(xfA, a.vertices[i])));
@@ -203,8 +204,8 @@ TEST(CollidePolygonsGjkEpa, AgreesWithSat) {
         bool rounded = rng.between(0, 2) == 0;
         Polygon a = randomPolygon(rng, scaleA, rounded ? rng.uniform(0.0f, 0.1f) * scaleA : 0.0f);
         Polygon b = randomPolygon(rng, scaleB, rounded ? rng.uniform(0.0f, 0.1f) * scaleB : 0.0f);
-        Transform xfA = at(rng.uniform(-50.0f, 50.0f), rng.uniform(-50.0f, 50.0f),
-                           rng.uniform(-kPi, kPi));
+        Transform xfA =
+            at(rng.uniform(-50.0f, 50.0f), rng.uniform(-50.0f, 50.0f), rng.uniform(-kPi, kPi));
         float angle = rng.uniform(-kPi, kPi);
         Vec2 u{std::cos(angle), std::sin(angle)};
         Transform xfB = at(0.0f, 0.0f, rng.uniform(-kPi, kPi));
@@ -275,18 +276,17 @@ TEST(CollidePolygonsGjkEpa, AgreesWithSat) {
             if (sat.pointCount > 0 && gjk.pointCount > 0) {
                 float sSat = axisSeparation(a, xfA, b, xfB, sat.normal);
                 float sGjk = axisSeparation(a, xfA, b, xfB, gjk.normal);
-                bool cornerThreshold = (sat.pointCount == 1 || gjk.pointCount == 1) &&
-                                       cosine > 0.998f;
-                bothValid = std::fabs(sSat - sGjk) <= 0.1f * kLinearSlop + tol ||
-                            cornerThreshold;
+                bool cornerThreshold =
+                    (sat.pointCount == 1 || gjk.pointCount == 1) && cosine > 0.998f;
+                bothValid = std::fabs(sSat - sGjk) <= 0.1f * kLinearSlop + tol || cornerThreshold;
             } else {
                 const Manifold& some = sat.pointCount > 0 ? sat : gjk;
                 bothValid = nearestToMargin(some, margin) <= tol;
             }
-            EXPECT_TRUE(bothValid) << "trial " << trial << ": SAT normal (" << sat.normal.x << ", "
-                                   << sat.normal.y << ") count " << sat.pointCount
-                                   << ", GJK/EPA normal (" << gjk.normal.x << ", " << gjk.normal.y
-                                   << ") count " << gjk.pointCount;
+            EXPECT_TRUE(bothValid)
+                << "trial " << trial << ": SAT normal (" << sat.normal.x << ", " << sat.normal.y
+                << ") count " << sat.pointCount << ", GJK/EPA normal (" << gjk.normal.x << ", "
+                << gjk.normal.y << ") count " << gjk.pointCount;
             ++ties;
             continue;
         }

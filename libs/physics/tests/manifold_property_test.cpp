@@ -64,7 +64,8 @@ float pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
 float orient(Vec2 a, Vec2 b, Vec2 c) { return cross(b - a, c - a); }
 
 bool segmentsCross(Vec2 a1, Vec2 a2, Vec2 b1, Vec2 b2) {
-    return orient(a1, a2, b1) * orient(a1, a2, b2) < 0.0f && orient(b1, b2, a1) * orient(b1, b2, a2) < 0.0f;
+    return orient(a1, a2, b1) * orient(a1, a2, b2) < 0.0f &&
+           orient(b1, b2, a1) * orient(b1, b2, a2) < 0.0f;
 }
 
 bool insideConvex(const std::vector<Vec2>& poly, Vec2 p) {
@@ -127,7 +128,8 @@ using Random = test::TestRandom;
 ShapeGeometry randomShape(Random& rng) {
     switch (rng.index(4)) {
     case 0:
-        return Circle{{rng.uniform(-0.2f, 0.2f), rng.uniform(-0.2f, 0.2f)}, rng.uniform(0.1f, 0.6f)};
+        return Circle{{rng.uniform(-0.2f, 0.2f), rng.uniform(-0.2f, 0.2f)},
+                      rng.uniform(0.1f, 0.6f)};
     case 1: {
         float a = rng.uniform(0.0f, 6.3f), half = rng.uniform(0.1f, 0.8f);
         Vec2 u{std::cos(a), std::sin(a)};
@@ -142,7 +144,8 @@ ShapeGeometry randomShape(Random& rng) {
         int n = 3 + rng.index(6);
         std::vector<Vec2> points;
         for (int i = 0; i < n; ++i) {
-            float a = 6.2831853f * (static_cast<float>(i) + rng.uniform(0.0f, 0.8f)) / static_cast<float>(n);
+            float a = 6.2831853f * (static_cast<float>(i) + rng.uniform(0.0f, 0.8f)) /
+                      static_cast<float>(n);
             float r = rng.uniform(0.3f, 1.0f);
             points.push_back({r * std::cos(a), r * std::sin(a)});
         }
@@ -163,8 +166,10 @@ TEST(CollideProperties, AgreeWithBruteForceDistance) {
         if (typeOf(a) == ShapeType::Segment && typeOf(b) == ShapeType::Segment) {
             continue;
         }
-        Transform xfA = makeTransform(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-3.2f, 3.2f));
-        Transform xfB = makeTransform(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-3.2f, 3.2f));
+        Transform xfA =
+            makeTransform(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-3.2f, 3.2f));
+        Transform xfB =
+            makeTransform(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-3.2f, 3.2f));
         Core ca = worldCore(a, xfA);
         Core cb = worldCore(b, xfB);
         float coreGap = coreDistance(ca, cb);

@@ -53,11 +53,8 @@ std::vector<Polygon> makeShapes(Rng& rng) {
                                                    {-1.0f, -0.5f},
                                                    {-0.5f, -1.0f},
                                                    {0.5f, -1.0f}}));
-    shapes.push_back(makePolygon(std::vector<Vec2>{{1.0f, -1.0f},
-                                                   {1.0f, 1.0f},
-                                                   {-1.0f, 1.0f},
-                                                   {-1.0f, -0.5f},
-                                                   {-0.5f, -1.0f}}));
+    shapes.push_back(makePolygon(std::vector<Vec2>{
+        {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}, {-1.0f, -0.5f}, {-0.5f, -1.0f}}));
     for (int i = 0; i < 16; ++i) {
         shapes.push_back(makeBox(rng.uniform(0.05f, 2.0f), rng.uniform(0.05f, 2.0f)));
     }
@@ -97,8 +94,8 @@ TEST(CollidePolygonAndCircleScalarPath, BitIdenticalToSimdPath) {
         // Mode 1: one of the symmetric shapes, unrotated, the centre on a diagonal at a
         // quarter-metre step, so two faces tie exactly (inside: both are candidates for the
         // normal; outside: both lead to the same vertex or to different ones).
-        const Polygon& a = shapes[static_cast<std::size_t>(mode == 1 ? rng.index(4)
-                                                                     : rng.index(shapeCount))];
+        const Polygon& a =
+            shapes[static_cast<std::size_t>(mode == 1 ? rng.index(4) : rng.index(shapeCount))];
         Circle b{{rng.uniform(-0.5f, 0.5f), rng.uniform(-0.5f, 0.5f)}, rng.uniform(0.01f, 1.0f)};
         Transform xfA = makeTransform(rng.uniform(-2.0f, 2.0f), rng.uniform(-2.0f, 2.0f),
                                       rng.uniform(-3.2f, 3.2f));

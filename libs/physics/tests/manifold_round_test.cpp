@@ -40,7 +40,8 @@ TEST(CollideCircles, OverlappingTouchingSeparated) {
     EXPECT_NEAR(m.points[0].separation, 0.01f, 1e-6f);
 
     EXPECT_EQ(collideCircles(a, kIdentity, b, makeTransform(1.53f, 0.0f, 0.0f)).pointCount, 0);
-    EXPECT_EQ(collideCircles(a, kIdentity, b, makeTransform(1.53f, 0.0f, 0.0f), 0.05f).pointCount, 1);
+    EXPECT_EQ(collideCircles(a, kIdentity, b, makeTransform(1.53f, 0.0f, 0.0f), 0.05f).pointCount,
+              1);
 }
 
 TEST(CollideCircles, LocalCentresAndRotatedFrames) {
@@ -74,7 +75,8 @@ TEST(CollideCapsuleAndCircle, SideAndCap) {
     E2D_EXPECT_VEC2_NEAR(m.normal, h, -h, 1e-6f);
     EXPECT_NEAR(m.points[0].separation, 0.01f, 1e-6f);
     E2D_EXPECT_VEC2_NEAR(m.points[0].point, 1.0f + 0.255f * h, -0.255f * h, 1e-6f);
-    EXPECT_EQ(collideCapsuleAndCircle(a, kIdentity, b, makeTransform(0.0f, 0.8f, 0.0f)).pointCount, 0);
+    EXPECT_EQ(collideCapsuleAndCircle(a, kIdentity, b, makeTransform(0.0f, 0.8f, 0.0f)).pointCount,
+              0);
 }
 
 TEST(CollideCapsules, ParallelOverlapGivesTwoPoints) {
@@ -141,7 +143,9 @@ TEST(CollidePolygonAndCircle, FaceCornerAndCentreInside) {
     E2D_EXPECT_VEC2_NEAR(m.points[0].point, 0.3f, 0.475f, 1e-6f);
 
     // Off the corner (1, 0.5) by (0.2, 0.2): 0.2828 away, beyond 0.25 + margin.
-    EXPECT_EQ(collidePolygonAndCircle(box, kIdentity, circle, makeTransform(1.2f, 0.7f, 0.0f)).pointCount, 0);
+    EXPECT_EQ(
+        collidePolygonAndCircle(box, kIdentity, circle, makeTransform(1.2f, 0.7f, 0.0f)).pointCount,
+        0);
     Circle bigger{{0.0f, 0.0f}, 0.3f};
     m = collidePolygonAndCircle(box, kIdentity, bigger, makeTransform(1.2f, 0.7f, 0.0f));
     ASSERT_EQ(m.pointCount, 1);
@@ -177,7 +181,8 @@ TEST(CollidePolygonAndCapsule, CapsuleLyingOnABox) {
     Polygon ground = makeBox(2.0f, 0.5f);
     Capsule capsule{{-1.0f, 0.0f}, {1.0f, 0.0f}, 0.25f};
     // Core gap 0.2, separation -0.05: two points at the capsule's ends, midway at y = 0.475.
-    Manifold m = collidePolygonAndCapsule(ground, kIdentity, capsule, makeTransform(0.0f, 0.7f, 0.0f));
+    Manifold m =
+        collidePolygonAndCapsule(ground, kIdentity, capsule, makeTransform(0.0f, 0.7f, 0.0f));
     ASSERT_EQ(m.pointCount, 2);
     E2D_EXPECT_VEC2_NEAR(m.normal, 0.0f, 1.0f, 1e-6f);
     for (int i = 0; i < 2; ++i) {
@@ -190,7 +195,9 @@ TEST(CollidePolygonAndCapsule, CapsuleLyingOnABox) {
     ASSERT_EQ(m.pointCount, 2);
     EXPECT_NEAR(m.points[0].separation, 0.01f, 1e-6f);
     EXPECT_NEAR(m.points[0].point.y, 0.505f, 1e-6f);
-    EXPECT_EQ(collidePolygonAndCapsule(ground, kIdentity, capsule, makeTransform(0.0f, 0.8f, 0.0f)).pointCount, 0);
+    EXPECT_EQ(collidePolygonAndCapsule(ground, kIdentity, capsule, makeTransform(0.0f, 0.8f, 0.0f))
+                  .pointCount,
+              0);
 }
 
 TEST(CollidePolygonAndCapsule, CapsuleEndAgainstABoxCorner) {
@@ -208,20 +215,23 @@ TEST(CollidePolygonAndCapsule, CapsuleEndAgainstABoxCorner) {
 
 TEST(CollideSegments, SegmentAgainstCircleCapsuleAndPolygon) {
     Segment ground{{-5.0f, 0.0f}, {5.0f, 0.0f}};
-    Manifold m = collideSegmentAndCircle(ground, kIdentity, Circle{{0, 0}, 0.5f}, makeTransform(1.0f, 0.4f, 0.0f));
+    Manifold m = collideSegmentAndCircle(ground, kIdentity, Circle{{0, 0}, 0.5f},
+                                         makeTransform(1.0f, 0.4f, 0.0f));
     ASSERT_EQ(m.pointCount, 1);
     E2D_EXPECT_VEC2_NEAR(m.normal, 0.0f, 1.0f, 1e-6f);
     EXPECT_NEAR(m.points[0].separation, -0.1f, 1e-6f);
     E2D_EXPECT_VEC2_NEAR(m.points[0].point, 1.0f, -0.05f, 1e-6f);
 
-    m = collideSegmentAndCapsule(ground, kIdentity, Capsule{{-1, 0}, {1, 0}, 0.25f}, makeTransform(0.0f, -0.2f, 0.0f));
+    m = collideSegmentAndCapsule(ground, kIdentity, Capsule{{-1, 0}, {1, 0}, 0.25f},
+                                 makeTransform(0.0f, -0.2f, 0.0f));
     ASSERT_EQ(m.pointCount, 2);
     E2D_EXPECT_VEC2_NEAR(m.normal, 0.0f, -1.0f, 1e-6f); // from below: segments are two-sided
     EXPECT_NEAR(m.points[0].separation, -0.05f, 1e-6f);
 
     Polygon box = makeBox(0.5f, 0.5f);
     for (float side : {1.0f, -1.0f}) {
-        m = collideSegmentAndPolygon(ground, kIdentity, box, makeTransform(2.0f, side * 0.49f, 0.0f));
+        m = collideSegmentAndPolygon(ground, kIdentity, box,
+                                     makeTransform(2.0f, side * 0.49f, 0.0f));
         ASSERT_EQ(m.pointCount, 2) << side;
         E2D_EXPECT_VEC2_NEAR(m.normal, 0.0f, side, 1e-6f);
         for (int i = 0; i < 2; ++i) {
@@ -245,8 +255,10 @@ TEST(CapsuleContacts, IdsStayTheSameUnderSmallMotions) {
     Polygon ground = makeBox(3.0f, 0.5f);
     Capsule lower{{-2.0f, 0.0f}, {2.0f, 0.0f}, 0.25f};
     Capsule capsule{{-1.0f, 0.0f}, {1.0f, 0.0f}, 0.25f};
-    Manifold onBox = collidePolygonAndCapsule(ground, kIdentity, capsule, makeTransform(0.0f, 0.74f, 0.0f));
-    Manifold onCapsule = collideCapsules(lower, kIdentity, capsule, makeTransform(0.0f, 0.49f, 0.0f));
+    Manifold onBox =
+        collidePolygonAndCapsule(ground, kIdentity, capsule, makeTransform(0.0f, 0.74f, 0.0f));
+    Manifold onCapsule =
+        collideCapsules(lower, kIdentity, capsule, makeTransform(0.0f, 0.49f, 0.0f));
     ASSERT_EQ(onBox.pointCount, 2);
     ASSERT_EQ(onCapsule.pointCount, 2);
     std::mt19937 rng(42);
@@ -255,8 +267,10 @@ TEST(CapsuleContacts, IdsStayTheSameUnderSmallMotions) {
                         static_cast<float>(rng.max() - rng.min());
     };
     for (int trial = 0; trial < 100; ++trial) {
-        float dx = uniform(-0.02f, 0.02f), dy = uniform(-0.004f, 0.004f), angle = uniform(-0.002f, 0.002f);
-        Manifold m = collidePolygonAndCapsule(ground, kIdentity, capsule, makeTransform(dx, 0.74f + dy, angle));
+        float dx = uniform(-0.02f, 0.02f), dy = uniform(-0.004f, 0.004f),
+              angle = uniform(-0.002f, 0.002f);
+        Manifold m = collidePolygonAndCapsule(ground, kIdentity, capsule,
+                                              makeTransform(dx, 0.74f + dy, angle));
         ASSERT_EQ(m.pointCount, 2) << trial;
         EXPECT_EQ(sortedIds(m), sortedIds(onBox)) << trial;
         m = collideCapsules(lower, kIdentity, capsule, makeTransform(dx, 0.49f + dy, angle));

@@ -151,7 +151,8 @@ TEST(CollidePolygons, WorldFrameFollowsBothTransforms) {
     ASSERT_EQ(m.pointCount, 2);
     Vec2 up = rotate(scene.q, {0.0f, 1.0f});
     E2D_EXPECT_VEC2_NEAR(m.normal, up.x, up.y, 1e-6f);
-    std::vector<Vec2> expected{transformPoint(scene, {-0.3f, 0.495f}), transformPoint(scene, {0.7f, 0.495f})};
+    std::vector<Vec2> expected{transformPoint(scene, {-0.3f, 0.495f}),
+                               transformPoint(scene, {0.7f, 0.495f})};
     for (int i = 0; i < 2; ++i) {
         EXPECT_NEAR(m.points[i].separation, -0.01f, 1e-5f);
         float d0 = distance(m.points[i].point, expected[0]);
@@ -191,7 +192,9 @@ TEST(CollidePolygons, RoundedCornersDoNotTouchEarly) {
     // Rounded by 0.1: cores' corners 0.2 sqrt(2) = 0.283 apart, separation 0.083: no contact,
     // though the face separation (0.2 - 0.2 = 0) would say touching.
     Polygon rounded = makeRoundedBox(0.5f, 0.5f, 0.1f);
-    EXPECT_EQ(collidePolygons(rounded, kIdentity, rounded, makeTransform(1.2f, 1.2f, 0.0f)).pointCount, 0);
+    EXPECT_EQ(
+        collidePolygons(rounded, kIdentity, rounded, makeTransform(1.2f, 1.2f, 0.0f)).pointCount,
+        0);
     Manifold m = collidePolygons(rounded, kIdentity, rounded, makeTransform(1.12f, 1.12f, 0.0f));
     ASSERT_EQ(m.pointCount, 1);
     EXPECT_NEAR(m.points[0].separation, 0.12f * std::sqrt(2.0f) - 0.2f, 1e-5f);
@@ -200,8 +203,9 @@ TEST(CollidePolygons, RoundedCornersDoNotTouchEarly) {
 
 TEST(CollidePolygons, RoundedBoxRestingOnRoundedGround) {
     // Surfaces at 0.5 + 0.1 (ground) and y - 0.5 - 0.1 (box): y = 1.19 overlaps by 0.01.
-    Manifold m = collidePolygons(makeRoundedBox(5.0f, 0.5f, 0.1f), kIdentity,
-                                 makeRoundedBox(0.5f, 0.5f, 0.1f), makeTransform(0.0f, 1.19f, 0.0f));
+    Manifold m =
+        collidePolygons(makeRoundedBox(5.0f, 0.5f, 0.1f), kIdentity,
+                        makeRoundedBox(0.5f, 0.5f, 0.1f), makeTransform(0.0f, 1.19f, 0.0f));
     ASSERT_EQ(m.pointCount, 2);
     E2D_EXPECT_VEC2_NEAR(m.normal, 0.0f, 1.0f, 1e-6f);
     std::vector<float> xs = sortedX(m);
@@ -215,7 +219,9 @@ TEST(CollidePolygons, RoundedBoxRestingOnRoundedGround) {
 
 TEST(CollidePolygons, SeparatedBeyondMarginOnEveryAxis) {
     EXPECT_EQ(collidePolygons(makeBox(0.5f, 0.5f), kIdentity, makeBox(0.5f, 0.5f),
-                              makeTransform(3.0f, 0.0f, 0.3f)).pointCount, 0);
+                              makeTransform(3.0f, 0.0f, 0.3f))
+                  .pointCount,
+              0);
 }
 
 TEST(CollidePolygons, IdsStayTheSameUnderSmallMotions) {
@@ -279,7 +285,8 @@ TEST(Collide, ArgumentOrderFlipsTheNormalAndSwapsAnchors) {
             for (int i = 0; i < ab.pointCount; ++i) {
                 float bestDistance = 1e9f;
                 for (int j = 0; j < ba.pointCount; ++j) {
-                    bestDistance = std::fmin(bestDistance, distance(ab.points[i].point, ba.points[j].point));
+                    bestDistance =
+                        std::fmin(bestDistance, distance(ab.points[i].point, ba.points[j].point));
                 }
                 EXPECT_LT(bestDistance, 1e-4f) << a.index() << " " << b.index();
             }
@@ -299,8 +306,10 @@ TEST(Collide, ReversedPairMatchesTheDirectRoutine) {
     ASSERT_EQ(reversed.pointCount, 1);
     E2D_EXPECT_VEC2_NEAR(reversed.normal, 0.0f, -1.0f, 1e-6f);
     EXPECT_FLOAT_EQ(reversed.points[0].separation, direct.points[0].separation);
-    E2D_EXPECT_VEC2_NEAR(reversed.points[0].anchorA, direct.points[0].anchorB.x, direct.points[0].anchorB.y, 0.0f);
-    E2D_EXPECT_VEC2_NEAR(reversed.points[0].anchorB, direct.points[0].anchorA.x, direct.points[0].anchorA.y, 0.0f);
+    E2D_EXPECT_VEC2_NEAR(reversed.points[0].anchorA, direct.points[0].anchorB.x,
+                         direct.points[0].anchorB.y, 0.0f);
+    E2D_EXPECT_VEC2_NEAR(reversed.points[0].anchorB, direct.points[0].anchorA.x,
+                         direct.points[0].anchorA.y, 0.0f);
 
     // Polygon pairs: the ids keep (feature of A, feature of B) order after the swap.
     Segment ground{{-5.0f, 0.0f}, {5.0f, 0.0f}};

@@ -73,12 +73,15 @@ TEST(Mass, RegularPolygonsMatchTheClosedForm) {
             points.push_back(offset + radius * Vec2{std::cos(a), std::sin(a)});
         }
         MassData md = computeMass(makePolygon(points), density);
-        const float area = 0.5f * static_cast<float>(n) * radius * radius * std::sin(2.0f * kPi / static_cast<float>(n));
+        const float area = 0.5f * static_cast<float>(n) * radius * radius *
+                           std::sin(2.0f * kPi / static_cast<float>(n));
         const float m = density * area;
         const float c = std::cos(kPi / static_cast<float>(n));
         EXPECT_NEAR(md.mass, m, 1e-5f * m) << n;
         E2D_EXPECT_VEC2_NEAR(md.center, offset.x, offset.y, 1e-5f);
-        EXPECT_NEAR(md.rotationalInertia, m * radius * radius / 6.0f * (1.0f + 2.0f * c * c), 1e-4f * m) << n;
+        EXPECT_NEAR(md.rotationalInertia, m * radius * radius / 6.0f * (1.0f + 2.0f * c * c),
+                    1e-4f * m)
+            << n;
     }
 }
 
@@ -134,10 +137,14 @@ TEST(Mass, VariantDispatchesToTheShape) {
 }
 
 TEST(Mass, NegativeOrNonFiniteDensityIsRejected) {
-    EXPECT_EQ(errorMessage([] { computeMass(makeBox(1.0f, 1.0f), -1.0f); }),
-              "physics::computeMass(): density must be finite and in [0, kHuge (500000 kg/m^2)], got -1");
-    EXPECT_EQ(errorMessage([] { computeMass(Circle{{0, 0}, 1.0f}, INFINITY); }),
-              "physics::computeMass(): density must be finite and in [0, kHuge (500000 kg/m^2)], got inf");
+    EXPECT_EQ(
+        errorMessage([] { computeMass(makeBox(1.0f, 1.0f), -1.0f); }),
+        "physics::computeMass(): density must be finite and in [0, kHuge (500000 kg/m^2)], got -1");
+    EXPECT_EQ(errorMessage([] {
+                  computeMass(Circle{{0, 0}, 1.0f}, INFINITY);
+              }),
+              "physics::computeMass(): density must be finite and in [0, kHuge (500000 kg/m^2)], "
+              "got inf");
 }
 
 } // namespace

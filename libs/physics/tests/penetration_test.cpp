@@ -21,8 +21,6 @@ ShapeProxy boxProxy(float hx, float hy, float radius = 0.0f) {
     return makeProxy(points, radius);
 }
 
-
-
 void expectFinite(const PenetrationOutput& out) {
     EXPECT_TRUE(isFinite(out.pointA));
     EXPECT_TRUE(isFinite(out.pointB));
@@ -33,7 +31,8 @@ void expectFinite(const PenetrationOutput& out) {
 
 // Unit boxes, B at (1.5, 0.2): they overlap by 0.5 in x and 1.8 in y, so x is the way out.
 TEST(Penetration, BoxBoxShallowX) {
-    PenetrationOutput out = penetration(pair(boxProxy(1, 1), at(0, 0), boxProxy(1, 1), at(1.5f, 0.2f)));
+    PenetrationOutput out =
+        penetration(pair(boxProxy(1, 1), at(0, 0), boxProxy(1, 1), at(1.5f, 0.2f)));
     expectFinite(out);
     EXPECT_TRUE(out.converged);
     EXPECT_NEAR(out.depth, 0.5f, kTol);
@@ -57,8 +56,8 @@ TEST(Penetration, BoxBoxRotatedFrameY) {
 
 // Rounded shapes: radii add to the core depth.
 TEST(Penetration, RadiiAddToDepth) {
-    PenetrationOutput out = penetration(
-        pair(boxProxy(1, 1, 0.1f), at(0, 0), boxProxy(1, 1, 0.05f), at(1.5f, 0.2f)));
+    PenetrationOutput out =
+        penetration(pair(boxProxy(1, 1, 0.1f), at(0, 0), boxProxy(1, 1, 0.05f), at(1.5f, 0.2f)));
     expectFinite(out);
     EXPECT_NEAR(out.depth, 0.65f, kTol);
     EXPECT_NEAR(out.normal.x, 1.0f, kTol);
@@ -105,7 +104,8 @@ TEST(Penetration, IdenticalBoxes) {
 }
 
 TEST(Penetration, TouchingBoxesHaveZeroDepthAndFaceNormal) {
-    PenetrationOutput out = penetration(pair(boxProxy(1, 1), at(0, 0), boxProxy(1, 1), at(2, 0.5f)));
+    PenetrationOutput out =
+        penetration(pair(boxProxy(1, 1), at(0, 0), boxProxy(1, 1), at(2, 0.5f)));
     expectFinite(out);
     EXPECT_NEAR(out.depth, 0.0f, kTol);
     EXPECT_NEAR(out.normal.x, 1.0f, kTol);

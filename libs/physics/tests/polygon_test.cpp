@@ -66,22 +66,31 @@ TEST(Polygon, TriangleCentroidAndNormals) {
 
 TEST(Polygon, BadSizesNameTheFunctionAndTheValue) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
-    EXPECT_EQ(errorMessage([] { makeBox(-1.0f, 1.0f); }),
-              "physics::makeBox(): half-extent hx must be finite and in (0, kHuge (500000 m)], got -1");
-    EXPECT_EQ(errorMessage([&] { makeBox(1.0f, nan); }),
-              "physics::makeBox(): half-extent hy must be finite and in (0, kHuge (500000 m)], got nan");
-    EXPECT_EQ(errorMessage([] { makeBox(0.5f, 0.0f); }),
-              "physics::makeBox(): half-extent hy must be finite and in (0, kHuge (500000 m)], got 0");
-    EXPECT_EQ(errorMessage([] { makeOffsetBox(0.0f, 1.0f, {0, 0}, 0.0f); }),
-              "physics::makeOffsetBox(): half-extent hx must be finite and in (0, kHuge (500000 m)], got 0");
-    EXPECT_EQ(errorMessage([&] { makeOffsetBox(1.0f, 1.0f, {nan, 0}, 0.0f); }),
+    EXPECT_EQ(
+        errorMessage([] { makeBox(-1.0f, 1.0f); }),
+        "physics::makeBox(): half-extent hx must be finite and in (0, kHuge (500000 m)], got -1");
+    EXPECT_EQ(
+        errorMessage([&] { makeBox(1.0f, nan); }),
+        "physics::makeBox(): half-extent hy must be finite and in (0, kHuge (500000 m)], got nan");
+    EXPECT_EQ(
+        errorMessage([] { makeBox(0.5f, 0.0f); }),
+        "physics::makeBox(): half-extent hy must be finite and in (0, kHuge (500000 m)], got 0");
+    EXPECT_EQ(errorMessage([] {
+                  makeOffsetBox(0.0f, 1.0f, {0, 0}, 0.0f);
+              }),
+              "physics::makeOffsetBox(): half-extent hx must be finite and in (0, kHuge (500000 "
+              "m)], got 0");
+    EXPECT_EQ(errorMessage([&] {
+                  makeOffsetBox(1.0f, 1.0f, {nan, 0}, 0.0f);
+              }),
               "physics::makeOffsetBox(): center must be finite and within kHuge, got (nan, 0)");
     EXPECT_EQ(errorMessage([] {
                   makeOffsetBox(1.0f, 1.0f, {0, 0}, std::numeric_limits<float>::infinity());
               }),
               "physics::makeOffsetBox(): angle must be finite, got inf");
-    EXPECT_EQ(errorMessage([] { makeRoundedBox(1.0f, 1.0f, -0.1f); }),
-              "physics::makeRoundedBox(): radius must be finite and in [0, kHuge (500000 m)], got -0.1");
+    EXPECT_EQ(
+        errorMessage([] { makeRoundedBox(1.0f, 1.0f, -0.1f); }),
+        "physics::makeRoundedBox(): radius must be finite and in [0, kHuge (500000 m)], got -0.1");
     std::vector<Vec2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     EXPECT_EQ(errorMessage([&] { makePolygon(square, -2.0f); }),
               "physics::makePolygon(): radius must be finite and in [0, kHuge (500000 m)], got -2");
@@ -113,17 +122,29 @@ TEST(Validate, AcceptsGoodShapes) {
 TEST(Validate, NamesTheCallerAndTheBadValue) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const char* fn = "physics::World::createShape()";
-    EXPECT_EQ(errorMessage([&] { validate(Circle{{0, 0}, 0.0f}, fn); }),
-              "physics::World::createShape(): circle radius must be finite and in (0, kHuge (500000 m)], got 0");
-    EXPECT_EQ(errorMessage([&] { validate(Circle{{nan, 0}, 1.0f}, fn); }),
+    EXPECT_EQ(errorMessage([&] {
+                  validate(Circle{{0, 0}, 0.0f}, fn);
+              }),
+              "physics::World::createShape(): circle radius must be finite and in (0, kHuge "
+              "(500000 m)], got 0");
+    EXPECT_EQ(errorMessage([&] {
+                  validate(Circle{{nan, 0}, 1.0f}, fn);
+              }),
               "physics::World::createShape(): circle center must be finite and within kHuge, got "
               "(nan, 0)");
-    EXPECT_EQ(errorMessage([&] { validate(Capsule{{0, 0}, {1, 0}, -1.0f}, fn); }),
-              "physics::World::createShape(): capsule radius must be finite and in (0, kHuge (500000 m)], got -1");
-    EXPECT_EQ(errorMessage([&] { validate(Capsule{{0, 0}, {0.001f, 0}, 1.0f}, fn); }),
+    EXPECT_EQ(errorMessage([&] {
+                  validate(Capsule{{0, 0}, {1, 0}, -1.0f}, fn);
+              }),
+              "physics::World::createShape(): capsule radius must be finite and in (0, kHuge "
+              "(500000 m)], got -1");
+    EXPECT_EQ(errorMessage([&] {
+                  validate(Capsule{{0, 0}, {0.001f, 0}, 1.0f}, fn);
+              }),
               "physics::World::createShape(): capsule centers must be at least kLinearSlop (0.005 "
               "m) apart, got 0.001 (use a Circle)");
-    EXPECT_EQ(errorMessage([&] { validate(Segment{{1, 1}, {1, 1}}, fn); }),
+    EXPECT_EQ(errorMessage([&] {
+                  validate(Segment{{1, 1}, {1, 1}}, fn);
+              }),
               "physics::World::createShape(): segment points must be at least kLinearSlop (0.005 "
               "m) apart, got 0");
     Polygon empty;
@@ -133,29 +154,36 @@ TEST(Validate, NamesTheCallerAndTheBadValue) {
     Polygon negative = makeBox(1.0f, 1.0f);
     negative.radius = -0.5f;
     EXPECT_EQ(errorMessage([&] { validate(negative, fn); }),
-              "physics::World::createShape(): polygon radius must be finite and in [0, kHuge (500000 m)], got -0.5");
+              "physics::World::createShape(): polygon radius must be finite and in [0, kHuge "
+              "(500000 m)], got -0.5");
     Polygon inside = makeBox(1.0f, 1.0f);
     inside.vertices[2] = {0.0f, 0.0f}; // dents the box
     EXPECT_EQ(errorMessage([&] { validate(inside, fn); }),
               "physics::World::createShape(): polygon is not strictly convex and counter-clockwise "
               "at vertex 2 (use makePolygon())");
     const float inf = std::numeric_limits<float>::infinity();
-    EXPECT_EQ(errorMessage([&] { validate(Capsule{{0, 0}, {inf, 0}, 1.0f}, fn); }),
+    EXPECT_EQ(errorMessage([&] {
+                  validate(Capsule{{0, 0}, {inf, 0}, 1.0f}, fn);
+              }),
               "physics::World::createShape(): capsule centers must be finite and within kHuge, got "
               "(0, 0) and (inf, 0)");
-    EXPECT_EQ(errorMessage([&] { validate(Segment{{0, 0}, {0, 6e5f}}, fn); }),
+    EXPECT_EQ(errorMessage([&] {
+                  validate(Segment{{0, 0}, {0, 6e5f}}, fn);
+              }),
               "physics::World::createShape(): segment points must be finite and within kHuge, got "
               "(0, 0) and (0, 600000)");
     Polygon farVertex = makeBox(1.0f, 1.0f);
     farVertex.vertices[3] = {nan, 1.0f};
-    EXPECT_EQ(errorMessage([&] { validate(farVertex, fn); }),
-              "physics::World::createShape(): polygon vertex 3 must be finite and within kHuge, got "
-              "(nan, 1)");
+    EXPECT_EQ(
+        errorMessage([&] { validate(farVertex, fn); }),
+        "physics::World::createShape(): polygon vertex 3 must be finite and within kHuge, got "
+        "(nan, 1)");
     Polygon badCentroid = makeBox(1.0f, 1.0f);
     badCentroid.centroid = {0.0f, -inf};
-    EXPECT_EQ(errorMessage([&] { validate(badCentroid, fn); }),
-              "physics::World::createShape(): polygon centroid must be finite and within kHuge, got "
-              "(0, -inf)");
+    EXPECT_EQ(
+        errorMessage([&] { validate(badCentroid, fn); }),
+        "physics::World::createShape(): polygon centroid must be finite and within kHuge, got "
+        "(0, -inf)");
     Polygon badNormal = makeBox(1.0f, 1.0f);
     badNormal.normals[1] = {2.0f, 0.0f};
     EXPECT_EQ(errorMessage([&] { validate(badNormal, fn); }),

@@ -17,7 +17,8 @@ using Random = test::TestRandom;
 ShapeGeometry randomSolidShape(Random& rng) {
     switch (rng.index(3)) {
     case 0:
-        return Circle{{rng.uniform(-0.3f, 0.3f), rng.uniform(-0.3f, 0.3f)}, rng.uniform(0.2f, 1.0f)};
+        return Circle{{rng.uniform(-0.3f, 0.3f), rng.uniform(-0.3f, 0.3f)},
+                      rng.uniform(0.2f, 1.0f)};
     case 1: {
         float a = rng.uniform(0.0f, 6.3f), half = rng.uniform(0.1f, 1.0f);
         Vec2 u{std::cos(a), std::sin(a)};
@@ -27,7 +28,8 @@ ShapeGeometry randomSolidShape(Random& rng) {
         int n = 3 + rng.index(6);
         std::vector<Vec2> points;
         for (int i = 0; i < n; ++i) {
-            float a = 6.2831853f * (static_cast<float>(i) + rng.uniform(0.0f, 0.8f)) / static_cast<float>(n);
+            float a = 6.2831853f * (static_cast<float>(i) + rng.uniform(0.0f, 0.8f)) /
+                      static_cast<float>(n);
             float r = rng.uniform(0.3f, 1.0f);
             points.push_back({r * std::cos(a), r * std::sin(a)});
         }

@@ -26,11 +26,13 @@ TEST(RayCast, CircleHitFromTheQuadratic) {
 
 TEST(RayCast, CircleMissesAndStartsInside) {
     Circle circle{{1.0f, 2.0f}, 0.5f};
-    EXPECT_FALSE(rayCast(RayCastInput{{-3.0f, 2.6f}, {10.0f, 0.0f}, 1.0f}, circle).hit); // passes by
-    EXPECT_FALSE(rayCast(RayCastInput{{-3.0f, 2.3f}, {10.0f, 0.0f}, 0.35f}, circle).hit); // too short
-    EXPECT_FALSE(rayCast(RayCastInput{{1.1f, 2.0f}, {10.0f, 0.0f}, 1.0f}, circle).hit);  // inside
+    EXPECT_FALSE(
+        rayCast(RayCastInput{{-3.0f, 2.6f}, {10.0f, 0.0f}, 1.0f}, circle).hit); // passes by
+    EXPECT_FALSE(
+        rayCast(RayCastInput{{-3.0f, 2.3f}, {10.0f, 0.0f}, 0.35f}, circle).hit);        // too short
+    EXPECT_FALSE(rayCast(RayCastInput{{1.1f, 2.0f}, {10.0f, 0.0f}, 1.0f}, circle).hit); // inside
     EXPECT_FALSE(rayCast(RayCastInput{{-3.0f, 2.0f}, {-10.0f, 0.0f}, 1.0f}, circle).hit); // away
-    EXPECT_FALSE(rayCast(RayCastInput{{-3.0f, 2.0f}, {0.0f, 0.0f}, 1.0f}, circle).hit);   // no length
+    EXPECT_FALSE(rayCast(RayCastInput{{-3.0f, 2.0f}, {0.0f, 0.0f}, 1.0f}, circle).hit); // no length
 }
 
 TEST(RayCast, BoxKnownFaces) {
@@ -46,10 +48,10 @@ TEST(RayCast, BoxKnownFaces) {
 
 TEST(RayCast, BoxMissStartInsideAndBackFace) {
     Polygon box = makeBox(1.0f, 0.5f);
-    EXPECT_FALSE(rayCast(RayCastInput{{-3.0f, 0.6f}, {6.0f, 0.0f}, 1.0f}, box).hit);  // above it
-    EXPECT_FALSE(rayCast(RayCastInput{{0.0f, 0.0f}, {3.0f, 0.0f}, 1.0f}, box).hit);   // inside
-    EXPECT_FALSE(rayCast(RayCastInput{{2.0f, 0.0f}, {3.0f, 0.0f}, 1.0f}, box).hit);   // moving away
-    EXPECT_FALSE(rayCast(RayCastInput{{-3.0f, 0.0f}, {4.0f, 0.0f}, 0.4f}, box).hit);  // too short
+    EXPECT_FALSE(rayCast(RayCastInput{{-3.0f, 0.6f}, {6.0f, 0.0f}, 1.0f}, box).hit); // above it
+    EXPECT_FALSE(rayCast(RayCastInput{{0.0f, 0.0f}, {3.0f, 0.0f}, 1.0f}, box).hit);  // inside
+    EXPECT_FALSE(rayCast(RayCastInput{{2.0f, 0.0f}, {3.0f, 0.0f}, 1.0f}, box).hit);  // moving away
+    EXPECT_FALSE(rayCast(RayCastInput{{-3.0f, 0.0f}, {4.0f, 0.0f}, 0.4f}, box).hit); // too short
 }
 
 TEST(RayCast, RotatedBoxHitsItsCorner) {

@@ -21,11 +21,15 @@ TEST(ReadmeExample, TheBallBouncesWhenAndWhereTheReadmeSays) {
         BodyId ground = world.createBody({}); // static unless told otherwise
         world.createShape(ground, {}, makeBox(20.0f, 0.5f));
         BodyId ball = world.createBody({.type = BodyType::Dynamic, .position = {0.0f, 4.0f}});
-        ShapeId ballShape = world.createShape(ball, {.restitution = 0.5f}, Circle{{0.0f, 0.0f}, 0.25f});
+        ShapeId ballShape =
+            world.createShape(ball, {.restitution = 0.5f}, Circle{{0.0f, 0.0f}, 0.25f});
         BodyId lamp = world.createBody({.type = BodyType::Dynamic, .position = {3.0f, 3.0f}});
         world.createShape(lamp, {}, Circle{{0.0f, 0.0f}, 0.2f});
-        JointId cord = world.createJoint(RevoluteJointDef{ // a hinge 1 m above the lamp
-            .bodyA = ground, .bodyB = lamp, .localAnchorA = {3.0f, 4.0f}, .localAnchorB = {0.0f, 1.0f}});
+        JointId cord = world.createJoint(RevoluteJointDef{// a hinge 1 m above the lamp
+                                                          .bodyA = ground,
+                                                          .bodyB = lamp,
+                                                          .localAnchorA = {3.0f, 4.0f},
+                                                          .localAnchorB = {0.0f, 1.0f}});
         for (int frame = 0; frame < 120; ++frame) {
             world.step(1.0f / 60.0f); // a fixed step, at most kMaxTimeStep (0.25 s)
             for (const ContactBeginTouchEvent& e : world.contactBeginEvents()) {
@@ -34,7 +38,7 @@ TEST(ReadmeExample, TheBallBouncesWhenAndWhereTheReadmeSays) {
                 }
             }
         }
-        finalY = world.transform(ball).p.y; // printf("ball at y = %.2f m\n", ...)
+        finalY = world.transform(ball).p.y;           // printf("ball at y = %.2f m\n", ...)
         cordForce = world.jointReactionForce(cord).y; // printf("the cord holds %.2f N\n", ...)
         lampY = world.transform(lamp).p.y;
     }

@@ -19,7 +19,6 @@ ShapeProxy boxProxy(float hx, float hy, float radius = 0.0f) {
     return makeProxy(points, radius);
 }
 
-
 ShapeCastPairInput castInput(const ShapeProxy& a, const Transform& xfA, const ShapeProxy& b,
                              const Transform& xfB, Vec2 translation) {
     ShapeCastPairInput input;

@@ -20,17 +20,18 @@ void expectAabb(const Aabb& box, float lx, float ly, float ux, float uy) {
 TEST(Aabb, RotatedBox) {
     // A 2 x 2 box turned 45 degrees reaches sqrt(2) along both axes.
     const float s = std::sqrt(2.0f);
-    expectAabb(computeAabb(makeBox(1.0f, 1.0f), makeTransform(1.0f, 2.0f, 0.25f * kPi)), 1 - s, 2 - s,
-               1 + s, 2 + s);
+    expectAabb(computeAabb(makeBox(1.0f, 1.0f), makeTransform(1.0f, 2.0f, 0.25f * kPi)), 1 - s,
+               2 - s, 1 + s, 2 + s);
     // A 4 x 1 box turned a quarter turn is 1 wide and 4 tall.
-    expectAabb(computeAabb(makeBox(2.0f, 0.5f), makeTransform(0.0f, 0.0f, 0.5f * kPi)), -0.5f, -2.0f,
-               0.5f, 2.0f);
+    expectAabb(computeAabb(makeBox(2.0f, 0.5f), makeTransform(0.0f, 0.0f, 0.5f * kPi)), -0.5f,
+               -2.0f, 0.5f, 2.0f);
 }
 
 TEST(Aabb, RoundedBoxAddsTheRadius) {
     const float s = std::sqrt(2.0f);
-    expectAabb(computeAabb(makeRoundedBox(1.0f, 1.0f, 0.25f), makeTransform(0.0f, 0.0f, 0.25f * kPi)),
-               -s - 0.25f, -s - 0.25f, s + 0.25f, s + 0.25f);
+    expectAabb(
+        computeAabb(makeRoundedBox(1.0f, 1.0f, 0.25f), makeTransform(0.0f, 0.0f, 0.25f * kPi)),
+        -s - 0.25f, -s - 0.25f, s + 0.25f, s + 0.25f);
 }
 
 TEST(Aabb, CircleWithOffsetCentreFollowsTheRotation) {
@@ -41,11 +42,12 @@ TEST(Aabb, CircleWithOffsetCentreFollowsTheRotation) {
 
 TEST(Aabb, RotatedCapsuleAndSegment) {
     Capsule capsule{{-1.0f, 0.0f}, {1.0f, 0.0f}, 0.5f};
-    expectAabb(computeAabb(capsule, makeTransform(0.0f, 0.0f, 0.5f * kPi)), -0.5f, -1.5f, 0.5f, 1.5f);
+    expectAabb(computeAabb(capsule, makeTransform(0.0f, 0.0f, 0.5f * kPi)), -0.5f, -1.5f, 0.5f,
+               1.5f);
     Segment segment{{0.0f, 0.0f}, {2.0f, 0.0f}};
     const float h = std::sqrt(2.0f);
-    expectAabb(computeAabb(ShapeGeometry{segment}, makeTransform(1.0f, 1.0f, 0.75f * kPi)), 1 - h, 1,
-               1, 1 + h);
+    expectAabb(computeAabb(ShapeGeometry{segment}, makeTransform(1.0f, 1.0f, 0.75f * kPi)), 1 - h,
+               1, 1, 1 + h);
 }
 
 TEST(TestPoint, Circle) {

@@ -272,7 +272,8 @@ void expectPackedDiscsStayBelowThePushCap(float rollingResistance) {
         for (int column = 0; column < 15; ++column) {
             BodyDef bd;
             bd.type = BodyType::Dynamic;
-            bd.position = {-3.64f + 0.52f * static_cast<float>(column), 0.3f + 0.52f * static_cast<float>(row)};
+            bd.position = {-3.64f + 0.52f * static_cast<float>(column),
+                           0.3f + 0.52f * static_cast<float>(row)};
             BodyId disc = world.createBody(bd);
             ShapeDef sd;
             sd.rollingResistance = rollingResistance;
@@ -296,7 +297,9 @@ void expectPackedDiscsStayBelowThePushCap(float rollingResistance) {
     EXPECT_EQ(world.stepCounters().relaxIterations, 1);
 }
 
-TEST(SolverAccuracy, PackedDiscsArePushedApartBelowTheCap) { expectPackedDiscsStayBelowThePushCap(0.0f); }
+TEST(SolverAccuracy, PackedDiscsArePushedApartBelowTheCap) {
+    expectPackedDiscsStayBelowThePushCap(0.0f);
+}
 
 TEST(SolverAccuracy, PackedDiscsArePushedApartBelowTheCapScalar) {
     expectPackedDiscsStayBelowThePushCap(0.01f);
@@ -565,9 +568,7 @@ TEST(SolverAccuracy, ElasticCollisionConservesMomentumAndEnergy) {
     world.createShape(b, sd, Circle{{0.0f, 0.0f}, 0.5f});
     float ma = world.massData(a).mass;
     float mb = world.massData(b).mass;
-    auto momentum = [&] {
-        return ma * world.linearVelocity(a) + mb * world.linearVelocity(b);
-    };
+    auto momentum = [&] { return ma * world.linearVelocity(a) + mb * world.linearVelocity(b); };
     auto energy = [&] {
         return 0.5f * ma * dot(world.linearVelocity(a), world.linearVelocity(a)) +
                0.5f * mb * dot(world.linearVelocity(b), world.linearVelocity(b)) +

@@ -60,8 +60,8 @@ TEST(ShapeCastProperty, HitsAtContactAndNotBefore) {
         input.transformB = {{rng.uniform(-5, 5), rng.uniform(-5, 5)},
                             Rot::fromAngle(rng.uniform(-kPi, kPi))};
         // Aim roughly at A, with a random miss.
-        Vec2 aim = input.transformA.p - input.transformB.p +
-                   Vec2{rng.uniform(-2, 2), rng.uniform(-2, 2)};
+        Vec2 aim =
+            input.transformA.p - input.transformB.p + Vec2{rng.uniform(-2, 2), rng.uniform(-2, 2)};
         input.translationB = rng.uniform(0.5f, 2.0f) * aim;
         CastOutput out = shapeCast(input);
         ASSERT_TRUE(isFinite(out.point) && isFinite(out.normal));
@@ -123,7 +123,8 @@ TEST(TimeOfImpactProperty, ConservativeAndAtTarget) {
         if (out.state == TOIState::Overlapped) {
             continue;
         }
-        float target = std::fmax(kLinearSlop, input.proxyA.radius + input.proxyB.radius - kLinearSlop);
+        float target =
+            std::fmax(kLinearSlop, input.proxyA.radius + input.proxyB.radius - kLinearSlop);
         float tolerance = 0.25f * kLinearSlop;
         auto gapAt = [&](float t) {
             return coreDistance(input.proxyA, sweepTransform(input.sweepA, t), input.proxyB,

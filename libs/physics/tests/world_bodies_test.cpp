@@ -160,7 +160,8 @@ TEST(WorldBodies, APositionCorrectionAlongALockedAxisMovesTheBodyALittleOnly) {
         BodyId box = addUnitBox(world, {0.0f, 0.9f}, lockedY); // 10 cm into the floor
         for (int i = 0; i < 10; ++i) {
             world.step(kStep);
-            ASSERT_LT(std::fabs(world.worldCenterOfMass(box).x), 0.2f * 10.0f * static_cast<float>(i + 1))
+            ASSERT_LT(std::fabs(world.worldCenterOfMass(box).x),
+                      0.2f * 10.0f * static_cast<float>(i + 1))
                 << "step " << i << ", mode " << static_cast<int>(mode);
             ASSERT_EQ(world.worldCenterOfMass(box).y, 0.9f);
         }
@@ -293,7 +294,8 @@ TEST(WorldBodies, ProxyMovesCountShapesThatLeftTheirFatBoxes) {
         world.step(kStep);
         moves += world.stepCounters().proxyMoves;
         steps += world.stepCounters().proxyMoves > 0 ? 1 : 0;
-        ASSERT_LE(world.stepCounters().proxyMoves, 1) << "the box at rest moved its proxy, step " << i;
+        ASSERT_LE(world.stepCounters().proxyMoves, 1)
+            << "the box at rest moved its proxy, step " << i;
     }
     EXPECT_EQ(moves, steps);
     EXPECT_GE(moves, 5) << "a ball going 3 m in a second left its box only " << moves << " times";

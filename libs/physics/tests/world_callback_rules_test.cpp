@@ -37,8 +37,10 @@ struct Resting {
 
 std::string lockedMessage(const std::string& function, const char* hook, const char* by) {
     return "physics::World::" + function + "(): cannot run inside the " + hook + " callback of " +
-           by + "() (it would change what the callback is walking); collect the ids and call it "
-           "after " + by + "() returns";
+           by +
+           "() (it would change what the callback is walking); collect the ids and call it "
+           "after " +
+           by + "() returns";
 }
 
 TEST(WorldCallbackRules, ThePreSolveCallbackLocksTheWorld) {
@@ -49,12 +51,20 @@ TEST(WorldCallbackRules, ThePreSolveCallbackLocksTheWorld) {
     const std::vector<Call> calls = {
         {"createBody", [](Resting& r) { r.world.createBody({}); }},
         {"destroyBody", [](Resting& r) { r.world.destroyBody(r.spare); }},
-        {"createShape", [](Resting& r) { r.world.createShape(r.spare, {}, Circle{{0, 0}, 1}); }},
+        {"createShape",
+         [](Resting& r) {
+             r.world.createShape(r.spare, {}, Circle{{0, 0}, 1});
+         }},
         {"createChain",
-         [](Resting& r) { r.world.createChain(r.ground, {.points = {{1, 0}, {0, 0}}}); }},
+         [](Resting& r) {
+             r.world.createChain(r.ground, {.points = {{1, 0}, {0, 0}}});
+         }},
         {"destroyShape",
          [](Resting& r) { r.world.destroyShape(r.world.bodyShapes(r.spare).front()); }},
-        {"setTransform", [](Resting& r) { r.world.setTransform(r.spare, {60, 0}, 0); }},
+        {"setTransform",
+         [](Resting& r) {
+             r.world.setTransform(r.spare, {60, 0}, 0);
+         }},
         {"setBodyEnabled", [](Resting& r) { r.world.setBodyEnabled(r.spare, false); }},
         {"setBodyType", [](Resting& r) { r.world.setBodyType(r.spare, BodyType::Static); }},
         {"setShapeSensor",
@@ -131,7 +141,8 @@ TEST(WorldCallbackRules, ThePairFilterCallbackLocksTheWorldInUpdatePairsAndInSte
         });
         const std::string error =
             errorOf([&] { inStep ? r.world.step(kDt) : r.world.updatePairs(); });
-        EXPECT_EQ(error, lockedMessage("destroyBody", "pair filter", inStep ? "step" : "updatePairs"));
+        EXPECT_EQ(error,
+                  lockedMessage("destroyBody", "pair filter", inStep ? "step" : "updatePairs"));
         EXPECT_EQ(called, 1);
         EXPECT_TRUE(r.world.isValid(r.spare));
         // Outside the callback the world is unlocked again.
@@ -145,18 +156,20 @@ TEST(WorldCallbackRules, ThePairFilterCallbackLocksTheWorldInUpdatePairsAndInSte
 TEST(WorldCallbackRules, AQueryCallbackCannotCreateAChainOrChangeABodysType) {
     Resting r;
     const Aabb all{{-20.0f, -2.0f}, {60.0f, 2.0f}};
-    E2D_EXPECT_ERROR(r.world.overlapAabb(all, {},
-                                         [&](ShapeId) {
-                                             r.world.createChain(r.ground, {.points = {{1, 0}, {0, 0}}});
-                                             return true;
-                                         }),
-                     "physics::World::createChain(): cannot run inside the callback of overlapAabb()");
-    E2D_EXPECT_ERROR(r.world.overlapAabb(all, {},
-                                         [&](ShapeId) {
-                                             r.world.setBodyType(r.box, BodyType::Kinematic);
-                                             return true;
-                                         }),
-                     "physics::World::setBodyType(): cannot run inside the callback of overlapAabb()");
+    E2D_EXPECT_ERROR(
+        r.world.overlapAabb(all, {},
+                            [&](ShapeId) {
+                                r.world.createChain(r.ground, {.points = {{1, 0}, {0, 0}}});
+                                return true;
+                            }),
+        "physics::World::createChain(): cannot run inside the callback of overlapAabb()");
+    E2D_EXPECT_ERROR(
+        r.world.overlapAabb(all, {},
+                            [&](ShapeId) {
+                                r.world.setBodyType(r.box, BodyType::Kinematic);
+                                return true;
+                            }),
+        "physics::World::setBodyType(): cannot run inside the callback of overlapAabb()");
     EXPECT_EQ(r.world.shapeCount(), 3);
     EXPECT_EQ(r.world.bodyType(r.box), BodyType::Dynamic);
     // An explosion in a walk pushes (impulses are allowed).

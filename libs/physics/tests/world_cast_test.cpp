@@ -44,8 +44,7 @@ TEST(WorldCast, ClosestOfSeveralShapesAcrossTrees) {
     addStatic(world, {0.0f, 9.0f}, makeBox(3.0f, 0.5f), BodyType::Kinematic);
     // A unit box rising from the origin: its top (y = 1) meets the circle's bottom (y = 4)
     // after 3 of the 10 metres.
-    std::optional<RayResult> hit =
-        world.castShape(makeBox(1.0f, 1.0f), Transform{}, {0.0f, 10.0f});
+    std::optional<RayResult> hit = world.castShape(makeBox(1.0f, 1.0f), Transform{}, {0.0f, 10.0f});
     ASSERT_TRUE(hit.has_value());
     EXPECT_EQ(hit->shape, near);
     EXPECT_NEAR(hit->fraction, 0.3f, kTol);
@@ -58,7 +57,8 @@ TEST(WorldCast, MissesFiltersAndStartingOverlap) {
     filter.categoryBits = 0x2;
     ShapeDef def;
     def.filter = filter;
-    ShapeId ball = addStatic(world, {5.0f, 0.0f}, Circle{{0.0f, 0.0f}, 1.0f}, BodyType::Static, def);
+    ShapeId ball =
+        addStatic(world, {5.0f, 0.0f}, Circle{{0.0f, 0.0f}, 1.0f}, BodyType::Static, def);
     Circle probe{{0.0f, 0.0f}, 0.25f};
     // Passes above: centre at y = 1.3, lowest point at 1.05, 0.05 above the ball's top.
     EXPECT_FALSE(world.castShape(probe, Transform{{0.0f, 1.3f}, {}}, {10.0f, 0.0f}).has_value());
@@ -97,8 +97,8 @@ TEST(WorldCast, InputIsChecked) {
     World world;
     E2D_EXPECT_ERROR((void)world.castShape(Circle{{0.0f, 0.0f}, -1.0f}, Transform{}, {1.0f, 0.0f}),
                      "physics::World::castShape()");
-    E2D_EXPECT_ERROR((void)world.castShape(Circle{{0.0f, 0.0f}, 1.0f}, Transform{{0.0f, 0.0f}, {2.0f, 0.0f}},
-                                           {1.0f, 0.0f}),
+    E2D_EXPECT_ERROR((void)world.castShape(Circle{{0.0f, 0.0f}, 1.0f},
+                                           Transform{{0.0f, 0.0f}, {2.0f, 0.0f}}, {1.0f, 0.0f}),
                      "physics::World::castShape(): transform.q must be a unit rotation");
     E2D_EXPECT_ERROR((void)world.castShape(Circle{{0.0f, 0.0f}, 1.0f}, Transform{}, {0.0f, 0.0f}),
                      "physics::World::castShape(): translation must be finite and non-zero");

@@ -77,7 +77,8 @@ Slide slideAcross(FloorKind kind, const ShapeGeometry& body, float restHeight) {
     Slide slide;
     for (int i = 0; i < 480; ++i) {
         world.step(kDt);
-        slide.maxVerticalSpeed = std::max(slide.maxVerticalSpeed, std::abs(world.linearVelocity(box).y));
+        slide.maxVerticalSpeed =
+            std::max(slide.maxVerticalSpeed, std::abs(world.linearVelocity(box).y));
     }
     slide.distance = world.transform(box).p.x - x0;
     slide.finalSpeed = world.linearVelocity(box).x;
@@ -112,7 +113,6 @@ TEST(WorldChain, CapsuleAndRoundedBoxAlsoGlide) {
     EXPECT_LT(r.maxVerticalSpeed, 0.01f);
     EXPECT_NEAR(r.finalSpeed, 4.0f, 1e-3f);
 }
-
 
 BodyId dropBox(World& world, Vec2 position, Vec2 velocity = {0.0f, 0.0f}, float half = 0.5f) {
     BodyDef bd;
@@ -202,7 +202,8 @@ TEST(WorldChain, ChainSegmentsAreShapesThatQueriesAndDebugDataSee) {
     int touching = 0;
     world.forEachTouchingContact([&](const ContactData& c) {
         ++touching;
-        EXPECT_NEAR(c.manifold->normal.y * (world.shapeType(c.shapeA) == ShapeType::ChainSegment ? 1.0f : -1.0f),
+        EXPECT_NEAR(c.manifold->normal.y *
+                        (world.shapeType(c.shapeA) == ShapeType::ChainSegment ? 1.0f : -1.0f),
                     1.0f, 1e-4f);
     });
     EXPECT_GE(touching, 1);
@@ -364,8 +365,9 @@ TEST(WorldChain, BadDefsAreRejectedAndCreateNothing) {
     BodyId ground = world.createBody({});
     ChainDef def;
     def.points = {{0.0f, 0.0f}};
-    E2D_EXPECT_ERROR(world.createChain(ground, def),
-                     "physics::World::createChain(): def.points must hold at least 2 points, got 1");
+    E2D_EXPECT_ERROR(
+        world.createChain(ground, def),
+        "physics::World::createChain(): def.points must hold at least 2 points, got 1");
     def.points = {{0.0f, 0.0f}, {1.0f, 0.0f}};
     def.isLoop = true;
     E2D_EXPECT_ERROR(world.createChain(ground, def), "at least 3 points for a loop, got 2");
@@ -386,7 +388,8 @@ TEST(WorldChain, BadDefsAreRejectedAndCreateNothing) {
     def.isLoop = true;
     def.ghostAfter = Vec2{3.0f, 0.0f};
     E2D_EXPECT_ERROR(world.createChain(ground, def), "a loop has no ends");
-    E2D_EXPECT_ERROR(world.createChain(BodyId{}, ChainDef{}), "createChain(): stale or null BodyId");
+    E2D_EXPECT_ERROR(world.createChain(BodyId{}, ChainDef{}),
+                     "createChain(): stale or null BodyId");
     EXPECT_EQ(world.shapeCount(), 0);
 }
 

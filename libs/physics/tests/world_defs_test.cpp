@@ -165,7 +165,8 @@ TEST(WorldDefs, ShapeDefFieldsAreCheckedByName) {
     world.destroyShape(world.bodyShapes(body).front());
     def = {};
     def.rollingResistance = kInf;
-    E2D_EXPECT_ERROR(world.createShape(body, def, circle), "def.rollingResistance must be finite and >= 0, got inf");
+    E2D_EXPECT_ERROR(world.createShape(body, def, circle),
+                     "def.rollingResistance must be finite and >= 0, got inf");
     EXPECT_EQ(world.shapeCount(), 0);
     E2D_EXPECT_ERROR(world.createShape(BodyId{}, {}, circle),
                      "physics::World::createShape(): stale or null BodyId");
@@ -177,7 +178,9 @@ TEST(WorldDefs, BadGeometryLeavesTheWorldUnchanged) {
     ShapeId good = world.createShape(body, {}, Circle{{0.0f, 0.0f}, 1.0f});
     world.updatePairs();
 
-    std::string message = errorOf([&] { world.createShape(body, {}, Circle{{0.0f, 0.0f}, -1.0f}); });
+    std::string message = errorOf([&] {
+        world.createShape(body, {}, Circle{{0.0f, 0.0f}, -1.0f});
+    });
     EXPECT_PRED_FORMAT2(::testing::IsSubstring, "physics::World::createShape()", message);
     EXPECT_PRED_FORMAT2(::testing::IsSubstring, "radius", message);
     E2D_EXPECT_ERROR(world.createShape(body, {}, Capsule{{0.0f, 0.0f}, {kNan, 0.0f}, 0.5f}),
@@ -201,17 +204,22 @@ TEST(WorldDefs, BadInputToSettersChangesNothing) {
     ShapeId shape = world.createShape(body, {}, Circle{{0.0f, 0.0f}, 0.5f});
     Aabb before = world.shapeAabb(shape);
 
-    EXPECT_EQ(errorOf([&] { world.setTransform(body, {kNan, 0.0f}, 0.0f); }),
+    EXPECT_EQ(errorOf([&] {
+                  world.setTransform(body, {kNan, 0.0f}, 0.0f);
+              }),
               "physics::World::setTransform(): position must be finite with |x|, |y| <= kHuge "
               "(500000 m), got (nan, 0)");
-    EXPECT_EQ(errorOf([&] { world.setTransform(body, {0.0f, 0.0f}, kInf); }),
+    EXPECT_EQ(errorOf([&] {
+                  world.setTransform(body, {0.0f, 0.0f}, kInf);
+              }),
               "physics::World::setTransform(): angle must be finite, got inf");
     EXPECT_EQ(world.transform(body).p, Vec2(1.0f, 2.0f));
     EXPECT_EQ(world.shapeAabb(shape).lower, before.lower);
     EXPECT_EQ(world.overlapPoint({1.0f, 2.0f}), std::vector<ShapeId>{shape});
 
-    E2D_EXPECT_ERROR(world.setLinearVelocity(body, {kNan, kNan}),
-                     "physics::World::setLinearVelocity(): velocity must be finite, got (nan, nan)");
+    E2D_EXPECT_ERROR(
+        world.setLinearVelocity(body, {kNan, kNan}),
+        "physics::World::setLinearVelocity(): velocity must be finite, got (nan, nan)");
     E2D_EXPECT_ERROR(world.setAngularVelocity(body, kInf),
                      "physics::World::setAngularVelocity(): velocity must be finite, got inf");
     E2D_EXPECT_ERROR(world.setGravity({0.0f, kNan}),
@@ -223,8 +231,11 @@ TEST(WorldDefs, BadInputToSettersChangesNothing) {
 
 TEST(WorldDefs, QueryInputIsChecked) {
     World world;
-    EXPECT_EQ(errorOf([&] { (void)world.castRayClosest({0.0f, 0.0f}, {0.0f, 0.0f}); }),
-              "physics::World::castRayClosest(): translation must be finite and non-zero, got (0, 0)");
+    EXPECT_EQ(
+        errorOf([&] {
+            (void)world.castRayClosest({0.0f, 0.0f}, {0.0f, 0.0f});
+        }),
+        "physics::World::castRayClosest(): translation must be finite and non-zero, got (0, 0)");
     E2D_EXPECT_ERROR((void)world.castRayClosest({0.0f, 0.0f}, {3.0e38f, 0.0f}),
                      "physics::World::castRayClosest(): origin + translation must be within kHuge "
                      "(500000 m), got (3e+38, 0)");

@@ -43,10 +43,12 @@ void run(World& world, float seconds) {
 ShapeGeometry randomSolid(Random& rng) {
     switch (rng.below(3)) {
     case 0:
-        return Circle{{rng.uniform(-0.3f, 0.3f), rng.uniform(-0.3f, 0.3f)}, rng.uniform(0.1f, 0.8f)};
+        return Circle{{rng.uniform(-0.3f, 0.3f), rng.uniform(-0.3f, 0.3f)},
+                      rng.uniform(0.1f, 0.8f)};
     case 1:
         return Capsule{{rng.uniform(-0.8f, -0.1f), rng.uniform(-0.3f, 0.3f)},
-                       {rng.uniform(0.1f, 0.8f), rng.uniform(-0.3f, 0.3f)}, rng.uniform(0.05f, 0.4f)};
+                       {rng.uniform(0.1f, 0.8f), rng.uniform(-0.3f, 0.3f)},
+                       rng.uniform(0.05f, 0.4f)};
     default: {
         std::vector<Vec2> points;
         for (int k = 0; k < 6; ++k) {
@@ -134,8 +136,9 @@ TEST(WorldGameApi, OverlapShapeAgreesWithBruteForce) {
     withSensors.includeSensors = true;
     std::vector<ShapeId> s = world.overlapShape(Circle{{0.0f, 0.0f}, 0.1f}, {}, withSensors);
     EXPECT_NE(std::find(s.begin(), s.end(), sensor), s.end());
-    E2D_EXPECT_ERROR((void)world.overlapShape(Segment{{0.0f, 0.0f}, {1.0f, 0.0f}}, {}),
-                     "physics::World::overlapShape(): geometry must be a circle, capsule or polygon");
+    E2D_EXPECT_ERROR(
+        (void)world.overlapShape(Segment{{0.0f, 0.0f}, {1.0f, 0.0f}}, {}),
+        "physics::World::overlapShape(): geometry must be a circle, capsule or polygon");
     E2D_EXPECT_ERROR((void)world.overlapShape(Circle{{0.0f, 0.0f}, -1.0f}, {}),
                      "circle radius must be finite and in (0, kHuge (500000 m)], got -1");
 }
@@ -163,8 +166,9 @@ TEST(WorldGameApi, ExplosionFallsOffWithDistanceAndNothingBlocksIt) {
     EXPECT_EQ(world.explode(def), 3);
     for (int i = 0; i < 5; ++i) {
         const float closest = distances[i] - radius;
-        const float strength =
-            closest <= def.radius ? 1.0f : std::max(0.0f, 1.0f - (closest - def.radius) / def.falloff);
+        const float strength = closest <= def.radius
+                                   ? 1.0f
+                                   : std::max(0.0f, 1.0f - (closest - def.radius) / def.falloff);
         const float impulse = def.impulsePerLength * (2.0f * radius) * strength;
         const Vec2 p = world.transform(balls[i]).p;
         const Vec2 expected = (impulse / mass) * (p / length(p));
@@ -205,7 +209,8 @@ TEST(WorldGameApi, PointHelpers) {
     Vec2 vl = world.linearVelocityAtLocalPoint(body, {1.0f, 0.0f});
     EXPECT_NEAR(vl.x, vp.x, 1e-6f);
     EXPECT_NEAR(vl.y, vp.y, 1e-6f);
-    E2D_EXPECT_ERROR((void)world.worldPoint(BodyId{}, {0.0f, 0.0f}), "worldPoint(): stale or null BodyId");
+    E2D_EXPECT_ERROR((void)world.worldPoint(BodyId{}, {0.0f, 0.0f}),
+                     "worldPoint(): stale or null BodyId");
 }
 
 TEST(WorldGameApi, DensityGeometryAndMaterialSetters) {
@@ -226,7 +231,8 @@ TEST(WorldGameApi, DensityGeometryAndMaterialSetters) {
     EXPECT_NEAR(world.transform(box).p.y, 1.0f, 0.02f);
 
     // Friction 0 on the ground: mixed sqrt(0 * 0.6) = 0, the box keeps its speed.
-    ShapeId groundShape = world.bodyShapes(world.shapeBody(world.overlapPoint({0.0f, -0.25f}).front())).front();
+    ShapeId groundShape =
+        world.bodyShapes(world.shapeBody(world.overlapPoint({0.0f, -0.25f}).front())).front();
     world.setShapeFriction(groundShape, 0.0f);
     EXPECT_FLOAT_EQ(world.shapeFriction(groundShape), 0.0f);
     world.setLinearVelocity(box, {2.0f, 0.0f});
@@ -254,7 +260,8 @@ TEST(WorldGameApi, DensityGeometryAndMaterialSetters) {
 
     E2D_EXPECT_ERROR(world.setShapeDensity(shape, -1.0f),
                      "physics::World::setShapeDensity(): density must be finite and >= 0, got -1");
-    E2D_EXPECT_ERROR(world.setShapeFriction(shape, NAN), "setShapeFriction(): friction must be finite");
+    E2D_EXPECT_ERROR(world.setShapeFriction(shape, NAN),
+                     "setShapeFriction(): friction must be finite");
     E2D_EXPECT_ERROR(world.setShapeGeometry(shape, Circle{{0.0f, 0.0f}, 0.0f}),
                      "physics::World::setShapeGeometry(): circle radius must be finite and in "
                      "(0, kHuge (500000 m)], got 0");
@@ -317,8 +324,9 @@ TEST(WorldGameApi, BodyTypeChangesWakeAndSleepAsExpected) {
     world.setLinearVelocity(hanging, {0.0f, 1.0f});
     run(world, 1.0f);
     EXPECT_NEAR(world.transform(hanging).p.y, 1.5f, 0.02f);
-    E2D_EXPECT_ERROR(world.setBodyType(hanging, static_cast<BodyType>(7)),
-                     "physics::World::setBodyType(): type must be Static, Kinematic or Dynamic, got 7");
+    E2D_EXPECT_ERROR(
+        world.setBodyType(hanging, static_cast<BodyType>(7)),
+        "physics::World::setBodyType(): type must be Static, Kinematic or Dynamic, got 7");
 }
 
 TEST(WorldGameApi, HandleViewsForwardToTheWorld) {
@@ -348,7 +356,8 @@ TEST(WorldGameApi, HandleViewsForwardToTheWorld) {
     EXPECT_FALSE(ball.isValid());
     EXPECT_FALSE(skin.isValid());
     E2D_EXPECT_ERROR((void)ball.position(), "physics::World::transform(): stale or null BodyId");
-    E2D_EXPECT_ERROR(skin.setFriction(0.2f), "physics::World::setShapeFriction(): stale or null ShapeId");
+    E2D_EXPECT_ERROR(skin.setFriction(0.2f),
+                     "physics::World::setShapeFriction(): stale or null ShapeId");
 }
 
 } // namespace

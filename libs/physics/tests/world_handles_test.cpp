@@ -20,7 +20,9 @@ TEST(WorldHandles, NullIdsAreNullAndInvalid) {
     EXPECT_TRUE(ShapeId{}.isNull());
     EXPECT_FALSE(world.isValid(BodyId{}));
     EXPECT_FALSE(world.isValid(ShapeId{}));
-    EXPECT_EQ(errorOf([&] { world.setTransform(BodyId{}, {0.0f, 0.0f}, 0.0f); }),
+    EXPECT_EQ(errorOf([&] {
+                  world.setTransform(BodyId{}, {0.0f, 0.0f}, 0.0f);
+              }),
               "physics::World::setTransform(): stale or null BodyId (index1 0, generation 0, "
               "world 0)");
     E2D_EXPECT_ERROR((void)world.shapeAabb(ShapeId{}),
@@ -206,8 +208,10 @@ TEST(WorldHandles, AnIdFromAnotherWorldIsAnErrorNamingTheFunction) {
 
     std::string error = errorOf([&] { b.setTransform(bodyA, {0.0f, 0.0f}, 0.0f); });
     EXPECT_EQ(error, "physics::World::setTransform(): BodyId (index1 1, generation 1, world " +
-                         std::to_string(a.tag()) + ") belongs to another world (this world's "
-                         "tag is " + std::to_string(b.tag()) + ")");
+                         std::to_string(a.tag()) +
+                         ") belongs to another world (this world's "
+                         "tag is " +
+                         std::to_string(b.tag()) + ")");
     E2D_EXPECT_ERROR((void)b.shapeUserData(shapeA),
                      "physics::World::shapeUserData(): ShapeId (index1 1, generation 1, world");
     E2D_EXPECT_ERROR(b.destroyBody(bodyA), "physics::World::destroyBody(): BodyId");

@@ -81,7 +81,7 @@ Jump jumpThroughPlatform(bool oneWay) {
 TEST(WorldHooks, OneWayPlatformLetsABodyJumpUpThroughAndLandOnIt) {
     Jump oneWay = jumpThroughPlatform(true);
     EXPECT_GT(oneWay.preSolveCalls, 0);
-    EXPECT_GT(oneWay.highest, 6.5f); // went up through the platform (to about 7 m)
+    EXPECT_GT(oneWay.highest, 6.5f);         // went up through the platform (to about 7 m)
     EXPECT_NEAR(oneWay.finalY, 5.5f, 0.02f); // and landed on top of it
     EXPECT_NEAR(oneWay.finalVy, 0.0f, 0.01f);
     // Without the callback the platform's underside stops it: its top stays below y = 4.8.
@@ -297,9 +297,9 @@ TEST(WorldHooks, MoveEventsSkipDisabledBodiesAndMarkSleepersInTheSameStep) {
     std::vector<BodyId> bodies;
     for (int j = 0; j < 60; ++j) {
         bodies.push_back(makeBox(world, {3.0f * static_cast<float>(j), 0.0f}));
-        bodies.push_back(makeBox(world, {kHuge - (static_cast<float>(j) + 0.5f) * perStep,
-                                         2.0f * static_cast<float>(j)},
-                                 {400.0f, 0.0f}));
+        bodies.push_back(makeBox(
+            world, {kHuge - (static_cast<float>(j) + 0.5f) * perStep, 2.0f * static_cast<float>(j)},
+            {400.0f, 0.0f}));
     }
     bool sawBoth = false;
     for (int i = 0; i < 60; ++i) {

@@ -70,8 +70,8 @@ TEST(WorldOverlap, AabbAndPointQueriesMatchBruteForce) {
             // Move some bodies (any type: a teleported static body moves too), disable a few.
             for (test::BodyRecord& body : scene.bodies) {
                 if (random.below(3) == 0) {
-                    Vec2 p = body.position + Vec2(random.uniform(-3.0f, 3.0f),
-                                                  random.uniform(-3.0f, 3.0f));
+                    Vec2 p = body.position +
+                             Vec2(random.uniform(-3.0f, 3.0f), random.uniform(-3.0f, 3.0f));
                     scene.moveBody(body, p, random.uniform(-3.0f, 3.0f));
                 }
                 if (random.below(20) == 0) {
@@ -149,12 +149,14 @@ TEST(WorldOverlap, QueriesSeeShapesCreatedSinceTheLastStep) {
     // Every box contains its centre; a box query over columns 5..7 of rows 10..11 finds six.
     for (int j = 0; j < kSide; j += 7) {
         for (int i = 0; i < kSide; i += 3) {
-            EXPECT_EQ(world.overlapPoint({2.0f * static_cast<float>(i), 2.0f * static_cast<float>(j)}),
-                      std::vector<ShapeId>{at(i, j)});
+            EXPECT_EQ(
+                world.overlapPoint({2.0f * static_cast<float>(i), 2.0f * static_cast<float>(j)}),
+                std::vector<ShapeId>{at(i, j)});
         }
     }
     std::vector<ShapeId> expected{at(5, 10), at(6, 10), at(7, 10), at(5, 11), at(6, 11), at(7, 11)};
-    std::sort(expected.begin(), expected.end(), [](ShapeId a, ShapeId b) { return a.index1 < b.index1; });
+    std::sort(expected.begin(), expected.end(),
+              [](ShapeId a, ShapeId b) { return a.index1 < b.index1; });
     EXPECT_EQ(world.overlapAabb({{9.8f, 19.8f}, {14.2f, 22.2f}}), expected);
 
     // A few more after the tree exists, one moved and one destroyed before any query.
@@ -219,8 +221,13 @@ TEST(WorldOverlap, ChangingTheShapesInsideAnOverlapCallbackIsAnErrorAtThatCall) 
         {"destroyShape", [&](ShapeId s) { world.destroyShape(s); }},
         {"createBody", [&](ShapeId) { (void)world.createBody({}); }},
         {"createShape",
-         [&](ShapeId s) { world.createShape(world.shapeBody(s), {}, Circle{{}, 1.0f}); }},
-        {"setTransform", [&](ShapeId) { world.setTransform(spare, {60.0f, 0.0f}, 0.0f); }},
+         [&](ShapeId s) {
+             world.createShape(world.shapeBody(s), {}, Circle{{}, 1.0f});
+         }},
+        {"setTransform",
+         [&](ShapeId) {
+             world.setTransform(spare, {60.0f, 0.0f}, 0.0f);
+         }},
         {"setBodyEnabled", [&](ShapeId) { world.setBodyEnabled(spare, false); }},
         {"setShapeFilter", [&](ShapeId) { world.setShapeFilter(spareShape, {}); }},
         {"updatePairs", [&](ShapeId) { world.updatePairs(); }},
@@ -237,9 +244,11 @@ TEST(WorldOverlap, ChangingTheShapesInsideAnOverlapCallbackIsAnErrorAtThatCall) 
                 return true;
             });
         });
-        EXPECT_EQ(error, "physics::World::" + name + "(): cannot run inside the callback of "
-                         "overlapAabb() (it would change what the callback is walking); collect "
-                         "the ids and call it after overlapAabb() returns");
+        EXPECT_EQ(error,
+                  "physics::World::" + name +
+                      "(): cannot run inside the callback of "
+                      "overlapAabb() (it would change what the callback is walking); collect "
+                      "the ids and call it after overlapAabb() returns");
         EXPECT_EQ(visited, 1);
         EXPECT_EQ(world.bodyCount(), 11);
         EXPECT_EQ(world.shapeCount(), 11);
@@ -283,9 +292,10 @@ TEST(WorldOverlap, PairAndContactWalksLockTheWorldToo) {
     world.createShape(world.createBody({}), {}, makeOffsetBox(10.0f, 0.5f, {0.0f, -0.7f}, 0.0f));
     world.step(1.0f / 60.0f);
     ASSERT_GT(world.candidatePairCount(), 0);
-    E2D_EXPECT_ERROR(world.forEachCandidatePair([&](ShapeId, ShapeId) { world.destroyBody(balls[0]); }),
-                     "physics::World::destroyBody(): cannot run inside the callback of "
-                     "forEachCandidatePair()");
+    E2D_EXPECT_ERROR(
+        world.forEachCandidatePair([&](ShapeId, ShapeId) { world.destroyBody(balls[0]); }),
+        "physics::World::destroyBody(): cannot run inside the callback of "
+        "forEachCandidatePair()");
     int touching = 0;
     world.forEachTouchingContact([&](const ContactData&) { ++touching; });
     ASSERT_GT(touching, 0);

@@ -74,7 +74,8 @@ TEST(WorldPairs, CandidatePairsMatchBruteForceOverManyFrames) {
                     << "seed " << seed << " frame " << frame;
             }
             PairSet expected = bruteForcePairs(scene);
-            ASSERT_EQ(candidatePairs(scene.world), expected) << "seed " << seed << " frame " << frame;
+            ASSERT_EQ(candidatePairs(scene.world), expected)
+                << "seed " << seed << " frame " << frame;
             totalPairs += expected.size();
 
             for (test::BodyRecord& body : scene.bodies) {
@@ -82,7 +83,8 @@ TEST(WorldPairs, CandidatePairsMatchBruteForceOverManyFrames) {
                 int roll = random.below(10);
                 if (body.type != BodyType::Static && roll < 6) {
                     Vec2 step{random.uniform(-0.3f, 0.3f), random.uniform(-0.3f, 0.3f)};
-                    scene.moveBody(body, body.position + step, body.angle + random.uniform(-0.2f, 0.2f));
+                    scene.moveBody(body, body.position + step,
+                                   body.angle + random.uniform(-0.2f, 0.2f));
                 } else if (roll == 9 && random.below(4) == 0) {
                     Vec2 p{random.uniform(-10.0f, 10.0f), random.uniform(-10.0f, 10.0f)};
                     scene.moveBody(body, p, body.angle);
@@ -94,16 +96,19 @@ TEST(WorldPairs, CandidatePairsMatchBruteForceOverManyFrames) {
             }
             // Churn: destroy and create bodies and shapes, change filters.
             if (!scene.bodies.empty() && random.below(2) == 0) {
-                scene.destroyBody(static_cast<std::size_t>(random.below(static_cast<int>(scene.bodies.size()))));
+                scene.destroyBody(
+                    static_cast<std::size_t>(random.below(static_cast<int>(scene.bodies.size()))));
             }
             if (!scene.shapes.empty() && random.below(2) == 0) {
-                scene.destroyShape(static_cast<std::size_t>(random.below(static_cast<int>(scene.shapes.size()))));
+                scene.destroyShape(
+                    static_cast<std::size_t>(random.below(static_cast<int>(scene.shapes.size()))));
             }
             if (random.below(2) == 0) {
                 scene.addBody();
             }
             if (!scene.shapes.empty()) {
-                ShapeRecord& s = scene.shapes[static_cast<std::size_t>(random.below(static_cast<int>(scene.shapes.size())))];
+                ShapeRecord& s = scene.shapes[static_cast<std::size_t>(
+                    random.below(static_cast<int>(scene.shapes.size())))];
                 s.filter.categoryBits = s.filter.categoryBits == 0x1 ? 0x2 : 0x1;
                 s.filter.group = 0;
                 scene.world.setShapeFilter(s.id, s.filter);
@@ -243,7 +248,8 @@ TEST(WorldPairs, SameOperationsGiveTheSamePairsInTheSameOrder) {
         for (test::RandomScene* scene : {&first, &second}) {
             scene->world.updatePairs();
             for (test::BodyRecord& body : scene->bodies) {
-                Vec2 step{scene->random().uniform(-0.5f, 0.5f), scene->random().uniform(-0.5f, 0.5f)};
+                Vec2 step{scene->random().uniform(-0.5f, 0.5f),
+                          scene->random().uniform(-0.5f, 0.5f)};
                 scene->moveBody(body, body.position + step, body.angle);
             }
         }

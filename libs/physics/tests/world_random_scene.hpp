@@ -86,7 +86,8 @@ public:
             return Capsule{offset, offset + Vec2(random_.uniform(-1.0f, 1.0f), 1.0f),
                            random_.uniform(0.1f, 0.5f)};
         case 2:
-            return Segment{offset, offset + Vec2(random_.uniform(0.2f, 2.0f), random_.uniform(-1.0f, 1.0f))};
+            return Segment{
+                offset, offset + Vec2(random_.uniform(0.2f, 2.0f), random_.uniform(-1.0f, 1.0f))};
         default:
             return makeOffsetBox(random_.uniform(0.1f, 1.0f), random_.uniform(0.1f, 1.0f), offset,
                                  random_.uniform(-3.0f, 3.0f));

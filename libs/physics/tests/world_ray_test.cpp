@@ -167,8 +167,8 @@ TEST_F(WorldRayScene, RayPassesDisabledBodiesAndMovedShapes) {
 TEST(WorldRay, RotatedBoxGivesTheSlantedFaceNormal) {
     World world;
     // A unit box turned 45 degrees: the diamond |x - 5| + |y| <= sqrt(2).
-    ShapeId box = addShape(world, BodyType::Kinematic, {5.0f, 0.0f}, 0.78539816f,
-                           makeBox(1.0f, 1.0f));
+    ShapeId box =
+        addShape(world, BodyType::Kinematic, {5.0f, 0.0f}, 0.78539816f, makeBox(1.0f, 1.0f));
     std::optional<RayResult> hit = world.castRayClosest({0.0f, 0.2f}, {10.0f, 0.0f});
     ASSERT_TRUE(hit.has_value());
     EXPECT_EQ(hit->shape, box);
@@ -183,8 +183,8 @@ TEST(WorldRay, SensorsAreSkippedUnlessAskedFor) {
     World world;
     ShapeDef sensor;
     sensor.isSensor = true;
-    ShapeId s = addShape(world, BodyType::Static, {2.0f, 0.0f}, 0.0f, Circle{{0.0f, 0.0f}, 0.5f},
-                         sensor);
+    ShapeId s =
+        addShape(world, BodyType::Static, {2.0f, 0.0f}, 0.0f, Circle{{0.0f, 0.0f}, 0.5f}, sensor);
     EXPECT_FALSE(world.castRayClosest({0.0f, 0.0f}, {4.0f, 0.0f}).has_value());
     EXPECT_TRUE(world.overlapPoint({2.0f, 0.0f}).empty());
     QueryFilter filter;
@@ -198,8 +198,8 @@ TEST(WorldRay, SensorsAreSkippedUnlessAskedFor) {
 
 TEST(WorldRay, SegmentIsHitOnceEvenWithBackFaces) {
     World world;
-    ShapeId wall = addShape(world, BodyType::Static, {0.0f, 0.0f}, 0.0f,
-                            Segment{{3.0f, -1.0f}, {3.0f, 1.0f}});
+    ShapeId wall =
+        addShape(world, BodyType::Static, {0.0f, 0.0f}, 0.0f, Segment{{3.0f, -1.0f}, {3.0f, 1.0f}});
     QueryFilter filter;
     filter.ignoreBackFaces = false;
     std::vector<RayResult> hits = world.castRayAll({0.0f, 0.5f}, {6.0f, 0.0f}, filter);

@@ -81,8 +81,9 @@ TEST(WorldSensorRule, AKinematicDetectorSeesStaticScenery) {
         World world{WorldDef{.gravity = {0.0f, 0.0f}}};
         BodyId rock = world.createBody({.position = {0.0f, 0.0f}});
         world.createShape(rock, {}, makeBox(1.0f, 1.0f));
-        BodyId detector = world.createBody(
-            {.type = BodyType::Kinematic, .position = {-4.0f, 0.0f}, .linearVelocity = {2.0f, 0.0f}});
+        BodyId detector = world.createBody({.type = BodyType::Kinematic,
+                                            .position = {-4.0f, 0.0f},
+                                            .linearVelocity = {2.0f, 0.0f}});
         ShapeDef sd;
         sd.isSensor = true;
         sd.sensorSeesNonDynamic = seesNonDynamic;
@@ -114,9 +115,8 @@ TEST(WorldSensorRule, TwoStaticBodiesNeverPairAndDynamicBodiesAreSeenEitherWay) 
         world.setBodyType(ball, BodyType::Static);
         world.step(kDt);
         int pairs = 0;
-        world.forEachCandidatePair([&](ShapeId a, ShapeId b) {
-            pairs += static_cast<int>(a == sensor || b == sensor);
-        });
+        world.forEachCandidatePair(
+            [&](ShapeId a, ShapeId b) { pairs += static_cast<int>(a == sensor || b == sensor); });
         EXPECT_EQ(pairs, 0);
     }
 }

@@ -43,7 +43,8 @@ struct Scene {
         world.createChain(ground, chain);
         bodies.push_back(ground);
         for (int i = 0; i < 4; ++i) {
-            bodies.push_back(addPlank(world, {-6.0f, 0.5f + 1.0f * static_cast<float>(i)}, 0.5f, 0.5f));
+            bodies.push_back(
+                addPlank(world, {-6.0f, 0.5f + 1.0f * static_cast<float>(i)}, 0.5f, 0.5f));
         }
         BodyId doomed = addDisc(world, {12.0f, 3.0f}, 0.3f);
         bodies.push_back(addDisc(world, {-3.0f, 0.5f}, 0.5f));
@@ -194,7 +195,8 @@ void expectRoundTrip(Scene& s, int before, int after) {
 
 TEST(WorldSnapshot, EveryJointKindStepsOnBitForBit) {
     for (SolverMode mode : {SolverMode::SoftStep, SolverMode::Classic}) {
-        for (JointSolver joints : {JointSolver::Soft, JointSolver::GaussSeidel, JointSolver::Direct}) {
+        for (JointSolver joints :
+             {JointSolver::Soft, JointSolver::GaussSeidel, JointSolver::Direct}) {
             SCOPED_TRACE(static_cast<int>(mode) * 10 + static_cast<int>(joints));
             WorldDef def;
             def.solver.mode = mode;
@@ -422,7 +424,8 @@ void resealSnapshot(Bytes& bytes) {
 }
 
 // `world` refuses `bytes` with a core::Error from restoreSnapshot() and keeps its state.
-void expectRefused(World& world, const Bytes& bytes, const Bytes& before, const std::string& needle) {
+void expectRefused(World& world, const Bytes& bytes, const Bytes& before,
+                   const std::string& needle) {
     const std::string message = errorOf([&] { world.restoreSnapshot(bytes); });
     EXPECT_NE(message.find("physics::World::restoreSnapshot(): "), std::string::npos) << message;
     EXPECT_NE(message.find(needle), std::string::npos) << message;

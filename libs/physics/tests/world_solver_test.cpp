@@ -272,7 +272,8 @@ TEST(WorldSolver, ClassicPositionBiasSetsHowFastAnOverlapIsPushedOut) {
         for (int i = 0; i < kSteps; ++i) {
             world.step(kStep);
         }
-        EXPECT_EQ(world.linearVelocity(ball), Vec2(0.0f, 0.0f)) << bias << ": moved by position only";
+        EXPECT_EQ(world.linearVelocity(ball), Vec2(0.0f, 0.0f))
+            << bias << ": moved by position only";
         return 0.5f - world.transform(ball).p.y;
     };
     const float fast = overlapAfter(0.2f, kLinearSlop);
@@ -404,26 +405,43 @@ TEST(WorldSolver, KeptWideScheduleMatchesANewOneEveryStep) {
     auto change = [](Scene& s, int step) {
         World& w = s.world;
         switch (step) {
-        case 30: w.setTransform(s.row[5], {-10.0f, 1.5f}, 0.0f); break; // onto row[0]
-        case 50: // rigid, scheduled so (the spare box's contact goes)
+        case 30:
+            w.setTransform(s.row[5], {-10.0f, 1.5f}, 0.0f);
+            break; // onto row[0]
+        case 50:   // rigid, scheduled so (the spare box's contact goes)
             w.setFixedRotation(s.chain[1], true);
             w.setPositionLocks(s.chain[1], true, true);
             w.setBodyEnabled(s.spare, false);
             break;
-        case 60: w.setBodyEnabled(s.spare, true); break;
+        case 60:
+            w.setBodyEnabled(s.spare, true);
+            break;
         case 70: // moving again, and pushed from both sides
             w.setFixedRotation(s.chain[1], false);
             w.setPositionLocks(s.chain[1], false, false);
             w.setLinearVelocity(s.chain[0], {1.0f, 0.0f});
             w.setLinearVelocity(s.chain[2], {-1.0f, 0.0f});
             break;
-        case 90: w.setAwake(s.row[1], false); break;
-        case 100: w.setAwake(s.row[1], true); break;
-        case 110: w.setBodyEnabled(s.row[2], false); break;
-        case 120: w.setBodyEnabled(s.row[2], true); break;
-        case 130: w.setBodyEnabled(s.ball, true); break;
-        case 140: w.setBodyEnabled(s.ball, false); break;
-        default: break;
+        case 90:
+            w.setAwake(s.row[1], false);
+            break;
+        case 100:
+            w.setAwake(s.row[1], true);
+            break;
+        case 110:
+            w.setBodyEnabled(s.row[2], false);
+            break;
+        case 120:
+            w.setBodyEnabled(s.row[2], true);
+            break;
+        case 130:
+            w.setBodyEnabled(s.ball, true);
+            break;
+        case 140:
+            w.setBodyEnabled(s.ball, false);
+            break;
+        default:
+            break;
         }
     };
     Scene kept;

@@ -45,13 +45,15 @@ TEST(WorldStep, BoxComesToRestOnTheGround) {
 TEST(WorldStep, RejectsBadInputAndChangesNothing) {
     World world;
     BodyId box = addBox(world, {0.0f, 2.0f}, 0.5f);
-    E2D_EXPECT_ERROR(world.step(-1.0f), "physics::World::step(): timeStep must be finite and >= 0, got -1");
+    E2D_EXPECT_ERROR(world.step(-1.0f),
+                     "physics::World::step(): timeStep must be finite and >= 0, got -1");
     E2D_EXPECT_ERROR(world.step(kNan), "physics::World::step(): timeStep must be finite");
     E2D_EXPECT_ERROR(world.applyForce(box, {kNan, 0.0f}, {0.0f, 0.0f}),
                      "physics::World::applyForce(): force must be finite, got (nan, 0)");
     E2D_EXPECT_ERROR(world.applyLinearImpulseToCenter(box, {0.0f, INFINITY}),
                      "physics::World::applyLinearImpulseToCenter(): impulse must be finite");
-    E2D_EXPECT_ERROR(world.applyTorque(box, kNan), "physics::World::applyTorque(): torque must be finite");
+    E2D_EXPECT_ERROR(world.applyTorque(box, kNan),
+                     "physics::World::applyTorque(): torque must be finite");
     E2D_EXPECT_ERROR(world.setLinearDamping(box, -1.0f),
                      "physics::World::setLinearDamping(): damping must be finite and >= 0, got -1");
     E2D_EXPECT_ERROR(world.setMassData(box, {0.0f, {0.0f, 0.0f}, 1.0f}),
@@ -62,15 +64,17 @@ TEST(WorldStep, RejectsBadInputAndChangesNothing) {
 
     WorldDef def;
     def.solver.subSteps = 0;
-    E2D_EXPECT_ERROR(World{def}, "physics::World::World(): def.solver.subSteps must be in [1, 64], got 0");
+    E2D_EXPECT_ERROR(World{def},
+                     "physics::World::World(): def.solver.subSteps must be in [1, 64], got 0");
     def = {};
     def.solver.contactHertz = -5.0f;
-    E2D_EXPECT_ERROR(World{def},
-                     "physics::World::World(): def.solver.contactHertz must be finite and > 0, got -5");
+    E2D_EXPECT_ERROR(
+        World{def},
+        "physics::World::World(): def.solver.contactHertz must be finite and > 0, got -5");
     def = {};
     def.solver.jointHertz = 0.0f;
-    E2D_EXPECT_ERROR(World{def},
-                     "physics::World::World(): def.solver.jointHertz must be finite and > 0, got 0");
+    E2D_EXPECT_ERROR(
+        World{def}, "physics::World::World(): def.solver.jointHertz must be finite and > 0, got 0");
     def = {};
     def.solver.jointDampingRatio = kNan;
     E2D_EXPECT_ERROR(World{def}, "def.solver.jointDampingRatio must be finite and >= 0");
@@ -79,8 +83,9 @@ TEST(WorldStep, RejectsBadInputAndChangesNothing) {
     E2D_EXPECT_ERROR(World{def}, "def.solver.timeToSleep must be finite and > 0");
     BodyDef bd;
     bd.linearDamping = -0.5f;
-    E2D_EXPECT_ERROR(world.createBody(bd),
-                     "physics::World::createBody(): def.linearDamping must be finite and >= 0, got -0.5");
+    E2D_EXPECT_ERROR(
+        world.createBody(bd),
+        "physics::World::createBody(): def.linearDamping must be finite and >= 0, got -0.5");
 }
 
 TEST(WorldStep, MassComesFromDensity) {
@@ -319,8 +324,10 @@ TEST(WorldStep, AbsurdSpinSetOnABodyDoesNotReachItsNeighbour) {
             }
             world.step(kStep);
             EXPECT_TRUE(world.isBodyEnabled(below)) << static_cast<int>(mode) << "/" << which;
-            EXPECT_TRUE(isFinite(world.transform(below).p)) << static_cast<int>(mode) << "/" << which;
-            EXPECT_TRUE(isFinite(world.linearVelocity(below))) << static_cast<int>(mode) << "/" << which;
+            EXPECT_TRUE(isFinite(world.transform(below).p))
+                << static_cast<int>(mode) << "/" << which;
+            EXPECT_TRUE(isFinite(world.linearVelocity(below)))
+                << static_cast<int>(mode) << "/" << which;
         }
     }
 }
@@ -385,25 +392,55 @@ TEST(WorldStep, PinnedSpeckInsideAHugeBodyStaysFinite) {
     // such scenes; each case failed within a few steps.
     struct Case {
         SolverMode mode;
-        Vec2 pin;         // the speck's body origin
-        Vec2 offset;      // its circle's centre, local
-        float spin;       // its angular velocity, rad/s
-        float depth;      // how deep it lies inside the huge circle, metres
-        float direction;  // from the speck to the huge circle's centre, radians
-        float speed;      // the huge body's speed towards the speck, m/s
-        float hugeSpin;   // the huge body's angular velocity, rad/s
+        Vec2 pin;        // the speck's body origin
+        Vec2 offset;     // its circle's centre, local
+        float spin;      // its angular velocity, rad/s
+        float depth;     // how deep it lies inside the huge circle, metres
+        float direction; // from the speck to the huge circle's centre, radians
+        float speed;     // the huge body's speed towards the speck, m/s
+        float hugeSpin;  // the huge body's angular velocity, rad/s
     };
     const Case cases[] = {
-        {SolverMode::SoftStep, {5.95277691f, -9.36087608f}, {0.00075999659f, 0.000869744457f},
-         65.0879211f, 362.536804f, 3.25049019f, 469.255219f, -22.9791737f},
-        {SolverMode::SoftStep, {-5.13361883f, -3.16447449f}, {-0.000310487521f, 0.000338362763f},
-         -138.414307f, 304.808533f, 1.68463409f, 334.679077f, 32.7662354f},
-        {SolverMode::SoftStep, {-4.03797436f, -2.90747738f}, {-0.000679377583f, 0.000582433422f},
-         -53.1849213f, 350.797729f, 5.60484076f, 92.1571274f, -37.1915855f},
-        {SolverMode::Classic, {4.47270775f, 0.862781525f}, {0.000245522358f, 0.000161634642f},
-         -11.8714752f, 270.34433f, 0.401989043f, 56.6076355f, -26.0926952f},
-        {SolverMode::Classic, {-5.16437483f, 4.7872057f}, {-0.000201998278f, 0.000188973383f},
-         -148.506439f, 239.620209f, 0.781189263f, 482.195984f, -31.4690876f},
+        {SolverMode::SoftStep,
+         {5.95277691f, -9.36087608f},
+         {0.00075999659f, 0.000869744457f},
+         65.0879211f,
+         362.536804f,
+         3.25049019f,
+         469.255219f,
+         -22.9791737f},
+        {SolverMode::SoftStep,
+         {-5.13361883f, -3.16447449f},
+         {-0.000310487521f, 0.000338362763f},
+         -138.414307f,
+         304.808533f,
+         1.68463409f,
+         334.679077f,
+         32.7662354f},
+        {SolverMode::SoftStep,
+         {-4.03797436f, -2.90747738f},
+         {-0.000679377583f, 0.000582433422f},
+         -53.1849213f,
+         350.797729f,
+         5.60484076f,
+         92.1571274f,
+         -37.1915855f},
+        {SolverMode::Classic,
+         {4.47270775f, 0.862781525f},
+         {0.000245522358f, 0.000161634642f},
+         -11.8714752f,
+         270.34433f,
+         0.401989043f,
+         56.6076355f,
+         -26.0926952f},
+        {SolverMode::Classic,
+         {-5.16437483f, 4.7872057f},
+         {-0.000201998278f, 0.000188973383f},
+         -148.506439f,
+         239.620209f,
+         0.781189263f,
+         482.195984f,
+         -31.4690876f},
     };
     for (std::size_t k = 0; k < std::size(cases); ++k) {
         const Case& c = cases[k];
@@ -652,9 +689,7 @@ std::uint64_t runPile() {
     return transformsHash(world, bodies);
 }
 
-TEST(WorldStep, DeterministicAcrossRuns) {
-    EXPECT_EQ(runPile(), runPile());
-}
+TEST(WorldStep, DeterministicAcrossRuns) { EXPECT_EQ(runPile(), runPile()); }
 
 TEST(WorldStep, BulletDoesNotTunnelThroughAThinWall) {
     World world{WorldDef{.gravity = {0.0f, 0.0f}}};

@@ -26,8 +26,8 @@ std::string errorOf(F&& f) {
     return "no error";
 }
 
-#define E2D_EXPECT_ERROR(statement, needle)                                                       \
-    EXPECT_PRED_FORMAT2(::testing::IsSubstring, needle,                                           \
+#define E2D_EXPECT_ERROR(statement, needle)                                                        \
+    EXPECT_PRED_FORMAT2(::testing::IsSubstring, needle,                                            \
                         ::e2d::physics::test::errorOf([&] { statement; }))
 
 /// Uniform floats from a fixed-seed engine, mapped by hand so that results do not depend on

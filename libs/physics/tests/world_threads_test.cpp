@@ -67,7 +67,8 @@ void buildMixed(Scene& s) {
         const float x0 = -15.0f + 6.0f * static_cast<float>(pile);
         for (int row = 0; row < 5; ++row) {
             for (int col = 0; col < 5 - row; ++col) {
-                const Vec2 p{x0 + 1.05f * static_cast<float>(col) + 0.525f * static_cast<float>(row),
+                const Vec2 p{x0 + 1.05f * static_cast<float>(col) +
+                                 0.525f * static_cast<float>(row),
                              0.5f + 1.0f * static_cast<float>(row)};
                 s.bodies.push_back(addBox(w, p, 0.5f));
             }
@@ -159,7 +160,8 @@ void buildPyramid(Scene& s) {
     constexpr int kBase = 40;
     for (int row = 0; row < kBase; ++row) {
         for (int col = 0; col < kBase - row; ++col) {
-            const Vec2 p{1.0f * static_cast<float>(col) + 0.5f * static_cast<float>(row) - 0.5f * kBase,
+            const Vec2 p{1.0f * static_cast<float>(col) + 0.5f * static_cast<float>(row) -
+                             0.5f * kBase,
                          0.5f + 1.0f * static_cast<float>(row)};
             s.bodies.push_back(addBox(s.world, p, 0.5f));
         }

@@ -19,13 +19,15 @@ const std::vector<AnimationFrame>& checkedFrames(const AnimatedSpriteRendererDef
         const Rect& r = def.frames[i].uv;
         if (!core::isFinite(r.min) || !core::isFinite(r.size) || r.min.x < 0.0f || r.min.y < 0.0f ||
             r.size.x < 0.0f || r.size.y < 0.0f || r.max().x > 1.0f || r.max().y > 1.0f) {
-            core::throwError(kCtor, "frames[" + std::to_string(i) + "].uv must lie in [0, 1], got min " +
-                                    core::formatVector(r.min) + " size " + core::formatVector(r.size));
+            core::throwError(kCtor,
+                             "frames[" + std::to_string(i) + "].uv must lie in [0, 1], got min " +
+                                 core::formatVector(r.min) + " size " + core::formatVector(r.size));
         }
         const glm::vec2 size = def.frames[i].size;
         if (!core::isFinite(size) || size.x < 0.0f || size.y < 0.0f) {
-            core::throwError(kCtor, "frames[" + std::to_string(i) + "].size must be >= 0 and finite, got " +
-                                    core::formatVector(size));
+            core::throwError(kCtor, "frames[" + std::to_string(i) +
+                                        "].size must be >= 0 and finite, got " +
+                                        core::formatVector(size));
         }
     }
     return def.frames;
@@ -57,8 +59,9 @@ SpriteRendererDef firstLook(const AnimatedSpriteRendererDef& def) {
 std::vector<AnimationFrame> animationUvs(const SpriteSheet& sheet, std::string_view baseName) {
     const std::vector<int> indices = sheet.animationFrames(baseName);
     if (indices.empty()) {
-        core::throwError("render::animationUvs()",
-                     "sheet '" + sheet.name() + "' has no frames named '" + std::string(baseName) + "<number>'");
+        core::throwError("render::animationUvs()", "sheet '" + sheet.name() +
+                                                       "' has no frames named '" +
+                                                       std::string(baseName) + "<number>'");
     }
     std::vector<AnimationFrame> frames;
     frames.reserve(indices.size());

@@ -19,7 +19,8 @@ constexpr double kBoundaryTolerance = 1.0e-9;
 
 void checkSpeed(const char* function, const char* field, double speed) {
     if (!std::isfinite(speed) || speed < 0.0) {
-        fail(function, std::string(field) + " must be finite and >= 0, got " + core::formatNumber(speed));
+        fail(function,
+             std::string(field) + " must be finite and >= 0, got " + core::formatNumber(speed));
     }
 }
 
@@ -30,11 +31,12 @@ Animation::Animation(const AnimationDef& def) : def_(def) {
         fail("::Animation()", "frameCount must be >= 1, got " + std::to_string(def.frameCount));
     }
     if (!std::isfinite(def.frameDuration) || def.frameDuration <= 0.0) {
-        fail("::Animation()", "frameDuration must be finite and > 0, got " + core::formatNumber(def.frameDuration));
+        fail("::Animation()",
+             "frameDuration must be finite and > 0, got " + core::formatNumber(def.frameDuration));
     }
     if (def.startFrame < 0 || def.startFrame >= def.frameCount) {
-        fail("::Animation()", "startFrame must be in [0, " + std::to_string(def.frameCount) + "), got " +
-                                  std::to_string(def.startFrame));
+        fail("::Animation()", "startFrame must be in [0, " + std::to_string(def.frameCount) +
+                                  "), got " + std::to_string(def.startFrame));
     }
     checkSpeed("::Animation()", "speed", def.speed);
     restart();
@@ -86,7 +88,8 @@ void Animation::advance(double steps) {
     advanced_ = static_cast<std::int64_t>(std::min(cap, static_cast<double>(advanced_) + steps));
     switch (def_.mode) {
     case AnimationMode::Loop:
-        frame_ = static_cast<int>((frame_ + static_cast<std::int64_t>(std::fmod(steps, static_cast<double>(n)))) % n);
+        frame_ = static_cast<int>(
+            (frame_ + static_cast<std::int64_t>(std::fmod(steps, static_cast<double>(n)))) % n);
         break;
     case AnimationMode::Once: {
         // The last frame is shown for its duration too: finished one step after reaching it.
@@ -105,7 +108,9 @@ void Animation::advance(double steps) {
             break;
         }
         const std::int64_t period = 2 * (n - 1);
-        phase_ = (phase_ + static_cast<std::int64_t>(std::fmod(steps, static_cast<double>(period)))) % period;
+        phase_ =
+            (phase_ + static_cast<std::int64_t>(std::fmod(steps, static_cast<double>(period)))) %
+            period;
         frame_ = static_cast<int>(phase_ < n ? phase_ : period - phase_);
         break;
     }

@@ -16,12 +16,13 @@ void validate(const char* function, const CameraDef& def) {
     core::requireFinite(function, "position", def.position);
     core::requireFinite(function, "rotation", def.rotation);
     if (!(def.zoom > 0.0f) || !std::isfinite(def.zoom)) {
-        core::throwError(function, "zoom must be > 0 and finite, got " + core::formatNumber(def.zoom));
+        core::throwError(function,
+                         "zoom must be > 0 and finite, got " + core::formatNumber(def.zoom));
     }
     if (!(def.referenceSize.x > 0.0f) || !(def.referenceSize.y > 0.0f) ||
         !core::isFinite(def.referenceSize)) {
         core::throwError(function, "referenceSize must be > 0 and finite, got " +
-                                   core::formatVector(def.referenceSize));
+                                       core::formatVector(def.referenceSize));
     }
 }
 
@@ -68,7 +69,7 @@ void Camera::setFit(ScreenFit fit) { def_.fit = fit; }
 void Camera::setScreenSize(glm::ivec2 pixels) {
     if (pixels.x < 1 || pixels.y < 1) {
         core::throwError("render::Camera::setScreenSize()",
-                     "size must be >= 1 in each axis, got " + core::formatVector(pixels));
+                         "size must be >= 1 in each axis, got " + core::formatVector(pixels));
     }
     screen_ = pixels;
 }

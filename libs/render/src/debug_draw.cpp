@@ -72,7 +72,8 @@ unsigned compile(GLenum type, const char* source, const char* what) {
         char log[2048] = {};
         glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
         glDeleteShader(shader);
-        throw core::Error(std::string("render::Renderer: debug drawing ") + what + " shader does not compile: " + log);
+        throw core::Error(std::string("render::Renderer: debug drawing ") + what +
+                          " shader does not compile: " + log);
     }
     return shader;
 }
@@ -98,7 +99,8 @@ unsigned link(const char* vertexSource, const char* what) {
         char log[2048] = {};
         glGetProgramInfoLog(program, sizeof(log), nullptr, log);
         glDeleteProgram(program);
-        throw core::Error(std::string("render::Renderer: debug drawing ") + what + " program does not link: " + log);
+        throw core::Error(std::string("render::Renderer: debug drawing ") + what +
+                          " program does not link: " + log);
     }
     return program;
 }
@@ -155,7 +157,8 @@ DebugDraw::DebugDraw() {
     glEnableVertexAttribArray(2);
     glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, lineStride, offset(offsetof(DebugLine, width)));
     glEnableVertexAttribArray(3);
-    glVertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, lineStride, offset(offsetof(DebugLine, color)));
+    glVertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, lineStride,
+                          offset(offsetof(DebugLine, color)));
     glEnableVertexAttribArray(4);
     glVertexAttribIPointer(4, 1, GL_UNSIGNED_INT, lineStride, offset(offsetof(DebugLine, space)));
     for (GLuint attribute = 1; attribute <= 4; ++attribute) {
@@ -166,11 +169,14 @@ DebugDraw::DebugDraw() {
     glBindBuffer(GL_ARRAY_BUFFER, triangleBuffer_);
     constexpr GLsizei vertexStride = sizeof(DebugVertex);
     glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, vertexStride, offset(offsetof(DebugVertex, position)));
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, vertexStride,
+                          offset(offsetof(DebugVertex, position)));
     glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, vertexStride, offset(offsetof(DebugVertex, color)));
+    glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, vertexStride,
+                          offset(offsetof(DebugVertex, color)));
     glEnableVertexAttribArray(2);
-    glVertexAttribIPointer(2, 1, GL_UNSIGNED_INT, vertexStride, offset(offsetof(DebugVertex, space)));
+    glVertexAttribIPointer(2, 1, GL_UNSIGNED_INT, vertexStride,
+                           offset(offsetof(DebugVertex, space)));
     glBindVertexArray(0);
 }
 
@@ -218,7 +224,8 @@ int DebugDraw::draw(const Drawer& drawer, const glm::mat4& worldToClip, glm::ive
     // Lines after fills, so outlines stay visible on filled shapes.
     const auto lines = drawer.lines();
     if (!lines.empty()) {
-        upload(lineBuffer_, lineCapacity_, lines.data(), static_cast<long long>(lines.size_bytes()));
+        upload(lineBuffer_, lineCapacity_, lines.data(),
+               static_cast<long long>(lines.size_bytes()));
         glUseProgram(lineProgram_);
         glUniformMatrix4fv(lineWorld_, 1, GL_FALSE, glm::value_ptr(worldToClip));
         glUniformMatrix4fv(lineScreen_, 1, GL_FALSE, glm::value_ptr(screenToClip));

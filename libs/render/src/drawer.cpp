@@ -10,7 +10,9 @@ namespace {
 
 bool finite(glm::vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 
-float cross(glm::vec2 o, glm::vec2 a, glm::vec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+float cross(glm::vec2 o, glm::vec2 a, glm::vec2 b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
 
 int segmentsFor(float radius, int requested) {
     if (requested >= 3) {
@@ -33,7 +35,8 @@ std::uint32_t packColor(glm::vec4 color) noexcept {
         const float c = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
         return static_cast<std::uint32_t>(std::lround(c * 255.0f));
     };
-    return channel(color.r) | (channel(color.g) << 8) | (channel(color.b) << 16) | (channel(color.a) << 24);
+    return channel(color.r) | (channel(color.g) << 8) | (channel(color.b) << 16) |
+           (channel(color.a) << 24);
 }
 
 void Drawer::line(glm::vec2 a, glm::vec2 b, glm::vec4 color, float width, DrawSpace space) {
@@ -57,22 +60,26 @@ void Drawer::fillRect(glm::vec2 min, glm::vec2 max, glm::vec4 color, DrawSpace s
     triangle(min, max, {min.x, max.y}, c, space);
 }
 
-void Drawer::circle(glm::vec2 center, float radius, glm::vec4 color, float width, DrawSpace space, int segments) {
-    if (!finite(center) || !std::isfinite(radius) || radius < 0.0f || !std::isfinite(width) || width <= 0.0f) {
+void Drawer::circle(glm::vec2 center, float radius, glm::vec4 color, float width, DrawSpace space,
+                    int segments) {
+    if (!finite(center) || !std::isfinite(radius) || radius < 0.0f || !std::isfinite(width) ||
+        width <= 0.0f) {
         return;
     }
     const int n = segmentsFor(radius, segments);
     const std::uint32_t c = packColor(color);
     glm::vec2 previous = center + glm::vec2(radius, 0.0f);
     for (int i = 1; i <= n; ++i) {
-        const float angle = 2.0f * std::numbers::pi_v<float> * static_cast<float>(i) / static_cast<float>(n);
+        const float angle =
+            2.0f * std::numbers::pi_v<float> * static_cast<float>(i) / static_cast<float>(n);
         const glm::vec2 next = center + radius * glm::vec2(std::cos(angle), std::sin(angle));
         lines_.push_back({previous, next, width, c, space});
         previous = next;
     }
 }
 
-void Drawer::fillCircle(glm::vec2 center, float radius, glm::vec4 color, DrawSpace space, int segments) {
+void Drawer::fillCircle(glm::vec2 center, float radius, glm::vec4 color, DrawSpace space,
+                        int segments) {
     if (!finite(center) || !std::isfinite(radius) || radius < 0.0f) {
         return;
     }
@@ -80,14 +87,16 @@ void Drawer::fillCircle(glm::vec2 center, float radius, glm::vec4 color, DrawSpa
     const std::uint32_t c = packColor(color);
     glm::vec2 previous = center + glm::vec2(radius, 0.0f);
     for (int i = 1; i <= n; ++i) {
-        const float angle = 2.0f * std::numbers::pi_v<float> * static_cast<float>(i) / static_cast<float>(n);
+        const float angle =
+            2.0f * std::numbers::pi_v<float> * static_cast<float>(i) / static_cast<float>(n);
         const glm::vec2 next = center + radius * glm::vec2(std::cos(angle), std::sin(angle));
         triangle(center, previous, next, c, space);
         previous = next;
     }
 }
 
-void Drawer::polygon(std::span<const glm::vec2> points, glm::vec4 color, float width, DrawSpace space) {
+void Drawer::polygon(std::span<const glm::vec2> points, glm::vec4 color, float width,
+                     DrawSpace space) {
     if (points.size() < 2 || !std::isfinite(width) || width <= 0.0f ||
         !std::all_of(points.begin(), points.end(), finite)) {
         return;

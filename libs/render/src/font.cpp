@@ -33,7 +33,9 @@ struct FreetypeErrorText {
 #undef FTERRORS_H_
 #define FT_ERROR_START_LIST constexpr FreetypeErrorText kFreetypeErrors[] = {
 #define FT_ERRORDEF(e, v, s) {v, s},
-#define FT_ERROR_END_LIST };
+#define FT_ERROR_END_LIST                                                                          \
+    }                                                                                              \
+    ;
 #include FT_ERRORS_H
 // clang-format on
 
@@ -58,8 +60,8 @@ std::string codePointName(char32_t codePoint) {
 constexpr int kMaxGlyphReports = 8;
 
 [[noreturn]] void badField(const char* field, int value, const char* range) {
-    throw core::Error(std::string("render::Font::Font(): ") + field + " must be in " + range + ", got " +
-                      std::to_string(value));
+    throw core::Error(std::string("render::Font::Font(): ") + field + " must be in " + range +
+                      ", got " + std::to_string(value));
 }
 
 } // namespace
@@ -135,7 +137,8 @@ struct Font::Impl {
     // apart: a full atlas is a limit of the def, the others are the font's).
     std::string rasterise(unsigned index, Glyph& out, bool& atlasFull) {
         atlasFull = false;
-        if (const FT_Error e = FT_Load_Glyph(face, index, FT_LOAD_RENDER | FT_LOAD_TARGET_NORMAL); e != 0) {
+        if (const FT_Error e = FT_Load_Glyph(face, index, FT_LOAD_RENDER | FT_LOAD_TARGET_NORMAL);
+            e != 0) {
             return freetypeReason(e);
         }
         const FT_GlyphSlot slot = face->glyph;
@@ -160,13 +163,17 @@ struct Font::Impl {
             return "glyph atlas full at " + std::to_string(size.x) + "x" + std::to_string(size.y);
         }
         for (int row = 0; row < h; ++row) {
-            const unsigned char* source = bitmap.buffer + static_cast<std::ptrdiff_t>(row) * bitmap.pitch;
-            std::uint8_t* target = pixels.data() + (static_cast<std::size_t>(y + row) * static_cast<std::size_t>(size.x) +
-                                                    static_cast<std::size_t>(x)) * 4u;
+            const unsigned char* source =
+                bitmap.buffer + static_cast<std::ptrdiff_t>(row) * bitmap.pitch;
+            std::uint8_t* target = pixels.data() + (static_cast<std::size_t>(y + row) *
+                                                        static_cast<std::size_t>(size.x) +
+                                                    static_cast<std::size_t>(x)) *
+                                                       4u;
             for (int col = 0; col < w; ++col) {
-                const std::uint8_t coverage = bitmap.pixel_mode == FT_PIXEL_MODE_GRAY
-                                                  ? source[col]
-                                                  : (((source[col / 8] >> (7 - col % 8)) & 1u) != 0 ? 255 : 0);
+                const std::uint8_t coverage =
+                    bitmap.pixel_mode == FT_PIXEL_MODE_GRAY
+                        ? source[col]
+                        : (((source[col / 8] >> (7 - col % 8)) & 1u) != 0 ? 255 : 0);
                 target[col * 4 + 0] = 255;
                 target[col * 4 + 1] = 255;
                 target[col * 4 + 2] = 255;
@@ -184,7 +191,8 @@ struct Font::Impl {
     std::string inkless() const {
         std::string firstError;
         bool mapsAny = false;
-        for (const auto& [first, last] : {std::pair{U'A', U'Z'}, std::pair{U'a', U'z'}, std::pair{U'0', U'9'}}) {
+        for (const auto& [first, last] :
+             {std::pair{U'A', U'Z'}, std::pair{U'a', U'z'}, std::pair{U'0', U'9'}}) {
             for (char32_t c = first; c <= last; ++c) {
                 const FT_UInt index = FT_Get_Char_Index(face, c);
                 if (index == 0) {
@@ -199,8 +207,9 @@ struct Font::Impl {
                     continue;
                 }
                 const FT_GlyphSlot slot = face->glyph;
-                if (slot->format == FT_GLYPH_FORMAT_OUTLINE ? slot->outline.n_points > 0
-                                                            : slot->bitmap.width > 0 && slot->bitmap.rows > 0) {
+                if (slot->format == FT_GLYPH_FORMAT_OUTLINE
+                        ? slot->outline.n_points > 0
+                        : slot->bitmap.width > 0 && slot->bitmap.rows > 0) {
                     return {};
                 }
             }
@@ -208,17 +217,20 @@ struct Font::Impl {
         if (!mapsAny) {
             return {};
         }
-        return "draws nothing: none of its glyphs for A-Z, a-z and 0-9 has an outline or a bitmap (is the "
+        return "draws nothing: none of its glyphs for A-Z, a-z and 0-9 has an outline or a bitmap "
+               "(is the "
                "file cut short or damaged?)" +
                firstError;
     }
 
     // Says once per glyph why it is drawn as .notdef; a full atlas once per font.
-    void reportUndrawable(char32_t codePoint, unsigned index, const std::string& why, bool atlasFull) {
+    void reportUndrawable(char32_t codePoint, unsigned index, const std::string& why,
+                          bool atlasFull) {
         if (def.logger == nullptr) {
             return;
         }
-        const std::string font = "render::Font: '" + def.path.string() + "' at " + std::to_string(def.pixelSize) + " px: ";
+        const std::string font = "render::Font: '" + def.path.string() + "' at " +
+                                 std::to_string(def.pixelSize) + " px: ";
         if (atlasFull) {
             if (!reportedFull) {
                 def.logger->warning(font + why + "; new glyphs draw .notdef");
@@ -228,9 +240,11 @@ struct Font::Impl {
         }
         ++damagedGlyphs;
         if (damagedGlyphs <= kMaxGlyphReports) {
-            def.logger->warning(font + "cannot draw " + codePointName(codePoint) + " (glyph " + std::to_string(index) +
-                                "): " + why + "; drawing .notdef instead" +
-                                (damagedGlyphs == kMaxGlyphReports ? " (further damaged glyphs are not reported)" : ""));
+            def.logger->warning(font + "cannot draw " + codePointName(codePoint) + " (glyph " +
+                                std::to_string(index) + "): " + why + "; drawing .notdef instead" +
+                                (damagedGlyphs == kMaxGlyphReports
+                                     ? " (further damaged glyphs are not reported)"
+                                     : ""));
         }
     }
 };
@@ -257,17 +271,20 @@ Font::Font(const FontDef& def) : impl_(std::make_unique<Impl>()) {
     }
     if (const FT_Error e = FT_New_Face(m.library, name.c_str(), 0, &m.face); e != 0) {
         m.face = nullptr;
-        throw core::Error("render::Font: '" + name + "' is not a font FreeType reads: " + freetypeReason(e));
+        throw core::Error("render::Font: '" + name +
+                          "' is not a font FreeType reads: " + freetypeReason(e));
     }
-    if (const FT_Error e = FT_Set_Pixel_Sizes(m.face, 0, static_cast<FT_UInt>(def.pixelSize)); e != 0) {
-        throw core::Error("render::Font: '" + name + "' has no size " + std::to_string(def.pixelSize) +
-                          " px: " + freetypeReason(e));
+    if (const FT_Error e = FT_Set_Pixel_Sizes(m.face, 0, static_cast<FT_UInt>(def.pixelSize));
+        e != 0) {
+        throw core::Error("render::Font: '" + name + "' has no size " +
+                          std::to_string(def.pixelSize) + " px: " + freetypeReason(e));
     }
     if (const std::string why = m.inkless(); !why.empty()) {
         throw core::Error("render::Font: '" + name + "' " + why);
     }
     m.size = {def.atlasWidth, std::min(def.maxAtlasHeight, 64)};
-    m.pixels.assign(static_cast<std::size_t>(m.size.x) * static_cast<std::size_t>(m.size.y) * 4u, 0);
+    m.pixels.assign(static_cast<std::size_t>(m.size.x) * static_cast<std::size_t>(m.size.y) * 4u,
+                    0);
     m.dirty = {0, 0, m.size.x, m.size.y};
     Glyph notdef;
     bool atlasFull = false;
@@ -321,9 +338,15 @@ const FontDef& Font::def() const noexcept { return impl_->def; }
 const char* Font::familyName() const noexcept {
     return impl_->face->family_name != nullptr ? impl_->face->family_name : "";
 }
-float Font::ascender() const noexcept { return static_cast<float>(impl_->face->size->metrics.ascender) / 64.0f; }
-float Font::descender() const noexcept { return static_cast<float>(impl_->face->size->metrics.descender) / 64.0f; }
-float Font::lineHeight() const noexcept { return static_cast<float>(impl_->face->size->metrics.height) / 64.0f; }
+float Font::ascender() const noexcept {
+    return static_cast<float>(impl_->face->size->metrics.ascender) / 64.0f;
+}
+float Font::descender() const noexcept {
+    return static_cast<float>(impl_->face->size->metrics.descender) / 64.0f;
+}
+float Font::lineHeight() const noexcept {
+    return static_cast<float>(impl_->face->size->metrics.height) / 64.0f;
+}
 glm::ivec2 Font::atlasSize() const noexcept { return impl_->size; }
 std::span<const std::uint8_t> Font::atlasPixels() const noexcept { return impl_->pixels; }
 std::uint64_t Font::atlasGeneration() const noexcept { return impl_->generation; }

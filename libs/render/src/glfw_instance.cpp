@@ -28,10 +28,12 @@ GlfwInstance::GlfwInstance() {
     // A second instance would initialise nothing, and its glfwTerminate() would destroy the
     // first one's windows under it.
     if (glfwInitialised()) {
-        core::throwError("render::GlfwInstance",
-                     "GLFW is already initialised in this process (GLFW's state is process-wide: a Game run "
-                     "while another Game runs, or a second GlfwInstance); windows open at the same time share "
-                     "one instance (WindowDef::glfw = firstWindow.glfw())");
+        core::throwError(
+            "render::GlfwInstance",
+            "GLFW is already initialised in this process (GLFW's state is process-wide: a Game run "
+            "while another Game runs, or a second GlfwInstance); windows open at the same time "
+            "share "
+            "one instance (WindowDef::glfw = firstWindow.glfw())");
     }
     // An X server under load sometimes resets a connection opened right after another client
     // closed one (XOpenDisplay fails with ECONNRESET, the next attempt works): a display that

@@ -41,7 +41,9 @@ public:
     ~MessageCapture() { t_freeImageMessage = previous_; }
     MessageCapture(const MessageCapture&) = delete;
     MessageCapture& operator=(const MessageCapture&) = delete;
-    [[nodiscard]] std::string reason(const char* fallback) const { return text_.empty() ? fallback : text_; }
+    [[nodiscard]] std::string reason(const char* fallback) const {
+        return text_.empty() ? fallback : text_;
+    }
 
 private:
     std::string text_;
@@ -55,19 +57,32 @@ std::string formatName(FREE_IMAGE_FORMAT format) {
 
 const char* imageTypeName(FREE_IMAGE_TYPE type) {
     switch (type) {
-    case FIT_BITMAP: return "standard bitmap";
-    case FIT_UINT16: return "16-bit unsigned";
-    case FIT_INT16: return "16-bit signed";
-    case FIT_UINT32: return "32-bit unsigned";
-    case FIT_INT32: return "32-bit signed";
-    case FIT_FLOAT: return "32-bit float";
-    case FIT_DOUBLE: return "64-bit float";
-    case FIT_COMPLEX: return "complex";
-    case FIT_RGB16: return "16-bit RGB";
-    case FIT_RGBA16: return "16-bit RGBA";
-    case FIT_RGBF: return "float RGB";
-    case FIT_RGBAF: return "float RGBA";
-    default: return "unknown type";
+    case FIT_BITMAP:
+        return "standard bitmap";
+    case FIT_UINT16:
+        return "16-bit unsigned";
+    case FIT_INT16:
+        return "16-bit signed";
+    case FIT_UINT32:
+        return "32-bit unsigned";
+    case FIT_INT32:
+        return "32-bit signed";
+    case FIT_FLOAT:
+        return "32-bit float";
+    case FIT_DOUBLE:
+        return "64-bit float";
+    case FIT_COMPLEX:
+        return "complex";
+    case FIT_RGB16:
+        return "16-bit RGB";
+    case FIT_RGBA16:
+        return "16-bit RGBA";
+    case FIT_RGBF:
+        return "float RGB";
+    case FIT_RGBAF:
+        return "float RGBA";
+    default:
+        return "unknown type";
     }
 }
 
@@ -113,9 +128,9 @@ Image loadImage(const std::filesystem::path& path) {
         failFile(capture.reason("FreeImage does not recognise the image format"));
     }
     FREE_IMAGE_FORMAT named = FreeImage_GetFIFFromFilename(file.c_str());
-    if (named != FIF_UNKNOWN && named != content &&
-        !(named == FIF_TIFF && content == FIF_TIFF)) {
-        failFile("the content is " + formatName(content) + " but the extension says " + formatName(named));
+    if (named != FIF_UNKNOWN && named != content && !(named == FIF_TIFF && content == FIF_TIFF)) {
+        failFile("the content is " + formatName(content) + " but the extension says " +
+                 formatName(named));
     }
     if (FreeImage_FIFSupportsReading(content) == FALSE) {
         failFile("FreeImage cannot read " + formatName(content) + " files");
@@ -124,7 +139,8 @@ Image loadImage(const std::filesystem::path& path) {
     // them upright; image viewers do turn them.
     Bitmap loaded(FreeImage_Load(content, file.c_str(), content == FIF_JPEG ? JPEG_EXIFROTATE : 0));
     if (loaded.bitmap == nullptr) {
-        failFile(capture.reason("FreeImage_Load() failed without a reason (corrupt or truncated?)"));
+        failFile(
+            capture.reason("FreeImage_Load() failed without a reason (corrupt or truncated?)"));
     }
     if (!capture.reason("").empty()) {
         // libpng and libjpeg report truncated data as a warning and hand back a partial image.
@@ -133,15 +149,18 @@ Image loadImage(const std::filesystem::path& path) {
     unsigned width = FreeImage_GetWidth(loaded.bitmap);
     unsigned height = FreeImage_GetHeight(loaded.bitmap);
     if (width == 0 || height == 0) {
-        failFile("the image is " + std::to_string(width) + " x " + std::to_string(height) + " pixels");
+        failFile("the image is " + std::to_string(width) + " x " + std::to_string(height) +
+                 " pixels");
     }
     // FreeImage converts 16-bit greyscale to 32 bits only by way of 8 bits (the high byte).
-    Bitmap grey(FreeImage_GetImageType(loaded.bitmap) == FIT_UINT16 ? FreeImage_ConvertTo8Bits(loaded.bitmap)
-                                                                     : nullptr);
+    Bitmap grey(FreeImage_GetImageType(loaded.bitmap) == FIT_UINT16
+                    ? FreeImage_ConvertTo8Bits(loaded.bitmap)
+                    : nullptr);
     Bitmap rgba(FreeImage_ConvertTo32Bits(grey.bitmap != nullptr ? grey.bitmap : loaded.bitmap));
     if (rgba.bitmap == nullptr) {
         const std::string fallback = "FreeImage could not convert it to 32-bit RGBA (" +
-                                     std::to_string(FreeImage_GetBPP(loaded.bitmap)) + " bits per pixel, " +
+                                     std::to_string(FreeImage_GetBPP(loaded.bitmap)) +
+                                     " bits per pixel, " +
                                      imageTypeName(FreeImage_GetImageType(loaded.bitmap)) + ")";
         failFile(capture.reason(fallback.c_str()));
     }
@@ -152,7 +171,8 @@ Image loadImage(const std::filesystem::path& path) {
     // FreeImage rows are bottom-up and BGRA (on little-endian machines): one place converts.
     for (unsigned y = 0; y < height; ++y) {
         const BYTE* src = FreeImage_GetScanLine(rgba.bitmap, static_cast<int>(y));
-        std::uint8_t* dst = image.pixels.data() + static_cast<std::size_t>(height - 1 - y) * width * 4;
+        std::uint8_t* dst =
+            image.pixels.data() + static_cast<std::size_t>(height - 1 - y) * width * 4;
         for (unsigned x = 0; x < width; ++x) {
             dst[x * 4 + 0] = src[x * 4 + FI_RGBA_RED];
             dst[x * 4 + 1] = src[x * 4 + FI_RGBA_GREEN];
@@ -169,14 +189,15 @@ Image loadImage(const std::filesystem::path& path) {
 void writePng(const Image& image, const std::filesystem::path& path) {
     const std::string file = path.string();
     if (image.width < 1 || image.height < 1 ||
-        image.pixels.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4) {
-        throw core::Error("render::writePng(): " + file + ": the image is " + std::to_string(image.width) + " x " +
-                          std::to_string(image.height) + " with " + std::to_string(image.pixels.size()) +
-                          " bytes of pixels");
+        image.pixels.size() !=
+            static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4) {
+        throw core::Error("render::writePng(): " + file + ": the image is " +
+                          std::to_string(image.width) + " x " + std::to_string(image.height) +
+                          " with " + std::to_string(image.pixels.size()) + " bytes of pixels");
     }
     MessageCapture capture;
-    Bitmap bitmap(FreeImage_Allocate(image.width, image.height, 32, FI_RGBA_RED_MASK, FI_RGBA_GREEN_MASK,
-                                     FI_RGBA_BLUE_MASK));
+    Bitmap bitmap(FreeImage_Allocate(image.width, image.height, 32, FI_RGBA_RED_MASK,
+                                     FI_RGBA_GREEN_MASK, FI_RGBA_BLUE_MASK));
     if (bitmap.bitmap == nullptr) {
         throw core::Error("render::writePng(): " + file + ": " + capture.reason("out of memory"));
     }
@@ -193,7 +214,8 @@ void writePng(const Image& image, const std::filesystem::path& path) {
         }
     }
     if (FreeImage_Save(FIF_PNG, bitmap.bitmap, file.c_str(), PNG_DEFAULT) == FALSE) {
-        throw core::Error("render::writePng(): " + file + ": " + capture.reason("FreeImage_Save() failed"));
+        throw core::Error("render::writePng(): " + file + ": " +
+                          capture.reason("FreeImage_Save() failed"));
     }
 }
 

@@ -25,7 +25,7 @@ static_assert(sizeof(Instance) == 32, "instance data must stay 32 bytes");
 
 // A run of instances drawn with one instanced draw call.
 struct Batch {
-    std::uint32_t first = 0;   // index of the first instance in the frame's data
+    std::uint32_t first = 0; // index of the first instance in the frame's data
     std::uint32_t count = 0;
     std::uint32_t texture = 0; // texture slot
     bool translucent = false;

@@ -50,7 +50,8 @@ void InstanceBuffer::allocate(std::size_t capacity) {
     capacity_ = capacity;
     glGenBuffers(1, &buffer_);
     glBindBuffer(GL_ARRAY_BUFFER, buffer_);
-    auto bytes = static_cast<GLsizeiptr>(capacity_ * sizeof(Instance) * static_cast<std::size_t>(frames_));
+    auto bytes =
+        static_cast<GLsizeiptr>(capacity_ * sizeof(Instance) * static_cast<std::size_t>(frames_));
     if (persistent_) {
         GLbitfield flags = GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
         glBufferStorage(GL_ARRAY_BUFFER, bytes, nullptr, flags);
@@ -67,7 +68,8 @@ void InstanceBuffer::pointAttributes(std::size_t first) const {
     glBindBuffer(GL_ARRAY_BUFFER, buffer_);
     auto stride = static_cast<GLsizei>(sizeof(Instance));
     auto offset = [&](std::size_t field) {
-        return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first * sizeof(Instance) + field));
+        return reinterpret_cast<const void*>(
+            static_cast<std::uintptr_t>(first * sizeof(Instance) + field));
     };
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, offset(offsetof(Instance, x)));
@@ -79,7 +81,8 @@ void InstanceBuffer::pointAttributes(std::size_t first) const {
     glVertexAttribPointer(2, 4, GL_UNSIGNED_SHORT, GL_TRUE, stride, offset(offsetof(Instance, uv)));
     glVertexAttribDivisor(2, 1);
     glEnableVertexAttribArray(3);
-    glVertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride, offset(offsetof(Instance, tint)));
+    glVertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                          offset(offsetof(Instance, tint)));
     glVertexAttribDivisor(3, 1);
 }
 
@@ -102,8 +105,9 @@ Instance* InstanceBuffer::begin(std::size_t count) {
     glBindBuffer(GL_ARRAY_BUFFER, buffer_);
     auto bytes = static_cast<GLsizeiptr>(capacity_ * sizeof(Instance));
     glBufferData(GL_ARRAY_BUFFER, bytes, nullptr, GL_STREAM_DRAW); // orphan
-    mapped_ = static_cast<Instance*>(glMapBufferRange(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(count * sizeof(Instance)),
-                                                      GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT));
+    mapped_ = static_cast<Instance*>(
+        glMapBufferRange(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(count * sizeof(Instance)),
+                         GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT));
     return mapped_;
 }
 

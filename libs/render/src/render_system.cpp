@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/render/render_system.hpp>
 
-#include <e2d/render/renderer.hpp>
 #include <e2d/core/error.hpp>
 #include <e2d/core/log.hpp>
+#include <e2d/render/renderer.hpp>
 #include <e2d/render/sprite_renderer.hpp>
 #include <e2d/render/sprite_sheet.hpp>
 #include <e2d/render/text_renderer.hpp>

@@ -58,8 +58,9 @@ struct RendererImpl {
         GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         if (status != GL_FRAMEBUFFER_COMPLETE) {
-            core::throwError("render::Renderer", "the offscreen framebuffer of " + core::formatVector(size) +
-                                         " is incomplete (status 0x" + std::to_string(status) + ")");
+            core::throwError("render::Renderer",
+                             "the offscreen framebuffer of " + core::formatVector(size) +
+                                 " is incomplete (status 0x" + std::to_string(status) + ")");
         }
     }
 
@@ -77,7 +78,8 @@ struct RendererImpl {
             }
             glBindTexture(GL_TEXTURE_2D, textures.glTexture(b.texture));
             if (useBaseInstance) {
-                glDrawArraysInstancedBaseInstance(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(b.count),
+                glDrawArraysInstancedBaseInstance(GL_TRIANGLE_STRIP, 0, 4,
+                                                  static_cast<GLsizei>(b.count),
                                                   static_cast<GLuint>(base + b.first));
             } else {
                 buffer->pointAttributes(base + b.first);
@@ -91,7 +93,8 @@ struct RendererImpl {
         inTranslucentPass = translucent;
         if (translucent) {
             glEnable(GL_BLEND);
-            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE,
+                                GL_ONE_MINUS_SRC_ALPHA);
             glDepthMask(GL_FALSE);
             // At equal z a translucent quad draws over the opaque ones.
             glDepthFunc(GL_LEQUAL);
@@ -136,21 +139,24 @@ namespace {
 constexpr const char* kCtor = "render::Renderer";
 
 void validate(const RendererDef& def) {
-    if (def.offscreenSize != glm::ivec2(0) && (def.offscreenSize.x < 1 || def.offscreenSize.y < 1)) {
+    if (def.offscreenSize != glm::ivec2(0) &&
+        (def.offscreenSize.x < 1 || def.offscreenSize.y < 1)) {
         core::throwError(kCtor, "offscreenSize must be (0, 0) or >= 1 in each axis, got " +
-                                core::formatVector(def.offscreenSize));
+                                    core::formatVector(def.offscreenSize));
     }
     if (def.ringFrames < 2 || def.ringFrames > 8) {
-        core::throwError(kCtor, "ringFrames must be in [2, 8], got " + std::to_string(def.ringFrames));
+        core::throwError(kCtor,
+                         "ringFrames must be in [2, 8], got " + std::to_string(def.ringFrames));
     }
     if (!(def.depthRange > 0.0f) || !std::isfinite(def.depthRange)) {
-        core::throwError(kCtor, "depthRange must be > 0 and finite, got " + core::formatNumber(def.depthRange));
+        core::throwError(kCtor, "depthRange must be > 0 and finite, got " +
+                                    core::formatNumber(def.depthRange));
     }
 }
 
 void setClearColor(Color c) {
-    glClearColor(static_cast<float>(c.r) / 255.0f, static_cast<float>(c.g) / 255.0f, static_cast<float>(c.b) / 255.0f,
-                 static_cast<float>(c.a) / 255.0f);
+    glClearColor(static_cast<float>(c.r) / 255.0f, static_cast<float>(c.g) / 255.0f,
+                 static_cast<float>(c.b) / 255.0f, static_cast<float>(c.a) / 255.0f);
 }
 
 } // namespace
@@ -194,7 +200,8 @@ TextureId Renderer::createTexture(const Image& image, const TextureDef& def) {
     return impl_->textures.create(image, def, "render::Renderer::createTexture()");
 }
 
-void Renderer::updateTexture(TextureId id, glm::ivec2 offset, glm::ivec2 size, std::span<const std::uint8_t> rgba) {
+void Renderer::updateTexture(TextureId id, glm::ivec2 offset, glm::ivec2 size,
+                             std::span<const std::uint8_t> rgba) {
     if (impl_->textures.update(id, offset, size, rgba)) {
         impl_->batcher.texturesChanged();
     }
@@ -214,7 +221,9 @@ const TextureInfo& Renderer::textureInfo(TextureId id) const {
     return impl_->textures.info(id, "render::Renderer::textureInfo()");
 }
 
-TextureId Renderer::whiteTexture() const noexcept { return impl_->textures.idOf(detail::TexturePool::kWhiteSlot); }
+TextureId Renderer::whiteTexture() const noexcept {
+    return impl_->textures.idOf(detail::TexturePool::kWhiteSlot);
+}
 
 SpriteId Renderer::createSprite(const SpriteDef& def) { return impl_->batcher.create(def); }
 bool Renderer::destroySprite(SpriteId id) { return impl_->batcher.destroy(id); }
@@ -252,24 +261,37 @@ int Renderer::destroyUnusedTextures(std::span<const TextureId> keep) {
 void Renderer::destroyAllSprites() { impl_->batcher.destroyAll(); }
 bool Renderer::isValid(SpriteId id) const noexcept { return impl_->batcher.isValid(id); }
 int Renderer::spriteCount() const noexcept { return impl_->batcher.count(); }
-const SpriteDef& Renderer::sprite(SpriteId id) const { return impl_->batcher.def(id, "render::Renderer::sprite()"); }
+const SpriteDef& Renderer::sprite(SpriteId id) const {
+    return impl_->batcher.def(id, "render::Renderer::sprite()");
+}
 void Renderer::setSprite(SpriteId id, const SpriteDef& def) {
     impl_->batcher.set(id, def, "render::Renderer::setSprite()");
 }
-void Renderer::setPosition(SpriteId id, glm::vec2 position) { impl_->batcher.setPosition(id, position); }
+void Renderer::setPosition(SpriteId id, glm::vec2 position) {
+    impl_->batcher.setPosition(id, position);
+}
 void Renderer::setZ(SpriteId id, float z) { impl_->batcher.setZ(id, z); }
 void Renderer::setSize(SpriteId id, glm::vec2 size) { impl_->batcher.setSize(id, size); }
 void Renderer::setScale(SpriteId id, glm::vec2 scale) { impl_->batcher.setScale(id, scale); }
 void Renderer::setRotation(SpriteId id, float radians) { impl_->batcher.setRotation(id, radians); }
 void Renderer::setPivot(SpriteId id, glm::vec2 pivot) { impl_->batcher.setPivot(id, pivot); }
 void Renderer::setTint(SpriteId id, Color tint) { impl_->batcher.setTint(id, tint); }
-void Renderer::setUv(SpriteId id, const Rect& uv, bool uvRotated) { impl_->batcher.setUv(id, uv, uvRotated); }
-void Renderer::setFlip(SpriteId id, bool flipX, bool flipY) { impl_->batcher.setFlip(id, flipX, flipY); }
-void Renderer::setParallax(SpriteId id, float parallax) { impl_->batcher.setParallax(id, parallax); }
+void Renderer::setUv(SpriteId id, const Rect& uv, bool uvRotated) {
+    impl_->batcher.setUv(id, uv, uvRotated);
+}
+void Renderer::setFlip(SpriteId id, bool flipX, bool flipY) {
+    impl_->batcher.setFlip(id, flipX, flipY);
+}
+void Renderer::setParallax(SpriteId id, float parallax) {
+    impl_->batcher.setParallax(id, parallax);
+}
 void Renderer::setHud(SpriteId id, bool hud) { impl_->batcher.setHud(id, hud); }
 void Renderer::setVisible(SpriteId id, bool visible) { impl_->batcher.setVisible(id, visible); }
-void Renderer::setTexture(SpriteId id, TextureId texture) { impl_->batcher.setTexture(id, texture); }
-void Renderer::setTransform(SpriteId id, glm::vec2 position, float z, float rotation, glm::vec2 scale) {
+void Renderer::setTexture(SpriteId id, TextureId texture) {
+    impl_->batcher.setTexture(id, texture);
+}
+void Renderer::setTransform(SpriteId id, glm::vec2 position, float z, float rotation,
+                            glm::vec2 scale) {
     impl_->batcher.setTransform(id, position, z, rotation, scale);
 }
 
@@ -371,7 +393,8 @@ Image Renderer::readPixels() const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, r.fbo);
     glReadBuffer(r.fbo != 0 ? GL_COLOR_ATTACHMENT0 : GL_BACK);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    std::vector<std::uint8_t> bottomUp(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y) * 4);
+    std::vector<std::uint8_t> bottomUp(static_cast<std::size_t>(size.x) *
+                                       static_cast<std::size_t>(size.y) * 4);
     glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     // glReadPixels rows are bottom-up; Image rows run from the top.

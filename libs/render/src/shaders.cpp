@@ -56,7 +56,8 @@ GLuint compile(GLenum type, const char* source, const char* name) {
         std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
         glGetShaderInfoLog(shader, length, nullptr, log.data());
         glDeleteShader(shader);
-        core::throwError("render::Renderer", std::string(name) + " shader does not compile: " + log);
+        core::throwError("render::Renderer",
+                         std::string(name) + " shader does not compile: " + log);
     }
     return shader;
 }

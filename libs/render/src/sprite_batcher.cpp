@@ -24,26 +24,34 @@ void validate(const char* function, const SpriteDef& def) {
     core::requireFinite(function, "rotation", def.rotation);
     core::requireFinite(function, "pivot", def.pivot);
     if (!core::isFinite(def.size) || def.size.x < 0.0f || def.size.y < 0.0f) {
-        core::throwError(function, "size must be >= 0 and finite, got " + core::formatVector(def.size));
+        core::throwError(function,
+                         "size must be >= 0 and finite, got " + core::formatVector(def.size));
     }
-    if (!core::isFinite(def.uv.min) || !core::isFinite(def.uv.size) || def.uv.size.x < 0.0f || def.uv.size.y < 0.0f ||
-        def.uv.min.x < 0.0f || def.uv.min.y < 0.0f || def.uv.max().x > 1.0f || def.uv.max().y > 1.0f) {
-        core::throwError(function, "uv must lie in [0, 1] with size >= 0, got min " + core::formatVector(def.uv.min) + " size " +
-                           core::formatVector(def.uv.size));
+    if (!core::isFinite(def.uv.min) || !core::isFinite(def.uv.size) || def.uv.size.x < 0.0f ||
+        def.uv.size.y < 0.0f || def.uv.min.x < 0.0f || def.uv.min.y < 0.0f ||
+        def.uv.max().x > 1.0f || def.uv.max().y > 1.0f) {
+        core::throwError(function, "uv must lie in [0, 1] with size >= 0, got min " +
+                                       core::formatVector(def.uv.min) + " size " +
+                                       core::formatVector(def.uv.size));
     }
     if (!std::isfinite(def.parallax) || def.parallax < 0.0f) {
-        core::throwError(function, "parallax must be >= 0 and finite, got " + core::formatNumber(def.parallax));
+        core::throwError(function, "parallax must be >= 0 and finite, got " +
+                                       core::formatNumber(def.parallax));
     }
 }
 
-std::uint16_t unorm16(float v) { return static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 65535.0f)); }
+std::uint16_t unorm16(float v) {
+    return static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 65535.0f));
+}
 
 bool isTranslucentKey(std::uint64_t key) { return (key >> 63) != 0; }
 
 // Of two equal keys, whether `a` (created or submitted before `b` when a < b) is drawn first:
 // in the translucent pass the later one is drawn last (painter's order); in the opaque pass
 // first (the strict depth test keeps the first).
-bool tieFirst(std::uint64_t key, std::uint32_t a, std::uint32_t b) { return isTranslucentKey(key) ? a < b : a > b; }
+bool tieFirst(std::uint64_t key, std::uint32_t a, std::uint32_t b) {
+    return isTranslucentKey(key) ? a < b : a > b;
+}
 
 // Monotonic unsigned image of a float: a < b  <=>  bits(a) < bits(b).
 std::uint32_t orderedBits(float z) {
@@ -84,8 +92,10 @@ void packEdges(Instance& out, glm::vec2 ex, glm::vec2 ey) {
 // Bounds of the parallelogram origin + [0,1] ex + [0,1] ey.
 // Scalar std::min/max: these run for every moved sprite and must inline.
 inline glm::vec4 boundsOf(glm::vec2 o, glm::vec2 ex, glm::vec2 ey) {
-    return {o.x + std::min(ex.x, 0.0f) + std::min(ey.x, 0.0f), o.y + std::min(ex.y, 0.0f) + std::min(ey.y, 0.0f),
-            o.x + std::max(ex.x, 0.0f) + std::max(ey.x, 0.0f), o.y + std::max(ex.y, 0.0f) + std::max(ey.y, 0.0f)};
+    return {o.x + std::min(ex.x, 0.0f) + std::min(ey.x, 0.0f),
+            o.y + std::min(ex.y, 0.0f) + std::min(ey.y, 0.0f),
+            o.x + std::max(ex.x, 0.0f) + std::max(ey.x, 0.0f),
+            o.y + std::max(ex.y, 0.0f) + std::max(ey.y, 0.0f)};
 }
 
 bool outside(const glm::vec4& b, const ViewBounds& view) {
@@ -94,7 +104,8 @@ bool outside(const glm::vec4& b, const ViewBounds& view) {
 
 // The same for bounds relative to an instance's origin.
 inline bool outside(const Instance& in, const glm::vec4& b, const ViewBounds& view) {
-    return in.x + b.z < view.min.x || in.x + b.x > view.max.x || in.y + b.w < view.min.y || in.y + b.y > view.max.y;
+    return in.x + b.z < view.min.x || in.x + b.x > view.max.x || in.y + b.w < view.min.y ||
+           in.y + b.y > view.max.y;
 }
 
 // World placement of a quad given in local units (world, or camera units for HUD).
@@ -104,13 +115,14 @@ struct Placement {
     glm::vec2 ey;
 };
 
-inline Placement place(glm::vec2 position, glm::vec2 pivotOffset, glm::vec2 ex, glm::vec2 ey, float parallax, bool hud,
-                const CameraState& camera) {
+inline Placement place(glm::vec2 position, glm::vec2 pivotOffset, glm::vec2 ex, glm::vec2 ey,
+                       float parallax, bool hud, const CameraState& camera) {
     if (hud) {
         // camera -> world: position + R(rotation) * v / zoom, applied to the whole quad.
         float c = std::cos(camera.rotation) / camera.zoom;
         float s = std::sin(camera.rotation) / camera.zoom;
-        return {camera.position + rotate(position + pivotOffset, c, s), rotate(ex, c, s), rotate(ey, c, s)};
+        return {camera.position + rotate(position + pivotOffset, c, s), rotate(ex, c, s),
+                rotate(ey, c, s)};
     }
     glm::vec2 anchor = position;
     if (parallax != 1.0f) {
@@ -125,7 +137,9 @@ SpriteBatcher::SpriteBatcher(const std::vector<TextureFacts>& textures, std::uin
                              std::uint32_t placeholderSlot)
     : textures_(textures), whiteSlot_(whiteSlot), placeholderSlot_(placeholderSlot) {}
 
-SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function) { return slots_[index(id, function)]; }
+SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function) {
+    return slots_[index(id, function)];
+}
 
 const SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function) const {
     return slots_[index(id, function)];
@@ -133,15 +147,17 @@ const SpriteBatcher::Slot& SpriteBatcher::slot(SpriteId id, const char* function
 
 // Every setter's id check inlines (index()); the message is built out of line.
 void SpriteBatcher::failBadId(SpriteId id, const char* function) {
-    core::throwError(function, id.isNull() ? std::string("null sprite id")
-                               : "stale sprite id (index " + std::to_string(id.index()) + ", generation " +
-                                     std::to_string(id.generation) + ")");
+    core::throwError(function, id.isNull()
+                                   ? std::string("null sprite id")
+                                   : "stale sprite id (index " + std::to_string(id.index()) +
+                                         ", generation " + std::to_string(id.generation) + ")");
 }
 
 bool SpriteBatcher::isValid(SpriteId id) const noexcept { return liveIndex(id).has_value(); }
 
 std::optional<std::uint32_t> SpriteBatcher::textureSlot(TextureId id) const noexcept {
-    return core::findSlot(id, textures_.size(), [this](std::uint32_t i) { return textures_[i].generation; });
+    return core::findSlot(id, textures_.size(),
+                          [this](std::uint32_t i) { return textures_[i].generation; });
 }
 
 std::uint32_t SpriteBatcher::drawnTexture(TextureId id) const noexcept {
@@ -156,7 +172,9 @@ void SpriteBatcher::requireTexture(const char* function, TextureId id) const {
 
 void SpriteBatcher::resolveTexture(Slot& s) const { s.texture = drawnTexture(s.def.texture); }
 
-bool SpriteBatcher::opaque(const Slot& s) const { return s.def.tint.a == 255 && !textures_[s.texture].translucent; }
+bool SpriteBatcher::opaque(const Slot& s) const {
+    return s.def.tint.a == 255 && !textures_[s.texture].translucent;
+}
 
 std::uint64_t SpriteBatcher::key(float z, std::uint32_t texture, bool isOpaque) const {
     std::uint64_t zBits = orderedBits(z);
@@ -359,7 +377,8 @@ void SpriteBatcher::setParallax(SpriteId id, float parallax) {
     constexpr const char* fn = "render::Renderer::setParallax()";
     Slot& s = slot(id, fn);
     if (!std::isfinite(parallax) || parallax < 0.0f) {
-        core::throwError(fn, "parallax must be >= 0 and finite, got " + core::formatNumber(parallax));
+        core::throwError(fn,
+                         "parallax must be >= 0 and finite, got " + core::formatNumber(parallax));
     }
     if (s.def.parallax != parallax) {
         s.def.parallax = parallax;
@@ -397,7 +416,8 @@ void SpriteBatcher::setTexture(SpriteId id, TextureId texture) {
     }
 }
 
-void SpriteBatcher::setTransform(SpriteId id, glm::vec2 position, float z, float rotation, glm::vec2 scale) {
+void SpriteBatcher::setTransform(SpriteId id, glm::vec2 position, float z, float rotation,
+                                 glm::vec2 scale) {
     constexpr const char* fn = "render::Renderer::setTransform()";
     Slot& s = slot(id, fn);
     core::requireFinite(fn, "position", position);
@@ -496,9 +516,11 @@ void SpriteBatcher::repack(std::uint32_t index, const CameraState& camera) {
     }
     if ((dirty & kLook) != 0) {
         // A turned image mirrors left-right along the texture's v axis, up-down along u.
-        packLook(out, d.uv, d.uvRotated ? d.flipY : d.flipX, d.uvRotated ? d.flipX : d.flipY, d.tint);
+        packLook(out, d.uv, d.uvRotated ? d.flipY : d.flipX, d.uvRotated ? d.flipX : d.flipY,
+                 d.tint);
     }
-    const Placement p = place(pos_[index], pivotOffset, s.edgeX, s.edgeY, d.parallax, d.hud, camera);
+    const Placement p =
+        place(pos_[index], pivotOffset, s.edgeX, s.edgeY, d.parallax, d.hud, camera);
     if (d.hud) {
         // The camera turns and scales a HUD sprite's edges.
         packEdges(out, p.ex, p.ey);
@@ -528,8 +550,9 @@ void SpriteBatcher::sortOrder() {
         keys[i] = key(s.def.z, s.texture, opaque(s));
     }
     // Ties keep creation (slot) order, so equal keys draw the same way every frame.
-    std::sort(order_.begin(), order_.end(),
-              [&](std::uint32_t a, std::uint32_t b) { return keys[a] != keys[b] ? keys[a] < keys[b] : tieFirst(keys[a], a, b); });
+    std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return keys[a] != keys[b] ? keys[a] < keys[b] : tieFirst(keys[a], a, b);
+    });
     // The packed instances live only in draw order: sprites drawn last frame move to their new
     // place; the others (new, shown again) are packed from scratch by prepare().
     std::vector<Instance> oldPacked = std::move(orderPacked_);
@@ -547,7 +570,8 @@ void SpriteBatcher::sortOrder() {
         orderKeys_[k] = keys[i];
         orderTranslucent_[k] = static_cast<std::uint8_t>(orderKeys_[k] >> 63);
         orderTexture_[k] = slots_[i].texture;
-        orderPosition_[i] = static_cast<std::uint32_t>(k) | (d.hud || d.parallax != 1.0f ? kCameraBit : 0u);
+        orderPosition_[i] =
+            static_cast<std::uint32_t>(k) | (d.hud || d.parallax != 1.0f ? kCameraBit : 0u);
         if (const std::uint32_t was = oldPosition[i] & ~kCameraBit;
             oldPosition[i] != kNotDrawn && was < oldPacked.size()) {
             orderPacked_[k] = oldPacked[was];
@@ -559,9 +583,11 @@ void SpriteBatcher::sortOrder() {
     orderDirty_ = false;
 }
 
-std::size_t SpriteBatcher::prepare(const CameraState& camera, const ViewBounds& view, bool& changed) {
-    changed = !emittedOnce_ || orderDirty_ || allDirty_ || movedThrough_ != 0 || !dirtyList_.empty() ||
-              !quads_.empty() || lastHadQuads_ || !(camera == camera_) || !(view == view_);
+std::size_t SpriteBatcher::prepare(const CameraState& camera, const ViewBounds& view,
+                                   bool& changed) {
+    changed = !emittedOnce_ || orderDirty_ || allDirty_ || movedThrough_ != 0 ||
+              !dirtyList_.empty() || !quads_.empty() || lastHadQuads_ || !(camera == camera_) ||
+              !(view == view_);
     if (allDirty_) {
         for (std::uint32_t i = 0; i < slots_.size(); ++i) {
             if (slots_[i].alive) {
@@ -614,7 +640,8 @@ std::size_t SpriteBatcher::prepare(const CameraState& camera, const ViewBounds& 
         quadOrder_[k] = k;
     }
     std::sort(quadOrder_.begin(), quadOrder_.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return quads_[a].key != quads_[b].key ? quads_[a].key < quads_[b].key : tieFirst(quads_[a].key, a, b);
+        return quads_[a].key != quads_[b].key ? quads_[a].key < quads_[b].key
+                                              : tieFirst(quads_[a].key, a, b);
     });
     return order_.size() + quads_.size();
 }
@@ -662,8 +689,10 @@ std::size_t SpriteBatcher::emit(Instance* dst, std::vector<Batch>& batches, Buil
             // At equal keys the later of the two (the quad, submitted after the sprites were
             // made) is drawn first in the opaque pass and last in the translucent one.
             const std::uint64_t quadKey = q < quadOrder_.size() ? quads_[quadOrder_[q]].key : 0;
-            bool takeSprite = q == quadOrder_.size() ||
-                              (k < sprites && (orderKeys_[k] < quadKey || (orderKeys_[k] == quadKey && isTranslucentKey(quadKey))));
+            bool takeSprite =
+                q == quadOrder_.size() ||
+                (k < sprites && (orderKeys_[k] < quadKey ||
+                                 (orderKeys_[k] == quadKey && isTranslucentKey(quadKey))));
             if (takeSprite) {
                 const std::size_t at = k++;
                 if (outside(orderPacked_[at], orderBounds_[at], view)) {

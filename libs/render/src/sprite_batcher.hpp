@@ -116,8 +116,8 @@ private:
     struct Slot {
         std::uint16_t generation = 1;
         bool alive = false;
-        std::uint32_t texture = 0;         // resolved texture slot
-        glm::vec2 edgeX{0.0f, 0.0f};       // local (world or camera) units, before HUD transform
+        std::uint32_t texture = 0;   // resolved texture slot
+        glm::vec2 edgeX{0.0f, 0.0f}; // local (world or camera) units, before HUD transform
         glm::vec2 edgeY{0.0f, 0.0f};
         SpriteDef def;
     };

@@ -46,7 +46,8 @@ SpriteRenderer::SpriteRenderer(const SpriteRendererDef& def) : def_(def) {
     core::requireFinite(kCtor, "zOffset", def.zOffset);
     checkSize(kCtor, def.size);
     if (!std::isfinite(def.parallax) || def.parallax < 0.0f) {
-        core::throwError(kCtor, "parallax must be >= 0 and finite, got " + core::formatNumber(def.parallax));
+        core::throwError(kCtor, "parallax must be >= 0 and finite, got " +
+                                    core::formatNumber(def.parallax));
     }
 }
 
@@ -88,7 +89,8 @@ void SpriteRenderer::syncTransform() {
         return;
     }
     detail::WorldPose pose = detail::worldPose(*gameObject());
-    system_->renderer().setTransform(sprite_, pose.position, pose.z + def_.zOffset, pose.rotation, pose.scale);
+    system_->renderer().setTransform(sprite_, pose.position, pose.z + def_.zOffset, pose.rotation,
+                                     pose.scale);
     // An inactive object (or one under an inactive parent) is not drawn.
     system_->renderer().setVisible(sprite_, def_.visible && gameObject()->isActiveInHierarchy());
 }

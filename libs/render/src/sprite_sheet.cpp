@@ -47,10 +47,11 @@ public:
 
     // `path` is the JSON path of the value at fault; a problem of the text itself has a line
     // and column instead.
-    [[noreturn]] void fail(std::string_view path, std::string what, core::TextPosition at = {0, 0}) const {
+    [[noreturn]] void fail(std::string_view path, std::string what,
+                           core::TextPosition at = {0, 0}) const {
         throw core::ParseError(core::Diagnostic{core::Severity::Error, core::printable(sheet_),
-                                                at.line, at.column,
-                                                std::string(path), std::move(what)},
+                                                at.line, at.column, std::string(path),
+                                                std::move(what)},
                                "render::SpriteSheet: ");
     }
 
@@ -85,7 +86,8 @@ public:
         } else if (value.is_number_float()) {
             // TexturePacker writes whole numbers; accept 12.0 but not 12.5.
             const double d = value.get<double>();
-            if (!(d >= static_cast<double>(-kMaxCoordinate) && d <= static_cast<double>(kMaxCoordinate)) ||
+            if (!(d >= static_cast<double>(-kMaxCoordinate) &&
+                  d <= static_cast<double>(kMaxCoordinate)) ||
                 d != static_cast<double>(static_cast<std::int64_t>(d))) {
                 fail(path, "expected an integer, got " + describe(value));
             }
@@ -100,7 +102,8 @@ public:
         return static_cast<int>(result);
     }
 
-    int intMember(const Json& object, const std::string& path, const char* key, std::int64_t min) const {
+    int intMember(const Json& object, const std::string& path, const char* key,
+                  std::int64_t min) const {
         return integer(member(object, path, key), path + "." + key, min);
     }
 
@@ -158,11 +161,12 @@ public:
         if (const Json* v = optionalMember(object, "spriteSourceSize")) {
             const std::string p = path + ".spriteSourceSize";
             f.trimRect = rect(*v, p, 1);
-            if (f.trimRect.x + f.trimRect.w > f.sourceSize.x || f.trimRect.y + f.trimRect.h > f.sourceSize.y) {
-                fail(p, "rectangle (x " + std::to_string(f.trimRect.x) + ", y " + std::to_string(f.trimRect.y) +
-                            ", w " + std::to_string(f.trimRect.w) + ", h " + std::to_string(f.trimRect.h) +
-                            ") lies outside sourceSize " + std::to_string(f.sourceSize.x) + "x" +
-                            std::to_string(f.sourceSize.y));
+            if (f.trimRect.x + f.trimRect.w > f.sourceSize.x ||
+                f.trimRect.y + f.trimRect.h > f.sourceSize.y) {
+                fail(p, "rectangle (x " + std::to_string(f.trimRect.x) + ", y " +
+                            std::to_string(f.trimRect.y) + ", w " + std::to_string(f.trimRect.w) +
+                            ", h " + std::to_string(f.trimRect.h) + ") lies outside sourceSize " +
+                            std::to_string(f.sourceSize.x) + "x" + std::to_string(f.sourceSize.y));
             }
         }
         if (const Json* v = optionalMember(object, "pivot")) {
@@ -172,12 +176,14 @@ public:
         return f;
     }
 
-    void checkInside(const SpriteFrame& f, const std::string& path, glm::ivec2 image, std::string_view what) const {
+    void checkInside(const SpriteFrame& f, const std::string& path, glm::ivec2 image,
+                     std::string_view what) const {
         const PixelRect& r = f.region;
         if (r.x + r.w > image.x || r.y + r.h > image.y) {
-            fail(path, "frame \"" + core::printable(f.name) + "\" (x " + std::to_string(r.x) + ", y " + std::to_string(r.y) +
-                           ", w " + std::to_string(r.w) + ", h " + std::to_string(r.h) +
-                           (f.rotated ? ", rotated" : "") + ") lies outside the " + std::to_string(image.x) + "x" +
+            fail(path, "frame \"" + core::printable(f.name) + "\" (x " + std::to_string(r.x) +
+                           ", y " + std::to_string(r.y) + ", w " + std::to_string(r.w) + ", h " +
+                           std::to_string(r.h) + (f.rotated ? ", rotated" : "") +
+                           ") lies outside the " + std::to_string(image.x) + "x" +
                            std::to_string(image.y) + " image" + std::string(what));
         }
     }
@@ -249,8 +255,10 @@ SpriteSheet SpriteSheet::fromString(std::string_view json, std::string_view name
     // Printing or copying a value recurses once per level: bound the depth before parsing.
     if (const auto deep = core::findJsonNestingBeyond(json)) {
         const core::TextPosition at = core::positionOf(json, *deep);
-        reader.fail("", "arrays and objects nest deeper than " + std::to_string(core::kMaxJsonDepth) +
-                            " levels; a sheet needs 4", at);
+        reader.fail("",
+                    "arrays and objects nest deeper than " + std::to_string(core::kMaxJsonDepth) +
+                        " levels; a sheet needs 4",
+                    at);
     }
     Json root;
     try {
@@ -269,8 +277,9 @@ SpriteSheet SpriteSheet::fromString(std::string_view json, std::string_view name
         // A number too large for a double ("1e999") is reported as out_of_range, without a position.
         std::string what = e.what();
         const std::size_t reason = what.find("] ");
-        reader.fail("", "malformed JSON: " +
-                            core::printable(reason == std::string::npos ? what : what.substr(reason + 2)));
+        reader.fail("", "malformed JSON: " + core::printable(reason == std::string::npos
+                                                                 ? what
+                                                                 : what.substr(reason + 2)));
     }
 
     SpriteSheet sheet;
@@ -309,7 +318,8 @@ SpriteSheet SpriteSheet::fromString(std::string_view json, std::string_view name
             const std::string path = "frames[" + std::to_string(i) + "]";
             const Json& filename = reader.member(frames[i], path, "filename");
             if (!filename.is_string()) {
-                reader.fail(path + ".filename", "expected a string, got " + Reader::describe(filename));
+                reader.fail(path + ".filename",
+                            "expected a string, got " + Reader::describe(filename));
             }
             add(reader.frame(frames[i], path, filename.get<std::string>()), path);
         }
@@ -329,7 +339,8 @@ const SpriteFrame& SpriteSheet::frame(std::string_view name) const {
     if (const SpriteFrame* f = find(name)) {
         return *f;
     }
-    throw core::Error("render::SpriteSheet::frame(): '" + name_ + "' has no frame \"" + core::printable(name) + "\"");
+    throw core::Error("render::SpriteSheet::frame(): '" + name_ + "' has no frame \"" +
+                      core::printable(name) + "\"");
 }
 
 std::vector<int> SpriteSheet::animationFrames(std::string_view baseName) const {
@@ -351,7 +362,8 @@ std::vector<int> SpriteSheet::animationFrames(std::string_view baseName) const {
         if (a.parts.digits.size() != b.parts.digits.size()) {
             return a.parts.digits.size() < b.parts.digits.size();
         }
-        return frames_[static_cast<std::size_t>(a.index)].name < frames_[static_cast<std::size_t>(b.index)].name;
+        return frames_[static_cast<std::size_t>(a.index)].name <
+               frames_[static_cast<std::size_t>(b.index)].name;
     });
     std::vector<int> result;
     result.reserve(entries.size());
@@ -366,7 +378,8 @@ void SpriteSheet::checkImageSize(glm::ivec2 actualSize) const {
     for (std::size_t i = 0; i < frames_.size(); ++i) {
         reader.checkInside(frames_[i], hashPath(frames_[i].name) + ".frame", actualSize,
                            " loaded from '" + imagePath_.string() + "' (meta.size says " +
-                               std::to_string(imageSize_.x) + "x" + std::to_string(imageSize_.y) + ")");
+                               std::to_string(imageSize_.x) + "x" + std::to_string(imageSize_.y) +
+                               ")");
     }
 }
 

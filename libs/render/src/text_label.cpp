@@ -20,17 +20,20 @@ constexpr const char* kCtor = "render::TextLabel";
 
 void checkStyle(const char* function, const TextStyle& style) {
     if (!std::isfinite(style.lineSpacing) || style.lineSpacing <= 0.0f) {
-        core::throwError(function, "style.lineSpacing must be > 0 and finite, got " + core::formatNumber(style.lineSpacing));
+        core::throwError(function, "style.lineSpacing must be > 0 and finite, got " +
+                                       core::formatNumber(style.lineSpacing));
     }
 }
 } // namespace
 
 TextLabel::TextLabel(const TextLabelDef& def) : def_(def) {
     if (def.pixelSize < 1 || def.pixelSize > 1024) {
-        core::throwError(kCtor, "pixelSize must be in [1, 1024], got " + std::to_string(def.pixelSize));
+        core::throwError(kCtor,
+                         "pixelSize must be in [1, 1024], got " + std::to_string(def.pixelSize));
     }
     if (!core::isFinite(def.scale) || def.scale.x <= 0.0f || def.scale.y <= 0.0f) {
-        core::throwError(kCtor, "scale must be > 0 and finite, got " + core::formatVector(def.scale));
+        core::throwError(kCtor,
+                         "scale must be > 0 and finite, got " + core::formatVector(def.scale));
     }
     core::requireFinite(kCtor, "zOffset", def.zOffset);
     checkStyle(kCtor, def.style);

@@ -90,16 +90,28 @@ TextLayout layoutText(Font& font, std::string_view utf8, const TextStyle& style)
     const float height = ascender - descender + step * static_cast<float>(lines - 1);
     float top = 0.0f;
     switch (style.vertical) {
-    case VerticalAlign::Top: top = 0.0f; break;
-    case VerticalAlign::Center: top = std::round(height * 0.5f); break;
-    case VerticalAlign::Bottom: top = height; break;
+    case VerticalAlign::Top:
+        top = 0.0f;
+        break;
+    case VerticalAlign::Center:
+        top = std::round(height * 0.5f);
+        break;
+    case VerticalAlign::Bottom:
+        top = height;
+        break;
     }
     std::vector<float> lineStart(widths.size());
     for (std::size_t i = 0; i < widths.size(); ++i) {
         switch (style.horizontal) {
-        case HorizontalAlign::Left: lineStart[i] = 0.0f; break;
-        case HorizontalAlign::Center: lineStart[i] = -std::round(widths[i] * 0.5f); break;
-        case HorizontalAlign::Right: lineStart[i] = -std::round(widths[i]); break;
+        case HorizontalAlign::Left:
+            lineStart[i] = 0.0f;
+            break;
+        case HorizontalAlign::Center:
+            lineStart[i] = -std::round(widths[i] * 0.5f);
+            break;
+        case HorizontalAlign::Right:
+            lineStart[i] = -std::round(widths[i]);
+            break;
         }
     }
 
@@ -121,9 +133,11 @@ TextLayout layoutText(Font& font, std::string_view utf8, const TextStyle& style)
         }
         const float baseline = top - ascender - step * static_cast<float>(p.line);
         GlyphQuad q;
-        q.rect.min = {lineStart[static_cast<std::size_t>(p.line)] + std::round(p.penX) + static_cast<float>(g.bearing.x),
+        q.rect.min = {lineStart[static_cast<std::size_t>(p.line)] + std::round(p.penX) +
+                          static_cast<float>(g.bearing.x),
                       baseline + static_cast<float>(g.bearing.y - g.atlasRect.h)};
-        q.rect.max = q.rect.min + glm::vec2(static_cast<float>(g.atlasRect.w), static_cast<float>(g.atlasRect.h));
+        q.rect.max = q.rect.min + glm::vec2(static_cast<float>(g.atlasRect.w),
+                                            static_cast<float>(g.atlasRect.h));
         q.atlasRect = g.atlasRect;
         q.codePoint = p.codePoint;
         q.missing = g.missing;

@@ -17,13 +17,15 @@ void checkDraw(const char* function, const TextDraw& where) {
     core::requireFinite(function, "z", where.z);
     core::requireFinite(function, "rotation", where.rotation);
     if (!(where.scale.x > 0.0f && where.scale.y > 0.0f && core::isFinite(where.scale))) {
-        core::throwError(function, "scale must be > 0 and finite, got " + core::formatVector(where.scale));
+        core::throwError(function,
+                         "scale must be > 0 and finite, got " + core::formatVector(where.scale));
     }
 }
 
 } // namespace
 
-TextRenderer::TextRenderer(Renderer& renderer, core::Logger* logger) : renderer_(renderer), logger_(logger) {}
+TextRenderer::TextRenderer(Renderer& renderer, core::Logger* logger)
+    : renderer_(renderer), logger_(logger) {}
 
 TextRenderer::~TextRenderer() {
     for (auto& [key, entry] : fonts_) {
@@ -35,7 +37,8 @@ TextRenderer::~TextRenderer() {
 
 Font* TextRenderer::font(const std::filesystem::path& path, int pixelSize) {
     if (pixelSize < 1 || pixelSize > 1024) {
-        throw core::Error("render::TextRenderer::font(): pixelSize must be in [1, 1024], got " + std::to_string(pixelSize));
+        throw core::Error("render::TextRenderer::font(): pixelSize must be in [1, 1024], got " +
+                          std::to_string(pixelSize));
     }
     const std::string name = path.string();
     if (const auto failed = errors_.find(name); failed != errors_.end()) {
@@ -46,14 +49,16 @@ Font* TextRenderer::font(const std::filesystem::path& path, int pixelSize) {
         return it->second.font.get();
     }
     try {
-        auto opened = std::make_unique<Font>(FontDef{.path = path, .pixelSize = pixelSize, .logger = logger_});
+        auto opened = std::make_unique<Font>(
+            FontDef{.path = path, .pixelSize = pixelSize, .logger = logger_});
         Font* result = opened.get();
         fonts_.emplace(key, Entry{std::move(opened), {}});
         return result;
     } catch (const core::Error& e) {
         std::string message = e.what();
         if (name != kDefaultFontPath) {
-            message += "; drawing with the default font '" + std::string(kDefaultFontPath) + "' instead";
+            message +=
+                "; drawing with the default font '" + std::string(kDefaultFontPath) + "' instead";
         } else {
             message += "; text in this font is not drawn";
         }
@@ -82,12 +87,14 @@ TextRenderer::Entry* TextRenderer::find(const Font& font) {
 TextureId TextRenderer::atlas(Font& font) {
     Entry* entry = find(font);
     if (entry == nullptr) {
-        throw core::Error("render::TextRenderer::atlas(): the font is not one of this TextRenderer's");
+        throw core::Error(
+            "render::TextRenderer::atlas(): the font is not one of this TextRenderer's");
     }
     Atlas& atlas = entry->atlas;
     const glm::ivec2 size = font.atlasSize();
     const auto pixels = font.atlasPixels();
-    if (atlas.texture.isNull() || atlas.generation != font.atlasGeneration() || !renderer_.isValid(atlas.texture)) {
+    if (atlas.texture.isNull() || atlas.generation != font.atlasGeneration() ||
+        !renderer_.isValid(atlas.texture)) {
         if (!atlas.texture.isNull()) {
             renderer_.destroyTexture(atlas.texture);
         }
@@ -103,8 +110,10 @@ TextureId TextRenderer::atlas(Font& font) {
         scratch_.resize(rowBytes * static_cast<std::size_t>(dirty.h));
         for (int row = 0; row < dirty.h; ++row) {
             std::memcpy(scratch_.data() + static_cast<std::size_t>(row) * rowBytes,
-                        pixels.data() + (static_cast<std::size_t>(dirty.y + row) * static_cast<std::size_t>(size.x) +
-                                         static_cast<std::size_t>(dirty.x)) * 4u,
+                        pixels.data() + (static_cast<std::size_t>(dirty.y + row) *
+                                             static_cast<std::size_t>(size.x) +
+                                         static_cast<std::size_t>(dirty.x)) *
+                                            4u,
                         rowBytes);
         }
         renderer_.updateTexture(atlas.texture, {dirty.x, dirty.y}, {dirty.w, dirty.h}, scratch_);
@@ -113,7 +122,8 @@ TextureId TextRenderer::atlas(Font& font) {
     return atlas.texture;
 }
 
-TextLayout TextRenderer::draw(Font& font, std::string_view utf8, const TextStyle& style, const TextDraw& where) {
+TextLayout TextRenderer::draw(Font& font, std::string_view utf8, const TextStyle& style,
+                              const TextDraw& where) {
     checkDraw("render::TextRenderer::draw()", where);
     TextLayout layout = layoutText(font, utf8, style);
     submit(font, layout, where);
@@ -139,10 +149,14 @@ void TextRenderer::submit(Font& font, const TextLayout& layout, const TextDraw& 
     for (const GlyphQuad& g : layout.quads) {
         // The quad's bottom-left corner, scaled then rotated about the anchor.
         const glm::vec2 corner = g.rect.min * where.scale;
-        quad.position = where.position + glm::vec2(c * corner.x - s * corner.y, s * corner.x + c * corner.y);
+        quad.position =
+            where.position + glm::vec2(c * corner.x - s * corner.y, s * corner.x + c * corner.y);
         quad.size = (g.rect.max - g.rect.min) * where.scale;
-        quad.uv = Rect{glm::vec2(static_cast<float>(g.atlasRect.x), static_cast<float>(g.atlasRect.y)) / atlasSize,
-                       glm::vec2(static_cast<float>(g.atlasRect.w), static_cast<float>(g.atlasRect.h)) / atlasSize};
+        quad.uv =
+            Rect{glm::vec2(static_cast<float>(g.atlasRect.x), static_cast<float>(g.atlasRect.y)) /
+                     atlasSize,
+                 glm::vec2(static_cast<float>(g.atlasRect.w), static_cast<float>(g.atlasRect.h)) /
+                     atlasSize};
         renderer_.submit(quad);
     }
 }

@@ -24,7 +24,8 @@ void applyFilter(const TextureDef& def) {
     GLint mag = def.filter == TextureFilter::Nearest ? GL_NEAREST : GL_LINEAR;
     GLint min = mag;
     if (def.mipmaps) {
-        min = def.filter == TextureFilter::Nearest ? GL_NEAREST_MIPMAP_NEAREST : GL_LINEAR_MIPMAP_LINEAR;
+        min = def.filter == TextureFilter::Nearest ? GL_NEAREST_MIPMAP_NEAREST
+                                                   : GL_LINEAR_MIPMAP_LINEAR;
     }
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, mag);
@@ -42,7 +43,8 @@ Image makeCheckerImage() {
     for (int y = 0; y < 64; ++y) {
         for (int x = 0; x < 64; ++x) {
             bool magenta = ((x / 8) + (y / 8)) % 2 == 0;
-            std::uint8_t* p = image.pixels.data() + (static_cast<std::size_t>(y) * 64 + static_cast<std::size_t>(x)) * 4;
+            std::uint8_t* p = image.pixels.data() +
+                              (static_cast<std::size_t>(y) * 64 + static_cast<std::size_t>(x)) * 4;
             p[0] = magenta ? 255 : 0;
             p[1] = 0;
             p[2] = magenta ? 255 : 0;
@@ -90,8 +92,8 @@ std::uint32_t TexturePool::add(const Image& image, const TextureDef& def, Textur
     glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
     // Image rows run from the top; uploaded in that order, texture coordinate t equals the
     // image's top-left-origin v, so UV rectangles need no flip anywhere.
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                 image.pixels.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, image.pixels.data());
     applyFilter(def);
     if (def.mipmaps) {
         glGenerateMipmap(GL_TEXTURE_2D);
@@ -141,10 +143,12 @@ TextureId TexturePool::load(const std::filesystem::path& path, const TextureDef&
 
 TextureId TexturePool::create(const Image& image, const TextureDef& def, const char* function) {
     if (image.width < 1 || image.height < 1 ||
-        image.pixels.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4) {
-        core::throwError(function, "image must be at least 1 x 1 with width * height * 4 bytes, got " +
-                           std::to_string(image.width) + " x " + std::to_string(image.height) + " with " +
-                           std::to_string(image.pixels.size()) + " bytes");
+        image.pixels.size() !=
+            static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4) {
+        core::throwError(function,
+                         "image must be at least 1 x 1 with width * height * 4 bytes, got " +
+                             std::to_string(image.width) + " x " + std::to_string(image.height) +
+                             " with " + std::to_string(image.pixels.size()) + " bytes");
     }
     if (const std::string why = tooLarge(image); !why.empty()) {
         core::throwError(function, why);
@@ -162,32 +166,41 @@ std::string TexturePool::tooLarge(const Image& image) const {
 }
 
 bool TexturePool::isValid(TextureId id) const noexcept {
-    return core::findSlot(id, facts_.size(), [this](std::uint32_t i) {
-               return slots_[i].texture != 0 ? facts_[i].generation : std::uint16_t{0};
-           }).has_value();
+    return core::findSlot(id, facts_.size(),
+                          [this](std::uint32_t i) {
+                              return slots_[i].texture != 0 ? facts_[i].generation
+                                                            : std::uint16_t{0};
+                          })
+        .has_value();
 }
 
 const TextureInfo& TexturePool::info(TextureId id, const char* function) const {
     if (!isValid(id)) {
-        core::throwError(function, id.isNull() ? "null texture id" : "stale texture id (index " + std::to_string(id.index()) + ")");
+        core::throwError(function, id.isNull() ? "null texture id"
+                                               : "stale texture id (index " +
+                                                     std::to_string(id.index()) + ")");
     }
     return slots_[id.index()].info;
 }
 
-bool TexturePool::update(TextureId id, glm::ivec2 offset, glm::ivec2 size, std::span<const std::uint8_t> rgba) {
+bool TexturePool::update(TextureId id, glm::ivec2 offset, glm::ivec2 size,
+                         std::span<const std::uint8_t> rgba) {
     constexpr const char* fn = "render::Renderer::updateTexture()";
     const TextureInfo& current = info(id, fn);
     if (id.index() < 2) {
         core::throwError(fn, "the built-in textures cannot be changed");
     }
-    if (size.x < 0 || size.y < 0 || offset.x < 0 || offset.y < 0 || offset.x + size.x > current.size.x ||
-        offset.y + size.y > current.size.y) {
-        core::throwError(fn, "rectangle at " + core::formatVector(offset) + " of size " + core::formatVector(size) + " is outside the " +
-                     std::to_string(current.size.x) + " x " + std::to_string(current.size.y) + " texture");
+    if (size.x < 0 || size.y < 0 || offset.x < 0 || offset.y < 0 ||
+        offset.x + size.x > current.size.x || offset.y + size.y > current.size.y) {
+        core::throwError(fn, "rectangle at " + core::formatVector(offset) + " of size " +
+                                 core::formatVector(size) + " is outside the " +
+                                 std::to_string(current.size.x) + " x " +
+                                 std::to_string(current.size.y) + " texture");
     }
     std::size_t needed = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y) * 4;
     if (rgba.size() < needed) {
-        core::throwError(fn, "expected " + std::to_string(needed) + " bytes of pixels, got " + std::to_string(rgba.size()));
+        core::throwError(fn, "expected " + std::to_string(needed) + " bytes of pixels, got " +
+                                 std::to_string(rgba.size()));
     }
     if (size.x == 0 || size.y == 0) {
         return false;
@@ -196,7 +209,8 @@ bool TexturePool::update(TextureId id, glm::ivec2 offset, glm::ivec2 size, std::
     glBindTexture(GL_TEXTURE_2D, s.texture);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, offset.x, offset.y, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    glTexSubImage2D(GL_TEXTURE_2D, 0, offset.x, offset.y, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE,
+                    rgba.data());
     if (s.info.def.mipmaps) {
         glGenerateMipmap(GL_TEXTURE_2D);
     }

@@ -35,15 +35,22 @@ public:
     TextureId load(const std::filesystem::path& path, const TextureDef& def);
     TextureId create(const Image& image, const TextureDef& def, const char* function);
     // Returns true when the texture's translucency changed (the batcher must re-sort).
-    bool update(TextureId id, glm::ivec2 offset, glm::ivec2 size, std::span<const std::uint8_t> rgba);
+    bool update(TextureId id, glm::ivec2 offset, glm::ivec2 size,
+                std::span<const std::uint8_t> rgba);
     bool destroy(TextureId id);
     [[nodiscard]] bool isValid(TextureId id) const noexcept;
     [[nodiscard]] const TextureInfo& info(TextureId id, const char* function) const;
     [[nodiscard]] TextureId idOf(std::uint32_t slot) const noexcept;
     /// Slots in use, the white and placeholder slots included.
-    [[nodiscard]] std::uint32_t slotCount() const noexcept { return static_cast<std::uint32_t>(slots_.size()); }
-    [[nodiscard]] bool slotAlive(std::uint32_t slot) const noexcept { return slots_[slot].texture != 0; }
-    [[nodiscard]] GLuint glTexture(std::uint32_t slot) const noexcept { return slots_[slot].texture; }
+    [[nodiscard]] std::uint32_t slotCount() const noexcept {
+        return static_cast<std::uint32_t>(slots_.size());
+    }
+    [[nodiscard]] bool slotAlive(std::uint32_t slot) const noexcept {
+        return slots_[slot].texture != 0;
+    }
+    [[nodiscard]] GLuint glTexture(std::uint32_t slot) const noexcept {
+        return slots_[slot].texture;
+    }
 
 private:
     struct Slot {

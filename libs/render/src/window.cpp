@@ -18,7 +18,8 @@ constexpr const char* kCtor = "render::Window";
 
 void validate(const WindowDef& def) {
     if (def.mode != WindowMode::Borderless && (def.size.x < 1 || def.size.y < 1)) {
-        core::throwError(kCtor, "size must be >= 1 in each axis, got " + core::formatVector(def.size));
+        core::throwError(kCtor,
+                         "size must be >= 1 in each axis, got " + core::formatVector(def.size));
     }
     if (def.samples < 0 || def.samples > 16) {
         core::throwError(kCtor, "samples must be in [0, 16], got " + std::to_string(def.samples));
@@ -38,7 +39,8 @@ bool hasExtension(const char* name) {
     GLint count = 0;
     glGetIntegerv(GL_NUM_EXTENSIONS, &count);
     for (GLint i = 0; i < count; ++i) {
-        const auto* ext = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+        const auto* ext =
+            reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
         if (ext != nullptr && std::strcmp(ext, name) == 0) {
             return true;
         }
@@ -73,7 +75,8 @@ Window::Window(const WindowDef& def)
     if (def.mode != WindowMode::Windowed) {
         monitor = glfwGetPrimaryMonitor();
         if (monitor == nullptr) {
-            core::throwError(kCtor, "no monitor for a fullscreen or borderless window: " + glfwMessage());
+            core::throwError(kCtor,
+                             "no monitor for a fullscreen or borderless window: " + glfwMessage());
         }
         if (def.mode == WindowMode::Borderless) {
             const GLFWvidmode* video = glfwGetVideoMode(monitor);
@@ -87,7 +90,8 @@ Window::Window(const WindowDef& def)
     }
     window_ = glfwCreateWindow(size.x, size.y, def.title.c_str(), monitor, nullptr);
     if (window_ == nullptr) {
-        core::throwError(kCtor, "glfwCreateWindow() failed (no OpenGL 3.3 core context?): " + glfwMessage());
+        core::throwError(kCtor, "glfwCreateWindow() failed (no OpenGL 3.3 core context?): " +
+                                    glfwMessage());
     }
     glfwMakeContextCurrent(window_);
     glewExperimental = GL_TRUE;
@@ -137,7 +141,8 @@ glm::vec2 Window::contentScale() const noexcept {
 
 void Window::setSize(glm::ivec2 size) {
     if (size.x < 1 || size.y < 1) {
-        core::throwError("render::Window::setSize()", "size must be >= 1 in each axis, got " + core::formatVector(size));
+        core::throwError("render::Window::setSize()",
+                         "size must be >= 1 in each axis, got " + core::formatVector(size));
     }
     glfwSetWindowSize(window_, size.x, size.y);
 }
@@ -155,7 +160,9 @@ void Window::setVsync(bool on) {
 
 void Window::show() { glfwShowWindow(window_); }
 void Window::hide() { glfwHideWindow(window_); }
-bool Window::visible() const noexcept { return glfwGetWindowAttrib(window_, GLFW_VISIBLE) == GLFW_TRUE; }
+bool Window::visible() const noexcept {
+    return glfwGetWindowAttrib(window_, GLFW_VISIBLE) == GLFW_TRUE;
+}
 bool Window::shouldClose() const noexcept { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
 void Window::requestClose() noexcept { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 

@@ -89,7 +89,8 @@ TEST(Camera, ConversionsFollowTheDefinition) {
 }
 
 TEST(Camera, RoundTripsEveryDirection) {
-    for (ScreenFit fit : {ScreenFit::Expand, ScreenFit::WidthFit, ScreenFit::HeightFit, ScreenFit::BestFit}) {
+    for (ScreenFit fit :
+         {ScreenFit::Expand, ScreenFit::WidthFit, ScreenFit::HeightFit, ScreenFit::BestFit}) {
         CameraDef def;
         def.fit = fit;
         def.referenceSize = {320.0f, 180.0f};
@@ -98,7 +99,8 @@ TEST(Camera, RoundTripsEveryDirection) {
         def.zoom = 1.7f;
         Camera camera(def);
         camera.setScreenSize({257, 391});
-        for (glm::vec2 p : {glm::vec2(0.0f), glm::vec2(100.0f, -40.0f), glm::vec2(-250.5f, 33.3f)}) {
+        for (glm::vec2 p :
+             {glm::vec2(0.0f), glm::vec2(100.0f, -40.0f), glm::vec2(-250.5f, 33.3f)}) {
             glm::vec2 w = camera.screenToWorld(camera.worldToScreen(p));
             EXPECT_NEAR(w.x, p.x, 1e-4f);
             EXPECT_NEAR(w.y, p.y, 1e-4f);

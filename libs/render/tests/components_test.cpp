@@ -64,7 +64,8 @@ TEST_F(RenderComponents, SpriteFollowsItsObjectThroughTheParentChain) {
         parent->addChild(*child);
         parent->setPosition(glm::vec2(-10.0f, 4.0f));
         child->setPosition(glm::vec2(6.0f, 0.0f));
-        sprite = child->addComponent<SpriteRenderer>(SpriteRendererDef{.size = {4.0f, 4.0f}, .tint = kRed});
+        sprite = child->addComponent<SpriteRenderer>(
+            SpriteRendererDef{.size = {4.0f, 4.0f}, .tint = kRed});
     });
     Image first = frame(0.0, "first");
     ASSERT_NE(sprite, nullptr);
@@ -130,7 +131,8 @@ TEST_F(RenderComponents, AnimatedSpriteShowsTheFrameItsTimeSays) {
         Image image = frame(dts[i], "step" + std::to_string(i));
         ASSERT_NE(animated, nullptr);
         EXPECT_TRUE(near(pixel(image, 32, 32), expected[i], 0))
-            << "step " << i << ": " << str(pixel(image, 32, 32)) << ", frame " << animated->animation().frame();
+            << "step " << i << ": " << str(pixel(image, 32, 32)) << ", frame "
+            << animated->animation().frame();
     }
     EXPECT_EQ(animated->animation().frame(), 1);
 }
@@ -140,15 +142,18 @@ TEST_F(RenderComponents, AnimatedSpriteBadFieldsAreErrors) {
         AnimatedSpriteRenderer bad(AnimatedSpriteRendererDef{});
         FAIL() << "expected an error";
     } catch (const core::Error& error) {
-        EXPECT_THAT(error.what(), HasSubstr("render::AnimatedSpriteRenderer: frames must not be empty"));
+        EXPECT_THAT(error.what(),
+                    HasSubstr("render::AnimatedSpriteRenderer: frames must not be empty"));
     }
     AnimatedSpriteRendererDef outside;
-    outside.frames = {AnimationFrame{Rect{{0.0f, 0.0f}, {0.5f, 1.0f}}}, AnimationFrame{Rect{{0.75f, 0.0f}, {0.5f, 1.0f}}}};
+    outside.frames = {AnimationFrame{Rect{{0.0f, 0.0f}, {0.5f, 1.0f}}},
+                      AnimationFrame{Rect{{0.75f, 0.0f}, {0.5f, 1.0f}}}};
     try {
         AnimatedSpriteRenderer bad(outside);
         FAIL() << "expected an error";
     } catch (const core::Error& error) {
-        EXPECT_THAT(error.what(), HasSubstr("frames[1].uv must lie in [0, 1], got min (0.75, 0) size (0.5, 1)"));
+        EXPECT_THAT(error.what(),
+                    HasSubstr("frames[1].uv must lie in [0, 1], got min (0.75, 0) size (0.5, 1)"));
     }
 }
 
@@ -229,8 +234,9 @@ TEST_F(RenderComponents, AnimatedSpriteShowsRotatedSheetFramesUpright) {
                     want = quadrant(7 - (x - 16) / 4, (23 - y) / 4);
                 }
                 if (!near(pixel(*image, x, y), want, 0) && ++wrong <= 5) {
-                    ADD_FAILURE() << (image == &upright ? "upright" : "turned") << " pixel (" << x << ", " << y
-                                  << ") is " << str(pixel(*image, x, y)) << ", expected " << str(want);
+                    ADD_FAILURE() << (image == &upright ? "upright" : "turned") << " pixel (" << x
+                                  << ", " << y << ") is " << str(pixel(*image, x, y))
+                                  << ", expected " << str(want);
                 }
             }
         }
@@ -246,13 +252,15 @@ TEST_F(RenderComponents, CameraComponentViewsFromItsObject) {
     start([&](core::Scene& s) {
         core::GameObject& target = s.createGameObject();
         target.setPosition(glm::vec2(20.0f, 10.0f));
-        target.addComponent<SpriteRenderer>(SpriteRendererDef{.size = {6.0f, 6.0f}, .tint = kGreen});
+        target.addComponent<SpriteRenderer>(
+            SpriteRendererDef{.size = {6.0f, 6.0f}, .tint = kGreen});
         core::GameObject& rig = s.createGameObject();
         core::GameObject& eye = s.createGameObject();
         rig.addChild(eye);
         rig.setPosition(glm::vec2(15.0f, 10.0f));
         eye.setPosition(glm::vec2(5.0f, 0.0f));
-        camera = eye.addComponent<CameraComponent>(CameraComponentDef{.referenceSize = {64.0f, 64.0f}});
+        camera =
+            eye.addComponent<CameraComponent>(CameraComponentDef{.referenceSize = {64.0f, 64.0f}});
     });
     Image viewed = frame(0.0, "component");
     ASSERT_NE(camera, nullptr);

@@ -55,7 +55,8 @@ void pngChunk(std::vector<char>& png, const char* type, const std::vector<char>&
 // A PNG with 16 bits per channel (colour type 0 grey, 4 grey + alpha, 2 RGB, 6 RGBA), written
 // by hand: its pixel data in one stored (uncompressed) deflate block. `samples` holds width *
 // height * channels values, rows from the top.
-std::vector<char> png16(int width, int height, int colourType, const std::vector<std::uint16_t>& samples) {
+std::vector<char> png16(int width, int height, int colourType,
+                        const std::vector<std::uint16_t>& samples) {
     std::vector<char> rows;
     const std::size_t perRow = samples.size() / static_cast<std::size_t>(height);
     for (int y = 0; y < height; ++y) {
@@ -106,8 +107,9 @@ std::vector<char> bmp32(int width, int height, const std::vector<std::uint8_t>& 
     putLittle(bmp, 0, 4);
     putLittle(bmp, 0, 4);
     for (int i = 0; i < width * height; ++i) {
-        bmp.insert(bmp.end(), {static_cast<char>(200), static_cast<char>(100), static_cast<char>(50),
-                               static_cast<char>(fourth[static_cast<std::size_t>(i)])});
+        bmp.insert(bmp.end(),
+                   {static_cast<char>(200), static_cast<char>(100), static_cast<char>(50),
+                    static_cast<char>(fourth[static_cast<std::size_t>(i)])});
     }
     return bmp;
 }
@@ -117,7 +119,8 @@ std::vector<char> quadrantWithOrientation(std::uint16_t orientation) {
     std::vector<char> jpeg = readBytes(kData / "quadrant.jpg");
     // SOI, then APP0 (FF E0, length): the EXIF segment goes right after it.
     const std::size_t app0End =
-        4 + ((static_cast<std::size_t>(static_cast<std::uint8_t>(jpeg[4])) << 8) | static_cast<std::uint8_t>(jpeg[5]));
+        4 + ((static_cast<std::size_t>(static_cast<std::uint8_t>(jpeg[4])) << 8) |
+             static_cast<std::uint8_t>(jpeg[5]));
     std::vector<char> exif = {'\xFF', '\xE1'};
     putBig(exif, 2 + 6 + 8 + 2 + 12 + 4, 2);
     exif.insert(exif.end(), {'E', 'x', 'i', 'f', 0, 0, 'M', 'M', 0, 42});
@@ -146,7 +149,8 @@ std::filesystem::path dir() {
 
 TEST(ImageFormats, SixteenBitPngsKeepTheHighByte) {
     const std::filesystem::path grey = dir() / "grey16.png";
-    writeBytes(grey, png16(4, 2, 0, {0x0000, 0x8000, 0xFFFF, 0x12FF, 0x4000, 0x4001, 0xC0DE, 0x0100}));
+    writeBytes(grey,
+               png16(4, 2, 0, {0x0000, 0x8000, 0xFFFF, 0x12FF, 0x4000, 0x4001, 0xC0DE, 0x0100}));
     const Image g = loadImage(grey);
     ASSERT_EQ(g.width, 4);
     ASSERT_EQ(g.height, 2);
@@ -160,7 +164,8 @@ TEST(ImageFormats, SixteenBitPngsKeepTheHighByte) {
     }
 
     const std::filesystem::path rgba = dir() / "rgba16.png";
-    writeBytes(rgba, png16(2, 1, 6, {0xFF00, 0x8000, 0x0000, 0xFFFF, 0x0000, 0x00FF, 0xFFFF, 0x7FFF}));
+    writeBytes(rgba,
+               png16(2, 1, 6, {0xFF00, 0x8000, 0x0000, 0xFFFF, 0x0000, 0x00FF, 0xFFFF, 0x7FFF}));
     const Image c = loadImage(rgba);
     EXPECT_TRUE(at(c, 0, 0) == (Color{255, 128, 0, 255}));
     EXPECT_TRUE(at(c, 1, 0) == (Color{0, 0, 255, 127}));
@@ -194,7 +199,8 @@ TEST(ImageFormats, JpegsAreTurnedAsTheirExifOrientationSays) {
     };
     for (const Case& c : {Case{1, 2, 2}, Case{3, 13, 13}, Case{6, 13, 2}, Case{8, 2, 13}}) {
         SCOPED_TRACE(c.orientation);
-        const std::filesystem::path file = dir() / ("exif" + std::to_string(c.orientation) + ".jpg");
+        const std::filesystem::path file =
+            dir() / ("exif" + std::to_string(c.orientation) + ".jpg");
         writeBytes(file, quadrantWithOrientation(c.orientation));
         const Image image = loadImage(file);
         ASSERT_EQ(image.width, 16);
@@ -202,7 +208,8 @@ TEST(ImageFormats, JpegsAreTurnedAsTheirExifOrientationSays) {
         for (int y : {2, 13}) {
             for (int x : {2, 13}) {
                 const bool red = x == c.redX && y == c.redY;
-                EXPECT_TRUE(near(at(image, x, y), red ? kRed : kBlue, 40)) << x << ", " << y << ": " << str(at(image, x, y));
+                EXPECT_TRUE(near(at(image, x, y), red ? kRed : kBlue, 40))
+                    << x << ", " << y << ": " << str(at(image, x, y));
             }
         }
     }
@@ -228,9 +235,10 @@ TEST(ImageFormats, AnImageLargerThanTheGpuTakesIsAnErrorAndDrawsThePlaceholder) 
     const TextureId texture = scene.renderer.loadTexture(file);
     const TextureInfo& info = scene.renderer.textureInfo(texture);
     EXPECT_TRUE(info.placeholder);
-    const std::string expected = "render::Renderer::loadTexture(): " + file.string() +
-                                 ": the image is 16400 x 4 pixels, larger than this GPU's limit of 16384 x 16384 "
-                                 "(GL_MAX_TEXTURE_SIZE)";
+    const std::string expected =
+        "render::Renderer::loadTexture(): " + file.string() +
+        ": the image is 16400 x 4 pixels, larger than this GPU's limit of 16384 x 16384 "
+        "(GL_MAX_TEXTURE_SIZE)";
     EXPECT_EQ(info.error, expected);
     ASSERT_EQ(logged.size(), 1u);
     EXPECT_EQ(logged[0], expected + " (drawing the placeholder)");
@@ -243,7 +251,8 @@ TEST(ImageFormats, AnImageLargerThanTheGpuTakesIsAnErrorAndDrawsThePlaceholder) 
         static_cast<void>(scene.renderer.createTexture(wide));
         ADD_FAILURE() << "no error";
     } catch (const core::Error& e) {
-        EXPECT_THAT(e.what(), HasSubstr("render::Renderer::createTexture(): the image is 16400 x 4 pixels"));
+        EXPECT_THAT(e.what(),
+                    HasSubstr("render::Renderer::createTexture(): the image is 16400 x 4 pixels"));
     }
 }
 

@@ -60,7 +60,8 @@ inline void writeBytes(const std::filesystem::path& path, const std::vector<char
 // window's own framebuffer when `offscreen` is false).
 struct Scene {
     Scene(Path path, glm::ivec2 size, bool offscreen = true, core::Logger* logger = nullptr)
-        : window(WindowDef{.title = "e2d render test", .size = size, .vsync = false, .visible = false}),
+        : window(WindowDef{
+              .title = "e2d render test", .size = size, .vsync = false, .visible = false}),
           renderer(window, RendererDef{.offscreenSize = offscreen ? size : glm::ivec2(0),
                                        .forceGl33 = path == Path::Gl33,
                                        .logger = logger}) {}
@@ -91,8 +92,8 @@ inline bool near(Color a, Color b, int tolerance = 1) {
 }
 
 inline std::string str(Color c) {
-    return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ", " +
-           std::to_string(c.a) + ")";
+    return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) +
+           ", " + std::to_string(c.a) + ")";
 }
 
 // A camera whose world units are screen pixels on a `size` screen, world (0, 0) at the centre.

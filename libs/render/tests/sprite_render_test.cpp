@@ -23,12 +23,15 @@ class SpriteRender : public testing::TestWithParam<Path> {};
 // under pixelCamera(64 x 64): world (0, 0) is screen (32, 32), one unit one pixel.
 struct PixelRect {
     int x0, y0, x1, y1;
-    [[nodiscard]] bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+    [[nodiscard]] bool contains(int x, int y) const {
+        return x >= x0 && x < x1 && y >= y0 && y < y1;
+    }
 };
 
 TEST_P(SpriteRender, PathIsTheOneAskedFor) {
     Scene scene(GetParam(), {16, 16});
-    EXPECT_EQ(scene.renderer.persistentMapping(), GetParam() == Path::Gl44 && scene.window.context().bufferStorage);
+    EXPECT_EQ(scene.renderer.persistentMapping(),
+              GetParam() == Path::Gl44 && scene.window.context().bufferStorage);
     if (GetParam() == Path::Gl44) {
         // llvmpipe offers buffer storage: the 4.4 path must really be exercised here.
         EXPECT_TRUE(scene.renderer.persistentMapping()) << scene.window.context().version;
@@ -38,8 +41,8 @@ TEST_P(SpriteRender, PathIsTheOneAskedFor) {
 TEST_P(SpriteRender, RedSpriteCoversExactlyItsPixels) {
     Scene scene(GetParam(), {64, 64});
     Camera camera = pixelCamera({64, 64});
-    scene.renderer.createSprite(SpriteDef{.position = {-12.0f, 4.0f}, .size = {10.0f, 6.0f}, .pivot = {0.0f, 0.0f},
-                                          .tint = kRed});
+    scene.renderer.createSprite(SpriteDef{
+        .position = {-12.0f, 4.0f}, .size = {10.0f, 6.0f}, .pivot = {0.0f, 0.0f}, .tint = kRed});
     Image image = scene.frame(camera);
     PixelRect rect{32 - 12, 32 + 4, 32 - 12 + 10, 32 + 4 + 6};
     int wrong = 0;
@@ -48,8 +51,9 @@ TEST_P(SpriteRender, RedSpriteCoversExactlyItsPixels) {
             Color expected = rect.contains(x, y) ? kRed : kBlack;
             if (!near(pixel(image, x, y), expected, 0)) {
                 ++wrong;
-                ADD_FAILURE_AT(__FILE__, __LINE__) << "pixel (" << x << ", " << y << ") is " << str(pixel(image, x, y))
-                                                   << ", expected " << str(expected);
+                ADD_FAILURE_AT(__FILE__, __LINE__)
+                    << "pixel (" << x << ", " << y << ") is " << str(pixel(image, x, y))
+                    << ", expected " << str(expected);
                 if (wrong > 5) {
                     return;
                 }
@@ -68,11 +72,15 @@ TEST_P(SpriteRender, EqualZDrawsInCreationOrderInBothPasses) {
     Scene scene(GetParam(), {32, 32});
     Camera camera = pixelCamera({32, 32});
     // Opaque: red, then green over its right half.
-    scene.renderer.createSprite(SpriteDef{.position = {-8.0f, 8.0f}, .size = {12.0f, 8.0f}, .tint = kRed});
-    scene.renderer.createSprite(SpriteDef{.position = {-2.0f, 8.0f}, .size = {12.0f, 8.0f}, .tint = kGreen});
+    scene.renderer.createSprite(
+        SpriteDef{.position = {-8.0f, 8.0f}, .size = {12.0f, 8.0f}, .tint = kRed});
+    scene.renderer.createSprite(
+        SpriteDef{.position = {-2.0f, 8.0f}, .size = {12.0f, 8.0f}, .tint = kGreen});
     // Translucent (alpha 254): blue, then red over its right half.
-    scene.renderer.createSprite(SpriteDef{.position = {-8.0f, -8.0f}, .size = {12.0f, 8.0f}, .tint = {0, 0, 255, 254}});
-    scene.renderer.createSprite(SpriteDef{.position = {-2.0f, -8.0f}, .size = {12.0f, 8.0f}, .tint = {255, 0, 0, 254}});
+    scene.renderer.createSprite(
+        SpriteDef{.position = {-8.0f, -8.0f}, .size = {12.0f, 8.0f}, .tint = {0, 0, 255, 254}});
+    scene.renderer.createSprite(
+        SpriteDef{.position = {-2.0f, -8.0f}, .size = {12.0f, 8.0f}, .tint = {255, 0, 0, 254}});
     Image image = scene.frame(camera);
     // Overlap of the top pair is x in [-8, -4] world, i.e. screen x 10..11 at y 24.
     EXPECT_TRUE(near(pixel(image, 11, 24), kGreen, 0)) << str(pixel(image, 11, 24));
@@ -87,13 +95,15 @@ TEST_P(SpriteRender, HalfAlphaOverBlueBlends) {
     Scene scene(GetParam(), {32, 32});
     Camera camera = pixelCamera({32, 32});
     scene.renderer.createSprite(SpriteDef{.z = 0.0f, .size = {32.0f, 32.0f}, .tint = kBlue});
-    scene.renderer.createSprite(SpriteDef{.z = 1.0f, .size = {8.0f, 8.0f}, .tint = {255, 0, 0, 128}});
+    scene.renderer.createSprite(
+        SpriteDef{.z = 1.0f, .size = {8.0f, 8.0f}, .tint = {255, 0, 0, 128}});
     Image image = scene.frame(camera);
     // Straight alpha: src * a + dst * (1 - a), a = 128 / 255.
     float a = 128.0f / 255.0f;
     Color expected{static_cast<std::uint8_t>(std::lround(255.0f * a)), 0,
                    static_cast<std::uint8_t>(std::lround(255.0f * (1.0f - a))), 255};
-    EXPECT_TRUE(near(pixel(image, 16, 16), expected)) << str(pixel(image, 16, 16)) << " vs " << str(expected);
+    EXPECT_TRUE(near(pixel(image, 16, 16), expected))
+        << str(pixel(image, 16, 16)) << " vs " << str(expected);
     EXPECT_TRUE(near(pixel(image, 2, 2), kBlue, 0));
     EXPECT_EQ(scene.renderer.stats().opaqueBatches, 1);
     EXPECT_EQ(scene.renderer.stats().translucentBatches, 1);
@@ -111,15 +121,23 @@ TEST_P(SpriteRender, ZOrderDecidesOverlapInBothPasses) {
             float greenZ = redInFront ? 1.0f : 3.0f;
             // The front one is created first, so drawing in creation order would be wrong.
             if (redInFront) {
-                scene.renderer.createSprite(
-                    SpriteDef{.position = {-4.0f, 0.0f}, .z = redZ, .size = {12.0f, 12.0f}, .tint = {255, 0, 0, alpha}});
-                scene.renderer.createSprite(
-                    SpriteDef{.position = {4.0f, 0.0f}, .z = greenZ, .size = {12.0f, 12.0f}, .tint = {0, 255, 0, alpha}});
+                scene.renderer.createSprite(SpriteDef{.position = {-4.0f, 0.0f},
+                                                      .z = redZ,
+                                                      .size = {12.0f, 12.0f},
+                                                      .tint = {255, 0, 0, alpha}});
+                scene.renderer.createSprite(SpriteDef{.position = {4.0f, 0.0f},
+                                                      .z = greenZ,
+                                                      .size = {12.0f, 12.0f},
+                                                      .tint = {0, 255, 0, alpha}});
             } else {
-                scene.renderer.createSprite(
-                    SpriteDef{.position = {4.0f, 0.0f}, .z = greenZ, .size = {12.0f, 12.0f}, .tint = {0, 255, 0, alpha}});
-                scene.renderer.createSprite(
-                    SpriteDef{.position = {-4.0f, 0.0f}, .z = redZ, .size = {12.0f, 12.0f}, .tint = {255, 0, 0, alpha}});
+                scene.renderer.createSprite(SpriteDef{.position = {4.0f, 0.0f},
+                                                      .z = greenZ,
+                                                      .size = {12.0f, 12.0f},
+                                                      .tint = {0, 255, 0, alpha}});
+                scene.renderer.createSprite(SpriteDef{.position = {-4.0f, 0.0f},
+                                                      .z = redZ,
+                                                      .size = {12.0f, 12.0f},
+                                                      .tint = {255, 0, 0, alpha}});
             }
             Image image = scene.frame(camera, std::string(translucent ? "translucent" : "opaque") +
                                                   (redInFront ? "-red-front" : "-green-front"));
@@ -133,14 +151,16 @@ TEST_P(SpriteRender, ZOrderDecidesOverlapInBothPasses) {
                 float back = 255.0f * a;
                 float front = 255.0f * a;
                 float behind = back * (1.0f - a);
-                expected = redInFront ? Color{static_cast<std::uint8_t>(std::lround(front)),
-                                              static_cast<std::uint8_t>(std::lround(behind)), 0, 255}
-                                      : Color{static_cast<std::uint8_t>(std::lround(behind)),
-                                              static_cast<std::uint8_t>(std::lround(front)), 0, 255};
+                expected = redInFront
+                               ? Color{static_cast<std::uint8_t>(std::lround(front)),
+                                       static_cast<std::uint8_t>(std::lround(behind)), 0, 255}
+                               : Color{static_cast<std::uint8_t>(std::lround(behind)),
+                                       static_cast<std::uint8_t>(std::lround(front)), 0, 255};
             }
             EXPECT_TRUE(near(overlap, expected, 2))
-                << (translucent ? "translucent" : "opaque") << (redInFront ? " red front" : " green front") << ": "
-                << str(overlap) << " vs " << str(expected);
+                << (translucent ? "translucent" : "opaque")
+                << (redInFront ? " red front" : " green front") << ": " << str(overlap) << " vs "
+                << str(expected);
             EXPECT_EQ(scene.renderer.stats().drawCalls, scene.renderer.stats().batches);
         }
     }
@@ -152,8 +172,10 @@ TEST_P(SpriteRender, TranslucentBehindOpaqueIsHidden) {
     Scene scene(GetParam(), {32, 32});
     Camera camera = pixelCamera({32, 32});
     scene.renderer.createSprite(SpriteDef{.z = 2.0f, .size = {8.0f, 8.0f}, .tint = kBlue});
-    scene.renderer.createSprite(SpriteDef{.position = {-6.0f, 0.0f}, .z = 1.0f, .size = {8.0f, 4.0f}, .tint = {255, 0, 0, 128}});
-    scene.renderer.createSprite(SpriteDef{.position = {6.0f, 0.0f}, .z = 3.0f, .size = {8.0f, 4.0f}, .tint = {0, 255, 0, 128}});
+    scene.renderer.createSprite(SpriteDef{
+        .position = {-6.0f, 0.0f}, .z = 1.0f, .size = {8.0f, 4.0f}, .tint = {255, 0, 0, 128}});
+    scene.renderer.createSprite(SpriteDef{
+        .position = {6.0f, 0.0f}, .z = 3.0f, .size = {8.0f, 4.0f}, .tint = {0, 255, 0, 128}});
     Image image = scene.frame(camera);
     EXPECT_TRUE(near(pixel(image, 16 - 3, 16), kBlue, 0)) << str(pixel(image, 13, 16));
     Color front = pixel(image, 16 + 3, 16);
@@ -169,19 +191,25 @@ TEST_P(SpriteRender, RotatedCornersLandWhereTheTransformSays) {
     const float angle = 0.5235988f;
     const glm::vec2 centre{3.0f, -2.0f};
     const glm::vec2 size{36.0f, 18.0f};
-    scene.renderer.createSprite(SpriteDef{.position = centre, .size = size, .rotation = angle, .tint = kRed});
+    scene.renderer.createSprite(
+        SpriteDef{.position = centre, .size = size, .rotation = angle, .tint = kRed});
     Image image = scene.frame(camera);
     glm::vec2 ax{std::cos(angle), std::sin(angle)};
     glm::vec2 ay{-std::sin(angle), std::cos(angle)};
-    for (glm::vec2 sign : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(-1, 1), glm::vec2(1, 1)}) {
+    for (glm::vec2 sign :
+         {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(-1, 1), glm::vec2(1, 1)}) {
         glm::vec2 corner = centre + ax * (sign.x * size.x * 0.5f) + ay * (sign.y * size.y * 0.5f);
         glm::vec2 inward = glm::normalize(centre - corner);
         glm::vec2 inside = corner + inward * 2.5f + glm::vec2(32.0f);
         glm::vec2 outside = corner - inward * 2.5f + glm::vec2(32.0f);
-        Color in = pixel(image, static_cast<int>(std::floor(inside.x)), static_cast<int>(std::floor(inside.y)));
-        Color out = pixel(image, static_cast<int>(std::floor(outside.x)), static_cast<int>(std::floor(outside.y)));
-        EXPECT_TRUE(near(in, kRed, 0)) << "inside corner " << corner.x << ", " << corner.y << ": " << str(in);
-        EXPECT_TRUE(near(out, kBlack, 0)) << "outside corner " << corner.x << ", " << corner.y << ": " << str(out);
+        Color in = pixel(image, static_cast<int>(std::floor(inside.x)),
+                         static_cast<int>(std::floor(inside.y)));
+        Color out = pixel(image, static_cast<int>(std::floor(outside.x)),
+                          static_cast<int>(std::floor(outside.y)));
+        EXPECT_TRUE(near(in, kRed, 0))
+            << "inside corner " << corner.x << ", " << corner.y << ": " << str(in);
+        EXPECT_TRUE(near(out, kBlack, 0))
+            << "outside corner " << corner.x << ", " << corner.y << ": " << str(out);
     }
 }
 
@@ -190,12 +218,18 @@ TEST_P(SpriteRender, RotatedCornersLandWhereTheTransformSays) {
 TEST_P(SpriteRender, ParallaxAndHudFollowTheCameraAsDefined) {
     Scene scene(GetParam(), {64, 64});
     Camera camera = pixelCamera({64, 64});
-    SpriteId normal = scene.renderer.createSprite(
-        SpriteDef{.position = {-20.0f, 10.0f}, .size = {4.0f, 4.0f}, .pivot = {0.0f, 0.0f}, .tint = kRed});
-    SpriteId half = scene.renderer.createSprite(SpriteDef{
-        .position = {-20.0f, -10.0f}, .size = {4.0f, 4.0f}, .pivot = {0.0f, 0.0f}, .tint = kGreen, .parallax = 0.5f});
-    SpriteId hud = scene.renderer.createSprite(
-        SpriteDef{.position = {-20.0f, -24.0f}, .size = {4.0f, 4.0f}, .pivot = {0.0f, 0.0f}, .tint = kBlue, .hud = true});
+    SpriteId normal = scene.renderer.createSprite(SpriteDef{
+        .position = {-20.0f, 10.0f}, .size = {4.0f, 4.0f}, .pivot = {0.0f, 0.0f}, .tint = kRed});
+    SpriteId half = scene.renderer.createSprite(SpriteDef{.position = {-20.0f, -10.0f},
+                                                          .size = {4.0f, 4.0f},
+                                                          .pivot = {0.0f, 0.0f},
+                                                          .tint = kGreen,
+                                                          .parallax = 0.5f});
+    SpriteId hud = scene.renderer.createSprite(SpriteDef{.position = {-20.0f, -24.0f},
+                                                         .size = {4.0f, 4.0f},
+                                                         .pivot = {0.0f, 0.0f},
+                                                         .tint = kBlue,
+                                                         .hud = true});
     static_cast<void>(normal);
     static_cast<void>(half);
     static_cast<void>(hud);
@@ -248,21 +282,23 @@ TEST_P(SpriteRender, DrawCallsEqualBatchesOfTheScene) {
     // Opaque: textures 0, 1, 2, 0, 1 at various z -> one batch per distinct texture.
     const int opaqueTex[] = {0, 1, 2, 0, 1};
     for (int i = 0; i < 5; ++i) {
-        scene.renderer.createSprite(SpriteDef{.texture = textures[static_cast<std::size_t>(opaqueTex[i])],
-                                              .position = {-25.0f + 10.0f * i, 20.0f},
-                                              .z = static_cast<float>(5 - i),
-                                              .size = {6.0f, 6.0f}});
+        scene.renderer.createSprite(
+            SpriteDef{.texture = textures[static_cast<std::size_t>(opaqueTex[i])],
+                      .position = {-25.0f + 10.0f * i, 20.0f},
+                      .z = static_cast<float>(5 - i),
+                      .size = {6.0f, 6.0f}});
     }
     // Translucent, listed by z: 0, 0, 1, 0, 2, 2 -> texture changes give 4 batches.
     const int translucentTex[] = {0, 0, 1, 0, 2, 2};
     const float translucentZ[] = {1, 2, 3, 4, 5, 6};
     // Created in a scrambled order: sorting must put them back.
     for (int i : {3, 0, 5, 1, 4, 2}) {
-        scene.renderer.createSprite(SpriteDef{.texture = textures[static_cast<std::size_t>(translucentTex[i])],
-                                              .position = {-25.0f + 9.0f * i, -10.0f},
-                                              .z = translucentZ[i],
-                                              .size = {6.0f, 6.0f},
-                                              .tint = {255, 255, 255, 128}});
+        scene.renderer.createSprite(
+            SpriteDef{.texture = textures[static_cast<std::size_t>(translucentTex[i])],
+                      .position = {-25.0f + 9.0f * i, -10.0f},
+                      .z = translucentZ[i],
+                      .size = {6.0f, 6.0f},
+                      .tint = {255, 255, 255, 128}});
     }
     // Expected from the scene: distinct opaque textures + texture changes along z.
     int expectedOpaque = 3;
@@ -287,14 +323,16 @@ TEST_P(SpriteRender, CullsOffscreenAndRebuildsOnlyWhatChanged) {
     for (int i = 0; i < 10; ++i) {
         // Every other sprite lies far outside the 32 x 32 view.
         float x = i % 2 == 0 ? -12.0f + 2.0f * i : 500.0f + 10.0f * i;
-        sprites.push_back(scene.renderer.createSprite(SpriteDef{.position = {x, 0.0f}, .size = {2.0f, 2.0f}, .tint = kRed}));
+        sprites.push_back(scene.renderer.createSprite(
+            SpriteDef{.position = {x, 0.0f}, .size = {2.0f, 2.0f}, .tint = kRed}));
     }
     scene.frame(camera);
     EXPECT_EQ(scene.renderer.stats().sprites, 5);
     EXPECT_EQ(scene.renderer.stats().culled, 5);
     EXPECT_EQ(scene.renderer.stats().rebuilt, 10);
     scene.renderer.setPosition(sprites[0], {-14.0f, 4.0f});
-    scene.renderer.setPosition(sprites[2], scene.renderer.sprite(sprites[2]).position); // same value: no change
+    scene.renderer.setPosition(sprites[2],
+                               scene.renderer.sprite(sprites[2]).position); // same value: no change
     Image image = scene.frame(camera, "moved");
     EXPECT_EQ(scene.renderer.stats().rebuilt, 1);
     EXPECT_TRUE(near(pixel(image, 16 - 14, 16 + 4), kRed, 0));
@@ -317,7 +355,8 @@ TEST_P(SpriteRender, MovesOfEveryKindOfSpriteLandWhereTheSceneSays) {
     const Color kWhite{255, 255, 255, 255};
     const Color kYellow{255, 255, 0, 255};
     auto def = [](glm::vec2 position, Color tint) {
-        return SpriteDef{.position = position, .size = {4.0f, 4.0f}, .pivot = {0.0f, 0.0f}, .tint = tint};
+        return SpriteDef{
+            .position = position, .size = {4.0f, 4.0f}, .pivot = {0.0f, 0.0f}, .tint = tint};
     };
     const SpriteId a = scene.renderer.createSprite(def({-30.0f, 20.0f}, kRed));
     SpriteDef parallax = def({0.0f, 20.0f}, kGreen);
@@ -346,8 +385,8 @@ TEST_P(SpriteRender, MovesOfEveryKindOfSpriteLandWhereTheSceneSays) {
                     }
                 }
                 if (!near(pixel(image, x, y), want, 0) && ++wrong <= 5) {
-                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") is " << str(pixel(image, x, y)) << ", expected "
-                                  << str(want);
+                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") is "
+                                  << str(pixel(image, x, y)) << ", expected " << str(want);
                 }
             }
         }
@@ -405,7 +444,8 @@ TEST_P(SpriteRender, EqualZOpaqueOverlapsFollowTextureThenSubmission) {
         Image image{2, 2, {}};
         for (int i = 0; i < 4; ++i) {
             const bool cut = cutTopRight && i == 1; // rows from the top: texel 1 is the top-right
-            image.pixels.insert(image.pixels.end(), {c.r, c.g, c.b, static_cast<std::uint8_t>(cut ? 0 : 255)});
+            image.pixels.insert(image.pixels.end(),
+                                {c.r, c.g, c.b, static_cast<std::uint8_t>(cut ? 0 : 255)});
         }
         return image;
     };
@@ -413,24 +453,26 @@ TEST_P(SpriteRender, EqualZOpaqueOverlapsFollowTextureThenSubmission) {
     const TextureId red = scene.renderer.createTexture(solid(kRed, false), nearest);
     const TextureId green = scene.renderer.createTexture(solid(kGreen, true), nearest);
     // Green (the later texture) made first, red over its right half made second.
-    scene.renderer.createSprite(SpriteDef{.texture = green, .position = {-12.0f, 0.0f}, .size = {8.0f, 8.0f},
-                                          .pivot = {0.0f, 0.0f}});
-    scene.renderer.createSprite(SpriteDef{.texture = red, .position = {-8.0f, 0.0f}, .size = {8.0f, 8.0f},
-                                          .pivot = {0.0f, 0.0f}});
+    scene.renderer.createSprite(SpriteDef{
+        .texture = green, .position = {-12.0f, 0.0f}, .size = {8.0f, 8.0f}, .pivot = {0.0f, 0.0f}});
+    scene.renderer.createSprite(SpriteDef{
+        .texture = red, .position = {-8.0f, 0.0f}, .size = {8.0f, 8.0f}, .pivot = {0.0f, 0.0f}});
     // A blue plain sprite and a submitted white quad over its right half.
-    scene.renderer.createSprite(SpriteDef{.position = {4.0f, -8.0f}, .size = {8.0f, 8.0f}, .pivot = {0.0f, 0.0f},
-                                          .tint = kBlue});
-    scene.renderer.submit(Quad{.position = {8.0f, -8.0f}, .size = {8.0f, 8.0f}, .pivot = {0.0f, 0.0f}});
+    scene.renderer.createSprite(SpriteDef{
+        .position = {4.0f, -8.0f}, .size = {8.0f, 8.0f}, .pivot = {0.0f, 0.0f}, .tint = kBlue});
+    scene.renderer.submit(
+        Quad{.position = {8.0f, -8.0f}, .size = {8.0f, 8.0f}, .pivot = {0.0f, 0.0f}});
     Image image = scene.frame(camera, "equal-z");
     // Green covers screen [4, 12) x [16, 24); red [8, 16) x [16, 24); green's top-right
     // quarter [8, 12) x [20, 24) is cut out.
-    EXPECT_TRUE(near(pixel(image, 9, 17), kGreen, 0)) << str(pixel(image, 9, 17));   // overlap, uncut
-    EXPECT_TRUE(near(pixel(image, 9, 22), kRed, 0)) << str(pixel(image, 9, 22));     // overlap, cut
-    EXPECT_TRUE(near(pixel(image, 5, 22), kGreen, 0)) << str(pixel(image, 5, 22));   // green alone
-    EXPECT_TRUE(near(pixel(image, 14, 18), kRed, 0)) << str(pixel(image, 14, 18));   // red alone
+    EXPECT_TRUE(near(pixel(image, 9, 17), kGreen, 0)) << str(pixel(image, 9, 17)); // overlap, uncut
+    EXPECT_TRUE(near(pixel(image, 9, 22), kRed, 0)) << str(pixel(image, 9, 22));   // overlap, cut
+    EXPECT_TRUE(near(pixel(image, 5, 22), kGreen, 0)) << str(pixel(image, 5, 22)); // green alone
+    EXPECT_TRUE(near(pixel(image, 14, 18), kRed, 0)) << str(pixel(image, 14, 18)); // red alone
     // Blue covers [20, 28) x [8, 16), the quad [24, 32) x [8, 16).
     EXPECT_TRUE(near(pixel(image, 21, 10), kBlue, 0)) << str(pixel(image, 21, 10));
-    EXPECT_TRUE(near(pixel(image, 25, 10), Color{255, 255, 255, 255}, 0)) << str(pixel(image, 25, 10));
+    EXPECT_TRUE(near(pixel(image, 25, 10), Color{255, 255, 255, 255}, 0))
+        << str(pixel(image, 25, 10));
     EXPECT_EQ(scene.renderer.stats().opaqueBatches, 3);
 }
 
@@ -443,7 +485,9 @@ TEST_P(SpriteRender, TurnedUvRegionsShowUpright) {
     // The shown image: 4 x 2 texels, rows from the top: red red green green / blue blue white
     // white. Stored turned clockwise in a 2 x 4 texture: shown texel (x, y) at (1 - y, x).
     const Color kWhite{255, 255, 255, 255};
-    auto shown = [&](int x, int yDown) { return yDown == 0 ? (x < 2 ? kRed : kGreen) : (x < 2 ? kBlue : kWhite); };
+    auto shown = [&](int x, int yDown) {
+        return yDown == 0 ? (x < 2 ? kRed : kGreen) : (x < 2 ? kBlue : kWhite);
+    };
     Image image{2, 4, std::vector<std::uint8_t>(2 * 4 * 4, 255)};
     for (int y = 0; y < 2; ++y) {
         for (int x = 0; x < 4; ++x) {
@@ -454,13 +498,20 @@ TEST_P(SpriteRender, TurnedUvRegionsShowUpright) {
             p[2] = c.b;
         }
     }
-    const TextureId texture = scene.renderer.createTexture(image, TextureDef{.filter = TextureFilter::Nearest});
+    const TextureId texture =
+        scene.renderer.createTexture(image, TextureDef{.filter = TextureFilter::Nearest});
     // 8 x 4 world units: each shown texel a 2 x 2 block.
-    const SpriteId plain = scene.renderer.createSprite(SpriteDef{
-        .texture = texture, .position = {-12.0f, 4.0f}, .size = {8.0f, 4.0f}, .pivot = {0.0f, 0.0f}, .uvRotated = true});
-    const SpriteId flipped = scene.renderer.createSprite(SpriteDef{.texture = texture, .position = {2.0f, -10.0f},
-                                                                   .size = {8.0f, 4.0f}, .pivot = {0.0f, 0.0f},
-                                                                   .uvRotated = true, .flipY = true});
+    const SpriteId plain = scene.renderer.createSprite(SpriteDef{.texture = texture,
+                                                                 .position = {-12.0f, 4.0f},
+                                                                 .size = {8.0f, 4.0f},
+                                                                 .pivot = {0.0f, 0.0f},
+                                                                 .uvRotated = true});
+    const SpriteId flipped = scene.renderer.createSprite(SpriteDef{.texture = texture,
+                                                                   .position = {2.0f, -10.0f},
+                                                                   .size = {8.0f, 4.0f},
+                                                                   .pivot = {0.0f, 0.0f},
+                                                                   .uvRotated = true,
+                                                                   .flipY = true});
     auto check = [&](const Image& frame, glm::vec2 plainAt, glm::vec2 flippedAt) {
         int wrong = 0;
         for (int y = 0; y < 32; ++y) {
@@ -476,8 +527,8 @@ TEST_P(SpriteRender, TurnedUvRegionsShowUpright) {
                     want = shown(fx / 2, fy / 2); // flipY: the bottom row on top
                 }
                 if (!near(pixel(frame, x, y), want, 0) && ++wrong <= 5) {
-                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") is " << str(pixel(frame, x, y)) << ", expected "
-                                  << str(want);
+                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") is "
+                                  << str(pixel(frame, x, y)) << ", expected " << str(want);
                 }
             }
         }
@@ -494,8 +545,10 @@ TEST_P(SpriteRender, TurnedUvRegionsShowUpright) {
 TEST_P(SpriteRender, SubmittedQuadsBatchWithSprites) {
     Scene scene(GetParam(), {32, 32});
     Camera camera = pixelCamera({32, 32});
-    scene.renderer.createSprite(SpriteDef{.position = {-8.0f, 0.0f}, .size = {4.0f, 4.0f}, .tint = kRed});
-    scene.renderer.submit(Quad{.position = {8.0f, 0.0f}, .size = {4.0f, 4.0f}, .pivot = {0.5f, 0.5f}, .tint = kGreen});
+    scene.renderer.createSprite(
+        SpriteDef{.position = {-8.0f, 0.0f}, .size = {4.0f, 4.0f}, .tint = kRed});
+    scene.renderer.submit(Quad{
+        .position = {8.0f, 0.0f}, .size = {4.0f, 4.0f}, .pivot = {0.5f, 0.5f}, .tint = kGreen});
     Image first = scene.frame(camera, "with-quad");
     EXPECT_TRUE(near(pixel(first, 24, 16), kGreen, 0));
     EXPECT_EQ(scene.renderer.stats().sprites, 2);
@@ -516,7 +569,8 @@ TEST_P(SpriteRender, TextureOrientationFlipsAndUvRects) {
     image.height = 2;
     // Rows from the top: red, green / blue, white.
     image.pixels = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255};
-    TextureId texture = scene.renderer.createTexture(image, TextureDef{.filter = TextureFilter::Nearest});
+    TextureId texture =
+        scene.renderer.createTexture(image, TextureDef{.filter = TextureFilter::Nearest});
     SpriteId sprite = scene.renderer.createSprite(
         SpriteDef{.texture = texture, .size = {8.0f, 8.0f}, .pivot = {0.0f, 0.0f}});
     // Sprite covers screen [16, 24) x [16, 24); its top-left quarter is [16, 20) x [20, 24).
@@ -557,7 +611,10 @@ TEST_P(SpriteRender, StaleIdsAndBadFieldsAreErrors) {
         scene.renderer.createSprite(SpriteDef{.parallax = -1.0f});
         FAIL() << "expected an error";
     } catch (const core::Error& error) {
-        EXPECT_THAT(error.what(), HasSubstr("render::Renderer::createSprite(): parallax must be >= 0 and finite, got -1"));
+        EXPECT_THAT(
+            error.what(),
+            HasSubstr(
+                "render::Renderer::createSprite(): parallax must be >= 0 and finite, got -1"));
     }
     try {
         scene.renderer.createSprite(SpriteDef{.size = {-2.0f, 1.0f}});
@@ -570,11 +627,13 @@ TEST_P(SpriteRender, StaleIdsAndBadFieldsAreErrors) {
         Renderer bad(scene.window, RendererDef{.ringFrames = 1});
         FAIL() << "expected an error";
     } catch (const core::Error& error) {
-        EXPECT_THAT(error.what(), HasSubstr("render::Renderer: ringFrames must be in [2, 8], got 1"));
+        EXPECT_THAT(error.what(),
+                    HasSubstr("render::Renderer: ringFrames must be in [2, 8], got 1"));
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(BothPaths, SpriteRender, testing::Values(Path::Gl33, Path::Gl44), pathName);
+INSTANTIATE_TEST_SUITE_P(BothPaths, SpriteRender, testing::Values(Path::Gl33, Path::Gl44),
+                         pathName);
 
 } // namespace
 } // namespace e2d::render::test

@@ -45,8 +45,10 @@ TEST(LoadImage, PngRoundTripKeepsEveryPixel) {
     image.width = 7;
     image.height = 5;
     for (int i = 0; i < 7 * 5; ++i) {
-        image.pixels.insert(image.pixels.end(), {static_cast<std::uint8_t>(i * 7), static_cast<std::uint8_t>(255 - i),
-                                                 static_cast<std::uint8_t>(i * 3), static_cast<std::uint8_t>(i * 5 + 10)});
+        image.pixels.insert(image.pixels.end(),
+                            {static_cast<std::uint8_t>(i * 7), static_cast<std::uint8_t>(255 - i),
+                             static_cast<std::uint8_t>(i * 3),
+                             static_cast<std::uint8_t>(i * 5 + 10)});
     }
     std::filesystem::path file = outputDir() / "round_trip.png";
     writePng(image, file);
@@ -69,8 +71,9 @@ std::vector<Broken> makeBrokenFiles(const std::filesystem::path& dir) {
     noise.width = 64;
     noise.height = 64;
     for (int i = 0; i < 64 * 64; ++i) {
-        noise.pixels.insert(noise.pixels.end(), {static_cast<std::uint8_t>(i * 31), static_cast<std::uint8_t>(i * 17),
-                                                 static_cast<std::uint8_t>(i * 7), 255});
+        noise.pixels.insert(noise.pixels.end(),
+                            {static_cast<std::uint8_t>(i * 31), static_cast<std::uint8_t>(i * 17),
+                             static_cast<std::uint8_t>(i * 7), 255});
     }
     writePng(noise, dir / "whole.png");
     std::vector<char> png = readBytes(dir / "whole.png");
@@ -113,10 +116,13 @@ TEST(LoadImage, BrokenFilesNameTheFileAndTheReason) {
             ADD_FAILURE() << "expected an error";
         } catch (const core::Error& error) {
             std::string what = error.what();
-            EXPECT_THAT(what, HasSubstr("render::loadImage(): " + (dir / broken.name).string() + ": "));
+            EXPECT_THAT(what,
+                        HasSubstr("render::loadImage(): " + (dir / broken.name).string() + ": "));
             EXPECT_THAT(what, HasSubstr(broken.reason));
             // Some reason follows the file name.
-            EXPECT_GT(what.size(), ("render::loadImage(): " + (dir / broken.name).string() + ": ").size() + 3) << what;
+            EXPECT_GT(what.size(),
+                      ("render::loadImage(): " + (dir / broken.name).string() + ": ").size() + 3)
+                << what;
             std::cout << "  " << what << "\n";
         }
     }
@@ -130,12 +136,11 @@ TEST_P(TextureRender, BrokenFileDrawsThePlaceholderAndTheFrameGoesOn) {
     std::filesystem::path dir = outputDir() / ("broken-" + pathName({GetParam(), 0}));
     std::filesystem::create_directories(dir);
     std::vector<std::string> logged;
-    core::Logger logger(core::LogLevel::Info,
-                        [&](core::LogLevel level, std::string_view message) {
-                            if (level == core::LogLevel::Error) {
-                                logged.emplace_back(message);
-                            }
-                        });
+    core::Logger logger(core::LogLevel::Info, [&](core::LogLevel level, std::string_view message) {
+        if (level == core::LogLevel::Error) {
+            logged.emplace_back(message);
+        }
+    });
     Scene scene(GetParam(), {64, 64}, true, &logger);
     Camera camera = pixelCamera({64, 64});
     for (const Broken& broken : makeBrokenFiles(dir)) {
@@ -143,7 +148,8 @@ TEST_P(TextureRender, BrokenFileDrawsThePlaceholderAndTheFrameGoesOn) {
         scene.renderer.destroyAllSprites();
         logged.clear();
         std::filesystem::path file = dir / broken.name;
-        TextureId texture = scene.renderer.loadTexture(file, TextureDef{.filter = TextureFilter::Nearest});
+        TextureId texture =
+            scene.renderer.loadTexture(file, TextureDef{.filter = TextureFilter::Nearest});
         EXPECT_EQ(scene.renderer.loadTexture(file), texture); // cached, failure included
         ASSERT_EQ(logged.size(), 1u);
         EXPECT_THAT(logged[0], HasSubstr(file.string()));
@@ -178,7 +184,8 @@ TEST_P(TextureRender, BrokenFileDrawsThePlaceholderAndTheFrameGoesOn) {
 TEST_P(TextureRender, FileTextureIsCachedAndDrawnUpright) {
     Scene scene(GetParam(), {32, 32});
     Camera camera = pixelCamera({32, 32});
-    TextureId texture = scene.renderer.loadTexture(kData / "quadrant.png", TextureDef{.filter = TextureFilter::Nearest});
+    TextureId texture = scene.renderer.loadTexture(kData / "quadrant.png",
+                                                   TextureDef{.filter = TextureFilter::Nearest});
     EXPECT_EQ(scene.renderer.loadTexture(kData / "." / "quadrant.png"), texture);
     const TextureInfo& info = scene.renderer.textureInfo(texture);
     EXPECT_FALSE(info.placeholder);
@@ -187,7 +194,8 @@ TEST_P(TextureRender, FileTextureIsCachedAndDrawnUpright) {
     // Size (0, 0): the texture's 16 x 16 pixels, centred: screen [8, 24).
     scene.renderer.createSprite(SpriteDef{.texture = texture});
     Image image = scene.frame(camera);
-    EXPECT_TRUE(near(pixel(image, 10, 21), kRed, 0)) << str(pixel(image, 10, 21)); // top-left quarter
+    EXPECT_TRUE(near(pixel(image, 10, 21), kRed, 0))
+        << str(pixel(image, 10, 21)); // top-left quarter
     EXPECT_TRUE(near(pixel(image, 21, 21), kBlue, 0));
     EXPECT_TRUE(near(pixel(image, 10, 10), kBlue, 0));
     EXPECT_TRUE(near(pixel(image, 4, 4), kBlack, 0));
@@ -201,9 +209,11 @@ TEST_P(TextureRender, UpdateTextureReplacesASubRectangle) {
     image.width = 4;
     image.height = 4;
     image.pixels.assign(64, 0);
-    TextureId texture = scene.renderer.createTexture(image, TextureDef{.filter = TextureFilter::Nearest});
+    TextureId texture =
+        scene.renderer.createTexture(image, TextureDef{.filter = TextureFilter::Nearest});
     EXPECT_FALSE(scene.renderer.textureInfo(texture).translucent);
-    scene.renderer.createSprite(SpriteDef{.texture = texture, .size = {16.0f, 16.0f}, .pivot = {0.0f, 0.0f}});
+    scene.renderer.createSprite(
+        SpriteDef{.texture = texture, .size = {16.0f, 16.0f}, .pivot = {0.0f, 0.0f}});
     // Texels (2..3, 0..1): the top-right 2 x 2, opaque green.
     std::vector<std::uint8_t> green(2 * 2 * 4);
     for (std::size_t i = 0; i < 4; ++i) {
@@ -220,8 +230,10 @@ TEST_P(TextureRender, UpdateTextureReplacesASubRectangle) {
         scene.renderer.updateTexture(texture, {3, 3}, {2, 2}, green);
         FAIL() << "expected an error";
     } catch (const core::Error& error) {
-        EXPECT_THAT(error.what(), HasSubstr("render::Renderer::updateTexture(): rectangle at (3, 3) of size (2, 2) is "
-                                            "outside the 4 x 4 texture"));
+        EXPECT_THAT(
+            error.what(),
+            HasSubstr("render::Renderer::updateTexture(): rectangle at (3, 3) of size (2, 2) is "
+                      "outside the 4 x 4 texture"));
     }
     // Partial alpha makes it translucent (the sprite moves to the blended pass).
     std::vector<std::uint8_t> half(4, 128);
@@ -252,17 +264,20 @@ TEST_P(TextureRender, DestroyedTextureDrawsThePlaceholder) {
 
 // RendererDef::fileTextureFilter overrides the filter of file textures only.
 TEST(TextureFilterOverride, AppliesToFileTexturesOnly) {
-    Window window(WindowDef{.title = "e2d render test", .size = {16, 16}, .vsync = false, .visible = false});
+    Window window(
+        WindowDef{.title = "e2d render test", .size = {16, 16}, .vsync = false, .visible = false});
     RendererDef def;
     def.fileTextureFilter = TextureFilter::Nearest;
     Renderer renderer(window, def);
-    const TextureId file = renderer.loadTexture(kData / "quadrant.png", TextureDef{.filter = TextureFilter::Linear});
+    const TextureId file =
+        renderer.loadTexture(kData / "quadrant.png", TextureDef{.filter = TextureFilter::Linear});
     EXPECT_EQ(renderer.textureInfo(file).def.filter, TextureFilter::Nearest);
     Image image;
     image.width = 1;
     image.height = 1;
     image.pixels = {1, 2, 3, 255};
-    const TextureId memory = renderer.createTexture(image, TextureDef{.filter = TextureFilter::Linear});
+    const TextureId memory =
+        renderer.createTexture(image, TextureDef{.filter = TextureFilter::Linear});
     EXPECT_EQ(renderer.textureInfo(memory).def.filter, TextureFilter::Linear);
 }
 
@@ -305,7 +320,8 @@ TEST_P(TextureRender, DestroyUnusedTexturesKeepsWhatSpritesUse) {
     EXPECT_EQ(scene.renderer.destroyUnusedTextures(), 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(BothPaths, TextureRender, testing::Values(Path::Gl33, Path::Gl44), pathName);
+INSTANTIATE_TEST_SUITE_P(BothPaths, TextureRender, testing::Values(Path::Gl33, Path::Gl44),
+                         pathName);
 
 } // namespace
 } // namespace e2d::render::test

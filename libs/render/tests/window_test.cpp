@@ -85,7 +85,8 @@ bool waitForFramebuffer(Window& window, glm::ivec2 size) {
 // reference region lands where each fit mode puts it and the rest is letterboxed black.
 TEST(Window, EveryFitModeLetterboxesAfterAResize) {
     const glm::vec2 reference{64.0f, 32.0f};
-    for (ScreenFit fit : {ScreenFit::Expand, ScreenFit::WidthFit, ScreenFit::HeightFit, ScreenFit::BestFit}) {
+    for (ScreenFit fit :
+         {ScreenFit::Expand, ScreenFit::WidthFit, ScreenFit::HeightFit, ScreenFit::BestFit}) {
         Window window(WindowDef{.size = {64, 32}, .vsync = false, .visible = false});
         Renderer renderer(window);
         Camera camera(CameraDef{.referenceSize = reference, .fit = fit});
@@ -94,7 +95,8 @@ TEST(Window, EveryFitModeLetterboxesAfterAResize) {
         renderer.createSprite(SpriteDef{.size = reference, .tint = kWhite});
         for (glm::ivec2 screen : {glm::ivec2(128, 48), glm::ivec2(64, 96)}) {
             window.setSize(screen);
-            ASSERT_TRUE(waitForFramebuffer(window, screen)) << "framebuffer stayed " << window.framebufferSize().x;
+            ASSERT_TRUE(waitForFramebuffer(window, screen))
+                << "framebuffer stayed " << window.framebufferSize().x;
             unsigned resizes = window.resizeCount();
             EXPECT_GT(resizes, 0u);
             // As in a game loop: Mesa resizes a window's buffers at a swap, so the frame after
@@ -104,8 +106,9 @@ TEST(Window, EveryFitModeLetterboxesAfterAResize) {
             renderer.render(camera);
             EXPECT_EQ(camera.screenSize(), screen);
             Image image = renderer.readPixels();
-            std::string name = currentTestName() + "-" + std::to_string(static_cast<int>(fit)) + "-" +
-                               std::to_string(screen.x) + "x" + std::to_string(screen.y) + ".png";
+            std::string name = currentTestName() + "-" + std::to_string(static_cast<int>(fit)) +
+                               "-" + std::to_string(screen.x) + "x" + std::to_string(screen.y) +
+                               ".png";
             writePng(image, outputDir() / name);
             // Expected from the definitions: the scale per fit, the reference region centred.
             glm::vec2 ratio = glm::vec2(screen) / reference;
@@ -119,7 +122,8 @@ TEST(Window, EveryFitModeLetterboxesAfterAResize) {
             int wrong = 0;
             for (int y = 0; y < screen.y; ++y) {
                 for (int x = 0; x < screen.x; ++x) {
-                    bool inside = x + 0.5f > lo.x && x + 0.5f < hi.x && y + 0.5f > lo.y && y + 0.5f < hi.y;
+                    bool inside =
+                        x + 0.5f > lo.x && x + 0.5f < hi.x && y + 0.5f > lo.y && y + 0.5f < hi.y;
                     if (!near(pixel(image, x, y), inside ? kWhite : kBlack, 0)) {
                         if (++wrong < 4) {
                             ADD_FAILURE() << name << ": pixel (" << x << ", " << y << ") is "
@@ -176,12 +180,14 @@ TEST(Window, SamplesVsyncAndContentScale) {
     EXPECT_TRUE(plain.vsync());
     plain.setVsync(false);
     EXPECT_FALSE(plain.vsync());
-    Window msaa(WindowDef{.size = {32, 32}, .samples = 4, .vsync = false, .visible = false, .glfw = plain.glfw()});
+    Window msaa(WindowDef{
+        .size = {32, 32}, .samples = 4, .vsync = false, .visible = false, .glfw = plain.glfw()});
     EXPECT_EQ(msaa.samples(), 4);
     int width = 0;
     int height = 0;
     glfwGetWindowSize(msaa.handle(), &width, &height);
-    EXPECT_FLOAT_EQ(msaa.contentScale().x, static_cast<float>(msaa.framebufferSize().x) / static_cast<float>(width));
+    EXPECT_FLOAT_EQ(msaa.contentScale().x,
+                    static_cast<float>(msaa.framebufferSize().x) / static_cast<float>(width));
     // A multisampled window still draws: a sprite reads back (resolved) in the middle.
     Renderer renderer(msaa);
     Camera camera = pixelCamera({32, 32});
@@ -203,11 +209,14 @@ TEST(Standalone, OpenDrawScreenshotClose) {
     std::filesystem::path file = outputDir() / "standalone.png";
     std::filesystem::remove(file);
     {
-        Window window(WindowDef{.title = "e2d standalone", .size = {48, 48}, .vsync = false, .visible = false});
+        Window window(WindowDef{
+            .title = "e2d standalone", .size = {48, 48}, .vsync = false, .visible = false});
         Renderer renderer(window, RendererDef{.clearColor = {0, 0, 64, 255}});
         Camera camera(CameraDef{.referenceSize = {48.0f, 48.0f}});
-        renderer.createSprite(SpriteDef{.position = {-12.0f, 0.0f}, .size = {8.0f, 8.0f}, .tint = kRed});
-        renderer.createSprite(SpriteDef{.position = {12.0f, 0.0f}, .size = {8.0f, 8.0f}, .tint = kGreen});
+        renderer.createSprite(
+            SpriteDef{.position = {-12.0f, 0.0f}, .size = {8.0f, 8.0f}, .tint = kRed});
+        renderer.createSprite(
+            SpriteDef{.position = {12.0f, 0.0f}, .size = {8.0f, 8.0f}, .tint = kGreen});
         renderer.render(camera);
         renderer.screenshot(file);
         window.swapBuffers();

@@ -54,7 +54,8 @@ void addChain(b2Body* body, const ShapeDesc& desc) {
     if (desc.loop) {
         chain.CreateLoop(points.data(), n);
     } else {
-        chain.CreateChain(points.data(), n, ghostOrExtension(desc.ghostBefore, desc.points[0], desc.points[1]),
+        chain.CreateChain(points.data(), n,
+                          ghostOrExtension(desc.ghostBefore, desc.points[0], desc.points[1]),
                           ghostOrExtension(desc.ghostAfter, desc.points[std::size_t(n) - 1],
                                            desc.points[std::size_t(n) - 2]));
     }
@@ -173,8 +174,9 @@ std::string shapeUnsupported(const ShapeDesc& shape, bool massive) {
         const std::vector<glm::vec2> kept = welded(shape.points);
         if (kept.size() < 3) {
             return "Box2D 2.4 welds polygon vertices closer than 0.5 b2_linearSlop (0.0025 m) "
-                   "and " + std::to_string(kept.size()) + " of " +
-                   std::to_string(shape.points.size()) + " stay (b2PolygonShape::Set asserts)";
+                   "and " +
+                   std::to_string(kept.size()) + " of " + std::to_string(shape.points.size()) +
+                   " stay (b2PolygonShape::Set asserts)";
         }
         if (massive && !(0.5f * std::abs(twiceArea(kept)) > b2_epsilon)) {
             return "polygon area " + number(0.5f * std::abs(twiceArea(kept))) +
@@ -326,7 +328,8 @@ std::string box2DUnsupported(const SceneDesc& scene) {
         const JointDesc& j = scene.joints[i];
         if (j.enableSpring && (j.kind == JointKind::Revolute || j.kind == JointKind::Prismatic)) {
             return "joint " + std::to_string(i) + ": Box2D 2.4.1's " + jointKindName(j.kind) +
-                   " joint has no spring (b2" + (j.kind == JointKind::Revolute ? "Revolute" : "Prismatic") +
+                   " joint has no spring (b2" +
+                   (j.kind == JointKind::Revolute ? "Revolute" : "Prismatic") +
                    "JointDef has no stiffness; Box2D v3's has one)";
         }
     }
@@ -336,8 +339,9 @@ std::string box2DUnsupported(const SceneDesc& scene) {
             // Box2D computes mass (and asserts on it) only for dynamic bodies with density.
             const bool massive = body.kind == BodyKind::Dynamic && body.shapes[j].density > 0.0f;
             if (std::string why = shapeUnsupported(body.shapes[j], massive); !why.empty()) {
-                return "body " + std::to_string(i) + (body.tag.empty() ? "" : " (\"" + body.tag + "\")") +
-                       ", shape " + std::to_string(j) + ": " + why;
+                return "body " + std::to_string(i) +
+                       (body.tag.empty() ? "" : " (\"" + body.tag + "\")") + ", shape " +
+                       std::to_string(j) + ": " + why;
             }
         }
     }

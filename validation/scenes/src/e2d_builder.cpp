@@ -16,7 +16,8 @@ ph::ShapeGeometry toE2dGeometry(const ShapeDesc& s) {
         }
         return ph::makeOffsetBox(s.halfExtents.x, s.halfExtents.y, s.center, s.angle);
     case ShapeKind::Polygon:
-        return ph::makePolygon(std::span<const ph::Vec2>(s.points.data(), s.points.size()), s.radius);
+        return ph::makePolygon(std::span<const ph::Vec2>(s.points.data(), s.points.size()),
+                               s.radius);
     case ShapeKind::Circle:
         return ph::Circle{s.center, s.radius};
     case ShapeKind::Capsule:

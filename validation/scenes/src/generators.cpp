@@ -85,7 +85,8 @@ SceneDesc manyPyramids(int rows, int columns, int base) {
             const float bottom = 11.0f * static_cast<float>(r);
             for (int i = 0; i < base; ++i) {
                 for (int j = i; j < base; ++j) {
-                    const float x = static_cast<float>(i + 1) * half + static_cast<float>(j - i) + left;
+                    const float x =
+                        static_cast<float>(i + 1) * half + static_cast<float>(j - i) + left;
                     const float y = static_cast<float>(i) + half + bottom;
                     scene.bodies.push_back(dynamicBox({x, y}, half));
                 }

@@ -19,7 +19,8 @@ struct Vec {
 std::uint8_t* pixelAt(render::Image& image, int x, int y) {
     return image.pixels.data() +
            (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
-            static_cast<std::size_t>(x)) * 4;
+            static_cast<std::size_t>(x)) *
+               4;
 }
 
 std::uint8_t toByte(double v) {
@@ -88,8 +89,7 @@ namespace {
 // over the pixels of the box [x0, x1) x [y0, y1). Coverage is 1 - distance over half a pixel
 // either side of the edge: a cheap, smooth antialiasing.
 template <class Sdf, class Shade>
-void paint(render::Image& image, double x0, double y0, double x1, double y1, Sdf sdf,
-           Shade shade) {
+void paint(render::Image& image, double x0, double y0, double x1, double y1, Sdf sdf, Shade shade) {
     const int ix0 = std::max(0, static_cast<int>(std::floor(x0 - 1)));
     const int iy0 = std::max(0, static_cast<int>(std::floor(y0 - 1)));
     const int ix1 = std::min(image.width, static_cast<int>(std::ceil(x1 + 1)));
@@ -131,24 +131,29 @@ void Canvas::fillRect(float x, float y, float w, float h, Colour colour) {
 }
 
 void Canvas::fillCircle(float cx, float cy, float radius, Colour colour) {
-    paint(image_, cx - radius, cy - radius, cx + radius, cy + radius,
-          [=](Vec p) { return std::hypot(p.x - cx, p.y - cy) - radius; }, solid(colour));
+    paint(
+        image_, cx - radius, cy - radius, cx + radius, cy + radius,
+        [=](Vec p) { return std::hypot(p.x - cx, p.y - cy) - radius; }, solid(colour));
 }
 
 void Canvas::strokeCircle(float cx, float cy, float radius, float thickness, Colour colour) {
     const float outer = radius + thickness / 2;
-    paint(image_, cx - outer, cy - outer, cx + outer, cy + outer,
-          [=](Vec p) { return std::abs(std::hypot(p.x - cx, p.y - cy) - radius) - thickness / 2; },
-          solid(colour));
+    paint(
+        image_, cx - outer, cy - outer, cx + outer, cy + outer,
+        [=](Vec p) { return std::abs(std::hypot(p.x - cx, p.y - cy) - radius) - thickness / 2; },
+        solid(colour));
 }
 
 void Canvas::fillRoundedRect(float x, float y, float w, float h, float radius, Colour colour) {
     const double hx = w / 2.0;
     const double hy = h / 2.0;
     const double r = std::clamp<double>(radius, 0.0, std::min(hx, hy));
-    paint(image_, x, y, x + w, y + h,
-          [=](Vec p) { return roundedBoxDistance({p.x - x - hx, p.y - y - hy}, hx, hy, r); },
-          solid(colour));
+    paint(
+        image_, x, y, x + w, y + h,
+        [=](Vec p) {
+            return roundedBoxDistance({p.x - x - hx, p.y - y - hy}, hx, hy, r);
+        },
+        solid(colour));
 }
 
 void Canvas::strokeRoundedRect(float x, float y, float w, float h, float radius, float thickness,
@@ -156,40 +161,49 @@ void Canvas::strokeRoundedRect(float x, float y, float w, float h, float radius,
     const double hx = w / 2.0;
     const double hy = h / 2.0;
     const double r = std::clamp<double>(radius, 0.0, std::min(hx, hy));
-    paint(image_, x, y, x + w, y + h,
-          [=](Vec p) {
-              const double d = roundedBoxDistance({p.x - x - hx, p.y - y - hy}, hx, hy, r);
-              return std::max(d, -d - thickness);
-          },
-          solid(colour));
+    paint(
+        image_, x, y, x + w, y + h,
+        [=](Vec p) {
+            const double d = roundedBoxDistance({p.x - x - hx, p.y - y - hy}, hx, hy, r);
+            return std::max(d, -d - thickness);
+        },
+        solid(colour));
 }
 
 void Canvas::linearGradient(float x, float y, float w, float h, Colour from, Colour to,
                             bool vertical) {
     const double hx = w / 2.0;
     const double hy = h / 2.0;
-    paint(image_, x, y, x + w, y + h,
-          [=](Vec p) { return roundedBoxDistance({p.x - x - hx, p.y - y - hy}, hx, hy, 0); },
-          [=](Vec p) {
-              const double t = vertical ? (h > 1 ? (p.y - y - 0.5) / (h - 1) : 0.0)
-                                        : (w > 1 ? (p.x - x - 0.5) / (w - 1) : 0.0);
-              return mix(from, to, t);
-          });
+    paint(
+        image_, x, y, x + w, y + h,
+        [=](Vec p) {
+            return roundedBoxDistance({p.x - x - hx, p.y - y - hy}, hx, hy, 0);
+        },
+        [=](Vec p) {
+            const double t = vertical ? (h > 1 ? (p.y - y - 0.5) / (h - 1) : 0.0)
+                                      : (w > 1 ? (p.x - x - 0.5) / (w - 1) : 0.0);
+            return mix(from, to, t);
+        });
 }
 
 void Canvas::radialGradient(float cx, float cy, float radius, Colour centre, Colour edge) {
-    paint(image_, cx - radius, cy - radius, cx + radius, cy + radius,
-          [=](Vec p) { return std::hypot(p.x - cx, p.y - cy) - radius; },
-          [=](Vec p) {
-              return mix(centre, edge, radius > 0 ? std::hypot(p.x - cx, p.y - cy) / radius : 0.0);
-          });
+    paint(
+        image_, cx - radius, cy - radius, cx + radius, cy + radius,
+        [=](Vec p) { return std::hypot(p.x - cx, p.y - cy) - radius; },
+        [=](Vec p) {
+            return mix(centre, edge, radius > 0 ? std::hypot(p.x - cx, p.y - cy) / radius : 0.0);
+        });
 }
 
 void Canvas::line(float x0, float y0, float x1, float y1, float thickness, Colour colour) {
     const float pad = thickness / 2;
-    paint(image_, std::min(x0, x1) - pad, std::min(y0, y1) - pad, std::max(x0, x1) + pad,
-          std::max(y0, y1) + pad,
-          [=](Vec p) { return segmentDistance(p, {x0, y0}, {x1, y1}) - pad; }, solid(colour));
+    paint(
+        image_, std::min(x0, x1) - pad, std::min(y0, y1) - pad, std::max(x0, x1) + pad,
+        std::max(y0, y1) + pad,
+        [=](Vec p) {
+            return segmentDistance(p, {x0, y0}, {x1, y1}) - pad;
+        },
+        solid(colour));
 }
 
 void Canvas::fillTriangle(float x0, float y0, float x1, float y1, float x2, float y2,
@@ -197,22 +211,22 @@ void Canvas::fillTriangle(float x0, float y0, float x1, float y1, float x2, floa
     const Vec v[3] = {{x0, y0}, {x1, y1}, {x2, y2}};
     const double area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
     const double sign = area < 0 ? -1.0 : 1.0;
-    paint(image_, std::min({x0, x1, x2}), std::min({y0, y1, y2}), std::max({x0, x1, x2}),
-          std::max({y0, y1, y2}),
-          [=](Vec p) {
-              double edge = std::numeric_limits<double>::infinity();
-              bool inside = true;
-              for (int i = 0; i < 3; ++i) {
-                  const Vec a = v[i];
-                  const Vec b = v[(i + 1) % 3];
-                  const double cross = ((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) *
-                                       sign;
-                  inside = inside && cross >= 0;
-                  edge = std::min(edge, segmentDistance(p, a, b));
-              }
-              return inside ? -edge : edge;
-          },
-          solid(colour));
+    paint(
+        image_, std::min({x0, x1, x2}), std::min({y0, y1, y2}), std::max({x0, x1, x2}),
+        std::max({y0, y1, y2}),
+        [=](Vec p) {
+            double edge = std::numeric_limits<double>::infinity();
+            bool inside = true;
+            for (int i = 0; i < 3; ++i) {
+                const Vec a = v[i];
+                const Vec b = v[(i + 1) % 3];
+                const double cross = ((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) * sign;
+                inside = inside && cross >= 0;
+                edge = std::min(edge, segmentDistance(p, a, b));
+            }
+            return inside ? -edge : edge;
+        },
+        solid(colour));
 }
 
 void Canvas::copyFrom(const Canvas& source, int x, int y) {
@@ -231,8 +245,6 @@ void Canvas::copyFrom(const Canvas& source, int x, int y) {
     }
 }
 
-void Canvas::writePng(const std::filesystem::path& path) const {
-    render::writePng(image_, path);
-}
+void Canvas::writePng(const std::filesystem::path& path) const { render::writePng(image_, path); }
 
 } // namespace e2d::assetgen

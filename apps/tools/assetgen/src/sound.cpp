@@ -39,10 +39,18 @@ Sound tone(Wave wave, double frequency, double seconds, double amplitude, double
         const double p = phase - std::floor(phase);
         double v = 0;
         switch (wave) {
-        case Wave::Sine: v = std::sin(2 * std::numbers::pi * p); break;
-        case Wave::Square: v = p < 0.5 ? 1.0 : -1.0; break;
-        case Wave::Triangle: v = p < 0.5 ? 4 * p - 1 : 3 - 4 * p; break;
-        case Wave::Saw: v = 2 * p - 1; break;
+        case Wave::Sine:
+            v = std::sin(2 * std::numbers::pi * p);
+            break;
+        case Wave::Square:
+            v = p < 0.5 ? 1.0 : -1.0;
+            break;
+        case Wave::Triangle:
+            v = p < 0.5 ? 4 * p - 1 : 3 - 4 * p;
+            break;
+        case Wave::Saw:
+            v = 2 * p - 1;
+            break;
         }
         s.samples[i] = static_cast<float>(amplitude * v);
         phase += f / sampleRate;
@@ -107,9 +115,7 @@ void normalise(Sound& sound, double peak) {
     }
 }
 
-double noteFrequency(int note) noexcept {
-    return 440.0 * std::pow(2.0, (note - 69) / 12.0);
-}
+double noteFrequency(int note) noexcept { return 440.0 * std::pow(2.0, (note - 69) / 12.0); }
 
 Sound sequence(const std::vector<Note>& notes, double bpm, Wave wave, const Envelope& envelope,
                double amplitude, int sampleRate) {
@@ -148,7 +154,8 @@ void writeSound(const Sound& sound, const std::filesystem::path& path) {
     }
     SNDFILE* file = sf_open(path.c_str(), SFM_WRITE, &info);
     if (file == nullptr) {
-        throw core::Error("assetgen::writeSound(): '" + path.string() + "': " + sf_strerror(nullptr));
+        throw core::Error("assetgen::writeSound(): '" + path.string() +
+                          "': " + sf_strerror(nullptr));
     }
     // Clip rather than wrap when a mix goes past full scale.
     sf_command(file, SFC_SET_CLIPPING, nullptr, SF_TRUE);

@@ -61,7 +61,7 @@ TEST(Canvas, RingAndRoundedRectAreas) {
     rect.fillRoundedRect(10, 10, 40, 30, 5, {0, 255, 0, 255});
     // A 40 x 30 rectangle less four corners of (r^2 - pi r^2 / 4).
     EXPECT_NEAR(coveredPixels(rect), 40 * 30 - (4 - std::numbers::pi) * 25, 2.0);
-    EXPECT_EQ(rect.pixel(10, 10).a, 0);  // cut corner
+    EXPECT_EQ(rect.pixel(10, 10).a, 0);   // cut corner
     EXPECT_EQ(rect.pixel(30, 10).a, 255); // top edge
     EXPECT_EQ(rect.pixel(9, 20).a, 0);
 
@@ -123,8 +123,8 @@ SheetFrame solidFrame(const std::string& name, int w, int h, Colour colour) {
 TEST(Sheet, PackedFramesDoNotOverlapAndStayInside) {
     std::vector<SheetFrame> frames;
     for (int i = 0; i < 30; ++i) {
-        frames.push_back(solidFrame("f" + std::to_string(i), 10 + (i * 7) % 23,
-                                    8 + (i * 5) % 17, {255, 0, 0, 255}));
+        frames.push_back(solidFrame("f" + std::to_string(i), 10 + (i * 7) % 23, 8 + (i * 5) % 17,
+                                    {255, 0, 0, 255}));
     }
     const SheetLayout layout = packFrames(frames, 100, 1);
     ASSERT_EQ(layout.frames.size(), frames.size());
@@ -179,8 +179,9 @@ TEST(Sheet, WrittenSheetReadsBackThroughSpriteSheet) {
 
 TEST(Sheet, DuplicateNamesAndWideFramesAreErrors) {
     std::vector<SheetFrame> dup = {solidFrame("a", 4, 4, {}), solidFrame("a", 4, 4, {})};
-    EXPECT_THAT([&] { (void)packFrames(dup); },
-                testing::ThrowsMessage<core::Error>(testing::HasSubstr("two frames are called 'a'")));
+    EXPECT_THAT(
+        [&] { (void)packFrames(dup); },
+        testing::ThrowsMessage<core::Error>(testing::HasSubstr("two frames are called 'a'")));
     std::vector<SheetFrame> wide = {solidFrame("w", 100, 4, {})};
     EXPECT_THAT([&] { (void)packFrames(wide, 64); },
                 testing::ThrowsMessage<core::Error>(testing::HasSubstr("'w' is 100 pixels wide")));

@@ -70,18 +70,23 @@ TEST(Animation, EveryModeFrameCountStartAndUpdatePatternMatchesTheSequence) {
         for (int n = 1; n <= 7; ++n) {
             for (int start = 0; start < n; ++start) {
                 for (int pattern = 0; pattern < 8; ++pattern) {
-                    Animation anim({.frameCount = n, .frameDuration = duration, .startFrame = start, .mode = mode});
+                    Animation anim({.frameCount = n,
+                                    .frameDuration = duration,
+                                    .startFrame = start,
+                                    .mode = mode});
                     std::int64_t sixtyFourths = 0;
                     for (int update = 0; update < 60; ++update) {
                         // Small steps, exact one-frame steps and long steps that skip several frames.
                         const int kind = static_cast<int>(rng() % 3);
-                        const int dt64 = kind == 0 ? static_cast<int>(rng() % 16)
-                                                   : (kind == 1 ? 16 : static_cast<int>(rng() % 200));
+                        const int dt64 = kind == 0
+                                             ? static_cast<int>(rng() % 16)
+                                             : (kind == 1 ? 16 : static_cast<int>(rng() % 200));
                         anim.update(dt64 / 64.0);
                         sixtyFourths += dt64;
                         const Expected e = afterSteps(n, start, mode, sixtyFourths / 16);
-                        ASSERT_EQ(anim.frame(), e.frame) << "mode " << static_cast<int>(mode) << " n " << n
-                                                         << " start " << start << " time " << sixtyFourths / 64.0;
+                        ASSERT_EQ(anim.frame(), e.frame)
+                            << "mode " << static_cast<int>(mode) << " n " << n << " start " << start
+                            << " time " << sixtyFourths / 64.0;
                         ASSERT_EQ(anim.finished(), e.finished);
                         if (!e.finished) {
                             ASSERT_DOUBLE_EQ(anim.timeInFrame(), (sixtyFourths % 16) / 64.0);
@@ -125,7 +130,8 @@ TEST(Animation, ALongFrameTimeSkipsTheRightNumberOfFrames) {
     loop.update(0.25);
     EXPECT_EQ(loop.frame(), 8 % 5);
 
-    Animation once({.frameCount = 5, .frameDuration = 0.5, .startFrame = 1, .mode = AnimationMode::Once});
+    Animation once(
+        {.frameCount = 5, .frameDuration = 0.5, .startFrame = 1, .mode = AnimationMode::Once});
     once.update(1.5);
     EXPECT_EQ(once.frame(), 4);
     EXPECT_FALSE(once.finished());
@@ -166,7 +172,8 @@ TEST(Animation, SpeedScalesTimeAndZeroHolds) {
 }
 
 TEST(Animation, RestartAndSetFrame) {
-    Animation anim({.frameCount = 3, .frameDuration = 1.0, .startFrame = 1, .mode = AnimationMode::Once});
+    Animation anim(
+        {.frameCount = 3, .frameDuration = 1.0, .startFrame = 1, .mode = AnimationMode::Once});
     anim.update(5.0);
     EXPECT_TRUE(anim.finished());
     anim.restart();
@@ -185,7 +192,8 @@ TEST(Animation, RestartAndSetFrame) {
 }
 
 TEST(Animation, InvalidDefinitionsAndArgumentsNameFieldAndValue) {
-    EXPECT_EQ(errorOf({.frameCount = 0}), "render::Animation::Animation(): frameCount must be >= 1, got 0");
+    EXPECT_EQ(errorOf({.frameCount = 0}),
+              "render::Animation::Animation(): frameCount must be >= 1, got 0");
     EXPECT_EQ(errorOf({.frameDuration = 0.0}),
               "render::Animation::Animation(): frameDuration must be finite and > 0, got 0");
     EXPECT_EQ(errorOf({.frameDuration = std::numeric_limits<double>::infinity()}),
@@ -194,7 +202,8 @@ TEST(Animation, InvalidDefinitionsAndArgumentsNameFieldAndValue) {
               "render::Animation::Animation(): startFrame must be in [0, 3), got 3");
     EXPECT_EQ(errorOf({.frameCount = 3, .startFrame = -1}),
               "render::Animation::Animation(): startFrame must be in [0, 3), got -1");
-    EXPECT_EQ(errorOf({.speed = -1.0}), "render::Animation::Animation(): speed must be finite and >= 0, got -1");
+    EXPECT_EQ(errorOf({.speed = -1.0}),
+              "render::Animation::Animation(): speed must be finite and >= 0, got -1");
 
     Animation anim({.frameCount = 2});
     EXPECT_THROW(anim.update(-0.5), Error);

@@ -45,7 +45,8 @@ public:
     std::vector<std::string> messages;
 
 private:
-    core::Logger logger_{core::LogLevel::Trace, [this](core::LogLevel, std::string_view m) { messages.emplace_back(m); }};
+    core::Logger logger_{core::LogLevel::Trace,
+                         [this](core::LogLevel, std::string_view m) { messages.emplace_back(m); }};
     std::vector<core::System*> systems_;
 };
 
@@ -75,7 +76,8 @@ protected:
         def.vsync = false;
         def.visible = false;
         window_ = std::make_unique<Window>(def);
-        renderer_ = std::make_unique<Renderer>(*window_, RendererDef{.offscreenSize = {kWidth, kHeight}});
+        renderer_ =
+            std::make_unique<Renderer>(*window_, RendererDef{.offscreenSize = {kWidth, kHeight}});
         system_ = std::make_unique<RenderSystem>(*renderer_, nullptr, nullptr);
         // One world unit per pixel, world (0, 0) at the bottom-left corner.
         system_->camera() = Camera(CameraDef{.position = {kWidth / 2.0f, kHeight / 2.0f},
@@ -162,7 +164,8 @@ TEST_F(Components, TextLabelDrawsAtItsObjectWithItsAlignment) {
     TextStyle badStyle;
     badStyle.lineSpacing = 0.0f;
     EXPECT_THAT([&] { label->setStyle(badStyle); },
-                testing::ThrowsMessage<core::Error>(HasSubstr("render::TextLabel::setStyle(): style.lineSpacing")));
+                testing::ThrowsMessage<core::Error>(
+                    HasSubstr("render::TextLabel::setStyle(): style.lineSpacing")));
     EXPECT_EQ(label->def().style.horizontal, HorizontalAlign::Right);
 
     // Moving the object moves the text; an emptied label draws nothing.
@@ -172,8 +175,8 @@ TEST_F(Components, TextLabelDrawsAtItsObjectWithItsAlignment) {
     EXPECT_EQ(count(empty, 0, 0, 320, 200, {255, 255, 255, 255}, 100), 0);
     TextLabelDef zero;
     zero.pixelSize = 0;
-    EXPECT_THAT([&] { TextLabel bad(zero); },
-                testing::ThrowsMessage<core::Error>(HasSubstr("pixelSize must be in [1, 1024], got 0")));
+    EXPECT_THAT([&] { TextLabel bad(zero); }, testing::ThrowsMessage<core::Error>(HasSubstr(
+                                                  "pixelSize must be in [1, 1024], got 0")));
 }
 
 TEST_F(Components, AnimatedSpritePlaysTheSheetFramesInOrder) {
@@ -205,7 +208,8 @@ TEST_F(Components, FramesOfASheetWhoseImageFailedKeepTheirDeclaredSize) {
     const SpriteSheet* sheet = system_->sheet(folder_ / "gone.json");
     ASSERT_NE(sheet, nullptr);
     // A white background, so both colours of the checker count as the sprite.
-    renderer_->createSprite(SpriteDef{.position = {160.0f, 100.0f}, .z = -1.0f, .size = {320.0f, 200.0f}});
+    renderer_->createSprite(
+        SpriteDef{.position = {160.0f, 100.0f}, .z = -1.0f, .size = {320.0f, 200.0f}});
     addAnimation(*sheet, "big");
     EXPECT_TRUE(renderer_->textureInfo(renderer_->loadTexture(sheet->imagePath())).placeholder);
     const Color white{255, 255, 255, 255};

@@ -41,7 +41,9 @@ constexpr int kHeight = 200;
 // Screen pixels (origin bottom-left, y up) of a read-back frame.
 struct Frame {
     Image image;
-    [[nodiscard]] const std::uint8_t* at(int x, int y) const { return image.at(x, kHeight - 1 - y); }
+    [[nodiscard]] const std::uint8_t* at(int x, int y) const {
+        return image.at(x, kHeight - 1 - y);
+    }
     [[nodiscard]] int red(int x, int y) const { return at(x, y)[0]; }
 };
 
@@ -76,7 +78,8 @@ protected:
         def.vsync = false;
         def.visible = false;
         window_ = std::make_unique<Window>(def);
-        renderer_ = std::make_unique<Renderer>(*window_, RendererDef{.offscreenSize = {kWidth, kHeight}});
+        renderer_ =
+            std::make_unique<Renderer>(*window_, RendererDef{.offscreenSize = {kWidth, kHeight}});
         // One world unit per pixel, world (0, 0) at the bottom-left pixel corner.
         camera_ = std::make_unique<Camera>(CameraDef{.position = {kWidth / 2.0f, kHeight / 2.0f},
                                                      .referenceSize = {kWidth, kHeight}});
@@ -113,8 +116,8 @@ TEST_F(ContentGl, HelloHasInkInsideItsMeasuredBoxAndTheAtlasCoverageExactly) {
     const Ink all = inkIn(f, 0, 0, kWidth, kHeight);
     const glm::vec2 boxMin = anchor + layout.box.min;
     const glm::vec2 boxMax = anchor + layout.box.max;
-    const Ink inside = inkIn(f, static_cast<int>(boxMin.x), static_cast<int>(boxMin.y), static_cast<int>(boxMax.x),
-                             static_cast<int>(boxMax.y));
+    const Ink inside = inkIn(f, static_cast<int>(boxMin.x), static_cast<int>(boxMin.y),
+                             static_cast<int>(boxMax.x), static_cast<int>(boxMax.y));
     EXPECT_GT(all.count, 150);
     EXPECT_EQ(inside.count, all.count);
     EXPECT_LE(inside.min.x - boxMin.x, 4.0f);
@@ -130,10 +133,11 @@ TEST_F(ContentGl, HelloHasInkInsideItsMeasuredBoxAndTheAtlasCoverageExactly) {
         const int top = static_cast<int>(anchor.y + q.rect.max.y) - 1;
         for (int row = 0; row < q.atlasRect.h; ++row) {
             for (int col = 0; col < q.atlasRect.w; ++col) {
-                const int coverage =
-                    pixels[static_cast<std::size_t>(((q.atlasRect.y + row) * atlasWidth + q.atlasRect.x + col) * 4 + 3)];
-                ASSERT_NEAR(f.red(x0 + col, top - row), coverage, 1) << "glyph " << static_cast<char>(q.codePoint)
-                                                                    << " texel " << col << ", " << row;
+                const int coverage = pixels[static_cast<std::size_t>(
+                    ((q.atlasRect.y + row) * atlasWidth + q.atlasRect.x + col) * 4 + 3)];
+                ASSERT_NEAR(f.red(x0 + col, top - row), coverage, 1)
+                    << "glyph " << static_cast<char>(q.codePoint) << " texel " << col << ", "
+                    << row;
                 ++compared;
             }
         }
@@ -166,10 +170,14 @@ TEST_F(ContentGl, AlignmentModesPutTheInkWhereTheLayoutSays) {
     const glm::vec2 centre{kWidth / 2.0f, kHeight / 2.0f};
     const glm::vec2 bottomRight{kWidth - 10.0f, 10.0f};
     const TextLayout a = text.draw(*font, "Top left", {}, {.position = topLeft});
-    const TextLayout b = text.draw(*font, "Mid\nmiddle", {.horizontal = HorizontalAlign::Center, .vertical = VerticalAlign::Center},
-                                   {.position = centre});
-    const TextLayout c = text.draw(*font, "Bottom right", {.horizontal = HorizontalAlign::Right, .vertical = VerticalAlign::Bottom},
-                                   {.position = bottomRight});
+    const TextLayout b =
+        text.draw(*font, "Mid\nmiddle",
+                  {.horizontal = HorizontalAlign::Center, .vertical = VerticalAlign::Center},
+                  {.position = centre});
+    const TextLayout c =
+        text.draw(*font, "Bottom right",
+                  {.horizontal = HorizontalAlign::Right, .vertical = VerticalAlign::Bottom},
+                  {.position = bottomRight});
     const Frame f = render("alignment");
 
     const auto check = [&](const TextLayout& layout, glm::vec2 anchor, const char* name) {
@@ -177,9 +185,10 @@ TEST_F(ContentGl, AlignmentModesPutTheInkWhereTheLayoutSays) {
         // it, like this 'T' whose antialiased edge reaches one pixel left of the pen).
         const glm::vec2 lo = anchor + layout.bounds.min;
         const glm::vec2 hi = anchor + layout.bounds.max;
-        const Ink ink = inkIn(f, static_cast<int>(lo.x) - 8, static_cast<int>(lo.y) - 8, static_cast<int>(hi.x) + 8,
-                              static_cast<int>(hi.y) + 8);
-        const Ink bounded = inkIn(f, static_cast<int>(lo.x), static_cast<int>(lo.y), static_cast<int>(hi.x), static_cast<int>(hi.y));
+        const Ink ink = inkIn(f, static_cast<int>(lo.x) - 8, static_cast<int>(lo.y) - 8,
+                              static_cast<int>(hi.x) + 8, static_cast<int>(hi.y) + 8);
+        const Ink bounded = inkIn(f, static_cast<int>(lo.x), static_cast<int>(lo.y),
+                                  static_cast<int>(hi.x), static_cast<int>(hi.y));
         EXPECT_GT(ink.count, 50) << name;
         EXPECT_EQ(bounded.count, ink.count) << name;
         // Bounds exceed the box by at most a pixel or two for these strings.
@@ -216,8 +225,9 @@ TEST_F(ContentGl, ABadFontGivesItsErrorTheDefaultFontAndTheNextFrameStillRenders
                                        std::pair{cutShort, "draws nothing"}}) {
         SCOPED_TRACE(path.string());
         std::vector<std::string> logged;
-        e2d::core::Logger logger(e2d::core::LogLevel::Info,
-                                 [&](e2d::core::LogLevel, std::string_view m) { logged.emplace_back(m); });
+        e2d::core::Logger logger(
+            e2d::core::LogLevel::Info,
+            [&](e2d::core::LogLevel, std::string_view m) { logged.emplace_back(m); });
         TextRenderer text(*renderer_, &logger);
         Font* font = text.font(path, 24);
         // The default font stands in.
@@ -255,13 +265,17 @@ TEST_F(ContentGl, NewGlyphsAndAGrowingAtlasReachTheTexture) {
     }
     static_cast<void>(layoutText(*font, latin));
     EXPECT_NE(font->atlasGeneration(), generation);
-    const TextLayout layout = text.draw(*font, "\xC3\x80\xC3\xBF ab", {}, {.position = {10.0f, 100.0f}});
+    const TextLayout layout =
+        text.draw(*font, "\xC3\x80\xC3\xBF ab", {}, {.position = {10.0f, 100.0f}});
     const Frame f = render("atlas_2");
     ASSERT_EQ(layout.quads.size(), 4u);
     for (const GlyphQuad& q : layout.quads) {
         const glm::vec2 lo = glm::vec2(10.0f, 100.0f) + q.rect.min;
         const glm::vec2 hi = glm::vec2(10.0f, 100.0f) + q.rect.max;
-        EXPECT_GT(inkIn(f, static_cast<int>(lo.x), static_cast<int>(lo.y), static_cast<int>(hi.x), static_cast<int>(hi.y), 128).count, 5)
+        EXPECT_GT(inkIn(f, static_cast<int>(lo.x), static_cast<int>(lo.y), static_cast<int>(hi.x),
+                        static_cast<int>(hi.y), 128)
+                      .count,
+                  5)
             << "glyph U+" << std::hex << static_cast<unsigned>(q.codePoint);
     }
 }
@@ -284,12 +298,15 @@ TEST_F(ContentGl, ASheetWhoseFrameLiesOutsideItsImageGivesItsError) {
         sheet.checkImageSize(size);
         FAIL() << "no error";
     } catch (const Error& e) {
-        EXPECT_THAT(e.what(), HasSubstr((dir / "sheet.json").string() + ": frames[\"b\"].frame: frame \"b\" (x 40"));
-        EXPECT_THAT(e.what(), HasSubstr("outside the 32x32 image loaded from '" + (dir / "small.png").string() + "'"));
+        EXPECT_THAT(e.what(), HasSubstr((dir / "sheet.json").string() +
+                                        ": frames[\"b\"].frame: frame \"b\" (x 40"));
+        EXPECT_THAT(e.what(), HasSubstr("outside the 32x32 image loaded from '" +
+                                        (dir / "small.png").string() + "'"));
     }
     // The frame that fits draws, and the next frame renders.
     const SpriteFrame& a = sheet.frame("a");
-    renderer_->createSprite({.texture = texture, .position = {50.0f, 50.0f}, .size = glm::vec2(a.size()), .uv = a.uv});
+    renderer_->createSprite(
+        {.texture = texture, .position = {50.0f, 50.0f}, .size = glm::vec2(a.size()), .uv = a.uv});
     EXPECT_EQ(render("sheet_1").red(50, 50), 255);
     EXPECT_EQ(render("sheet_2").red(50, 50), 255);
 }
@@ -299,7 +316,8 @@ TEST_F(ContentGl, ALineCoversExactlyItsPixels) {
     // columns 9..101 and rows 19..21.
     renderer_->drawer().line({10.5f, 20.5f}, {100.5f, 20.5f}, {1, 0, 0, 1}, 3.0f);
     // A vertical one in screen space, 1 px wide: column 200, rows 30..69 (caps add half a pixel).
-    renderer_->drawer().line({200.5f, 30.5f}, {200.5f, 69.5f}, {1, 0, 0, 1}, 1.0f, DrawSpace::Screen);
+    renderer_->drawer().line({200.5f, 30.5f}, {200.5f, 69.5f}, {1, 0, 0, 1}, 1.0f,
+                             DrawSpace::Screen);
     const Frame f = render("line");
     EXPECT_EQ(renderer_->stats().debugDrawCalls, 1);
     for (int y = 0; y < kHeight; ++y) {

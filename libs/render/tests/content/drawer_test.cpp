@@ -80,8 +80,8 @@ TEST(Drawer, ConcavePolygonsAreTriangulatedInEitherWinding) {
     // An L: 3x3 square minus its top-right 2x2, area 5; and a comb with three teeth.
     const std::vector<glm::vec2> ell = {{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 3}, {0, 3}};
     const std::vector<glm::vec2> reversed(ell.rbegin(), ell.rend());
-    const std::vector<glm::vec2> comb = {{0, 0}, {5, 0}, {5, 3}, {4, 3}, {4, 1}, {3, 1}, {3, 3},
-                                         {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}};
+    const std::vector<glm::vec2> comb = {{0, 0}, {5, 0}, {5, 3}, {4, 3}, {4, 1}, {3, 1},
+                                         {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}};
     for (const auto* shape : {&ell, &reversed}) {
         Drawer d;
         d.fillPolygon(*shape, {1, 1, 1, 1});

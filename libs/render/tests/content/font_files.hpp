@@ -27,7 +27,8 @@ public:
     SfntFile() : SfntFile(kDefaultFontPath) {}
     explicit SfntFile(const std::filesystem::path& path) {
         std::ifstream in(path, std::ios::binary);
-        const std::vector<char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        const std::vector<char> bytes{std::istreambuf_iterator<char>(in),
+                                      std::istreambuf_iterator<char>()};
         if (bytes.size() < 12) {
             throw std::runtime_error("not a font: " + path.string());
         }
@@ -37,9 +38,10 @@ public:
             const std::size_t entry = 12 + 16 * static_cast<std::size_t>(i);
             const std::uint32_t offset = read(bytes, entry + 8, 4);
             const std::uint32_t length = read(bytes, entry + 12, 4);
-            tables_.push_back({std::string(bytes.begin() + static_cast<std::ptrdiff_t>(entry),
-                                           bytes.begin() + static_cast<std::ptrdiff_t>(entry + 4)),
-                               std::vector<char>(bytes.begin() + offset, bytes.begin() + offset + length)});
+            tables_.push_back(
+                {std::string(bytes.begin() + static_cast<std::ptrdiff_t>(entry),
+                             bytes.begin() + static_cast<std::ptrdiff_t>(entry + 4)),
+                 std::vector<char>(bytes.begin() + offset, bytes.begin() + offset + length)});
         }
     }
 
@@ -52,7 +54,9 @@ public:
         throw std::runtime_error("no table " + tag);
     }
 
-    void drop(const std::string& tag) { std::erase_if(tables_, [&](const Table& t) { return t.tag == tag; }); }
+    void drop(const std::string& tag) {
+        std::erase_if(tables_, [&](const Table& t) { return t.tag == tag; });
+    }
 
     // Puts `tag`'s data at the end of the file (the directory keeps its sorted order).
     void moveToEnd(const std::string& tag) {
@@ -66,8 +70,9 @@ public:
         const Table& head = table("head");
         const bool longOffsets = read(head.data, 50, 2) != 0;
         const Table& loca = table("loca");
-        const std::size_t offset = longOffsets ? read(loca.data, 4 * static_cast<std::size_t>(index), 4)
-                                               : 2 * read(loca.data, 2 * static_cast<std::size_t>(index), 2);
+        const std::size_t offset =
+            longOffsets ? read(loca.data, 4 * static_cast<std::size_t>(index), 4)
+                        : 2 * read(loca.data, 2 * static_cast<std::size_t>(index), 2);
         std::vector<char>& glyf = table("glyf").data;
         glyf[offset] = static_cast<char>(30000 >> 8);
         glyf[offset + 1] = static_cast<char>(30000 & 0xff);
@@ -82,7 +87,8 @@ public:
         for (const Table& t : tables_) {
             sorted.push_back(&t);
         }
-        std::sort(sorted.begin(), sorted.end(), [](const Table* a, const Table* b) { return a->tag < b->tag; });
+        std::sort(sorted.begin(), sorted.end(),
+                  [](const Table* a, const Table* b) { return a->tag < b->tag; });
         std::uint32_t offset = static_cast<std::uint32_t>(12 + 16 * tables_.size());
         std::vector<std::uint32_t> offsets;
         for (const Table& t : tables_) {
@@ -105,7 +111,8 @@ public:
 
     void save(const std::filesystem::path& path, double fraction = 1.0) const {
         const std::vector<char> data = bytes(fraction);
-        std::ofstream(path, std::ios::binary | std::ios::trunc).write(data.data(), static_cast<std::streamsize>(data.size()));
+        std::ofstream(path, std::ios::binary | std::ios::trunc)
+            .write(data.data(), static_cast<std::streamsize>(data.size()));
     }
 
 private:

@@ -103,7 +103,9 @@ std::string errorOf(const std::string& json, const std::string& name = "bad.json
 }
 
 // A valid array sheet with `frame` replacing the one frame's body.
-std::string oneFrame(const std::string& body, const std::string& meta = R"({"image": "a.png", "size": {"w": 64, "h": 64}})") {
+std::string
+oneFrame(const std::string& body,
+         const std::string& meta = R"({"image": "a.png", "size": {"w": 64, "h": 64}})") {
     return R"({"frames": {"a": )" + body + R"(}, "meta": )" + meta + "}";
 }
 
@@ -134,12 +136,15 @@ TEST(SpriteSheet, AMissingFileIsAnErrorNamingIt) {
         static_cast<void>(SpriteSheet::fromFile("/nonexistent/sheet.json"));
         FAIL() << "no error";
     } catch (const Error& e) {
-        EXPECT_STREQ(e.what(), "render::SpriteSheet: /nonexistent/sheet.json: cannot read the file (no such file)");
+        EXPECT_STREQ(
+            e.what(),
+            "render::SpriteSheet: /nonexistent/sheet.json: cannot read the file (no such file)");
     }
 }
 
 TEST(SpriteSheet, OptionalKeysDefaultToAnUntrimmedUnrotatedFrame) {
-    const SpriteSheet sheet = SpriteSheet::fromString(oneFrame(R"({"frame": {"x": 1, "y": 2, "w": 3, "h": 4}})"), "s");
+    const SpriteSheet sheet =
+        SpriteSheet::fromString(oneFrame(R"({"frame": {"x": 1, "y": 2, "w": 3, "h": 4}})"), "s");
     const SpriteFrame& f = sheet.frame("a");
     EXPECT_FALSE(f.rotated);
     EXPECT_FALSE(f.trimmed);
@@ -163,8 +168,9 @@ TEST(SpriteSheet, LooksFramesUpByExactName) {
 
 TEST(SpriteSheet, AnimationFramesAreInNaturalNumericOrder) {
     // Written in a scrambled order; names that only share a prefix must not join in.
-    const std::vector<std::string> names = {"run10.png", "run2.png", "running1.png", "run1.png", "run",
-                                            "run3x.png", "run002.png", "walk1.png", "run100.png", "run9"};
+    const std::vector<std::string> names = {"run10.png",  "run2.png",  "running1.png", "run1.png",
+                                            "run",        "run3x.png", "run002.png",   "walk1.png",
+                                            "run100.png", "run9"};
     std::string json = R"({"frames": [)";
     for (std::size_t i = 0; i < names.size(); ++i) {
         json += (i ? "," : "") + std::string(R"({"filename": ")") + names[i] +
@@ -177,7 +183,8 @@ TEST(SpriteSheet, AnimationFramesAreInNaturalNumericOrder) {
         order.push_back(sheet.frames()[static_cast<std::size_t>(i)].name);
     }
     // 1, 2 (fewer digits first among equals), 002, 9, 10, 100.
-    EXPECT_THAT(order, testing::ElementsAre("run1.png", "run2.png", "run002.png", "run9", "run10.png", "run100.png"));
+    EXPECT_THAT(order, testing::ElementsAre("run1.png", "run2.png", "run002.png", "run9",
+                                            "run10.png", "run100.png"));
     EXPECT_TRUE(sheet.animationFrames("jump").empty());
     EXPECT_EQ(sheet.animationFrames("walk").size(), 1u);
 }
@@ -185,7 +192,8 @@ TEST(SpriteSheet, AnimationFramesAreInNaturalNumericOrder) {
 TEST(SpriteSheet, MalformedJsonNamesTheFileLineAndColumn) {
     EXPECT_THAT(errorOf("{\n  \"frames\": {,\n}", "sheets/bad.json"),
                 testing::StartsWith("render::SpriteSheet: sheets/bad.json:2:14: malformed JSON: "));
-    EXPECT_THAT(errorOf("{\"frames\": [", "t.json"), testing::StartsWith("render::SpriteSheet: t.json:1:"));
+    EXPECT_THAT(errorOf("{\"frames\": [", "t.json"),
+                testing::StartsWith("render::SpriteSheet: t.json:1:"));
     // nlohmann reports a number beyond double's range differently (found by fuzz_sprite_sheet).
     EXPECT_EQ(errorOf("[1e99999]", "n.json"),
               "render::SpriteSheet: n.json: malformed JSON: number overflow parsing '1e99999'");
@@ -203,41 +211,57 @@ TEST(SpriteSheet, EveryMissingKeyIsNamedWithItsPath) {
               "render::SpriteSheet: bad.json: frames[\"a\"]: missing key \"frame\"");
     EXPECT_EQ(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "h": 4}})")),
               "render::SpriteSheet: bad.json: frames[\"a\"].frame: missing key \"w\"");
-    EXPECT_EQ(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 4, "h": 4}, "sourceSize": {"w": 4}})")),
-              "render::SpriteSheet: bad.json: frames[\"a\"].sourceSize: missing key \"h\"");
-    EXPECT_EQ(errorOf(R"({"frames": [{"frame": {"x": 0, "y": 0, "w": 1, "h": 1}}], "meta": {"image": "a", "size": {"w": 1, "h": 1}}})"),
-              "render::SpriteSheet: bad.json: frames[0]: missing key \"filename\"");
-    EXPECT_EQ(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 4, "h": 4}, "pivot": {"x": 0.5}})")),
-              "render::SpriteSheet: bad.json: frames[\"a\"].pivot: missing key \"y\"");
+    EXPECT_EQ(
+        errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 4, "h": 4}, "sourceSize": {"w": 4}})")),
+        "render::SpriteSheet: bad.json: frames[\"a\"].sourceSize: missing key \"h\"");
+    EXPECT_EQ(
+        errorOf(
+            R"({"frames": [{"frame": {"x": 0, "y": 0, "w": 1, "h": 1}}], "meta": {"image": "a", "size": {"w": 1, "h": 1}}})"),
+        "render::SpriteSheet: bad.json: frames[0]: missing key \"filename\"");
+    EXPECT_EQ(
+        errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 4, "h": 4}, "pivot": {"x": 0.5}})")),
+        "render::SpriteSheet: bad.json: frames[\"a\"].pivot: missing key \"y\"");
 }
 
 TEST(SpriteSheet, EveryWrongTypeIsNamedWithItsPathAndValue) {
     EXPECT_EQ(errorOf("[]"), "render::SpriteSheet: bad.json: expected an object, got array []");
     EXPECT_EQ(errorOf(R"({"frames": 3, "meta": {"image": "a.png", "size": {"w": 1, "h": 1}}})"),
-              "render::SpriteSheet: bad.json: frames: expected an object (hash format) or an array (array "
+              "render::SpriteSheet: bad.json: frames: expected an object (hash format) or an array "
+              "(array "
               "format), got number 3");
-    EXPECT_EQ(errorOf(R"({"frames": {}, "meta": {"image": 7, "size": {"w": 1, "h": 1}}})"),
-              "render::SpriteSheet: bad.json: meta.image: expected a non-empty string, got number 7");
+    EXPECT_EQ(
+        errorOf(R"({"frames": {}, "meta": {"image": 7, "size": {"w": 1, "h": 1}}})"),
+        "render::SpriteSheet: bad.json: meta.image: expected a non-empty string, got number 7");
     EXPECT_EQ(errorOf(R"({"frames": {}, "meta": {"image": "a", "size": {"w": "1", "h": 1}}})"),
               "render::SpriteSheet: bad.json: meta.size.w: expected an integer, got string \"1\"");
     EXPECT_EQ(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 2.5, "h": 4}})")),
-              "render::SpriteSheet: bad.json: frames[\"a\"].frame.w: expected an integer, got number 2.5");
+              "render::SpriteSheet: bad.json: frames[\"a\"].frame.w: expected an integer, got "
+              "number 2.5");
     EXPECT_EQ(errorOf(oneFrame(R"({"frame": {"x": -1, "y": 0, "w": 2, "h": 4}})")),
-              "render::SpriteSheet: bad.json: frames[\"a\"].frame.x: expected an integer in [0, 1048576], got "
+              "render::SpriteSheet: bad.json: frames[\"a\"].frame.x: expected an integer in [0, "
+              "1048576], got "
               "number -1");
     EXPECT_EQ(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 0, "h": 4}})")),
-              "render::SpriteSheet: bad.json: frames[\"a\"].frame.w: expected an integer in [1, 1048576], got "
+              "render::SpriteSheet: bad.json: frames[\"a\"].frame.w: expected an integer in [1, "
+              "1048576], got "
               "number 0");
     EXPECT_EQ(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 2, "h": 4}, "rotated": "yes"})")),
-              "render::SpriteSheet: bad.json: frames[\"a\"].rotated: expected true or false, got string \"yes\"");
+              "render::SpriteSheet: bad.json: frames[\"a\"].rotated: expected true or false, got "
+              "string \"yes\"");
     EXPECT_EQ(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 2, "h": 4}, "trimmed": 1})")),
-              "render::SpriteSheet: bad.json: frames[\"a\"].trimmed: expected true or false, got number 1");
+              "render::SpriteSheet: bad.json: frames[\"a\"].trimmed: expected true or false, got "
+              "number 1");
     EXPECT_EQ(errorOf(oneFrame(R"({"frame": [0, 0, 2, 4]})")),
-              "render::SpriteSheet: bad.json: frames[\"a\"].frame: expected an object, got array [0,0,2,4]");
-    EXPECT_EQ(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 2, "h": 4}, "pivot": {"x": null, "y": 0}})")),
-              "render::SpriteSheet: bad.json: frames[\"a\"].pivot.x: expected a number, got null null");
-    EXPECT_EQ(errorOf(R"({"frames": [{"filename": 5, "frame": {"x": 0, "y": 0, "w": 1, "h": 1}}], "meta": {"image": "a", "size": {"w": 1, "h": 1}}})"),
-              "render::SpriteSheet: bad.json: frames[0].filename: expected a string, got number 5");
+              "render::SpriteSheet: bad.json: frames[\"a\"].frame: expected an object, got array "
+              "[0,0,2,4]");
+    EXPECT_EQ(
+        errorOf(oneFrame(
+            R"({"frame": {"x": 0, "y": 0, "w": 2, "h": 4}, "pivot": {"x": null, "y": 0}})")),
+        "render::SpriteSheet: bad.json: frames[\"a\"].pivot.x: expected a number, got null null");
+    EXPECT_EQ(
+        errorOf(
+            R"({"frames": [{"filename": 5, "frame": {"x": 0, "y": 0, "w": 1, "h": 1}}], "meta": {"image": "a", "size": {"w": 1, "h": 1}}})"),
+        "render::SpriteSheet: bad.json: frames[0].filename: expected a string, got number 5");
     EXPECT_EQ(errorOf(R"({"frames": [17], "meta": {"image": "a", "size": {"w": 1, "h": 1}}})"),
               "render::SpriteSheet: bad.json: frames[0]: expected an object, got number 17");
 }
@@ -245,20 +269,27 @@ TEST(SpriteSheet, EveryWrongTypeIsNamedWithItsPathAndValue) {
 TEST(SpriteSheet, AFrameOutsideTheImageIsAnError) {
     // 60 + 8 > 64 wide.
     EXPECT_EQ(errorOf(oneFrame(R"({"frame": {"x": 60, "y": 0, "w": 8, "h": 4}})")),
-              "render::SpriteSheet: bad.json: frames[\"a\"].frame: frame \"a\" (x 60, y 0, w 8, h 4) lies outside "
+              "render::SpriteSheet: bad.json: frames[\"a\"].frame: frame \"a\" (x 60, y 0, w 8, h "
+              "4) lies outside "
               "the 64x64 image (meta.size)");
     // Displayed 8x40 at (0, 30): fits unrotated only if 30 + 40 <= 64, which it does not; rotated it is
     // stored 40 wide and 8 tall, which fits.
-    EXPECT_THAT(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 30, "w": 8, "h": 40}})")), HasSubstr("lies outside"));
-    EXPECT_NO_THROW(static_cast<void>(
-        SpriteSheet::fromString(oneFrame(R"({"frame": {"x": 0, "y": 30, "w": 8, "h": 40}, "rotated": true})"), "s")));
-    EXPECT_EQ(errorOf(oneFrame(R"({"frame": {"x": 30, "y": 0, "w": 8, "h": 40}, "rotated": true})")),
-              "render::SpriteSheet: bad.json: frames[\"a\"].frame: frame \"a\" (x 30, y 0, w 40, h 8, rotated) "
-              "lies outside the 64x64 image (meta.size)");
+    EXPECT_THAT(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 30, "w": 8, "h": 40}})")),
+                HasSubstr("lies outside"));
+    EXPECT_NO_THROW(static_cast<void>(SpriteSheet::fromString(
+        oneFrame(R"({"frame": {"x": 0, "y": 30, "w": 8, "h": 40}, "rotated": true})"), "s")));
+    EXPECT_EQ(
+        errorOf(oneFrame(R"({"frame": {"x": 30, "y": 0, "w": 8, "h": 40}, "rotated": true})")),
+        "render::SpriteSheet: bad.json: frames[\"a\"].frame: frame \"a\" (x 30, y 0, w 40, h 8, "
+        "rotated) "
+        "lies outside the 64x64 image (meta.size)");
     // A trimmed rectangle outside its source size.
-    EXPECT_EQ(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 8, "h": 8}, "spriteSourceSize": {"x": 4, "y": 0, "w": 8, "h": 8}, "sourceSize": {"w": 10, "h": 8}})")),
-              "render::SpriteSheet: bad.json: frames[\"a\"].spriteSourceSize: rectangle (x 4, y 0, w 8, h 8) lies "
-              "outside sourceSize 10x8");
+    EXPECT_EQ(
+        errorOf(oneFrame(
+            R"({"frame": {"x": 0, "y": 0, "w": 8, "h": 8}, "spriteSourceSize": {"x": 4, "y": 0, "w": 8, "h": 8}, "sourceSize": {"w": 10, "h": 8}})")),
+        "render::SpriteSheet: bad.json: frames[\"a\"].spriteSourceSize: rectangle (x 4, y 0, w 8, "
+        "h 8) lies "
+        "outside sourceSize 10x8");
 }
 
 TEST(SpriteSheet, TheLoadedImageMustHoldEveryFrame) {
@@ -271,9 +302,11 @@ TEST(SpriteSheet, TheLoadedImageMustHoldEveryFrame) {
     } catch (const Error& e) {
         // jump.png (32..52) still fits in 64; fall.png (64..74) does not.
         EXPECT_EQ(std::string(e.what()),
-                  "render::SpriteSheet: hero.json: frames[\"fall.png\"].frame: frame \"fall.png\" (x 64, y 0, w 10, "
+                  "render::SpriteSheet: hero.json: frames[\"fall.png\"].frame: frame \"fall.png\" "
+                  "(x 64, y 0, w 10, "
                   "h 40, rotated) lies outside the 64x64 image loaded from '" +
-                      (std::filesystem::path("assets") / "hero.png").string() + "' (meta.size says 128x64)");
+                      (std::filesystem::path("assets") / "hero.png").string() +
+                      "' (meta.size says 128x64)");
     }
 }
 
@@ -285,14 +318,18 @@ TEST(SpriteSheet, DuplicateNamesInTheArrayFormatAreAnError) {
 }
 
 TEST(SpriteSheet, HugeAndOddNumbersAreRejectedNotWrapped) {
-    EXPECT_THAT(errorOf(oneFrame(R"({"frame": {"x": 18446744073709551615, "y": 0, "w": 1, "h": 1}})")),
-                HasSubstr("frames[\"a\"].frame.x: expected an integer in [0, 1048576]"));
+    EXPECT_THAT(
+        errorOf(oneFrame(R"({"frame": {"x": 18446744073709551615, "y": 0, "w": 1, "h": 1}})")),
+        HasSubstr("frames[\"a\"].frame.x: expected an integer in [0, 1048576]"));
     EXPECT_THAT(errorOf(oneFrame(R"({"frame": {"x": 1e300, "y": 0, "w": 1, "h": 1}})")),
                 HasSubstr("frames[\"a\"].frame.x: expected an integer"));
-    EXPECT_THAT(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 1, "h": 1}, "pivot": {"x": 1e300, "y": 0}})")),
-                HasSubstr("frames[\"a\"].pivot.x: expected a number in [-1e6, 1e6]"));
+    EXPECT_THAT(
+        errorOf(oneFrame(
+            R"({"frame": {"x": 0, "y": 0, "w": 1, "h": 1}, "pivot": {"x": 1e300, "y": 0}})")),
+        HasSubstr("frames[\"a\"].pivot.x: expected a number in [-1e6, 1e6]"));
     // Whole numbers written with a fraction are fine.
-    EXPECT_NO_THROW(static_cast<void>(SpriteSheet::fromString(oneFrame(R"({"frame": {"x": 2.0, "y": 0, "w": 1, "h": 1}})"), "s")));
+    EXPECT_NO_THROW(static_cast<void>(SpriteSheet::fromString(
+        oneFrame(R"({"frame": {"x": 2.0, "y": 0, "w": 1, "h": 1}})"), "s")));
 }
 
 TEST(SpriteSheet, DeepNestingIsRefusedBeforeParsingNamingTheFileAndDepth) {
@@ -308,16 +345,19 @@ TEST(SpriteSheet, DeepNestingIsRefusedBeforeParsingNamingTheFileAndDepth) {
         static_cast<void>(SpriteSheet::fromFile(path));
         FAIL() << "no error";
     } catch (const Error& e) {
-        EXPECT_EQ(std::string(e.what()), "render::SpriteSheet: " + path.string() +
-                                             ":1:257: arrays and objects nest deeper than 256 levels; a sheet needs 4");
+        EXPECT_EQ(std::string(e.what()),
+                  "render::SpriteSheet: " + path.string() +
+                      ":1:257: arrays and objects nest deeper than 256 levels; a sheet needs 4");
     }
-    EXPECT_THAT(errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 1, "h": 1}, "extra": )" + deep + "}")),
-                HasSubstr(":1:324: arrays and objects nest deeper than 256 levels"));
+    EXPECT_THAT(
+        errorOf(oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 1, "h": 1}, "extra": )" + deep + "}")),
+        HasSubstr(":1:324: arrays and objects nest deeper than 256 levels"));
     EXPECT_THAT(errorOf(deep.substr(0, n / 2 + 7)), HasSubstr("nest deeper than 256 levels"));
     // Brackets in strings are text, and 256 levels are allowed (3 hold the frame).
     const std::string allowed = std::string(253, '[') + std::string(253, ']');
     EXPECT_NO_THROW(static_cast<void>(SpriteSheet::fromString(
-        oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 1, "h": 1}, "extra": )" + allowed + R"(, "s": "[[[[[["})"),
+        oneFrame(R"({"frame": {"x": 0, "y": 0, "w": 1, "h": 1}, "extra": )" + allowed +
+                 R"(, "s": "[[[[[["})"),
         "s")));
 }
 
@@ -328,22 +368,24 @@ TEST(SpriteSheet, ADirectoryIsNamedAsOne) {
         static_cast<void>(SpriteSheet::fromFile(dir));
         FAIL() << "no error";
     } catch (const Error& e) {
-        EXPECT_EQ(std::string(e.what()),
-                  "render::SpriteSheet: " + dir.string() + ": cannot read the file (it is a directory)");
+        EXPECT_EQ(std::string(e.what()), "render::SpriteSheet: " + dir.string() +
+                                             ": cannot read the file (it is a directory)");
     }
 }
 
 TEST(SpriteSheet, BytesQuotedFromTheFileAreEscapedWhenNotPrintable) {
     // An ill-formed UTF-8 string and a control character: nlohmann quotes what it read.
     const std::string message = errorOf("{\"frames\": \"\xFF\xFE\"}", "bin.json");
-    EXPECT_THAT(message, testing::StartsWith("render::SpriteSheet: bin.json:1:13: malformed JSON: "));
+    EXPECT_THAT(message,
+                testing::StartsWith("render::SpriteSheet: bin.json:1:13: malformed JSON: "));
     EXPECT_THAT(message, HasSubstr("\\xff"));
     EXPECT_EQ(message.find('\xFF'), std::string::npos) << message;
     // A raw control character: nlohmann names it itself, and the message holds no such byte.
     EXPECT_EQ(errorOf("{\"a\x01\": 1}").find('\x01'), std::string::npos);
     // A frame name holding a control character (written as a JSON escape) is escaped when named.
-    EXPECT_EQ(errorOf(R"({"frames": [{"filename": "x\u0007", "frame": {"x": 0, "y": 0, "w": 1, "h": 1}},
+    EXPECT_EQ(
+        errorOf(R"({"frames": [{"filename": "x\u0007", "frame": {"x": 0, "y": 0, "w": 1, "h": 1}},
                                      {"filename": "x\u0007", "frame": {"x": 0, "y": 0, "w": 1, "h": 1}}],
                          "meta": {"image": "a", "size": {"w": 1, "h": 1}}})"),
-              "render::SpriteSheet: bad.json: frames[1]: duplicate frame name \"x\\x07\"");
+        "render::SpriteSheet: bad.json: frames[1]: duplicate frame name \"x\\x07\"");
 }

@@ -66,7 +66,8 @@ Canvas paint(const Font& font, const TextLayout& layout, int margin) {
         for (int y = 0; y < h; ++y) {
             for (int x = 0; x < w; ++x) {
                 // Canvas rows go up, atlas rows go down.
-                const int a = pixels[static_cast<std::size_t>(((ay + h - 1 - y) * atlas.x + ax + x) * 4 + 3)];
+                const int a =
+                    pixels[static_cast<std::size_t>(((ay + h - 1 - y) * atlas.x + ax + x) * 4 + 3)];
                 int& dst = c.alpha[static_cast<std::size_t>((y0 + y) * c.width + x0 + x)];
                 dst = std::max(dst, a);
             }
@@ -112,7 +113,8 @@ TEST(Font, GlyphsAreRasterisedIntoTheAtlasOnDemand) {
     const auto pixels = font.atlasPixels();
     for (int y = a.atlasRect.y; y < a.atlasRect.y + a.atlasRect.h; ++y) {
         for (int x = a.atlasRect.x; x < a.atlasRect.x + a.atlasRect.w; ++x) {
-            ink += pixels[static_cast<std::size_t>((y * font.atlasSize().x + x) * 4 + 3)] > 128 ? 1 : 0;
+            ink += pixels[static_cast<std::size_t>((y * font.atlasSize().x + x) * 4 + 3)] > 128 ? 1
+                                                                                                : 0;
         }
     }
     EXPECT_GT(ink, 30);
@@ -127,7 +129,8 @@ TEST(Font, GlyphsAreRasterisedIntoTheAtlasOnDemand) {
     int first = -1;
     int last = -1;
     for (int x = a.atlasRect.x; x < a.atlasRect.x + a.atlasRect.w; ++x) {
-        if (pixels[static_cast<std::size_t>(((a.atlasRect.y + a.atlasRect.h - 1) * font.atlasSize().x + x) * 4 + 3)] > 0) {
+        if (pixels[static_cast<std::size_t>(
+                ((a.atlasRect.y + a.atlasRect.h - 1) * font.atlasSize().x + x) * 4 + 3)] > 0) {
             last = x;
             first = first < 0 ? x : first;
         }
@@ -172,7 +175,8 @@ TEST(Font, TheAtlasGrowsWithoutMovingGlyphs) {
         const auto pixels = font.atlasPixels();
         for (int y = a.atlasRect.y; y < a.atlasRect.y + a.atlasRect.h; ++y) {
             for (int x = a.atlasRect.x; x < a.atlasRect.x + a.atlasRect.w; ++x) {
-                out.push_back(pixels[static_cast<std::size_t>((y * font.atlasSize().x + x) * 4 + 3)]);
+                out.push_back(
+                    pixels[static_cast<std::size_t>((y * font.atlasSize().x + x) * 4 + 3)]);
             }
         }
         return out;
@@ -189,8 +193,9 @@ TEST(Font, TheAtlasGrowsWithoutMovingGlyphs) {
 
 TEST(Font, AFullAtlasFallsBackToNotdefAndSaysSoOnce) {
     std::vector<std::string> messages;
-    e2d::core::Logger logger(e2d::core::LogLevel::Info,
-                             [&](e2d::core::LogLevel, std::string_view m) { messages.emplace_back(m); });
+    e2d::core::Logger logger(
+        e2d::core::LogLevel::Info,
+        [&](e2d::core::LogLevel, std::string_view m) { messages.emplace_back(m); });
     Font font(FontDef{.pixelSize = 48, .atlasWidth = 64, .maxAtlasHeight = 64, .logger = &logger});
     int missing = 0;
     for (char32_t c = U'A'; c <= U'Z'; ++c) {
@@ -206,17 +211,20 @@ TEST(Font, AFileThatIsNotAFontIsAnErrorNamingIt) {
     const auto path = std::filesystem::temp_directory_path() / "e2d_not_a_font.ttf";
     std::ofstream(path) << "this is not a font";
     EXPECT_EQ(fontError({.path = path}),
-              "render::Font: '" + path.string() + "' is not a font FreeType reads: unknown file format (FreeType error 0x02)");
+              "render::Font: '" + path.string() +
+                  "' is not a font FreeType reads: unknown file format (FreeType error 0x02)");
     EXPECT_EQ(fontError({.path = "/nonexistent/font.ttf"}),
-              "render::Font: '/nonexistent/font.ttf' is not a font FreeType reads: cannot open resource (FreeType error 0x01)");
+              "render::Font: '/nonexistent/font.ttf' is not a font FreeType reads: cannot open "
+              "resource (FreeType error 0x01)");
 }
 
 TEST(Font, AFontCutShortThatDrawsNothingSaysSo) {
     // head -c 60 % of a font whose outlines come last: FreeType opens it and every glyph is empty.
     const auto path = e2d::render::test::writeCutShortFont("e2d_cut_short.ttf");
     EXPECT_EQ(fontError({.path = path}),
-              "render::Font: '" + path.string() + "' draws nothing: none of its glyphs for A-Z, a-z and 0-9 has "
-              "an outline or a bitmap (is the file cut short or damaged?)");
+              "render::Font: '" + path.string() +
+                  "' draws nothing: none of its glyphs for A-Z, a-z and 0-9 has "
+                  "an outline or a bitmap (is the file cut short or damaged?)");
     // Cut after its outlines, the same font draws.
     e2d::render::test::SfntFile whole;
     whole.moveToEnd("post");
@@ -232,15 +240,17 @@ TEST(Font, AGlyphFreeTypeCannotDrawIsLoggedWithItsCodePointAndReason) {
     const auto path = std::filesystem::temp_directory_path() / "e2d_broken_a.ttf";
     damaged.save(path);
     std::vector<std::string> messages;
-    e2d::core::Logger logger(e2d::core::LogLevel::Info,
-                             [&](e2d::core::LogLevel, std::string_view m) { messages.emplace_back(m); });
+    e2d::core::Logger logger(
+        e2d::core::LogLevel::Info,
+        [&](e2d::core::LogLevel, std::string_view m) { messages.emplace_back(m); });
     Font font(FontDef{.path = path, .pixelSize = 20, .logger = &logger});
     EXPECT_TRUE(font.glyph(U'A').missing);
     EXPECT_FALSE(font.glyph(U'B').missing);
     EXPECT_TRUE(font.glyph(U'A').missing); // asked again: not reported again
     ASSERT_EQ(messages.size(), 1u);
-    EXPECT_EQ(messages[0], "render::Font: '" + path.string() + "' at 20 px: cannot draw U+0041 (glyph " +
-                               std::to_string(a) + "): invalid outline (FreeType error 0x14); drawing .notdef instead");
+    EXPECT_EQ(messages[0], "render::Font: '" + path.string() +
+                               "' at 20 px: cannot draw U+0041 (glyph " + std::to_string(a) +
+                               "): invalid outline (FreeType error 0x14); drawing .notdef instead");
 }
 
 TEST(Font, FreeTypeErrorsAreNamedFromFreeTypesOwnList) {
@@ -250,19 +260,24 @@ TEST(Font, FreeTypeErrorsAreNamedFromFreeTypesOwnList) {
     const auto path = std::filesystem::temp_directory_path() / "e2d_no_hmtx.ttf";
     noMetrics.save(path);
     EXPECT_EQ(fontError({.path = path}), "render::Font: '" + path.string() +
-                                             "' is not a font FreeType reads: horizontal metrics (hmtx) table missing (FreeType error 0x93)");
+                                             "' is not a font FreeType reads: horizontal metrics "
+                                             "(hmtx) table missing (FreeType error 0x93)");
 }
 
 TEST(Font, ADirectoryIsNamedAsOne) {
     const auto dir = std::filesystem::temp_directory_path() / "e2d_font_dir.ttf";
     std::filesystem::create_directories(dir);
-    EXPECT_EQ(fontError({.path = dir}), "render::Font: '" + dir.string() + "' is a directory, not a font file");
+    EXPECT_EQ(fontError({.path = dir}),
+              "render::Font: '" + dir.string() + "' is a directory, not a font file");
 }
 
 TEST(Font, InvalidDefsNameFieldAndValue) {
-    EXPECT_EQ(fontError({.pixelSize = 0}), "render::Font::Font(): pixelSize must be in [1, 1024], got 0");
-    EXPECT_EQ(fontError({.atlasWidth = 32}), "render::Font::Font(): atlasWidth must be in [64, 8192], got 32");
-    EXPECT_EQ(fontError({.maxAtlasHeight = 9000}), "render::Font::Font(): maxAtlasHeight must be in [64, 8192], got 9000");
+    EXPECT_EQ(fontError({.pixelSize = 0}),
+              "render::Font::Font(): pixelSize must be in [1, 1024], got 0");
+    EXPECT_EQ(fontError({.atlasWidth = 32}),
+              "render::Font::Font(): atlasWidth must be in [64, 8192], got 32");
+    EXPECT_EQ(fontError({.maxAtlasHeight = 9000}),
+              "render::Font::Font(): maxAtlasHeight must be in [64, 8192], got 9000");
 }
 
 TEST(TextLayout, KernedAVIsNarrowerThanUnkerned) {
@@ -292,9 +307,10 @@ TEST(TextLayout, HelloHasInkInsideItsBoxOnly) {
             if (c.at(x, y) == 0) {
                 continue;
             }
-            const glm::vec2 p = c.origin + glm::vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-            const bool in = p.x > layout.box.min.x && p.x < layout.box.max.x && p.y > layout.box.min.y &&
-                            p.y < layout.box.max.y;
+            const glm::vec2 p =
+                c.origin + glm::vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+            const bool in = p.x > layout.box.min.x && p.x < layout.box.max.x &&
+                            p.y > layout.box.min.y && p.y < layout.box.max.y;
             ++(in ? inside : outside);
             inkMin = glm::min(inkMin, p);
             inkMax = glm::max(inkMax, p);
@@ -318,13 +334,15 @@ TEST(TextLayout, AlignmentPlacesTheBoxAroundTheAnchor) {
     ASSERT_GT(width, left.lineWidths[1]);
     const float height = left.box.max.y - left.box.min.y;
 
-    const auto center = layoutText(font, text, {.horizontal = HorizontalAlign::Center, .vertical = VerticalAlign::Center});
+    const auto center = layoutText(
+        font, text, {.horizontal = HorizontalAlign::Center, .vertical = VerticalAlign::Center});
     EXPECT_NEAR(center.box.min.x, -width / 2.0f, 0.5f);
     EXPECT_NEAR(center.box.max.x, width / 2.0f, 0.5f);
     EXPECT_NEAR(center.box.max.y, height / 2.0f, 0.5f);
     EXPECT_NEAR(center.box.min.y, -height / 2.0f, 0.5f);
 
-    const auto right = layoutText(font, text, {.horizontal = HorizontalAlign::Right, .vertical = VerticalAlign::Bottom});
+    const auto right = layoutText(
+        font, text, {.horizontal = HorizontalAlign::Right, .vertical = VerticalAlign::Bottom});
     EXPECT_EQ(right.box.max.x, 0.0f);
     EXPECT_EQ(right.box.min.x, -width);
     EXPECT_EQ(right.box.min.y, 0.0f);
@@ -346,16 +364,19 @@ TEST(TextLayout, LineBreaksStackLinesOneLineHeightApart) {
     const float step = std::round(font.lineHeight());
     for (int i = 0; i < 3; ++i) {
         EXPECT_EQ(three.quads[static_cast<std::size_t>(i)].rect.min.x, one.quads[0].rect.min.x);
-        EXPECT_EQ(three.quads[static_cast<std::size_t>(i)].rect.min.y, one.quads[0].rect.min.y - step * static_cast<float>(i));
+        EXPECT_EQ(three.quads[static_cast<std::size_t>(i)].rect.min.y,
+                  one.quads[0].rect.min.y - step * static_cast<float>(i));
     }
     EXPECT_EQ(three.box.max.y - three.box.min.y, (one.box.max.y - one.box.min.y) + 2.0f * step);
     const auto spaced = layoutText(font, "x\nx", {.lineSpacing = 2.0f});
-    EXPECT_EQ(spaced.quads[1].rect.min.y, one.quads[0].rect.min.y - std::round(2.0f * font.lineHeight()));
+    EXPECT_EQ(spaced.quads[1].rect.min.y,
+              one.quads[0].rect.min.y - std::round(2.0f * font.lineHeight()));
 }
 
 TEST(TextLayout, InvalidUtf8AndMissingGlyphsStillDraw) {
     Font font(FontDef{.pixelSize = 20});
-    const auto layout = layoutText(font, "a\xFF" "b\xE4\xB8\x80");
+    const auto layout = layoutText(font, "a\xFF"
+                                         "b\xE4\xB8\x80");
     ASSERT_EQ(layout.quads.size(), 4u);
     EXPECT_EQ(layout.quads[1].codePoint, 0xFFFDu);
     EXPECT_EQ(layout.quads[3].codePoint, 0x4E00u);
@@ -381,6 +402,7 @@ TEST(TextLayout, EmptyTextAndControlCharacters) {
         static_cast<void>(layoutText(font, "x", {.lineSpacing = 0.0f}));
         FAIL();
     } catch (const Error& e) {
-        EXPECT_THAT(e.what(), HasSubstr("render::layoutText(): lineSpacing must be finite and > 0, got 0"));
+        EXPECT_THAT(e.what(),
+                    HasSubstr("render::layoutText(): lineSpacing must be finite and > 0, got 0"));
     }
 }

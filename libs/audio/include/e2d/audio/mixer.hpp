@@ -111,7 +111,7 @@ struct PlayDef {
 
 /// A loaded sound's description.
 struct SoundInfo {
-    std::string path;        ///< as given to load()
+    std::string path; ///< as given to load()
     LoadMode mode = LoadMode::Whole;
     int channels = 0;        ///< 1 or 2; 0 when loading failed
     int sampleRate = 0;      ///< Hz; 0 when loading failed
@@ -128,9 +128,9 @@ struct SoundInfo {
 
 /// Counters for tests, tools and benchmarks.
 struct MixerStats {
-    int voicesInUse = 0;  ///< playing or paused voices
-    int voicesStolen = 0; ///< since the mixer was created
-    int playsRefused = 0; ///< play() calls that found no voice, since creation
+    int voicesInUse = 0;     ///< playing or paused voices
+    int voicesStolen = 0;    ///< since the mixer was created
+    int playsRefused = 0;    ///< play() calls that found no voice, since creation
     int streamUnderruns = 0; ///< times a stream ran dry and was restarted
 };
 
@@ -210,7 +210,9 @@ public:
     void stopAll();
 
     [[nodiscard]] VoiceState state(VoiceId voice) const noexcept;
-    [[nodiscard]] bool isValid(VoiceId voice) const noexcept { return state(voice) != VoiceState::Stopped; }
+    [[nodiscard]] bool isValid(VoiceId voice) const noexcept {
+        return state(voice) != VoiceState::Stopped;
+    }
     /// The voice's sound (null for a stale id).
     [[nodiscard]] SoundId sound(VoiceId voice) const noexcept;
 

@@ -34,8 +34,8 @@ struct DecodeLimits {
 /// A decoded sound: interleaved samples, finite, in [-1, 1] (float files may exceed it, up to
 /// DecodeLimits::maxSampleMagnitude).
 struct SoundData {
-    int channels = 0;          ///< 1 or 2
-    int sampleRate = 0;        ///< Hz
+    int channels = 0;           ///< 1 or 2
+    int sampleRate = 0;         ///< Hz
     std::vector<float> samples; ///< frames * channels values, interleaved (L, R, L, R, ...)
 
     [[nodiscard]] std::int64_t frames() const noexcept {

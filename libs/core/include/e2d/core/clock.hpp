@@ -42,7 +42,7 @@ private:
     TimeSource source_;
     double start_ = 0.0;
     double scale_ = 1.0;
-    double scaledBase_ = 0.0;   // scaled time at the last scale change
+    double scaledBase_ = 0.0;     // scaled time at the last scale change
     double scaleChangedAt_ = 0.0; // unscaled time of the last scale change
     double lastTickScaled_ = 0.0;
     double lastTickUnscaled_ = 0.0;

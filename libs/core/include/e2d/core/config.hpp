@@ -81,7 +81,8 @@ public:
     void add(std::string_view key, std::string& field);
     /// One of `names` (the config file's spelling of each value).
     template <class Enum>
-    void add(std::string_view key, Enum& field, std::vector<std::pair<std::string_view, Enum>> names);
+    void add(std::string_view key, Enum& field,
+             std::vector<std::pair<std::string_view, Enum>> names);
 
     /// The keys added, sorted.
     [[nodiscard]] std::vector<std::string_view> keys() const;
@@ -93,24 +94,27 @@ public:
     ConfigReport load(const std::filesystem::path& path) const;
 
 private:
-    static std::string unknownValue(std::string_view value, const std::vector<std::string_view>& names);
+    static std::string unknownValue(std::string_view value,
+                                    const std::vector<std::string_view>& names);
 
     std::map<std::string, Setter, std::less<>> keys_;
 };
 
 template <class Enum>
-void ConfigReader::add(std::string_view key, Enum& field, std::vector<std::pair<std::string_view, Enum>> names) {
-    add(key, [&field, names = std::move(names)](std::string_view value) -> std::optional<std::string> {
-        std::vector<std::string_view> spelled;
-        for (const auto& [name, enumerator] : names) {
-            if (name == value) {
-                field = enumerator;
-                return std::nullopt;
+void ConfigReader::add(std::string_view key, Enum& field,
+                       std::vector<std::pair<std::string_view, Enum>> names) {
+    add(key,
+        [&field, names = std::move(names)](std::string_view value) -> std::optional<std::string> {
+            std::vector<std::string_view> spelled;
+            for (const auto& [name, enumerator] : names) {
+                if (name == value) {
+                    field = enumerator;
+                    return std::nullopt;
+                }
+                spelled.push_back(name);
             }
-            spelled.push_back(name);
-        }
-        return unknownValue(value, spelled);
-    });
+            return unknownValue(value, spelled);
+        });
 }
 
 } // namespace e2d::core

@@ -50,7 +50,9 @@ public:
     [[nodiscard]] bool empty() const noexcept { return items_.empty(); }
     [[nodiscard]] std::size_t size() const noexcept { return items_.size(); }
     [[nodiscard]] int errorCount() const noexcept { return errors_; }
-    [[nodiscard]] int warningCount() const noexcept { return static_cast<int>(items_.size()) - errors_; }
+    [[nodiscard]] int warningCount() const noexcept {
+        return static_cast<int>(items_.size()) - errors_;
+    }
 
     [[nodiscard]] const Diagnostic& operator[](std::size_t i) const { return items_[i]; }
     [[nodiscard]] auto begin() const noexcept { return items_.begin(); }

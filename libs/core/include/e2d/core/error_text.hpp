@@ -45,13 +45,16 @@ template <std::integral T>
 [[noreturn]] void throwError(std::string_view function, std::string_view what);
 
 /// Throws core::Error(`"<function>: <field> must be <rule>, got <shown>"`).
-[[noreturn]] void throwInvalid(std::string_view function, std::string_view field, std::string_view rule,
-                               std::string_view shown);
+[[noreturn]] void throwInvalid(std::string_view function, std::string_view field,
+                               std::string_view rule, std::string_view shown);
 
 /// throwInvalid() showing a number or a vector by formatNumber() or formatVector().
 template <class T>
-    requires requires(T v) { formatNumber(v); } || requires(T v) { formatVector(v); }
-[[noreturn]] void throwInvalid(std::string_view function, std::string_view field, std::string_view rule, T value) {
+requires requires(T v) { formatNumber(v); } || requires(T v) {
+    formatVector(v);
+}
+[[noreturn]] void throwInvalid(std::string_view function, std::string_view field,
+                               std::string_view rule, T value) {
     if constexpr (requires { formatNumber(value); }) {
         throwInvalid(function, field, rule, std::string_view(formatNumber(value)));
     } else {
@@ -70,8 +73,10 @@ void requireFinite(std::string_view function, std::string_view field, float valu
 void requireFinite(std::string_view function, std::string_view field, glm::vec2 value);
 
 namespace detail {
-[[noreturn, gnu::cold]] void failNotFinite(std::string_view function, std::string_view field, float value);
-[[noreturn, gnu::cold]] void failNotFinite(std::string_view function, std::string_view field, glm::vec2 value);
+[[noreturn, gnu::cold]] void failNotFinite(std::string_view function, std::string_view field,
+                                           float value);
+[[noreturn, gnu::cold]] void failNotFinite(std::string_view function, std::string_view field,
+                                           glm::vec2 value);
 } // namespace detail
 
 inline void requireFinite(std::string_view function, std::string_view field, float value) {

@@ -12,10 +12,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <type_traits>
 #include <typeinfo>
 #include <utility>
-#include <string>
 #include <vector>
 
 namespace e2d::core {
@@ -203,7 +203,8 @@ private:
     // Tells the scene this object has queued component changes, so beginFrame() visits
     // only such objects.
     void queueComponentChange();
-    [[noreturn]] void refuseNonFinite(const char* function, const char* what, const std::string& value) const;
+    [[noreturn]] void refuseNonFinite(const char* function, const char* what,
+                                      const std::string& value) const;
     void markWorldDirty() const noexcept;
     void notePoseChange() noexcept;
     [[nodiscard]] bool isInterpolated() const noexcept;
@@ -257,7 +258,8 @@ private:
 
 template <class T, class... Args>
 T* GameObject::addComponent(Args&&... args) {
-    static_assert(std::is_base_of_v<Component, T>, "addComponent<T>: T must derive from core::Component");
+    static_assert(std::is_base_of_v<Component, T>,
+                  "addComponent<T>: T must derive from core::Component");
     // The common refusal (a T already there) is decided before constructing anything.
     if constexpr (T::kUnique) {
         if (hasConflict([](const Component& c) { return dynamic_cast<const T*>(&c) != nullptr; })) {
@@ -279,7 +281,9 @@ T* GameObject::addComponent(Args&&... args) {
     auto* base = static_cast<Component*>(raw);
     base->gameObject_ = this;
     if constexpr (T::kUnique) {
-        base->isSameUniqueKind_ = [](const Component& c) { return dynamic_cast<const T*>(&c) != nullptr; };
+        base->isSameUniqueKind_ = [](const Component& c) {
+            return dynamic_cast<const T*>(&c) != nullptr;
+        };
     }
     // &T::update names Component::update unless a class on the way to T declares its own.
     base->hasUpdate_ = !std::is_same_v<decltype(&T::update), void (Component::*)(double)>;

@@ -53,7 +53,7 @@ struct Id {
     /// Whether the id carries a generation (its pool reuses slots).
     static constexpr bool kHasGeneration = !std::same_as<Generation, NoGeneration>;
 
-    std::uint32_t index1 = 0;                       ///< slot index + 1; 0 means null
+    std::uint32_t index1 = 0;                      ///< slot index + 1; 0 means null
     [[no_unique_address]] Generation generation{}; ///< the slot's generation when handed out
     [[no_unique_address]] Owner owner{};           ///< the tag of the pool that handed it out
 
@@ -84,8 +84,8 @@ template <std::unsigned_integral G>
 /// std::nullopt for the null id, an index past the end or an id of another owner. The slot may
 /// be free or reused: for a pool that reuses slots, use findSlot().
 template <class Tag, class G, class O>
-[[nodiscard]] constexpr std::optional<std::uint32_t> slotOf(Id<Tag, G, O> id, std::size_t slotCount,
-                                                            std::type_identity_t<O> owner = {}) noexcept {
+[[nodiscard]] constexpr std::optional<std::uint32_t>
+slotOf(Id<Tag, G, O> id, std::size_t slotCount, std::type_identity_t<O> owner = {}) noexcept {
     // The null id's index wraps to 0xffffffff, past the end of any pool an id can address.
     const std::uint32_t index = id.index();
     if (index >= slotCount || !(id.owner == owner)) {
@@ -101,10 +101,10 @@ template <class Tag, class G, class O>
 ///
 ///     core::findSlot(id, voices.size(), [&](std::uint32_t i) { return voices[i].busy ? voices[i].generation : 0u; })
 template <class Tag, class G, class O, class LiveGeneration>
-    requires(!std::same_as<G, NoGeneration>)
-[[nodiscard]] constexpr std::optional<std::uint32_t> findSlot(Id<Tag, G, O> id, std::size_t slotCount,
-                                                              LiveGeneration&& liveGeneration,
-                                                              std::type_identity_t<O> owner = {}) {
+requires(!std::same_as<G, NoGeneration>)
+    [[nodiscard]] constexpr std::optional<std::uint32_t> findSlot(
+        Id<Tag, G, O> id, std::size_t slotCount, LiveGeneration&& liveGeneration,
+        std::type_identity_t<O> owner = {}) {
     const std::optional<std::uint32_t> index = slotOf(id, slotCount, owner);
     if (!index || static_cast<G>(liveGeneration(*index)) != id.generation || id.generation == 0) {
         return std::nullopt;

@@ -30,7 +30,7 @@ inline constexpr int kMaxJsonDepth = 256;
 /// `maxDepth`. Brackets inside strings do not count. Reads the text as JSON tokens without
 /// checking them, in one pass and constant stack, so it is safe on any bytes; on text a JSON
 /// parser accepts (or accepts up to the point it stops) it agrees with the parser's depth.
-[[nodiscard]] std::optional<std::size_t> findJsonNestingBeyond(std::string_view json,
-                                                              int maxDepth = kMaxJsonDepth) noexcept;
+[[nodiscard]] std::optional<std::size_t>
+findJsonNestingBeyond(std::string_view json, int maxDepth = kMaxJsonDepth) noexcept;
 
 } // namespace e2d::core

@@ -24,10 +24,16 @@ public:
     [[nodiscard]] constexpr std::uint64_t bits() const noexcept { return bits_; }
     [[nodiscard]] constexpr bool empty() const noexcept { return bits_ == 0; }
     /// True when the two masks share at least one bit.
-    [[nodiscard]] constexpr bool matches(Mask other) const noexcept { return (bits_ & other.bits_) != 0; }
+    [[nodiscard]] constexpr bool matches(Mask other) const noexcept {
+        return (bits_ & other.bits_) != 0;
+    }
 
-    [[nodiscard]] constexpr Mask operator+(Mask other) const noexcept { return Mask(bits_ | other.bits_); }
-    [[nodiscard]] constexpr Mask operator|(Mask other) const noexcept { return Mask(bits_ | other.bits_); }
+    [[nodiscard]] constexpr Mask operator+(Mask other) const noexcept {
+        return Mask(bits_ | other.bits_);
+    }
+    [[nodiscard]] constexpr Mask operator|(Mask other) const noexcept {
+        return Mask(bits_ | other.bits_);
+    }
     constexpr Mask& operator+=(Mask other) noexcept {
         bits_ |= other.bits_;
         return *this;

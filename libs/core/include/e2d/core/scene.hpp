@@ -2,8 +2,8 @@
 #pragma once
 
 #include <e2d/core/game_object.hpp>
-#include <e2d/core/handles.hpp>
 #include <e2d/core/game_object_id.hpp>
+#include <e2d/core/handles.hpp>
 #include <e2d/core/scene_host.hpp>
 #include <e2d/core/system.hpp>
 
@@ -141,6 +141,7 @@ protected:
     virtual void onTerminate() {}
     virtual void update(double dt) { static_cast<void>(dt); }
     virtual void fixedUpdate(double step) { static_cast<void>(step); }
+
 private:
     friend class GameObject;
 
@@ -197,8 +198,8 @@ private:
     std::vector<GameObject*> pendingDestroy_;
     std::vector<GameObject*> componentChanges_; // objects with queued component changes
     int dispatchDepth_ = 0;
-    std::uint64_t fixedSteps_ = 1;  // number of the current fixed step (GameObject's stamps)
-    bool inFixedSteps_ = false;     // between dispatchFixedUpdate() and dispatchUpdate()
+    std::uint64_t fixedSteps_ = 1; // number of the current fixed step (GameObject's stamps)
+    bool inFixedSteps_ = false;    // between dispatchFixedUpdate() and dispatchUpdate()
     double frameAlpha_ = 1.0;
     std::uint32_t objectsCreated_ = 0;     // the serial of the next object
     std::uint32_t componentsAttached_ = 0; // the serial of the next attached component
@@ -211,7 +212,8 @@ template <class Deliver>
 void Scene::deliver(const Channel& channel, Deliver&& deliver) {
     // The list does not change during a dispatch: attachment waits for beginFrame().
     for (const Receiver& receiver : channel.receivers) {
-        if (receiver.component != nullptr && receiver.component->gameObject()->isActiveInHierarchy()) {
+        if (receiver.component != nullptr &&
+            receiver.component->gameObject()->isActiveInHierarchy()) {
             deliver(receiver);
         }
     }
@@ -224,13 +226,16 @@ void Scene::dispatch(const Event& event) {
         own->on(event);
     }
     if (const Channel* channel = findChannel(typeid(Event))) {
-        deliver(*channel, [&event](const Receiver& r) { static_cast<Handler<Event>*>(r.handler)->on(event); });
+        deliver(*channel, [&event](const Receiver& r) {
+            static_cast<Handler<Event>*>(r.handler)->on(event);
+        });
     }
 }
 
 template <class T>
 T* Scene::findSystem() const noexcept {
-    static_assert(std::is_base_of_v<System, T>, "Scene::findSystem<T>: T must derive from core::System");
+    static_assert(std::is_base_of_v<System, T>,
+                  "Scene::findSystem<T>: T must derive from core::System");
     if (host_ == nullptr) {
         return nullptr;
     }

@@ -57,7 +57,9 @@ public:
     /// Performs the requested scene change, if any. Returns true if the scene changed.
     bool applyPendingChange();
     /// The requested scene name, if a change is pending.
-    [[nodiscard]] const std::optional<std::string>& pendingChange() const noexcept { return pending_; }
+    [[nodiscard]] const std::optional<std::string>& pendingChange() const noexcept {
+        return pending_;
+    }
     /// True once `terminateGame()` was called.
     [[nodiscard]] bool terminateRequested() const noexcept { return terminate_; }
 

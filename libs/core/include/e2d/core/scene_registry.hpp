@@ -23,7 +23,7 @@ public:
 
     /// Registers default-constructible scene type T under `name`.
     template <class T>
-        requires std::derived_from<T, Scene> && std::default_initializable<T>
+    requires std::derived_from<T, Scene> && std::default_initializable<T>
     void add(std::string name) {
         add(std::move(name), [] { return std::unique_ptr<Scene>(std::make_unique<T>()); });
     }

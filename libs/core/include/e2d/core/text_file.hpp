@@ -28,7 +28,8 @@ struct TextFile {
 /// readTextFile() for a file the caller cannot do without: its bytes, or core::Error
 /// `"<function>: cannot read '<path>': <why>"` (`"input::ActionMap::load(): cannot read
 /// 'controls.txt': it is a directory"`).
-[[nodiscard]] std::string readRequiredTextFile(const std::filesystem::path& path, std::string_view function);
+[[nodiscard]] std::string readRequiredTextFile(const std::filesystem::path& path,
+                                               std::string_view function);
 
 /// `text` without a UTF-8 byte order mark at its start (editors on Windows write one; it is not
 /// part of the first line's content).

@@ -19,7 +19,7 @@ struct DebugDrawColors {
     static constexpr float kAabb[4] = {1.0f, 0.2f, 0.2f, 0.6f};        ///< shapes' bounding boxes
     static constexpr float kContact[4] = {1.0f, 0.1f, 0.1f, 1.0f};     ///< touching contact points
     static constexpr float kNormal[4] = {1.0f, 1.0f, 1.0f, 1.0f};      ///< contact normals (A to B)
-    static constexpr float kJoint[4] = {0.1f, 0.85f, 0.85f, 1.0f};     ///< joints: anchors and lines
+    static constexpr float kJoint[4] = {0.1f, 0.85f, 0.85f, 1.0f}; ///< joints: anchors and lines
 };
 
 } // namespace e2d::engine

@@ -169,7 +169,8 @@ struct EngineConfigResult {
 /// Parses configuration text (core::ConfigReader's format, the keys of EngineConfig);
 /// `sourceName` names it in diagnostics. Besides each key's own range, a min distance above
 /// its max is an error blamed on whichever was written last, and both keep their defaults.
-[[nodiscard]] EngineConfigResult parseEngineConfig(std::string_view text, std::string_view sourceName = "config");
+[[nodiscard]] EngineConfigResult parseEngineConfig(std::string_view text,
+                                                   std::string_view sourceName = "config");
 
 /// Reads the configuration file at `path` (see parseEngineConfig). A file that cannot be read
 /// is an error when `required`, else a warning and the defaults.

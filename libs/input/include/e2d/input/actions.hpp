@@ -51,11 +51,13 @@ struct Binding {
     [[nodiscard]] static Binding gamepadButton(GamepadButton button, int gamepad = -1) noexcept {
         return {BindingKind::GamepadButton, static_cast<int>(button), 0, gamepad, false};
     }
-    [[nodiscard]] static Binding gamepadAxis(GamepadAxis axis, bool inverted = false, int gamepad = -1) noexcept {
+    [[nodiscard]] static Binding gamepadAxis(GamepadAxis axis, bool inverted = false,
+                                             int gamepad = -1) noexcept {
         return {BindingKind::GamepadAxis, static_cast<int>(axis), 0, gamepad, inverted};
     }
     [[nodiscard]] static Binding keyAxis(Key negativeKey, Key positiveKey) noexcept {
-        return {BindingKind::KeyAxis, static_cast<int>(positiveKey), static_cast<int>(negativeKey), -1, false};
+        return {BindingKind::KeyAxis, static_cast<int>(positiveKey), static_cast<int>(negativeKey),
+                -1, false};
     }
     friend bool operator==(const Binding&, const Binding&) = default;
 };
@@ -132,9 +134,13 @@ public:
     [[nodiscard]] bool released(ActionId id) const;
     [[nodiscard]] float value(ActionId id) const;
     /// By name: throw core::Error naming an unknown action.
-    [[nodiscard]] bool pressed(std::string_view name) const { return pressed(require(name, "pressed")); }
+    [[nodiscard]] bool pressed(std::string_view name) const {
+        return pressed(require(name, "pressed"));
+    }
     [[nodiscard]] bool held(std::string_view name) const { return held(require(name, "held")); }
-    [[nodiscard]] bool released(std::string_view name) const { return released(require(name, "released")); }
+    [[nodiscard]] bool released(std::string_view name) const {
+        return released(require(name, "released"));
+    }
     [[nodiscard]] float value(std::string_view name) const { return value(require(name, "value")); }
 
     // Rebinding ---------------------------------------------------------------------------

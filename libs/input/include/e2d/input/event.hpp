@@ -270,22 +270,22 @@ struct GamepadAxisMoved {
 /// structs above). Window events come from GLFW's callbacks in the order GLFW reported them;
 /// gamepad events come from polling at the start of the frame, after the window events.
 enum class EventType : std::uint8_t {
-    KeyDown,          ///< `code` key, `scancode`, `mods`
-    KeyUp,            ///< `code` key, `scancode`, `mods`
-    KeyRepeat,        ///< `code` key held long enough for the system's auto-repeat
-    Text,             ///< `code` a Unicode code point (UTF-32)
-    MouseButtonDown,  ///< `code` button, `mods`, `screen`/`world` cursor position
-    MouseButtonUp,    ///< same
-    MouseMove,        ///< `screen`/`world` new position, `delta` motion in pixels
-    Scroll,           ///< `delta` scroll offset (y > 0 away from the user), `screen`/`world`
-    FocusGained,      ///< the window got keyboard focus
-    FocusLost,        ///< the window lost it; every held key and button was released before it
-    GamepadConnected, ///< `gamepad` slot now has a joystick with a gamepad mapping
-    GamepadDisconnected, ///< `gamepad` slot lost it (held buttons released before it)
-    GamepadButtonDown,   ///< `gamepad`, `code` button (names.hpp; 15/16 are the triggers)
-    GamepadButtonUp,     ///< same
-    GamepadAxis,         ///< `gamepad`, `code` axis, `value` after dead zone
-    JoystickConnected,   ///< `gamepad` slot has a joystick, mapped or not (see Input::joysticks())
+    KeyDown,              ///< `code` key, `scancode`, `mods`
+    KeyUp,                ///< `code` key, `scancode`, `mods`
+    KeyRepeat,            ///< `code` key held long enough for the system's auto-repeat
+    Text,                 ///< `code` a Unicode code point (UTF-32)
+    MouseButtonDown,      ///< `code` button, `mods`, `screen`/`world` cursor position
+    MouseButtonUp,        ///< same
+    MouseMove,            ///< `screen`/`world` new position, `delta` motion in pixels
+    Scroll,               ///< `delta` scroll offset (y > 0 away from the user), `screen`/`world`
+    FocusGained,          ///< the window got keyboard focus
+    FocusLost,            ///< the window lost it; every held key and button was released before it
+    GamepadConnected,     ///< `gamepad` slot now has a joystick with a gamepad mapping
+    GamepadDisconnected,  ///< `gamepad` slot lost it (held buttons released before it)
+    GamepadButtonDown,    ///< `gamepad`, `code` button (names.hpp; 15/16 are the triggers)
+    GamepadButtonUp,      ///< same
+    GamepadAxis,          ///< `gamepad`, `code` axis, `value` after dead zone
+    JoystickConnected,    ///< `gamepad` slot has a joystick, mapped or not (see Input::joysticks())
     JoystickDisconnected, ///< the joystick of `gamepad` slot went away
 };
 

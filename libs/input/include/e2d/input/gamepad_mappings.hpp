@@ -45,7 +45,8 @@ struct MappingParseResult {
 /// Why not simply hand the text to GLFW: `glfwUpdateGamepadMappings` returns true whatever the
 /// text holds, drops some bad lines with only an error callback, and silently accepts others
 /// (an unknown field, an element like `q0`, an index above 255 wraps).
-[[nodiscard]] MappingParseResult parseGamepadMappings(std::string_view text, std::string_view source = "<string>");
+[[nodiscard]] MappingParseResult parseGamepadMappings(std::string_view text,
+                                                      std::string_view source = "<string>");
 
 /// What loading a mapping text did.
 struct MappingLoadResult {
@@ -74,6 +75,7 @@ MappingLoadResult loadGamepadMappingsFile(const std::filesystem::path& path);
 /// joystick can be mapped at run time: `fields` is the part after the name, e.g.
 /// `"a:b0,b:b1,leftx:a0,lefty:a1"`. Throws core::Error when the result is not a valid line or
 /// holds a part GLFW cannot take (the message names the problem as parseGamepadMappings() would).
-[[nodiscard]] std::string makeGamepadMapping(std::string_view guid, std::string_view name, std::string_view fields);
+[[nodiscard]] std::string makeGamepadMapping(std::string_view guid, std::string_view name,
+                                             std::string_view fields);
 
 } // namespace e2d::input

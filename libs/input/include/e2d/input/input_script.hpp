@@ -76,7 +76,8 @@ struct InputScript {
 /// `"s.txt:4: move mouse: expected '<x> <y>' in window pixels, got '12'"`, `"s.txt:5: frame
 /// must be a whole number in [0, 1000000000], got '9223372036854775807'"`). Bytes that are not
 /// printable are quoted escaped (`\x01`).
-[[nodiscard]] InputScript parseInputScript(std::string_view text, std::string_view source = "<script>");
+[[nodiscard]] InputScript parseInputScript(std::string_view text,
+                                           std::string_view source = "<script>");
 /// Reads and parses the file; throws core::Error naming the file if it cannot be read.
 [[nodiscard]] InputScript loadInputScript(const std::filesystem::path& path);
 
@@ -115,7 +116,8 @@ private:
         float y = 0.0f;
     };
 
-    static Resolved resolve(const ScriptEvent& event, const InputScript& script, const ActionMap& actions);
+    static Resolved resolve(const ScriptEvent& event, const InputScript& script,
+                            const ActionMap& actions);
     void plugIn(int slot);
 
     std::vector<Resolved> events_;

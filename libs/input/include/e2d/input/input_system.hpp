@@ -39,10 +39,11 @@ struct InputSystemDef {
 class InputSystem final : public core::System {
 public:
     /// Events go to `director.scene()` (none while there is no scene).
-    InputSystem(Input& input, core::SceneDirector& director, ActionMap* actions = nullptr, InputSystemDef def = {});
-    /// Events go to whatever `currentScene` returns (nullptr: nowhere).
-    InputSystem(Input& input, std::function<core::Scene*()> currentScene, ActionMap* actions = nullptr,
+    InputSystem(Input& input, core::SceneDirector& director, ActionMap* actions = nullptr,
                 InputSystemDef def = {});
+    /// Events go to whatever `currentScene` returns (nullptr: nowhere).
+    InputSystem(Input& input, std::function<core::Scene*()> currentScene,
+                ActionMap* actions = nullptr, InputSystemDef def = {});
 
     void beginFrame() override;
 

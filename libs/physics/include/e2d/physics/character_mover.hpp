@@ -41,9 +41,9 @@ enum class MoverSurface : std::uint8_t {
 struct MoverContact {
     ShapeId shape;
     BodyId body;
-    Vec2 point{0.0f, 0.0f};    ///< on the shape's surface, metres
-    Vec2 normal{0.0f, 0.0f};   ///< unit, from the shape towards the mover
-    float separation = 0.0f;   ///< gap between the surfaces, metres (negative: overlap)
+    Vec2 point{0.0f, 0.0f};  ///< on the shape's surface, metres
+    Vec2 normal{0.0f, 0.0f}; ///< unit, from the shape towards the mover
+    float separation = 0.0f; ///< gap between the surfaces, metres (negative: overlap)
     MoverSurface surface = MoverSurface::Wall;
 };
 
@@ -111,8 +111,9 @@ struct MoverConstraint {
 
 /// What one move() did and what the mover touches afterwards.
 struct MoveResult {
-    Vec2 position{0.0f, 0.0f};    ///< where the mover is now, metres
-    Vec2 translation{0.0f, 0.0f}; ///< how far it moved, metres (differs from the asked one when blocked)
+    Vec2 position{0.0f, 0.0f}; ///< where the mover is now, metres
+    Vec2 translation{0.0f,
+                     0.0f}; ///< how far it moved, metres (differs from the asked one when blocked)
     /// Standing on ground (a MoverSurface::Ground contact).
     bool grounded = false;
     /// The ground contact closest to facing straight up; meaningful while grounded.

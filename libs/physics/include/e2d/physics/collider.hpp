@@ -2,8 +2,8 @@
 #pragma once
 
 #include <e2d/core/component.hpp>
-#include <e2d/physics/contact_info.hpp>
 #include <e2d/core/mask.hpp>
+#include <e2d/physics/contact_info.hpp>
 #include <e2d/physics/geometry.hpp>
 #include <e2d/physics/id.hpp>
 

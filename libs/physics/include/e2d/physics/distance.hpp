@@ -77,9 +77,9 @@ struct DistanceOutput {
     /// Unit vector from A to B along the closest points; (0, 0) when the core hulls overlap
     /// or touch (distance of the cores below ~1e-6 m), where no direction is defined.
     Vec2 normal{0.0f, 0.0f};
-    float distance = 0.0f;  ///< metres, >= 0; 0 when overlapping
-    int iterations = 0;     ///< GJK iterations run
-    int simplexCount = 0;   ///< 1 or 2 when separated, 3 when the core hulls overlap
+    float distance = 0.0f; ///< metres, >= 0; 0 when overlapping
+    int iterations = 0;    ///< GJK iterations run
+    int simplexCount = 0;  ///< 1 or 2 when separated, 3 when the core hulls overlap
 };
 
 /// Closest points of two convex proxies by GJK (2D simplex with Voronoi-region reduction).
@@ -100,8 +100,8 @@ struct PenetrationOutput {
     /// Penetration depth, metres (with radii when useRadii). Negative when the shapes are in
     /// fact separated: then -depth is their distance and the other fields are GJK's.
     float depth = 0.0f;
-    int iterations = 0;       ///< GJK plus EPA iterations
-    bool converged = true;    ///< false when EPA hit kMaxEpaIterations or the polytope degenerated
+    int iterations = 0;    ///< GJK plus EPA iterations
+    bool converged = true; ///< false when EPA hit kMaxEpaIterations or the polytope degenerated
 };
 
 /// Minimum translation separating two proxies: GJK first, then EPA (expanding polytope) on the

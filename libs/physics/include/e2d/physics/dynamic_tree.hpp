@@ -78,8 +78,7 @@ public:
     /// enlargeProxy() and destroyProxy() work on it, but query() and rayCast() do not see it
     /// yet. Creating many proxies this way and inserting them together is much cheaper than one
     /// by one (a level load); rebuild() and insertDeferred() insert them.
-    int createProxyDeferred(const Aabb& aabb, std::uint64_t categoryBits,
-                            std::uint64_t userData);
+    int createProxyDeferred(const Aabb& aabb, std::uint64_t categoryBits, std::uint64_t userData);
 
     /// Inserts every deferred proxy. When they are at least a quarter of all proxies the whole
     /// hierarchy is rebuilt top-down along a Z-order curve of the box centres (cheaper than

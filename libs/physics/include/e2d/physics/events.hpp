@@ -39,8 +39,8 @@ struct SensorEndTouchEvent {
 struct ContactHitEvent {
     ShapeId shapeA;
     ShapeId shapeB;
-    Vec2 point{0.0f, 0.0f};  ///< where the fastest point hit, on shape A's surface, metres
-    Vec2 normal{0.0f, 0.0f}; ///< from A to B
+    Vec2 point{0.0f, 0.0f};     ///< where the fastest point hit, on shape A's surface, metres
+    Vec2 normal{0.0f, 0.0f};    ///< from A to B
     float approachSpeed = 0.0f; ///< normal closing speed at impact, m/s, > threshold
 };
 

@@ -18,10 +18,11 @@ template <class R, class... Args>
 class FunctionRef<R(Args...)> {
 public:
     template <class F>
-        requires(!std::is_same_v<std::remove_cvref_t<F>, FunctionRef> &&
-                 std::is_invocable_r_v<R, F&, Args...>)
-    // NOLINTNEXTLINE(google-explicit-constructor): implicit on purpose, like std::function
-    FunctionRef(F&& f) noexcept
+    requires(!std::is_same_v<std::remove_cvref_t<F>, FunctionRef> &&
+             std::is_invocable_r_v<R, F&, Args...>)
+        // NOLINTNEXTLINE(google-explicit-constructor): implicit on purpose, like std::function
+        FunctionRef(F&& f)
+    noexcept
         : object_(const_cast<void*>(static_cast<const void*>(std::addressof(f)))),
           call_([](void* object, Args... args) -> R {
               return std::invoke(*static_cast<std::add_pointer_t<F>>(object),

@@ -47,11 +47,11 @@ struct Segment {
 /// that neighbour. An end without a neighbour (hasGhost1/hasGhost2 false, the free ends of an
 /// open chain) is round like a Segment's end. Like a Segment, it has no mass.
 struct ChainSegment {
-    Segment segment{};                   ///< metres
-    Vec2 ghost1{0.0f, 0.0f};             ///< the chain point before segment.point1, metres
-    Vec2 ghost2{0.0f, 0.0f};             ///< the chain point after segment.point2, metres
-    bool hasGhost1 = false;              ///< whether ghost1 is a neighbour. Default false.
-    bool hasGhost2 = false;              ///< whether ghost2 is a neighbour. Default false.
+    Segment segment{};       ///< metres
+    Vec2 ghost1{0.0f, 0.0f}; ///< the chain point before segment.point1, metres
+    Vec2 ghost2{0.0f, 0.0f}; ///< the chain point after segment.point2, metres
+    bool hasGhost1 = false;  ///< whether ghost1 is a neighbour. Default false.
+    bool hasGhost2 = false;  ///< whether ghost2 is a neighbour. Default false.
 };
 
 /// A convex polygon of 3 to kMaxPolygonVertices vertices, counter-clockwise, optionally rounded

@@ -16,10 +16,10 @@ enum class CollisionAlgorithm : std::uint8_t {
 
 /// One contact point.
 struct ManifoldPoint {
-    Vec2 point{0.0f, 0.0f};   ///< world point, midway between the two surfaces, metres
-    Vec2 anchorA{0.0f, 0.0f}; ///< point relative to shape A's transform origin (world axes)
-    Vec2 anchorB{0.0f, 0.0f}; ///< point relative to shape B's transform origin (world axes)
-    float separation = 0.0f;  ///< negative when overlapping, metres
+    Vec2 point{0.0f, 0.0f};      ///< world point, midway between the two surfaces, metres
+    Vec2 anchorA{0.0f, 0.0f};    ///< point relative to shape A's transform origin (world axes)
+    Vec2 anchorB{0.0f, 0.0f};    ///< point relative to shape B's transform origin (world axes)
+    float separation = 0.0f;     ///< negative when overlapping, metres
     float normalImpulse = 0.0f;  ///< solver's accumulated impulse, kept across steps
     float tangentImpulse = 0.0f; ///< solver's accumulated friction impulse
     std::uint16_t id = 0;        ///< feature id, stable across steps while the same features touch
@@ -46,8 +46,8 @@ constexpr std::uint16_t makeFeatureId(int a, int b) {
 /// with the capsule or segment as a 2-vertex polygon (rounded by the capsule's radius); a
 /// segment is a capsule of radius 0 for the circle and capsule routines. Circle pairs report
 /// id 0; capsule pairs use 0/1 for an end and 2 for the side; polygon pairs use vertex indices.
-Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b, const Transform& xfB,
-                        float margin = kSpeculativeDistance);
+Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
+                        const Transform& xfB, float margin = kSpeculativeDistance);
 Manifold collideCapsuleAndCircle(const Capsule& a, const Transform& xfA, const Circle& b,
                                  const Transform& xfB, float margin = kSpeculativeDistance);
 Manifold collideCapsules(const Capsule& a, const Transform& xfA, const Capsule& b,

@@ -131,13 +131,16 @@ public:
                                                      float angle, Vec2 translation,
                                                      const QueryFilter& filter = {}) const;
     /// World::overlapPoint(): the shapes containing `point` (world units).
-    [[nodiscard]] std::vector<ShapeId> overlapPoint(Vec2 point, const QueryFilter& filter = {}) const;
+    [[nodiscard]] std::vector<ShapeId> overlapPoint(Vec2 point,
+                                                    const QueryFilter& filter = {}) const;
     /// World::overlapAabb(): the shapes whose box overlaps `box` (world units).
-    [[nodiscard]] std::vector<ShapeId> overlapAabb(const Aabb& box, const QueryFilter& filter = {}) const;
+    [[nodiscard]] std::vector<ShapeId> overlapAabb(const Aabb& box,
+                                                   const QueryFilter& filter = {}) const;
     /// World::overlapShape(): the shapes `geometry` (world units) at `position` (world units)
     /// turned by `angle` overlaps.
     [[nodiscard]] std::vector<ShapeId> overlapShape(const ShapeGeometry& geometry, Vec2 position,
-                                                    float angle, const QueryFilter& filter = {}) const;
+                                                    float angle,
+                                                    const QueryFilter& filter = {}) const;
 
     /// The collider that owns `shape`, or nullptr (not a component's shape, or stale).
     [[nodiscard]] Collider* collider(ShapeId shape) const noexcept;
@@ -206,12 +209,12 @@ private:
     WorldDef def_;
     float unitsPerMetre_ = 1.0f;
     World world_;
-    std::vector<Collider*> allColliders_;  // every initialized collider, shape or not
+    std::vector<Collider*> allColliders_; // every initialized collider, shape or not
     std::vector<ColliderSlot> colliders_; // indexed by ShapeId::index1 - 1
     std::vector<Rigidbody*> rigidbodies_;
-    std::vector<Collider*> staticColliders_; // colliders with a static body of their own
+    std::vector<Collider*> staticColliders_;       // colliders with a static body of their own
     std::vector<CharacterController*> characters_; // in a scene (onInitialize to onTerminate)
-    int ruledColliders_ = 0;                 // colliders with oneWay or preSolve
+    int ruledColliders_ = 0;                       // colliders with oneWay or preSolve
     bool preSolveInstalled_ = false;
     // The last step's events, copied before dispatch (capacity reused from step to step).
     std::vector<ContactBeginTouchEvent> beginEvents_;

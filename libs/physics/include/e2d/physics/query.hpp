@@ -13,7 +13,7 @@ namespace e2d::physics {
 /// `maskBits` and its Filter::maskBits share a bit with `categoryBits`, like a core::Mask
 /// match in both directions. Filter::group plays no part in queries.
 struct QueryFilter {
-    std::uint64_t categoryBits = 1;              ///< what the query is, default bit 0
+    std::uint64_t categoryBits = 1;             ///< what the query is, default bit 0
     std::uint64_t maskBits = ~std::uint64_t{0}; ///< what it may see, default everything
     /// Whether sensor shapes are seen. Default false: sensors detect overlap, they are not
     /// solid, so rays pass through them and point/box queries skip them.

@@ -14,9 +14,9 @@ inline constexpr int kBodyTypeCount = 3;
 /// as with core::Mask (a bit set: two masks match when they share a bit). A non-zero
 /// `group` overrides the masks: same positive group always collides, same negative never does.
 struct Filter {
-    std::uint64_t categoryBits = 1;              ///< what this shape is, default bit 0
+    std::uint64_t categoryBits = 1;             ///< what this shape is, default bit 0
     std::uint64_t maskBits = ~std::uint64_t{0}; ///< what it may touch, default everything
-    std::int32_t group = 0;                      ///< default 0: masks decide
+    std::int32_t group = 0;                     ///< default 0: masks decide
 };
 
 /// Whether shapes with these filters may touch.

@@ -51,8 +51,12 @@ public:
     [[nodiscard]] float mass() const { return world_->massData(id_).mass; }
     [[nodiscard]] Vec2 worldCenterOfMass() const { return world_->worldCenterOfMass(id_); }
 
-    [[nodiscard]] Vec2 worldPoint(Vec2 localPoint) const { return world_->worldPoint(id_, localPoint); }
-    [[nodiscard]] Vec2 localPoint(Vec2 worldPoint) const { return world_->localPoint(id_, worldPoint); }
+    [[nodiscard]] Vec2 worldPoint(Vec2 localPoint) const {
+        return world_->worldPoint(id_, localPoint);
+    }
+    [[nodiscard]] Vec2 localPoint(Vec2 worldPoint) const {
+        return world_->localPoint(id_, worldPoint);
+    }
     [[nodiscard]] Vec2 worldVector(Vec2 localVector) const {
         return world_->worldVector(id_, localVector);
     }
@@ -203,7 +207,9 @@ public:
     void setMaxMotorForce(float force) { world_->setJointMaxMotorForce(id_, force); }
     void enableLimit(bool enable) { world_->enableJointLimit(id_, enable); }
     void setLimits(float lower, float upper) { world_->setJointLimits(id_, lower, upper); }
-    void setSpring(float hertz, float dampingRatio) { world_->setJointSpring(id_, hertz, dampingRatio); }
+    void setSpring(float hertz, float dampingRatio) {
+        world_->setJointSpring(id_, hertz, dampingRatio);
+    }
     /// Mouse joints.
     void setTarget(Vec2 target) { world_->setMouseJointTarget(id_, target); }
     /// Motor joints.
@@ -226,7 +232,9 @@ inline Shape Body::createShape(const ShapeDef& def, const ShapeGeometry& geometr
     return Shape(*world_, world_->createShape(id_, def, geometry));
 }
 
-inline Joint Body::createJoint(const JointDef& def) { return Joint(*world_, world_->createJoint(def)); }
+inline Joint Body::createJoint(const JointDef& def) {
+    return Joint(*world_, world_->createJoint(def));
+}
 
 inline Body World::body(BodyId id) { return Body(*this, id); }
 inline Shape World::shape(ShapeId id) { return Shape(*this, id); }

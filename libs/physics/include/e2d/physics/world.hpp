@@ -231,7 +231,8 @@ struct ExplosionDef {
 /// Called during World::step() for each touching solid contact after the narrow phase
 /// computed its manifold (see World::setPreSolveCallback()). Returns false to leave the contact
 /// out of this step's solver.
-using PreSolveCallback = std::function<bool(ShapeId shapeA, ShapeId shapeB, const Manifold& manifold)>;
+using PreSolveCallback =
+    std::function<bool(ShapeId shapeA, ShapeId shapeB, const Manifold& manifold)>;
 /// Called when two shapes could start a pair (see World::setPairFilterCallback()). Returns
 /// false to keep them apart.
 using PairFilterCallback = std::function<bool(ShapeId shapeA, ShapeId shapeB)>;

@@ -40,7 +40,8 @@ struct AnimatedSpriteRendererDef {
 /// numeric order) with their UV rectangles, rotation and size, for AnimatedSpriteRendererDef::frames.
 /// Frames stored rotated are shown upright. Throws core::Error naming the sheet and base name
 /// when there is no such frame.
-[[nodiscard]] std::vector<AnimationFrame> animationUvs(const SpriteSheet& sheet, std::string_view baseName);
+[[nodiscard]] std::vector<AnimationFrame> animationUvs(const SpriteSheet& sheet,
+                                                       std::string_view baseName);
 
 /// A SpriteRenderer whose UV rectangle plays a frame-by-frame Animation: every update(dt) of the
 /// scene advances the animation by dt and shows its frame.

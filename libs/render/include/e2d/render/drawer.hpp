@@ -49,23 +49,27 @@ struct DebugVertex {
 class Drawer {
 public:
     /// A segment from `a` to `b`. Default width 1 px.
-    void line(glm::vec2 a, glm::vec2 b, glm::vec4 color, float width = 1.0f, DrawSpace space = DrawSpace::World);
+    void line(glm::vec2 a, glm::vec2 b, glm::vec4 color, float width = 1.0f,
+              DrawSpace space = DrawSpace::World);
     /// The outline of the axis-aligned rectangle from `min` to `max`.
-    void rect(glm::vec2 min, glm::vec2 max, glm::vec4 color, float width = 1.0f, DrawSpace space = DrawSpace::World);
+    void rect(glm::vec2 min, glm::vec2 max, glm::vec4 color, float width = 1.0f,
+              DrawSpace space = DrawSpace::World);
     /// The axis-aligned rectangle from `min` to `max`, filled.
-    void fillRect(glm::vec2 min, glm::vec2 max, glm::vec4 color, DrawSpace space = DrawSpace::World);
+    void fillRect(glm::vec2 min, glm::vec2 max, glm::vec4 color,
+                  DrawSpace space = DrawSpace::World);
     /// The outline of a circle. `segments` < 3 picks a count from the radius (16 to 128).
     void circle(glm::vec2 center, float radius, glm::vec4 color, float width = 1.0f,
                 DrawSpace space = DrawSpace::World, int segments = 0);
     /// A filled circle (a fan of `segments` triangles; < 3 picks a count from the radius).
-    void fillCircle(glm::vec2 center, float radius, glm::vec4 color, DrawSpace space = DrawSpace::World,
-                    int segments = 0);
+    void fillCircle(glm::vec2 center, float radius, glm::vec4 color,
+                    DrawSpace space = DrawSpace::World, int segments = 0);
     /// The closed outline through `points` (2 points: one segment).
     void polygon(std::span<const glm::vec2> points, glm::vec4 color, float width = 1.0f,
                  DrawSpace space = DrawSpace::World);
     /// A filled simple polygon (convex or concave, either winding, no self-intersection),
     /// triangulated by ear clipping. Fewer than 3 points draw nothing.
-    void fillPolygon(std::span<const glm::vec2> points, glm::vec4 color, DrawSpace space = DrawSpace::World);
+    void fillPolygon(std::span<const glm::vec2> points, glm::vec4 color,
+                     DrawSpace space = DrawSpace::World);
 
     /// Forgets everything drawn so far.
     void clear() noexcept;

@@ -20,7 +20,8 @@ struct Image {
     /// Pointer to pixel (x, y), y counted from the top.
     [[nodiscard]] const std::uint8_t* at(int x, int y) const {
         return pixels.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                                static_cast<std::size_t>(x)) * 4;
+                                static_cast<std::size_t>(x)) *
+                                   4;
     }
 };
 

@@ -55,7 +55,8 @@ public:
     /// `window`: swap its buffers after each frame; null: the caller does. `logger`: where
     /// font and sprite-sheet errors of the components go; null: nowhere (each component keeps
     /// its error readable).
-    explicit RenderSystem(Renderer& renderer, Window* window = nullptr, core::Logger* logger = nullptr);
+    explicit RenderSystem(Renderer& renderer, Window* window = nullptr,
+                          core::Logger* logger = nullptr);
     ~RenderSystem() override;
     RenderSystem(const RenderSystem&) = delete;
     RenderSystem& operator=(const RenderSystem&) = delete;

@@ -66,7 +66,8 @@ public:
     /// Lays `utf8` out (see layoutText()) and submits it for the next Renderer::render().
     /// Returns the layout, in font pixels relative to the anchor. Throws core::Error for an
     /// invalid `where` or `style`.
-    TextLayout draw(Font& font, std::string_view utf8, const TextStyle& style, const TextDraw& where);
+    TextLayout draw(Font& font, std::string_view utf8, const TextStyle& style,
+                    const TextDraw& where);
     /// Submits an existing layout of `font` (glyphs still in its atlas: a layout is valid for
     /// the font it was made with) for the next render().
     void submit(Font& font, const TextLayout& layout, const TextDraw& where);

@@ -70,12 +70,12 @@ struct WindowDef {
 /// What the created context offers. The baseline is OpenGL 3.3 core, forward compatible; the
 /// renderer uses 4.4 buffer storage (persistent mapping) when `bufferStorage` is true.
 struct ContextInfo {
-    int major = 0;                ///< OpenGL version the driver gave
+    int major = 0; ///< OpenGL version the driver gave
     int minor = 0;
-    bool bufferStorage = false;   ///< GL_ARB_buffer_storage or OpenGL >= 4.4
-    bool baseInstance = false;    ///< GL_ARB_base_instance or OpenGL >= 4.2
-    std::string renderer;         ///< GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
-    std::string version;          ///< GL_VERSION string
+    bool bufferStorage = false; ///< GL_ARB_buffer_storage or OpenGL >= 4.4
+    bool baseInstance = false;  ///< GL_ARB_base_instance or OpenGL >= 4.2
+    std::string renderer;       ///< GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+    std::string version;        ///< GL_VERSION string
 };
 
 /// A GLFW window with a current OpenGL 3.3+ core context (GLEW loaded).

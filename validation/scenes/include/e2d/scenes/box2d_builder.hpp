@@ -31,7 +31,7 @@ struct Box2DSettings {
 /// b2LinearStiffness of the same frequency; restitution threshold stays Box2D's 1 m/s.
 struct Box2DScene {
     std::unique_ptr<b2World> world;
-    std::vector<b2Body*> bodies; ///< in SceneDesc order
+    std::vector<b2Body*> bodies;  ///< in SceneDesc order
     std::vector<b2Joint*> joints; ///< in SceneDesc::joints order
     Box2DSettings settings;
 

@@ -26,7 +26,8 @@ E2dScene buildE2d(const SceneDesc& scene, physics::WorldDef def = {});
 
 /// The joint a JointDesc describes between `world`'s bodies `bodies` (in SceneDesc order, at
 /// their starting poses): world anchors and axis become local ones.
-physics::JointDef toE2dJoint(const JointDesc& joint, const SceneDesc& scene, const physics::World& world,
+physics::JointDef toE2dJoint(const JointDesc& joint, const SceneDesc& scene,
+                             const physics::World& world,
                              const std::vector<physics::BodyId>& bodies);
 
 /// The shape a ShapeDesc describes, as e2d geometry. A chain is many shapes: this gives its first

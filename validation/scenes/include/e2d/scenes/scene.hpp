@@ -40,9 +40,9 @@ struct ShapeDesc {
     std::optional<glm::vec2> ghostAfter;
     /// Chain: empty (every segment takes friction and restitution), one, or one per segment.
     std::vector<ChainMaterial> materials;
-    float density = 1.0f;              ///< kg/m^2
-    float friction = 0.6f;             ///< Coulomb coefficient
-    float restitution = 0.0f;          ///< 0 inelastic .. 1 elastic
+    float density = 1.0f;     ///< kg/m^2
+    float friction = 0.6f;    ///< Coulomb coefficient
+    float restitution = 0.0f; ///< 0 inelastic .. 1 elastic
 };
 
 struct BodyDesc {
@@ -53,8 +53,8 @@ struct BodyDesc {
     float angularVelocity = 0.0f;
     bool bullet = false;
     bool fixedRotation = false;
-    float gravityScale = 1.0f;      ///< multiplies the scene's gravity for this body
-    glm::vec2 force{0.0f, 0.0f};    ///< N, applied at the centre of mass before every step
+    float gravityScale = 1.0f;   ///< multiplies the scene's gravity for this body
+    glm::vec2 force{0.0f, 0.0f}; ///< N, applied at the centre of mass before every step
     /// Impulses at the centre of mass: each (time in s, impulse in N s) is applied before the
     /// first step that starts at or after its time.
     std::vector<std::pair<float, glm::vec2>> impulses;
@@ -69,13 +69,13 @@ enum class JointKind { Revolute, Distance, Prismatic, Weld, Wheel, Motor, Mouse 
 /// local frames from their starting poses. The reference angle is angle B - angle A at creation.
 struct JointDesc {
     JointKind kind = JointKind::Revolute;
-    int bodyA = 0;                    ///< index in SceneDesc::bodies
+    int bodyA = 0; ///< index in SceneDesc::bodies
     int bodyB = 0;
     /// World, m. Revolute, prismatic, weld, wheel: the one anchor; mouse: the point of body B
     /// pulled (its local point at the start).
     glm::vec2 anchorA{0.0f, 0.0f};
-    glm::vec2 anchorB{0.0f, 0.0f};    ///< world, m; distance only
-    glm::vec2 axis{1.0f, 0.0f};       ///< prismatic, wheel: unit axis, world (fixed in body A)
+    glm::vec2 anchorB{0.0f, 0.0f}; ///< world, m; distance only
+    glm::vec2 axis{1.0f, 0.0f};    ///< prismatic, wheel: unit axis, world (fixed in body A)
     bool collideConnected = false;
     /// Revolute: angles (rad); prismatic: translations along the axis (m); distance: the least
     /// and largest length (m, a rope when there is no spring).
@@ -92,15 +92,15 @@ struct JointDesc {
     bool enableSpring = false;
     float hertz = 0.0f;
     float dampingRatio = 0.0f;
-    float length = 0.0f;              ///< distance: rest length, m (the anchors' distance if 0)
+    float length = 0.0f; ///< distance: rest length, m (the anchors' distance if 0)
     /// Motor joint: body B's origin in A's frame (m) and B's angle minus A's (rad) it drives to.
     glm::vec2 linearOffset{0.0f, 0.0f};
     float angularOffset = 0.0f;
     /// Motor joint: largest force (N) and torque (N m); mouse: largest force (N).
     float maxForce = 0.0f;
     float maxTorque = 0.0f;
-    float correctionFactor = 0.3f;    ///< motor joint: in [0, 1]
-    glm::vec2 target{0.0f, 0.0f};     ///< mouse: the world target, m (fixed for the run)
+    float correctionFactor = 0.3f; ///< motor joint: in [0, 1]
+    glm::vec2 target{0.0f, 0.0f};  ///< mouse: the world target, m (fixed for the run)
 };
 
 /// The name of a joint kind as in scenario files ("revolute", ...).
