@@ -94,12 +94,21 @@ std::vector<ShapeId> PhysicsSystem::overlapShape(const ShapeGeometry& geometry, 
 
 // --- bookkeeping ---
 
+namespace {
+
+// The slot of `slots` (indexed by shape slot) that holds `shape` itself (same slot, generation
+// and world), or null: the one lookup of collider() and unregisterShape().
+template <class Slots>
+auto* slotHolding(Slots& slots, ShapeId shape) noexcept {
+    auto* slot = shape.isNull() || shape.index() >= slots.size() ? nullptr : &slots[shape.index()];
+    return slot != nullptr && slot->shape == shape ? slot : nullptr;
+}
+
+} // namespace
+
 Collider* PhysicsSystem::collider(ShapeId shape) const noexcept {
-    if (shape.isNull() || shape.index1 > colliders_.size()) {
-        return nullptr;
-    }
-    const ColliderSlot& slot = colliders_[shape.index1 - 1];
-    return slot.shape == shape ? slot.collider : nullptr;
+    const auto* slot = slotHolding(colliders_, shape);
+    return slot != nullptr ? slot->collider : nullptr;
 }
 
 void PhysicsSystem::registerCollider(Collider& collider) {
@@ -125,9 +134,8 @@ void PhysicsSystem::registerShape(ShapeId shape, Collider& collider) {
 }
 
 void PhysicsSystem::unregisterShape(ShapeId shape) noexcept {
-    if (!shape.isNull() && shape.index1 <= colliders_.size() &&
-        colliders_[shape.index1 - 1].shape == shape) {
-        colliders_[shape.index1 - 1] = {};
+    if (auto* slot = slotHolding(colliders_, shape)) {
+        *slot = {};
     }
 }
 
