@@ -58,8 +58,8 @@ void integratePositions(std::span<BodyState> states, std::span<const int> indice
 // Runs the velocity and position stages of one step; positions end in the states' deltas.
 void solveSoftStep(const SolverStep& step);
 // The soft step of one block of islands on the wide solver: levels [firstLevel, endLevel) of
-// `wide` (ConstraintLevels: the same sweep as constraint order, several constraints at a
-// time), the BodyState indices `bodies` (every body those constraints touch, and no body
+// `wide` (colours, ConstraintColors: the constraints of a level share no moving body, several
+// constraints at a time), the BodyState indices `bodies` (every body those constraints touch, and no body
 // another block's constraints touch), then restitution on `restitution` (the block's, in
 // constraint order). Blocks share no body, so running one through all sub-steps before the
 // next gives what running all of them sub-step by sub-step gives, and the block's
