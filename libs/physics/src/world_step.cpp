@@ -478,6 +478,9 @@ void World::Impl::solve(float dt) {
         auto solveBlock = [&](std::size_t b, detail::Simulation::BlockWorker& worker) {
             const int firstLevel = s.blockLevelStart[b];
             const int endLevel = s.blockLevelStart[b + 1];
+            if (firstLevel == endLevel && s.blockBodyStart[b] == s.blockBodyStart[b + 1]) {
+                return; // the block of bodies no constraint touches, and there are none
+            }
             // Only the block holding shapes pushed apart sweeps more.
             detail::SolverStep blockStep = step;
             bool blockPushOut = false;
