@@ -461,8 +461,11 @@ void World::Impl::solve(float dt) {
                             s.contacts[static_cast<std::size_t>(s.slotContact[at])];
                         const detail::ContactBodyView a = viewOf(c.bodyA, s.slotBodies[at].indexA);
                         const detail::ContactBodyView b = viewOf(c.bodyB, s.slotBodies[at].indexB);
-                        in.setLane(lane, c.manifold, a, b, c.friction, softnessOf(a, b));
-                        blockPushOut = blockPushOut || pushedApart(c, a, b);
+                        const detail::Softness laneSoftness = softnessOf(a, b);
+                        in.setLane(lane, c.manifold, a, b, c.friction, laneSoftness);
+                        // pushedApart() on the softness just picked (the wide path is soft-step).
+                        blockPushOut =
+                            blockPushOut || detail::isPushedApart(c.manifold, a, b, laneSoftness);
                         if (c.restitution != 0.0f) {
                             restitution.push_back({level, slot - levelFirst, c.manifold.pointCount,
                                                    c.restitution, pressOf(c, a, b),
