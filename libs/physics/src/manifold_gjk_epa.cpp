@@ -222,6 +222,15 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
             xfB);
     }
 
+    if (faceA.separation <= detail::kSeparatedCores &&
+        faceB.separation <= detail::kSeparatedCores) {
+        // Two corners crossing: the same symmetric contact as the separating-axis routine's.
+        detail::LocalManifold crossing{};
+        if (detail::crossingCorners(refA, localB, faceA.edge, faceA.separation, faceB.edge,
+                                    faceB.separation, margin, crossing)) {
+            return detail::localToWorld(crossing, xfA, xfB);
+        }
+    }
     return detail::localToWorld(detail::clipPolygons(refA, localB, edgeA, edgeB, flip, margin), xfA,
                                 xfB);
 }

@@ -3,6 +3,8 @@
 
 #include "manifold_detail.hpp"
 
+#include <cmath>
+
 namespace e2d::physics::detail {
 
 /// A polygon's collision data seen through pointers: lets the pair routines use a polygon in
@@ -113,6 +115,75 @@ static inline LocalManifold clipPolygons(const PolygonRef& a, const PolygonRef& 
         add(vLower, separationLower, i22, i11);
     }
     return m;
+}
+
+/// Two overlapping polygons whose best faces meet at an angle and separate them by about the
+/// same amount (within this, metres) are crossing at two corners (two cards tip to tip): each
+/// corner lies against the other polygon's face, and neither face is the contact's.
+inline constexpr float kCrossingTolerance = kLinearSlop;
+/// ... unless the two faces are this close to anti-parallel (cosine of 0.1 rad): faces in line
+/// (a box resting on a box) are a face contact, clipped even where their corners meet.
+inline constexpr float kCrossingMaxCos = 0.995f;
+
+/// The vertex of `poly` deepest along -`normal` (the first on a tie).
+static inline int deepestVertex(const PolygonRef& poly, Vec2 normal) {
+    int best = 0;
+    float bestDot = dot(normal, poly.vertices[0]);
+    for (int i = 1; i < poly.count; ++i) {
+        const float d = dot(normal, poly.vertices[i]);
+        const bool better = d < bestDot;
+        best = better ? i : best;
+        bestDot = better ? d : bestDot;
+    }
+    return best;
+}
+
+/// The contact of two polygons (in one frame) crossing at two corners: face `edgeA` of `a`
+/// separates them by `separationA`, face `edgeB` of `b` by `separationB`, both at most
+/// kSeparatedCores (the cores overlap or touch). A reference face would make the contact
+/// lopsided: its normal is one card's face normal, tilted by the whole angle between the
+/// faces, and which face wins depends on a few tenths of a millimetre in the first touching
+/// steps. Such a crossing gets the answer the separated routine gives while the corners are
+/// apart: one point midway between the two corners, its normal the bisector of the two face
+/// normals, its separation the overlap of the corners along it, its id the two corners. Only
+/// for corners within kLinearSlop of each other across that normal, crossed by less than the
+/// speculative distance: corners far apart are the ends of a wedge-shaped face contact (a
+/// tilted box lying on another's edge), which clipping gives two points, and a deep crossing
+/// (two capsules crossed like an X) is no meeting of corners but an overlap, which the face of
+/// least penetration resolves. Returns false (and leaves `m`) for any other contact.
+static inline bool crossingCorners(const PolygonRef& a, const PolygonRef& b, int edgeA,
+                                   float separationA, int edgeB, float separationB, float margin,
+                                   LocalManifold& m) {
+    if (std::fabs(separationA - separationB) > kCrossingTolerance ||
+        separationA < -kSpeculativeDistance) {
+        return false;
+    }
+    const Vec2 normalA = a.normals[edgeA];
+    const Vec2 normalB = b.normals[edgeB];
+    // Crossing corners lie each against a face that faces the other polygon's: the two
+    // normals point against each other, but not straight (faces in line).
+    const float facing = dot(normalA, normalB);
+    if (facing > 0.0f || facing < -kCrossingMaxCos) {
+        return false;
+    }
+    const Vec2 bisector = normalize(normalA - normalB);
+    const int cornerA = deepestVertex(a, normalB);
+    const int cornerB = deepestVertex(b, normalA);
+    const Vec2 pA = a.vertices[cornerA];
+    const Vec2 pB = b.vertices[cornerB];
+    if (std::fabs(cross(bisector, pB - pA)) > kLinearSlop) {
+        return false;
+    }
+    const float separation = dot(pB - pA, bisector) - (a.radius + b.radius);
+    if (separation > margin) {
+        return false;
+    }
+    m.normal = bisector;
+    m.points[0] = 0.5f * ((pA + a.radius * bisector) + (pB - b.radius * bisector));
+    m.separations[0] = separation;
+    m.ids[0] = makeFeatureId(cornerA, cornerB);
+    m.count = 1;
+    return true;
 }
 
 } // namespace e2d::physics::detail
