@@ -222,12 +222,12 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
             xfB);
     }
 
-    if (faceA.separation <= detail::kSeparatedCores &&
-        faceB.separation <= detail::kSeparatedCores) {
+    if (detail::mayCrossAtCorners(refA, localB, faceA.edge, faceA.separation, faceB.edge,
+                                  faceB.separation)) {
         // Two corners crossing: the same symmetric contact as the separating-axis routine's.
-        detail::LocalManifold crossing{};
-        if (detail::crossingCorners(refA, localB, faceA.edge, faceA.separation, faceB.edge,
-                                    faceB.separation, margin, crossing)) {
+        const detail::LocalManifold crossing =
+            detail::crossingCorners(refA, localB, faceA.edge, faceB.edge, margin);
+        if (crossing.count > 0) {
             return detail::localToWorld(crossing, xfA, xfB);
         }
     }

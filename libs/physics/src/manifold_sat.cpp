@@ -108,10 +108,11 @@ contactOnAxis(const PolygonRef& localA, const PolygonRef& localB, float margin,
             m.count = 1;
             return m;
         }
-    } else if (faceA.separation <= kSeparatedCores && faceB.separation <= kSeparatedCores) {
-        LocalManifold m{};
-        if (detail::crossingCorners(localA, localB, faceA.edge, faceA.separation, faceB.edge,
-                                    faceB.separation, margin, m)) [[unlikely]] {
+    } else if (detail::mayCrossAtCorners(localA, localB, faceA.edge, faceA.separation, faceB.edge,
+                                         faceB.separation)) [[unlikely]] {
+        const LocalManifold m =
+            detail::crossingCorners(localA, localB, faceA.edge, faceB.edge, margin);
+        if (m.count > 0) {
             return m;
         }
     }
