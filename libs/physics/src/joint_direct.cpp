@@ -176,36 +176,16 @@ Block transposed(const Block& x) { return {x[0], x[3], x[6], x[1], x[4], x[7], x
 constexpr double kRegularization = 1e-3;
 constexpr double kLimitRegularization = 1e-9;
 
-// The inverse of the pivot block x (symmetric positive semi-definite 3x3, padding rows the
-// identity) with `damping` added to its diagonal (0 for padding).
-Block pivotInverse(const Block& x, const std::array<double, 3>& damping) {
-    // x = L D L^T, L unit lower triangular.
-    double l10 = 0.0, l20 = 0.0, l21 = 0.0;
-    double d[3];
-    auto guard = [&](double pivot, std::size_t i) {
-        const double damped = pivot + damping[i];
-        return damped > 0.0 ? damped : 1.0;
-    };
-    d[0] = guard(x[0], 0);
-    l10 = x[3] / d[0];
-    l20 = x[6] / d[0];
-    d[1] = guard(x[4] - l10 * l10 * d[0], 1);
-    l21 = (x[7] - l20 * l10 * d[0]) / d[1];
-    d[2] = guard(x[8] - l20 * l20 * d[0] - l21 * l21 * d[1], 2);
-    // x^-1 = L^-T D^-1 L^-1; L^-1 = [1 0 0; -l10 1 0; l10 l21 - l20, -l21, 1].
-    const double m20 = l10 * l21 - l20;
-    const double inv[3][3] = {{1.0, 0.0, 0.0}, {-l10, 1.0, 0.0}, {m20, -l21, 1.0}};
-    Block r{};
-    for (int i = 0; i < 3; ++i) {
-        for (int k = 0; k < 3; ++k) {
-            double v = 0.0;
-            for (int m = 0; m < 3; ++m) {
-                v += inv[m][i] * inv[m][k] / d[m];
-            }
-            r[static_cast<std::size_t>(3 * i + k)] = v;
-        }
-    }
-    return r;
+// x^-1 of a symmetric positive definite 3x3 (its padding rows are the identity).
+Block inverse(const Block& x) {
+    const double c00 = x[4] * x[8] - x[5] * x[7];
+    const double c01 = x[5] * x[6] - x[3] * x[8];
+    const double c02 = x[3] * x[7] - x[4] * x[6];
+    double det = x[0] * c00 + x[1] * c01 + x[2] * c02;
+    det = det != 0.0 ? 1.0 / det : 0.0;
+    return {det * c00, det * (x[2] * x[7] - x[1] * x[8]), det * (x[1] * x[5] - x[2] * x[4]),
+            det * c01, det * (x[0] * x[8] - x[2] * x[6]), det * (x[2] * x[3] - x[0] * x[5]),
+            det * c02, det * (x[1] * x[6] - x[0] * x[7]), det * (x[0] * x[4] - x[1] * x[3])};
 }
 void mulVec(const Block& x, const double v[3], double out[3]) {
     for (int i = 0; i < 3; ++i) {
@@ -244,7 +224,6 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
     w.rhs.resize(n);
     w.error.resize(n);
     w.diag.resize(n);
-    w.rowDamping.resize(n);
     w.adjacency.resize(n);
     for (auto& list : w.adjacency) {
         list.clear();
@@ -287,14 +266,17 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
                 }
             }
         }
-        // A row with no motion at all (both sides fixed) is padding too. A limit is a
-        // velocity row that stays >= 0, or a position row with no accumulated impulse.
-        for (int i = 0; i < 3; ++i) {
+        // The damping (see kRegularization); a row with no motion at all (both sides fixed)
+        // is padding. A limit is a velocity row that stays >= 0, or a position row with no
+        // accumulated impulse.
+        for (int i = 0; i < count; ++i) {
             double& x = d[static_cast<std::size_t>(4 * i)];
-            const bool limit = i < count && (r.oneSided[i] || r.acc[i] == nullptr);
-            const double damping = limit ? kLimitRegularization : kRegularization;
-            w.rowDamping[p][static_cast<std::size_t>(i)] = i < count && x > 0.0 ? damping * x : 0.0;
-            x = x > 0.0 ? x : 1.0;
+            x = x > 0.0 ? x * (1.0 + kRegularization) : 1.0;
+        }
+        // A limit is the last row (jointRows()).
+        if (count > 0 && (r.oneSided[count - 1] || r.acc[count - 1] == nullptr)) {
+            double& x = d[static_cast<std::size_t>(4 * (count - 1))];
+            x *= (1.0 + kLimitRegularization) / (1.0 + kRegularization);
         }
         w.diag[p] = d;
         for (int s : {j.indexA, j.indexB}) {
@@ -347,11 +329,15 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
     }
     // Each row's blocks by joint: the factorisation visits them in this order, which the
     // bodies' order must not decide.
+    // (A chain's or a tree's rows have one or two blocks, most often in order already: the
+    // check is what a sort call would cost for them.)
+    const auto byJoint = [](const JointDirectScratch::Entry& x,
+                            const JointDirectScratch::Entry& y) { return x.node < y.node; };
     for (std::size_t p = 0; p < n; ++p) {
-        std::sort(w.adjacency[p].begin(), w.adjacency[p].end(),
-                  [](const JointDirectScratch::Entry& x, const JointDirectScratch::Entry& y) {
-                      return x.node < y.node;
-                  });
+        auto& list = w.adjacency[p];
+        if (!std::is_sorted(list.begin(), list.end(), byJoint)) {
+            std::sort(list.begin(), list.end(), byJoint);
+        }
     }
     return worst;
 }
@@ -375,7 +361,7 @@ bool factor(JointDirectScratch& w) {
         const auto p = static_cast<std::size_t>(w.queue.begin()->second);
         w.queue.erase(w.queue.begin());
         w.order.push_back(static_cast<int>(p));
-        const Block dInv = pivotInverse(w.diag[p], w.rowDamping[p]);
+        const Block dInv = inverse(w.diag[p]);
         w.inverseDiag[p] = dInv;
         auto& neighbours = w.factor[p];
         neighbours.assign(w.adjacency[p].begin(), w.adjacency[p].end()); // (i, A_pi)
@@ -511,7 +497,7 @@ bool projectComponent(std::span<Joint> joints, std::span<const int> slots,
 
 // rhs = -(J v + bias) of every assembled row: the rows' velocities to zero, a limit not
 // reached yet only stopped at it (speculative), position errors left to the projection (rigid
-// rows: the softness's bias, 0 by default).
+// rows: the softness's bias, 0 by default). w.limits gets the limit rows.
 void velocityRhs(std::span<Joint> joints, std::span<const int> slots,
                  std::span<const BodyState> states, const JointStep& step, const Softness& soft,
                  JointDirectScratch& w) {
@@ -519,6 +505,7 @@ void velocityRhs(std::span<Joint> joints, std::span<const int> slots,
     auto stateOf = [&](int index) -> const BodyState& {
         return index < 0 ? fixedState : states[static_cast<std::size_t>(index)];
     };
+    w.limits.clear();
     for (std::size_t p = 0; p < slots.size(); ++p) {
         const Joint& j = joints[static_cast<std::size_t>(slots[p])];
         const JointDirectScratch::Rows& r = w.rows[p];
@@ -530,6 +517,9 @@ void velocityRhs(std::span<Joint> joints, std::span<const int> slots,
             const float C = w.error[p][static_cast<std::size_t>(i)];
             const float bias = r.oneSided[i] && C > 0.0f ? C * step.invH : soft.biasRate * C;
             w.rhs[p][static_cast<std::size_t>(i)] = -double(Cdot + bias);
+            if (r.oneSided[i]) {
+                w.limits.emplace_back(static_cast<int>(p), i);
+            }
         }
     }
 }
@@ -566,6 +556,10 @@ void splitLimits(JointDirectScratch& w) {
     w.limitColumns.assign(m * n * 3, 0.0);
     w.limitK.assign(m * m, 0.0);
     w.limitVelocity.resize(m);
+    w.limitOf.assign(n, -1); // a joint has one limit row at most (its nearer side)
+    for (std::size_t l = 0; l < m; ++l) {
+        w.limitOf[static_cast<std::size_t>(w.limits[l].first)] = static_cast<int>(l);
+    }
     for (std::size_t l = 0; l < m; ++l) {
         const auto p = static_cast<std::size_t>(w.limits[l].first);
         const auto i = static_cast<std::size_t>(w.limits[l].second);
@@ -600,7 +594,6 @@ void splitLimits(JointDirectScratch& w) {
             w.diag[p][3 * k + i] = 0.0;
         }
         w.diag[p][4 * i] = 1.0;
-        w.rowDamping[p][i] = 0.0;
         for (auto& e : w.adjacency[p]) {
             for (std::size_t c = 0; c < 3; ++c) {
                 e.block[3 * i + c] = 0.0;
@@ -742,16 +735,6 @@ bool solveComponent(std::span<Joint> joints, std::span<const int> slots,
     w.released.assign(slots.size(), 0);
     assemble(joints, slots, states, true, w);
     velocityRhs(joints, slots, states, step, soft, w);
-    w.limits.clear();
-    w.limitOf.assign(slots.size(), -1);
-    for (std::size_t p = 0; p < slots.size(); ++p) {
-        for (int i = 0; i < w.rowCount[p]; ++i) {
-            if (w.rows[p].oneSided[i]) {
-                w.limitOf[p] = static_cast<int>(w.limits.size());
-                w.limits.emplace_back(static_cast<int>(p), i);
-            }
-        }
-    }
     const bool solved = !w.limits.empty() && w.limits.size() <= kMaxDenseLimits
                             ? solveMixed(joints, slots, states, w)
                             : solveActiveSet(joints, slots, states, step, soft, w);

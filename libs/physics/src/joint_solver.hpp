@@ -353,7 +353,6 @@ struct JointDirectScratch {
     std::vector<int> order;
     std::set<std::pair<int, int>> queue; // (degree, joint) of the joints not eliminated yet
     std::vector<std::uint8_t> released;  // joints whose limit row the velocity solve let go
-    std::vector<std::array<double, 3>> rowDamping; // added to each row's pivot (assemble())
     // The velocity solve's limits (joint, row) and their Schur complement over the other rows:
     // each limit's column of K over the other rows (n x 3 per limit), that column solved with
     // the factor, the limits' own K and the complement S (m x m), the other rows' impulse with
