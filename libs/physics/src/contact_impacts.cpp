@@ -15,6 +15,9 @@ namespace {
 // Approaches slower than this, m/s, end the sweeps: what is left is the next step's contact
 // solve's (a plastic row converges only geometrically, see kMaxImpactSweeps).
 constexpr float kImpactRestSpeed = 1e-3f;
+// The smallest normal float: a contact's inverse effective mass below it (two bodies of over
+// 1e38 kg) is taken as nothing that moves.
+constexpr float kMinImpactInvMass = 0x1p-126f;
 
 bool moves(const BodySim& sim) {
     return sim.invMass.x != 0.0f || sim.invMass.y != 0.0f || sim.invInertia != 0.0f;
@@ -140,8 +143,8 @@ bool ContactImpacts::planCandidates(const Simulation& s, float dt) {
         };
         e.bodyA = side(c.indexA, e.rA, e.fixedA);
         e.bodyB = side(c.indexB, e.rB, e.fixedB);
-        if (!(k > 0.0f)) {
-            continue; // nothing to move: neither side takes an impulse
+        if (!(k >= kMinImpactInvMass)) {
+            continue; // nothing to move (neither side takes an impulse), or 1 / k overflows
         }
         e.invK = 1.0f / k;
         edges_.push_back(e);
