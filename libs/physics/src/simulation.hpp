@@ -140,12 +140,15 @@ struct Simulation {
     std::vector<HitCandidate> hitCandidates;
     // What each worker of the wide solve keeps apart from the others while it solves its blocks
     // (World::Impl::solve()): the block's restitution list and impacts, the hits found, the
-    // most relax sweeps added. Merged in a fixed order afterwards.
+    // most relax sweeps added, the direct joint solve's arrays (its components whose
+    // factorisation gave up are the projection's to know too). Merged in a fixed order
+    // afterwards.
     struct BlockWorker {
         std::vector<WideRestitution> restitution;
         ContactImpacts impacts;
         std::vector<HitCandidate> hits;
         int extraRelaxIterations = 0;
+        JointDirectScratch jointDirect;
     };
     std::vector<BlockWorker> blockWorkers;
     // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), the
@@ -191,7 +194,9 @@ struct Simulation {
     std::vector<int> activeJointLevels;
     std::vector<int> jointOrder;
     PointJointGroups pointJoints;
-    // The joints' direct position pass's arrays (SolverDef::jointPositionSolver Direct).
+    // The joints' direct solve's arrays (SolverDef::jointSolver Direct) for the scalar solvers
+    // and the position pass after the solve; the wide solve's blocks use their worker's
+    // (BlockWorker::jointDirect).
     JointDirectScratch jointDirect;
     std::vector<int> jointBodyLevel;
     std::vector<int> jointLevel;

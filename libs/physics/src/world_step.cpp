@@ -479,6 +479,9 @@ void World::Impl::solve(float dt) {
             const int endLevel = s.blockLevelStart[b + 1];
             // Only the block holding shapes pushed apart sweeps more.
             detail::SolverStep blockStep = step;
+            if (blockStep.jointStep.direct != nullptr) {
+                blockStep.jointStep.direct = &worker.jointDirect;
+            }
             bool blockPushOut = false;
             if (s.wideContacts.lanes == 8) {
                 detail::WideManifoldT<8> lanes8;
@@ -527,13 +530,11 @@ void World::Impl::solve(float dt) {
             }
         };
         const int blockCount = static_cast<int>(s.blockLevelStart.size()) - 1;
-        // The direct joint solve keeps its arrays in one place (JointStep::direct): its blocks
-        // go one after another.
-        const bool oneWorker = jointStep.direct != nullptr && !s.activeJoints.empty();
         s.blockWorkers.resize(static_cast<std::size_t>(tasks.workerCount()));
         for (detail::Simulation::BlockWorker& w : s.blockWorkers) {
             w.hits.clear();
             w.extraRelaxIterations = 0;
+            w.jointDirect.resetDense();
         }
         auto solveBlocks = [&](int begin, int end, int worker) {
             for (int b = begin; b < end; ++b) {
@@ -541,14 +542,13 @@ void World::Impl::solve(float dt) {
                            s.blockWorkers[static_cast<std::size_t>(worker)]);
             }
         };
-        if (oneWorker) {
-            solveBlocks(0, blockCount, 0);
-        } else {
-            tasks.parallelFor(blockCount, 1, solveBlocks);
-        }
+        tasks.parallelFor(blockCount, 1, solveBlocks);
+        std::vector<int>& dense = s.jointDirect.denseComponents; // a set: order does not matter
         for (detail::Simulation::BlockWorker& w : s.blockWorkers) {
             s.hitCandidates.insert(s.hitCandidates.end(), w.hits.begin(), w.hits.end());
             s.extraRelaxIterations = std::max(s.extraRelaxIterations, w.extraRelaxIterations);
+            dense.insert(dense.end(), w.jointDirect.denseComponents.begin(),
+                         w.jointDirect.denseComponents.end());
         }
     } else {
         const bool impacts = s.impacts.plan(s, s.constraints, dt);
