@@ -493,6 +493,9 @@ void World::Impl::solve(float dt) {
             pushOutSweeps(blockStep, blockPushOut);
             worker.extraRelaxIterations =
                 std::max(worker.extraRelaxIterations, blockStep.extraRelaxIterations);
+            // Struck rows of elastic bodies pass their impacts on (contact_impacts.hpp).
+            const bool impacts =
+                !worker.restitution.empty() && worker.impacts.plan(s, worker.restitution, dt);
             detail::solveSoftStepBlock(
                 blockStep, s.wideContacts, firstLevel, endLevel,
                 blockBodies.subspan(
@@ -522,6 +525,9 @@ void World::Impl::solve(float dt) {
                           r.normalImpulse, r.tangentImpulse, r.relativeVelocity,
                           r.maxNormalImpulse);
                 });
+            if (impacts) {
+                worker.impacts.apply(s);
+            }
         };
         const int blockCount = static_cast<int>(s.blockLevelStart.size()) - 1;
         s.blockWorkers.resize(static_cast<std::size_t>(tasks.workerCount()));
@@ -544,10 +550,16 @@ void World::Impl::solve(float dt) {
             dense.insert(dense.end(), w.jointDirect.denseComponents.begin(),
                          w.jointDirect.denseComponents.end());
         }
-    } else if (def.mode == SolverMode::SoftStep) {
-        detail::solveSoftStep(step);
     } else {
-        detail::solveClassic(step);
+        const bool impacts = s.impacts.plan(s, s.constraints, dt);
+        if (def.mode == SolverMode::SoftStep) {
+            detail::solveSoftStep(step);
+        } else {
+            detail::solveClassic(step);
+        }
+        if (impacts) {
+            s.impacts.apply(s);
+        }
     }
     if (!s.activeJoints.empty()) {
         storeJointReactions(1.0f / integrationStep, wide);
