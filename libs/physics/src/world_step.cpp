@@ -57,6 +57,7 @@ void World::step(float timeStep) {
         detail::Simulation& sim;
         ~InStep() { sim.inStep = false; }
     } inStep{s};
+    const detail::Tasks::StepScope workers(w.tasks);
     w.updateContacts(timeStep);
     if (timeStep > 0.0f) {
         w.solve(timeStep);
