@@ -231,6 +231,8 @@ struct Simulation {
     // events are written during the write-back and marked from these.
     std::vector<int> sleptSims;
     std::vector<int> disabledSims;
+    // Per solver body, what World::Impl::writeBack()'s parallel pass left for its ordered one.
+    std::vector<unsigned char> writeBackResults;
     std::vector<int> wakeStack;
 
     std::vector<ContactBeginTouchEvent> beginEvents;
