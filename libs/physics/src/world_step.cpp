@@ -316,7 +316,7 @@ void World::Impl::solve(float dt) {
         ++constraintCount;
     }
 
-    // Rolling resistance is scalar only (and solved in contact order, the same sweep).
+    // Rolling resistance is scalar only (and solved in contact order).
     const bool wide = def.mode == SolverMode::SoftStep && !rolling;
     if (wide) {
         // A settled pile has the same constraints step after step: its schedule is last step's.
@@ -332,19 +332,20 @@ void World::Impl::solve(float dt) {
                           sameAsLast(s.constraintContacts, s.lastConstraintContacts) &&
                           sameAsLast(s.jointBodies, s.lastJointBodies);
         if (!same) {
-            // Each constraint's level (see ConstraintLevels): solving level by level is the
-            // same sweep as solving in contact order, but the constraints of a level share no
-            // moving body, so the wide solver takes several at a time. A rigid side is not
-            // moving: the constraint never changes its velocity.
+            // Each constraint's level: its colour (see ConstraintColors), taken in contact
+            // order. The constraints of a level share no moving body, so the wide solver takes
+            // several at a time, and there are few levels: a stack or a pyramid is a handful of
+            // full ones, not one per row. A rigid side is not moving: the constraint never
+            // changes its velocity.
             auto moving = [&](int k) {
                 return k == kNullIndex || s.stateRigid[static_cast<std::size_t>(k)] != 0
                            ? kNullIndex
                            : k;
             };
-            s.levels.reset(static_cast<int>(s.sims.size()));
+            s.colors.reset(static_cast<int>(s.sims.size()));
             s.constraintLevel.clear();
             for (const detail::Simulation::ConstraintBodies& cb : s.constraintBodies) {
-                s.constraintLevel.push_back(s.levels.assign(moving(cb.indexA), moving(cb.indexB)));
+                s.constraintLevel.push_back(s.colors.assign(moving(cb.indexA), moving(cb.indexB)));
             }
             scheduleWide(constraintCount);
         }
@@ -468,6 +469,9 @@ void World::Impl::solve(float dt) {
         auto solveBlock = [&](std::size_t b, detail::Simulation::BlockWorker& worker) {
             const int firstLevel = s.blockLevelStart[b];
             const int endLevel = s.blockLevelStart[b + 1];
+            if (firstLevel == endLevel && s.blockBodyStart[b] == s.blockBodyStart[b + 1]) {
+                return; // the block of bodies no constraint touches, and there are none
+            }
             // Only the block holding shapes pushed apart sweeps more.
             detail::SolverStep blockStep = step;
             if (blockStep.jointStep.direct != nullptr) {
@@ -484,6 +488,9 @@ void World::Impl::solve(float dt) {
             pushOutSweeps(blockStep, blockPushOut);
             worker.extraRelaxIterations =
                 std::max(worker.extraRelaxIterations, blockStep.extraRelaxIterations);
+            // Struck rows of elastic bodies pass their impacts on (contact_impacts.hpp).
+            const bool impacts =
+                !worker.restitution.empty() && worker.impacts.plan(s, worker.restitution, dt);
             detail::solveSoftStepBlock(
                 blockStep, s.wideContacts, firstLevel, endLevel,
                 blockBodies.subspan(
@@ -513,6 +520,9 @@ void World::Impl::solve(float dt) {
                           r.normalImpulse, r.tangentImpulse, r.relativeVelocity,
                           r.maxNormalImpulse);
                 });
+            if (impacts) {
+                worker.impacts.apply(s);
+            }
         };
         const int blockCount = static_cast<int>(s.blockLevelStart.size()) - 1;
         s.blockWorkers.resize(static_cast<std::size_t>(tasks.workerCount()));
@@ -535,10 +545,16 @@ void World::Impl::solve(float dt) {
             dense.insert(dense.end(), w.jointDirect.denseComponents.begin(),
                          w.jointDirect.denseComponents.end());
         }
-    } else if (def.mode == SolverMode::SoftStep) {
-        detail::solveSoftStep(step);
     } else {
-        detail::solveClassic(step);
+        const bool impacts = s.impacts.plan(s, s.constraints, dt);
+        if (def.mode == SolverMode::SoftStep) {
+            detail::solveSoftStep(step);
+        } else {
+            detail::solveClassic(step);
+        }
+        if (impacts) {
+            s.impacts.apply(s);
+        }
     }
     if (!s.activeJoints.empty()) {
         storeJointReactions(1.0f / integrationStep, wide);
