@@ -9,8 +9,10 @@
 
 namespace e2d::bench {
 
-RatioReporter::RatioReporter(std::string baseline, std::vector<std::string> engineOrder)
-    : baseline_(std::move(baseline)), engines_(std::move(engineOrder)) {}
+RatioReporter::RatioReporter(std::string baseline, std::vector<std::string> engineOrder,
+                             RatioTargets targets)
+    : baseline_(std::move(baseline)), engines_(std::move(engineOrder)),
+      targets_(std::move(targets)) {}
 
 void RatioReporter::ReportRuns(const std::vector<Run>& reports) {
     std::vector<Run> runs = reports;
@@ -59,9 +61,16 @@ std::string RatioReporter::markdownTable(const std::string& unit, double nsPerUn
             out << ' ' << e << " / " << baseline_ << " |";
         }
     }
+    const bool targeted = !targets_.byCase.empty();
+    if (targeted) {
+        out << " target (" << targets_.engine << " / " << baseline_ << ") | meets |";
+    }
     out << "\n|---|";
     for (std::size_t i = 0; i < 2 * engines_.size() - 1; ++i) {
         out << "---:|";
+    }
+    if (targeted) {
+        out << "---:|:---:|";
     }
     out << '\n';
     char buf[64];
@@ -91,6 +100,21 @@ std::string RatioReporter::markdownTable(const std::string& unit, double nsPerUn
                 out << buf;
             }
         }
+        if (targeted) {
+            const auto target = targets_.byCase.find(c);
+            const auto it = byEngine.find(targets_.engine);
+            if (target == targets_.byCase.end()) {
+                out << " - | - |";
+            } else {
+                std::snprintf(buf, sizeof buf, " %.2f |", target->second);
+                out << buf;
+                if (it == byEngine.end() || base == byEngine.end()) {
+                    out << " - |";
+                } else {
+                    out << (it->second / base->second <= target->second ? " yes |" : " no |");
+                }
+            }
+        }
         out << '\n';
     }
     return out.str();
@@ -113,13 +137,13 @@ std::string RatioReporter::takeTableFlag(int& argc, char** argv) {
 
 int runWithRatios(int argc, char** argv, const std::string& baseline,
                   const std::vector<std::string>& engineOrder, const std::string& unit,
-                  double nsPerUnit, const std::string& appendix) {
+                  double nsPerUnit, const std::string& appendix, const RatioTargets& targets) {
     const std::string tablePath = RatioReporter::takeTableFlag(argc, argv);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
         return 2;
     }
-    RatioReporter reporter(baseline, engineOrder);
+    RatioReporter reporter(baseline, engineOrder, targets);
     benchmark::RunSpecifiedBenchmarks(&reporter);
     benchmark::Shutdown();
     const std::string table = reporter.markdownTable(unit, nsPerUnit) + appendix;

@@ -7,6 +7,7 @@
 #include <e2d/physics/solver_def.hpp>
 
 #include "constraint_graph.hpp"
+#include "contact_impacts.hpp"
 #include "contact_solver.hpp"
 #include "contact_solver_wide.hpp"
 #include "joint_solver.hpp"
@@ -129,6 +130,7 @@ struct Simulation {
     // Classic mode and rolling resistance only: the wide solver packs each constraint as it is
     // built and keeps it nowhere else.
     std::vector<ContactConstraint> constraints; // in contact order
+    ContactImpacts impacts;                     // the scalar solvers' (BlockWorker: the wide's)
     // A hit found while storing impulses by level: contact, point, approach speed.
     struct HitCandidate {
         int contact = -1;
@@ -137,19 +139,23 @@ struct Simulation {
     };
     std::vector<HitCandidate> hitCandidates;
     // What each worker of the wide solve keeps apart from the others while it solves its blocks
-    // (World::Impl::solve()): the block's restitution list, the hits found, the most relax
-    // sweeps added. Merged in a fixed order afterwards.
+    // (World::Impl::solve()): the block's restitution list and impacts, the hits found, the
+    // most relax sweeps added, the direct joint solve's arrays (its components whose
+    // factorisation gave up are the projection's to know too). Merged in a fixed order
+    // afterwards.
     struct BlockWorker {
         std::vector<WideRestitution> restitution;
+        ContactImpacts impacts;
         std::vector<HitCandidate> hits;
         int extraRelaxIterations = 0;
+        JointDirectScratch jointDirect;
     };
     std::vector<BlockWorker> blockWorkers;
-    // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), the
-    // slots in level order (level k holds slots [levelStart[k], levelStart[k + 1]), contact
-    // order within a level) with each slot's constraint, contact and bodies, and the packed
-    // constraints.
-    ConstraintLevels levels;
+    // The wide soft-step solver's schedule: each constraint's level (its colour,
+    // ConstraintColors), the slots in level order (level k holds slots [levelStart[k],
+    // levelStart[k + 1]), contact order within a level) with each slot's constraint, contact
+    // and bodies, and the packed constraints.
+    ConstraintColors colors;
     std::vector<int> constraintLevel;
     std::vector<int> slotConstraint;
     std::vector<int> slotContact;
@@ -188,7 +194,9 @@ struct Simulation {
     std::vector<int> activeJointLevels;
     std::vector<int> jointOrder;
     PointJointGroups pointJoints;
-    // The joints' direct position pass's arrays (SolverDef::jointPositionSolver Direct).
+    // The joints' direct solve's arrays (SolverDef::jointSolver Direct) for the scalar solvers
+    // and the position pass after the solve; the wide solve's blocks use their worker's
+    // (BlockWorker::jointDirect).
     JointDirectScratch jointDirect;
     std::vector<int> jointBodyLevel;
     std::vector<int> jointLevel;
@@ -223,6 +231,8 @@ struct Simulation {
     // events are written during the write-back and marked from these.
     std::vector<int> sleptSims;
     std::vector<int> disabledSims;
+    // Per solver body, what World::Impl::writeBack()'s parallel pass left for its ordered one.
+    std::vector<unsigned char> writeBackResults;
     std::vector<int> wakeStack;
 
     std::vector<ContactBeginTouchEvent> beginEvents;
