@@ -52,16 +52,20 @@ void clampVelocity(Vec2& v, float& w, float maxLinearSpeed, float h) {
 
 namespace {
 
-inline void integrateVelocity(const BodySim& sim, BodyState& state, Vec2 gravity, float h,
-                              SpeedCaps caps) {
-    float linearDamping = dampingFactor(h, sim.linearDamping);
-    float angularDamping = dampingFactor(h, sim.angularDamping);
+inline void prepareIntegration(BodySim& sim, Vec2 gravity, float h) {
+    sim.linearDampingFactor = dampingFactor(h, sim.linearDamping);
+    sim.angularDampingFactor = dampingFactor(h, sim.angularDamping);
     // Gravity acts on each axis that can move (a kinematic body has none).
     Vec2 g = sim.gravityScale * gravity;
     Vec2 accel{sim.invMass.x > 0.0f ? g.x + sim.invMass.x * sim.force.x : 0.0f,
                sim.invMass.y > 0.0f ? g.y + sim.invMass.y * sim.force.y : 0.0f};
-    Vec2 v = h * accel + linearDamping * state.linearVelocity;
-    float w = h * sim.invInertia * sim.torque + angularDamping * state.angularVelocity;
+    sim.velocityStep = h * accel;
+    sim.angularVelocityStep = h * sim.invInertia * sim.torque;
+}
+
+inline void integrateVelocity(const BodySim& sim, BodyState& state, SpeedCaps caps) {
+    Vec2 v = sim.velocityStep + sim.linearDampingFactor * state.linearVelocity;
+    float w = sim.angularVelocityStep + sim.angularDampingFactor * state.angularVelocity;
     clampVelocity(v, w, caps);
     if (!isFinite(v) || !isFinite(w) || (state.flags & kNonFinite) != 0) {
         // Absurd input (a force or gravity scale near the float limit) overflowed: the
@@ -87,21 +91,39 @@ inline void integratePosition(BodyState& state, float h, SpeedCaps caps) {
 
 } // namespace
 
-void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, Vec2 gravity,
-                         float h, float maxLinearSpeed) {
-    const SpeedCaps caps = speedCaps(maxLinearSpeed, h);
-    for (std::size_t i = 0; i < sims.size(); ++i) {
-        integrateVelocity(sims[i], states[i], gravity, h, caps);
+void prepareIntegration(std::span<BodySim> sims, Vec2 gravity, float h) {
+    for (BodySim& sim : sims) {
+        prepareIntegration(sim, gravity, h);
     }
 }
 
-void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states,
-                         std::span<const int> indices, Vec2 gravity, float h,
+void prepareIntegration(std::span<BodySim> sims, std::span<const int> indices, Vec2 gravity,
+                        float h) {
+    for (int i : indices) {
+        prepareIntegration(sims[static_cast<std::size_t>(i)], gravity, h);
+    }
+}
+
+void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, float h,
                          float maxLinearSpeed) {
+    const SpeedCaps caps = speedCaps(maxLinearSpeed, h);
+    for (std::size_t i = 0; i < sims.size(); ++i) {
+        integrateVelocity(sims[i], states[i], caps);
+    }
+}
+
+void integrateVelocities(std::span<BodySim> sims, std::span<BodyState> states, Vec2 gravity,
+                         float h, float maxLinearSpeed) {
+    prepareIntegration(sims, gravity, h);
+    integrateVelocities(std::span<const BodySim>(sims), states, h, maxLinearSpeed);
+}
+
+void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states,
+                         std::span<const int> indices, float h, float maxLinearSpeed) {
     const SpeedCaps caps = speedCaps(maxLinearSpeed, h);
     for (int i : indices) {
         const auto k = static_cast<std::size_t>(i);
-        integrateVelocity(sims[k], states[k], gravity, h, caps);
+        integrateVelocity(sims[k], states[k], caps);
     }
 }
 
@@ -148,8 +170,9 @@ void solveSoftStep(const SolverStep& step) {
     float h = step.dt / static_cast<float>(def.subSteps);
     float invH = 1.0f / h;
     const int relaxIterations = def.relaxIterations + step.extraRelaxIterations;
+    prepareIntegration(step.sims, step.gravity, h);
     for (int i = 0; i < def.subSteps; ++i) {
-        integrateVelocities(step.sims, step.states, step.gravity, h, def.maxLinearSpeed);
+        integrateVelocities(step.sims, step.states, h, def.maxLinearSpeed);
         // Gauss-Seidel's order biases the result, so every group of four sub-steps runs all
         // four orders. Odd sub-steps sweep the constraints backwards, which cancels the
         // sideways drift of piles. Sub-steps 2 and 3 also solve each constraint's two points
@@ -195,8 +218,9 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
     float invH = 1.0f / h;
     const int relaxIterations = def.relaxIterations + step.extraRelaxIterations;
     // The same passes and orders as solveSoftStep(); a backward sweep is the levels in reverse.
+    prepareIntegration(step.sims, bodies, step.gravity, h);
     for (int i = 0; i < def.subSteps; ++i) {
-        integrateVelocities(step.sims, step.states, bodies, step.gravity, h, def.maxLinearSpeed);
+        integrateVelocities(step.sims, step.states, bodies, h, def.maxLinearSpeed);
         bool backward = (i % 2) == 1;
         bool reversePoints = ((i / 2) % 2) == 1;
         warmStartJointsOf(step, blockJoints);

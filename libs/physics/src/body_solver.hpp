@@ -42,8 +42,17 @@ struct SolverStep {
 // Clamps a body's speed to maxLinearSpeed and its angular speed to what one integration step
 // of h seconds can turn (a quarter turn), as integrateVelocities() does.
 void clampVelocity(Vec2& v, float& w, float maxLinearSpeed, float h);
-// Gravity, forces and damping over h seconds; speeds clamped (clampVelocity()).
-void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, Vec2 gravity,
+// Sets each sim's velocityStep, angularVelocityStep and damping factors for integration steps
+// of h seconds: what integrateVelocities() adds and multiplies every sub-step, computed once.
+void prepareIntegration(std::span<BodySim> sims, Vec2 gravity, float h);
+void prepareIntegration(std::span<BodySim> sims, std::span<const int> indices, Vec2 gravity,
+                        float h);
+// Gravity, forces and damping over h seconds, as prepareIntegration() left them for that h;
+// speeds clamped (clampVelocity()).
+void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, float h,
+                         float maxLinearSpeed);
+// prepareIntegration() and integrateVelocities() in one: a single step of h seconds.
+void integrateVelocities(std::span<BodySim> sims, std::span<BodyState> states, Vec2 gravity,
                          float h, float maxLinearSpeed);
 // Accumulates each body's motion over h seconds into its deltaPosition/deltaRotation, its
 // speeds capped first as integrateVelocities() caps them (the constraints may have raised
@@ -51,15 +60,15 @@ void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> sta
 void integratePositions(std::span<BodyState> states, float h, float maxLinearSpeed);
 // The same for the bodies states[indices[i]] only.
 void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states,
-                         std::span<const int> indices, Vec2 gravity, float h, float maxLinearSpeed);
+                         std::span<const int> indices, float h, float maxLinearSpeed);
 void integratePositions(std::span<BodyState> states, std::span<const int> indices, float h,
                         float maxLinearSpeed);
 
 // Runs the velocity and position stages of one step; positions end in the states' deltas.
 void solveSoftStep(const SolverStep& step);
 // The soft step of one block of islands on the wide solver: levels [firstLevel, endLevel) of
-// `wide` (ConstraintLevels: the same sweep as constraint order, several constraints at a
-// time), the BodyState indices `bodies` (every body those constraints touch, and no body
+// `wide` (colours, ConstraintColors: the constraints of a level share no moving body, several
+// constraints at a time), the BodyState indices `bodies` (every body those constraints touch, and no body
 // another block's constraints touch), then restitution on `restitution` (the block's, in
 // constraint order). Blocks share no body, so running one through all sub-steps before the
 // next gives what running all of them sub-step by sub-step gives, and the block's

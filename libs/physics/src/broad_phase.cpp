@@ -96,35 +96,52 @@ void BroadPhase::destroyProxy(int proxyKey) {
     info(proxyKey) = ProxyInfo{};
 }
 
-bool BroadPhase::moveProxy(int proxyKey, const Aabb& aabb, Vec2 displacement) {
-    checkKey(proxyKey, "moveProxy");
-    DynamicTree& tree = trees_[treeIndex(proxyKey)];
-    const int proxyId = proxyIdOf(proxyKey);
-    const BodyType type = proxyTypeOf(proxyKey);
-    // Where the shape is now and where it will be after `displacement`.
-    Aabb swept = aabb;
-    swept.lower += Vec2{std::min(displacement.x, 0.0f), std::min(displacement.y, 0.0f)};
-    swept.upper += Vec2{std::max(displacement.x, 0.0f), std::max(displacement.y, 0.0f)};
-    // The new fat box reaches kAabbPredictSteps displacements ahead, so a steadily moving shape
-    // stays inside it for that many steps instead of leaving a fixed margin every step or two.
+namespace {
+
+// The fat box of a shape of `type` with tight box `aabb` that moves `displacement` next: it
+// reaches kAabbPredictSteps displacements ahead, so a steadily moving shape stays inside it for
+// that many steps instead of leaving a fixed margin every step or two.
+Aabb predictedFatBox(const Aabb& aabb, BodyType type, Vec2 displacement) {
     Aabb fat = fatten(aabb, type);
     if (type != BodyType::Static) {
         const Vec2 ahead = kAabbPredictSteps * displacement;
         fat.lower += Vec2{std::min(ahead.x, 0.0f), std::min(ahead.y, 0.0f)};
         fat.upper += Vec2{std::max(ahead.x, 0.0f), std::max(ahead.y, 0.0f)};
     }
-    const Aabb& current = tree.aabb(proxyId);
-    if (contains(current, swept)) {
-        // Still inside; kept unless it is much larger than the shape needs now (a shape that
-        // moved fast and slowed down), which would only keep extra pairs alive. A steadily
-        // moving shape's box is as large as a new one would be, wherever it lags.
-        const Vec2 excess = (current.upper - current.lower) - (fat.upper - fat.lower);
-        if (type == BodyType::Static || (excess.x <= kAabbSlack && excess.y <= kAabbSlack)) {
-            return false;
-        }
+    return fat;
+}
+
+} // namespace
+
+bool BroadPhase::needsMove(int proxyKey, const Aabb& aabb, Vec2 displacement) const {
+    checkKey(proxyKey, "needsMove");
+    const BodyType type = proxyTypeOf(proxyKey);
+    // Where the shape is now and where it will be after `displacement`.
+    Aabb swept = aabb;
+    swept.lower += Vec2{std::min(displacement.x, 0.0f), std::min(displacement.y, 0.0f)};
+    swept.upper += Vec2{std::max(displacement.x, 0.0f), std::max(displacement.y, 0.0f)};
+    const Aabb& current = fatAabb(proxyKey);
+    if (!contains(current, swept)) {
+        return true;
+    }
+    if (type == BodyType::Static) {
+        return false;
+    }
+    // Still inside; kept unless it is much larger than the shape needs now (a shape that moved
+    // fast and slowed down), which would only keep extra pairs alive. A steadily moving
+    // shape's box is as large as a new one would be, wherever it lags.
+    const Aabb fat = predictedFatBox(aabb, type, displacement);
+    const Vec2 excess = (current.upper - current.lower) - (fat.upper - fat.lower);
+    return !(excess.x <= kAabbSlack && excess.y <= kAabbSlack);
+}
+
+bool BroadPhase::moveProxy(int proxyKey, const Aabb& aabb, Vec2 displacement) {
+    if (!needsMove(proxyKey, aabb, displacement)) {
+        return false;
     }
     reserveOneMore(moveBuffer_);
-    tree.moveProxy(proxyId, fat);
+    trees_[treeIndex(proxyKey)].moveProxy(
+        proxyIdOf(proxyKey), predictedFatBox(aabb, proxyTypeOf(proxyKey), displacement));
     bufferMove(proxyKey);
     return true;
 }

@@ -66,6 +66,10 @@ public:
     /// wider or taller than a new one would be; the fat box is then recomputed: the tight box
     /// plus kAabbMargin, stretched by two displacements in their direction.
     bool moveProxy(int proxyKey, const Aabb& aabb, Vec2 displacement = {0.0f, 0.0f});
+    /// Whether moveProxy() with these arguments would move the proxy. Reads the proxy's own fat
+    /// box only, which moving or destroying other proxies leaves as it is: the step asks it for
+    /// every shape on several workers, then moves the ones that need it in shape order.
+    [[nodiscard]] bool needsMove(int proxyKey, const Aabb& aabb, Vec2 displacement) const;
     /// Buffers the proxy as moved so the next update looks for its pairs again (e.g. after its
     /// filter changed or its body woke up).
     void bufferMove(int proxyKey);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 // Level scheduling of the contact constraints (a graph colouring that keeps the solve order).
@@ -29,6 +30,37 @@ public:
 private:
     std::vector<int> next_; // per body: the lowest level its next constraint may take
     std::vector<int> counts_;
+};
+
+// Graph colouring of the contact constraints, as Box2D v3 colours its constraint graph: each
+// constraint, in the order offered, takes the lowest colour neither of its moving bodies has
+// yet, so a colour's constraints share no moving body and the wide solver takes them several
+// at a time, colour after colour. A stack of n boxes is two colours of n / 2 where levels
+// (ConstraintLevels) make n levels of one: the lanes are full. The order differs from the
+// sequential sweep's (the constraints of one colour first, then the next colour's), so the
+// results differ from the scalar passes'.
+//
+// As in v3, a constraint against a static side never takes colour 0, and one between two
+// moving bodies never takes the last kStaticOnlyColors colours: the moving pairs fill the low
+// colours, each body's static contacts come after its first moving contact, and a body with
+// many moving contacts still has colours left for the ground. A constraint for which no colour
+// is left goes to the overflow levels after the colours (ConstraintLevels over the overflow
+// constraints alone).
+class ConstraintColors {
+public:
+    static constexpr int kColorCount = 24;
+    static constexpr int kStaticOnlyColors = 4;
+
+    // Forgets every colour; `stateCount` moving bodies (BodyState indices 0..stateCount-1).
+    void reset(int stateCount);
+
+    // The colour of the next constraint, between moving bodies `a` and `b` (as
+    // ConstraintLevels::assign()); kColorCount + k for the overflow's level k.
+    int assign(int a, int b);
+
+private:
+    std::vector<std::uint32_t> used_; // per body: a bit per colour it is in
+    ConstraintLevels overflow_;
 };
 
 } // namespace e2d::physics::detail

@@ -13,10 +13,10 @@
 
 // The soft-step contact passes several constraints at a time. Mirrors warmStartContacts() and
 // solveContacts() in contact_solver.cpp operation for operation, over the constraints by level
-// (ConstraintLevels): a level's constraints share no moving body, so solving several of them at
-// once gives bit for bit what solving them one after another does, and level order is the
-// same sweep as constraint order. Rolling resistance is not handled here (the world uses the
-// scalar functions when a contact has it).
+// (the world's levels are colours, ConstraintColors; ConstraintLevels gives the levels of the
+// sequential sweep): a level's constraints share no moving body, so solving several of them at
+// once gives bit for bit what solving them one after another in level order does. Rolling
+// resistance is not handled here (the world uses the scalar functions when a contact has it).
 //
 // The lanes are GCC/Clang vector extensions. Four lanes everywhere (SSE2 on x86-64, NEON on
 // ARM64, plain scalar code where the target has no SIMD); eight on x86-64 CPUs with AVX2,

@@ -165,6 +165,17 @@ Block mul(const Block& x, const Block& y) {
     return r;
 }
 Block transposed(const Block& x) { return {x[0], x[3], x[6], x[1], x[4], x[7], x[2], x[5], x[8]}; }
+// The relative damping of each row of K (a Levenberg-Marquardt damping): redundant rows (a
+// chain pulled straight between two fixed ends, closed loops) make K singular, and this keeps
+// their share of an inconsistent error finite. The equality rows take kRegularization of their
+// own diagonal; a limit's row only kLimitRegularization, a guard against round-off. A limit's
+// row must not be damped like the others: on a long limited arm the root limit's effective
+// inverse inertia (the whole arm's about the root, 1 / 33 kg m^2 for limited_arm_20) is the
+// small difference of its own diagonal (one link's, 1 / 0.001) and the point rows' share,
+// 30 000 times smaller, so 1e-3 of its diagonal is 30 times the answer.
+constexpr double kRegularization = 1e-3;
+constexpr double kLimitRegularization = 1e-9;
+
 // x^-1 of a symmetric positive definite 3x3 (its padding rows are the identity).
 Block inverse(const Block& x) {
     const double c00 = x[4] * x[8] - x[5] * x[7];
@@ -198,8 +209,6 @@ void addBlock(JointDirectScratch& w, std::size_t p, int q, const Block& x) {
 // Solves per velocity pass at most: a limit that would pull is released and the rest solved
 // again.
 constexpr int kActiveSetRounds = 3;
-// The relative damping of K's diagonal (see assemble()).
-constexpr double kRegularization = 1e-3;
 // The factorisation gives up past this much work per joint (the squares of the neighbour
 // counts at elimination): a chain or tree costs 4 to 10, the scissor lift 12, a 20 x 20 net
 // far more.
@@ -257,11 +266,17 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
                 }
             }
         }
-        // Redundant rows (a chain pulled straight, closed loops) make K singular: a relative
-        // regularisation keeps the factorisation finite (a Levenberg-Marquardt damping).
-        for (int i = 0; i < 3; ++i) {
+        // The damping (see kRegularization); a row with no motion at all (both sides fixed)
+        // is padding. A limit is a velocity row that stays >= 0, or a position row with no
+        // accumulated impulse.
+        for (int i = 0; i < count; ++i) {
             double& x = d[static_cast<std::size_t>(4 * i)];
             x = x > 0.0 ? x * (1.0 + kRegularization) : 1.0;
+        }
+        // A limit is the last row (jointRows()).
+        if (count > 0 && (r.oneSided[count - 1] || r.acc[count - 1] == nullptr)) {
+            double& x = d[static_cast<std::size_t>(4 * (count - 1))];
+            x *= (1.0 + kLimitRegularization) / (1.0 + kRegularization);
         }
         w.diag[p] = d;
         for (int s : {j.indexA, j.indexB}) {
@@ -314,11 +329,15 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
     }
     // Each row's blocks by joint: the factorisation visits them in this order, which the
     // bodies' order must not decide.
+    // (A chain's or a tree's rows have one or two blocks, most often in order already: the
+    // check is what a sort call would cost for them.)
+    const auto byJoint = [](const JointDirectScratch::Entry& x,
+                            const JointDirectScratch::Entry& y) { return x.node < y.node; };
     for (std::size_t p = 0; p < n; ++p) {
-        std::sort(w.adjacency[p].begin(), w.adjacency[p].end(),
-                  [](const JointDirectScratch::Entry& x, const JointDirectScratch::Entry& y) {
-                      return x.node < y.node;
-                  });
+        auto& list = w.adjacency[p];
+        if (!std::is_sorted(list.begin(), list.end(), byJoint)) {
+            std::sort(list.begin(), list.end(), byJoint);
+        }
     }
     return worst;
 }
@@ -476,40 +495,217 @@ bool projectComponent(std::span<Joint> joints, std::span<const int> slots,
     return false;
 }
 
-// The velocity solve of one component; false, changing nothing, when its factorisation gives
-// up (then marked dense for the step).
-bool solveComponent(std::span<Joint> joints, std::span<const int> slots,
-                    std::span<BodyState> states, const JointStep& step, bool useBias,
-                    JointDirectScratch& w) {
-    // rhs = -(J v + bias): the rows' velocities to zero, a limit not reached yet only stopped
-    // at it (speculative), position errors left to the projection (rigid rows: the softness's
-    // bias, 0 by default). A limit that would pull is released and the rest solved again (an
-    // active set; at most kActiveSetRounds solves).
-    const Softness soft = rigidSoftness(step, useBias);
+// rhs = -(J v + bias) of every assembled row: the rows' velocities to zero, a limit not
+// reached yet only stopped at it (speculative), position errors left to the projection (rigid
+// rows: the softness's bias, 0 by default). w.limits gets the limit rows.
+void velocityRhs(std::span<Joint> joints, std::span<const int> slots,
+                 std::span<const BodyState> states, const JointStep& step, const Softness& soft,
+                 JointDirectScratch& w) {
     const BodyState fixedState{};
     auto stateOf = [&](int index) -> const BodyState& {
         return index < 0 ? fixedState : states[static_cast<std::size_t>(index)];
     };
-    w.released.assign(slots.size(), 0);
-    for (int round = 0; round < kActiveSetRounds; ++round) {
-        assemble(joints, slots, states, true, w);
-        if (!factor(w)) {
-            w.denseComponents.push_back(slots.front());
-            return false;
-        }
-        for (std::size_t p = 0; p < slots.size(); ++p) {
-            const Joint& j = joints[static_cast<std::size_t>(slots[p])];
-            const JointDirectScratch::Rows& r = w.rows[p];
-            const BodyState& a = stateOf(j.indexA);
-            const BodyState& b = stateOf(j.indexB);
-            for (int i = 0; i < w.rowCount[p]; ++i) {
-                const float Cdot = dot(r.linA[i], a.linearVelocity) +
-                                   r.angA[i] * a.angularVelocity +
-                                   dot(r.linB[i], b.linearVelocity) + r.angB[i] * b.angularVelocity;
-                const float C = w.error[p][static_cast<std::size_t>(i)];
-                const float bias = r.oneSided[i] && C > 0.0f ? C * step.invH : soft.biasRate * C;
-                w.rhs[p][static_cast<std::size_t>(i)] = -double(Cdot + bias);
+    w.limits.clear();
+    for (std::size_t p = 0; p < slots.size(); ++p) {
+        const Joint& j = joints[static_cast<std::size_t>(slots[p])];
+        const JointDirectScratch::Rows& r = w.rows[p];
+        const BodyState& a = stateOf(j.indexA);
+        const BodyState& b = stateOf(j.indexB);
+        for (int i = 0; i < w.rowCount[p]; ++i) {
+            const float Cdot = dot(r.linA[i], a.linearVelocity) + r.angA[i] * a.angularVelocity +
+                               dot(r.linB[i], b.linearVelocity) + r.angB[i] * b.angularVelocity;
+            const float C = w.error[p][static_cast<std::size_t>(i)];
+            const float bias = r.oneSided[i] && C > 0.0f ? C * step.invH : soft.biasRate * C;
+            w.rhs[p][static_cast<std::size_t>(i)] = -double(Cdot + bias);
+            if (r.oneSided[i]) {
+                w.limits.emplace_back(static_cast<int>(p), i);
             }
+        }
+    }
+}
+
+// Adds the impulses w.solution to the joints' accumulated ones (a limit's kept >= 0) and to the
+// bodies.
+void applyVelocitySolution(std::span<Joint> joints, std::span<const int> slots,
+                           std::span<BodyState> states, JointDirectScratch& w) {
+    for (std::size_t p = 0; p < slots.size(); ++p) {
+        Joint& j = joints[static_cast<std::size_t>(slots[p])];
+        JointDirectScratch::Rows& r = w.rows[p];
+        double* lambda = w.solution[p].data();
+        for (int i = 0; i < w.rowCount[p]; ++i) {
+            if (r.oneSided[i] && *r.acc[i] + lambda[i] < 0.0) {
+                lambda[i] = -double(*r.acc[i]); // a stop never pulls
+            }
+            *r.acc[i] += static_cast<float>(lambda[i]);
+        }
+        applyRows(j, r, w.rowCount[p], lambda, states, false);
+    }
+}
+
+// A group with more limits within reach than this solves them by the active set of
+// solveActiveSet() (the dense complementarity problem grows with their square).
+constexpr std::size_t kMaxDenseLimits = 64;
+
+// Moves the limit rows of the assembled K (w.limits) out of it: their couplings to the other
+// rows go to w.limitColumns (n x 3 per limit), their own to w.limitK (m x m), and their
+// rows and columns in the blocks become padding; their rhs goes to w.limitVelocity (as J v +
+// bias) and becomes 0.
+void splitLimits(JointDirectScratch& w) {
+    const std::size_t n = w.diag.size();
+    const std::size_t m = w.limits.size();
+    w.limitColumns.assign(m * n * 3, 0.0);
+    w.limitK.assign(m * m, 0.0);
+    w.limitVelocity.resize(m);
+    w.limitOf.assign(n, -1); // a joint has one limit row at most (its nearer side)
+    for (std::size_t l = 0; l < m; ++l) {
+        w.limitOf[static_cast<std::size_t>(w.limits[l].first)] = static_cast<int>(l);
+    }
+    for (std::size_t l = 0; l < m; ++l) {
+        const auto p = static_cast<std::size_t>(w.limits[l].first);
+        const auto i = static_cast<std::size_t>(w.limits[l].second);
+        double* column = &w.limitColumns[l * n * 3];
+        w.limitVelocity[l] = -w.rhs[p][i];
+        w.rhs[p][i] = 0.0;
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (k != i) {
+                column[3 * p + k] = w.diag[p][3 * k + i];
+            }
+        }
+        w.limitK[l * m + l] = w.diag[p][4 * i];
+        for (const auto& e : w.adjacency[p]) {
+            const auto q = static_cast<std::size_t>(e.node);
+            for (std::size_t c = 0; c < 3; ++c) {
+                const double v = e.block[3 * i + c];
+                const int other = w.limitOf[q];
+                if (other >= 0 && static_cast<std::size_t>(
+                                      w.limits[static_cast<std::size_t>(other)].second) == c) {
+                    w.limitK[l * m + static_cast<std::size_t>(other)] = v;
+                } else {
+                    column[3 * q + c] = v;
+                }
+            }
+        }
+    }
+    for (std::size_t l = 0; l < m; ++l) {
+        const auto p = static_cast<std::size_t>(w.limits[l].first);
+        const auto i = static_cast<std::size_t>(w.limits[l].second);
+        for (std::size_t k = 0; k < 3; ++k) {
+            w.diag[p][3 * i + k] = 0.0;
+            w.diag[p][3 * k + i] = 0.0;
+        }
+        w.diag[p][4 * i] = 1.0;
+        for (auto& e : w.adjacency[p]) {
+            for (std::size_t c = 0; c < 3; ++c) {
+                e.block[3 * i + c] = 0.0;
+            }
+            for (auto& back : w.adjacency[static_cast<std::size_t>(e.node)]) {
+                if (back.node == static_cast<int>(p)) {
+                    for (std::size_t r = 0; r < 3; ++r) {
+                        back.block[3 * r + i] = 0.0;
+                    }
+                }
+            }
+        }
+    }
+}
+
+double dotColumn(const double* column, const std::vector<std::array<double, 3>>& x) {
+    double sum = 0.0;
+    for (std::size_t p = 0; p < x.size(); ++p) {
+        sum += column[3 * p] * x[p][0] + column[3 * p + 1] * x[p][1] + column[3 * p + 2] * x[p][2];
+    }
+    return sum;
+}
+
+// The velocity solve of a component whose assembled rows include limits (w.limits, at most
+// kMaxDenseLimits): the other rows factored alone, the limits' Schur complement
+// S = K_ll - K_lp K_pp^-1 K_pl and velocities q with the limits at rest, then the mixed
+// problem's limit impulses x = acc + dlambda >= 0 with S dlambda + q >= 0, complementary
+// (solveDenseLcp()), and the other rows' impulses back-substituted. False, changing nothing,
+// when the factorisation gives up.
+bool solveMixed(std::span<Joint> joints, std::span<const int> slots, std::span<BodyState> states,
+                JointDirectScratch& w) {
+    const std::size_t n = slots.size();
+    const std::size_t m = w.limits.size();
+    splitLimits(w);
+    if (!factor(w)) {
+        return false;
+    }
+    solveFactored(w); // the other rows with the limits at rest
+    w.unlimited = w.solution;
+    w.limitResponse.resize(m * n * 3);
+    for (std::size_t k = 0; k < m; ++k) {
+        const double* column = &w.limitColumns[k * n * 3];
+        for (std::size_t p = 0; p < n; ++p) {
+            for (std::size_t c = 0; c < 3; ++c) {
+                w.rhs[p][c] = column[3 * p + c];
+            }
+        }
+        solveFactored(w);
+        double* response = &w.limitResponse[k * n * 3];
+        for (std::size_t p = 0; p < n; ++p) {
+            for (std::size_t c = 0; c < 3; ++c) {
+                response[3 * p + c] = w.solution[p][c];
+            }
+        }
+    }
+    w.schur.resize(m * m);
+    w.limitImpulse.resize(m);
+    for (std::size_t l = 0; l < m; ++l) {
+        const double* column = &w.limitColumns[l * n * 3];
+        w.limitVelocity[l] += dotColumn(column, w.unlimited);
+        for (std::size_t k = 0; k < m; ++k) {
+            const double* response = &w.limitResponse[k * n * 3];
+            double coupled = 0.0;
+            for (std::size_t e = 0; e < 3 * n; ++e) {
+                coupled += column[e] * response[e];
+            }
+            w.schur[l * m + k] = w.limitK[l * m + k] - coupled;
+        }
+        const auto& limit = w.limits[l];
+        w.limitImpulse[l] = double(*w.rows[static_cast<std::size_t>(limit.first)]
+                                        .acc[static_cast<std::size_t>(limit.second)]);
+    }
+    // In the accumulated impulses x: w = S (x - acc) + q.
+    for (std::size_t l = 0; l < m; ++l) {
+        for (std::size_t k = 0; k < m; ++k) {
+            w.limitVelocity[l] -= w.schur[l * m + k] * w.limitImpulse[k];
+        }
+    }
+    solveDenseLcp(static_cast<int>(m), w.schur, w.limitVelocity, w.limitImpulse,
+                  static_cast<int>(4 * m + 8), w.lcp);
+    // dlambda of the limits, then the other rows': unlimited - sum_k response_k dlambda_k.
+    w.solution = w.unlimited;
+    for (std::size_t k = 0; k < m; ++k) {
+        const auto& limit = w.limits[k];
+        const auto p = static_cast<std::size_t>(limit.first);
+        const auto i = static_cast<std::size_t>(limit.second);
+        const double delta = w.limitImpulse[k] - double(*w.rows[p].acc[i]);
+        const double* response = &w.limitResponse[k * n * 3];
+        for (std::size_t q = 0; q < n; ++q) {
+            for (std::size_t c = 0; c < 3; ++c) {
+                w.solution[q][c] -= response[3 * q + c] * delta;
+            }
+        }
+        w.solution[p][i] = delta;
+    }
+    applyVelocitySolution(joints, slots, states, w);
+    return true;
+}
+
+// The velocity solve of a component with many limits: a limit that would pull is released
+// and the rest solved again (an active set; at most kActiveSetRounds solves). False, changing
+// nothing, when its factorisation gives up.
+bool solveActiveSet(std::span<Joint> joints, std::span<const int> slots,
+                    std::span<BodyState> states, const JointStep& step, const Softness& soft,
+                    JointDirectScratch& w) {
+    for (int round = 0; round < kActiveSetRounds; ++round) {
+        if (round > 0) {
+            assemble(joints, slots, states, true, w);
+            velocityRhs(joints, slots, states, step, soft, w);
+        }
+        if (!factor(w)) {
+            return false;
         }
         solveFactored(w);
         bool pulls = false;
@@ -522,23 +718,30 @@ bool solveComponent(std::span<Joint> joints, std::span<const int> slots,
                 }
             }
         }
-        if (!pulls || round + 1 == kActiveSetRounds) {
+        if (!pulls) {
             break;
         }
     }
-    for (std::size_t p = 0; p < slots.size(); ++p) {
-        Joint& j = joints[static_cast<std::size_t>(slots[p])];
-        JointDirectScratch::Rows& r = w.rows[p];
-        double* lambda = w.solution[p].data();
-        for (int i = 0; i < w.rowCount[p]; ++i) {
-            if (r.oneSided[i] && *r.acc[i] + lambda[i] < 0.0) {
-                lambda[i] = -double(*r.acc[i]); // the last round's: a stop never pulls
-            }
-            *r.acc[i] += static_cast<float>(lambda[i]);
-        }
-        applyRows(j, r, w.rowCount[p], lambda, states, false);
-    }
+    applyVelocitySolution(joints, slots, states, w);
     return true;
+}
+
+// The velocity solve of one component; false, changing nothing, when its factorisation gives
+// up (then marked dense for the step).
+bool solveComponent(std::span<Joint> joints, std::span<const int> slots,
+                    std::span<BodyState> states, const JointStep& step, bool useBias,
+                    JointDirectScratch& w) {
+    const Softness soft = rigidSoftness(step, useBias);
+    w.released.assign(slots.size(), 0);
+    assemble(joints, slots, states, true, w);
+    velocityRhs(joints, slots, states, step, soft, w);
+    const bool solved = !w.limits.empty() && w.limits.size() <= kMaxDenseLimits
+                            ? solveMixed(joints, slots, states, w)
+                            : solveActiveSet(joints, slots, states, step, soft, w);
+    if (!solved) {
+        w.denseComponents.push_back(slots.front());
+    }
+    return solved;
 }
 
 } // namespace

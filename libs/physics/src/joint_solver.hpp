@@ -4,6 +4,7 @@
 #include <e2d/physics/joint.hpp>
 #include <e2d/physics/solver_def.hpp>
 
+#include "joint_lcp.hpp"
 #include "solver_body.hpp"
 
 #include <algorithm>
@@ -352,6 +353,20 @@ struct JointDirectScratch {
     std::vector<int> order;
     std::set<std::pair<int, int>> queue; // (degree, joint) of the joints not eliminated yet
     std::vector<std::uint8_t> released;  // joints whose limit row the velocity solve let go
+    // The velocity solve's limits (joint, row) and their Schur complement over the other rows:
+    // each limit's column of K over the other rows (n x 3 per limit), that column solved with
+    // the factor, the limits' own K and the complement S (m x m), the other rows' impulse with
+    // the limits at rest, the limits' velocities then, and their impulses.
+    std::vector<std::pair<int, int>> limits;
+    std::vector<int> limitOf; // per joint: its limit's index, or -1
+    std::vector<double> limitColumns;
+    std::vector<double> limitResponse;
+    std::vector<double> limitK;
+    std::vector<double> schur;
+    std::vector<std::array<double, 3>> unlimited;
+    std::vector<double> limitVelocity;
+    std::vector<double> limitImpulse;
+    DenseLcpScratch lcp;
     // The components (by smallest slot) whose factorisation gave up this step (a net that
     // fills in too much): Gauss-Seidel alone for them until the next step's prepare.
     std::vector<int> denseComponents;
@@ -371,8 +386,11 @@ void projectJointComponents(std::span<Joint> joints, std::span<const int> order,
 // Soft step with SolverDef::jointSolver Direct: after a Gauss-Seidel pass, the velocities of
 // every rigid row of the joints `order` (slots) and of each revolute limit within reach, solved
 // component by component (K dlambda = -(J v + bias)), the impulses added to the joints'
-// accumulated ones (a limit's kept >= 0). A component whose graph fills in too much (a large
-// net) is left to the Gauss-Seidel pass.
+// accumulated ones. The limits are a complementarity problem on the Schur complement of the
+// other rows (each limit's impulse >= 0, its row's velocity >= 0, one of them 0: exact, none
+// pulling, none let through), solved densely (joint_lcp.hpp) up to 64 limits per component,
+// by an active set that releases limits beyond. A component whose graph fills in too much (a
+// large net) is left to the Gauss-Seidel pass.
 void solveJointsDirect(std::span<Joint> joints, std::span<const int> order,
                        std::span<BodyState> states, const JointStep& step, bool useBias,
                        JointDirectScratch& scratch);

@@ -222,6 +222,15 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
             xfB);
     }
 
+    if (detail::mayCrossAtCorners(refA, localB, faceA.edge, faceA.separation, faceB.edge,
+                                  faceB.separation)) {
+        // Two corners crossing: the same symmetric contact as the separating-axis routine's.
+        const detail::LocalManifold crossing =
+            detail::crossingCorners(refA, localB, faceA.edge, faceB.edge, margin);
+        if (crossing.count > 0) {
+            return detail::localToWorld(crossing, xfA, xfB);
+        }
+    }
     return detail::localToWorld(detail::clipPolygons(refA, localB, edgeA, edgeB, flip, margin), xfA,
                                 xfB);
 }

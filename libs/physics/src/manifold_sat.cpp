@@ -66,10 +66,12 @@ inline WorkFrame workFrameOf(const Polygon& a, const Transform& xfA) {
 // Shared by both search paths, so that they can differ only in how they find the axis.
 // Forced inline: with four callers GCC kept it out of line, and the PolygonRefs and the result
 // went through memory on every touching pair's critical path.
-[[gnu::always_inline]] inline LocalManifold contactOnAxis(const PolygonRef& localA,
-                                                          const PolygonRef& localB, float margin,
-                                                          bool flip, int edge1, int incident,
-                                                          float separation) {
+//
+// `faceA` and `faceB` are each polygon's best face (the reference face is one of them).
+[[gnu::always_inline]] inline LocalManifold
+contactOnAxis(const PolygonRef& localA, const PolygonRef& localB, float margin,
+              const EdgeSeparation& faceA, const EdgeSeparation& faceB, bool flip, int edge1,
+              int incident, float separation) {
     const float radius = localA.radius + localB.radius;
     const float limit = margin + radius;
     const PolygonRef& poly1 = flip ? localB : localA;
@@ -104,6 +106,13 @@ inline WorkFrame workFrameOf(const Polygon& a, const Transform& xfA) {
             m.ids[0] = flip ? makeFeatureId(feature2, feature1) : makeFeatureId(feature1, feature2);
             m.normal = flip ? -w : w;
             m.count = 1;
+            return m;
+        }
+    } else if (detail::mayCrossAtCorners(localA, localB, faceA.edge, faceA.separation, faceB.edge,
+                                         faceB.separation)) [[unlikely]] {
+        const LocalManifold m =
+            detail::crossingCorners(localA, localB, faceA.edge, faceB.edge, margin);
+        if (m.count > 0) {
             return m;
         }
     }
@@ -301,7 +310,7 @@ template <int GA, int GB>
     const int edge1 = flip ? sepB.edge : sepA.edge;
     const int incident = flip ? findIncidentEdge(movedB.normals[edge1], normalsA)
                               : findIncidentEdge(a.normals[edge1], normalsB);
-    LocalManifold m = contactOnAxis(localA, localB, margin, flip, edge1, incident,
+    LocalManifold m = contactOnAxis(localA, localB, margin, sepA, sepB, flip, edge1, incident,
                                     flip ? sepB.separation : sepA.separation);
     if (shift) [[unlikely]] {
         for (int i = 0; i < m.count; ++i) {
@@ -380,7 +389,7 @@ LocalManifold collideInFrame(PolygonRef localA, PolygonRef localB, float margin,
         incident = better ? j : incident;
         minDot = better ? d : minDot;
     }
-    return contactOnAxis(localA, localB, margin, flip, edge1, incident,
+    return contactOnAxis(localA, localB, margin, sepA, sepB, flip, edge1, incident,
                          flip ? sepB.separation : sepA.separation);
 }
 

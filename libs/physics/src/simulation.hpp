@@ -151,11 +151,11 @@ struct Simulation {
         JointDirectScratch jointDirect;
     };
     std::vector<BlockWorker> blockWorkers;
-    // The wide soft-step solver's schedule: each constraint's level (ConstraintLevels), the
-    // slots in level order (level k holds slots [levelStart[k], levelStart[k + 1]), contact
-    // order within a level) with each slot's constraint, contact and bodies, and the packed
-    // constraints.
-    ConstraintLevels levels;
+    // The wide soft-step solver's schedule: each constraint's level (its colour,
+    // ConstraintColors), the slots in level order (level k holds slots [levelStart[k],
+    // levelStart[k + 1]), contact order within a level) with each slot's constraint, contact
+    // and bodies, and the packed constraints.
+    ConstraintColors colors;
     std::vector<int> constraintLevel;
     std::vector<int> slotConstraint;
     std::vector<int> slotContact;
@@ -231,6 +231,8 @@ struct Simulation {
     // events are written during the write-back and marked from these.
     std::vector<int> sleptSims;
     std::vector<int> disabledSims;
+    // Per solver body, what World::Impl::writeBack()'s parallel pass left for its ordered one.
+    std::vector<unsigned char> writeBackResults;
     std::vector<int> wakeStack;
 
     std::vector<ContactBeginTouchEvent> beginEvents;

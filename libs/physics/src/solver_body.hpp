@@ -57,6 +57,12 @@ struct BodySim {
     float minExtent = 0.0f;
     int bodyIndex = -1; // the world's body slot
     std::uint32_t flags = 0;
+    // One integration step's velocity change from gravity, force and torque, and its damping
+    // factors: the same for every sub-step of a step (prepareIntegration()).
+    Vec2 velocityStep{0.0f, 0.0f};
+    float angularVelocityStep = 0.0f;
+    float linearDampingFactor = 1.0f;
+    float angularDampingFactor = 1.0f;
 };
 
 // q advanced by angle `da` (small): q + da * perp(q), renormalised. Cheaper than sin/cos and

@@ -178,6 +178,9 @@ struct World::Impl {
     // picks them from the solver arrays, sweepBody() sweeps one (index in sims).
     void solveContinuous();
     void sweepBody(int simIndex);
+    // The solved states back to the bodies, the broad-phase moves and the move events
+    // (world_write_back.cpp).
+    void writeBack(float dt);
     // Puts resting islands to sleep; lists them in sim.sleptSims (island.cpp).
     void updateSleep(float dt);
     // Completes hooks.moveEvents, which solve()'s write-back filled: marks the bodies

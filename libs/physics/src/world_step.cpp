@@ -17,16 +17,6 @@ namespace e2d::physics {
 using detail::kNullIndex;
 namespace check = detail::world_check;
 
-namespace {
-
-bool isFiniteState(const detail::BodySim& s, const detail::BodyState& st) {
-    return (st.flags & detail::kNonFinite) == 0 && isFinite(s.center) && isFinite(s.transform.p) &&
-           isFinite(s.positionResidual) && isFinite(s.transform.q.c) && isFinite(s.transform.q.s) &&
-           isFinite(st.linearVelocity) && isFinite(st.angularVelocity);
-}
-
-} // namespace
-
 void World::step(float timeStep) {
     impl_->requireUnlocked("step");
     if (!(isFinite(timeStep) && timeStep >= 0.0f)) {
@@ -57,6 +47,7 @@ void World::step(float timeStep) {
         detail::Simulation& sim;
         ~InStep() { sim.inStep = false; }
     } inStep{s};
+    const detail::Tasks::StepScope workers(w.tasks);
     w.updateContacts(timeStep);
     if (timeStep > 0.0f) {
         w.solve(timeStep);
@@ -325,7 +316,7 @@ void World::Impl::solve(float dt) {
         ++constraintCount;
     }
 
-    // Rolling resistance is scalar only (and solved in contact order, the same sweep).
+    // Rolling resistance is scalar only (and solved in contact order).
     const bool wide = def.mode == SolverMode::SoftStep && !rolling;
     if (wide) {
         // A settled pile has the same constraints step after step: its schedule is last step's.
@@ -341,19 +332,20 @@ void World::Impl::solve(float dt) {
                           sameAsLast(s.constraintContacts, s.lastConstraintContacts) &&
                           sameAsLast(s.jointBodies, s.lastJointBodies);
         if (!same) {
-            // Each constraint's level (see ConstraintLevels): solving level by level is the
-            // same sweep as solving in contact order, but the constraints of a level share no
-            // moving body, so the wide solver takes several at a time. A rigid side is not
-            // moving: the constraint never changes its velocity.
+            // Each constraint's level: its colour (see ConstraintColors), taken in contact
+            // order. The constraints of a level share no moving body, so the wide solver takes
+            // several at a time, and there are few levels: a stack or a pyramid is a handful of
+            // full ones, not one per row. A rigid side is not moving: the constraint never
+            // changes its velocity.
             auto moving = [&](int k) {
                 return k == kNullIndex || s.stateRigid[static_cast<std::size_t>(k)] != 0
                            ? kNullIndex
                            : k;
             };
-            s.levels.reset(static_cast<int>(s.sims.size()));
+            s.colors.reset(static_cast<int>(s.sims.size()));
             s.constraintLevel.clear();
             for (const detail::Simulation::ConstraintBodies& cb : s.constraintBodies) {
-                s.constraintLevel.push_back(s.levels.assign(moving(cb.indexA), moving(cb.indexB)));
+                s.constraintLevel.push_back(s.colors.assign(moving(cb.indexA), moving(cb.indexB)));
             }
             scheduleWide(constraintCount);
         }
@@ -477,6 +469,9 @@ void World::Impl::solve(float dt) {
         auto solveBlock = [&](std::size_t b, detail::Simulation::BlockWorker& worker) {
             const int firstLevel = s.blockLevelStart[b];
             const int endLevel = s.blockLevelStart[b + 1];
+            if (firstLevel == endLevel && s.blockBodyStart[b] == s.blockBodyStart[b + 1]) {
+                return; // the block of bodies no constraint touches, and there are none
+            }
             // Only the block holding shapes pushed apart sweeps more.
             detail::SolverStep blockStep = step;
             if (blockStep.jointStep.direct != nullptr) {
@@ -576,53 +571,9 @@ void World::Impl::solve(float dt) {
         }
     }
 
-    // Write back, move the proxies; a body whose state went non-finite or whose origin left
-    // the coordinate range (kHuge) is disabled instead. The move events are filled here too,
-    // in the same order (collectMoveEvents() marks the ones updateSleep() put to sleep).
-    std::vector<BodyMoveEvent>& moveEvents = hooks.moveEvents;
-    moveEvents.clear();
-    s.disabledSims.clear();
-    const std::size_t simCount = s.sims.size();
-    for (std::size_t k = 0; k < simCount; ++k) {
-        const detail::BodySim& bs = s.sims[k];
-        const detail::BodyState& st = s.states[k];
-        detail::Body& b = body(bs.bodyIndex);
-        b.motion.force = {0.0f, 0.0f};
-        b.motion.torque = 0.0f;
-        const bool finite = isFiniteState(bs, st);
-        if (!finite || !isWithinHuge(bs.transform.p)) {
-            // Its last transform (finite, within kHuge) stays, so calls from where it is work.
-            (finite ? s.outOfRangeBodies : s.nonFiniteBodies).push_back(bodyId(bs.bodyIndex));
-            s.disabledSims.push_back(static_cast<int>(k));
-            b.linearVelocity = {0.0f, 0.0f};
-            b.angularVelocity = 0.0f;
-            b.enabled = false;
-            b.motion.solverIndex = kNullIndex;
-            for (int si = b.headShape; si != kNullIndex; si = shape(si).nextShape) {
-                destroyProxy(si);
-            }
-            continue;
-        }
-        b.transform = bs.transform;
-        b.motion.positionResidual = bs.positionResidual;
-        b.linearVelocity = st.linearVelocity;
-        b.angularVelocity = st.angularVelocity;
-        // The broad-phase box also covers where the body will be next step, so the pairs
-        // (and speculative contacts) exist before a fast body arrives.
-        Vec2 ahead = dt * b.linearVelocity;
-        for (int si = b.headShape; si != kNullIndex; si = shape(si).nextShape) {
-            detail::Shape& sh = shape(si);
-            sh.aabb = computeAabb(sh.geometry, b.transform);
-            if (sh.proxyKey != kNullIndex) {
-                s.counters.proxyMoves += broadPhase.moveProxy(sh.proxyKey, sh.aabb, ahead) ? 1 : 0;
-            }
-        }
-        // Field by field: a braced temporary is built on the stack and copied out in 16-byte
-        // loads that wait for its 4-byte stores (a store-forwarding stall, about 1.5 % of the joint grid's step).
-        BodyMoveEvent& event = moveEvents.emplace_back();
-        event.body = bodyId(bs.bodyIndex);
-        event.transform = b.transform;
-    }
+    // Write back, move the proxies, the move events (collectMoveEvents() marks the ones
+    // updateSleep() puts to sleep).
+    writeBack(dt);
 
     if (!wide) {
         for (const detail::ContactConstraint& cc : s.constraints) {

@@ -10,6 +10,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
+#include <set>
 #include <vector>
 
 namespace e2d::physics::detail {
@@ -32,6 +34,62 @@ TEST(ConstraintLevels, EachConstraintGoesOneAboveItsBodiesLastLevel) {
     levels.reset(2);
     EXPECT_EQ(levels.levelCount(), 0);
     EXPECT_EQ(levels.assign(1, 0), 0);
+}
+
+TEST(ConstraintColors, AColumnIsTwoColoursAndTheGroundNeverTakesColourZero) {
+    using Colors = ConstraintColors;
+    Colors colors;
+    colors.reset(20);
+    // A column on the ground (-1), in contact order: the ground contact first, then each box on
+    // the one below.
+    EXPECT_EQ(colors.assign(-1, 0), 1); // a static side skips colour 0
+    for (int i = 0; i + 1 < 20; ++i) {
+        EXPECT_EQ(colors.assign(i, i + 1), i % 2) << "contact " << i;
+    }
+    EXPECT_EQ(colors.assign(-1, -1), 0); // nothing moves
+
+    // A body with more moving contacts than the colours of moving pairs: the rest overflow to
+    // levels after the colours, one after another on that body; its static contacts still get
+    // the colours kept for them.
+    colors.reset(40);
+    const int movingColors = Colors::kColorCount - Colors::kStaticOnlyColors;
+    for (int i = 1; i <= movingColors; ++i) {
+        EXPECT_EQ(colors.assign(0, i), i - 1);
+    }
+    EXPECT_EQ(colors.assign(0, movingColors + 1), Colors::kColorCount);
+    EXPECT_EQ(colors.assign(movingColors + 2, 0), Colors::kColorCount + 1);
+    EXPECT_EQ(colors.assign(0, -1), movingColors);
+    EXPECT_EQ(colors.assign(-1, 1), 1); // body 1 has colour 0 only
+}
+
+TEST(ConstraintColors, AColoursConstraintsShareNoMovingBody) {
+    test::Random rng(7);
+    ConstraintColors colors;
+    for (int round = 0; round < 20; ++round) {
+        const int bodies = 2 + rng.below(60);
+        colors.reset(bodies);
+        std::map<int, std::set<int>> bodiesOf; // colour -> moving bodies
+        for (int k = 0; k < 300; ++k) {
+            const int a = rng.below(4) == 0 ? -1 : rng.below(bodies);
+            int b = rng.below(bodies);
+            b = b == a ? -1 : b;
+            const int color = colors.assign(a, b);
+            if (a < 0 || b < 0) {
+                EXPECT_NE(color, 0) << "a static side never takes colour 0";
+            } else {
+                EXPECT_TRUE(color < ConstraintColors::kColorCount -
+                                        ConstraintColors::kStaticOnlyColors ||
+                            color >= ConstraintColors::kColorCount)
+                    << "moving pairs leave the static-only colours, got " << color;
+            }
+            for (int side : {a, b}) {
+                if (side >= 0) {
+                    EXPECT_TRUE(bodiesOf[color].insert(side).second)
+                        << "body " << side << " twice in colour " << color;
+                }
+            }
+        }
+    }
 }
 
 // What prepareContact() was given for one constraint.

@@ -80,6 +80,79 @@ TEST(CollidePolygons, BoxOnAWideGroundGetsItsOwnCorners) {
     }
 }
 
+// Two cards (2 mm x 40 cm) leaning 25 degrees towards each other, tips touching, as at the apex
+// of a card house: `overlap` (metres) is how far the two top corners have crossed (negative: a
+// gap), `drop` how much lower the right card stands. The left card is shape A.
+struct CardPair {
+    Polygon card = makeBox(0.001f, 0.2f);
+    Transform left;
+    Transform right;
+};
+
+CardPair tipToTipCards(float overlap, float drop = 0.0f) {
+    CardPair p;
+    const float lean = 25.0f * kPi / 180.0f;
+    // The left card's top right corner from its centre, when it leans right by `lean`.
+    const Vec2 corner = rotate(Rot::fromAngle(-lean), Vec2{0.001f, 0.2f});
+    p.left = makeTransform(0.5f * overlap - corner.x, 0.0f, -lean);
+    p.right = makeTransform(corner.x - 0.5f * overlap, -drop, lean);
+    return p;
+}
+
+// The two top corners cross each other: each lies against the other card's face and no face is
+// the contact's. The contact is the one the separated tips give (the line between the corners,
+// horizontal), kept as they cross: one point midway, normal along the bisector of the two face
+// normals, separation the overlap along it, ids the two corners. A reference face instead
+// tilts the normal 25 degrees (the whole angle to one card's face), so the apex friction must
+// carry a share of the load the symmetric contact puts on the normal, and which card's face it
+// is depends on the first touching steps (card_house_v3's top pair slid apart at 4 sub-steps).
+TEST(CollidePolygons, CardsCrossingAtTheirTipsMeetAlongTheBisector) {
+    for (const CollisionAlgorithm algorithm :
+         {CollisionAlgorithm::Sat, CollisionAlgorithm::GjkEpa}) {
+        SCOPED_TRACE(algorithm == CollisionAlgorithm::Sat ? "SAT" : "GJK/EPA");
+        const CardPair apart = tipToTipCards(-0.001f);
+        const Manifold separated =
+            collide(apart.card, apart.left, apart.card, apart.right, algorithm);
+        ASSERT_EQ(separated.pointCount, 1);
+        E2D_EXPECT_VEC2_NEAR(separated.normal, 1.0f, 0.0f, 1e-4f);
+        EXPECT_NEAR(separated.points[0].separation, 0.001f, 1e-5f);
+
+        for (const float drop : {0.0f, 0.0002f, -0.0003f}) {
+            SCOPED_TRACE(drop);
+            const CardPair p = tipToTipCards(0.0004f, drop);
+            const Manifold m = collide(p.card, p.left, p.card, p.right, algorithm);
+            ASSERT_EQ(m.pointCount, 1);
+            E2D_EXPECT_VEC2_NEAR(m.normal, 1.0f, 0.0f, 1e-4f);
+            EXPECT_NEAR(m.points[0].separation, -0.0004f, 2e-5f);
+            EXPECT_NEAR(m.points[0].point.x, 0.0f, 1e-4f);
+            EXPECT_EQ(m.points[0].id, separated.points[0].id);
+            expectAnchorsConsistent(m, p.left, p.right);
+
+            // The same pair in the other order: the same contact, seen from the right card.
+            const Manifold r = collide(p.card, p.right, p.card, p.left, algorithm);
+            ASSERT_EQ(r.pointCount, 1);
+            E2D_EXPECT_VEC2_NEAR(r.normal, -1.0f, 0.0f, 1e-4f);
+            EXPECT_NEAR(r.points[0].separation, m.points[0].separation, 1e-6f);
+        }
+    }
+}
+
+// Faces in line are a face contact even where two corners meet: a card lying flat on another
+// with their ends flush, and a box slightly tilted over another box's edge, keep two points.
+TEST(CollidePolygons, FacesInLineAreNotACornerCrossing) {
+    const Polygon card = makeBox(0.2f, 0.001f);
+    for (const CollisionAlgorithm algorithm :
+         {CollisionAlgorithm::Sat, CollisionAlgorithm::GjkEpa}) {
+        const Manifold flush = collide(card, makeTransform(0.0f, 0.0f, 0.0f), card,
+                                       makeTransform(0.0f, 0.0019f, 0.0f), algorithm);
+        EXPECT_EQ(flush.pointCount, 2);
+        E2D_EXPECT_VEC2_NEAR(flush.normal, 0.0f, 1.0f, 1e-6f);
+        const Manifold tilted = collide(card, makeTransform(0.0f, 0.0f, 0.0f), card,
+                                        makeTransform(0.3f, 0.0019f, 0.02f), algorithm);
+        EXPECT_EQ(tilted.pointCount, 2);
+    }
+}
+
 TEST(CollidePolygons, TouchingSpeculativeAndBeyondMargin) {
     Manifold touching = boxOnGround(0.0f, 1.0f);
     ASSERT_EQ(touching.pointCount, 2);

@@ -38,6 +38,7 @@ struct Hash {
         add(v.y);
     }
     void add(ShapeId id) { add(id.index1); }
+    void add(BodyId id) { add(id.index1); }
 };
 
 // One scene: a world and the bodies whose state is hashed.
@@ -180,6 +181,27 @@ void buildJointedStacks(Scene& s) {
     }
 }
 
+// A row of small boxes settling on the ground (they fall asleep after half a second) and balls
+// flying out of the coordinate range (kHuge), a few each step: the write-back on several
+// workers, with bodies disabled in the same steps others fall asleep (the move events).
+void buildRunaways(Scene& s) {
+    addGround(s.world);
+    for (int i = 0; i < 400; ++i) {
+        s.bodies.push_back(addBox(s.world, {-90.0f + 0.45f * static_cast<float>(i), 0.25f}, 0.2f));
+    }
+    constexpr float kSpeed = 400.0f;
+    for (int j = 0; j < 200; ++j) {
+        BodyDef bd;
+        bd.type = BodyType::Dynamic;
+        bd.position = {kHuge - (static_cast<float>(j / 5) + 0.5f) * kSpeed * kStep,
+                       3.0f + 0.5f * static_cast<float>(j)};
+        bd.linearVelocity = {kSpeed, 0.0f};
+        const BodyId ball = s.world.createBody(bd);
+        s.world.createShape(ball, {}, Circle{{0.0f, 0.0f}, 0.1f});
+        s.bodies.push_back(ball);
+    }
+}
+
 // One pyramid of base 40: one island, so one block of the wide solver on one worker; its narrow
 // phase is shared.
 void buildPyramid(Scene& s) {
@@ -224,6 +246,15 @@ std::uint64_t run(const WorldDef& def, void (*build)(Scene&), int steps) {
             hash.add(e.point);
             hash.add(e.approachSpeed);
         }
+        for (const BodyMoveEvent& e : s.world.bodyMoveEvents()) {
+            hash.add(e.body);
+            hash.add(e.transform.p);
+            hash.add(e.transform.q.s);
+            hash.add(e.fellAsleep ? 1u : 0u);
+        }
+        for (BodyId id : s.world.outOfRangeBodies()) {
+            hash.add(id);
+        }
     }
     return hash.h;
 }
@@ -242,6 +273,7 @@ const Case kCases[] = {
     {"stacks", buildStacks, SolverMode::SoftStep, 20},
     {"jointed_stacks", buildJointedStacks, SolverMode::SoftStep, 20},
     {"pyramid", buildPyramid, SolverMode::SoftStep, 12},
+    {"runaways", buildRunaways, SolverMode::SoftStep, 40},
 };
 
 TEST(WorldThreads, EveryWorkerCountAndSimdWidthGivesTheSameSteps) {
