@@ -136,16 +136,18 @@ void TaskPool::endStep() { inStep_.store(false, std::memory_order_relaxed); }
 
 bool TaskPool::waitForTask(std::uint32_t seen) {
     auto published = [this] { return generationOf(claim_.load(std::memory_order_acquire)); };
+    auto inStep = [this] { return inStep_.load(std::memory_order_relaxed); };
     for (;;) {
-        for (int spins = 0; spins < spins_; ++spins) {
+        // Inside a step the next stage is near: wait awake, spinning, then letting any other
+        // thread that wants this core have it. Outside one no task comes: sleep at once, or a
+        // thread still spinning would take a core from whatever the game does between steps.
+        for (int spins = 0; spins < spins_ && inStep(); ++spins) {
             if (published() != seen) {
                 return true;
             }
             pause();
         }
-        // Inside a step the next stage is near: keep waiting awake, but let any other thread
-        // that wants this core have it.
-        while (inStep_.load(std::memory_order_relaxed)) {
+        while (inStep()) {
             if (published() != seen) {
                 return true;
             }
@@ -153,9 +155,7 @@ bool TaskPool::waitForTask(std::uint32_t seen) {
         }
         std::unique_lock<std::mutex> lock(mutex_);
         ++sleeping_;
-        wake_.wait(lock, [&] {
-            return stop_ || published() != seen || inStep_.load(std::memory_order_relaxed);
-        });
+        wake_.wait(lock, [&] { return stop_ || published() != seen || inStep(); });
         --sleeping_;
         if (stop_) {
             return false;
