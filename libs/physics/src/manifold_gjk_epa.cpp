@@ -64,18 +64,6 @@ FaceChoice bestBracketingFace(PolygonRef poly, PolygonRef other, Vec2 direction)
     return first;
 }
 
-int incidentEdge(PolygonRef poly, Vec2 referenceNormal) {
-    int best = 0;
-    float bestDot = FLT_MAX;
-    for (int i = 0; i < poly.count; ++i) {
-        const float d = dot(poly.normals[i], referenceNormal);
-        const bool better = d < bestDot;
-        best = better ? i : best;
-        bestDot = better ? d : bestDot;
-    }
-    return best;
-}
-
 struct FacePair {
     FaceChoice a; // A's face of greatest separation
     FaceChoice b; // B's face of greatest separation
@@ -95,14 +83,7 @@ FacePair polygonEpa(PolygonRef a, PolygonRef b) {
     const int m = b.count;
     // The boundary vertex for directions just before nB[0]: B's vertex 0 and A's vertex
     // deepest along nB[0] (its support in -nB[0]).
-    int ia = 0;
-    float minDot = dot(b.normals[0], a.vertices[0]);
-    for (int i = 1; i < n; ++i) {
-        const float d = dot(b.normals[0], a.vertices[i]);
-        const bool better = d < minDot;
-        ia = better ? i : ia;
-        minDot = better ? d : minDot;
-    }
+    int ia = detail::firstMinDot(a.vertices, n, b.normals[0]);
     int jb = 0;
     int doneA = 0;
     int doneB = 0;
@@ -202,11 +183,11 @@ Manifold collidePolygonsGjkEpa(const Polygon& a, const Transform& xfA, const Pol
     Vec2 referenceNormal; // from A to B
     if (flip) {
         edgeB = faceB.edge;
-        edgeA = incidentEdge(refA, localB.normals[edgeB]);
+        edgeA = detail::firstMinDot(refA.normals, refA.count, localB.normals[edgeB]);
         referenceNormal = -localB.normals[edgeB];
     } else {
         edgeA = faceA.edge;
-        edgeB = incidentEdge(localB, a.normals[edgeA]);
+        edgeB = detail::firstMinDot(localB.normals, localB.count, a.normals[edgeA]);
         referenceNormal = a.normals[edgeA];
     }
 

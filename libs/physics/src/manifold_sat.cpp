@@ -380,15 +380,7 @@ LocalManifold collideInFrame(PolygonRef localA, PolygonRef localB, float margin,
     const int edge1 = flip ? sepB.edge : sepA.edge;
 
     // The incident edge: the one of poly2 whose normal is most anti-parallel to the reference.
-    const Vec2 normal1 = poly1.normals[edge1];
-    int incident = 0;
-    float minDot = FLT_MAX;
-    for (int j = 0; j < poly2.count; ++j) {
-        const float d = dot(normal1, poly2.normals[j]);
-        const bool better = d < minDot;
-        incident = better ? j : incident;
-        minDot = better ? d : minDot;
-    }
+    const int incident = detail::firstMinDot(poly2.normals, poly2.count, poly1.normals[edge1]);
     return contactOnAxis(localA, localB, margin, sepA, sepB, flip, edge1, incident,
                          flip ? sepB.separation : sepA.separation);
 }

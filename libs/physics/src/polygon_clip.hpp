@@ -3,6 +3,7 @@
 
 #include "manifold_detail.hpp"
 
+#include <cfloat>
 #include <cmath>
 
 namespace e2d::physics::detail {
@@ -128,12 +129,14 @@ inline constexpr float kCrossingTolerance = kLinearSlop;
 /// (a box resting on a box) are a face contact, clipped even where their corners meet.
 inline constexpr float kCrossingMaxCos = 0.995f;
 
-/// The vertex of `poly` deepest along -`normal` (the first on a tie).
-static inline int deepestVertex(const PolygonRef& poly, Vec2 normal) {
+/// The first of `count` items (vertices or normals) with the least dot product with
+/// `direction`: the vertex deepest along -direction, or the normal most anti-parallel to it
+/// (an incident face). Kept by selects, not branches.
+static inline int firstMinDot(const Vec2* items, int count, Vec2 direction) {
     int best = 0;
-    float bestDot = dot(normal, poly.vertices[0]);
-    for (int i = 1; i < poly.count; ++i) {
-        const float d = dot(normal, poly.vertices[i]);
+    float bestDot = FLT_MAX;
+    for (int i = 0; i < count; ++i) {
+        const float d = dot(direction, items[i]);
         const bool better = d < bestDot;
         best = better ? i : best;
         bestDot = better ? d : bestDot;
@@ -173,8 +176,8 @@ static inline bool mayCrossAtCorners(const PolygonRef& a, const PolygonRef& b, i
     const Vec2 normalA = a.normals[edgeA];
     const Vec2 normalB = b.normals[edgeB];
     const Vec2 bisector = normalize(normalA - normalB);
-    const int cornerA = deepestVertex(a, normalB);
-    const int cornerB = deepestVertex(b, normalA);
+    const int cornerA = firstMinDot(a.vertices, a.count, normalB);
+    const int cornerB = firstMinDot(b.vertices, b.count, normalA);
     const Vec2 pA = a.vertices[cornerA];
     const Vec2 pB = b.vertices[cornerB];
     const float separation = dot(pB - pA, bisector) - (a.radius + b.radius);

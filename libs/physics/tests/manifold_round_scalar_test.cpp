@@ -147,13 +147,19 @@ TEST(CollideCirclesScalarPath, BitIdenticalToSimdPath) {
     int concentric = 0;
     for (int pair = 0; pair < 40000; ++pair) {
         const int mode = rng.index(4);
-        // Centred circles (mode 0: as most bodies have them), offset ones otherwise.
-        const bool centred = mode == 0;
-        const Circle a{centred ? Vec2{0.0f, 0.0f}
-                               : Vec2{rng.uniform(-0.5f, 0.5f), rng.uniform(-0.5f, 0.5f)},
+        // Centred circles (mode 0 and half of the concentric ones: as most bodies have them, the
+        // routines' fast path), offset ones otherwise; a quarter of the offset pairs have one
+        // centred circle, or one centred at -0 (the general path, which must agree).
+        const int centring = rng.index(8);
+        const bool centred = mode == 0 || (mode == 3 && centring < 4);
+        const Vec2 zero = centring == 4 ? Vec2{-0.0f, 0.0f} : Vec2{0.0f, 0.0f};
+        const Circle a{centred || centring == 4
+                           ? zero
+                           : Vec2{rng.uniform(-0.5f, 0.5f), rng.uniform(-0.5f, 0.5f)},
                        rng.uniform(0.01f, 1.0f)};
-        const Circle b{centred ? Vec2{0.0f, 0.0f}
-                               : Vec2{rng.uniform(-0.5f, 0.5f), rng.uniform(-0.5f, 0.5f)},
+        const Circle b{centred || centring == 5
+                           ? Vec2{0.0f, 0.0f}
+                           : Vec2{rng.uniform(-0.5f, 0.5f), rng.uniform(-0.5f, 0.5f)},
                        rng.uniform(0.01f, 1.0f)};
         const Transform xfA = makeTransform(rng.uniform(-2.0f, 2.0f), rng.uniform(-2.0f, 2.0f),
                                             rng.uniform(-3.2f, 3.2f));
@@ -174,6 +180,30 @@ TEST(CollideCirclesScalarPath, BitIdenticalToSimdPath) {
     EXPECT_GT(contacts, 10000);
     EXPECT_LT(contacts, 35000);
     EXPECT_GT(concentric, 5000);
+}
+
+// Exact coordinates, where rotating a zero centre gives a signed zero that the centred fast path
+// (no rotation) does not: a small circle deep inside a large one straight above A (the normal's
+// x is 0 and the anchor's scale negative), A turned so that rotate(qA, {0, 0}).x is -0. The
+// anchor's x is -0 along the rotation and +0 along the fast path, so both routines must take the
+// same path for centred circles.
+TEST(CollideCirclesScalarPath, CentredFastPathInBothRoutines) {
+    const Circle big{{0.0f, 0.0f}, 1.0f};
+    const Circle small{{0.0f, 0.0f}, 0.25f};
+    for (float angle : {0.0f, 1.0f, 2.0f, 3.0f, -1.0f, -2.0f, -3.0f}) {
+        for (float dy : {0.25f, -0.25f, 0.5f, 0.0f}) {
+            const Transform xfA{{0.0f, 0.0f}, Rot::fromAngle(angle)};
+            const Transform xfB{{0.0f, dy}, Rot::fromAngle(-angle)};
+            for (int order = 0; order < 2; ++order) {
+                const Circle& a = order == 0 ? small : big;
+                const Circle& b = order == 0 ? big : small;
+                const Manifold simd = collideCircles(a, xfA, b, xfB);
+                const Manifold scalar = collideCirclesScalar(a, xfA, b, xfB, kSpeculativeDistance);
+                ASSERT_EQ(simd.pointCount, 1);
+                expectSameCircleManifold(simd, scalar, static_cast<int>(angle * 100.0f + dy));
+            }
+        }
+    }
 }
 
 } // namespace
