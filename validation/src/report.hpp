@@ -74,6 +74,12 @@ struct SweepPoint {
 [[nodiscard]] std::map<std::string, std::map<std::string, std::vector<SweepPoint>>>
 sweepCurves(const Report& report);
 
+/// How the curve of `engine` (an engine family, EngineConfig::family()) is named on the plot of
+/// scenario family `family`: on the joints plot the soft step's curves by their joint model
+/// ("e2d soft sat, Direct joints" for the default, whose engine family names no joint model),
+/// elsewhere the engine family itself.
+[[nodiscard]] std::string curveLabel(const std::string& family, const std::string& engine);
+
 /// The effect of one feature switch on a scenario family, against the reference runs of the
 /// same scenarios: the sweep point at the baseline's effort (sleeping off). The "sleep on" row
 /// is the baseline run itself against that reference.

@@ -232,20 +232,21 @@ void familySections(std::ostringstream& o, const Report& r) {
         plot.hLines.emplace_back(1.0, "tolerance");
         int scenarios = 0;
         for (const auto& [engine, curve] : it->second) {
-            PlotSeries s{engine, colorOf(engine, families), {}, false, true, {}};
+            const std::string name = curveLabel(family, engine);
+            PlotSeries s{name, colorOf(engine, families), {}, false, true, {}};
             std::vector<std::pair<double, double>> pts;
             for (const SweepPoint& p : curve) {
                 const std::pair<double, double> xy{p.ms, std::max(p.error, 1e-3)};
                 s.points.push_back(xy);
                 pts.push_back(xy);
-                s.labels.push_back(engine + " " + p.label + ": " + fmt(p.ms) + " ms, error " +
+                s.labels.push_back(name + " " + p.label + ": " + fmt(p.ms) + " ms, error " +
                                    fmt(p.error) + ", " + std::to_string(p.failed) + "/" +
                                    std::to_string(p.scenarios) + " failed");
                 scenarios = p.scenarios;
             }
             // Sweep points joined in order of cost.
             plot.series.push_back(s);
-            PlotSeries front{engine + " Pareto front",
+            PlotSeries front{name + " Pareto front",
                              colorOf(engine, families),
                              paretoFront(pts),
                              true,

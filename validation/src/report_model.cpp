@@ -114,6 +114,23 @@ std::vector<HardCaseRow> hardCaseTable(const Report& report) {
     return rows;
 }
 
+std::string curveLabel(const std::string& family, const std::string& engine) {
+    if (family != "joints" || engine.rfind("e2d soft ", 0) != 0) {
+        return engine;
+    }
+    // "e2d soft sat" (the default, Direct) or "e2d soft sat joints <model>".
+    const std::string marker = " joints ";
+    const std::size_t at = engine.find(marker);
+    const std::string model =
+        at == std::string::npos ? "direct" : engine.substr(at + marker.size());
+    const std::string base = engine.substr(0, at);
+    const std::string name = model == "direct"         ? "Direct"
+                             : model == "gauss-seidel" ? "GaussSeidel"
+                             : model == "soft"         ? "Soft"
+                                                       : model;
+    return base + ", " + name + " joints";
+}
+
 std::map<std::string, std::map<std::string, std::vector<SweepPoint>>>
 sweepCurves(const Report& report) {
     // family -> engine -> label -> points; only scenarios that have the whole sweep count, so

@@ -55,7 +55,8 @@ struct SettingsOverride {
 enum class CheckKind {
     Standing,         ///< tagged body ends within `tolerance` of its start x and above minY
     MaxPenetration,   ///< deepest contact over the run <= limit
-    MaxSpeed,         ///< fastest body over the run <= limit (explosion detector)
+    MaxSpeed,         ///< fastest body (or the tagged body, if `body` is given) over the
+                      ///< run <= limit (explosion detector; a bound on one body's speed)
     BounceHeight,     ///< first apex after the first bounce vs e^2 h
     SlideDistance,    ///< distance along the slope at time t vs 1/2 g (sin - mu cos) t^2
     StoppingDistance, ///< distance slid until rest vs v^2 / (2 mu g)

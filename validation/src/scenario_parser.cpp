@@ -592,7 +592,9 @@ Check parseCheck(const json& value, const std::string& path, const Scenario& sce
     const bool needsBody = c.kind != CheckKind::MaxPenetration && c.kind != CheckKind::MaxSpeed &&
                            c.kind != CheckKind::Momentum && c.kind != CheckKind::KineticEnergy &&
                            c.kind != CheckKind::Sleep && c.kind != CheckKind::JointError;
-    if (needsBody) {
+    // maxSpeed judges every dynamic body, or the tagged ones when it names a body.
+    const bool optionalBody = c.kind == CheckKind::MaxSpeed && o.has("body");
+    if (needsBody || optionalBody) {
         if (!o.has("body")) {
             fail(o.at("body"), "required field is missing (the tag of the body to check)");
         }

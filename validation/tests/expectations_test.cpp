@@ -141,6 +141,19 @@ TEST(Evaluate, MomentumKineticEnergyAndSpeed) {
     EXPECT_TRUE(r.passed);
     c.limit = 9.0f;
     EXPECT_FALSE(evaluate(c, rec, 10.0f).passed);
+    // Naming a body judges that body alone: a faster body elsewhere does not count.
+    Recording withFastLink = rec;
+    for (float& v : withFastLink.maxSpeed) {
+        v = 20.0f;
+    }
+    c.limit = 11.0f;
+    EXPECT_FALSE(evaluate(c, withFastLink, 10.0f).passed);
+    c.body = "ball";
+    r = evaluate(c, withFastLink, 10.0f);
+    EXPECT_NEAR(r.measured, 10.0, 0.02);
+    EXPECT_TRUE(r.passed);
+    EXPECT_EQ(r.quantity, "fastest speed of \"ball\" over the run, m/s");
+    c.body.clear();
     // Gravity changes momentum: the check must see it.
     c.kind = CheckKind::Momentum;
     c.tolerance = 0.01f;

@@ -86,6 +86,18 @@ TEST(ReportHtml, IsSelfContainedAndBalanced) {
 }
 
 // The summary marks an e2d run red when it does worse than Box2D on the same scenario.
+// The joints plot names the soft step's curves by joint model: the default's engine family
+// ("e2d soft sat") names none, and read as if it were the only soft step.
+TEST(ReportModel, JointCurvesAreNamedByJointModel) {
+    EXPECT_EQ(curveLabel("joints", "e2d soft sat"), "e2d soft sat, Direct joints");
+    EXPECT_EQ(curveLabel("joints", "e2d soft sat joints gauss-seidel"),
+              "e2d soft sat, GaussSeidel joints");
+    EXPECT_EQ(curveLabel("joints", "e2d soft sat joints soft"), "e2d soft sat, Soft joints");
+    EXPECT_EQ(curveLabel("joints", "e2d classic sat"), "e2d classic sat");
+    EXPECT_EQ(curveLabel("joints", "box2d"), "box2d");
+    EXPECT_EQ(curveLabel("stacking", "e2d soft sat"), "e2d soft sat");
+}
+
 TEST(ReportModel, E2dWorseThanBox2DIsFlagged) {
     Report report;
     report.scenarios = {shipped("stack_5"), shipped("drop_e050")};

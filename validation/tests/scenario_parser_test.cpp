@@ -128,6 +128,22 @@ TEST(ScenarioParser, ChecksGeneratorsSettingsAndChecks) {
     EXPECT_EQ(errorOf(R"({"family": "stacking", "generators": [{"type": "verticalStack"}],
                           "checks": [{"type": "maxSpeed"}]})"),
               "checks[0].limit: required field is missing");
+    // maxSpeed's body is optional; given, it must be a tag of the scene (checks name bodies by
+    // tag, not by index: only tagged bodies are recorded).
+    const Scenario named = parseScenario(
+        scene(R"(, "checks": [{"type": "maxSpeed", "limit": 3}, {"type": "maxSpeed", "limit": 3,
+                                                                "body": "top"}])",
+              R"({"type": "circle", "radius": 0.5})"),
+        "test");
+    ASSERT_EQ(named.checks.size(), 2u);
+    EXPECT_EQ(named.checks[0].body, "");
+    EXPECT_EQ(named.checks[1].body, "top");
+    EXPECT_EQ(errorOf(scene(R"(, "checks": [{"type": "maxSpeed", "limit": 3, "body": "tpo"}])",
+                            R"({"type": "circle", "radius": 0.5})")),
+              "checks[0].body: no body has tag \"tpo\" (did you mean \"top\"?)");
+    EXPECT_EQ(errorOf(scene(R"(, "checks": [{"type": "maxSpeed", "limit": 3, "body": 1}])",
+                            R"({"type": "circle", "radius": 0.5})")),
+              "checks[0].body: expected a string, got number");
     EXPECT_THAT(errorOf(R"({"family": "stacking", "generators": [{"type": "verticalStack"}],
                           "checks": [{"type": "bounce"}]})"),
                 StartsWith("checks[0].type: expected standing, maxPenetration"));

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "pair_set.hpp"
+#include "task_pool.hpp"
 
 #include <e2d/physics/constants.hpp>
 #include <e2d/physics/dynamic_tree.hpp>
@@ -99,8 +100,12 @@ public:
     /// `std::uint64_t queryMask(std::uint64_t userData)` gives the category bits a moved
     /// proxy's partners must share a bit with (the trees skip the others whole); it must
     /// admit every partner shouldPair() could accept, from either side (default: all bits).
+    /// With `tasks`, the moved proxies' queries run on its workers, each into its own list
+    /// (the lists are joined and sorted after, so the pairs are the same for any worker
+    /// count): shouldPair and queryMask must then be safe to call from several threads at once.
     template <class ShouldPair, class QueryMask = AllCategories>
-    void updatePairs(ShouldPair&& shouldPair, QueryMask&& queryMask = QueryMask{});
+    void updatePairs(ShouldPair&& shouldPair, QueryMask&& queryMask = QueryMask{},
+                     Tasks* tasks = nullptr);
 
     /// The pairs the last updatePairs() added, sorted; valid until the next updatePairs().
     [[nodiscard]] std::span<const ProxyPair> newPairs() const { return newPairs_; }
@@ -148,6 +153,11 @@ private:
         }
     }
     [[noreturn]] static void throwBadKey(int proxyKey, const char* function);
+    // updatePairs()'s queries for moved proxy `key`: the accepted pairs not in the set yet
+    // into `found`, the tree queries counted into `queries`.
+    template <class ShouldPair, class QueryMask>
+    void findPairsOf(int key, ShouldPair& shouldPair, QueryMask& queryMask,
+                     std::vector<ProxyPair>& found, int& queries) const;
     void erasePair(std::uint64_t key);
 
     // Mutable: tree() inserts deferred proxies on demand.
@@ -155,61 +165,51 @@ private:
     std::vector<ProxyInfo> infos_; // indexed by proxy key
     std::vector<int> moveBuffer_;
     std::vector<ProxyPair> newPairs_;
+    // updatePairs() on several workers: each worker's pairs found and tree queries run.
+    std::vector<std::vector<ProxyPair>> workerPairs_;
+    std::vector<int> workerQueries_;
     std::vector<std::uint64_t> scratchKeys_;
     PairSet pairs_;
     int queryCount_ = 0;
 };
 
 template <class ShouldPair, class QueryMask>
-void BroadPhase::updatePairs(ShouldPair&& shouldPair, QueryMask&& queryMask) {
+void BroadPhase::updatePairs(ShouldPair&& shouldPair, QueryMask&& queryMask, Tasks* tasks) {
     newPairs_.clear();
     queryCount_ = 0;
     for (DynamicTree& t : trees_) {
         t.insertDeferred(); // new proxies in bulk
     }
-    for (const int key : moveBuffer_) {
-        if (key == kNullProxyKey) {
-            continue; // destroyed after it moved
+    // The pairs of the moved proxies [begin, end) not in the set yet, into `found`; counts the
+    // tree queries into `queries`. Reads the trees, the set and the move marks only.
+    auto findPairs = [&](int begin, int end, std::vector<ProxyPair>& found, int& queries) {
+        for (int m = begin; m < end; ++m) {
+            const int key = moveBuffer_[static_cast<std::size_t>(m)];
+            if (key == kNullProxyKey) {
+                continue; // destroyed after it moved
+            }
+            findPairsOf(key, shouldPair, queryMask, found, queries);
         }
-        const BodyType type = proxyTypeOf(key);
-        const DynamicTree& own = trees_[treeIndex(key)];
-        const Aabb box = own.aabb(proxyIdOf(key));
-        const std::uint64_t ud = own.userData(proxyIdOf(key));
-        const std::uint64_t mask = queryMask(ud);
-
-        auto queryTree = [&](BodyType otherType) {
-            ++queryCount_;
-            trees_[static_cast<std::size_t>(otherType)].query(
-                box, mask, [&](int otherId, std::uint64_t otherUd) {
-                    const int otherKey = makeProxyKey(otherId, otherType);
-                    // When both moved, the one with the lower key reports the pair (the queries
-                    // are symmetric: each one's query covers the other's tree).
-                    if (otherKey == key || (otherKey < key && isMoved(otherKey))) {
-                        return;
-                    }
-                    const std::uint64_t pairKey = makePairKey(ud, otherUd);
-                    if (pairs_.contains(pairKey)) {
-                        return;
-                    }
-                    const bool mineIsA = ud < otherUd;
-                    const std::uint64_t a = mineIsA ? ud : otherUd;
-                    const std::uint64_t b = mineIsA ? otherUd : ud;
-                    if (!shouldPair(a, b)) {
-                        return;
-                    }
-                    newPairs_.push_back({a, b, mineIsA ? key : otherKey, mineIsA ? otherKey : key});
-                });
-        };
-        switch (type) {
-        case BodyType::Dynamic:
-            queryTree(BodyType::Dynamic);
-            queryTree(BodyType::Kinematic);
-            queryTree(BodyType::Static);
-            break;
-        case BodyType::Kinematic:
-        case BodyType::Static:
-            queryTree(BodyType::Dynamic);
-            break;
+    };
+    const int moved = static_cast<int>(moveBuffer_.size());
+    // A query is a microsecond or two: pieces of tens of microseconds at least.
+    constexpr int kMovedPerPiece = 32;
+    if (tasks == nullptr || tasks->workerCount() == 1 || moved <= kMovedPerPiece) {
+        findPairs(0, moved, newPairs_, queryCount_);
+    } else {
+        const auto workers = static_cast<std::size_t>(tasks->workerCount());
+        workerPairs_.resize(workers);
+        workerQueries_.assign(workers, 0);
+        for (std::vector<ProxyPair>& found : workerPairs_) {
+            found.clear();
+        }
+        tasks->parallelFor(moved, kMovedPerPiece, [&](int begin, int end, int worker) {
+            const auto w = static_cast<std::size_t>(worker);
+            findPairs(begin, end, workerPairs_[w], workerQueries_[w]);
+        });
+        for (std::size_t w = 0; w < workers; ++w) {
+            newPairs_.insert(newPairs_.end(), workerPairs_[w].begin(), workerPairs_[w].end());
+            queryCount_ += workerQueries_[w];
         }
     }
     for (const int key : moveBuffer_) {
@@ -219,7 +219,8 @@ void BroadPhase::updatePairs(ShouldPair&& shouldPair, QueryMask&& queryMask) {
     }
     moveBuffer_.clear();
 
-    // Query order depends on tree shape; sorted pairs (and insertion in that order) do not.
+    // Query order depends on tree shape (and on the workers); sorted pairs (and insertion in
+    // that order) do not.
     std::sort(newPairs_.begin(), newPairs_.end(), [](const ProxyPair& x, const ProxyPair& y) {
         return x.userDataA < y.userDataA ||
                (x.userDataA == y.userDataA && x.userDataB < y.userDataB);
@@ -228,6 +229,51 @@ void BroadPhase::updatePairs(ShouldPair&& shouldPair, QueryMask&& queryMask) {
         pairs_.insert({makePairKey(p.userDataA, p.userDataB), p.proxyKeyA, p.proxyKeyB});
         ++info(p.proxyKeyA).pairCount;
         ++info(p.proxyKeyB).pairCount;
+    }
+}
+
+template <class ShouldPair, class QueryMask>
+void BroadPhase::findPairsOf(int key, ShouldPair& shouldPair, QueryMask& queryMask,
+                             std::vector<ProxyPair>& found, int& queries) const {
+    const BodyType type = proxyTypeOf(key);
+    const DynamicTree& own = trees_[treeIndex(key)];
+    const Aabb box = own.aabb(proxyIdOf(key));
+    const std::uint64_t ud = own.userData(proxyIdOf(key));
+    const std::uint64_t mask = queryMask(ud);
+
+    auto queryTree = [&](BodyType otherType) {
+        ++queries;
+        trees_[static_cast<std::size_t>(otherType)].query(
+            box, mask, [&](int otherId, std::uint64_t otherUd) {
+                const int otherKey = makeProxyKey(otherId, otherType);
+                // When both moved, the one with the lower key reports the pair (the queries
+                // are symmetric: each one's query covers the other's tree).
+                if (otherKey == key || (otherKey < key && isMoved(otherKey))) {
+                    return;
+                }
+                const std::uint64_t pairKey = makePairKey(ud, otherUd);
+                if (pairs_.contains(pairKey)) {
+                    return;
+                }
+                const bool mineIsA = ud < otherUd;
+                const std::uint64_t a = mineIsA ? ud : otherUd;
+                const std::uint64_t b = mineIsA ? otherUd : ud;
+                if (!shouldPair(a, b)) {
+                    return;
+                }
+                found.push_back({a, b, mineIsA ? key : otherKey, mineIsA ? otherKey : key});
+            });
+    };
+    switch (type) {
+    case BodyType::Dynamic:
+        queryTree(BodyType::Dynamic);
+        queryTree(BodyType::Kinematic);
+        queryTree(BodyType::Static);
+        break;
+    case BodyType::Kinematic:
+    case BodyType::Static:
+        queryTree(BodyType::Dynamic);
+        break;
     }
 }
 

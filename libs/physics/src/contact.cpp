@@ -169,11 +169,14 @@ bool World::Impl::updateManifold(detail::Contact& c, float dt) const {
 
 void World::Impl::updateContacts(float dt) {
     detail::Simulation& s = sim;
+    // Pair finding on several workers unless the game's pair filter is set (its code is
+    // called from the stepping thread only; shouldPair() alone only reads).
     broadPhase.updatePairs(
         [this](std::uint64_t a, std::uint64_t b) {
             return shouldPair(static_cast<int>(a), static_cast<int>(b));
         },
-        [this](std::uint64_t ud) { return pairQueryMask(static_cast<int>(ud)); });
+        [this](std::uint64_t ud) { return pairQueryMask(static_cast<int>(ud)); },
+        hooks.pairFilter ? nullptr : &tasks);
     for (const detail::ProxyPair& p : broadPhase.newPairs()) {
         createContact(static_cast<int>(p.userDataA), static_cast<int>(p.userDataB));
     }

@@ -224,7 +224,9 @@ bool ContactImpacts::planCandidates(const Simulation& s, float dt) {
         }
     }
 
-    for (int sweepCount = 0; sweepCount < kMaxImpactSweeps && sweep(); ++sweepCount) {
+    int sweeps = 0;
+    while (sweeps < kMaxImpactSweeps && sweep()) {
+        ++sweeps;
     }
     return true;
 }

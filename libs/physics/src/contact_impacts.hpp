@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <e2d/physics/manifold.hpp>
-
 #include "contact_solver.hpp"
 #include "contact_solver_wide.hpp"
 #include "solver_body.hpp"
@@ -27,8 +25,8 @@
 // movable elastic body is an ordinary pair impact (or one against a wall or the ground),
 // which the solve's restitution already resolves exactly (to the bounce height, under
 // gravity). Contacts without restitution never join a row: inelastic scenes, resting stacks
-// and pyramids are untouched, and a step in which nothing elastic is struck costs one test of
-// the elastic list.
+// and pyramids are untouched, and a step in which nothing elastic is struck costs one
+// approach test per contact with restitution (none where there is none).
 namespace e2d::physics::detail {
 
 // How many times at most the sweeps go over a row's contacts. An elastic row of equal bodies
@@ -52,7 +50,7 @@ public:
     bool plan(const Simulation& s, std::span<const ContactConstraint> constraints, float dt);
     bool plan(const Simulation& s, std::span<const WideRestitution> list, float dt);
     // Writes the planned velocities of the struck rows' bodies into s.states, after the
-    // velocity solve (the positions it integrated stay: the row's bodies do not overlap), and
+    // velocity solve (the positions it integrated this step stay), and
     // takes the row contacts' impulses out of next step's warm start: an impact's impulse is
     // not a load that persists, and warm-started it pushed the row apart again (the striker
     // back at 0.48 m/s, a ball forward as fast). Call it after the impulses are stored in the
@@ -69,10 +67,10 @@ private:
         int indexA = -1;
         int indexB = -1;
     };
-    // A contact of a row: its candidate, its sides (indices in bodies_, -1: a side no impulse moves, with
-    // its point's velocity in fixedA/fixedB), the normal and lever arms at the middle of its
-    // points, 1 / effective mass, restitution, whether it is struck (approaching faster than
-    // the threshold and closing within the step) and whether it is in order_ yet.
+    // A contact of a row: its candidate, its sides (indices in bodies_; -1: a side no impulse
+    // moves, its point's velocity in fixedA/fixedB), the normal and lever arms at the middle
+    // of its points, 1 / effective mass, restitution, whether it is struck (approaching faster
+    // than the threshold and closing within the step) and whether it is in order_ yet.
     struct Edge {
         int candidate = -1;
         int bodyA = -1;
@@ -95,8 +93,10 @@ private:
         float invInertia = 0.0f;
         Vec2 linearVelocity{0.0f, 0.0f};
         float angularVelocity = 0.0f;
-        int root = -1;        // union-find over the contacts between two moving bodies
-        int pairs = 0;        // at a root: how many contacts between two moving bodies its set has
+        // Union-find over the contacts between two moving bodies; at a root, how many such
+        // contacts its set has.
+        int root = -1;
+        int pairs = 0;
         bool reached = false; // in a treated row: apply() writes it
     };
 
@@ -108,9 +108,11 @@ private:
     std::vector<Candidate> candidates_;
     std::vector<Edge> edges_;
     std::vector<RowBody> bodies_;
-    std::vector<int> localOf_;   // per BodyState: its index in bodies_, or -1
-    std::vector<int> order_;     // the row contacts in the order the impulse travels
-    std::vector<int> edgeStart_; // bodies' contacts (CSR over edges_)
+    std::vector<int> localOf_; // per BodyState: its index in bodies_, or -1
+    std::vector<int> order_;   // the row contacts in the order the impulse travels
+    // Each body's contacts: bodyEdges_[edgeStart_[b] .. edgeStart_[b + 1]), filled through
+    // fill_.
+    std::vector<int> edgeStart_;
     std::vector<int> bodyEdges_;
     std::vector<int> fill_;
     float threshold_ = 0.0f; // the restitution threshold, m/s

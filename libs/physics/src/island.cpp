@@ -92,25 +92,38 @@ void World::Impl::updateSleep(float dt) {
         join(c);
     }
 
+    // Each body's sleep time on several workers (a body is one worker's), copied next to the
+    // others; each island's least after, alone (a minimum: the same in any order).
     float linearTolSq = def.linearSleepTolerance * def.linearSleepTolerance;
     float angularTol = def.angularSleepTolerance;
+    s.simSleepTime.resize(static_cast<std::size_t>(n));
+    auto sleepTimes = [&](int begin, int end, int /*worker*/) {
+        for (int i = begin; i < end; ++i) {
+            const detail::BodySim& bs = s.sims[static_cast<std::size_t>(i)];
+            detail::Body& b = body(bs.bodyIndex);
+            float& time = s.simSleepTime[static_cast<std::size_t>(i)];
+            if (!b.enabled) {
+                time = kHuge; // disabled this step (non-finite): no say in its island
+                continue;
+            }
+            detail::BodyMotion& m = b.motion;
+            float w = std::abs(b.angularVelocity);
+            if (!m.enableSleep || dot(b.linearVelocity, b.linearVelocity) > linearTolSq ||
+                w > angularTol) {
+                m.sleepTime = 0.0f;
+            } else {
+                m.sleepTime += dt;
+            }
+            time = m.sleepTime;
+        }
+    };
+    // A body is a few nanoseconds: pieces of several microseconds at least.
+    constexpr int kBodiesPerPiece = 1024;
+    tasks.parallelFor(n, kBodiesPerPiece, sleepTimes);
     for (int i = 0; i < n; ++i) {
-        const detail::BodySim& bs = s.sims[static_cast<std::size_t>(i)];
-        detail::Body& b = body(bs.bodyIndex);
-        if (!b.enabled) {
-            continue; // disabled this step (non-finite)
-        }
-        detail::BodyMotion& m = b.motion;
-        float w = std::abs(b.angularVelocity);
-        if (!m.enableSleep || dot(b.linearVelocity, b.linearVelocity) > linearTolSq ||
-            w > angularTol) {
-            m.sleepTime = 0.0f;
-        } else {
-            m.sleepTime += dt;
-        }
         int root = detail::findRoot(s.islandParent, i);
         float& islandTime = s.islandSleepTime[static_cast<std::size_t>(root)];
-        islandTime = std::min(islandTime, m.sleepTime);
+        islandTime = std::min(islandTime, s.simSleepTime[static_cast<std::size_t>(i)]);
     }
     for (int i = 0; i < n; ++i) {
         int root = detail::findRoot(s.islandParent, i);

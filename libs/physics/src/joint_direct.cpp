@@ -35,7 +35,7 @@ struct RowJ {
 // the velocity solve, the accumulated impulse each one adds to (`acc`) and whether that one
 // stays >= 0 (a limit). Position rows: a limit only when violated, its error capped (a bounded
 // push-out). Velocity rows: a revolute joint's nearer limit once it is within the angular slop
-// or pushing, signed so that c >= 0 is allowed.
+// or pushing, signed so that c >= 0 is allowed. A limit's row is always the joint's last.
 int jointRows(Joint& j, const BodyState& a, const BodyState& b, bool velocity, bool released,
               RowJ rows[3], float c[3], float* acc[3], bool oneSided[3], JointErrors& worst) {
     int n = 0;

@@ -226,6 +226,7 @@ struct Simulation {
     bool jointsReused = false;
     std::vector<int> islandParent; // union-find over the awake arrays
     std::vector<float> islandSleepTime;
+    std::vector<float> simSleepTime; // per solver body this step (World::Impl::updateSleep())
     // This step's solver bodies (indices in sims) that updateSleep() put to sleep, ascending,
     // and those the write-back disabled (non-finite or out of range), ascending: the move
     // events are written during the write-back and marked from these.

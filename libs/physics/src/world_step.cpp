@@ -162,8 +162,15 @@ void World::Impl::scheduleWide(int constraintCount) {
     }
     // Eight lanes only pay when levels are wide enough to fill them: a small pile's levels
     // hold a few constraints each, and half-empty groups of eight cost more than full fours.
+    // Only levels that hold constraints count (a block skips the colours it does not use, and
+    // overflow levels start after all colours).
+    int filledLevels = 0;
+    for (int k = 0; k < levelCount; ++k) {
+        const auto at = static_cast<std::size_t>(k);
+        filledLevels += s.levelStart[at + 1] > s.levelStart[at] ? 1 : 0;
+    }
     int lanes = std::min(detail::bestWideLanes(), s.simdLanes);
-    if (lanes > 4 && 2 * count < static_cast<std::size_t>(lanes * levelCount)) {
+    if (lanes > 4 && 2 * count < static_cast<std::size_t>(lanes * filledLevels)) {
         lanes = 4;
     }
     detail::layoutWide(s.wideContacts, s.levelStart, lanes);
@@ -445,8 +452,11 @@ void World::Impl::solve(float dt) {
                             s.contacts[static_cast<std::size_t>(s.slotContact[at])];
                         const detail::ContactBodyView a = viewOf(c.bodyA, s.slotBodies[at].indexA);
                         const detail::ContactBodyView b = viewOf(c.bodyB, s.slotBodies[at].indexB);
-                        in.setLane(lane, c.manifold, a, b, c.friction, softnessOf(a, b));
-                        blockPushOut = blockPushOut || pushedApart(c, a, b);
+                        const detail::Softness laneSoftness = softnessOf(a, b);
+                        in.setLane(lane, c.manifold, a, b, c.friction, laneSoftness);
+                        // pushedApart() on the softness just picked (the wide path is soft-step).
+                        blockPushOut =
+                            blockPushOut || detail::isPushedApart(c.manifold, a, b, laneSoftness);
                         if (c.restitution != 0.0f) {
                             restitution.push_back({level, slot - levelFirst, c.manifold.pointCount,
                                                    c.restitution, pressOf(c, a, b),

@@ -59,7 +59,8 @@ void World::Impl::writeBack(float dt) {
             for (int si = b.headShape; si != kNullIndex; si = shape(si).nextShape) {
                 detail::Shape& sh = shape(si);
                 sh.aabb = computeAabb(sh.geometry, b.transform);
-                if (sh.proxyKey != kNullIndex && broadPhase.needsMove(sh.proxyKey, sh.aabb, ahead)) {
+                if (sh.proxyKey != kNullIndex &&
+                    broadPhase.needsMove(sh.proxyKey, sh.aabb, ahead)) {
                     result = kMoveProxies;
                 }
             }
@@ -88,7 +89,8 @@ void World::Impl::writeBack(float dt) {
             for (int si = b.headShape; si != kNullIndex; si = shape(si).nextShape) {
                 const detail::Shape& sh = shape(si);
                 if (sh.proxyKey != kNullIndex) {
-                    s.counters.proxyMoves += broadPhase.moveProxy(sh.proxyKey, sh.aabb, ahead) ? 1 : 0;
+                    s.counters.proxyMoves +=
+                        broadPhase.moveProxy(sh.proxyKey, sh.aabb, ahead) ? 1 : 0;
                 }
             }
             continue;

@@ -162,6 +162,33 @@ TEST(SolverCradle, UnequalMassesFollowTheSequenceOfBinaryCollisions) {
     }
 }
 
+// Struck from both ends in the same step: the impulses cross in the row and each striker
+// leaves the way it came, at its speed; the row stays at rest. (Breadth first from both
+// struck contacts, the sweeps pass each impulse through the other.)
+TEST(SolverCradle, StruckFromBothEndsBothStrikersBounceBack) {
+    Cradle cradle{6, 2.0f};
+    BodyDef bd;
+    bd.type = BodyType::Dynamic;
+    bd.position = {5.5f, 0.0f}; // as far from the row's far end as the first striker
+    bd.linearVelocity = {-2.0f, 0.0f};
+    ShapeDef sd;
+    sd.friction = 0.0f;
+    sd.restitution = 1.0f;
+    cradle.balls.push_back(cradle.world.createBody(bd));
+    cradle.world.createShape(cradle.balls.back(), sd, Circle{{0.0f, 0.0f}, 0.5f});
+    cradle.masses.push_back(cradle.world.massData(cradle.balls.back()).mass);
+    const float e0 = cradle.energy();
+    for (int i = 0; i < 60; ++i) {
+        cradle.world.step(kStep);
+    }
+    EXPECT_NEAR(cradle.velocity(0), -2.0f, 0.02f);
+    for (std::size_t i = 1; i + 1 < cradle.balls.size(); ++i) {
+        EXPECT_NEAR(cradle.velocity(i), 0.0f, 0.02f) << "ball " << i;
+    }
+    EXPECT_NEAR(cradle.velocity(cradle.balls.size() - 1), 2.0f, 0.02f);
+    EXPECT_NEAR(cradle.energy(), e0, 1e-3f * e0);
+}
+
 // A row of touching elastic balls at rest, and an elastic column standing on elastic ground
 // under gravity: nothing is struck, nothing may start to move.
 TEST(SolverCradle, RestingElasticRowsStayAtRest) {

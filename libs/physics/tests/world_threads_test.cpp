@@ -371,6 +371,40 @@ TEST(WorldThreads, TheGamesJobSystemRunsTheStepWithTheSameResults) {
     EXPECT_GE(jobs.tasks, 150);
 }
 
+// A job system that runs every piece at once inside enqueue, last piece first, each as the
+// worker after the last one's (pieces of minRange items): the order and the worker of every
+// piece as unlike the world's own pool's as it gets, and the same on every run, so what a
+// stage gathers from its workers must not depend on either.
+struct ReversedJobs {
+    int workers = 3;
+    static void* enqueue(TaskFunction task, int itemCount, int minRange, void* taskContext,
+                         void* userContext) {
+        const auto& jobs = *static_cast<const ReversedJobs*>(userContext);
+        const int piece = std::max(minRange, 1);
+        int worker = 0;
+        for (int begin = (itemCount - 1) / piece * piece; begin >= 0; begin -= piece) {
+            task(begin, std::min(begin + piece, itemCount), worker, taskContext);
+            worker = (worker + 1) % jobs.workers;
+        }
+        return nullptr;
+    }
+    static void finish(void* /*userTask*/, void* /*userContext*/) {
+        ADD_FAILURE() << "enqueue ran every piece: finish is not called";
+    }
+};
+
+TEST(WorldThreads, PiecesRunInAnyOrderOnAnyWorkerGiveTheSameSteps) {
+    for (const Case& c : kCases) {
+        ReversedJobs jobs;
+        WorldDef def = threadedDef(jobs.workers, 8, c.mode);
+        def.enqueueTask = ReversedJobs::enqueue;
+        def.finishTask = ReversedJobs::finish;
+        def.userTaskContext = &jobs;
+        EXPECT_EQ(run(def, c.build, c.steps), run(threadedDef(1, 8, c.mode), c.build, c.steps))
+            << c.name;
+    }
+}
+
 TEST(WorldThreads, TheDefIsChecked) {
     E2D_EXPECT_ERROR(World(WorldDef{.workerCount = 0}),
                      "physics::World::World(): def.workerCount must be in [1, 64], got 0");
