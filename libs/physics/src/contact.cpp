@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <new>
 #include <variant>
 
 namespace e2d::physics {
@@ -134,31 +135,35 @@ bool World::Impl::updateManifold(detail::Contact& c, float dt) const {
                     std::abs(ba.angularVelocity) * ba.motion.maxExtent +
                     std::abs(bb.angularVelocity) * bb.motion.maxExtent;
     float margin = std::min(speculativeDistance + dt * closing, 4.0f * kAabbMargin);
-    // Polygon pairs (most of a box scene) call the SAT routine directly, skipping the
-    // dispatch on both geometries.
-    Manifold m = sa.geometry.index() == kPolygonIndex && sb.geometry.index() == kPolygonIndex &&
-                         collisionAlgorithm == CollisionAlgorithm::Sat
-                     ? collidePolygons(*std::get_if<Polygon>(&sa.geometry), ba.transform,
-                                       *std::get_if<Polygon>(&sb.geometry), bb.transform, margin)
-                     : collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
-                               collisionAlgorithm, margin);
-    // Impulses carry over by feature id from the old manifold, read in place.
+    // Last step's impulses by feature id (-1: no point), kept aside so that the new manifold can
+    // be built in place, without a 92-byte copy.
+    struct OldPoint {
+        int id;
+        float normalImpulse;
+        float tangentImpulse;
+    };
     const Manifold& old = c.manifold;
+    const OldPoint old0{old.pointCount > 0 ? old.points[0].id : -1, old.points[0].normalImpulse,
+                        old.points[0].tangentImpulse};
+    const OldPoint old1{old.pointCount > 1 ? old.points[1].id : -1, old.points[1].normalImpulse,
+                        old.points[1].tangentImpulse};
+    // Polygon pairs (most of a box scene) call the SAT routine directly, skipping the
+    // dispatch on both geometries. The routine's result initialises c.manifold directly.
+    Manifold& m = *::new (&c.manifold) Manifold(
+        sa.geometry.index() == kPolygonIndex && sb.geometry.index() == kPolygonIndex &&
+                collisionAlgorithm == CollisionAlgorithm::Sat
+            ? collidePolygons(*std::get_if<Polygon>(&sa.geometry), ba.transform,
+                              *std::get_if<Polygon>(&sb.geometry), bb.transform, margin)
+            : collide(sa.geometry, ba.transform, sb.geometry, bb.transform, collisionAlgorithm,
+                      margin));
+    // Impulses carry over from the first old point with the same id.
     for (int i = 0; i < m.pointCount; ++i) {
         ManifoldPoint& mp = m.points[i];
-        mp.normalImpulse = 0.0f;
-        mp.tangentImpulse = 0.0f;
-        mp.persisted = false;
-        for (int j = 0; j < old.pointCount; ++j) {
-            if (old.points[j].id == mp.id) {
-                mp.normalImpulse = old.points[j].normalImpulse;
-                mp.tangentImpulse = old.points[j].tangentImpulse;
-                mp.persisted = true;
-                break;
-            }
-        }
+        const OldPoint* match = mp.id == old0.id ? &old0 : mp.id == old1.id ? &old1 : nullptr;
+        mp.normalImpulse = match != nullptr ? match->normalImpulse : 0.0f;
+        mp.tangentImpulse = match != nullptr ? match->tangentImpulse : 0.0f;
+        mp.persisted = match != nullptr;
     }
-    c.manifold = m;
     return m.pointCount > 0;
 }
 
@@ -242,7 +247,7 @@ void World::Impl::updateContacts(float dt) {
         const bool awakeB = body(c.bodyB).motion.awake;
         if (update == kAsleep) {
             if (!awakeA && !awakeB) {
-                // Asleep (or asleep against static): nothing moved, the manifold still holds.
+                // kAsleep (or asleep against static): nothing moved, the manifold still holds.
                 listTouching(ci, c);
                 continue;
             }

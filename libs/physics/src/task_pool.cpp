@@ -19,8 +19,7 @@ inline void pause() {
 #endif
 }
 
-// Pauses (about 60 cycles each on the AMD EPYC of CI, 100 us in all) before a waiting thread
-// yields its core, or, outside a step, sleeps.
+// Spins before an idle thread sleeps: about the gap between two stages of a step.
 constexpr int kSpinsBeforeSleep = 4000;
 
 // The claim word: generation (24 bits), piece count and next piece (20 bits each).
@@ -117,57 +116,27 @@ void TaskPool::runPieces(std::uint32_t generation, int worker) {
     }
 }
 
-void TaskPool::beginStep() {
-    if (spins_ == 0) {
-        return;
-    }
-    bool notify = false;
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        inStep_.store(true, std::memory_order_relaxed);
-        notify = sleeping_ > 0;
-    }
-    if (notify) {
-        wake_.notify_all();
-    }
-}
-
-void TaskPool::endStep() { inStep_.store(false, std::memory_order_relaxed); }
-
-bool TaskPool::waitForTask(std::uint32_t seen) {
-    auto published = [this] { return generationOf(claim_.load(std::memory_order_acquire)); };
-    for (;;) {
-        for (int spins = 0; spins < spins_; ++spins) {
-            if (published() != seen) {
-                return true;
-            }
-            pause();
-        }
-        // Inside a step the next stage is near: keep waiting awake, but let any other thread
-        // that wants this core have it.
-        while (inStep_.load(std::memory_order_relaxed)) {
-            if (published() != seen) {
-                return true;
-            }
-            std::this_thread::yield();
-        }
-        std::unique_lock<std::mutex> lock(mutex_);
-        ++sleeping_;
-        wake_.wait(lock, [&] {
-            return stop_ || published() != seen || inStep_.load(std::memory_order_relaxed);
-        });
-        --sleeping_;
-        if (stop_) {
-            return false;
-        }
-    }
-}
-
 void TaskPool::threadMain(int worker) {
     std::uint32_t seen = 0;
-    while (waitForTask(seen)) {
-        seen = generationOf(claim_.load(std::memory_order_acquire));
-        runPieces(seen, worker);
+    auto published = [this] { return generationOf(claim_.load(std::memory_order_acquire)); };
+    for (;;) {
+        std::uint32_t generation = published();
+        for (int spins = 0; generation == seen && spins < spins_; ++spins) {
+            pause();
+            generation = published();
+        }
+        if (generation == seen) {
+            std::unique_lock<std::mutex> lock(mutex_);
+            ++sleeping_;
+            wake_.wait(lock, [&] { return stop_ || published() != seen; });
+            --sleeping_;
+            if (stop_) {
+                return;
+            }
+            generation = published();
+        }
+        seen = generation;
+        runPieces(generation, worker);
     }
 }
 

@@ -18,11 +18,8 @@ namespace e2d::physics::detail {
 
 // workerCount - 1 threads and the caller run one task at a time: the caller publishes it, every
 // worker (the caller as worker 0) claims pieces through one atomic counter until none is left,
-// and the caller returns once every piece has run. Between steps the threads sleep on a
-// condition variable; beginStep() wakes them, so the wake-up (tens of microseconds on a
-// virtual machine) overlaps the step's serial start instead of delaying its first parallel
-// stage, and until endStep() an idle thread waits for the next stage spinning (then yielding):
-// a step's stages are a few hundred microseconds apart at most, less than a sleep and a wake.
+// and the caller returns once every piece has run. Idle threads spin a little (the step's
+// stages follow one another within microseconds), then sleep on a condition variable.
 class TaskPool {
 public:
     explicit TaskPool(int workerCount);
@@ -32,18 +29,11 @@ public:
 
     // Runs task over [0, itemCount) in pieces of pieceSize items; returns when all are done.
     void run(TaskFunction task, int itemCount, int pieceSize, void* context);
-    // A step starts: the threads wake and wait for its stages awake. None when the threads
-    // outnumber the hardware threads (a spinning thread would take time from a working one).
-    void beginStep();
-    // The step is over: idle threads go to sleep at once.
-    void endStep();
 
 private:
     void threadMain(int worker);
     // Claims and runs pieces of task `generation` until none is left.
     void runPieces(std::uint32_t generation, int worker);
-    // Waits until a task newer than `seen` is published, or the pool stops (returns false).
-    bool waitForTask(std::uint32_t seen);
 
     std::vector<std::thread> threads_;
     // Spins before a wait yields or sleeps: none when there are more workers than hardware
@@ -53,8 +43,6 @@ private:
     std::condition_variable wake_;
     int sleeping_ = 0;  // threads waiting on wake_ (mutex_)
     bool stop_ = false; // (mutex_)
-    // Between beginStep() and endStep(): idle threads keep waiting awake.
-    std::atomic<bool> inStep_{false};
     // The task's generation, piece count and next unclaimed piece in one word (see pack()): a
     // piece is claimed by one compare-and-swap that also checks which task it belongs to, so a
     // thread that wakes late never runs a piece twice or reads a newer task's fields for an
@@ -86,27 +74,6 @@ public:
     void configure(int workerCount, EnqueueTaskFunction enqueue, FinishTaskFunction finish,
                    void* userContext);
     [[nodiscard]] int workerCount() const { return workerCount_; }
-
-    // World::step()'s span: the world's own threads are awake inside it (TaskPool::beginStep())
-    // and asleep outside it.
-    class StepScope {
-    public:
-        explicit StepScope(Tasks& tasks) : pool_(tasks.pool_.get()) {
-            if (pool_ != nullptr) {
-                pool_->beginStep();
-            }
-        }
-        ~StepScope() {
-            if (pool_ != nullptr) {
-                pool_->endStep();
-            }
-        }
-        StepScope(const StepScope&) = delete;
-        StepScope& operator=(const StepScope&) = delete;
-
-    private:
-        TaskPool* pool_;
-    };
 
     // Calls body(begin, end, worker) over [0, itemCount) in pieces of at least minRange items
     // (worker in [0, workerCount())); returns when every piece has run. One worker, or too few

@@ -47,7 +47,6 @@ void World::step(float timeStep) {
         detail::Simulation& sim;
         ~InStep() { sim.inStep = false; }
     } inStep{s};
-    const detail::Tasks::StepScope workers(w.tasks);
     w.updateContacts(timeStep);
     if (timeStep > 0.0f) {
         w.solve(timeStep);
