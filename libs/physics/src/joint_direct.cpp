@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace e2d::physics::detail {
 
@@ -214,6 +215,39 @@ constexpr int kActiveSetRounds = 3;
 // far more.
 constexpr std::size_t kWorkPerJoint = 64;
 
+// Sorts w.bodyJoints (body, joint) by body then joint. They were listed in increasing joint,
+// so a bucket sort over the bodies' range gives the same order; a component's bodies are most
+// often a narrow range (a chain's, a ragdoll's), else std::sort.
+void sortBodyJoints(JointDirectScratch& w) {
+    if (w.bodyJoints.empty()) {
+        return;
+    }
+    int low = w.bodyJoints.front().first;
+    int high = low;
+    for (const auto& entry : w.bodyJoints) {
+        low = std::min(low, entry.first);
+        high = std::max(high, entry.first);
+    }
+    const auto range = static_cast<std::size_t>(high - low) + 1;
+    if (range > 4 * w.bodyJoints.size()) {
+        std::sort(w.bodyJoints.begin(), w.bodyJoints.end());
+        return;
+    }
+    w.unsortedBodyJoints.swap(w.bodyJoints);
+    w.bodyJointStart.assign(range + 1, 0);
+    for (const auto& entry : w.unsortedBodyJoints) {
+        ++w.bodyJointStart[static_cast<std::size_t>(entry.first - low) + 1];
+    }
+    for (std::size_t b = 1; b <= range; ++b) {
+        w.bodyJointStart[b] += w.bodyJointStart[b - 1];
+    }
+    w.bodyJoints.resize(w.unsortedBodyJoints.size());
+    for (const auto& entry : w.unsortedBodyJoints) {
+        int& at = w.bodyJointStart[static_cast<std::size_t>(entry.first - low)];
+        w.bodyJoints[static_cast<std::size_t>(at++)] = entry;
+    }
+}
+
 // Builds the rows of the joints `order` and their matrix K = J M^-1 J^T (diagonal blocks and
 // the blocks of joints sharing a body); w.rhs gets -C. Returns the errors met.
 JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
@@ -286,7 +320,7 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
         }
     }
     // The joints of each moving body, to find which joints share one.
-    std::sort(w.bodyJoints.begin(), w.bodyJoints.end());
+    sortBodyJoints(w);
     // Off-diagonal blocks: joints p and q sharing body s couple through it.
     auto side = [&](std::size_t p, int s, Vec2(&lin)[3], float(&ang)[3], Vec2& invMass,
                     float& invInertia) {
@@ -350,16 +384,34 @@ bool factor(JointDirectScratch& w) {
     w.order.clear();
     w.inverseDiag.resize(n);
     w.factor.resize(n);
+    // The queue holds (degree, joint) for every joint left, with its current degree (a joint's
+    // degree changes only when a neighbour is eliminated, and then it is pushed again), so the
+    // least valid entry is the least degree, ties the lower index.
+    const std::greater<std::pair<int, int>> later;
+    w.eliminated.assign(n, 0);
     w.queue.clear();
     for (std::size_t p = 0; p < n; ++p) {
-        w.queue.insert({static_cast<int>(w.adjacency[p].size()), static_cast<int>(p)});
+        w.queue.emplace_back(static_cast<int>(w.adjacency[p].size()), static_cast<int>(p));
     }
+    std::make_heap(w.queue.begin(), w.queue.end(), later);
+    auto next = [&]() -> int {
+        while (!w.queue.empty()) {
+            std::pop_heap(w.queue.begin(), w.queue.end(), later);
+            const auto [degree, p] = w.queue.back();
+            w.queue.pop_back();
+            const auto i = static_cast<std::size_t>(p);
+            if (w.eliminated[i] == 0 && static_cast<std::size_t>(degree) == w.adjacency[i].size()) {
+                return p;
+            }
+        }
+        return -1;
+    };
     // The work of an elimination grows with the square of its neighbours: budget that.
     const std::size_t budget = kWorkPerJoint * n + 64;
     std::size_t work = 0;
-    while (!w.queue.empty()) {
-        const auto p = static_cast<std::size_t>(w.queue.begin()->second);
-        w.queue.erase(w.queue.begin());
+    for (int next_p = next(); next_p >= 0; next_p = next()) {
+        const auto p = static_cast<std::size_t>(next_p);
+        w.eliminated[p] = 1;
         w.order.push_back(static_cast<int>(p));
         const Block dInv = inverse(w.diag[p]);
         w.inverseDiag[p] = dInv;
@@ -368,10 +420,6 @@ bool factor(JointDirectScratch& w) {
         work += neighbours.size() * neighbours.size();
         if (work > budget) {
             return false;
-        }
-        for (const auto& ei : neighbours) {
-            const auto i = static_cast<std::size_t>(ei.node);
-            w.queue.erase({static_cast<int>(w.adjacency[i].size()), ei.node});
         }
         // Schur complement: A_ik -= A_ip D^-1 A_pk for the remaining neighbours i, k.
         for (const auto& ei : neighbours) {
@@ -399,8 +447,9 @@ bool factor(JointDirectScratch& w) {
             }
         }
         for (const auto& ei : neighbours) {
-            w.queue.insert(
-                {static_cast<int>(w.adjacency[static_cast<std::size_t>(ei.node)].size()), ei.node});
+            w.queue.emplace_back(
+                static_cast<int>(w.adjacency[static_cast<std::size_t>(ei.node)].size()), ei.node);
+            std::push_heap(w.queue.begin(), w.queue.end(), later);
         }
     }
     return true;
