@@ -263,6 +263,8 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
         list.clear();
     }
     w.bodyJoints.clear();
+    w.componentKey = n > 0 ? order.front() : -1;
+    w.componentBodies.resize(n);
     JointErrors worst;
     const BodyState fixedState{};
     auto stateOf = [&](int index) -> const BodyState& {
@@ -270,6 +272,7 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
     };
     for (std::size_t p = 0; p < n; ++p) {
         Joint& j = joints[static_cast<std::size_t>(order[p])];
+        w.componentBodies[p] = {j.indexA, j.indexB};
         float c[3] = {0.0f, 0.0f, 0.0f};
         JointDirectScratch::Rows& r = w.rows[p];
         RowJ rows[3];
@@ -387,14 +390,25 @@ bool factor(JointDirectScratch& w) {
     // The queue holds (degree, joint) for every joint left, with its current degree (a joint's
     // degree changes only when a neighbour is eliminated, and then it is pushed again), so the
     // least valid entry is the least degree, ties the lower index.
+    // The order depends on the joints' bodies alone (the blocks' pattern, fill-in included,
+    // not their values): a component whose bodies are those of its last factorisation replays
+    // that order instead.
     const std::greater<std::pair<int, int>> later;
+    JointDirectScratch::KnownOrder& known = w.knownOrders[w.componentKey];
+    const bool replay = known.bodies == w.componentBodies;
+    std::size_t replayed = 0;
     w.eliminated.assign(n, 0);
     w.queue.clear();
-    for (std::size_t p = 0; p < n; ++p) {
-        w.queue.emplace_back(static_cast<int>(w.adjacency[p].size()), static_cast<int>(p));
+    if (!replay) {
+        for (std::size_t p = 0; p < n; ++p) {
+            w.queue.emplace_back(static_cast<int>(w.adjacency[p].size()), static_cast<int>(p));
+        }
+        std::make_heap(w.queue.begin(), w.queue.end(), later);
     }
-    std::make_heap(w.queue.begin(), w.queue.end(), later);
     auto next = [&]() -> int {
+        if (replay) {
+            return replayed < known.order.size() ? known.order[replayed++] : -1;
+        }
         while (!w.queue.empty()) {
             std::pop_heap(w.queue.begin(), w.queue.end(), later);
             const auto [degree, p] = w.queue.back();
@@ -447,10 +461,17 @@ bool factor(JointDirectScratch& w) {
             }
         }
         for (const auto& ei : neighbours) {
-            w.queue.emplace_back(
-                static_cast<int>(w.adjacency[static_cast<std::size_t>(ei.node)].size()), ei.node);
-            std::push_heap(w.queue.begin(), w.queue.end(), later);
+            if (!replay) {
+                w.queue.emplace_back(
+                    static_cast<int>(w.adjacency[static_cast<std::size_t>(ei.node)].size()),
+                    ei.node);
+                std::push_heap(w.queue.begin(), w.queue.end(), later);
+            }
         }
+    }
+    if (!replay) {
+        known.bodies = w.componentBodies;
+        known.order = w.order;
     }
     return true;
 }
