@@ -193,6 +193,22 @@ void mulVec(const Block& x, const double v[3], double out[3]) {
         out[i] = x[3 * i] * v[0] + x[3 * i + 1] * v[1] + x[3 * i + 2] * v[2];
     }
 }
+// mulVec(transposed(x), v, out) without the copy (the same products and sums).
+void mulTransposedVec(const Block& x, const double v[3], double out[3]) {
+    for (int i = 0; i < 3; ++i) {
+        out[i] = x[i] * v[0] + x[3 + i] * v[1] + x[6 + i] * v[2];
+    }
+}
+// mul(transposed(x), y) without the copy (the same products and sums).
+Block mulTransposed(const Block& x, const Block& y) {
+    Block r{};
+    for (int i = 0; i < 3; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            r[3 * i + k] = x[i] * y[k] + x[3 + i] * y[3 + k] + x[6 + i] * y[6 + k];
+        }
+    }
+    return r;
+}
 
 // Adds x to block (p, q) of the remaining matrix.
 void addBlock(JointDirectScratch& w, std::size_t p, int q, const Block& x) {
@@ -444,7 +460,7 @@ bool factor(JointDirectScratch& w) {
                                           return e.node == static_cast<int>(p);
                                       }),
                        list.end());
-            const Block left = mul(transposed(ei.block), dInv);
+            const Block left = mulTransposed(ei.block, dInv);
             for (const auto& ek : neighbours) {
                 const Block update = mul(left, ek.block);
                 if (ek.node == ei.node) {
@@ -485,7 +501,7 @@ void solveFactored(JointDirectScratch& w) {
         mulVec(w.inverseDiag[p], w.rhs[p].data(), z);
         for (const auto& e : w.factor[p]) {
             double u[3];
-            mulVec(transposed(e.block), z, u);
+            mulTransposedVec(e.block, z, u);
             for (std::size_t m = 0; m < 3; ++m) {
                 w.rhs[static_cast<std::size_t>(e.node)][m] -= u[m];
             }
