@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace e2d::physics::detail {
 
@@ -192,6 +193,22 @@ void mulVec(const Block& x, const double v[3], double out[3]) {
         out[i] = x[3 * i] * v[0] + x[3 * i + 1] * v[1] + x[3 * i + 2] * v[2];
     }
 }
+// mulVec(transposed(x), v, out) without the copy (the same products and sums).
+void mulTransposedVec(const Block& x, const double v[3], double out[3]) {
+    for (int i = 0; i < 3; ++i) {
+        out[i] = x[i] * v[0] + x[3 + i] * v[1] + x[6 + i] * v[2];
+    }
+}
+// mul(transposed(x), y) without the copy (the same products and sums).
+Block mulTransposed(const Block& x, const Block& y) {
+    Block r{};
+    for (int i = 0; i < 3; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            r[3 * i + k] = x[i] * y[k] + x[3 + i] * y[3 + k] + x[6 + i] * y[6 + k];
+        }
+    }
+    return r;
+}
 
 // Adds x to block (p, q) of the remaining matrix.
 void addBlock(JointDirectScratch& w, std::size_t p, int q, const Block& x) {
@@ -214,6 +231,39 @@ constexpr int kActiveSetRounds = 3;
 // far more.
 constexpr std::size_t kWorkPerJoint = 64;
 
+// Sorts w.bodyJoints (body, joint) by body then joint. They were listed in increasing joint,
+// so a bucket sort over the bodies' range gives the same order; a component's bodies are most
+// often a narrow range (a chain's, a ragdoll's), else std::sort.
+void sortBodyJoints(JointDirectScratch& w) {
+    if (w.bodyJoints.empty()) {
+        return;
+    }
+    int low = w.bodyJoints.front().first;
+    int high = low;
+    for (const auto& entry : w.bodyJoints) {
+        low = std::min(low, entry.first);
+        high = std::max(high, entry.first);
+    }
+    const auto range = static_cast<std::size_t>(high - low) + 1;
+    if (range > 4 * w.bodyJoints.size()) {
+        std::sort(w.bodyJoints.begin(), w.bodyJoints.end());
+        return;
+    }
+    w.unsortedBodyJoints.swap(w.bodyJoints);
+    w.bodyJointStart.assign(range + 1, 0);
+    for (const auto& entry : w.unsortedBodyJoints) {
+        ++w.bodyJointStart[static_cast<std::size_t>(entry.first - low) + 1];
+    }
+    for (std::size_t b = 1; b <= range; ++b) {
+        w.bodyJointStart[b] += w.bodyJointStart[b - 1];
+    }
+    w.bodyJoints.resize(w.unsortedBodyJoints.size());
+    for (const auto& entry : w.unsortedBodyJoints) {
+        int& at = w.bodyJointStart[static_cast<std::size_t>(entry.first - low)];
+        w.bodyJoints[static_cast<std::size_t>(at++)] = entry;
+    }
+}
+
 // Builds the rows of the joints `order` and their matrix K = J M^-1 J^T (diagonal blocks and
 // the blocks of joints sharing a body); w.rhs gets -C. Returns the errors met.
 JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
@@ -229,6 +279,8 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
         list.clear();
     }
     w.bodyJoints.clear();
+    w.componentKey = n > 0 ? order.front() : -1;
+    w.componentBodies.resize(n);
     JointErrors worst;
     const BodyState fixedState{};
     auto stateOf = [&](int index) -> const BodyState& {
@@ -236,6 +288,7 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
     };
     for (std::size_t p = 0; p < n; ++p) {
         Joint& j = joints[static_cast<std::size_t>(order[p])];
+        w.componentBodies[p] = {j.indexA, j.indexB};
         float c[3] = {0.0f, 0.0f, 0.0f};
         JointDirectScratch::Rows& r = w.rows[p];
         RowJ rows[3];
@@ -286,7 +339,7 @@ JointErrors assemble(std::span<Joint> joints, std::span<const int> order,
         }
     }
     // The joints of each moving body, to find which joints share one.
-    std::sort(w.bodyJoints.begin(), w.bodyJoints.end());
+    sortBodyJoints(w);
     // Off-diagonal blocks: joints p and q sharing body s couple through it.
     auto side = [&](std::size_t p, int s, Vec2(&lin)[3], float(&ang)[3], Vec2& invMass,
                     float& invInertia) {
@@ -350,16 +403,45 @@ bool factor(JointDirectScratch& w) {
     w.order.clear();
     w.inverseDiag.resize(n);
     w.factor.resize(n);
+    // The queue holds (degree, joint) for every joint left, with its current degree (a joint's
+    // degree changes only when a neighbour is eliminated, and then it is pushed again), so the
+    // least valid entry is the least degree, ties the lower index.
+    // The order depends on the joints' bodies alone (the blocks' pattern, fill-in included,
+    // not their values): a component whose bodies are those of its last factorisation replays
+    // that order instead.
+    const std::greater<std::pair<int, int>> later;
+    JointDirectScratch::KnownOrder& known = w.knownOrders[w.componentKey];
+    const bool replay = known.bodies == w.componentBodies;
+    std::size_t replayed = 0;
+    w.eliminated.assign(n, 0);
     w.queue.clear();
-    for (std::size_t p = 0; p < n; ++p) {
-        w.queue.insert({static_cast<int>(w.adjacency[p].size()), static_cast<int>(p)});
+    if (!replay) {
+        for (std::size_t p = 0; p < n; ++p) {
+            w.queue.emplace_back(static_cast<int>(w.adjacency[p].size()), static_cast<int>(p));
+        }
+        std::make_heap(w.queue.begin(), w.queue.end(), later);
     }
+    auto next = [&]() -> int {
+        if (replay) {
+            return replayed < known.order.size() ? known.order[replayed++] : -1;
+        }
+        while (!w.queue.empty()) {
+            std::pop_heap(w.queue.begin(), w.queue.end(), later);
+            const auto [degree, p] = w.queue.back();
+            w.queue.pop_back();
+            const auto i = static_cast<std::size_t>(p);
+            if (w.eliminated[i] == 0 && static_cast<std::size_t>(degree) == w.adjacency[i].size()) {
+                return p;
+            }
+        }
+        return -1;
+    };
     // The work of an elimination grows with the square of its neighbours: budget that.
     const std::size_t budget = kWorkPerJoint * n + 64;
     std::size_t work = 0;
-    while (!w.queue.empty()) {
-        const auto p = static_cast<std::size_t>(w.queue.begin()->second);
-        w.queue.erase(w.queue.begin());
+    for (int next_p = next(); next_p >= 0; next_p = next()) {
+        const auto p = static_cast<std::size_t>(next_p);
+        w.eliminated[p] = 1;
         w.order.push_back(static_cast<int>(p));
         const Block dInv = inverse(w.diag[p]);
         w.inverseDiag[p] = dInv;
@@ -368,10 +450,6 @@ bool factor(JointDirectScratch& w) {
         work += neighbours.size() * neighbours.size();
         if (work > budget) {
             return false;
-        }
-        for (const auto& ei : neighbours) {
-            const auto i = static_cast<std::size_t>(ei.node);
-            w.queue.erase({static_cast<int>(w.adjacency[i].size()), ei.node});
         }
         // Schur complement: A_ik -= A_ip D^-1 A_pk for the remaining neighbours i, k.
         for (const auto& ei : neighbours) {
@@ -382,7 +460,7 @@ bool factor(JointDirectScratch& w) {
                                           return e.node == static_cast<int>(p);
                                       }),
                        list.end());
-            const Block left = mul(transposed(ei.block), dInv);
+            const Block left = mulTransposed(ei.block, dInv);
             for (const auto& ek : neighbours) {
                 const Block update = mul(left, ek.block);
                 if (ek.node == ei.node) {
@@ -399,9 +477,17 @@ bool factor(JointDirectScratch& w) {
             }
         }
         for (const auto& ei : neighbours) {
-            w.queue.insert(
-                {static_cast<int>(w.adjacency[static_cast<std::size_t>(ei.node)].size()), ei.node});
+            if (!replay) {
+                w.queue.emplace_back(
+                    static_cast<int>(w.adjacency[static_cast<std::size_t>(ei.node)].size()),
+                    ei.node);
+                std::push_heap(w.queue.begin(), w.queue.end(), later);
+            }
         }
+    }
+    if (!replay) {
+        known.bodies = w.componentBodies;
+        known.order = w.order;
     }
     return true;
 }
@@ -415,7 +501,7 @@ void solveFactored(JointDirectScratch& w) {
         mulVec(w.inverseDiag[p], w.rhs[p].data(), z);
         for (const auto& e : w.factor[p]) {
             double u[3];
-            mulVec(transposed(e.block), z, u);
+            mulTransposedVec(e.block, z, u);
             for (std::size_t m = 0; m < 3; ++m) {
                 w.rhs[static_cast<std::size_t>(e.node)][m] -= u[m];
             }

@@ -13,8 +13,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
-#include <set>
 #include <span>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -350,9 +350,23 @@ struct JointDirectScratch {
     std::vector<std::vector<Entry>> adjacency;   // the remaining matrix's blocks by row
     std::vector<std::vector<Entry>> factor;      // each joint's blocks when it was eliminated
     std::vector<std::pair<int, int>> bodyJoints; // (body state, joint) of the moving sides
+    std::vector<int> bodyJointStart;             // per body in the range: its first in bodyJoints
+    std::vector<std::pair<int, int>> unsortedBodyJoints; // bodyJoints before the bucket sort
     std::vector<int> order;
-    std::set<std::pair<int, int>> queue; // (degree, joint) of the joints not eliminated yet
-    std::vector<std::uint8_t> released;  // joints whose limit row the velocity solve let go
+    // A min-heap of (degree, joint) of the joints not eliminated yet; an entry whose degree is
+    // no longer its joint's, or whose joint was eliminated, is stale and skipped.
+    std::vector<std::pair<int, int>> queue;
+    std::vector<std::uint8_t> eliminated; // per joint: taken out of the queue
+    // The elimination order of each component (by its first slot) at its last successful
+    // factorisation, and the (indexA, indexB) of its joints then, which alone decide it.
+    struct KnownOrder {
+        std::vector<std::pair<int, int>> bodies;
+        std::vector<int> order;
+    };
+    std::unordered_map<int, KnownOrder> knownOrders;
+    int componentKey = -1;                            // the assembled component's first slot
+    std::vector<std::pair<int, int>> componentBodies; // its joints' (indexA, indexB)
+    std::vector<std::uint8_t> released; // joints whose limit row the velocity solve let go
     // The velocity solve's limits (joint, row) and their Schur complement over the other rows:
     // each limit's column of K over the other rows (n x 3 per limit), that column solved with
     // the factor, the limits' own K and the complement S (m x m), the other rows' impulse with
