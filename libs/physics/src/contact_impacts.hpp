@@ -102,6 +102,8 @@ private:
 
     bool planCandidates(const Simulation& s, float dt);
     int localBody(int state, const Simulation& s);
+    // Kinetic energy of a row body at the given velocities, J (a fixed axis counts nothing).
+    static double kineticEnergy(const RowBody& b, Vec2 v, float w);
     int findRoot(int body);
     bool sweep();
 
