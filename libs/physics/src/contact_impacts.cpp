@@ -60,6 +60,7 @@ bool ContactImpacts::plan(const Simulation& s, std::span<const WideRestitution> 
 
 bool ContactImpacts::planCandidates(const Simulation& s, float dt) {
     bodies_.clear();
+    rowParent_.clear();
     const float threshold = s.def.restitutionThreshold;
     threshold_ = threshold;
     // A side's centre offset and velocity at the step's start (zero for a static or sleeping
@@ -161,16 +162,16 @@ bool ContactImpacts::planCandidates(const Simulation& s, float dt) {
     // is a pair impact (against the ground or a wall, maybe), which the solve gets right.
     for (const Edge& e : edges_) {
         if (e.bodyA >= 0 && e.bodyB >= 0) {
-            const int ra = findRoot(e.bodyA);
-            const int rb = findRoot(e.bodyB);
+            const int ra = findRoot(rowParent_, e.bodyA);
+            const int rb = findRoot(rowParent_, e.bodyB);
             if (ra != rb) {
-                bodies_[static_cast<std::size_t>(std::max(ra, rb))].root = std::min(ra, rb);
+                rowParent_[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
             }
         }
     }
     for (const Edge& e : edges_) {
         if (e.bodyA >= 0 && e.bodyB >= 0) {
-            ++bodies_[static_cast<std::size_t>(findRoot(e.bodyA))].pairs;
+            ++bodies_[static_cast<std::size_t>(findRoot(rowParent_, e.bodyA))].pairs;
         }
     }
 
@@ -179,7 +180,7 @@ bool ContactImpacts::planCandidates(const Simulation& s, float dt) {
     for (std::size_t i = 0; i < edges_.size(); ++i) {
         Edge& e = edges_[i];
         const int body = e.bodyA >= 0 ? e.bodyA : e.bodyB;
-        if (e.struck && bodies_[static_cast<std::size_t>(findRoot(body))].pairs >= 2) {
+        if (e.struck && bodies_[static_cast<std::size_t>(findRoot(rowParent_, body))].pairs >= 2) {
             e.visited = true;
             order_.push_back(static_cast<int>(i));
         }
@@ -260,19 +261,11 @@ int ContactImpacts::localBody(int state, const Simulation& s) {
         local = static_cast<int>(bodies_.size());
         const BodySim& sim = s.sims[static_cast<std::size_t>(state)];
         const BodyState& st = s.states[static_cast<std::size_t>(state)];
-        bodies_.push_back({state, sim.invMass, sim.invInertia, st.linearVelocity,
-                           st.angularVelocity, local, 0, false});
+        bodies_.push_back(
+            {state, sim.invMass, sim.invInertia, st.linearVelocity, st.angularVelocity, 0, false});
+        rowParent_.push_back(local);
     }
     return local;
-}
-
-int ContactImpacts::findRoot(int body) {
-    while (bodies_[static_cast<std::size_t>(body)].root != body) {
-        RowBody& b = bodies_[static_cast<std::size_t>(body)];
-        b.root = bodies_[static_cast<std::size_t>(b.root)].root;
-        body = b.root;
-    }
-    return body;
 }
 
 // One pass over the row contacts in order_, each approaching pair colliding on its own: the

@@ -93,9 +93,7 @@ private:
         float invInertia = 0.0f;
         Vec2 linearVelocity{0.0f, 0.0f};
         float angularVelocity = 0.0f;
-        // Union-find over the contacts between two moving bodies; at a root, how many such
-        // contacts its set has.
-        int root = -1;
+        // At a root of rowParent_, how many contacts between two moving bodies its set has.
         int pairs = 0;
         bool reached = false; // in a treated row: apply() writes it
     };
@@ -104,12 +102,13 @@ private:
     int localBody(int state, const Simulation& s);
     // Kinetic energy of a row body at the given velocities, J (a fixed axis counts nothing).
     static double kineticEnergy(const RowBody& b, Vec2 v, float w);
-    int findRoot(int body);
     bool sweep();
 
     std::vector<Candidate> candidates_;
     std::vector<Edge> edges_;
     std::vector<RowBody> bodies_;
+    // Union-find over bodies_ by the contacts between two moving bodies (detail::findRoot).
+    std::vector<int> rowParent_;
     std::vector<int> localOf_; // per BodyState: its index in bodies_, or -1
     std::vector<int> order_;   // the row contacts in the order the impulse travels
     // Each body's contacts: bodyEdges_[edgeStart_[b] .. edgeStart_[b + 1]), filled through
