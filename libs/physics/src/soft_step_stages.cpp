@@ -11,8 +11,8 @@ namespace {
 constexpr int kMinGroupsPerBlock = 4;
 constexpr int kMinBodiesPerBlock = 64;
 // Blocks per worker and stage at most: enough that a worker slowed by the rest of the machine
-// leaves little for the others to wait on.
-constexpr int kBlocksPerWorker = 4;
+// leaves little for the others to wait on at the end of each stage.
+constexpr int kBlocksPerWorker = 8;
 
 // Appends the stages of forEachSoftStepPass()'s passes.
 struct StageList {

@@ -115,6 +115,9 @@ void World::Impl::scheduleWide(int constraintCount) {
     }
     s.islandBlock.assign(n, -1);
     s.blockLevelStart.assign(1, 0); // level counts first, made starts below
+    // Per block, whether a constraint has a rigid side with a state (a kinematic body): one
+    // level may then hold several constraints writing that state.
+    s.blockRigid.clear();
     int blockCount = 0;
     int blockSize = 0;
     for (std::size_t k = 0; k < count; ++k) {
@@ -124,23 +127,18 @@ void World::Impl::scheduleWide(int constraintCount) {
                 ++blockCount;
                 blockSize = 0;
                 s.blockLevelStart.push_back(0);
+                s.blockRigid.push_back(0);
             }
             s.islandBlock[root] = blockCount - 1;
             blockSize += s.islandConstraints[root];
         }
-        int& levels = s.blockLevelStart[static_cast<std::size_t>(s.islandBlock[root]) + 1];
+        const auto block = static_cast<std::size_t>(s.islandBlock[root]);
+        int& levels = s.blockLevelStart[block + 1];
         levels = std::max(levels, s.constraintLevel[k] + 1);
-    }
-    // Whether a block's constraints have a rigid side with a state (a kinematic body): one
-    // level may then hold several constraints writing that state.
-    s.blockRigid.assign(static_cast<std::size_t>(blockCount), 0);
-    for (std::size_t k = 0; k < count; ++k) {
         const detail::Simulation::ConstraintBodies& cb = s.constraintBodies[k];
-        if ((cb.indexA >= 0 && s.stateRigid[static_cast<std::size_t>(cb.indexA)] != 0) ||
-            (cb.indexB >= 0 && s.stateRigid[static_cast<std::size_t>(cb.indexB)] != 0)) {
-            s.blockRigid[static_cast<std::size_t>(
-                s.islandBlock[static_cast<std::size_t>(s.constraintIsland[k])])] = 1;
-        }
+        s.blockRigid[block] |= static_cast<unsigned char>(
+            (cb.indexA >= 0 && s.stateRigid[static_cast<std::size_t>(cb.indexA)] != 0) ||
+            (cb.indexB >= 0 && s.stateRigid[static_cast<std::size_t>(cb.indexB)] != 0));
     }
     // Block `blockCount` holds the bodies no constraint touches: no levels.
     for (int b = 0; b < blockCount; ++b) {
