@@ -158,8 +158,8 @@ void StageRunner::reset(std::span<const int> blockCounts, int workerCount) {
         stages_[k].done.store(0, std::memory_order_relaxed);
         stages_[k].blocks = blocks;
         for (int w = 0; w < workers_; ++w) {
-            Range& range = ranges_[k * static_cast<std::size_t>(workers_) +
-                                   static_cast<std::size_t>(w)];
+            Range& range =
+                ranges_[k * static_cast<std::size_t>(workers_) + static_cast<std::size_t>(w)];
             range.next.store(blocks * w / workers_, std::memory_order_relaxed);
             range.end = blocks * (w + 1) / workers_;
         }
