@@ -209,8 +209,8 @@ void World::Impl::updateContacts(float dt) {
             unsigned char& update = s.contactUpdates[static_cast<std::size_t>(ci)];
             if (!c.alive) {
                 update = kDead;
-            } else if (!overlaps(broadPhase.fatAabb(shape(c.shapeA).proxyKey),
-                                 broadPhase.fatAabb(shape(c.shapeB).proxyKey))) {
+            } else if (!overlaps(broadPhase.fatAabbOfLive(shape(c.shapeA).proxyKey),
+                                 broadPhase.fatAabbOfLive(shape(c.shapeB).proxyKey))) {
                 update = kApart;
             } else if (!body(c.bodyA).motion.awake && !body(c.bodyB).motion.awake) {
                 update = kAsleep;
