@@ -20,6 +20,7 @@ namespace {
 int sideOf(const detail::Contact& c, int bodyIndex) { return c.bodyA == bodyIndex ? 0 : 1; }
 
 constexpr std::size_t kPolygonIndex = static_cast<std::size_t>(ShapeType::Polygon);
+constexpr std::size_t kCircleIndex = static_cast<std::size_t>(ShapeType::Circle);
 
 } // namespace
 
@@ -147,13 +148,18 @@ bool World::Impl::updateManifold(detail::Contact& c, float dt) const {
                         old.points[0].tangentImpulse};
     const OldPoint old1{old.pointCount > 1 ? old.points[1].id : -1, old.points[1].normalImpulse,
                         old.points[1].tangentImpulse};
-    // Polygon pairs (most of a box scene) call the SAT routine directly, skipping the
-    // dispatch on both geometries. The routine's result initialises c.manifold directly.
+    // Polygon pairs (most of a box scene) and circle pairs (most of a ball pit) call their
+    // routine directly, skipping collide()'s dispatch on both geometries (about 30
+    // instructions a circle pair). The routine's result initialises c.manifold directly.
+    const std::size_t type = sa.geometry.index();
+    const bool sameType = type == sb.geometry.index();
     Manifold& m = *::new (&c.manifold) Manifold(
-        sa.geometry.index() == kPolygonIndex && sb.geometry.index() == kPolygonIndex &&
-                collisionAlgorithm == CollisionAlgorithm::Sat
+        sameType && type == kPolygonIndex && collisionAlgorithm == CollisionAlgorithm::Sat
             ? collidePolygons(*std::get_if<Polygon>(&sa.geometry), ba.transform,
                               *std::get_if<Polygon>(&sb.geometry), bb.transform, margin)
+        : sameType && type == kCircleIndex
+            ? collideCircles(*std::get_if<Circle>(&sa.geometry), ba.transform,
+                             *std::get_if<Circle>(&sb.geometry), bb.transform, margin)
             : collide(sa.geometry, ba.transform, sb.geometry, bb.transform, collisionAlgorithm,
                       margin));
     // Impulses carry over from the first old point with the same id.
