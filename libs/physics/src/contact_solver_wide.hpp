@@ -57,6 +57,7 @@ struct alignas(4 * N) WideConstraintT {
     // well). Other lanes hold K = identity.
     F k11, k12, k22, inv11, inv12, inv22;
     I blockSolve;
+    I twoPoints; // all ones where the lane has a second point
     WidePointT<N> points[2];
 };
 
