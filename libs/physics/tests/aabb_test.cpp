@@ -30,8 +30,8 @@ Aabb referenceAabb(const Polygon& shape, const Transform& xf) {
 void expectSameBits(const Aabb& got, const Aabb& want, int count) {
     EXPECT_EQ(std::memcmp(&got, &want, sizeof(Aabb)), 0)
         << count << " vertices: got (" << got.lower.x << ", " << got.lower.y << ") - ("
-        << got.upper.x << ", " << got.upper.y << "), want (" << want.lower.x << ", "
-        << want.lower.y << ") - (" << want.upper.x << ", " << want.upper.y << ")";
+        << got.upper.x << ", " << got.upper.y << "), want (" << want.lower.x << ", " << want.lower.y
+        << ") - (" << want.upper.x << ", " << want.upper.y << ")";
 }
 
 TEST(ComputeAabb, PolygonMatchesPerVertexTransformBitForBit) {
