@@ -232,7 +232,9 @@ void World::Impl::solve(float dt) {
             continue;
         }
         const auto k = static_cast<std::size_t>(m.solverIndex);
-        const Vec2 center = transformPoint(b.transform, m.localCenter);
+        // transformPoint(), its rotation kept for the contacts (viewOf()).
+        const Vec2 centerOffset = rotate(b.transform.q, m.localCenter);
+        const Vec2 center = centerOffset + b.transform.p;
         const Vec2 invMass{m.lockX ? 0.0f : m.invMass, m.lockY ? 0.0f : m.invMass};
         s.sims[k] = detail::BodySim{
             .transform = b.transform,
@@ -240,6 +242,7 @@ void World::Impl::solve(float dt) {
             .center0 = center,
             .rotation0 = b.transform.q,
             .localCenter = m.localCenter,
+            .centerOffset = centerOffset,
             .force = m.force,
             .torque = m.torque,
             .invMass = invMass,
@@ -270,22 +273,20 @@ void World::Impl::solve(float dt) {
     // A contact's side as prepareContact() sees it: body `bodyIndex`, `solverIndex` its place
     // in this step's arrays (kNullIndex: static or asleep, read from the body itself).
     auto viewOf = [&](int bodyIndex, int solverIndex) {
-        detail::ContactBodyView v;
         if (solverIndex == kNullIndex) {
             const detail::Body& b = body(bodyIndex);
-            v.centerOffset = rotate(b.transform.q, b.motion.localCenter);
-            return v;
+            return detail::ContactBodyView{.centerOffset =
+                                               rotate(b.transform.q, b.motion.localCenter)};
         }
-        // The step's copy of the body's transform and centre: the same values, nearer.
+        // The step's copy of the body (its centre offset rotated once for all its contacts).
         const detail::BodySim& bs = s.sims[static_cast<std::size_t>(solverIndex)];
         const detail::BodyState& st = s.states[static_cast<std::size_t>(solverIndex)];
-        v.centerOffset = rotate(bs.transform.q, bs.localCenter);
-        v.linearVelocity = st.linearVelocity;
-        v.angularVelocity = st.angularVelocity;
-        v.invMass = bs.invMass;
-        v.invInertia = bs.invInertia;
-        v.stateIndex = solverIndex;
-        return v;
+        return detail::ContactBodyView{.centerOffset = bs.centerOffset,
+                                       .linearVelocity = st.linearVelocity,
+                                       .angularVelocity = st.angularVelocity,
+                                       .invMass = bs.invMass,
+                                       .invInertia = bs.invInertia,
+                                       .stateIndex = solverIndex};
     };
     auto isRigid = [](const detail::ContactBodyView& v) {
         return v.invMass.x == 0.0f && v.invMass.y == 0.0f && v.invInertia == 0.0f;
