@@ -388,35 +388,45 @@ void solveSoftStep(const SolverStep& step) {
 void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLevel, int endLevel,
                         std::span<const int> bodies, std::span<const WideRestitution> restitution,
                         std::span<const int> blockJoints) {
-    const SolverDef& def = *step.def;
-    float h = step.dt / static_cast<float>(def.subSteps);
-    float invH = 1.0f / h;
-    const int relaxIterations = def.relaxIterations + step.extraRelaxIterations;
-    // The same passes and orders as solveSoftStep(); a backward sweep is the levels in reverse.
-    prepareIntegration(step.sims, bodies, step.gravity, h);
-    for (int i = 0; i < def.subSteps; ++i) {
-        integrateVelocities(step.sims, step.states, bodies, h, def.maxLinearSpeed);
-        bool backward = (i % 2) == 1;
-        bool reversePoints = ((i / 2) % 2) == 1;
-        warmStartJointsOf(step, blockJoints);
-        warmStartWide(wide, firstLevel, endLevel, step.states);
-        for (int r = 0; r <= step.extraSolveIterations; ++r) {
-            if (r == 0) { // the extra sweeps are the contacts' (SolverStep)
-                solveJointsOf(step, blockJoints, true);
+    struct Passes {
+        const SolverStep& step;
+        WideContacts& wide;
+        int firstLevel;
+        int endLevel;
+        std::span<const int> bodies;
+        std::span<const WideRestitution> restituted;
+        std::span<const int> joints;
+        float h;
+
+        void integrateVelocities(int subStep) {
+            if (subStep == 0) {
+                prepareIntegration(step.sims, bodies, step.gravity, h);
             }
-            solveWide(wide, firstLevel, endLevel, step.states, invH, true, def.contactPushMaxSpeed,
-                      backward, reversePoints);
+            detail::integrateVelocities(step.sims, step.states, bodies, h,
+                                        step.def->maxLinearSpeed);
         }
-        integratePositions(step.states, bodies, h, def.maxLinearSpeed);
-        for (int r = 0; r <= relaxIterations; ++r) {
-            if (r <= def.relaxIterations) {
-                solveJointsOf(step, blockJoints, false);
+        void warmStart() {
+            warmStartJointsOf(step, joints);
+            warmStartWide(wide, firstLevel, endLevel, step.states);
+        }
+        void solve(bool useBias, bool backward, bool reversePoints, bool withJoints) {
+            if (withJoints) {
+                solveJointsOf(step, joints, useBias);
             }
-            solveWide(wide, firstLevel, endLevel, step.states, invH, false, def.contactPushMaxSpeed,
-                      !backward, reversePoints);
+            solveWide(wide, firstLevel, endLevel, step.states, 1.0f / h, useBias,
+                      step.def->contactPushMaxSpeed, backward, reversePoints);
         }
-    }
-    applyRestitutionWide(wide, restitution, step.states, def.restitutionThreshold, h);
+        void integratePositions() {
+            detail::integratePositions(step.states, bodies, h, step.def->maxLinearSpeed);
+        }
+        void restitution() {
+            applyRestitutionWide(wide, restituted, step.states, step.def->restitutionThreshold, h);
+        }
+    };
+    Passes passes{
+        step,   wide,        firstLevel,  endLevel,
+        bodies, restitution, blockJoints, step.dt / static_cast<float>(step.def->subSteps)};
+    forEachSoftStepPass(step, passes);
 }
 
 void solveClassic(const SolverStep& step) {

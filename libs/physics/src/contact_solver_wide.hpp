@@ -57,6 +57,7 @@ struct alignas(4 * N) WideConstraintT {
     // well). Other lanes hold K = identity.
     F k11, k12, k22, inv11, inv12, inv22;
     I blockSolve;
+    I twoPoints; // all ones where the lane has a second point
     WidePointT<N> points[2];
 };
 
@@ -226,33 +227,76 @@ void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
 void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyState> states,
                float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints);
 
+// The same over the groups [groupBegin, groupEnd) of level `level` only.
+template <class Visit>
+void visitWideGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
+                     int groupBegin, int groupEnd, Visit&& visit);
+
+// warmStartWide() and solveWide() over the packed groups [groupBegin, groupEnd) of one level
+// (its constraints share no moving body: any part of a level may run while another worker
+// runs another part).
+void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd,
+                         std::span<BodyState> states);
+void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, std::span<BodyState> states,
+                     float invH, bool useBias, float pushMaxSpeed, bool reversePoints);
+
 namespace wide_detail {
+
+// Visits group g's lanes, the first holding slot `first`, up to slot `end`.
+template <int N, class Visit>
+void visitGroup(const std::vector<WideConstraintT<N>>& groups, int g, int first, int end,
+                Visit& visit) {
+    WideLaneResult r;
+    const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
+    for (int lane = 0; lane < N && first + lane < end; ++lane) {
+        for (int i = 0; i < 2; ++i) {
+            const WidePointT<N>& wp = w.points[i];
+            r.normalImpulse[i] = wp.normalImpulse[lane];
+            r.tangentImpulse[i] = wp.tangentImpulse[lane];
+            r.relativeVelocity[i] = wp.relativeVelocity[lane];
+            r.maxNormalImpulse[i] = wp.maxNormalImpulse[lane];
+        }
+        visit(first + lane, r);
+    }
+}
 
 template <int N, class Visit>
 void visitLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
                 std::span<const int> levelStart, std::size_t firstLevel, std::size_t endLevel,
                 Visit& visit) {
-    WideLaneResult r;
     for (std::size_t k = firstLevel; k < endLevel; ++k) {
         const int end = levelStart[k + 1];
         int g = wideStart[k];
         for (int first = levelStart[k]; first < end; first += N, ++g) {
-            const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
-            for (int lane = 0; lane < N && first + lane < end; ++lane) {
-                for (int i = 0; i < 2; ++i) {
-                    const WidePointT<N>& wp = w.points[i];
-                    r.normalImpulse[i] = wp.normalImpulse[lane];
-                    r.tangentImpulse[i] = wp.tangentImpulse[lane];
-                    r.relativeVelocity[i] = wp.relativeVelocity[lane];
-                    r.maxNormalImpulse[i] = wp.maxNormalImpulse[lane];
-                }
-                visit(first + lane, r);
-            }
+            visitGroup(groups, g, first, end, visit);
         }
     }
 }
 
+template <int N, class Visit>
+void visitGroups(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
+                 std::span<const int> levelStart, std::size_t level, int groupBegin, int groupEnd,
+                 Visit& visit) {
+    const int end = levelStart[level + 1];
+    for (int g = groupBegin; g < groupEnd; ++g) {
+        visitGroup(groups, g, levelStart[level] + (g - wideStart[level]) * N, end, visit);
+    }
+}
+
 } // namespace wide_detail
+
+template <class Visit>
+void visitWideGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
+                     int groupBegin, int groupEnd, Visit&& visit) {
+    const auto at = static_cast<std::size_t>(level);
+    if (wide.lanes == 8) {
+        wide_detail::visitGroups(wide.constraints8, wide.levelStart, levelStart, at, groupBegin,
+                                 groupEnd, visit);
+    } else {
+        wide_detail::visitGroups(wide.constraints4, wide.levelStart, levelStart, at, groupBegin,
+                                 groupEnd, visit);
+    }
+}
 
 template <class Visit>
 void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,

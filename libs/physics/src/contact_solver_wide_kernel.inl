@@ -2,38 +2,82 @@
 // The wide contact passes for one lane width. Included by contact_solver_wide.cpp once per
 // width, inside a namespace that defines: N (lanes), F and I (float and mask vectors),
 // E2D_WIDE_FN (the function attributes: the instruction set of that width) and
-// wide_lanes.hpp's helpers of that width (splat, select, maxOf, anyLane, allLanes, lanesOf,
+// wide_lanes.hpp's helpers of that width (splat, select, maxOf, anyLane, allLanes, bodiesAt,
 // transposeRows, loadRows and storeRows). One text for every width, so they cannot drift apart.
+//
+// A pass over a group keeps few lane vectors live, so that they stay in registers: the
+// velocities of both sides and the points' separations, which it computes once from the motion
+// rows (positions do not change during a velocity pass). A group whose lanes have one point
+// each (no lane has a second: every pile of circles) takes passes without the second point.
+
+#define E2D_WIDE_INLINE E2D_WIDE_FN __attribute__((always_inline))
 
 using Constraint = WideConstraintT<N>;
 using Point = WidePointT<N>;
 
-struct WideBody {
-    F vx, vy, w, flags;
-    F dpx, dpy, qc, qs;
+// Where a group's lanes read and write their bodies (bodiesAt()): static sides and empty lanes
+// use `pad`, a resting state of the group's own.
+struct GroupBodies {
+    BodyState pad;
+    BodyState* a[N];
+    BodyState* b[N];
 };
 
-E2D_WIDE_FN void scatterVelocities(const WideBody& b, BodyState* const (&out)[N]) {
-    storeRows(b.vx, b.vy, b.w, b.flags, out);
+E2D_WIDE_INLINE void locate(const Constraint& c, BodyState* states, GroupBodies& at) {
+    at.pad = BodyState{};
+    bodiesAt(c.indexA, states, &at.pad, at.a);
+    bodiesAt(c.indexB, states, &at.pad, at.b);
 }
 
-E2D_WIDE_FN void warmStartOne(const Constraint& c, std::span<BodyState> states) {
-    BodyState sink;
-    const BodyState* sa[N];
-    const BodyState* sb[N];
-    BodyState* wa[N];
-    BodyState* wb[N];
-    lanesOf(c.indexA, states, sink, sa, wa);
-    lanesOf(c.indexB, states, sink, sb, wb);
-    WideBody a;
-    WideBody b;
-    loadRows(sa, 0, a.vx, a.vy, a.w, a.flags);
-    loadRows(sb, 0, b.vx, b.vy, b.w, b.flags);
+// One side's velocity rows as lane vectors; flags ride along unchanged, to be stored back.
+struct Velocities {
+    F vx, vy, w, flags;
+};
+
+E2D_WIDE_INLINE Velocities velocitiesOf(BodyState* const (&at)[N]) {
+    Velocities v;
+    loadRows(at, 0, v.vx, v.vy, v.w, v.flags);
+    return v;
+}
+
+E2D_WIDE_INLINE void storeVelocities(const Velocities& v, BodyState* const (&at)[N]) {
+    storeRows(v.vx, v.vy, v.w, v.flags, at);
+}
+
+// The separation of the first kPoints points now (currentSeparation()).
+template <int kPoints>
+E2D_WIDE_INLINE void separationsOf(const Constraint& c, const GroupBodies& at, F (&s)[2]) {
+    F adpx, adpy, aqc, aqs, bdpx, bdpy, bqc, bqs;
+    loadRows(at.a, 16, adpx, adpy, aqc, aqs);
+    loadRows(at.b, 16, bdpx, bdpy, bqc, bqs);
+    const F ddx = bdpx - adpx;
+    const F ddy = bdpy - adpy;
+#pragma GCC unroll 2
+    for (int j = 0; j < kPoints; ++j) {
+        const Point& cp = c.points[j];
+        F prAx = aqc * cp.anchorAx - aqs * cp.anchorAy;
+        F prAy = aqs * cp.anchorAx + aqc * cp.anchorAy;
+        F prBx = bqc * cp.anchorBx - bqs * cp.anchorBy;
+        F prBy = bqs * cp.anchorBx + bqc * cp.anchorBy;
+        F dx = ddx + (prBx - prAx);
+        F dy = ddy + (prBy - prAy);
+        s[j] = (dx * c.normalX + dy * c.normalY) + cp.baseSeparation;
+    }
+}
+
+template <int kPoints>
+E2D_WIDE_INLINE void warmStartGroup(const Constraint& c, BodyState* states) {
+    GroupBodies at;
+    locate(c, states, at);
+    Velocities a = velocitiesOf(at.a);
+    Velocities b = velocitiesOf(at.b);
     const F nx = c.normalX;
     const F ny = c.normalY;
     const F tx = ny;
     const F ty = -nx;
-    for (const Point& cp : c.points) {
+#pragma GCC unroll 2
+    for (int j = 0; j < kPoints; ++j) {
+        const Point& cp = c.points[j];
         F px = cp.normalImpulse * nx + cp.tangentImpulse * tx;
         F py = cp.normalImpulse * ny + cp.tangentImpulse * ty;
         a.w = a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px);
@@ -43,24 +87,12 @@ E2D_WIDE_FN void warmStartOne(const Constraint& c, std::span<BodyState> states) 
         b.vx = b.vx + c.invMassBx * px;
         b.vy = b.vy + c.invMassBy * py;
     }
-    scatterVelocities(a, wa);
-    scatterVelocities(b, wb);
+    storeVelocities(a, at.a);
+    storeVelocities(b, at.b);
 }
 
-// The separation of point `cp` now (currentSeparation()).
-E2D_WIDE_FN F separationOf(const Point& cp, const Constraint& c, const WideBody& a,
-                           const WideBody& b) {
-    F prAx = a.qc * cp.anchorAx - a.qs * cp.anchorAy;
-    F prAy = a.qs * cp.anchorAx + a.qc * cp.anchorAy;
-    F prBx = b.qc * cp.anchorBx - b.qs * cp.anchorBy;
-    F prBy = b.qs * cp.anchorBx + b.qc * cp.anchorBy;
-    F dx = (b.dpx - a.dpx) + (prBx - prAx);
-    F dy = (b.dpy - a.dpy) + (prBy - prAy);
-    return (dx * c.normalX + dy * c.normalY) + cp.baseSeparation;
-}
-
-E2D_WIDE_FN F normalVelocityOf(const Point& cp, const Constraint& c, const WideBody& a,
-                               const WideBody& b) {
+E2D_WIDE_FN F normalVelocityOf(const Point& cp, const Constraint& c, const Velocities& a,
+                               const Velocities& b) {
     F dvx = (b.vx + (-b.w) * cp.anchorBy) - (a.vx + (-a.w) * cp.anchorAy);
     F dvy = (b.vy + b.w * cp.anchorBx) - (a.vy + a.w * cp.anchorAx);
     return dvx * c.normalX + dvy * c.normalY;
@@ -106,57 +138,45 @@ E2D_WIDE_FN F keep(I lanes, F updated, F old) {
     }
 }
 
-// The scalar pass's point-by-point normal solve, on the lanes of `lanes`.
-template <bool kReversePoints, bool kMasked>
-E2D_WIDE_FN void solvePoints(Constraint& c, WideBody& a, WideBody& b, I lanes, F invH, bool useBias,
-                             float pushMaxSpeed) {
+// The scalar pass's normal solve of point `cp` (separation s), on the lanes of `lanes`.
+template <bool kMasked>
+E2D_WIDE_INLINE void solvePoint(Constraint& c, Point& cp, F s, Velocities& a, Velocities& b,
+                                I lanes, F invH, bool useBias, float pushMaxSpeed) {
     const F nx = c.normalX;
     const F ny = c.normalY;
-    const F zero = splat(0.0f);
-    // Reversed, a one-point lane meets its empty second point first: zero normal mass, no
-    // impulse, the same result as the scalar pass that skips it.
-    for (int j = 0; j < 2; ++j) {
-        Point& cp = c.points[kReversePoints ? 1 - j : j];
-        F s = separationOf(cp, c, a, b);
-        Target t = targetOf(c, s, invH, useBias, pushMaxSpeed);
-        F vn = normalVelocityOf(cp, c, a, b);
-        noteImpact(cp, lanes, vn, s, invH, useBias);
-        F impulse =
-            (-cp.normalMass) * t.massScale * (vn + t.bias) - t.impulseScale * cp.normalImpulse;
-        F newImpulse = maxOf(cp.normalImpulse + impulse, zero);
-        impulse = newImpulse - cp.normalImpulse;
-        cp.normalImpulse = keep<kMasked>(lanes, newImpulse, cp.normalImpulse);
-        cp.maxNormalImpulse =
-            keep<kMasked>(lanes, maxOf(cp.maxNormalImpulse, impulse), cp.maxNormalImpulse);
-        F px = impulse * nx;
-        F py = impulse * ny;
-        a.vx = keep<kMasked>(lanes, a.vx - c.invMassAx * px, a.vx);
-        a.vy = keep<kMasked>(lanes, a.vy - c.invMassAy * py, a.vy);
-        a.w =
-            keep<kMasked>(lanes, a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px), a.w);
-        b.vx = keep<kMasked>(lanes, b.vx + c.invMassBx * px, b.vx);
-        b.vy = keep<kMasked>(lanes, b.vy + c.invMassBy * py, b.vy);
-        b.w =
-            keep<kMasked>(lanes, b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px), b.w);
-    }
+    Target t = targetOf(c, s, invH, useBias, pushMaxSpeed);
+    F vn = normalVelocityOf(cp, c, a, b);
+    noteImpact(cp, lanes, vn, s, invH, useBias);
+    F impulse = (-cp.normalMass) * t.massScale * (vn + t.bias) - t.impulseScale * cp.normalImpulse;
+    F newImpulse = maxOf(cp.normalImpulse + impulse, splat(0.0f));
+    impulse = newImpulse - cp.normalImpulse;
+    cp.normalImpulse = keep<kMasked>(lanes, newImpulse, cp.normalImpulse);
+    cp.maxNormalImpulse =
+        keep<kMasked>(lanes, maxOf(cp.maxNormalImpulse, impulse), cp.maxNormalImpulse);
+    F px = impulse * nx;
+    F py = impulse * ny;
+    a.vx = keep<kMasked>(lanes, a.vx - c.invMassAx * px, a.vx);
+    a.vy = keep<kMasked>(lanes, a.vy - c.invMassAy * py, a.vy);
+    a.w = keep<kMasked>(lanes, a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px), a.w);
+    b.vx = keep<kMasked>(lanes, b.vx + c.invMassBx * px, b.vx);
+    b.vy = keep<kMasked>(lanes, b.vy + c.invMassBy * py, b.vy);
+    b.w = keep<kMasked>(lanes, b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px), b.w);
 }
 
 // The scalar pass's block solve (solveBlock() on each point's soft right-hand side) on the
-// lanes of `lanes`.
+// lanes of `lanes`; s: the points' separations.
 template <bool kMasked>
-E2D_WIDE_FN void solveBlock(Constraint& c, WideBody& a, WideBody& b, I lanes, F invH, bool useBias,
-                            float pushMaxSpeed) {
+E2D_WIDE_INLINE void solveBlock(Constraint& c, const F (&s)[2], Velocities& a, Velocities& b,
+                                I lanes, F invH, bool useBias, float pushMaxSpeed) {
     const F zero = splat(0.0f);
     Point& cp1 = c.points[0];
     Point& cp2 = c.points[1];
-    F s1 = separationOf(cp1, c, a, b);
-    F s2 = separationOf(cp2, c, a, b);
-    Target t1 = targetOf(c, s1, invH, useBias, pushMaxSpeed);
-    Target t2 = targetOf(c, s2, invH, useBias, pushMaxSpeed);
+    Target t1 = targetOf(c, s[0], invH, useBias, pushMaxSpeed);
+    Target t2 = targetOf(c, s[1], invH, useBias, pushMaxSpeed);
     F vn1 = normalVelocityOf(cp1, c, a, b);
     F vn2 = normalVelocityOf(cp2, c, a, b);
-    noteImpact(cp1, lanes, vn1, s1, invH, useBias);
-    noteImpact(cp2, lanes, vn2, s2, invH, useBias);
+    noteImpact(cp1, lanes, vn1, s[0], invH, useBias);
+    noteImpact(cp2, lanes, vn2, s[1], invH, useBias);
     const F acc1 = cp1.normalImpulse;
     const F acc2 = cp2.normalImpulse;
     F r1 = t1.massScale * (vn1 + t1.bias) + t1.impulseScale * (c.k11 * acc1 + c.k12 * acc2);
@@ -204,64 +224,70 @@ E2D_WIDE_FN void solveBlock(Constraint& c, WideBody& a, WideBody& b, I lanes, F 
                         b.w);
 }
 
-template <bool kReversePoints>
-E2D_WIDE_FN void solveOne(Constraint& c, std::span<BodyState> states, float invH, bool useBias,
-                          float pushMaxSpeed) {
-    BodyState sink;
-    const BodyState* sa[N];
-    const BodyState* sb[N];
-    BodyState* wa[N];
-    BodyState* wb[N];
-    lanesOf(c.indexA, states, sink, sa, wa);
-    lanesOf(c.indexB, states, sink, sb, wb);
-    WideBody a;
-    WideBody b;
-    loadRows(sa, 0, a.vx, a.vy, a.w, a.flags);
-    loadRows(sb, 0, b.vx, b.vy, b.w, b.flags);
-    loadRows(sa, 16, a.dpx, a.dpy, a.qc, a.qs);
-    loadRows(sb, 16, b.dpx, b.dpy, b.qc, b.qs);
-    const F nx = c.normalX;
-    const F ny = c.normalY;
-    const F tx = ny;
-    const F ty = -nx;
-    const F vInvH = splat(invH);
+// Friction at point `cp`, as solveFriction() does it.
+E2D_WIDE_INLINE void solveFrictionAt(Constraint& c, Point& cp, Velocities& a, Velocities& b) {
+    const F tx = c.normalY;
+    const F ty = -c.normalX;
+    F dvx = (b.vx + (-b.w) * cp.anchorBy) - (a.vx + (-a.w) * cp.anchorAy);
+    F dvy = (b.vy + b.w * cp.anchorBx) - (a.vy + a.w * cp.anchorAx);
+    F impulse = -cp.tangentMass * (dvx * tx + dvy * ty);
+    F maxFriction = c.friction * cp.normalImpulse;
+    // std::clamp(v, lo, hi): v < lo ? lo : (hi < v ? hi : v)
+    F v = cp.tangentImpulse + impulse;
+    F lo = -maxFriction;
+    F newImpulse = select(v < lo, lo, select(maxFriction < v, maxFriction, v));
+    impulse = newImpulse - cp.tangentImpulse;
+    cp.tangentImpulse = newImpulse;
+    F px = impulse * tx;
+    F py = impulse * ty;
+    a.vx = a.vx - c.invMassAx * px;
+    a.vy = a.vy - c.invMassAy * py;
+    a.w = a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px);
+    b.vx = b.vx + c.invMassBx * px;
+    b.vy = b.vy + c.invMassBy * py;
+    b.w = b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px);
+}
 
-    // Lanes of well-conditioned 2-point manifolds take the block solve, the others go point by
-    // point; a group is usually all one kind (a pile of boxes, a bin of balls).
-    const I block = c.blockSolve;
-    if (allLanes(block)) {
-        solveBlock<false>(c, a, b, block, vInvH, useBias, pushMaxSpeed);
-    } else if (!anyLane(block)) {
-        solvePoints<kReversePoints, false>(c, a, b, ~block, vInvH, useBias, pushMaxSpeed);
+// solveContacts() on one group, whose lanes have at most kPoints points.
+template <bool kReversePoints, int kPoints>
+E2D_WIDE_INLINE void solveGroup(Constraint& c, BodyState* states, F invH, bool useBias,
+                                float pushMaxSpeed) {
+    GroupBodies at;
+    locate(c, states, at);
+    F s[2];
+    separationsOf<kPoints>(c, at, s);
+    Velocities a = velocitiesOf(at.a);
+    Velocities b = velocitiesOf(at.b);
+    const I all = ~I{};
+    if constexpr (kPoints == 1) {
+        solvePoint<false>(c, c.points[0], s[0], a, b, all, invH, useBias, pushMaxSpeed);
     } else {
-        solvePoints<kReversePoints, true>(c, a, b, ~block, vInvH, useBias, pushMaxSpeed);
-        solveBlock<true>(c, a, b, block, vInvH, useBias, pushMaxSpeed);
+        // Lanes of well-conditioned 2-point manifolds take the block solve, the others go point
+        // by point; a group is usually all one kind (a pile of boxes). Reversed, a one-point
+        // lane meets its empty second point first: zero normal mass, no impulse, the same
+        // result as the scalar pass that skips it.
+        const I block = c.blockSolve;
+        const int first = kReversePoints ? 1 : 0;
+        if (allLanes(block)) {
+            solveBlock<false>(c, s, a, b, all, invH, useBias, pushMaxSpeed);
+        } else if (!anyLane(block)) {
+            solvePoint<false>(c, c.points[first], s[first], a, b, all, invH, useBias, pushMaxSpeed);
+            solvePoint<false>(c, c.points[1 - first], s[1 - first], a, b, all, invH, useBias,
+                              pushMaxSpeed);
+        } else {
+            solvePoint<true>(c, c.points[first], s[first], a, b, ~block, invH, useBias,
+                             pushMaxSpeed);
+            solvePoint<true>(c, c.points[1 - first], s[1 - first], a, b, ~block, invH, useBias,
+                             pushMaxSpeed);
+            solveBlock<true>(c, s, a, b, block, invH, useBias, pushMaxSpeed);
+        }
     }
-
-    // Friction, as solveFriction() does it.
-    for (Point& cp : c.points) {
-        F dvx = (b.vx + (-b.w) * cp.anchorBy) - (a.vx + (-a.w) * cp.anchorAy);
-        F dvy = (b.vy + b.w * cp.anchorBx) - (a.vy + a.w * cp.anchorAx);
-        F impulse = -cp.tangentMass * (dvx * tx + dvy * ty);
-        F maxFriction = c.friction * cp.normalImpulse;
-        // std::clamp(v, lo, hi): v < lo ? lo : (hi < v ? hi : v)
-        F v = cp.tangentImpulse + impulse;
-        F lo = -maxFriction;
-        F newImpulse = select(v < lo, lo, select(maxFriction < v, maxFriction, v));
-        impulse = newImpulse - cp.tangentImpulse;
-        cp.tangentImpulse = newImpulse;
-        F px = impulse * tx;
-        F py = impulse * ty;
-        a.vx = a.vx - c.invMassAx * px;
-        a.vy = a.vy - c.invMassAy * py;
-        a.w = a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px);
-        b.vx = b.vx + c.invMassBx * px;
-        b.vy = b.vy + c.invMassBy * py;
-        b.w = b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px);
+#pragma GCC unroll 2
+    for (int j = 0; j < kPoints; ++j) {
+        solveFrictionAt(c, c.points[j], a, b);
     }
-
-    scatterVelocities(a, wa);
-    scatterVelocities(b, wb);
+    storeVelocities(a, at.a);
+    storeVelocities(b, at.b);
 }
 
 // levelStart: the group boundaries of the levels to run (absolute indices into constraints).
@@ -271,7 +297,25 @@ E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints,
         return;
     }
     for (int g = levelStart.front(); g < levelStart.back(); ++g) {
-        warmStartOne(constraints[static_cast<std::size_t>(g)], states);
+        const Constraint& c = constraints[static_cast<std::size_t>(g)];
+        if (anyLane(c.twoPoints)) {
+            warmStartGroup<2>(c, states.data());
+        } else {
+            warmStartGroup<1>(c, states.data());
+        }
+    }
+}
+
+template <bool kReversePoints>
+E2D_WIDE_FN void solveGroups(std::span<Constraint> constraints, int first, int end,
+                             BodyState* states, F invH, bool useBias, float pushMaxSpeed) {
+    for (int g = first; g < end; ++g) {
+        Constraint& c = constraints[static_cast<std::size_t>(g)];
+        if (anyLane(c.twoPoints)) {
+            solveGroup<kReversePoints, 2>(c, states, invH, useBias, pushMaxSpeed);
+        } else {
+            solveGroup<kReversePoints, 1>(c, states, invH, useBias, pushMaxSpeed);
+        }
     }
 }
 
@@ -282,22 +326,20 @@ E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<const int
     if (levelStart.size() < 2) {
         return;
     }
+    const F vInvH = splat(invH);
     if (!backward) {
-        for (int g = levelStart.front(); g < levelStart.back(); ++g) {
-            solveOne<kReversePoints>(constraints[static_cast<std::size_t>(g)], states, invH,
-                                     useBias, pushMaxSpeed);
-        }
+        solveGroups<kReversePoints>(constraints, levelStart.front(), levelStart.back(),
+                                    states.data(), vInvH, useBias, pushMaxSpeed);
         return;
     }
     // Within a level the order does not matter; backward only reverses the levels.
-    const std::size_t levelCount = levelStart.size() - 1;
-    for (std::size_t k = levelCount; k-- > 0;) {
-        for (int g = levelStart[k]; g < levelStart[k + 1]; ++g) {
-            solveOne<kReversePoints>(constraints[static_cast<std::size_t>(g)], states, invH,
-                                     useBias, pushMaxSpeed);
-        }
+    for (std::size_t k = levelStart.size() - 1; k-- > 0;) {
+        solveGroups<kReversePoints>(constraints, levelStart[k], levelStart[k + 1], states.data(),
+                                    vInvH, useBias, pushMaxSpeed);
     }
 }
+
+#undef E2D_WIDE_INLINE
 
 // --- Prepare: prepareContact(), prepareBlock() and packLane() on every lane at once ---
 
@@ -422,4 +464,5 @@ E2D_WIDE_FN void prepareGroup(const Manifolds& in, Constraint& c) {
     c.inv12 = select(block, -invDet * k12, zero);
     c.inv22 = select(block, invDet * k11, one);
     c.blockSolve = block | (count == 0);
+    c.twoPoints = count == 2;
 }

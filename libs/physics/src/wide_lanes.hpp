@@ -60,6 +60,18 @@ lanesOf(const int (&index)[N], std::span<BodyState> states, BodyState& sink,
     }
 }
 
+// Where each of N lanes reads and writes its body, one address for both: a static side (index
+// -1) gets `pad`, a zero state of the caller's, zeroed before the lanes are read. All lanes
+// are read before any is written, so a static side reads zero whatever the others write to the
+// pad.
+template <int N>
+__attribute__((always_inline)) inline void bodiesAt(const int (&index)[N], BodyState* states,
+                                                    BodyState* pad, BodyState* (&at)[N]) {
+    for (int i = 0; i < N; ++i) {
+        at[i] = index[i] >= 0 ? states + index[i] : pad;
+    }
+}
+
 // BodyState is two 16-byte rows, {vx, vy, w, flags} and {dpx, dpy, qc, qs}: a lane's row is one
 // load, and rows transpose into lane vectors (and back) with shuffles only, which move bits
 // unchanged (flags included).
@@ -128,18 +140,18 @@ inline void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {
     c3 = __builtin_shufflevector(t2, t3, 2, 3, 6, 7);
 }
 
-inline void loadRows(const BodyState* const (&s)[N], std::size_t offset, F& c0, F& c1, F& c2,
-                     F& c3) {
+inline void loadRows(const BodyState* const* s, std::size_t offset, F& c0, F& c1, F& c2, F& c3) {
     transposeRows(loadRow(s[0], offset), loadRow(s[1], offset), loadRow(s[2], offset),
                   loadRow(s[3], offset), c0, c1, c2, c3);
 }
 
-inline void storeRows(F c0, F c1, F c2, F c3, BodyState* const (&out)[N]) {
-    F rows[N];
-    transposeRows(c0, c1, c2, c3, rows[0], rows[1], rows[2], rows[3]);
-    for (int i = 0; i < N; ++i) {
-        storeRow(*out[i], rows[i]);
-    }
+inline void storeRows(F c0, F c1, F c2, F c3, BodyState* const* out) {
+    F r0, r1, r2, r3;
+    transposeRows(c0, c1, c2, c3, r0, r1, r2, r3);
+    storeRow(*out[0], r0);
+    storeRow(*out[1], r1);
+    storeRow(*out[2], r2);
+    storeRow(*out[3], r3);
 }
 
 } // namespace lanes4
@@ -177,19 +189,25 @@ E2D_AVX2_FN F joinRows(const BodyState* low, const BodyState* high, std::size_t 
                                    7);
 }
 
-E2D_AVX2_FN void loadRows(const BodyState* const (&s)[N], std::size_t offset, F& c0, F& c1, F& c2,
+E2D_AVX2_FN void loadRows(const BodyState* const* s, std::size_t offset, F& c0, F& c1, F& c2,
                           F& c3) {
     transposeRows(joinRows(s[0], s[4], offset), joinRows(s[1], s[5], offset),
                   joinRows(s[2], s[6], offset), joinRows(s[3], s[7], offset), c0, c1, c2, c3);
 }
 
-E2D_AVX2_FN void storeRows(F c0, F c1, F c2, F c3, BodyState* const (&out)[N]) {
-    F rows[4];
-    transposeRows(c0, c1, c2, c3, rows[0], rows[1], rows[2], rows[3]);
-    for (int i = 0; i < 4; ++i) {
-        storeRow(*out[i], __builtin_shufflevector(rows[i], rows[i], 0, 1, 2, 3));
-        storeRow(*out[i + 4], __builtin_shufflevector(rows[i], rows[i], 4, 5, 6, 7));
-    }
+// Row k to lane k (low half) and lane k + 4 (high half): one store each.
+E2D_AVX2_FN void splitRow(F row, BodyState* low, BodyState* high) {
+    _mm_storeu_ps(reinterpret_cast<float*>(low), _mm256_castps256_ps128(row));
+    _mm_storeu_ps(reinterpret_cast<float*>(high), _mm256_extractf128_ps(row, 1));
+}
+
+E2D_AVX2_FN void storeRows(F c0, F c1, F c2, F c3, BodyState* const* out) {
+    F r0, r1, r2, r3;
+    transposeRows(c0, c1, c2, c3, r0, r1, r2, r3);
+    splitRow(r0, out[0], out[4]);
+    splitRow(r1, out[1], out[5]);
+    splitRow(r2, out[2], out[6]);
+    splitRow(r3, out[3], out[7]);
 }
 
 } // namespace lanes8

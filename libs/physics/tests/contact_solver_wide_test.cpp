@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -108,8 +109,10 @@ struct Problem {
 };
 
 // A random pile: bodies with random velocities and motion since the step began, contacts
-// between random pairs (some against a static side, some with one point, some speculative).
-Problem randomProblem(std::uint32_t seed, int bodyCount, int contactCount, float h) {
+// between random pairs (some against a static side, some speculative) of one or two points
+// (maxPoints 1: one each, as circles make).
+Problem randomProblem(std::uint32_t seed, int bodyCount, int contactCount, float h,
+                      int maxPoints = 2) {
     test::Random rng(seed);
     Problem p;
     std::vector<Vec2> invMass;
@@ -138,6 +141,7 @@ Problem randomProblem(std::uint32_t seed, int bodyCount, int contactCount, float
         float angle = rng.uniform(0.0f, 6.2831853f);
         m.normal = {std::cos(angle), std::sin(angle)};
         m.pointCount = 1 + rng.below(2);
+        m.pointCount = std::min(m.pointCount, maxPoints);
         for (int i = 0; i < m.pointCount; ++i) {
             ManifoldPoint& mp = m.points[i];
             mp.anchorA = {rng.uniform(-0.5f, 0.5f), rng.uniform(-0.5f, 0.5f)};
@@ -223,11 +227,23 @@ void expectSame(const Problem& scalar, const Problem& wide) {
     }
 }
 
-TEST(WideContactSolver, MatchesTheScalarPassesBitForBit) {
+template <int N>
+bool onePointLanes(const WideConstraintT<N>& g) {
+    for (int lane = 0; lane < N; ++lane) {
+        if (g.twoPoints[lane] != 0) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Random piles (randomProblem(seed, 40, 150, h, maxPoints)) solved by the scalar passes and by
+// the wide ones at every lane width: the same bits.
+void expectWideMatchesScalar(std::uint32_t seed, int maxPoints) {
     constexpr float kH = 1.0f / 240.0f;
     constexpr float kPushMaxSpeed = 3.0f;
-    for (std::uint32_t seed : {1u, 2u, 3u}) {
-        Problem scalar = randomProblem(seed, 40, 150, kH);
+    {
+        Problem scalar = randomProblem(seed, 40, 150, kH, maxPoints);
         Problem wide = scalar;
 
         // Reference: warm start, a biased sweep forward and a relax sweep backward, four times,
@@ -259,6 +275,21 @@ TEST(WideContactSolver, MatchesTheScalarPassesBitForBit) {
             WideContacts packed;
             prepareWide(packed, wide.constraints, order, levelStart, lanes);
             ASSERT_EQ(packed.lanes, lanes);
+            // Groups of one-point lanes (only those) take their own passes.
+            int onePointGroups = 0;
+            for (const auto& g : packed.constraints4) {
+                onePointGroups += onePointLanes(g) ? 1 : 0;
+            }
+            for (const auto& g : packed.constraints8) {
+                onePointGroups += onePointLanes(g) ? 1 : 0;
+            }
+            if (maxPoints == 1) {
+                EXPECT_EQ(onePointGroups, static_cast<int>(packed.constraints4.size() +
+                                                           packed.constraints8.size()));
+            } else {
+                EXPECT_LT(onePointGroups, static_cast<int>(packed.constraints4.size() +
+                                                           packed.constraints8.size()));
+            }
             for (int round = 0; round < 4; ++round) {
                 bool reversePoints = round >= 2;
                 warmStartWide(packed, wide.states);
@@ -275,7 +306,7 @@ TEST(WideContactSolver, MatchesTheScalarPassesBitForBit) {
         }
         // And the solve did something: impulses changed from the warm-start values.
         int changed = 0;
-        Problem initial = randomProblem(seed, 40, 150, kH);
+        Problem initial = randomProblem(seed, 40, 150, kH, maxPoints);
         for (std::size_t k = 0; k < initial.constraints.size(); ++k) {
             changed += initial.constraints[k].points[0].normalImpulse !=
                                wide.constraints[k].points[0].normalImpulse
@@ -283,6 +314,19 @@ TEST(WideContactSolver, MatchesTheScalarPassesBitForBit) {
                            : 0;
         }
         EXPECT_GT(changed, 100);
+    }
+}
+
+TEST(WideContactSolver, MatchesTheScalarPassesBitForBit) {
+    for (std::uint32_t seed : {1u, 2u, 3u}) {
+        expectWideMatchesScalar(seed, 2);
+    }
+}
+
+// Every lane with one point (a pile of circles): the groups skip the second point.
+TEST(WideContactSolver, OnePointGroupsMatchTheScalarPassesBitForBit) {
+    for (std::uint32_t seed : {7u, 8u}) {
+        expectWideMatchesScalar(seed, 1);
     }
 }
 
