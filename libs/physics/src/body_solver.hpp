@@ -78,6 +78,33 @@ void solveSoftStep(const SolverStep& step);
 void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLevel, int endLevel,
                         std::span<const int> bodies, std::span<const WideRestitution> restitution,
                         std::span<const int> blockJoints = {});
+
+// The passes of solveSoftStepBlock() in their order, as calls on `passes`:
+// integrateVelocities(subStep), warmStart() (joints, then contacts), solve(useBias, backward,
+// reversePoints, joints) (the contacts' levels, in reverse when backward, after the joints when
+// `joints`), integratePositions(), and restitution() once at the end. solveSoftStepBlock() runs
+// them on one worker; solveSoftStepStaged() (soft_step_stages.hpp) as stages on several.
+template <class Passes>
+void forEachSoftStepPass(const SolverStep& step, Passes& passes) {
+    const SolverDef& def = *step.def;
+    const int relaxIterations = def.relaxIterations + step.extraRelaxIterations;
+    // The same passes and orders as solveSoftStep() (see there why).
+    for (int i = 0; i < def.subSteps; ++i) {
+        passes.integrateVelocities(i);
+        const bool backward = (i % 2) == 1;
+        const bool reversePoints = ((i / 2) % 2) == 1;
+        passes.warmStart();
+        for (int r = 0; r <= step.extraSolveIterations; ++r) {
+            // The extra sweeps are the contacts' (SolverStep).
+            passes.solve(true, backward, reversePoints, r == 0);
+        }
+        passes.integratePositions();
+        for (int r = 0; r <= relaxIterations; ++r) {
+            passes.solve(false, !backward, reversePoints, r <= def.relaxIterations);
+        }
+    }
+    passes.restitution();
+}
 void solveClassic(const SolverStep& step);
 
 // Moves each sim by its state's deltas (centre, rotation, origin) and sets its position residual

@@ -57,16 +57,11 @@ void prepareContact(ContactConstraint& c, const Manifold& m, const ContactBodyVi
     prepareBlock(c);
 }
 
-bool isPushedApart(const Manifold& m, const ContactBodyView& a, const ContactBodyView& b,
-                   Softness softness) {
-    // Most contacts overlap less than the slop: nothing more to compute for them.
-    bool deep = false;
-    for (int i = 0; i < m.pointCount; ++i) {
-        deep = deep || m.points[i].separation < -kLinearSlop;
-    }
+bool isDeepPushedApart(const Manifold& m, const ContactBodyView& a, const ContactBodyView& b,
+                       Softness softness) {
     const float stiffness = softness.massScale * softness.biasRate;
-    if (!deep || !(stiffness > 0.0f)) {
-        return false; // shallow, or not a soft contact
+    if (!(stiffness > 0.0f)) {
+        return false; // not a soft contact
     }
     const Vec2 n = m.normal;
     const float linear = dot(a.invMass + b.invMass, Vec2{n.x * n.x, n.y * n.y});

@@ -142,9 +142,17 @@ inline constexpr float kPushOutRestMargin = 2.0f;
 // weight. `softness`: the contact's. At rest point i of the manifold's soft constraint carries
 // impulses lambda per sub-step with (K lambda)_i = h w^2 s_i (K the normal mass matrix of its
 // points, s_i its overlap), which in terms of the softness is
-// s_i = (K lambda)_i impulseScale / (massScale biasRate).
-bool isPushedApart(const Manifold& m, const ContactBodyView& a, const ContactBodyView& b,
-                   Softness softness);
+// s_i = (K lambda)_i impulseScale / (massScale biasRate). Most contacts overlap less than the
+// slop and need nothing more: that test is inline (the solver asks every contact each step),
+// the rest is isDeepPushedApart().
+bool isDeepPushedApart(const Manifold& m, const ContactBodyView& a, const ContactBodyView& b,
+                       Softness softness);
+inline bool isPushedApart(const Manifold& m, const ContactBodyView& a, const ContactBodyView& b,
+                          Softness softness) {
+    const bool deep = (m.pointCount > 0 && m.points[0].separation < -kLinearSlop) ||
+                      (m.pointCount > 1 && m.points[1].separation < -kLinearSlop);
+    return deep && isDeepPushedApart(m, a, b, softness);
+}
 
 void warmStartContacts(std::span<ContactConstraint> constraints, std::span<BodyState> states);
 // useBias: push overlapping points apart with the soft bias (solve) or not (relax).

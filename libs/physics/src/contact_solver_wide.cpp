@@ -281,9 +281,12 @@ std::span<const int> levelRange(const WideContacts& wide, int firstLevel, int en
 
 } // namespace
 
-void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
-                   std::span<BodyState> states) {
-    const std::span<const int> levels = levelRange(wide, firstLevel, endLevel);
+namespace {
+
+// The kernels over the groups levels.front() .. levels.back() (backward: level by level, last
+// level first).
+void warmStartLevels(const WideContacts& wide, std::span<const int> levels,
+                     std::span<BodyState> states) {
 #if defined(E2D_HAS_WIDE8)
     if (wide.lanes == 8) {
         lanes8::warmStartAll(wide.constraints8, levels, states);
@@ -293,9 +296,8 @@ void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
     lanes4::warmStartAll(wide.constraints4, levels, states);
 }
 
-void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyState> states,
-               float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints) {
-    const std::span<const int> levels = levelRange(wide, firstLevel, endLevel);
+void solveLevels(WideContacts& wide, std::span<const int> levels, std::span<BodyState> states,
+                 float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints) {
 #if defined(E2D_HAS_WIDE8)
     if (wide.lanes == 8) {
         if (reversePoints) {
@@ -315,6 +317,31 @@ void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyS
         lanes4::solveAll<false>(wide.constraints4, levels, states, invH, useBias, pushMaxSpeed,
                                 backward);
     }
+}
+
+} // namespace
+
+void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
+                   std::span<BodyState> states) {
+    warmStartLevels(wide, levelRange(wide, firstLevel, endLevel), states);
+}
+
+void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyState> states,
+               float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints) {
+    solveLevels(wide, levelRange(wide, firstLevel, endLevel), states, invH, useBias, pushMaxSpeed,
+                backward, reversePoints);
+}
+
+void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd,
+                         std::span<BodyState> states) {
+    const int groups[2] = {groupBegin, groupEnd};
+    warmStartLevels(wide, groups, states);
+}
+
+void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, std::span<BodyState> states,
+                     float invH, bool useBias, float pushMaxSpeed, bool reversePoints) {
+    const int groups[2] = {groupBegin, groupEnd};
+    solveLevels(wide, groups, states, invH, useBias, pushMaxSpeed, false, reversePoints);
 }
 
 } // namespace e2d::physics::detail

@@ -108,8 +108,10 @@ struct alignas(32) WideManifoldT {
     };
     Point points[2];
 
-    void setLane(int lane, const Manifold& m, const ContactBodyView& a, const ContactBodyView& b,
-                 float frictionOf, Softness softness) {
+    // Inlined into the world's gather loop (out of line its arguments go through memory).
+    [[gnu::always_inline]] void setLane(int lane, const Manifold& m, const ContactBodyView& a,
+                                        const ContactBodyView& b, float frictionOf,
+                                        Softness softness) {
         indexA[lane] = a.stateIndex;
         indexB[lane] = b.stateIndex;
         pointCount[lane] = m.pointCount;
@@ -137,15 +139,27 @@ struct alignas(32) WideManifoldT {
         impulseScale[lane] = softness.impulseScale;
         for (int i = 0; i < 2; ++i) {
             // A missing point's inputs are zero; prepareWideGroup() zeroes its outputs anyway.
-            const ManifoldPoint mp = i < m.pointCount ? m.points[i] : ManifoldPoint{};
+            // (Field by field: a copy of the whole ManifoldPoint or a default one cost 18
+            // instructions a contact.)
             Point& p = points[i];
-            p.anchorAx[lane] = mp.anchorA.x;
-            p.anchorAy[lane] = mp.anchorA.y;
-            p.anchorBx[lane] = mp.anchorB.x;
-            p.anchorBy[lane] = mp.anchorB.y;
-            p.separation[lane] = mp.separation;
-            p.normalImpulse[lane] = mp.normalImpulse;
-            p.tangentImpulse[lane] = mp.tangentImpulse;
+            if (i < m.pointCount) {
+                const ManifoldPoint& mp = m.points[i];
+                p.anchorAx[lane] = mp.anchorA.x;
+                p.anchorAy[lane] = mp.anchorA.y;
+                p.anchorBx[lane] = mp.anchorB.x;
+                p.anchorBy[lane] = mp.anchorB.y;
+                p.separation[lane] = mp.separation;
+                p.normalImpulse[lane] = mp.normalImpulse;
+                p.tangentImpulse[lane] = mp.tangentImpulse;
+            } else {
+                p.anchorAx[lane] = 0.0f;
+                p.anchorAy[lane] = 0.0f;
+                p.anchorBx[lane] = 0.0f;
+                p.anchorBy[lane] = 0.0f;
+                p.separation[lane] = 0.0f;
+                p.normalImpulse[lane] = 0.0f;
+                p.tangentImpulse[lane] = 0.0f;
+            }
         }
     }
 
@@ -213,33 +227,76 @@ void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
 void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyState> states,
                float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints);
 
+// The same over the groups [groupBegin, groupEnd) of level `level` only.
+template <class Visit>
+void visitWideGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
+                     int groupBegin, int groupEnd, Visit&& visit);
+
+// warmStartWide() and solveWide() over the packed groups [groupBegin, groupEnd) of one level
+// (its constraints share no moving body: any part of a level may run while another worker
+// runs another part).
+void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd,
+                         std::span<BodyState> states);
+void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, std::span<BodyState> states,
+                     float invH, bool useBias, float pushMaxSpeed, bool reversePoints);
+
 namespace wide_detail {
+
+// Visits group g's lanes, the first holding slot `first`, up to slot `end`.
+template <int N, class Visit>
+void visitGroup(const std::vector<WideConstraintT<N>>& groups, int g, int first, int end,
+                Visit& visit) {
+    WideLaneResult r;
+    const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
+    for (int lane = 0; lane < N && first + lane < end; ++lane) {
+        for (int i = 0; i < 2; ++i) {
+            const WidePointT<N>& wp = w.points[i];
+            r.normalImpulse[i] = wp.normalImpulse[lane];
+            r.tangentImpulse[i] = wp.tangentImpulse[lane];
+            r.relativeVelocity[i] = wp.relativeVelocity[lane];
+            r.maxNormalImpulse[i] = wp.maxNormalImpulse[lane];
+        }
+        visit(first + lane, r);
+    }
+}
 
 template <int N, class Visit>
 void visitLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
                 std::span<const int> levelStart, std::size_t firstLevel, std::size_t endLevel,
                 Visit& visit) {
-    WideLaneResult r;
     for (std::size_t k = firstLevel; k < endLevel; ++k) {
         const int end = levelStart[k + 1];
         int g = wideStart[k];
         for (int first = levelStart[k]; first < end; first += N, ++g) {
-            const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
-            for (int lane = 0; lane < N && first + lane < end; ++lane) {
-                for (int i = 0; i < 2; ++i) {
-                    const WidePointT<N>& wp = w.points[i];
-                    r.normalImpulse[i] = wp.normalImpulse[lane];
-                    r.tangentImpulse[i] = wp.tangentImpulse[lane];
-                    r.relativeVelocity[i] = wp.relativeVelocity[lane];
-                    r.maxNormalImpulse[i] = wp.maxNormalImpulse[lane];
-                }
-                visit(first + lane, r);
-            }
+            visitGroup(groups, g, first, end, visit);
         }
     }
 }
 
+template <int N, class Visit>
+void visitGroups(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
+                 std::span<const int> levelStart, std::size_t level, int groupBegin, int groupEnd,
+                 Visit& visit) {
+    const int end = levelStart[level + 1];
+    for (int g = groupBegin; g < groupEnd; ++g) {
+        visitGroup(groups, g, levelStart[level] + (g - wideStart[level]) * N, end, visit);
+    }
+}
+
 } // namespace wide_detail
+
+template <class Visit>
+void visitWideGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
+                     int groupBegin, int groupEnd, Visit&& visit) {
+    const auto at = static_cast<std::size_t>(level);
+    if (wide.lanes == 8) {
+        wide_detail::visitGroups(wide.constraints8, wide.levelStart, levelStart, at, groupBegin,
+                                 groupEnd, visit);
+    } else {
+        wide_detail::visitGroups(wide.constraints4, wide.levelStart, levelStart, at, groupBegin,
+                                 groupEnd, visit);
+    }
+}
 
 template <class Visit>
 void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,

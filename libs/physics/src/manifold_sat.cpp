@@ -8,6 +8,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 // E2D_PHYSICS_SCALAR_SAT forces the portable path on SSE2 machines, so that the two paths can
@@ -175,6 +176,22 @@ inline Lanes<G> rotateLanes(const Lanes<G>& v, __m128 c, __m128 s) {
     return r;
 }
 
+// invMulTransforms(a, b) as p.x p.y q.c q.s in one register. Each lane does the scalar
+// products and sums, reordered only where that is exact (c y + (-s) x for -s x + c y, and
+// c s' + (-s) c' for c s' - s c'), so the transform is bit-identical to the scalar one.
+inline __m128 invMulLanes(const Transform& a, const Transform& b) {
+    static_assert(sizeof(Transform) == 16 && offsetof(Transform, q) == 8);
+    const __m128 ta = _mm_loadu_ps(&a.p.x); // p.x p.y c s
+    const __m128 tb = _mm_loadu_ps(&b.p.x);
+    // b.p - a.p, then b.q unchanged (a's rotation lanes cleared).
+    const __m128 v = _mm_sub_ps(tb, _mm_movelh_ps(ta, _mm_setzero_ps()));
+    const __m128 c = splat<2>(ta);
+    const __m128 signedS =
+        _mm_xor_ps(splat<3>(ta), _mm_castsi128_ps(_mm_setr_epi32(0, INT32_MIN, 0, INT32_MIN)));
+    return _mm_add_ps(_mm_mul_ps(c, v),
+                      _mm_mul_ps(signedS, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1))));
+}
+
 // dot(a_i, b_i) for every lane.
 template <int G>
 inline void dotLanes(const Lanes<G>& a, const Lanes<G>& b, __m128 (&out)[G]) {
@@ -259,12 +276,12 @@ template <int GA, int GB>
     const auto [frame, origin, shift] = workFrameOf(a, xfA);
     // Work in A's frame: B's vertices are moved there first, its normals only once A's faces
     // found no separating axis, so separated pairs skip that work.
-    const Transform xf = invMulTransforms(frame, xfB);
-    const __m128 c = _mm_set1_ps(xf.q.c);
-    const __m128 s = _mm_set1_ps(xf.q.s);
+    const __m128 xf = invMulLanes(frame, xfB);
+    const __m128 c = splat<2>(xf);
+    const __m128 s = splat<3>(xf);
     Lanes<GB> vertsB = rotateLanes(loadLanes<GB>(b.vertices.data(), b.count), c, s);
-    const __m128 tx = _mm_set1_ps(xf.p.x);
-    const __m128 ty = _mm_set1_ps(xf.p.y);
+    const __m128 tx = splat<0>(xf);
+    const __m128 ty = splat<1>(xf);
     for (int g = 0; g < GB; ++g) {
         vertsB.x[g] = _mm_add_ps(vertsB.x[g], tx);
         vertsB.y[g] = _mm_add_ps(vertsB.y[g], ty);

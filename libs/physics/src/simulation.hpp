@@ -11,6 +11,7 @@
 #include "contact_solver.hpp"
 #include "contact_solver_wide.hpp"
 #include "joint_solver.hpp"
+#include "soft_step_stages.hpp"
 #include "solver_body.hpp"
 
 #include <cstdint>
@@ -130,7 +131,7 @@ struct Simulation {
     // Classic mode and rolling resistance only: the wide solver packs each constraint as it is
     // built and keeps it nowhere else.
     std::vector<ContactConstraint> constraints; // in contact order
-    ContactImpacts impacts;                     // the scalar solvers' (BlockWorker: the wide's)
+    ContactImpacts impacts; // the scalar solvers' and a staged block's (BlockWorker: the others')
     // A hit found while storing impulses by level: contact, point, approach speed.
     struct HitCandidate {
         int contact = -1;
@@ -143,14 +144,21 @@ struct Simulation {
     // most relax sweeps added, the direct joint solve's arrays (its components whose
     // factorisation gave up are the projection's to know too). Merged in a fixed order
     // afterwards.
+    // A block solved by all workers at once is built in pieces: each worker's restitution
+    // entries and whether its pieces held shapes pushed apart, merged into stagedRestitution
+    // (in constraint order) before the block is solved (solveSoftStepStaged(), its impacts
+    // planned in `impacts` above).
     struct BlockWorker {
         std::vector<WideRestitution> restitution;
         ContactImpacts impacts;
         std::vector<HitCandidate> hits;
         int extraRelaxIterations = 0;
         JointDirectScratch jointDirect;
+        bool pushOut = false;
     };
     std::vector<BlockWorker> blockWorkers;
+    std::vector<WideRestitution> stagedRestitution;
+    SoftStepStages softStepStages;
     // The wide soft-step solver's schedule: each constraint's level (its colour,
     // ConstraintColors), the slots in level order (level k holds slots [levelStart[k],
     // levelStart[k + 1]), contact order within a level) with each slot's constraint, contact
@@ -175,6 +183,7 @@ struct Simulation {
     std::vector<int> blockLevelStart;
     std::vector<int> blockBodyStart;
     std::vector<int> blockBodies;
+    std::vector<unsigned char> blockRigid; // per block: a constraint with a rigid state
     // The schedule above depends on nothing but the constraints (contacts and sides) and which
     // states are rigid. wideScheduleValid: it was built from the last solve's
     // constraintContacts, constraintBodies and stateRigid, which each solve keeps here

@@ -140,6 +140,51 @@ void TaskPool::threadMain(int worker) {
     }
 }
 
+void StageRunner::reset(std::span<const int> blockCounts, int workerCount) {
+    if (blockCounts.size() > capacity_) {
+        capacity_ = blockCounts.size();
+        stages_ = std::make_unique<Stage[]>(capacity_);
+    }
+    count_ = static_cast<int>(blockCounts.size());
+    for (std::size_t k = 0; k < blockCounts.size(); ++k) {
+        stages_[k].next.store(0, std::memory_order_relaxed);
+        stages_[k].done.store(0, std::memory_order_relaxed);
+        stages_[k].blocks = std::max(blockCounts[k], 1);
+    }
+    cursor_->stage.store(0, std::memory_order_relaxed);
+    spins_ = fitsHardware(workerCount) ? kSpinsBeforeSleep : 0;
+}
+
+void StageRunner::join(int worker, Function function, void* context) {
+    std::atomic<int>& cursor = cursor_->stage;
+    int k = cursor.load(std::memory_order_acquire);
+    while (k < count_) {
+        Stage& stage = stages_[static_cast<std::size_t>(k)];
+        int ran = 0;
+        for (int block = stage.next.fetch_add(1, std::memory_order_relaxed); block < stage.blocks;
+             block = stage.next.fetch_add(1, std::memory_order_relaxed)) {
+            function(k, block, worker, context);
+            ++ran;
+        }
+        // The worker that completes a stage opens the next; its acquire-release chain on
+        // `done` carries every block's writes to whoever reads the cursor after.
+        if (ran > 0 && stage.done.fetch_add(ran, std::memory_order_acq_rel) + ran == stage.blocks) {
+            cursor.store(++k, std::memory_order_release);
+            continue;
+        }
+        int next = cursor.load(std::memory_order_acquire);
+        for (int spins = 0; next == k; ++spins) {
+            if (spins < spins_) {
+                pause();
+            } else {
+                std::this_thread::yield(); // the worker holding a block was preempted
+            }
+            next = cursor.load(std::memory_order_acquire);
+        }
+        k = next;
+    }
+}
+
 void Tasks::configure(int workerCount, EnqueueTaskFunction enqueue, FinishTaskFunction finish,
                       void* userContext) {
     workerCount_ = workerCount;

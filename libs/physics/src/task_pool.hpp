@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <thread>
 #include <type_traits>
 #include <vector>
@@ -59,6 +60,49 @@ private:
 
 // Whether `workers` threads fit on this machine's hardware threads (or it does not say).
 bool fitsHardware(int workers);
+
+// A sequence of stages that every worker joining runs together (the soft step of one large
+// block of islands, soft_step_stages.cpp): stage k's blocks [0, blocks(k)) are claimed one at a
+// time through an atomic counter by whoever is there, and no worker starts stage k + 1 before
+// every block of stage k has run. A worker only ever waits for blocks another one has claimed
+// and is running, never for a worker to arrive: the stages complete with any number of workers
+// joining at any time, on any job system (one that runs the pieces one after another too: the
+// first does everything, the others find nothing left).
+class StageRunner {
+public:
+    // Runs block `block` of stage `stage` on worker `worker`.
+    using Function = void (*)(int stage, int block, int worker, void* context);
+
+    StageRunner() = default;
+    StageRunner(const StageRunner&) = delete;
+    StageRunner& operator=(const StageRunner&) = delete;
+    StageRunner(StageRunner&&) noexcept = default;
+    StageRunner& operator=(StageRunner&&) noexcept = default;
+
+    // Sets the stages for the next run, blockCounts[k] (at least 1) blocks for stage k, and
+    // how long a waiting worker spins before it yields (workerCount: how many may join).
+    // Not while a run is going on.
+    void reset(std::span<const int> blockCounts, int workerCount);
+    // Runs blocks of the current stage and the ones after it until every stage is done.
+    void join(int worker, Function function, void* context);
+
+private:
+    // Claims and completions in a cache line of their own per stage.
+    struct alignas(64) Stage {
+        std::atomic<int> next{0}; // next unclaimed block
+        std::atomic<int> done{0}; // blocks that have run
+        int blocks = 0;
+    };
+    std::unique_ptr<Stage[]> stages_;
+    std::size_t capacity_ = 0;
+    int count_ = 0;
+    int spins_ = 0;
+    // The first stage not done yet (count_ when all are).
+    struct alignas(64) Cursor {
+        std::atomic<int> stage{0};
+    };
+    std::unique_ptr<Cursor> cursor_ = std::make_unique<Cursor>();
+};
 
 // How World::step() runs its parallel stages (WorldDef::workerCount, enqueueTask, finishTask).
 class Tasks {

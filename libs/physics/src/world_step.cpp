@@ -5,6 +5,7 @@
 
 #include "body_solver.hpp"
 #include "prefetch.hpp"
+#include "soft_step_stages.hpp"
 #include "world_check.hpp"
 #include "world_impl.hpp"
 
@@ -65,6 +66,10 @@ namespace {
 // Constraints per block of islands the wide solver runs through all sub-steps at once: about
 // 0.7 MB of packed constraints, well inside a core's L2 cache with its bodies.
 constexpr int kBlockConstraints = 4096;
+// The fewest constraints of a block solved by several workers at once (World::Impl::solve()):
+// each of its passes then waits for the slowest worker about once per level, which a smaller
+// block does not make up for.
+constexpr int kStagedBlockConstraints = 1024;
 
 } // namespace
 
@@ -125,6 +130,17 @@ void World::Impl::scheduleWide(int constraintCount) {
         }
         int& levels = s.blockLevelStart[static_cast<std::size_t>(s.islandBlock[root]) + 1];
         levels = std::max(levels, s.constraintLevel[k] + 1);
+    }
+    // Whether a block's constraints have a rigid side with a state (a kinematic body): one
+    // level may then hold several constraints writing that state.
+    s.blockRigid.assign(static_cast<std::size_t>(blockCount), 0);
+    for (std::size_t k = 0; k < count; ++k) {
+        const detail::Simulation::ConstraintBodies& cb = s.constraintBodies[k];
+        if ((cb.indexA >= 0 && s.stateRigid[static_cast<std::size_t>(cb.indexA)] != 0) ||
+            (cb.indexB >= 0 && s.stateRigid[static_cast<std::size_t>(cb.indexB)] != 0)) {
+            s.blockRigid[static_cast<std::size_t>(
+                s.islandBlock[static_cast<std::size_t>(s.constraintIsland[k])])] = 1;
+        }
     }
     // Block `blockCount` holds the bodies no constraint touches: no levels.
     for (int b = 0; b < blockCount; ++b) {
@@ -422,78 +438,197 @@ void World::Impl::solve(float dt) {
         // lie one island apart in the array, too far for the hardware prefetcher: fetch the
         // ones a few slots ahead.
         constexpr int kPrefetchAhead = 16;
-        // A block's constraints are gathered lane by lane and prepared a whole group at a time
-        // (prepareWideGroup()), right before the block is solved: no constraint array in
-        // between, and the block's contacts, lanes and bodies stay in cache through build,
-        // sub-steps and store.
-        auto buildBlock = [&](auto& in, int firstLevel, int endLevel,
+        auto prefetchContact = [&](int slot) {
+            if (slot + kPrefetchAhead < constraintCount) {
+                detail::prefetchObject(&s.contacts[static_cast<std::size_t>(
+                    s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
+            }
+        };
+        // Group `group` of level `level`: its constraints gathered lane by lane and prepared all
+        // at once (prepareWideGroup()), right before its block is solved: no constraint array
+        // in between, and the block's contacts, lanes and bodies stay in cache through build,
+        // sub-steps and store. Appends its restitution entries; returns whether it holds shapes
+        // pushed apart.
+        auto buildGroup = [&](auto& in, int level, int group,
                               std::vector<detail::WideRestitution>& restitution) {
             constexpr int N = static_cast<int>(sizeof(in.indexA) / sizeof(in.indexA[0]));
-            bool blockPushOut = false;
-            restitution.clear();
-            for (int level = firstLevel; level < endLevel; ++level) {
-                const int levelFirst = s.levelStart[static_cast<std::size_t>(level)];
-                const int levelEnd = s.levelStart[static_cast<std::size_t>(level) + 1];
-                int group = s.wideContacts.levelStart[static_cast<std::size_t>(level)];
-                for (int first = levelFirst; first < levelEnd; first += N, ++group) {
-                    for (int lane = 0; lane < N; ++lane) {
-                        const int slot = first + lane;
-                        if (slot >= levelEnd) {
-                            in.clearLane(lane);
-                            continue;
-                        }
-                        if (slot + kPrefetchAhead < constraintCount) {
-                            detail::prefetchObject(&s.contacts[static_cast<std::size_t>(
-                                s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
-                        }
-                        const auto at = static_cast<std::size_t>(slot);
-                        const detail::Contact& c =
-                            s.contacts[static_cast<std::size_t>(s.slotContact[at])];
-                        const detail::ContactBodyView a = viewOf(c.bodyA, s.slotBodies[at].indexA);
-                        const detail::ContactBodyView b = viewOf(c.bodyB, s.slotBodies[at].indexB);
-                        const detail::Softness laneSoftness = softnessOf(a, b);
-                        in.setLane(lane, c.manifold, a, b, c.friction, laneSoftness);
-                        // pushedApart() on the softness just picked (the wide path is soft-step).
-                        blockPushOut =
-                            blockPushOut || detail::isPushedApart(c.manifold, a, b, laneSoftness);
-                        if (c.restitution != 0.0f) {
-                            restitution.push_back({level, slot - levelFirst, c.manifold.pointCount,
-                                                   c.restitution, pressOf(c, a, b),
-                                                   s.slotConstraint[at]});
-                        }
-                    }
-                    detail::prepareWideGroup(s.wideContacts, group, in);
+            const int levelFirst = s.levelStart[static_cast<std::size_t>(level)];
+            const int levelEnd = s.levelStart[static_cast<std::size_t>(level) + 1];
+            const int first =
+                levelFirst +
+                (group - s.wideContacts.levelStart[static_cast<std::size_t>(level)]) * N;
+            bool groupPushOut = false;
+            for (int lane = 0; lane < N; ++lane) {
+                const int slot = first + lane;
+                if (slot >= levelEnd) {
+                    in.clearLane(lane);
+                    continue;
+                }
+                prefetchContact(slot);
+                const auto at = static_cast<std::size_t>(slot);
+                const detail::Contact& c = s.contacts[static_cast<std::size_t>(s.slotContact[at])];
+                const detail::ContactBodyView a = viewOf(c.bodyA, s.slotBodies[at].indexA);
+                const detail::ContactBodyView b = viewOf(c.bodyB, s.slotBodies[at].indexB);
+                const detail::Softness laneSoftness = softnessOf(a, b);
+                in.setLane(lane, c.manifold, a, b, c.friction, laneSoftness);
+                // pushedApart() on the softness just picked (the wide path is soft-step).
+                groupPushOut =
+                    groupPushOut || detail::isPushedApart(c.manifold, a, b, laneSoftness);
+                if (c.restitution != 0.0f) {
+                    restitution.push_back({level, slot - levelFirst, c.manifold.pointCount,
+                                           c.restitution, pressOf(c, a, b), s.slotConstraint[at]});
                 }
             }
-            // applyRestitution() goes in constraint order.
+            detail::prepareWideGroup(s.wideContacts, group, in);
+            return groupPushOut;
+        };
+        // The level holding group `group` among levels [firstLevel, endLevel) (a group past
+        // the last of a level is in the next non-empty one).
+        const std::span<const int> groupStart = s.wideContacts.levelStart;
+        auto levelOfGroup = [&](int firstLevel, int endLevel, int group) {
+            const auto begin = groupStart.begin() + firstLevel;
+            return static_cast<int>(std::upper_bound(begin, groupStart.begin() + endLevel, group) -
+                                    groupStart.begin()) -
+                   1;
+        };
+        // Builds the groups [groupBegin, groupEnd) of levels [firstLevel, endLevel).
+        auto buildGroups = [&](int firstLevel, int endLevel, int groupBegin, int groupEnd,
+                               std::vector<detail::WideRestitution>& restitution) {
+            auto build = [&](auto& in) {
+                bool pushOutHere = false;
+                int level = levelOfGroup(firstLevel, endLevel, groupBegin);
+                for (int g = groupBegin; g < groupEnd; ++g) {
+                    while (groupStart[static_cast<std::size_t>(level) + 1] <= g) {
+                        ++level;
+                    }
+                    pushOutHere = buildGroup(in, level, g, restitution) || pushOutHere;
+                }
+                return pushOutHere;
+            };
+            if (s.wideContacts.lanes == 8) {
+                detail::WideManifoldT<8> lanes8;
+                return build(lanes8);
+            }
+            detail::WideManifoldT<4> lanes4;
+            return build(lanes4);
+        };
+        // applyRestitution() goes in constraint order.
+        auto sortRestitution = [](std::vector<detail::WideRestitution>& restitution) {
             std::sort(restitution.begin(), restitution.end(),
                       [](const detail::WideRestitution& x, const detail::WideRestitution& y) {
                           return x.constraint < y.constraint;
                       });
-            return blockPushOut;
+        };
+        // Stores a lane's impulses in its contact's manifold, and its hit in `hits`.
+        auto storeLane = [&](std::vector<detail::Simulation::HitCandidate>& hits) {
+            return [&, out = &hits](int slot, const detail::WideLaneResult& r) {
+                prefetchContact(slot);
+                const int ci = s.slotContact[static_cast<std::size_t>(slot)];
+                store(*out, ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount,
+                      r.normalImpulse, r.tangentImpulse, r.relativeVelocity, r.maxNormalImpulse);
+            };
         };
         const std::span<const int> blockBodies = s.blockBodies;
-        // Blocks share no body (see scheduleWide()), so they are solved on several workers at
-        // once, each block whole on one, with what the others also write kept per worker.
+        auto bodiesOf = [&](std::size_t b) {
+            return blockBodies.subspan(
+                static_cast<std::size_t>(s.blockBodyStart[b]),
+                static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b]));
+        };
+        const int blockCount = static_cast<int>(s.blockLevelStart.size()) - 1;
+        const int workerCount = tasks.workerCount();
+        s.blockWorkers.resize(static_cast<std::size_t>(workerCount));
+        for (detail::Simulation::BlockWorker& w : s.blockWorkers) {
+            w.hits.clear();
+            w.extraRelaxIterations = 0;
+            w.jointDirect.resetDense();
+        }
+        // A block holding more than a worker's share of the constraints (a single large pile)
+        // is solved by all workers at once, stage by stage (solveSoftStepStaged()), when it is
+        // large enough for that to pay, has no joints (their passes are not split) and no
+        // rigid side (a kinematic body's state may be in several constraints of one level).
+        auto isStaged = [&](std::size_t b) {
+            const int constraints =
+                s.levelStart[static_cast<std::size_t>(s.blockLevelStart[b + 1])] -
+                s.levelStart[static_cast<std::size_t>(s.blockLevelStart[b])];
+            const bool jointed =
+                !s.activeJoints.empty() && s.blockJointStart[b + 1] > s.blockJointStart[b];
+            return workerCount > 1 && constraints >= kStagedBlockConstraints &&
+                   constraints * workerCount > constraintCount && !jointed && s.blockRigid[b] == 0;
+        };
+        // Build and store are per group, in pieces over the workers; what the pieces gather
+        // (restitution lists, hits) is put in constraint or contact order afterwards.
+        constexpr int kGroupsPerPiece = 16;
+        auto solveStaged = [&](std::size_t b) {
+            const int firstLevel = s.blockLevelStart[b];
+            const int endLevel = s.blockLevelStart[b + 1];
+            s.counters.stagedConstraints += s.levelStart[static_cast<std::size_t>(endLevel)] -
+                                            s.levelStart[static_cast<std::size_t>(firstLevel)];
+            const int groupBegin = groupStart[static_cast<std::size_t>(firstLevel)];
+            const int groupEnd = groupStart[static_cast<std::size_t>(endLevel)];
+            for (detail::Simulation::BlockWorker& w : s.blockWorkers) {
+                w.restitution.clear();
+                w.pushOut = false;
+            }
+            tasks.parallelFor(groupEnd - groupBegin, kGroupsPerPiece,
+                              [&](int begin, int end, int worker) {
+                                  detail::Simulation::BlockWorker& w =
+                                      s.blockWorkers[static_cast<std::size_t>(worker)];
+                                  w.pushOut = buildGroups(firstLevel, endLevel, groupBegin + begin,
+                                                          groupBegin + end, w.restitution) ||
+                                              w.pushOut;
+                              });
+            std::vector<detail::WideRestitution>& restitution = s.stagedRestitution;
+            restitution.clear();
+            bool blockPushOut = false;
+            for (const detail::Simulation::BlockWorker& w : s.blockWorkers) {
+                restitution.insert(restitution.end(), w.restitution.begin(), w.restitution.end());
+                blockPushOut = blockPushOut || w.pushOut;
+            }
+            sortRestitution(restitution);
+            detail::SolverStep blockStep = step;
+            pushOutSweeps(blockStep, blockPushOut);
+            s.extraRelaxIterations =
+                std::max(s.extraRelaxIterations, blockStep.extraRelaxIterations);
+            const bool impacts = !restitution.empty() && s.impacts.plan(s, restitution, dt);
+            detail::solveSoftStepStaged(blockStep, s.wideContacts, firstLevel, endLevel,
+                                        bodiesOf(b), restitution, tasks, s.softStepStages);
+            tasks.parallelFor(
+                groupEnd - groupBegin, kGroupsPerPiece, [&](int begin, int end, int worker) {
+                    auto visit = storeLane(s.blockWorkers[static_cast<std::size_t>(worker)].hits);
+                    int level = levelOfGroup(firstLevel, endLevel, groupBegin + begin);
+                    for (int g = groupBegin + begin; g < groupBegin + end;) {
+                        const int levelEnd = std::min(
+                            groupStart[static_cast<std::size_t>(level) + 1], groupBegin + end);
+                        detail::visitWideGroups(s.wideContacts, s.levelStart, level, g, levelEnd,
+                                                visit);
+                        g = levelEnd;
+                        ++level;
+                    }
+                });
+            if (impacts) {
+                s.impacts.apply(s);
+            }
+        };
+        // Blocks share no body (see scheduleWide()), so the others are solved on several
+        // workers at once, each block whole on one, with what the others also write kept per
+        // worker.
         auto solveBlock = [&](std::size_t b, detail::Simulation::BlockWorker& worker) {
             const int firstLevel = s.blockLevelStart[b];
             const int endLevel = s.blockLevelStart[b + 1];
-            if (firstLevel == endLevel && s.blockBodyStart[b] == s.blockBodyStart[b + 1]) {
-                return; // the block of bodies no constraint touches, and there are none
+            if ((firstLevel == endLevel && s.blockBodyStart[b] == s.blockBodyStart[b + 1]) ||
+                isStaged(b)) {
+                return; // the block of bodies no constraint touches and there are none, or done
             }
             // Only the block holding shapes pushed apart sweeps more.
             detail::SolverStep blockStep = step;
             if (blockStep.jointStep.direct != nullptr) {
                 blockStep.jointStep.direct = &worker.jointDirect;
             }
-            bool blockPushOut = false;
-            if (s.wideContacts.lanes == 8) {
-                detail::WideManifoldT<8> lanes8;
-                blockPushOut = buildBlock(lanes8, firstLevel, endLevel, worker.restitution);
-            } else {
-                detail::WideManifoldT<4> lanes4;
-                blockPushOut = buildBlock(lanes4, firstLevel, endLevel, worker.restitution);
-            }
+            worker.restitution.clear();
+            const bool blockPushOut =
+                buildGroups(firstLevel, endLevel, groupStart[static_cast<std::size_t>(firstLevel)],
+                            groupStart[static_cast<std::size_t>(endLevel)], worker.restitution);
+            sortRestitution(worker.restitution);
             pushOutSweeps(blockStep, blockPushOut);
             worker.extraRelaxIterations =
                 std::max(worker.extraRelaxIterations, blockStep.extraRelaxIterations);
@@ -501,44 +636,23 @@ void World::Impl::solve(float dt) {
             const bool impacts =
                 !worker.restitution.empty() && worker.impacts.plan(s, worker.restitution, dt);
             detail::solveSoftStepBlock(
-                blockStep, s.wideContacts, firstLevel, endLevel,
-                blockBodies.subspan(
-                    static_cast<std::size_t>(s.blockBodyStart[b]),
-                    static_cast<std::size_t>(s.blockBodyStart[b + 1] - s.blockBodyStart[b])),
-                worker.restitution,
+                blockStep, s.wideContacts, firstLevel, endLevel, bodiesOf(b), worker.restitution,
                 s.activeJoints.empty()
                     ? std::span<const int>{}
                     : std::span<const int>(s.blockJoints)
                           .subspan(static_cast<std::size_t>(s.blockJointStart[b]),
                                    static_cast<std::size_t>(s.blockJointStart[b + 1] -
                                                             s.blockJointStart[b])));
-            // Contacts are visited in slot order, twice a block: gathered before it is solved
-            // and their impulses stored right after, while its lanes are in cache. A level's
-            // contacts lie one island apart in the array, too far for the hardware prefetcher:
-            // fetch the ones a few slots ahead.
-            detail::visitWide(
-                s.wideContacts, s.levelStart, firstLevel, endLevel,
-                [&](int slot, const detail::WideLaneResult& r) {
-                    if (slot + kPrefetchAhead < constraintCount) {
-                        detail::prefetchObject(&s.contacts[static_cast<std::size_t>(
-                            s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
-                    }
-                    const int ci = s.slotContact[static_cast<std::size_t>(slot)];
-                    store(worker.hits, ci,
-                          s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount,
-                          r.normalImpulse, r.tangentImpulse, r.relativeVelocity,
-                          r.maxNormalImpulse);
-                });
+            detail::visitWide(s.wideContacts, s.levelStart, firstLevel, endLevel,
+                              storeLane(worker.hits));
             if (impacts) {
                 worker.impacts.apply(s);
             }
         };
-        const int blockCount = static_cast<int>(s.blockLevelStart.size()) - 1;
-        s.blockWorkers.resize(static_cast<std::size_t>(tasks.workerCount()));
-        for (detail::Simulation::BlockWorker& w : s.blockWorkers) {
-            w.hits.clear();
-            w.extraRelaxIterations = 0;
-            w.jointDirect.resetDense();
+        for (int b = 0; b < blockCount; ++b) {
+            if (isStaged(static_cast<std::size_t>(b))) {
+                solveStaged(static_cast<std::size_t>(b));
+            }
         }
         auto solveBlocks = [&](int begin, int end, int worker) {
             for (int b = begin; b < end; ++b) {

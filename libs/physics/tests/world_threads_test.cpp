@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <condition_variable>
 #include <cstdint>
 #include <cstring>
@@ -202,19 +203,41 @@ void buildRunaways(Scene& s) {
     }
 }
 
-// One pyramid of base 40: one island, so one block of the wide solver on one worker; its narrow
-// phase is shared.
-void buildPyramid(Scene& s) {
+// A pyramid of unit boxes on the ground, `base` boxes wide.
+void addPyramid(Scene& s, int base) {
     addGround(s.world);
-    constexpr int kBase = 40;
-    for (int row = 0; row < kBase; ++row) {
-        for (int col = 0; col < kBase - row; ++col) {
+    for (int row = 0; row < base; ++row) {
+        for (int col = 0; col < base - row; ++col) {
             const Vec2 p{1.0f * static_cast<float>(col) + 0.5f * static_cast<float>(row) -
-                             0.5f * kBase,
+                             0.5f * static_cast<float>(base),
                          0.5f + 1.0f * static_cast<float>(row)};
             s.bodies.push_back(addBox(s.world, p, 0.5f));
         }
     }
+}
+
+// One pyramid of base 40: one island, and one block of the wide solver that all workers solve
+// together, colour by colour (StepCounters::stagedConstraints).
+void buildPyramid(Scene& s) { addPyramid(s, 40); }
+
+// A pyramid of base 30 (one island, solved by all workers together) struck by bouncy balls
+// (restitution and hit events inside it), with a box spawned into its top (the push-out
+// sweeps).
+void buildStruckPyramid(Scene& s) {
+    constexpr int kBase = 30;
+    addPyramid(s, kBase);
+    for (float x : {-9.0f, -4.0f, 3.0f, 8.0f}) {
+        BodyDef bd;
+        bd.type = BodyType::Dynamic;
+        bd.position = {x, static_cast<float>(kBase) - 2.0f * std::fabs(x) + 1.5f};
+        bd.linearVelocity = {0.0f, -8.0f};
+        const BodyId ball = s.world.createBody(bd);
+        ShapeDef sd;
+        sd.restitution = 0.8f;
+        s.world.createShape(ball, sd, Circle{{0.0f, 0.0f}, 0.4f});
+        s.bodies.push_back(ball);
+    }
+    s.bodies.push_back(addBox(s.world, {0.1f, static_cast<float>(kBase) - 0.1f}, 0.5f));
 }
 
 // Steps the scene; hashes every step's transforms, velocities and events.
@@ -273,6 +296,7 @@ const Case kCases[] = {
     {"stacks", buildStacks, SolverMode::SoftStep, 20},
     {"jointed_stacks", buildJointedStacks, SolverMode::SoftStep, 20},
     {"pyramid", buildPyramid, SolverMode::SoftStep, 12},
+    {"struck_pyramid", buildStruckPyramid, SolverMode::SoftStep, 20},
     {"runaways", buildRunaways, SolverMode::SoftStep, 40},
 };
 
@@ -369,6 +393,36 @@ TEST(WorldThreads, TheGamesJobSystemRunsTheStepWithTheSameResults) {
     EXPECT_EQ(run(def, buildMixed, 150), reference);
     // The step's work went through it: the narrow phase of every step at least.
     EXPECT_GE(jobs.tasks, 150);
+    // A pile its three threads solve together, stage by stage.
+    EXPECT_EQ(run(def, buildStruckPyramid, 20), run(threadedDef(1, 8), buildStruckPyramid, 20));
+}
+
+// A pile holding more than a worker's share of the constraints is solved by all workers
+// together (so the cases above split one island across workers); small piles each go whole to
+// one worker, and one worker solves everything whole.
+TEST(WorldThreads, ALargeIslandIsSolvedByAllWorkersTogether) {
+    for (int workers : {1, 2, 3}) {
+        Scene pyramid{World{threadedDef(workers, 8)}, {}};
+        buildStruckPyramid(pyramid);
+        Scene piles{World{threadedDef(workers, 8)}, {}};
+        buildMixed(piles);
+        int hits = 0;
+        for (int i = 0; i < 20; ++i) {
+            pyramid.world.step(kStep);
+            piles.world.step(kStep);
+            const StepCounters counters = pyramid.world.stepCounters();
+            EXPECT_GT(counters.contactConstraints, 1000);
+            EXPECT_EQ(counters.stagedConstraints, workers > 1 ? counters.contactConstraints : 0)
+                << workers << " workers, step " << i;
+            EXPECT_EQ(piles.world.stepCounters().stagedConstraints, 0) << workers << " workers";
+            // The box spawned into the top is pushed out in the first step (more sweeps).
+            if (i == 0) {
+                EXPECT_GT(counters.relaxIterations, 1);
+            }
+            hits += static_cast<int>(pyramid.world.hitEvents().size());
+        }
+        EXPECT_GE(hits, 4); // the balls, at least
+    }
 }
 
 // A job system that runs every piece at once inside enqueue, last piece first, each as the

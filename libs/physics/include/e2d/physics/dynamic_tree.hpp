@@ -15,6 +15,7 @@ namespace e2d::physics {
 namespace detail {
 
 struct SnapshotAccess; // World's snapshots (world_snapshot.cpp) read and write the tree whole.
+class BroadPhase;      // reads its own live proxies' boxes unchecked (BroadPhase::fatAabbOfLive).
 
 /// A LIFO stack of node indices that lives on the call stack while it holds at most `N` entries
 /// and spills into a std::vector past that, so tree traversals allocate nothing for trees of
@@ -174,6 +175,7 @@ public:
 
 private:
     friend struct detail::SnapshotAccess;
+    friend class detail::BroadPhase;
     struct Node {
         Aabb aabb;                  // leaf: as given; internal: union of the children
         std::uint64_t categoryBits; // internal: union of the children's

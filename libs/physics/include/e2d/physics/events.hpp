@@ -68,6 +68,11 @@ struct StepCounters {
     /// are solved and relaxed 1 + SolverDef::relaxIterations times per sub-step either way).
     /// 0 in classic mode.
     int relaxIterations = 0;
+    /// Soft step: contact constraints of the island blocks that all workers solved together,
+    /// level by level (a pile holding more than one worker's share of the step's constraints,
+    /// at least about a thousand, with no joint and no kinematic body); the others' blocks each
+    /// run whole on one worker. 0 with one worker (WorldDef::workerCount).
+    int stagedConstraints = 0;
 };
 
 /// A touching contact as World::forEachTouchingContact() shows it.
