@@ -137,9 +137,12 @@ void solveSoftStepStaged(const SolverStep& step, WideContacts& wide, int firstLe
                                       stage.perBlock);
     }
     scratch.runner.reset(scratch.blockCounts, tasks.workerCount());
-    StageContext context{step,           wide,
-                         bodies,         restitution,
-                         scratch.stages, step.dt / static_cast<float>(step.def->subSteps)};
+    StageContext context{step,
+                         wide,
+                         bodies,
+                         restitution,
+                         scratch.stages,
+                         step.dt / static_cast<float>(step.def->subSteps)};
     // One piece per worker; each joins the stages where they are when it starts.
     tasks.parallelFor(tasks.workerCount(), 1, [&](int /*begin*/, int /*end*/, int worker) {
         scratch.runner.join(worker, runStage, &context);
