@@ -16,13 +16,11 @@
 // Lane vectors for the passes that solve several constraints at a time (contacts, plain
 // hinges): the vector types of four and eight lanes and, per width, splat, select, maxOf,
 // anyLane, allLanes, lanesOf and bodiesAt (where each lane reads and writes its body),
-// transposeRows, and
-// loadRows/storeRows, which gather BodyStates into lane vectors and scatter them back with
-// shuffles only. Four lanes everywhere (SSE2 on x86-64,
-// NEON on ARM64, plain scalar code where the target has no SIMD); eight on x86-64 (AVX2,
-// E2D_HAS_WIDE8), for code that checked the CPU at run time. No "fma" in the target: a fused
-// multiply-add rounds once where the scalar code rounds twice, so every width gives the
-// scalar results.
+// transposeRows, and loadRows/storeRows, which gather BodyStates into lane vectors and scatter
+// them back with shuffles only. Four lanes everywhere (SSE2 on x86-64, NEON on ARM64, plain
+// scalar code where the target has no SIMD); eight on x86-64 (AVX2, E2D_HAS_WIDE8), for code
+// that checked the CPU at run time. No "fma" in the target: a fused multiply-add rounds once
+// where the scalar code rounds twice, so every width gives the scalar results.
 namespace e2d::physics::detail {
 
 using Float4 = float __attribute__((vector_size(16)));
