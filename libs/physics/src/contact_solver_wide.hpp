@@ -59,6 +59,13 @@ struct alignas(4 * N) WideConstraintT {
     I blockSolve;
     I twoPoints; // all ones where the lane has a second point
     WidePointT<N> points[2];
+    // Where each lane reads and writes its bodies this step (bodiesAt()), set with the rest so
+    // that the passes do not work the addresses out again: a state in the step's array, or
+    // `pad` for a static side and an empty lane. Each pass resets the pad before it reads the
+    // lanes (it may write there), so a static side always reads a resting state.
+    BodyState* bodyA[N];
+    BodyState* bodyB[N];
+    mutable BodyState pad;
 };
 
 static_assert(sizeof(WidePointT<8>) % 32 == 0 && sizeof(WideConstraintT<8>) % 32 == 0 &&
@@ -81,8 +88,9 @@ int bestWideLanes();
 // and empties the lanes past each level's last constraint; packWideLane() then fills the
 // others.
 void layoutWide(WideContacts& wide, std::span<const int> levelStart, int lanes);
-// Puts constraint `c`, the `at`-th of level `level`, in its lane.
-void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint& c);
+// Puts constraint `c`, the `at`-th of level `level`, in its lane; its bodies are in `states`.
+void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint& c,
+                  std::span<BodyState> states);
 
 // What prepareContact() reads for N constraints, one per lane: the manifold, both sides'
 // ContactBodyView and the material. The world gathers a group's lanes here (setLane(),
@@ -169,16 +177,19 @@ struct alignas(32) WideManifoldT {
     }
 };
 
-// Prepares and packs the group of constraints `group` from `in` (see WideManifoldT);
-// The lane count must be wide.lanes.
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<4>& in);
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<8>& in);
+// Prepares and packs the group of constraints `group` from `in` (see WideManifoldT), whose
+// bodies are in `states` (the array the passes then run on). The lane count must be wide.lanes.
+void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<4>& in,
+                      std::span<BodyState> states);
+void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<8>& in,
+                      std::span<BodyState> states);
 
 // Packs the constraints of each level, constraints[levelOrder[levelStart[k] ..
 // levelStart[k + 1])], into groups of `lanes` (the last group of a level padded with empty
-// lanes).
+// lanes); their bodies are in `states`.
 void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constraints,
-                 std::span<const int> levelOrder, std::span<const int> levelStart, int lanes);
+                 std::span<const int> levelOrder, std::span<const int> levelStart, int lanes,
+                 std::span<BodyState> states);
 // Copies impulses and the impact bookkeeping back to the constraints.
 void storeWide(const WideContacts& wide, std::span<ContactConstraint> constraints,
                std::span<const int> levelOrder, std::span<const int> levelStart);

@@ -62,7 +62,8 @@ lanesOf(const int (&index)[N], std::span<BodyState> states, BodyState& sink,
 // Where each of N lanes reads and writes its body, one address for both: a static side (index
 // -1) gets `pad`, a resting state of the caller's, reset before the lanes are read. All lanes
 // are read before any is written, so a static side reads a resting state whatever the others
-// write to the pad. Half the addresses of lanesOf(), so fewer of them go to the stack.
+// write to the pad. Half the addresses of lanesOf(); the contact groups work them out once a
+// step and keep them (WideConstraintT::bodyA and bodyB).
 template <int N>
 __attribute__((always_inline)) inline void bodiesAt(const int (&index)[N], BodyState* states,
                                                     BodyState* pad, BodyState* (&at)[N]) {

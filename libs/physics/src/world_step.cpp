@@ -487,7 +487,7 @@ void World::Impl::solve(float dt) {
                                            c.restitution, pressOf(c, a, b), s.slotConstraint[at]});
                 }
             }
-            detail::prepareWideGroup(s.wideContacts, group, in);
+            detail::prepareWideGroup(s.wideContacts, group, in, s.states);
             return groupPushOut;
         };
         // The level holding group `group` among levels [firstLevel, endLevel) (a group past
