@@ -226,6 +226,20 @@ void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint
     }
 }
 
+int hitLanes(const WideConstraintT<4>& group, float threshold) {
+    return lanes4::hitLanes(group, threshold);
+}
+
+int hitLanes(const WideConstraintT<8>& group, float threshold) {
+#if defined(E2D_HAS_WIDE8)
+    return lanes8::hitLanes(group, threshold);
+#else
+    (void)group; // unreachable, as prepareWideGroup() below
+    (void)threshold;
+    std::abort();
+#endif
+}
+
 void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<4>& in,
                       std::span<BodyState> states) {
     lanes4::prepareGroup(in, wide.constraints4[static_cast<std::size_t>(group)], states.data());

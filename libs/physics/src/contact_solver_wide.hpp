@@ -210,22 +210,27 @@ void applyRestitutionWide(WideContacts& wide, std::span<const WideRestitution> l
                           std::span<BodyState> states, float threshold, float h);
 
 // What the step leaves in one lane for the world: per point, impulses (for next step's warm
-// start) and the impact bookkeeping (hit events).
+// start) and the impact bookkeeping (hit events). mayHit: whether a point was pushed on
+// (maxNormalImpulse > 0) while approaching faster than the visit's hit threshold; where it is
+// false, relativeVelocity and maxNormalImpulse are not filled in (a resting pile: every lane).
 struct WideLaneResult {
     float normalImpulse[2];
     float tangentImpulse[2];
+    bool mayHit;
     float relativeVelocity[2];
     float maxNormalImpulse[2];
 };
 
 // Calls visit(slot, result) for every packed constraint, slot being its place in level order
-// (level k holds slots [levelStart[k], levelStart[k + 1])), in slot order.
+// (level k holds slots [levelStart[k], levelStart[k + 1])), in slot order; hitThreshold: the
+// approach speed above which a lane may hit (WideLaneResult::mayHit).
 template <class Visit>
-void visitWide(const WideContacts& wide, std::span<const int> levelStart, Visit&& visit);
+void visitWide(const WideContacts& wide, std::span<const int> levelStart, float hitThreshold,
+               Visit&& visit);
 // The same over levels [firstLevel, endLevel) only.
 template <class Visit>
 void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
-               int endLevel, Visit&& visit);
+               int endLevel, float hitThreshold, Visit&& visit);
 
 // warmStartContacts() and solveContacts() over every packed constraint, level after level
 // (backward: last level first; reversePoints: each constraint's points last to first).
@@ -241,7 +246,7 @@ void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyS
 // The same over the groups [groupBegin, groupEnd) of level `level` only.
 template <class Visit>
 void visitWideGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
-                     int groupBegin, int groupEnd, Visit&& visit);
+                     int groupBegin, int groupEnd, float hitThreshold, Visit&& visit);
 
 // warmStartWide() and solveWide() over the packed groups [groupBegin, groupEnd) of one level
 // (its constraints share no moving body: any part of a level may run while another worker
@@ -251,21 +256,32 @@ void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd,
 void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, std::span<BodyState> states,
                      float invH, bool useBias, float pushMaxSpeed, bool reversePoints);
 
+// The lanes of `group` whose points may hit: pushed on (maxNormalImpulse > 0) while
+// approaching faster than `threshold` (-relativeVelocity > threshold); lane k in bit k.
+int hitLanes(const WideConstraintT<4>& group, float threshold);
+int hitLanes(const WideConstraintT<8>& group, float threshold);
+
 namespace wide_detail {
 
 // Visits group g's lanes, the first holding slot `first`, up to slot `end`.
 template <int N, class Visit>
 [[gnu::always_inline]] inline void visitGroup(const std::vector<WideConstraintT<N>>& groups, int g,
-                                              int first, int end, Visit& visit) {
+                                              int first, int end, float hitThreshold,
+                                              Visit& visit) {
     WideLaneResult r;
     const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
+    // The world's test for a hit, on all lanes at once (missing points have no impulse).
+    const int mayHit = hitLanes(w, hitThreshold);
     for (int lane = 0; lane < N && first + lane < end; ++lane) {
+        r.mayHit = ((mayHit >> lane) & 1) != 0;
         for (int i = 0; i < 2; ++i) {
             const WidePointT<N>& wp = w.points[i];
             r.normalImpulse[i] = wp.normalImpulse[lane];
             r.tangentImpulse[i] = wp.tangentImpulse[lane];
-            r.relativeVelocity[i] = wp.relativeVelocity[lane];
-            r.maxNormalImpulse[i] = wp.maxNormalImpulse[lane];
+            if (r.mayHit) {
+                r.relativeVelocity[i] = wp.relativeVelocity[lane];
+                r.maxNormalImpulse[i] = wp.maxNormalImpulse[lane];
+            }
         }
         visit(first + lane, r);
     }
@@ -274,12 +290,12 @@ template <int N, class Visit>
 template <int N, class Visit>
 void visitLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
                 std::span<const int> levelStart, std::size_t firstLevel, std::size_t endLevel,
-                Visit& visit) {
+                float hitThreshold, Visit& visit) {
     for (std::size_t k = firstLevel; k < endLevel; ++k) {
         const int end = levelStart[k + 1];
         int g = wideStart[k];
         for (int first = levelStart[k]; first < end; first += N, ++g) {
-            visitGroup(groups, g, first, end, visit);
+            visitGroup(groups, g, first, end, hitThreshold, visit);
         }
     }
 }
@@ -287,10 +303,11 @@ void visitLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const i
 template <int N, class Visit>
 void visitGroups(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
                  std::span<const int> levelStart, std::size_t level, int groupBegin, int groupEnd,
-                 Visit& visit) {
+                 float hitThreshold, Visit& visit) {
     const int end = levelStart[level + 1];
     for (int g = groupBegin; g < groupEnd; ++g) {
-        visitGroup(groups, g, levelStart[level] + (g - wideStart[level]) * N, end, visit);
+        visitGroup(groups, g, levelStart[level] + (g - wideStart[level]) * N, end, hitThreshold,
+                   visit);
     }
 }
 
@@ -298,33 +315,36 @@ void visitGroups(const std::vector<WideConstraintT<N>>& groups, std::span<const 
 
 template <class Visit>
 void visitWideGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
-                     int groupBegin, int groupEnd, Visit&& visit) {
+                     int groupBegin, int groupEnd, float hitThreshold, Visit&& visit) {
     const auto at = static_cast<std::size_t>(level);
     if (wide.lanes == 8) {
         wide_detail::visitGroups(wide.constraints8, wide.levelStart, levelStart, at, groupBegin,
-                                 groupEnd, visit);
+                                 groupEnd, hitThreshold, visit);
     } else {
         wide_detail::visitGroups(wide.constraints4, wide.levelStart, levelStart, at, groupBegin,
-                                 groupEnd, visit);
+                                 groupEnd, hitThreshold, visit);
     }
 }
 
 template <class Visit>
 void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
-               int endLevel, Visit&& visit) {
+               int endLevel, float hitThreshold, Visit&& visit) {
     const auto first = static_cast<std::size_t>(firstLevel);
     const auto end = static_cast<std::size_t>(std::max(endLevel, firstLevel));
     if (wide.lanes == 8) {
-        wide_detail::visitLanes(wide.constraints8, wide.levelStart, levelStart, first, end, visit);
+        wide_detail::visitLanes(wide.constraints8, wide.levelStart, levelStart, first, end,
+                                hitThreshold, visit);
     } else {
-        wide_detail::visitLanes(wide.constraints4, wide.levelStart, levelStart, first, end, visit);
+        wide_detail::visitLanes(wide.constraints4, wide.levelStart, levelStart, first, end,
+                                hitThreshold, visit);
     }
 }
 
 template <class Visit>
-void visitWide(const WideContacts& wide, std::span<const int> levelStart, Visit&& visit) {
+void visitWide(const WideContacts& wide, std::span<const int> levelStart, float hitThreshold,
+               Visit&& visit) {
     visitWide(wide, levelStart, 0, levelStart.empty() ? 0 : static_cast<int>(levelStart.size()) - 1,
-              visit);
+              hitThreshold, visit);
 }
 
 } // namespace e2d::physics::detail

@@ -329,6 +329,15 @@ E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<const int
     }
 }
 
+// The lanes of `c` that may hit (WideLaneResult::mayHit), lane k in bit k.
+E2D_WIDE_FN int hitLanes(const Constraint& c, float threshold) {
+    I mayHit = I{};
+    for (const Point& cp : c.points) {
+        mayHit |= (cp.maxNormalImpulse > splat(0.0f)) & (-cp.relativeVelocity > splat(threshold));
+    }
+    return laneBits(mayHit);
+}
+
 #undef E2D_WIDE_INLINE
 
 // --- Prepare: prepareContact(), prepareBlock() and packLane() on every lane at once ---
