@@ -126,12 +126,74 @@ struct ContactSides {
     const detail::Body& bb;
 };
 
+constexpr std::size_t kChainSegmentIndex = static_cast<std::size_t>(ShapeType::ChainSegment);
+
+// SolverDef::contactRecycleDistance, capped at the speculative distance (see its doc).
+float effectiveRecycleDistance(const SolverDef& def, float speculativeDistance) {
+    return std::min(def.contactRecycleDistance, speculativeDistance);
+}
+
+// The farthest a point of the body's shapes is from its origin, metres.
+float extentFromOrigin(const detail::Body& b) {
+    return length(b.motion.localCenter) + b.motion.maxExtent;
+}
+
+// Notes the manifold just computed for bodies at xfA and xfB, in the bodies' frames.
+void recordOrigin(detail::ManifoldOrigin& o, const Manifold& m, const detail::Body& ba,
+                  const detail::Body& bb) {
+    const Transform& xfA = ba.transform;
+    const Transform& xfB = bb.transform;
+    o.bInA = invMulTransforms(xfA, xfB);
+    o.aInB = invRotate(xfB.q, xfA.p - xfB.p);
+    o.extentA = extentFromOrigin(ba);
+    o.extentB = extentFromOrigin(bb);
+    o.normalInA = invRotate(xfA.q, m.normal);
+    for (int i = 0; i < m.pointCount; ++i) {
+        const ManifoldPoint& mp = m.points[i];
+        const Vec2 half = (0.5f * mp.separation) * m.normal;
+        o.surfaceA[i] = invRotate(xfA.q, mp.anchorA - half);
+        o.surfaceB[i] = invRotate(xfB.q, mp.anchorB + half);
+    }
+    o.valid = true;
+}
+
+// How far any point of one body has moved relative to the other since the origin was noted, at
+// most: the translation of one body's origin in the other's frame plus the chord the relative
+// rotation turns the farthest point through (the smaller bound of the two ways round).
+float motionSince(const detail::ManifoldOrigin& o, const Transform& xfA, const Transform& xfB) {
+    const Transform bInA = invMulTransforms(xfA, xfB);
+    const Vec2 aInB = invRotate(xfB.q, xfA.p - xfB.p);
+    const float chord = length(Vec2{bInA.q.c - o.bInA.q.c, bInA.q.s - o.bInA.q.s});
+    return std::min(length(bInA.p - o.bInA.p) + chord * o.extentB,
+                    length(aInB - o.aInB) + chord * o.extentA);
+}
+
+// The noted manifold moved with the bodies: each point's two surface points where the bodies
+// now carry them, the point midway, the separation along the normal (which turns with A).
+// Impulses and feature ids stay.
+void recycleManifold(Manifold& m, const detail::ManifoldOrigin& o, const Transform& xfA,
+                     const Transform& xfB) {
+    m.normal = rotate(xfA.q, o.normalInA);
+    const Vec2 offset = xfB.p - xfA.p;
+    for (int i = 0; i < m.pointCount; ++i) {
+        ManifoldPoint& mp = m.points[i];
+        const Vec2 a = rotate(xfA.q, o.surfaceA[i]);
+        const Vec2 gap = offset + rotate(xfB.q, o.surfaceB[i]) - a;
+        mp.anchorA = a + 0.5f * gap;
+        mp.anchorB = mp.anchorA - offset;
+        mp.point = xfA.p + mp.anchorA;
+        mp.separation = dot(gap, m.normal);
+        mp.persisted = true;
+    }
+}
+
 // World::Impl::updateManifold() on sides already looked up: forced inline into the parallel
 // pass's loop, which has just read them (the call and the second lookup cost about 30
 // instructions a contact).
 [[gnu::always_inline]] inline bool collideContact(detail::Contact& c, const ContactSides& sides,
                                                   CollisionAlgorithm collisionAlgorithm,
-                                                  float speculativeDistance, float dt) {
+                                                  float speculativeDistance,
+                                                  float recycleDistance, float dt) {
     const auto& [sa, sb, ba, bb] = sides;
     if (c.sensor) {
         Manifold m =
@@ -145,6 +207,17 @@ struct ContactSides {
                     std::abs(ba.angularVelocity) * ba.motion.maxExtent +
                     std::abs(bb.angularVelocity) * bb.motion.maxExtent;
     float margin = std::min(speculativeDistance + dt * closing, 4.0f * kAabbMargin);
+    // Recycling: the old manifold moved with the bodies while they, with this step's motion at
+    // the current speeds, stay within the distance of where the routine last saw them.
+    detail::ManifoldOrigin& origin = c.origin;
+    if (origin.valid) {
+        if (recycleDistance > 0.0f &&
+            motionSince(origin, ba.transform, bb.transform) + dt * closing <= recycleDistance) {
+            recycleManifold(c.manifold, origin, ba.transform, bb.transform);
+            return c.manifold.pointCount > 0;
+        }
+        origin.valid = false;
+    }
     // Last step's impulses by feature id (-1: no point), kept aside so that the new manifold can
     // be built in place, without a 92-byte copy.
     struct OldPoint {
@@ -179,6 +252,10 @@ struct ContactSides {
         mp.tangentImpulse = match != nullptr ? match->tangentImpulse : 0.0f;
         mp.persisted = match != nullptr;
     }
+    if (recycleDistance > 0.0f && sa.geometry.index() != kChainSegmentIndex &&
+        sb.geometry.index() != kChainSegmentIndex) {
+        recordOrigin(origin, m, ba, bb);
+    }
     return m.pointCount > 0;
 }
 
@@ -189,7 +266,7 @@ struct ContactSides {
 // contact's shapes and bodies only, so contacts are updated on several workers at once.
 bool World::Impl::updateManifold(detail::Contact& c, float dt) const {
     return collideContact(c, {shape(c.shapeA), shape(c.shapeB), body(c.bodyA), body(c.bodyB)},
-                          collisionAlgorithm, speculativeDistance, dt);
+                          collisionAlgorithm, speculativeDistance, effectiveRecycleDistance(sim.def, speculativeDistance), dt);
 }
 
 void World::Impl::updateContacts(float dt) {
@@ -218,6 +295,7 @@ void World::Impl::updateContacts(float dt) {
     // Each contact reads two shapes and two bodies scattered over arrays far larger than the
     // cache: they are fetched a few contacts ahead.
     constexpr int kPrefetchAhead = 6;
+    const float recycle = effectiveRecycleDistance(s.def, speculativeDistance);
     auto updatePiece = [&](int begin, int end, int /*worker*/) {
         for (int ci = begin; ci < end; ++ci) {
             if (ci + kPrefetchAhead < end) {
@@ -244,7 +322,8 @@ void World::Impl::updateContacts(float dt) {
             } else if (!sides.ba.motion.awake && !sides.bb.motion.awake) {
                 update = kAsleep;
             } else {
-                update = collideContact(c, sides, collisionAlgorithm, speculativeDistance, dt)
+                update = collideContact(c, sides, collisionAlgorithm, speculativeDistance,
+                                        recycle, dt)
                              ? kTouching
                              : kApartNow;
             }
