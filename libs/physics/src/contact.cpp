@@ -126,7 +126,15 @@ struct ContactSides {
     const detail::Body& bb;
 };
 
-constexpr std::size_t kChainSegmentIndex = static_cast<std::size_t>(ShapeType::ChainSegment);
+// Recycling is for pairs of polygons and segments, whose routine (SAT or GJK/EPA and clipping)
+// is the expensive one. Circle and capsule routines cost less than the recycling's bookkeeping,
+// and a rolling round shape's contact point is on no material point of it (a recycled one
+// drifts under the shape and tilts its support). Chain segments are one-sided and hand a body
+// over to the next segment, which a recycled manifold would not see.
+bool isRecyclable(const ShapeGeometry& g) {
+    const ShapeType type = typeOf(g);
+    return type == ShapeType::Polygon || type == ShapeType::Segment;
+}
 
 // SolverDef::contactRecycleDistance, capped at the speculative distance (see its doc).
 float effectiveRecycleDistance(const SolverDef& def, float speculativeDistance) {
@@ -190,15 +198,18 @@ void recycleManifold(Manifold& m, const detail::ManifoldOrigin& o, const Transfo
 // World::Impl::updateManifold() on sides already looked up: forced inline into the parallel
 // pass's loop, which has just read them (the call and the second lookup cost about 30
 // instructions a contact).
-[[gnu::always_inline]] inline bool collideContact(detail::Contact& c, const ContactSides& sides,
-                                                  CollisionAlgorithm collisionAlgorithm,
-                                                  float speculativeDistance,
-                                                  float recycleDistance, float dt) {
+// What collideContact() found: whether the manifold has points, and whether it was recycled.
+enum Collided : unsigned char { kNoPoints = 0, kPoints = 1, kRecycled = 2 };
+
+[[gnu::always_inline]] inline unsigned collideContact(detail::Contact& c, const ContactSides& sides,
+                                                      CollisionAlgorithm collisionAlgorithm,
+                                                      float speculativeDistance,
+                                                      float recycleDistance, float dt) {
     const auto& [sa, sb, ba, bb] = sides;
     if (c.sensor) {
         Manifold m =
             collide(sa.geometry, ba.transform, sb.geometry, bb.transform, collisionAlgorithm, 0.0f);
-        return m.pointCount > 0;
+        return m.pointCount > 0 ? kPoints : kNoPoints;
     }
     // Speculative margin: the fixed one plus how far the pair can close in one step, so a
     // fast approach is caught before it overlaps (bounded, as a huge margin would stop
@@ -214,7 +225,7 @@ void recycleManifold(Manifold& m, const detail::ManifoldOrigin& o, const Transfo
         if (recycleDistance > 0.0f &&
             motionSince(origin, ba.transform, bb.transform) + dt * closing <= recycleDistance) {
             recycleManifold(c.manifold, origin, ba.transform, bb.transform);
-            return c.manifold.pointCount > 0;
+            return kRecycled | (c.manifold.pointCount > 0 ? kPoints : kNoPoints);
         }
         origin.valid = false;
     }
@@ -252,11 +263,10 @@ void recycleManifold(Manifold& m, const detail::ManifoldOrigin& o, const Transfo
         mp.tangentImpulse = match != nullptr ? match->tangentImpulse : 0.0f;
         mp.persisted = match != nullptr;
     }
-    if (recycleDistance > 0.0f && sa.geometry.index() != kChainSegmentIndex &&
-        sb.geometry.index() != kChainSegmentIndex) {
+    if (recycleDistance > 0.0f && isRecyclable(sa.geometry) && isRecyclable(sb.geometry)) {
         recordOrigin(origin, m, ba, bb);
     }
-    return m.pointCount > 0;
+    return m.pointCount > 0 ? kPoints : kNoPoints;
 }
 
 } // namespace
@@ -265,8 +275,10 @@ void recycleManifold(Manifold& m, const detail::ManifoldOrigin& o, const Transfo
 // impulses carried over by feature id; a sensor's is not kept) and whether it touches. Reads the
 // contact's shapes and bodies only, so contacts are updated on several workers at once.
 bool World::Impl::updateManifold(detail::Contact& c, float dt) const {
-    return collideContact(c, {shape(c.shapeA), shape(c.shapeB), body(c.bodyA), body(c.bodyB)},
-                          collisionAlgorithm, speculativeDistance, effectiveRecycleDistance(sim.def, speculativeDistance), dt);
+    return (collideContact(c, {shape(c.shapeA), shape(c.shapeB), body(c.bodyA), body(c.bodyB)},
+                           collisionAlgorithm, speculativeDistance,
+                           effectiveRecycleDistance(sim.def, speculativeDistance), dt) &
+            kPoints) != 0;
 }
 
 void World::Impl::updateContacts(float dt) {
@@ -289,7 +301,8 @@ void World::Impl::updateContacts(float dt) {
     // ends, events, the pre-solve hook and waking, which other contacts see. A contact whose
     // bodies were both asleep in the first pass and that an earlier contact woke is updated
     // there, as it would have been in one pass in contact order.
-    enum : unsigned char { kDead, kApart, kAsleep, kTouching, kApartNow };
+    // kRecycledFlag is added to kTouching or kApartNow when the manifold was recycled.
+    enum : unsigned char { kDead, kApart, kAsleep, kTouching, kApartNow, kRecycledFlag = 0x80 };
     const int contactSlots = static_cast<int>(s.contacts.size());
     s.contactUpdates.resize(static_cast<std::size_t>(contactSlots));
     // Each contact reads two shapes and two bodies scattered over arrays far larger than the
@@ -322,10 +335,11 @@ void World::Impl::updateContacts(float dt) {
             } else if (!sides.ba.motion.awake && !sides.bb.motion.awake) {
                 update = kAsleep;
             } else {
-                update = collideContact(c, sides, collisionAlgorithm, speculativeDistance,
-                                        recycle, dt)
-                             ? kTouching
-                             : kApartNow;
+                const unsigned collided =
+                    collideContact(c, sides, collisionAlgorithm, speculativeDistance, recycle, dt);
+                update =
+                    static_cast<unsigned char>(((collided & kPoints) != 0 ? kTouching : kApartNow) |
+                                               ((collided & kRecycled) != 0 ? kRecycledFlag : 0));
             }
         }
     };
@@ -343,6 +357,10 @@ void World::Impl::updateContacts(float dt) {
     };
     for (int ci = 0; ci < contactSlots; ++ci) {
         unsigned char update = s.contactUpdates[static_cast<std::size_t>(ci)];
+        if ((update & kRecycledFlag) != 0) {
+            ++s.counters.manifoldsRecycled;
+            update = static_cast<unsigned char>(update & ~kRecycledFlag);
+        }
         if (update == kDead) {
             continue;
         }
