@@ -7,6 +7,10 @@
 #include <string>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
+
 namespace e2d::physics::detail {
 
 namespace {
@@ -118,6 +122,37 @@ namespace {
 bool BroadPhase::needsMove(int proxyKey, const Aabb& aabb, Vec2 displacement) const {
     checkKey(proxyKey, "needsMove");
     const BodyType type = proxyTypeOf(proxyKey);
+#if defined(__SSE2__)
+    // The scalar code below with a box in one register (lower x y, upper x y), operation for
+    // operation: minps(0, d) is std::min(d, 0.0f) and maxps(0, d) std::max(d, 0.0f), NaN
+    // included, and x - m is x + (-m). Every awake shape asks each step.
+    static_assert(sizeof(Aabb) == 4 * sizeof(float));
+    const __m128 zero = _mm_setzero_ps();
+    // The displacement's negative parts for the lower corner, positive ones for the upper.
+    auto spread = [zero](__m128 v) {
+        return _mm_movelh_ps(_mm_min_ps(zero, v), _mm_max_ps(zero, v));
+    };
+    const __m128 box = _mm_loadu_ps(&aabb.lower.x);
+    const __m128 current = _mm_loadu_ps(&fatAabb(proxyKey).lower.x);
+    const __m128 d = _mm_setr_ps(displacement.x, displacement.y, displacement.x, displacement.y);
+    const __m128 swept = _mm_add_ps(box, spread(d));
+    // contains(current, swept): current.lower <= swept.lower, swept.upper <= current.upper.
+    const __m128 small = _mm_shuffle_ps(current, swept, _MM_SHUFFLE(3, 2, 1, 0));
+    const __m128 large = _mm_shuffle_ps(swept, current, _MM_SHUFFLE(3, 2, 1, 0));
+    if (_mm_movemask_ps(_mm_cmple_ps(small, large)) != 0xF) {
+        return true;
+    }
+    if (type == BodyType::Static) {
+        return false;
+    }
+    // predictedFatBox() for a moving proxy, and the excess of the current box over it.
+    const __m128 margin = _mm_setr_ps(-kAabbMargin, -kAabbMargin, kAabbMargin, kAabbMargin);
+    const __m128 fat =
+        _mm_add_ps(_mm_add_ps(box, margin), spread(_mm_mul_ps(_mm_set1_ps(kAabbPredictSteps), d)));
+    const __m128 excess = _mm_sub_ps(_mm_sub_ps(_mm_movehl_ps(current, current), current),
+                                     _mm_sub_ps(_mm_movehl_ps(fat, fat), fat));
+    return (_mm_movemask_ps(_mm_cmple_ps(excess, _mm_set1_ps(kAabbSlack))) & 3) != 3;
+#else
     // Where the shape is now and where it will be after `displacement`.
     Aabb swept = aabb;
     swept.lower += Vec2{std::min(displacement.x, 0.0f), std::min(displacement.y, 0.0f)};
@@ -135,6 +170,7 @@ bool BroadPhase::needsMove(int proxyKey, const Aabb& aabb, Vec2 displacement) co
     const Aabb fat = predictedFatBox(aabb, type, displacement);
     const Vec2 excess = (current.upper - current.lower) - (fat.upper - fat.lower);
     return !(excess.x <= kAabbSlack && excess.y <= kAabbSlack);
+#endif
 }
 
 bool BroadPhase::moveProxy(int proxyKey, const Aabb& aabb, Vec2 displacement) {

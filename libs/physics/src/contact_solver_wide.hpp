@@ -244,8 +244,8 @@ namespace wide_detail {
 
 // Visits group g's lanes, the first holding slot `first`, up to slot `end`.
 template <int N, class Visit>
-void visitGroup(const std::vector<WideConstraintT<N>>& groups, int g, int first, int end,
-                Visit& visit) {
+[[gnu::always_inline]] inline void visitGroup(const std::vector<WideConstraintT<N>>& groups, int g,
+                                              int first, int end, Visit& visit) {
     WideLaneResult r;
     const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
     for (int lane = 0; lane < N && first + lane < end; ++lane) {

@@ -116,6 +116,10 @@ E2D_WIDE_FN Target targetOf(const Constraint& c, F s, F invH, bool useBias, floa
 
 // noteImpact() on the lanes of `lanes`.
 E2D_WIDE_FN void noteImpact(Point& cp, I lanes, F vn, F s, F invH, bool useBias) {
+    // Points touching when the step began start seen: in a resting pile, all of them.
+    if (allLanes(cp.impactSeen)) {
+        return;
+    }
     I impact = lanes & ~cp.impactSeen & (vn + maxOf(s, splat(0.0f)) * invH < splat(0.0f));
     // Rare once a pile has settled: skip the stores (and the division) when no lane hits.
     if (anyLane(impact)) {

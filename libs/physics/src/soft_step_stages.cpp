@@ -11,8 +11,8 @@ namespace {
 constexpr int kMinGroupsPerBlock = 4;
 constexpr int kMinBodiesPerBlock = 64;
 // Blocks per worker and stage at most: enough that a worker slowed by the rest of the machine
-// leaves little for the others to wait on.
-constexpr int kBlocksPerWorker = 4;
+// leaves little for the others to wait on at the end of each stage.
+constexpr int kBlocksPerWorker = 8;
 
 // Appends the stages of forEachSoftStepPass()'s passes.
 struct StageList {
@@ -137,12 +137,9 @@ void solveSoftStepStaged(const SolverStep& step, WideContacts& wide, int firstLe
                                       stage.perBlock);
     }
     scratch.runner.reset(scratch.blockCounts, tasks.workerCount());
-    StageContext context{step,
-                         wide,
-                         bodies,
-                         restitution,
-                         scratch.stages,
-                         step.dt / static_cast<float>(step.def->subSteps)};
+    StageContext context{step,           wide,
+                         bodies,         restitution,
+                         scratch.stages, step.dt / static_cast<float>(step.def->subSteps)};
     // One piece per worker; each joins the stages where they are when it starts.
     tasks.parallelFor(tasks.workerCount(), 1, [&](int /*begin*/, int /*end*/, int worker) {
         scratch.runner.join(worker, runStage, &context);

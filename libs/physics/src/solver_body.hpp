@@ -40,6 +40,9 @@ struct BodySim {
     Vec2 center0{0.0f, 0.0f}; // centre of mass at the start of the step
     Rot rotation0{};          // rotation at the start of the step
     Vec2 localCenter{0.0f, 0.0f};
+    // rotate(rotation0, localCenter): the centre of mass from the origin, world axes, at the
+    // start of the step (what each contact's constraint build reads of the body).
+    Vec2 centerOffset{0.0f, 0.0f};
     // What the float centre at the end of the step cannot hold (BodyMotion::positionResidual),
     // set by finalizePositions().
     Vec2 positionResidual{0.0f, 0.0f};

@@ -141,18 +141,31 @@ void TaskPool::threadMain(int worker) {
 }
 
 void StageRunner::reset(std::span<const int> blockCounts, int workerCount) {
-    if (blockCounts.size() > capacity_) {
-        capacity_ = blockCounts.size();
-        stages_ = std::make_unique<Stage[]>(capacity_);
+    workers_ = std::max(workerCount, 1);
+    const std::size_t stages = blockCounts.size();
+    const std::size_t ranges = stages * static_cast<std::size_t>(workers_);
+    if (stages > stageCapacity_) {
+        stageCapacity_ = stages;
+        stages_ = std::make_unique<Stage[]>(stages);
     }
-    count_ = static_cast<int>(blockCounts.size());
-    for (std::size_t k = 0; k < blockCounts.size(); ++k) {
-        stages_[k].next.store(0, std::memory_order_relaxed);
+    if (ranges > rangeCapacity_) {
+        rangeCapacity_ = ranges;
+        ranges_ = std::make_unique<Range[]>(ranges);
+    }
+    count_ = static_cast<int>(stages);
+    for (std::size_t k = 0; k < stages; ++k) {
+        const int blocks = std::max(blockCounts[k], 1);
         stages_[k].done.store(0, std::memory_order_relaxed);
-        stages_[k].blocks = std::max(blockCounts[k], 1);
+        stages_[k].blocks = blocks;
+        for (int w = 0; w < workers_; ++w) {
+            Range& range =
+                ranges_[k * static_cast<std::size_t>(workers_) + static_cast<std::size_t>(w)];
+            range.next.store(blocks * w / workers_, std::memory_order_relaxed);
+            range.end = blocks * (w + 1) / workers_;
+        }
     }
     cursor_->stage.store(0, std::memory_order_relaxed);
-    spins_ = fitsHardware(workerCount) ? kSpinsBeforeSleep : 0;
+    spins_ = fitsHardware(workers_) ? kSpinsBeforeSleep : 0;
 }
 
 void StageRunner::join(int worker, Function function, void* context) {
@@ -160,11 +173,16 @@ void StageRunner::join(int worker, Function function, void* context) {
     int k = cursor.load(std::memory_order_acquire);
     while (k < count_) {
         Stage& stage = stages_[static_cast<std::size_t>(k)];
+        Range* ranges = &ranges_[static_cast<std::size_t>(k) * static_cast<std::size_t>(workers_)];
         int ran = 0;
-        for (int block = stage.next.fetch_add(1, std::memory_order_relaxed); block < stage.blocks;
-             block = stage.next.fetch_add(1, std::memory_order_relaxed)) {
-            function(k, block, worker, context);
-            ++ran;
+        // Its own range first, then the others' in turn.
+        for (int i = 0; i < workers_; ++i) {
+            Range& range = ranges[(worker + i) % workers_];
+            for (int block = range.next.fetch_add(1, std::memory_order_relaxed); block < range.end;
+                 block = range.next.fetch_add(1, std::memory_order_relaxed)) {
+                function(k, block, worker, context);
+                ++ran;
+            }
         }
         // The worker that completes a stage opens the next; its acquire-release chain on
         // `done` carries every block's writes to whoever reads the cursor after.

@@ -63,11 +63,14 @@ bool fitsHardware(int workers);
 
 // A sequence of stages that every worker joining runs together (the soft step of one large
 // block of islands, soft_step_stages.cpp): stage k's blocks [0, blocks(k)) are claimed one at a
-// time through an atomic counter by whoever is there, and no worker starts stage k + 1 before
+// time through atomic counters by whoever is there, and no worker starts stage k + 1 before
 // every block of stage k has run. A worker only ever waits for blocks another one has claimed
 // and is running, never for a worker to arrive: the stages complete with any number of workers
 // joining at any time, on any job system (one that runs the pieces one after another too: the
-// first does everything, the others find nothing left).
+// first does everything, the others find nothing left). Each stage's blocks are cut into one
+// range per worker, which that worker claims from first (in order) before it helps with the
+// others' (Box2D v3's solver stages do the same): a worker then mostly takes the same part of
+// each pass, and its bodies stay in its cache from pass to pass.
 class StageRunner {
 public:
     // Runs block `block` of stage `stage` on worker `worker`.
@@ -79,23 +82,30 @@ public:
     StageRunner(StageRunner&&) noexcept = default;
     StageRunner& operator=(StageRunner&&) noexcept = default;
 
-    // Sets the stages for the next run, blockCounts[k] (at least 1) blocks for stage k, and
-    // how long a waiting worker spins before it yields (workerCount: how many may join).
-    // Not while a run is going on.
+    // Sets the stages for the next run, blockCounts[k] (at least 1) blocks for stage k, for up
+    // to workerCount workers (which also decides how long a waiting worker spins before it
+    // yields). Not while a run is going on.
     void reset(std::span<const int> blockCounts, int workerCount);
     // Runs blocks of the current stage and the ones after it until every stage is done.
+    // worker: in [0, workerCount).
     void join(int worker, Function function, void* context);
 
 private:
-    // Claims and completions in a cache line of their own per stage.
+    // A worker's range of a stage's blocks: the next unclaimed one and the end.
+    struct alignas(64) Range {
+        std::atomic<int> next{0};
+        int end = 0;
+    };
     struct alignas(64) Stage {
-        std::atomic<int> next{0}; // next unclaimed block
         std::atomic<int> done{0}; // blocks that have run
         int blocks = 0;
     };
     std::unique_ptr<Stage[]> stages_;
-    std::size_t capacity_ = 0;
+    std::unique_ptr<Range[]> ranges_; // stage k's: [k * workers_, (k + 1) * workers_)
+    std::size_t stageCapacity_ = 0;
+    std::size_t rangeCapacity_ = 0;
     int count_ = 0;
+    int workers_ = 1;
     int spins_ = 0;
     // The first stage not done yet (count_ when all are).
     struct alignas(64) Cursor {

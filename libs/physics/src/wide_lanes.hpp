@@ -15,13 +15,12 @@
 
 // Lane vectors for the passes that solve several constraints at a time (contacts, plain
 // hinges): the vector types of four and eight lanes and, per width, splat, select, maxOf,
-// anyLane, allLanes, lanesOf (where each lane reads and writes its body), transposeRows, and
-// loadRows/storeRows, which gather BodyStates into lane vectors and scatter them back with
-// shuffles only. Four lanes everywhere (SSE2 on x86-64,
-// NEON on ARM64, plain scalar code where the target has no SIMD); eight on x86-64 (AVX2,
-// E2D_HAS_WIDE8), for code that checked the CPU at run time. No "fma" in the target: a fused
-// multiply-add rounds once where the scalar code rounds twice, so every width gives the
-// scalar results.
+// anyLane, allLanes, lanesOf and bodiesAt (where each lane reads and writes its body),
+// transposeRows, and loadRows/storeRows, which gather BodyStates into lane vectors and scatter
+// them back with shuffles only. Four lanes everywhere (SSE2 on x86-64, NEON on ARM64, plain
+// scalar code where the target has no SIMD); eight on x86-64 (AVX2, E2D_HAS_WIDE8), for code
+// that checked the CPU at run time. No "fma" in the target: a fused multiply-add rounds once
+// where the scalar code rounds twice, so every width gives the scalar results.
 namespace e2d::physics::detail {
 
 using Float4 = float __attribute__((vector_size(16)));
@@ -61,9 +60,9 @@ lanesOf(const int (&index)[N], std::span<BodyState> states, BodyState& sink,
 }
 
 // Where each of N lanes reads and writes its body, one address for both: a static side (index
-// -1) gets `pad`, a zero state of the caller's, zeroed before the lanes are read. All lanes
-// are read before any is written, so a static side reads zero whatever the others write to the
-// pad.
+// -1) gets `pad`, a resting state of the caller's, reset before the lanes are read. All lanes
+// are read before any is written, so a static side reads a resting state whatever the others
+// write to the pad. Half the addresses of lanesOf(), so fewer of them go to the stack.
 template <int N>
 __attribute__((always_inline)) inline void bodiesAt(const int (&index)[N], BodyState* states,
                                                     BodyState* pad, BodyState* (&at)[N]) {

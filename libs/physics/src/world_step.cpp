@@ -115,6 +115,9 @@ void World::Impl::scheduleWide(int constraintCount) {
     }
     s.islandBlock.assign(n, -1);
     s.blockLevelStart.assign(1, 0); // level counts first, made starts below
+    // Per block, whether a constraint has a rigid side with a state (a kinematic body): one
+    // level may then hold several constraints writing that state.
+    s.blockRigid.clear();
     int blockCount = 0;
     int blockSize = 0;
     for (std::size_t k = 0; k < count; ++k) {
@@ -124,23 +127,18 @@ void World::Impl::scheduleWide(int constraintCount) {
                 ++blockCount;
                 blockSize = 0;
                 s.blockLevelStart.push_back(0);
+                s.blockRigid.push_back(0);
             }
             s.islandBlock[root] = blockCount - 1;
             blockSize += s.islandConstraints[root];
         }
-        int& levels = s.blockLevelStart[static_cast<std::size_t>(s.islandBlock[root]) + 1];
+        const auto block = static_cast<std::size_t>(s.islandBlock[root]);
+        int& levels = s.blockLevelStart[block + 1];
         levels = std::max(levels, s.constraintLevel[k] + 1);
-    }
-    // Whether a block's constraints have a rigid side with a state (a kinematic body): one
-    // level may then hold several constraints writing that state.
-    s.blockRigid.assign(static_cast<std::size_t>(blockCount), 0);
-    for (std::size_t k = 0; k < count; ++k) {
         const detail::Simulation::ConstraintBodies& cb = s.constraintBodies[k];
-        if ((cb.indexA >= 0 && s.stateRigid[static_cast<std::size_t>(cb.indexA)] != 0) ||
-            (cb.indexB >= 0 && s.stateRigid[static_cast<std::size_t>(cb.indexB)] != 0)) {
-            s.blockRigid[static_cast<std::size_t>(
-                s.islandBlock[static_cast<std::size_t>(s.constraintIsland[k])])] = 1;
-        }
+        s.blockRigid[block] |= static_cast<unsigned char>(
+            (cb.indexA >= 0 && s.stateRigid[static_cast<std::size_t>(cb.indexA)] != 0) ||
+            (cb.indexB >= 0 && s.stateRigid[static_cast<std::size_t>(cb.indexB)] != 0));
     }
     // Block `blockCount` holds the bodies no constraint touches: no levels.
     for (int b = 0; b < blockCount; ++b) {
@@ -228,48 +226,60 @@ void World::Impl::solve(float dt) {
     if (!joints.empty()) {
         wakeJointedBodies();
     }
-    s.sims.clear();
-    s.states.clear();
-    s.stateRigid.clear();
+    // Two passes: the solver indices first, so the arrays are sized once and each body written
+    // whole in its place (growing them body by body, each element default-built and then
+    // overwritten, was about 80 instructions a body).
+    int simCount = 0;
     for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
         detail::Body& b = bodies[bi];
         detail::BodyMotion& m = b.motion;
-        if (!b.alive || !b.enabled || b.type == BodyType::Static || !m.awake) {
-            m.solverIndex = kNullIndex;
+        const bool moving = b.alive && b.enabled && b.type != BodyType::Static && m.awake;
+        m.solverIndex = moving ? simCount++ : kNullIndex;
+    }
+    s.sims.resize(static_cast<std::size_t>(simCount));
+    s.states.resize(static_cast<std::size_t>(simCount));
+    s.stateRigid.resize(static_cast<std::size_t>(simCount));
+    for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
+        const detail::Body& b = bodies[bi];
+        const detail::BodyMotion& m = b.motion;
+        if (m.solverIndex == kNullIndex) {
             continue;
         }
-        m.solverIndex = static_cast<int>(s.sims.size());
-        detail::BodySim& bs = s.sims.emplace_back();
-        bs.transform = b.transform;
-        bs.localCenter = m.localCenter;
-        bs.center = transformPoint(b.transform, m.localCenter);
-        bs.center0 = bs.center;
-        bs.rotation0 = b.transform.q;
-        bs.force = m.force;
-        bs.torque = m.torque;
-        bs.invMass = {m.lockX ? 0.0f : m.invMass, m.lockY ? 0.0f : m.invMass};
-        bs.invInertia = m.invInertia;
-        bs.linearDamping = m.linearDamping;
-        bs.angularDamping = m.angularDamping;
-        bs.gravityScale = m.gravityScale;
-        bs.maxExtent = m.maxExtent;
-        bs.minExtent = m.minExtent;
-        bs.bodyIndex = static_cast<int>(bi);
-        bs.flags = m.isBullet ? std::uint32_t{detail::kIsBullet} : 0u;
-        s.stateRigid.push_back(bs.invMass.x == 0.0f && bs.invMass.y == 0.0f &&
-                               bs.invInertia == 0.0f);
-        detail::BodyState& st = s.states.emplace_back();
-        st.deltaPosition = m.positionResidual;
+        const auto k = static_cast<std::size_t>(m.solverIndex);
+        // transformPoint(), its rotation kept for the contacts (viewOf()).
+        const Vec2 centerOffset = rotate(b.transform.q, m.localCenter);
+        const Vec2 center = centerOffset + b.transform.p;
+        const Vec2 invMass{m.lockX ? 0.0f : m.invMass, m.lockY ? 0.0f : m.invMass};
+        s.sims[k] = detail::BodySim{
+            .transform = b.transform,
+            .center = center,
+            .center0 = center,
+            .rotation0 = b.transform.q,
+            .localCenter = m.localCenter,
+            .centerOffset = centerOffset,
+            .force = m.force,
+            .torque = m.torque,
+            .invMass = invMass,
+            .invInertia = m.invInertia,
+            .linearDamping = m.linearDamping,
+            .angularDamping = m.angularDamping,
+            .gravityScale = m.gravityScale,
+            .maxExtent = m.maxExtent,
+            .minExtent = m.minExtent,
+            .bodyIndex = static_cast<int>(bi),
+            .flags = m.isBullet ? std::uint32_t{detail::kIsBullet} : 0u,
+        };
+        s.stateRigid[k] = invMass.x == 0.0f && invMass.y == 0.0f && m.invInertia == 0.0f;
         // A kinematic body keeps its velocity; a locked axis has none.
-        st.linearVelocity = {m.lockX && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.x,
-                             m.lockY && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.y};
-        st.angularVelocity =
-            m.invInertia == 0.0f && b.type == BodyType::Dynamic ? 0.0f : b.angularVelocity;
+        Vec2 v{m.lockX && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.x,
+               m.lockY && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.y};
+        float w = m.invInertia == 0.0f && b.type == BodyType::Dynamic ? 0.0f : b.angularVelocity;
         // Velocities set beyond the caps (a finite 1e38 spin) are capped before the contacts
         // read them: integration would cap them anyway, and a contact's approach speed taken
         // from the raw value could overflow its restitution and hit event.
-        detail::clampVelocity(st.linearVelocity, st.angularVelocity, def.maxLinearSpeed,
-                              integrationStep);
+        detail::clampVelocity(v, w, def.maxLinearSpeed, integrationStep);
+        s.states[k] = detail::BodyState{
+            .linearVelocity = v, .angularVelocity = w, .deltaPosition = m.positionResidual};
     }
 
     prepareJoints(dt, integrationStep);
@@ -277,22 +287,20 @@ void World::Impl::solve(float dt) {
     // A contact's side as prepareContact() sees it: body `bodyIndex`, `solverIndex` its place
     // in this step's arrays (kNullIndex: static or asleep, read from the body itself).
     auto viewOf = [&](int bodyIndex, int solverIndex) {
-        detail::ContactBodyView v;
         if (solverIndex == kNullIndex) {
             const detail::Body& b = body(bodyIndex);
-            v.centerOffset = rotate(b.transform.q, b.motion.localCenter);
-            return v;
+            return detail::ContactBodyView{.centerOffset =
+                                               rotate(b.transform.q, b.motion.localCenter)};
         }
-        // The step's copy of the body's transform and centre: the same values, nearer.
+        // The step's copy of the body (its centre offset rotated once for all its contacts).
         const detail::BodySim& bs = s.sims[static_cast<std::size_t>(solverIndex)];
         const detail::BodyState& st = s.states[static_cast<std::size_t>(solverIndex)];
-        v.centerOffset = rotate(bs.transform.q, bs.localCenter);
-        v.linearVelocity = st.linearVelocity;
-        v.angularVelocity = st.angularVelocity;
-        v.invMass = bs.invMass;
-        v.invInertia = bs.invInertia;
-        v.stateIndex = solverIndex;
-        return v;
+        return detail::ContactBodyView{.centerOffset = bs.centerOffset,
+                                       .linearVelocity = st.linearVelocity,
+                                       .angularVelocity = st.angularVelocity,
+                                       .invMass = bs.invMass,
+                                       .invInertia = bs.invInertia,
+                                       .stateIndex = solverIndex};
     };
     auto isRigid = [](const detail::ContactBodyView& v) {
         return v.invMass.x == 0.0f && v.invMass.y == 0.0f && v.invInertia == 0.0f;

@@ -5,6 +5,11 @@
 #include "world_impl.hpp"
 
 #include <algorithm>
+#include <cstddef>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace e2d::physics {
 
@@ -16,6 +21,35 @@ bool isFiniteState(const detail::BodySim& s, const detail::BodyState& st) {
     return (st.flags & detail::kNonFinite) == 0 && isFinite(s.center) && isFinite(s.transform.p) &&
            isFinite(s.positionResidual) && isFinite(s.transform.q.c) && isFinite(s.transform.q.s) &&
            isFinite(st.linearVelocity) && isFinite(st.angularVelocity);
+}
+
+// isFiniteState() and the origin within kHuge: the body is written back. Every body asks, so
+// on SSE2 the ten values are tested four at a time (|x| <= limit is false for NaN and
+// infinities alike).
+bool isWritable(const detail::BodySim& s, const detail::BodyState& st) {
+#if defined(__SSE2__)
+    static_assert(sizeof(Transform) == 4 * sizeof(float) && offsetof(Transform, q) == 8 &&
+                  offsetof(detail::BodyState, angularVelocity) == 8);
+    const __m128 absMask = _mm_castsi128_ps(_mm_set1_epi32(0x7FFFFFFF));
+    const __m128 largest = _mm_set1_ps(3.40282347e38f);
+    // p within kHuge, q finite.
+    const __m128 transform = _mm_and_ps(_mm_loadu_ps(&s.transform.p.x), absMask);
+    const __m128 transformOk =
+        _mm_cmple_ps(transform, _mm_setr_ps(kHuge, kHuge, 3.40282347e38f, 3.40282347e38f));
+    const __m128 points = _mm_and_ps(
+        _mm_loadh_pi(_mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(&s.center)),
+                     reinterpret_cast<const __m64*>(&s.positionResidual)),
+        absMask);
+    // v and w; the flags lane cleared (a zero is finite).
+    const __m128 velocity =
+        _mm_and_ps(_mm_loadu_ps(&st.linearVelocity.x),
+                   _mm_castsi128_ps(_mm_setr_epi32(0x7FFFFFFF, 0x7FFFFFFF, 0x7FFFFFFF, 0)));
+    const __m128 ok = _mm_and_ps(
+        transformOk, _mm_and_ps(_mm_cmple_ps(points, largest), _mm_cmple_ps(velocity, largest)));
+    return _mm_movemask_ps(ok) == 0xF && (st.flags & detail::kNonFinite) == 0;
+#else
+    return isFiniteState(s, st) && isWithinHuge(s.transform.p);
+#endif
 }
 
 // What the parallel pass left for the ordered one, per solver body.
@@ -43,9 +77,8 @@ void World::Impl::writeBack(float dt) {
             detail::Body& b = body(bs.bodyIndex);
             b.motion.force = {0.0f, 0.0f};
             b.motion.torque = 0.0f;
-            const bool finite = isFiniteState(bs, st);
-            if (!finite || !isWithinHuge(bs.transform.p)) {
-                result = finite ? kOutOfRangeBody : kNonFiniteBody;
+            if (!isWritable(bs, st)) [[unlikely]] {
+                result = isFiniteState(bs, st) ? kOutOfRangeBody : kNonFiniteBody;
                 continue;
             }
             b.transform = bs.transform;

@@ -78,10 +78,9 @@ void expectSameStates(const std::vector<BodyState>& got, const std::vector<BodyS
     ASSERT_EQ(got.size(), want.size());
     for (std::size_t i = 0; i < got.size(); ++i) {
         EXPECT_EQ(std::memcmp(&got[i], &want[i], sizeof(BodyState)), 0)
-            << "body " << i << ": v (" << got[i].linearVelocity.x << ", "
-            << got[i].linearVelocity.y << ") w " << got[i].angularVelocity << ", want ("
-            << want[i].linearVelocity.x << ", " << want[i].linearVelocity.y << ") w "
-            << want[i].angularVelocity;
+            << "body " << i << ": v (" << got[i].linearVelocity.x << ", " << got[i].linearVelocity.y
+            << ") w " << got[i].angularVelocity << ", want (" << want[i].linearVelocity.x << ", "
+            << want[i].linearVelocity.y << ") w " << want[i].angularVelocity;
     }
 }
 
@@ -112,8 +111,7 @@ TEST(BodySolver, IndexedIntegrationLoopsMatchOneBodyAtATime) {
     }
     std::shuffle(indices.begin(), indices.end(), std::mt19937(9));
     for (int subStep = 0; subStep < 4; ++subStep) {
-        integrateVelocities(std::span<const BodySim>(all.sims), all.states, indices, kH,
-                            kMaxSpeed);
+        integrateVelocities(std::span<const BodySim>(all.sims), all.states, indices, kH, kMaxSpeed);
         integratePositions(all.states, indices, kH, kMaxSpeed);
         for (int i : indices) {
             const std::span<const int> one(&i, 1);
