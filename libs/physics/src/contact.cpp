@@ -126,17 +126,90 @@ struct ContactSides {
     const detail::Body& bb;
 };
 
+// Recycling is for pairs of polygons and segments, whose routine (SAT or GJK/EPA and clipping)
+// is the expensive one. Circle and capsule routines cost less than the recycling's bookkeeping,
+// and a rolling round shape's contact point is on no material point of it (a recycled one
+// drifts under the shape and tilts its support). Chain segments are one-sided and hand a body
+// over to the next segment, which a recycled manifold would not see.
+bool isRecyclable(const ShapeGeometry& g) {
+    const ShapeType type = typeOf(g);
+    return type == ShapeType::Polygon || type == ShapeType::Segment;
+}
+
+// SolverDef::contactRecycleDistance, capped at the speculative distance (see its doc).
+float effectiveRecycleDistance(const SolverDef& def, float speculativeDistance) {
+    return std::min(def.contactRecycleDistance, speculativeDistance);
+}
+
+// The farthest a point of the body's shapes is from its origin, metres.
+float extentFromOrigin(const detail::Body& b) {
+    return length(b.motion.localCenter) + b.motion.maxExtent;
+}
+
+// Notes the manifold just computed for bodies at xfA and xfB, in the bodies' frames.
+void recordOrigin(detail::ManifoldOrigin& o, const Manifold& m, const detail::Body& ba,
+                  const detail::Body& bb) {
+    const Transform& xfA = ba.transform;
+    const Transform& xfB = bb.transform;
+    o.bInA = invMulTransforms(xfA, xfB);
+    o.aInB = invRotate(xfB.q, xfA.p - xfB.p);
+    o.extentA = extentFromOrigin(ba);
+    o.extentB = extentFromOrigin(bb);
+    o.normalInA = invRotate(xfA.q, m.normal);
+    for (int i = 0; i < m.pointCount; ++i) {
+        const ManifoldPoint& mp = m.points[i];
+        const Vec2 half = (0.5f * mp.separation) * m.normal;
+        o.surfaceA[i] = invRotate(xfA.q, mp.anchorA - half);
+        o.surfaceB[i] = invRotate(xfB.q, mp.anchorB + half);
+    }
+    o.valid = true;
+}
+
+// How far any point of one body has moved relative to the other since the origin was noted, at
+// most: the translation of one body's origin in the other's frame plus the chord the relative
+// rotation turns the farthest point through (the smaller bound of the two ways round).
+float motionSince(const detail::ManifoldOrigin& o, const Transform& xfA, const Transform& xfB) {
+    const Transform bInA = invMulTransforms(xfA, xfB);
+    const Vec2 aInB = invRotate(xfB.q, xfA.p - xfB.p);
+    const float chord = length(Vec2{bInA.q.c - o.bInA.q.c, bInA.q.s - o.bInA.q.s});
+    return std::min(length(bInA.p - o.bInA.p) + chord * o.extentB,
+                    length(aInB - o.aInB) + chord * o.extentA);
+}
+
+// The noted manifold moved with the bodies: each point's two surface points where the bodies
+// now carry them, the point midway, the separation along the normal (which turns with A).
+// Impulses and feature ids stay.
+void recycleManifold(Manifold& m, const detail::ManifoldOrigin& o, const Transform& xfA,
+                     const Transform& xfB) {
+    m.normal = rotate(xfA.q, o.normalInA);
+    const Vec2 offset = xfB.p - xfA.p;
+    for (int i = 0; i < m.pointCount; ++i) {
+        ManifoldPoint& mp = m.points[i];
+        const Vec2 a = rotate(xfA.q, o.surfaceA[i]);
+        const Vec2 gap = offset + rotate(xfB.q, o.surfaceB[i]) - a;
+        mp.anchorA = a + 0.5f * gap;
+        mp.anchorB = mp.anchorA - offset;
+        mp.point = xfA.p + mp.anchorA;
+        mp.separation = dot(gap, m.normal);
+        mp.persisted = true;
+    }
+}
+
 // World::Impl::updateManifold() on sides already looked up: forced inline into the parallel
 // pass's loop, which has just read them (the call and the second lookup cost about 30
 // instructions a contact).
-[[gnu::always_inline]] inline bool collideContact(detail::Contact& c, const ContactSides& sides,
-                                                  CollisionAlgorithm collisionAlgorithm,
-                                                  float speculativeDistance, float dt) {
+// What collideContact() found: whether the manifold has points, and whether it was recycled.
+enum Collided : unsigned char { kNoPoints = 0, kPoints = 1, kRecycled = 2 };
+
+[[gnu::always_inline]] inline unsigned collideContact(detail::Contact& c, const ContactSides& sides,
+                                                      CollisionAlgorithm collisionAlgorithm,
+                                                      float speculativeDistance,
+                                                      float recycleDistance, float dt) {
     const auto& [sa, sb, ba, bb] = sides;
     if (c.sensor) {
         Manifold m =
             collide(sa.geometry, ba.transform, sb.geometry, bb.transform, collisionAlgorithm, 0.0f);
-        return m.pointCount > 0;
+        return m.pointCount > 0 ? kPoints : kNoPoints;
     }
     // Speculative margin: the fixed one plus how far the pair can close in one step, so a
     // fast approach is caught before it overlaps (bounded, as a huge margin would stop
@@ -145,6 +218,17 @@ struct ContactSides {
                     std::abs(ba.angularVelocity) * ba.motion.maxExtent +
                     std::abs(bb.angularVelocity) * bb.motion.maxExtent;
     float margin = std::min(speculativeDistance + dt * closing, 4.0f * kAabbMargin);
+    // Recycling: the old manifold moved with the bodies while they, with this step's motion at
+    // the current speeds, stay within the distance of where the routine last saw them.
+    detail::ManifoldOrigin& origin = c.origin;
+    if (origin.valid) {
+        if (recycleDistance > 0.0f &&
+            motionSince(origin, ba.transform, bb.transform) + dt * closing <= recycleDistance) {
+            recycleManifold(c.manifold, origin, ba.transform, bb.transform);
+            return kRecycled | (c.manifold.pointCount > 0 ? kPoints : kNoPoints);
+        }
+        origin.valid = false;
+    }
     // Last step's impulses by feature id (-1: no point), kept aside so that the new manifold can
     // be built in place, without a 92-byte copy.
     struct OldPoint {
@@ -179,7 +263,10 @@ struct ContactSides {
         mp.tangentImpulse = match != nullptr ? match->tangentImpulse : 0.0f;
         mp.persisted = match != nullptr;
     }
-    return m.pointCount > 0;
+    if (recycleDistance > 0.0f && isRecyclable(sa.geometry) && isRecyclable(sb.geometry)) {
+        recordOrigin(origin, m, ba, bb);
+    }
+    return m.pointCount > 0 ? kPoints : kNoPoints;
 }
 
 } // namespace
@@ -188,8 +275,10 @@ struct ContactSides {
 // impulses carried over by feature id; a sensor's is not kept) and whether it touches. Reads the
 // contact's shapes and bodies only, so contacts are updated on several workers at once.
 bool World::Impl::updateManifold(detail::Contact& c, float dt) const {
-    return collideContact(c, {shape(c.shapeA), shape(c.shapeB), body(c.bodyA), body(c.bodyB)},
-                          collisionAlgorithm, speculativeDistance, dt);
+    return (collideContact(c, {shape(c.shapeA), shape(c.shapeB), body(c.bodyA), body(c.bodyB)},
+                           collisionAlgorithm, speculativeDistance,
+                           effectiveRecycleDistance(sim.def, speculativeDistance), dt) &
+            kPoints) != 0;
 }
 
 void World::Impl::updateContacts(float dt) {
@@ -212,12 +301,14 @@ void World::Impl::updateContacts(float dt) {
     // ends, events, the pre-solve hook and waking, which other contacts see. A contact whose
     // bodies were both asleep in the first pass and that an earlier contact woke is updated
     // there, as it would have been in one pass in contact order.
-    enum : unsigned char { kDead, kApart, kAsleep, kTouching, kApartNow };
+    // kRecycledFlag is added to kTouching or kApartNow when the manifold was recycled.
+    enum : unsigned char { kDead, kApart, kAsleep, kTouching, kApartNow, kRecycledFlag = 0x80 };
     const int contactSlots = static_cast<int>(s.contacts.size());
     s.contactUpdates.resize(static_cast<std::size_t>(contactSlots));
     // Each contact reads two shapes and two bodies scattered over arrays far larger than the
     // cache: they are fetched a few contacts ahead.
     constexpr int kPrefetchAhead = 6;
+    const float recycle = effectiveRecycleDistance(s.def, speculativeDistance);
     auto updatePiece = [&](int begin, int end, int /*worker*/) {
         for (int ci = begin; ci < end; ++ci) {
             if (ci + kPrefetchAhead < end) {
@@ -244,9 +335,11 @@ void World::Impl::updateContacts(float dt) {
             } else if (!sides.ba.motion.awake && !sides.bb.motion.awake) {
                 update = kAsleep;
             } else {
-                update = collideContact(c, sides, collisionAlgorithm, speculativeDistance, dt)
-                             ? kTouching
-                             : kApartNow;
+                const unsigned collided =
+                    collideContact(c, sides, collisionAlgorithm, speculativeDistance, recycle, dt);
+                update =
+                    static_cast<unsigned char>(((collided & kPoints) != 0 ? kTouching : kApartNow) |
+                                               ((collided & kRecycled) != 0 ? kRecycledFlag : 0));
             }
         }
     };
@@ -264,6 +357,10 @@ void World::Impl::updateContacts(float dt) {
     };
     for (int ci = 0; ci < contactSlots; ++ci) {
         unsigned char update = s.contactUpdates[static_cast<std::size_t>(ci)];
+        if ((update & kRecycledFlag) != 0) {
+            ++s.counters.manifoldsRecycled;
+            update = static_cast<unsigned char>(update & ~kRecycledFlag);
+        }
         if (update == kDead) {
             continue;
         }

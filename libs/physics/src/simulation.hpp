@@ -68,8 +68,28 @@ inline int findRoot(std::vector<int>& parent, int i) {
     return i;
 }
 
+// A contact's manifold as the collision routine last computed it, in the bodies' frames, so
+// that later steps can move it with the bodies instead of colliding again
+// (SolverDef::contactRecycleDistance; contact.cpp).
+struct ManifoldOrigin {
+    // Body B's origin and rotation in body A's frame, and A's origin in B's frame.
+    Transform bInA{};
+    Vec2 aInB{0.0f, 0.0f};
+    // The farthest any point of the body's shapes was from its origin, metres.
+    float extentA = 0.0f;
+    float extentB = 0.0f;
+    // The normal in A's frame; per point, its surface point on A (A's frame, from A's origin)
+    // and on B (B's frame, from B's origin).
+    Vec2 normalInA{0.0f, 0.0f};
+    Vec2 surfaceA[2]{};
+    Vec2 surfaceB[2]{};
+    // False until the routine has run with recycling on (and for sensors and chain segments).
+    bool valid = false;
+};
+
 struct Contact {
     Manifold manifold{};
+    ManifoldOrigin origin{};
     float friction = 0.0f;
     float restitution = 0.0f;
     float rollingResistance = 0.0f;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/physics/solver_def.hpp>
 
+#include <e2d/physics/constants.hpp>
+
 #include <e2d/core/error.hpp>
 #include <e2d/core/error_text.hpp>
 
@@ -9,6 +11,8 @@
 #include <string>
 
 namespace e2d::physics {
+
+static_assert(kMaxContactRecycleDistance == kAabbMargin);
 
 namespace {
 
@@ -89,6 +93,8 @@ void validate(const SolverDef& def) {
         fail("restitutionMixing is not a MixingRule, got " +
              std::to_string(static_cast<int>(def.restitutionMixing)));
     }
+    requireInterval("contactRecycleDistance", def.contactRecycleDistance, 0.0f,
+                    kMaxContactRecycleDistance);
 }
 
 float mix(MixingRule rule, float a, float b) {

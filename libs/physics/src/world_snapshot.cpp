@@ -11,7 +11,8 @@
 //     BODY  body slots (live and dead: generations), the body id pool (free list, next)
 //     SHAP  shape slots, the shape id pool
 //     JOIN  joint slots, the joint id pool
-//     CONT  contact slots (manifolds with impulses and feature ids), free list, live count
+//     CONT  contact slots (manifolds with impulses and feature ids, and the manifold origins
+//           recycling moves them from), free list, live count
 //     BRPH  the three dynamic trees (nodes, free list, root, deferred leaves), proxy infos,
 //           move buffer, pair table (capacity, then each entry with its slot)
 //     EVNT  end events waiting for the next step
@@ -162,6 +163,17 @@ void transfer(Io& io, Manifold& m) {
     field(io, "pointCount", m.pointCount);
 }
 template <class Io>
+void transfer(Io& io, ManifoldOrigin& o) {
+    field(io, "bInA", o.bInA);
+    field(io, "aInB", o.aInB);
+    field(io, "extentA", o.extentA);
+    field(io, "extentB", o.extentB);
+    field(io, "normalInA", o.normalInA);
+    field(io, "surfaceA", o.surfaceA);
+    field(io, "surfaceB", o.surfaceB);
+    field(io, "valid", o.valid);
+}
+template <class Io>
 void transfer(Io& io, Softness& s) {
     field(io, "biasRate", s.biasRate);
     field(io, "massScale", s.massScale);
@@ -193,6 +205,7 @@ void transfer(Io& io, SolverDef& d) {
     field(io, "enableContinuous", d.enableContinuous);
     field(io, "frictionMixing", d.frictionMixing);
     field(io, "restitutionMixing", d.restitutionMixing);
+    field(io, "contactRecycleDistance", d.contactRecycleDistance);
 }
 template <class Io>
 void transfer(Io& io, BodyMotion& m) {
@@ -317,6 +330,7 @@ void transfer(Io& io, Joint& j) {
 template <class Io>
 void transfer(Io& io, Contact& c) {
     field(io, "manifold", c.manifold);
+    field(io, "origin", c.origin);
     field(io, "friction", c.friction);
     field(io, "restitution", c.restitution);
     field(io, "rollingResistance", c.rollingResistance);

@@ -207,6 +207,16 @@ TEST(WorldSnapshot, EveryJointKindStepsOnBitForBit) {
     }
 }
 
+// Recycled manifolds move from where the routine last saw the bodies: that is state too.
+TEST(WorldSnapshot, RecycledContactsStepOnBitForBit) {
+    WorldDef def;
+    def.solver.contactRecycleDistance = 0.02f;
+    def.solver.enableSleep = false; // the stack keeps recycling to the end
+    Scene s(def);
+    expectRoundTrip(s, 45, 45);
+    EXPECT_GT(s.world.stepCounters().manifoldsRecycled, 0);
+}
+
 // Workers are how a world runs, not its state: a snapshot of a 2-worker world goes on alike in
 // a 1-worker one, and the other way round.
 TEST(WorldSnapshot, WorkersAreNotState) {

@@ -312,6 +312,19 @@ TEST(WorldThreads, EveryWorkerCountAndSimdWidthGivesTheSameSteps) {
     }
 }
 
+// Recycling decides per contact from that contact's bodies alone: the same on every worker.
+TEST(WorldThreads, RecycledContactsGiveTheSameStepsOnEveryWorkerCount) {
+    for (const Case& c : kCases) {
+        WorldDef def = threadedDef(1, 8, c.mode);
+        def.solver.contactRecycleDistance = 0.02f;
+        const std::uint64_t reference = run(def, c.build, c.steps);
+        for (int workers : {2, 3, 8}) {
+            def.workerCount = workers;
+            EXPECT_EQ(run(def, c.build, c.steps), reference) << c.name << ", " << workers;
+        }
+    }
+}
+
 // A job system of the test's own: `threads` threads taking pieces from a queue, each piece
 // run with its thread's index as the worker; finish waits for the task's pieces.
 class JobSystem {

@@ -54,6 +54,9 @@ struct StepCounters {
     int contactConstraints = 0;
     /// Contacts whose manifold the narrow phase recomputed (pairs with an awake body).
     int manifoldUpdates = 0;
+    /// Of those, the manifolds moved with their bodies instead of collided again
+    /// (SolverDef::contactRecycleDistance).
+    int manifoldsRecycled = 0;
     /// Shapes whose broad-phase box the step moved (a shape that leaves its fat box, or whose
     /// box grew much larger than it needs, is reinserted into the tree).
     int proxyMoves = 0;

@@ -240,7 +240,7 @@ using PairFilterCallback = std::function<bool(ShapeId shapeA, ShapeId shapeB)>;
 /// The format version World::saveSnapshot() writes and World::restoreSnapshot() reads; a
 /// snapshot of another version is refused. Raised whenever the bytes of a World's state change
 /// meaning.
-inline constexpr std::uint32_t kSnapshotFormatVersion = 1;
+inline constexpr std::uint32_t kSnapshotFormatVersion = 2;
 
 class Body;
 class Joint;
