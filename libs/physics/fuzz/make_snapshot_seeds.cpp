@@ -25,6 +25,14 @@ using Bytes = std::vector<std::uint8_t>;
 constexpr std::size_t kHeaderBytes = 32;
 constexpr float kStep = 1.0f / 60.0f;
 
+// A fixed world tag: otherwise every world gets one derived at run time, which the snapshot
+// holds, and the seeds would differ from run to run.
+WorldDef seedDef() {
+    WorldDef def;
+    def.tag = 1;
+    return def;
+}
+
 void stepWorld(World& world, int steps) {
     for (int i = 0; i < steps; ++i) {
         world.step(kStep);
@@ -46,10 +54,19 @@ BodyId addBox(World& world, Vec2 position, float half) {
     return body;
 }
 
+void addHinge(World& world, BodyId a, BodyId b, Vec2 anchorA, Vec2 anchorB) {
+    RevoluteJointDef def;
+    def.bodyA = a;
+    def.bodyB = b;
+    def.localAnchorA = anchorA;
+    def.localAnchorB = anchorB;
+    world.createJoint(def);
+}
+
 // Three boxes on the ground, stepped until their contacts carry impulses; with contact
 // recycling on and sleep off, some manifolds are recycled (their origins are in the snapshot).
 Bytes resting() {
-    WorldDef def;
+    WorldDef def = seedDef();
     def.solver.contactRecycleDistance = 0.02f;
     def.solver.enableSleep = false;
     World world(def);
@@ -66,7 +83,7 @@ Bytes resting() {
 
 // A stack of three boxes left to fall asleep.
 Bytes asleep() {
-    World world;
+    World world(seedDef());
     addGround(world);
     std::vector<BodyId> pile;
     for (int i = 0; i < 3; ++i) {
@@ -86,7 +103,7 @@ Bytes asleep() {
 // A chain ground with a sensor on it, a pendulum of two links (revolute joints) and a disc
 // tied to the ground by a distance joint, stepped a little.
 Bytes jointsChainSensor() {
-    World world;
+    World world(seedDef());
     const BodyId ground = world.createBody({});
     ChainDef chain;
     chain.points = {{-4.0f, 1.0f}, {-2.0f, 0.0f}, {2.0f, 0.0f}, {4.0f, 1.0f}};
@@ -97,18 +114,8 @@ Bytes jointsChainSensor() {
 
     const BodyId first = addBox(world, {1.0f, 4.0f}, 0.25f);
     const BodyId second = addBox(world, {2.0f, 4.0f}, 0.25f);
-    RevoluteJointDef hinge;
-    hinge.bodyA = ground;
-    hinge.bodyB = first;
-    hinge.localAnchorA = {0.0f, 4.0f};
-    hinge.localAnchorB = {-1.0f, 0.0f};
-    world.createJoint(hinge);
-    RevoluteJointDef link;
-    link.bodyA = first;
-    link.bodyB = second;
-    link.localAnchorA = {0.5f, 0.0f};
-    link.localAnchorB = {-0.5f, 0.0f};
-    world.createJoint(link);
+    addHinge(world, ground, first, {0.0f, 4.0f}, {-1.0f, 0.0f});
+    addHinge(world, first, second, {0.5f, 0.0f}, {-0.5f, 0.0f});
 
     BodyDef discDef;
     discDef.type = BodyType::Dynamic;
@@ -155,7 +162,7 @@ int main(int argc, char** argv) {
     }
     const std::string directory = argv[1];
     try {
-        writeSeeds(directory, "empty", World().saveSnapshot());
+        writeSeeds(directory, "empty", World(seedDef()).saveSnapshot());
         writeSeeds(directory, "resting", resting());
         writeSeeds(directory, "asleep", asleep());
         writeSeeds(directory, "joints-chain-sensor", jointsChainSensor());
