@@ -29,10 +29,13 @@ namespace {
 
 namespace {
 
+// `states`: where the constraint's bodies are (unused for static sides).
 template <int N>
-void packLane(WideConstraintT<N>& w, int lane, const ContactConstraint& c) {
+void packLane(WideConstraintT<N>& w, int lane, const ContactConstraint& c, BodyState* states) {
     w.indexA[lane] = c.indexA;
     w.indexB[lane] = c.indexB;
+    w.bodyA[lane] = c.indexA >= 0 ? states + c.indexA : &w.pad;
+    w.bodyB[lane] = c.indexB >= 0 ? states + c.indexB : &w.pad;
     w.normalX[lane] = c.normal.x;
     w.normalY[lane] = c.normal.y;
     w.invMassAx[lane] = c.invMassA.x;
@@ -96,7 +99,7 @@ void layoutLanes(std::vector<WideConstraintT<N>>& groups, std::vector<int>& wide
         }
         WideConstraintT<N>& w = groups[static_cast<std::size_t>(wideStart[k + 1] - 1)];
         for (int lane = inLevel % N; lane < N; ++lane) {
-            packLane(w, lane, ContactConstraint{});
+            packLane(w, lane, ContactConstraint{}, nullptr);
             w.blockSolve[lane] = -1;
         }
     }
@@ -211,40 +214,62 @@ void layoutWide(WideContacts& wide, std::span<const int> levelStart, int lanes) 
     }
 }
 
-void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint& c) {
+void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint& c,
+                  std::span<BodyState> states) {
     const int first = wide.levelStart[static_cast<std::size_t>(level)];
     if (wide.lanes == 8) {
-        packLane(wide.constraints8[static_cast<std::size_t>(first + at / 8)], at % 8, c);
+        packLane(wide.constraints8[static_cast<std::size_t>(first + at / 8)], at % 8, c,
+                 states.data());
     } else {
-        packLane(wide.constraints4[static_cast<std::size_t>(first + at / 4)], at % 4, c);
+        packLane(wide.constraints4[static_cast<std::size_t>(first + at / 4)], at % 4, c,
+                 states.data());
     }
 }
 
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<4>& in) {
-    lanes4::prepareGroup(in, wide.constraints4[static_cast<std::size_t>(group)]);
+int hitLanes(const WideConstraintT<4>& group, float threshold) {
+    return lanes4::hitLanes(group, threshold);
 }
 
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<8>& in) {
+int hitLanes(const WideConstraintT<8>& group, float threshold) {
 #if defined(E2D_HAS_WIDE8)
-    lanes8::prepareGroup(in, wide.constraints8[static_cast<std::size_t>(group)]);
+    return lanes8::hitLanes(group, threshold);
+#else
+    (void)group; // unreachable, as prepareWideGroup() below
+    (void)threshold;
+    std::abort();
+#endif
+}
+
+void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<4>& in,
+                      std::span<BodyState> states) {
+    lanes4::prepareGroup(in, wide.constraints4[static_cast<std::size_t>(group)], states.data());
+}
+
+void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<8>& in,
+                      std::span<BodyState> states) {
+#if defined(E2D_HAS_WIDE8)
+    lanes8::prepareGroup(in, wide.constraints8[static_cast<std::size_t>(group)], states.data());
 #else
     // Unreachable: without AVX2 kernels layoutWide() never makes eight-lane groups.
     (void)wide;
     (void)group;
     (void)in;
+    (void)states;
     std::abort();
 #endif
 }
 
 void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constraints,
-                 std::span<const int> levelOrder, std::span<const int> levelStart, int lanes) {
+                 std::span<const int> levelOrder, std::span<const int> levelStart, int lanes,
+                 std::span<BodyState> states) {
     layoutWide(wide, levelStart, lanes);
     const std::size_t levelCount = levelStart.empty() ? 0 : levelStart.size() - 1;
     for (std::size_t k = 0; k < levelCount; ++k) {
         for (int slot = levelStart[k]; slot < levelStart[k + 1]; ++slot) {
             packWideLane(
                 wide, static_cast<int>(k), slot - levelStart[k],
-                constraints[static_cast<std::size_t>(levelOrder[static_cast<std::size_t>(slot)])]);
+                constraints[static_cast<std::size_t>(levelOrder[static_cast<std::size_t>(slot)])],
+                states);
         }
     }
 }
@@ -284,38 +309,36 @@ std::span<const int> levelRange(const WideContacts& wide, int firstLevel, int en
 namespace {
 
 // The kernels over the groups levels.front() .. levels.back() (backward: level by level, last
-// level first).
-void warmStartLevels(const WideContacts& wide, std::span<const int> levels,
-                     std::span<BodyState> states) {
+// level first). The groups hold their bodies' addresses (WideConstraintT::bodyA and bodyB, in
+// the states they were prepared on), so the states are not passed on.
+void warmStartLevels(const WideContacts& wide, std::span<const int> levels) {
 #if defined(E2D_HAS_WIDE8)
     if (wide.lanes == 8) {
-        lanes8::warmStartAll(wide.constraints8, levels, states);
+        lanes8::warmStartAll(wide.constraints8, levels);
         return;
     }
 #endif
-    lanes4::warmStartAll(wide.constraints4, levels, states);
+    lanes4::warmStartAll(wide.constraints4, levels);
 }
 
-void solveLevels(WideContacts& wide, std::span<const int> levels, std::span<BodyState> states,
-                 float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints) {
+void solveLevels(WideContacts& wide, std::span<const int> levels, float invH, bool useBias,
+                 float pushMaxSpeed, bool backward, bool reversePoints) {
 #if defined(E2D_HAS_WIDE8)
     if (wide.lanes == 8) {
         if (reversePoints) {
-            lanes8::solveAll<true>(wide.constraints8, levels, states, invH, useBias, pushMaxSpeed,
+            lanes8::solveAll<true>(wide.constraints8, levels, invH, useBias, pushMaxSpeed,
                                    backward);
         } else {
-            lanes8::solveAll<false>(wide.constraints8, levels, states, invH, useBias, pushMaxSpeed,
+            lanes8::solveAll<false>(wide.constraints8, levels, invH, useBias, pushMaxSpeed,
                                     backward);
         }
         return;
     }
 #endif
     if (reversePoints) {
-        lanes4::solveAll<true>(wide.constraints4, levels, states, invH, useBias, pushMaxSpeed,
-                               backward);
+        lanes4::solveAll<true>(wide.constraints4, levels, invH, useBias, pushMaxSpeed, backward);
     } else {
-        lanes4::solveAll<false>(wide.constraints4, levels, states, invH, useBias, pushMaxSpeed,
-                                backward);
+        lanes4::solveAll<false>(wide.constraints4, levels, invH, useBias, pushMaxSpeed, backward);
     }
 }
 
@@ -323,25 +346,29 @@ void solveLevels(WideContacts& wide, std::span<const int> levels, std::span<Body
 
 void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
                    std::span<BodyState> states) {
-    warmStartLevels(wide, levelRange(wide, firstLevel, endLevel), states);
+    (void)states; // the groups' own addresses into them (see warmStartLevels())
+    warmStartLevels(wide, levelRange(wide, firstLevel, endLevel));
 }
 
 void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyState> states,
                float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints) {
-    solveLevels(wide, levelRange(wide, firstLevel, endLevel), states, invH, useBias, pushMaxSpeed,
-                backward, reversePoints);
+    (void)states;
+    solveLevels(wide, levelRange(wide, firstLevel, endLevel), invH, useBias, pushMaxSpeed, backward,
+                reversePoints);
 }
 
 void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd,
                          std::span<BodyState> states) {
+    (void)states;
     const int groups[2] = {groupBegin, groupEnd};
-    warmStartLevels(wide, groups, states);
+    warmStartLevels(wide, groups);
 }
 
 void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, std::span<BodyState> states,
                      float invH, bool useBias, float pushMaxSpeed, bool reversePoints) {
+    (void)states;
     const int groups[2] = {groupBegin, groupEnd};
-    solveLevels(wide, groups, states, invH, useBias, pushMaxSpeed, false, reversePoints);
+    solveLevels(wide, groups, invH, useBias, pushMaxSpeed, false, reversePoints);
 }
 
 } // namespace e2d::physics::detail

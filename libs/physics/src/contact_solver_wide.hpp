@@ -59,6 +59,13 @@ struct alignas(4 * N) WideConstraintT {
     I blockSolve;
     I twoPoints; // all ones where the lane has a second point
     WidePointT<N> points[2];
+    // Where each lane reads and writes its bodies this step (bodiesAt()), set with the rest so
+    // that the passes do not work the addresses out again: a state in the step's array, or
+    // `pad` for a static side and an empty lane. Each pass resets the pad before it reads the
+    // lanes (it may write there), so a static side always reads a resting state.
+    BodyState* bodyA[N];
+    BodyState* bodyB[N];
+    mutable BodyState pad;
 };
 
 static_assert(sizeof(WidePointT<8>) % 32 == 0 && sizeof(WideConstraintT<8>) % 32 == 0 &&
@@ -81,8 +88,9 @@ int bestWideLanes();
 // and empties the lanes past each level's last constraint; packWideLane() then fills the
 // others.
 void layoutWide(WideContacts& wide, std::span<const int> levelStart, int lanes);
-// Puts constraint `c`, the `at`-th of level `level`, in its lane.
-void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint& c);
+// Puts constraint `c`, the `at`-th of level `level`, in its lane; its bodies are in `states`.
+void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint& c,
+                  std::span<BodyState> states);
 
 // What prepareContact() reads for N constraints, one per lane: the manifold, both sides'
 // ContactBodyView and the material. The world gathers a group's lanes here (setLane(),
@@ -169,16 +177,19 @@ struct alignas(32) WideManifoldT {
     }
 };
 
-// Prepares and packs the group of constraints `group` from `in` (see WideManifoldT);
-// The lane count must be wide.lanes.
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<4>& in);
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<8>& in);
+// Prepares and packs the group of constraints `group` from `in` (see WideManifoldT), whose
+// bodies are in `states` (the array the passes then run on). The lane count must be wide.lanes.
+void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<4>& in,
+                      std::span<BodyState> states);
+void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<8>& in,
+                      std::span<BodyState> states);
 
 // Packs the constraints of each level, constraints[levelOrder[levelStart[k] ..
 // levelStart[k + 1])], into groups of `lanes` (the last group of a level padded with empty
-// lanes).
+// lanes); their bodies are in `states`.
 void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constraints,
-                 std::span<const int> levelOrder, std::span<const int> levelStart, int lanes);
+                 std::span<const int> levelOrder, std::span<const int> levelStart, int lanes,
+                 std::span<BodyState> states);
 // Copies impulses and the impact bookkeeping back to the constraints.
 void storeWide(const WideContacts& wide, std::span<ContactConstraint> constraints,
                std::span<const int> levelOrder, std::span<const int> levelStart);
@@ -199,22 +210,27 @@ void applyRestitutionWide(WideContacts& wide, std::span<const WideRestitution> l
                           std::span<BodyState> states, float threshold, float h);
 
 // What the step leaves in one lane for the world: per point, impulses (for next step's warm
-// start) and the impact bookkeeping (hit events).
+// start) and the impact bookkeeping (hit events). mayHit: whether a point was pushed on
+// (maxNormalImpulse > 0) while approaching faster than the visit's hit threshold; where it is
+// false, relativeVelocity and maxNormalImpulse are not filled in (a resting pile: every lane).
 struct WideLaneResult {
     float normalImpulse[2];
     float tangentImpulse[2];
+    bool mayHit;
     float relativeVelocity[2];
     float maxNormalImpulse[2];
 };
 
 // Calls visit(slot, result) for every packed constraint, slot being its place in level order
-// (level k holds slots [levelStart[k], levelStart[k + 1])), in slot order.
+// (level k holds slots [levelStart[k], levelStart[k + 1])), in slot order; hitThreshold: the
+// approach speed above which a lane may hit (WideLaneResult::mayHit).
 template <class Visit>
-void visitWide(const WideContacts& wide, std::span<const int> levelStart, Visit&& visit);
+void visitWide(const WideContacts& wide, std::span<const int> levelStart, float hitThreshold,
+               Visit&& visit);
 // The same over levels [firstLevel, endLevel) only.
 template <class Visit>
 void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
-               int endLevel, Visit&& visit);
+               int endLevel, float hitThreshold, Visit&& visit);
 
 // warmStartContacts() and solveContacts() over every packed constraint, level after level
 // (backward: last level first; reversePoints: each constraint's points last to first).
@@ -230,7 +246,7 @@ void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyS
 // The same over the groups [groupBegin, groupEnd) of level `level` only.
 template <class Visit>
 void visitWideGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
-                     int groupBegin, int groupEnd, Visit&& visit);
+                     int groupBegin, int groupEnd, float hitThreshold, Visit&& visit);
 
 // warmStartWide() and solveWide() over the packed groups [groupBegin, groupEnd) of one level
 // (its constraints share no moving body: any part of a level may run while another worker
@@ -240,21 +256,32 @@ void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd,
 void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, std::span<BodyState> states,
                      float invH, bool useBias, float pushMaxSpeed, bool reversePoints);
 
+// The lanes of `group` whose points may hit: pushed on (maxNormalImpulse > 0) while
+// approaching faster than `threshold` (-relativeVelocity > threshold); lane k in bit k.
+int hitLanes(const WideConstraintT<4>& group, float threshold);
+int hitLanes(const WideConstraintT<8>& group, float threshold);
+
 namespace wide_detail {
 
 // Visits group g's lanes, the first holding slot `first`, up to slot `end`.
 template <int N, class Visit>
 [[gnu::always_inline]] inline void visitGroup(const std::vector<WideConstraintT<N>>& groups, int g,
-                                              int first, int end, Visit& visit) {
+                                              int first, int end, float hitThreshold,
+                                              Visit& visit) {
     WideLaneResult r;
     const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
+    // The world's test for a hit, on all lanes at once (missing points have no impulse).
+    const int mayHit = hitLanes(w, hitThreshold);
     for (int lane = 0; lane < N && first + lane < end; ++lane) {
+        r.mayHit = ((mayHit >> lane) & 1) != 0;
         for (int i = 0; i < 2; ++i) {
             const WidePointT<N>& wp = w.points[i];
             r.normalImpulse[i] = wp.normalImpulse[lane];
             r.tangentImpulse[i] = wp.tangentImpulse[lane];
-            r.relativeVelocity[i] = wp.relativeVelocity[lane];
-            r.maxNormalImpulse[i] = wp.maxNormalImpulse[lane];
+            if (r.mayHit) {
+                r.relativeVelocity[i] = wp.relativeVelocity[lane];
+                r.maxNormalImpulse[i] = wp.maxNormalImpulse[lane];
+            }
         }
         visit(first + lane, r);
     }
@@ -263,12 +290,12 @@ template <int N, class Visit>
 template <int N, class Visit>
 void visitLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
                 std::span<const int> levelStart, std::size_t firstLevel, std::size_t endLevel,
-                Visit& visit) {
+                float hitThreshold, Visit& visit) {
     for (std::size_t k = firstLevel; k < endLevel; ++k) {
         const int end = levelStart[k + 1];
         int g = wideStart[k];
         for (int first = levelStart[k]; first < end; first += N, ++g) {
-            visitGroup(groups, g, first, end, visit);
+            visitGroup(groups, g, first, end, hitThreshold, visit);
         }
     }
 }
@@ -276,10 +303,11 @@ void visitLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const i
 template <int N, class Visit>
 void visitGroups(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
                  std::span<const int> levelStart, std::size_t level, int groupBegin, int groupEnd,
-                 Visit& visit) {
+                 float hitThreshold, Visit& visit) {
     const int end = levelStart[level + 1];
     for (int g = groupBegin; g < groupEnd; ++g) {
-        visitGroup(groups, g, levelStart[level] + (g - wideStart[level]) * N, end, visit);
+        visitGroup(groups, g, levelStart[level] + (g - wideStart[level]) * N, end, hitThreshold,
+                   visit);
     }
 }
 
@@ -287,33 +315,36 @@ void visitGroups(const std::vector<WideConstraintT<N>>& groups, std::span<const 
 
 template <class Visit>
 void visitWideGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
-                     int groupBegin, int groupEnd, Visit&& visit) {
+                     int groupBegin, int groupEnd, float hitThreshold, Visit&& visit) {
     const auto at = static_cast<std::size_t>(level);
     if (wide.lanes == 8) {
         wide_detail::visitGroups(wide.constraints8, wide.levelStart, levelStart, at, groupBegin,
-                                 groupEnd, visit);
+                                 groupEnd, hitThreshold, visit);
     } else {
         wide_detail::visitGroups(wide.constraints4, wide.levelStart, levelStart, at, groupBegin,
-                                 groupEnd, visit);
+                                 groupEnd, hitThreshold, visit);
     }
 }
 
 template <class Visit>
 void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
-               int endLevel, Visit&& visit) {
+               int endLevel, float hitThreshold, Visit&& visit) {
     const auto first = static_cast<std::size_t>(firstLevel);
     const auto end = static_cast<std::size_t>(std::max(endLevel, firstLevel));
     if (wide.lanes == 8) {
-        wide_detail::visitLanes(wide.constraints8, wide.levelStart, levelStart, first, end, visit);
+        wide_detail::visitLanes(wide.constraints8, wide.levelStart, levelStart, first, end,
+                                hitThreshold, visit);
     } else {
-        wide_detail::visitLanes(wide.constraints4, wide.levelStart, levelStart, first, end, visit);
+        wide_detail::visitLanes(wide.constraints4, wide.levelStart, levelStart, first, end,
+                                hitThreshold, visit);
     }
 }
 
 template <class Visit>
-void visitWide(const WideContacts& wide, std::span<const int> levelStart, Visit&& visit) {
+void visitWide(const WideContacts& wide, std::span<const int> levelStart, float hitThreshold,
+               Visit&& visit) {
     visitWide(wide, levelStart, 0, levelStart.empty() ? 0 : static_cast<int>(levelStart.size()) - 1,
-              visit);
+              hitThreshold, visit);
 }
 
 } // namespace e2d::physics::detail

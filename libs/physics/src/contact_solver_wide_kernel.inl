@@ -15,19 +15,9 @@
 using Constraint = WideConstraintT<N>;
 using Point = WidePointT<N>;
 
-// Where a group's lanes read and write their bodies (bodiesAt()): static sides and empty lanes
-// use `pad`, a resting state of the group's own.
-struct GroupBodies {
-    BodyState pad;
-    BodyState* a[N];
-    BodyState* b[N];
-};
-
-E2D_WIDE_INLINE void locate(const Constraint& c, BodyState* states, GroupBodies& at) {
-    at.pad = BodyState{};
-    bodiesAt(c.indexA, states, &at.pad, at.a);
-    bodiesAt(c.indexB, states, &at.pad, at.b);
-}
+// Where a group's lanes read and write their bodies: the addresses prepareGroup() recorded,
+// static sides and empty lanes at the group's pad, reset here before the lanes are read.
+E2D_WIDE_INLINE void resetPad(const Constraint& c) { c.pad = BodyState{}; }
 
 // One side's velocity rows as lane vectors; flags ride along unchanged, to be stored back.
 struct Velocities {
@@ -46,10 +36,10 @@ E2D_WIDE_INLINE void storeVelocities(const Velocities& v, BodyState* const (&at)
 
 // The separation of the first kPoints points now (currentSeparation()).
 template <int kPoints>
-E2D_WIDE_INLINE void separationsOf(const Constraint& c, const GroupBodies& at, F (&s)[2]) {
+E2D_WIDE_INLINE void separationsOf(const Constraint& c, F (&s)[2]) {
     F adpx, adpy, aqc, aqs, bdpx, bdpy, bqc, bqs;
-    loadRows(at.a, 16, adpx, adpy, aqc, aqs);
-    loadRows(at.b, 16, bdpx, bdpy, bqc, bqs);
+    loadRows(c.bodyA, 16, adpx, adpy, aqc, aqs);
+    loadRows(c.bodyB, 16, bdpx, bdpy, bqc, bqs);
     const F ddx = bdpx - adpx;
     const F ddy = bdpy - adpy;
 #pragma GCC unroll 2
@@ -66,11 +56,10 @@ E2D_WIDE_INLINE void separationsOf(const Constraint& c, const GroupBodies& at, F
 }
 
 template <int kPoints>
-E2D_WIDE_INLINE void warmStartGroup(const Constraint& c, BodyState* states) {
-    GroupBodies at;
-    locate(c, states, at);
-    Velocities a = velocitiesOf(at.a);
-    Velocities b = velocitiesOf(at.b);
+E2D_WIDE_INLINE void warmStartGroup(const Constraint& c) {
+    resetPad(c);
+    Velocities a = velocitiesOf(c.bodyA);
+    Velocities b = velocitiesOf(c.bodyB);
     const F nx = c.normalX;
     const F ny = c.normalY;
     const F tx = ny;
@@ -87,8 +76,8 @@ E2D_WIDE_INLINE void warmStartGroup(const Constraint& c, BodyState* states) {
         b.vx = b.vx + c.invMassBx * px;
         b.vy = b.vy + c.invMassBy * py;
     }
-    storeVelocities(a, at.a);
-    storeVelocities(b, at.b);
+    storeVelocities(a, c.bodyA);
+    storeVelocities(b, c.bodyB);
 }
 
 E2D_WIDE_FN F normalVelocityOf(const Point& cp, const Constraint& c, const Velocities& a,
@@ -254,14 +243,12 @@ E2D_WIDE_INLINE void solveFrictionAt(Constraint& c, Point& cp, Velocities& a, Ve
 
 // solveContacts() on one group, whose lanes have at most kPoints points.
 template <bool kReversePoints, int kPoints>
-E2D_WIDE_INLINE void solveGroup(Constraint& c, BodyState* states, F invH, bool useBias,
-                                float pushMaxSpeed) {
-    GroupBodies at;
-    locate(c, states, at);
+E2D_WIDE_INLINE void solveGroup(Constraint& c, F invH, bool useBias, float pushMaxSpeed) {
+    resetPad(c);
     F s[2];
-    separationsOf<kPoints>(c, at, s);
-    Velocities a = velocitiesOf(at.a);
-    Velocities b = velocitiesOf(at.b);
+    separationsOf<kPoints>(c, s);
+    Velocities a = velocitiesOf(c.bodyA);
+    Velocities b = velocitiesOf(c.bodyB);
     const I all = ~I{};
     if constexpr (kPoints == 1) {
         solvePoint<false>(c, c.points[0], s[0], a, b, all, invH, useBias, pushMaxSpeed);
@@ -290,57 +277,65 @@ E2D_WIDE_INLINE void solveGroup(Constraint& c, BodyState* states, F invH, bool u
     for (int j = 0; j < kPoints; ++j) {
         solveFrictionAt(c, c.points[j], a, b);
     }
-    storeVelocities(a, at.a);
-    storeVelocities(b, at.b);
+    storeVelocities(a, c.bodyA);
+    storeVelocities(b, c.bodyB);
 }
 
 // levelStart: the group boundaries of the levels to run (absolute indices into constraints).
 E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints,
-                              std::span<const int> levelStart, std::span<BodyState> states) {
+                              std::span<const int> levelStart) {
     if (levelStart.size() < 2) {
         return;
     }
     for (int g = levelStart.front(); g < levelStart.back(); ++g) {
         const Constraint& c = constraints[static_cast<std::size_t>(g)];
         if (anyLane(c.twoPoints)) {
-            warmStartGroup<2>(c, states.data());
+            warmStartGroup<2>(c);
         } else {
-            warmStartGroup<1>(c, states.data());
+            warmStartGroup<1>(c);
         }
     }
 }
 
 template <bool kReversePoints>
-E2D_WIDE_FN void solveGroups(std::span<Constraint> constraints, int first, int end,
-                             BodyState* states, F invH, bool useBias, float pushMaxSpeed) {
+E2D_WIDE_FN void solveGroups(std::span<Constraint> constraints, int first, int end, F invH,
+                             bool useBias, float pushMaxSpeed) {
     for (int g = first; g < end; ++g) {
         Constraint& c = constraints[static_cast<std::size_t>(g)];
         if (anyLane(c.twoPoints)) {
-            solveGroup<kReversePoints, 2>(c, states, invH, useBias, pushMaxSpeed);
+            solveGroup<kReversePoints, 2>(c, invH, useBias, pushMaxSpeed);
         } else {
-            solveGroup<kReversePoints, 1>(c, states, invH, useBias, pushMaxSpeed);
+            solveGroup<kReversePoints, 1>(c, invH, useBias, pushMaxSpeed);
         }
     }
 }
 
 template <bool kReversePoints>
 E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<const int> levelStart,
-                          std::span<BodyState> states, float invH, bool useBias, float pushMaxSpeed,
-                          bool backward) {
+                          float invH, bool useBias, float pushMaxSpeed, bool backward) {
     if (levelStart.size() < 2) {
         return;
     }
     const F vInvH = splat(invH);
     if (!backward) {
-        solveGroups<kReversePoints>(constraints, levelStart.front(), levelStart.back(),
-                                    states.data(), vInvH, useBias, pushMaxSpeed);
+        solveGroups<kReversePoints>(constraints, levelStart.front(), levelStart.back(), vInvH,
+                                    useBias, pushMaxSpeed);
         return;
     }
     // Within a level the order does not matter; backward only reverses the levels.
     for (std::size_t k = levelStart.size() - 1; k-- > 0;) {
-        solveGroups<kReversePoints>(constraints, levelStart[k], levelStart[k + 1], states.data(),
-                                    vInvH, useBias, pushMaxSpeed);
+        solveGroups<kReversePoints>(constraints, levelStart[k], levelStart[k + 1], vInvH, useBias,
+                                    pushMaxSpeed);
     }
+}
+
+// The lanes of `c` that may hit (WideLaneResult::mayHit), lane k in bit k.
+E2D_WIDE_FN int hitLanes(const Constraint& c, float threshold) {
+    I mayHit = I{};
+    for (const Point& cp : c.points) {
+        mayHit |= (cp.maxNormalImpulse > splat(0.0f)) & (-cp.relativeVelocity > splat(threshold));
+    }
+    return laneBits(mayHit);
 }
 
 #undef E2D_WIDE_INLINE
@@ -380,11 +375,14 @@ E2D_WIDE_FN F effectiveMassOf(const Constraint& c, F ax, F ay, F rAx, F rAy, F r
     return select(positive, splat(1.0f) / select(positive, k, splat(1.0f)), zero);
 }
 
-E2D_WIDE_FN void prepareGroup(const Manifolds& in, Constraint& c) {
+// `states`: the array the group's bodies are in.
+E2D_WIDE_FN void prepareGroup(const Manifolds& in, Constraint& c, BodyState* states) {
     const F zero = splat(0.0f);
     const F one = splat(1.0f);
     std::memcpy(c.indexA, in.indexA, sizeof c.indexA);
     std::memcpy(c.indexB, in.indexB, sizeof c.indexB);
+    bodiesAt(in.indexA, states, &c.pad, c.bodyA);
+    bodiesAt(in.indexB, states, &c.pad, c.bodyB);
     const I count = vectorOf(in.pointCount);
     const F nx = vectorOf(in.normalX);
     const F ny = vectorOf(in.normalY);

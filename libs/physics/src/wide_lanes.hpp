@@ -15,7 +15,7 @@
 
 // Lane vectors for the passes that solve several constraints at a time (contacts, plain
 // hinges): the vector types of four and eight lanes and, per width, splat, select, maxOf,
-// anyLane, allLanes, lanesOf and bodiesAt (where each lane reads and writes its body),
+// anyLane, allLanes, laneBits, lanesOf and bodiesAt (where each lane reads and writes its body),
 // transposeRows, and loadRows/storeRows, which gather BodyStates into lane vectors and scatter
 // them back with shuffles only. Four lanes everywhere (SSE2 on x86-64, NEON on ARM64, plain
 // scalar code where the target has no SIMD); eight on x86-64 (AVX2, E2D_HAS_WIDE8), for code
@@ -62,7 +62,8 @@ lanesOf(const int (&index)[N], std::span<BodyState> states, BodyState& sink,
 // Where each of N lanes reads and writes its body, one address for both: a static side (index
 // -1) gets `pad`, a resting state of the caller's, reset before the lanes are read. All lanes
 // are read before any is written, so a static side reads a resting state whatever the others
-// write to the pad. Half the addresses of lanesOf(), so fewer of them go to the stack.
+// write to the pad. Half the addresses of lanesOf(); the contact groups work them out once a
+// step and keep them (WideConstraintT::bodyA and bodyB).
 template <int N>
 __attribute__((always_inline)) inline void bodiesAt(const int (&index)[N], BodyState* states,
                                                     BodyState* pad, BodyState* (&at)[N]) {
@@ -127,6 +128,14 @@ inline bool allLanes(I mask) {
     return (mask[0] & mask[1] & mask[2] & mask[3]) == -1;
 #endif
 }
+// One bit per lane, lane k in bit k.
+inline int laneBits(I mask) {
+#if defined(__x86_64__)
+    return _mm_movemask_ps(std::bit_cast<__m128>(mask));
+#else
+    return (mask[0] & 1) | (mask[1] & 2) | (mask[2] & 4) | (mask[3] & 8);
+#endif
+}
 
 inline void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {
     F t0 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
@@ -170,6 +179,7 @@ E2D_AVX2_FN F select(I mask, F a, F b) { return _mm256_blendv_ps(b, a, (__m256)m
 E2D_AVX2_FN F maxOf(F a, F b) { return _mm256_max_ps(b, a); }
 E2D_AVX2_FN bool anyLane(I mask) { return _mm256_movemask_ps((__m256)mask) != 0; }
 E2D_AVX2_FN bool allLanes(I mask) { return _mm256_movemask_ps((__m256)mask) == 0xFF; }
+E2D_AVX2_FN int laneBits(I mask) { return _mm256_movemask_ps((__m256)mask); }
 
 // Rows k and k + 4 share a vector (low and high half); the halves transpose independently.
 E2D_AVX2_FN void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {

@@ -411,15 +411,22 @@ void World::Impl::solve(float dt) {
     // Impulses go back to the manifolds for next step's warm start; a hit event for the
     // fastest approaching point of each, emitted in contact order at the end.
     s.hitCandidates.clear();
+    // mayHit false: no point can hit (the wide visit's test, WideLaneResult::mayHit), and
+    // relativeVelocity and maxNormalImpulse are not read.
     auto store = [&](std::vector<detail::Simulation::HitCandidate>& hits, int contactIndex,
                      int pointCount, const float* normalImpulse, const float* tangentImpulse,
-                     const float* relativeVelocity, const float* maxNormalImpulse) {
+                     bool mayHit, const float* relativeVelocity, const float* maxNormalImpulse) {
         detail::Contact& c = s.contacts[static_cast<std::size_t>(contactIndex)];
-        float fastest = def.hitEventThreshold;
-        int fastestPoint = -1;
         for (int j = 0; j < pointCount; ++j) {
             c.manifold.points[j].normalImpulse = normalImpulse[j];
             c.manifold.points[j].tangentImpulse = tangentImpulse[j];
+        }
+        if (!mayHit) {
+            return;
+        }
+        float fastest = def.hitEventThreshold;
+        int fastestPoint = -1;
+        for (int j = 0; j < pointCount; ++j) {
             float approach = -relativeVelocity[j];
             if (maxNormalImpulse[j] > 0.0f && approach > fastest) {
                 fastest = approach;
@@ -487,7 +494,7 @@ void World::Impl::solve(float dt) {
                                            c.restitution, pressOf(c, a, b), s.slotConstraint[at]});
                 }
             }
-            detail::prepareWideGroup(s.wideContacts, group, in);
+            detail::prepareWideGroup(s.wideContacts, group, in, s.states);
             return groupPushOut;
         };
         // The level holding group `group` among levels [firstLevel, endLevel) (a group past
@@ -533,7 +540,8 @@ void World::Impl::solve(float dt) {
                 prefetchContact(slot);
                 const int ci = s.slotContact[static_cast<std::size_t>(slot)];
                 store(*out, ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount,
-                      r.normalImpulse, r.tangentImpulse, r.relativeVelocity, r.maxNormalImpulse);
+                      r.normalImpulse, r.tangentImpulse, r.mayHit, r.relativeVelocity,
+                      r.maxNormalImpulse);
             };
         };
         const std::span<const int> blockBodies = s.blockBodies;
@@ -608,7 +616,7 @@ void World::Impl::solve(float dt) {
                         const int levelEnd = std::min(
                             groupStart[static_cast<std::size_t>(level) + 1], groupBegin + end);
                         detail::visitWideGroups(s.wideContacts, s.levelStart, level, g, levelEnd,
-                                                visit);
+                                                def.hitEventThreshold, visit);
                         g = levelEnd;
                         ++level;
                     }
@@ -652,7 +660,7 @@ void World::Impl::solve(float dt) {
                                    static_cast<std::size_t>(s.blockJointStart[b + 1] -
                                                             s.blockJointStart[b])));
             detail::visitWide(s.wideContacts, s.levelStart, firstLevel, endLevel,
-                              storeLane(worker.hits));
+                              def.hitEventThreshold, storeLane(worker.hits));
             if (impacts) {
                 worker.impacts.apply(s);
             }
@@ -736,7 +744,7 @@ void World::Impl::solve(float dt) {
                 maxNormalImpulse[j] = cc.points[j].maxNormalImpulse;
             }
             store(s.hitCandidates, cc.contactIndex, cc.pointCount, normalImpulse, tangentImpulse,
-                  relativeVelocity, maxNormalImpulse);
+                  true, relativeVelocity, maxNormalImpulse);
         }
     } else {
         std::sort(s.hitCandidates.begin(), s.hitCandidates.end(),

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <map>
 #include <set>
@@ -273,7 +274,7 @@ void expectWideMatchesScalar(std::uint32_t seed, int maxPoints) {
             }
             wide = unsolved;
             WideContacts packed;
-            prepareWide(packed, wide.constraints, order, levelStart, lanes);
+            prepareWide(packed, wide.constraints, order, levelStart, lanes, wide.states);
             ASSERT_EQ(packed.lanes, lanes);
             // Groups of one-point lanes (only those) take their own passes.
             int onePointGroups = 0;
@@ -343,8 +344,9 @@ const std::vector<WideConstraintT<N>>& groupsOf(const WideContacts& wide) {
 // prepareContact() and packWideLane() make one constraint at a time.
 template <int N>
 void expectSameGroups(const Problem& p, const Schedule& schedule) {
+    std::vector<BodyState> states = p.states;
     WideContacts reference;
-    prepareWide(reference, p.constraints, schedule.order, schedule.levelStart, N);
+    prepareWide(reference, p.constraints, schedule.order, schedule.levelStart, N, states);
     WideContacts gathered;
     layoutWide(gathered, schedule.levelStart, N);
     ASSERT_EQ(reference.lanes, N);
@@ -365,7 +367,7 @@ void expectSameGroups(const Problem& p, const Schedule& schedule) {
                     in.clearLane(lane);
                 }
             }
-            prepareWideGroup(gathered, g, in);
+            prepareWideGroup(gathered, g, in, states);
             ++groups;
         }
     }
@@ -373,9 +375,24 @@ void expectSameGroups(const Problem& p, const Schedule& schedule) {
     const std::vector<WideConstraintT<N>>& actual = groupsOf<N>(gathered);
     ASSERT_EQ(static_cast<int>(actual.size()), groups);
     ASSERT_EQ(expected.size(), actual.size());
+    // Byte for byte up to the body addresses, which are the same states or each group's own pad.
+    using Group = WideConstraintT<N>;
     for (std::size_t g = 0; g < expected.size(); ++g) {
-        EXPECT_EQ(std::memcmp(&expected[g], &actual[g], sizeof(WideConstraintT<N>)), 0)
-            << "group " << g;
+        const Group& e = expected[g];
+        const Group& a = actual[g];
+        EXPECT_EQ(std::memcmp(&e, &a, offsetof(Group, bodyA)), 0) << "group " << g;
+        for (int lane = 0; lane < N; ++lane) {
+            for (auto side : {&Group::bodyA, &Group::bodyB}) {
+                const BodyState* want = (e.*side)[lane];
+                const BodyState* got = (a.*side)[lane];
+                if (want == &e.pad) {
+                    EXPECT_EQ(got, &a.pad) << "group " << g << " lane " << lane;
+                } else {
+                    EXPECT_EQ(got, want) << "group " << g << " lane " << lane;
+                    EXPECT_TRUE(want >= states.data() && want < states.data() + states.size());
+                }
+            }
+        }
     }
 }
 
