@@ -29,6 +29,7 @@ std::uint64_t runHash(const Scenario& scenario, int workers, int lanes, ph::Join
     ph::WorldDef def;
     def.tag = 3;
     def.workerCount = workers;
+    def.minSplitWork = 0; // every stage split: what the hashes compare
     def.simdLanes = lanes;
     def.solver.jointSolver = joints;
     scenes::E2dScene scene = scenes::buildE2d(scenario.scene, def);

@@ -200,9 +200,9 @@ void BroadPhase::updatePairs(ShouldPair&& shouldPair, QueryMask&& queryMask, Tas
         }
     };
     const int moved = static_cast<int>(moveBuffer_.size());
-    // A query is a microsecond or two: pieces of tens of microseconds at least.
-    constexpr int kMovedPerPiece = 32;
-    if (tasks == nullptr || tasks->workerCount() == 1 || moved <= kMovedPerPiece) {
+    // A query is about 600 ns (falling circles).
+    const int minRange = tasks == nullptr ? moved : tasks->minRange(600);
+    if (tasks == nullptr || tasks->workerCount() == 1 || moved / 2 < minRange) {
         findPairs(0, moved, newPairs_, queryCount_);
     } else {
         const auto workers = static_cast<std::size_t>(tasks->workerCount());
@@ -211,7 +211,7 @@ void BroadPhase::updatePairs(ShouldPair&& shouldPair, QueryMask&& queryMask, Tas
         for (std::vector<ProxyPair>& found : workerPairs_) {
             found.clear();
         }
-        tasks->parallelFor(moved, kMovedPerPiece, [&](int begin, int end, int worker) {
+        tasks->parallelFor(moved, minRange, [&](int begin, int end, int worker) {
             const auto w = static_cast<std::size_t>(worker);
             findPairs(begin, end, workerPairs_[w], workerQueries_[w]);
         });

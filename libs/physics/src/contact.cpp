@@ -343,9 +343,8 @@ void World::Impl::updateContacts(float dt) {
             }
         }
     };
-    // A piece is a few hundred microseconds of SAT at most.
-    constexpr int kContactsPerPiece = 64;
-    tasks.parallelFor(contactSlots, kContactsPerPiece, updatePiece);
+    // A contact is 25 (circles) to 55 ns (boxes).
+    tasks.parallelFor(contactSlots, tasks.minRange(30), updatePiece);
 
     // The touching solid contacts, in contact order, as they are after the narrow phase: what
     // the solver makes constraints of (without streaming the whole contact array again).

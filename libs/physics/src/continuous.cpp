@@ -58,12 +58,11 @@ void World::Impl::solveContinuous() {
             bullets.store(true, std::memory_order_relaxed);
         }
     };
-    // The slow-body test is a few nanoseconds a body: pieces of a few microseconds at least.
-    constexpr int kBodiesPerPiece = 512;
+    // The slow-body test is about 5 ns a body.
     if (hooks.pairFilter) {
         sweepFast(0, n, 0);
     } else {
-        tasks.parallelFor(n, kBodiesPerPiece, sweepFast);
+        tasks.parallelFor(n, tasks.minRange(5), sweepFast);
     }
     if (bullets.load(std::memory_order_relaxed)) {
         for (int k = 0; k < n; ++k) {

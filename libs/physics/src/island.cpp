@@ -117,9 +117,8 @@ void World::Impl::updateSleep(float dt) {
             time = m.sleepTime;
         }
     };
-    // A body is a few nanoseconds: pieces of several microseconds at least.
-    constexpr int kBodiesPerPiece = 1024;
-    tasks.parallelFor(n, kBodiesPerPiece, sleepTimes);
+    // A body is a few nanoseconds.
+    tasks.parallelFor(n, tasks.minRange(5), sleepTimes);
     for (int i = 0; i < n; ++i) {
         int root = detail::findRoot(s.islandParent, i);
         float& islandTime = s.islandSleepTime[static_cast<std::size_t>(root)];

@@ -203,9 +203,10 @@ void StageRunner::join(int worker, Function function, void* context) {
     }
 }
 
-void Tasks::configure(int workerCount, EnqueueTaskFunction enqueue, FinishTaskFunction finish,
-                      void* userContext) {
+void Tasks::configure(int workerCount, int minSplitWork, EnqueueTaskFunction enqueue,
+                      FinishTaskFunction finish, void* userContext) {
     workerCount_ = workerCount;
+    minSplitWork_ = minSplitWork;
     enqueue_ = enqueue;
     finish_ = finish;
     userContext_ = userContext;
@@ -216,16 +217,17 @@ void Tasks::configure(int workerCount, EnqueueTaskFunction enqueue, FinishTaskFu
 }
 
 void Tasks::run(TaskFunction task, int itemCount, int minRange, void* context) {
+    // Pieces small enough that a worker slowed by the rest of the machine, or woken late,
+    // leaves little for the others to wait on: a stage that splits at all is at least two
+    // minRange's worth (parallelFor()), so a piece is still several microseconds.
+    const int pieceSize = std::max({1, itemCount / (8 * workerCount_), minRange / 8});
     if (enqueue_ != nullptr) {
-        void* userTask = enqueue_(task, itemCount, minRange, context, userContext_);
+        void* userTask = enqueue_(task, itemCount, pieceSize, context, userContext_);
         if (userTask != nullptr) {
             finish_(userTask, userContext_);
         }
         return;
     }
-    // Pieces small enough that a worker slowed by the rest of the machine leaves little for
-    // the others to wait on, and no smaller than the caller asked.
-    const int pieceSize = std::max(minRange, itemCount / (8 * workerCount_));
     pool_->run(task, itemCount, pieceSize, context);
 }
 

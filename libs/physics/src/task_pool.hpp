@@ -3,6 +3,7 @@
 
 #include <e2d/physics/task.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -124,20 +125,28 @@ public:
     Tasks(Tasks&&) noexcept = default;
     Tasks& operator=(Tasks&&) noexcept = default;
 
-    // Starts the world's own threads when workerCount > 1 and enqueue is null.
-    void configure(int workerCount, EnqueueTaskFunction enqueue, FinishTaskFunction finish,
-                   void* userContext);
+    // Starts the world's own threads when workerCount > 1 and enqueue is null. minSplitWork:
+    // WorldDef::minSplitWork.
+    void configure(int workerCount, int minSplitWork, EnqueueTaskFunction enqueue,
+                   FinishTaskFunction finish, void* userContext);
     [[nodiscard]] int workerCount() const { return workerCount_; }
 
+    // The minRange of parallelFor() for items of about `nanosecondsEach` (one worker,
+    // measured in bench/solver): half of WorldDef::minSplitWork, so a stage splits once it
+    // holds the whole of it. Depends on the scene's counts only, never on a timing.
+    [[nodiscard]] int minRange(int nanosecondsEach) const {
+        return std::max(1, minSplitWork_ / (2 * std::max(nanosecondsEach, 1)));
+    }
+
     // Calls body(begin, end, worker) over [0, itemCount) in pieces of at least minRange items
-    // (worker in [0, workerCount())); returns when every piece has run. One worker, or too few
-    // items to split: one piece, here.
+    // (worker in [0, workerCount())); returns when every piece has run. One worker, or fewer
+    // than two pieces' worth of items (minPieceItems()): one piece, here.
     template <class Body>
     void parallelFor(int itemCount, int minRange, Body&& body) {
         if (itemCount <= 0) {
             return;
         }
-        if (workerCount_ == 1 || itemCount <= minRange) {
+        if (workerCount_ == 1 || itemCount / 2 < std::max(minRange, 1)) {
             body(0, itemCount, 0);
             return;
         }
@@ -151,6 +160,7 @@ private:
     void run(TaskFunction task, int itemCount, int minRange, void* context);
 
     int workerCount_ = 1;
+    int minSplitWork_ = 0;
     EnqueueTaskFunction enqueue_ = nullptr;
     FinishTaskFunction finish_ = nullptr;
     void* userContext_ = nullptr;

@@ -44,6 +44,9 @@ void validateWorldDef(const WorldDef& def) {
         check::fail(fn, "def.workerCount must be in [1, " + std::to_string(kMaxWorkers) +
                             "], got " + std::to_string(def.workerCount));
     }
+    if (def.minSplitWork < 0) {
+        check::fail(fn, "def.minSplitWork must be >= 0, got " + std::to_string(def.minSplitWork));
+    }
     if ((def.enqueueTask == nullptr) != (def.finishTask == nullptr)) {
         check::fail(fn,
                     std::string("def.enqueueTask and def.finishTask must both be set or both be "
@@ -247,7 +250,8 @@ World::World(const WorldDef& def) {
     impl_->collisionAlgorithm = def.collisionAlgorithm;
     impl_->speculativeDistance = def.speculativeDistance;
     impl_->tag = def.tag != 0 ? def.tag : tagFromAddress(impl_.get());
-    impl_->tasks.configure(def.workerCount, def.enqueueTask, def.finishTask, def.userTaskContext);
+    impl_->tasks.configure(def.workerCount, def.minSplitWork, def.enqueueTask, def.finishTask,
+                           def.userTaskContext);
     impl_->sim.simdLanes = def.simdLanes;
     impl_->bodies.reserve(static_cast<std::size_t>(def.bodyCapacity));
     impl_->bodyIds.reserve(def.bodyCapacity);

@@ -676,7 +676,21 @@ void World::Impl::solve(float dt) {
                            s.blockWorkers[static_cast<std::size_t>(worker)]);
             }
         };
-        tasks.parallelFor(blockCount, 1, solveBlocks);
+        // Blocks go whole to one worker: the others can take only what lies outside the
+        // largest one, about 40 ns a constraint; too little, and the caller does them all.
+        int blockedConstraints = 0;
+        int largestBlock = 0;
+        for (std::size_t b = 0; b < static_cast<std::size_t>(blockCount); ++b) {
+            if (!isStaged(b)) {
+                const int constraints =
+                    s.levelStart[static_cast<std::size_t>(s.blockLevelStart[b + 1])] -
+                    s.levelStart[static_cast<std::size_t>(s.blockLevelStart[b])];
+                blockedConstraints += constraints;
+                largestBlock = std::max(largestBlock, constraints);
+            }
+        }
+        const bool spread = blockedConstraints - largestBlock >= tasks.minRange(40);
+        tasks.parallelFor(blockCount, spread ? 1 : blockCount, solveBlocks);
         std::vector<int>& dense = s.jointDirect.denseComponents; // a set: order does not matter
         for (detail::Simulation::BlockWorker& w : s.blockWorkers) {
             s.hitCandidates.insert(s.hitCandidates.end(), w.hits.begin(), w.hits.end());

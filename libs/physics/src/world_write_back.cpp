@@ -105,9 +105,8 @@ void World::Impl::writeBack(float dt) {
             event.transform = b.transform;
         }
     };
-    // A body is a few tens of nanoseconds: pieces of several microseconds at least.
-    constexpr int kBodiesPerPiece = 256;
-    tasks.parallelFor(simCount, kBodiesPerPiece, writePiece);
+    // A body is about 30 ns.
+    tasks.parallelFor(simCount, tasks.minRange(30), writePiece);
 
     s.disabledSims.clear();
     for (int k = 0; k < simCount; ++k) {

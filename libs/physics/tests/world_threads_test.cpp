@@ -52,6 +52,7 @@ WorldDef threadedDef(int workers, int lanes, SolverMode mode = SolverMode::SoftS
     WorldDef def;
     def.tag = 7; // the same ids in every world, so events hash alike
     def.workerCount = workers;
+    def.minSplitWork = 0; // every stage split: what the hashes compare
     def.simdLanes = lanes;
     def.solver.mode = mode;
     return def;
@@ -410,6 +411,20 @@ TEST(WorldThreads, TheGamesJobSystemRunsTheStepWithTheSameResults) {
     EXPECT_EQ(run(def, buildStruckPyramid, 20), run(threadedDef(1, 8), buildStruckPyramid, 20));
 }
 
+// A small scene's stages are far below WorldDef::minSplitWork: the caller runs them alone
+// (handing them to a second thread made its steps slower) with the same results.
+TEST(WorldThreads, ASmallScenesStagesRunOnTheCaller) {
+    const std::uint64_t reference = run(threadedDef(1, 8), buildMixed, 150);
+    JobSystem jobs(3);
+    WorldDef def = threadedDef(3, 8);
+    def.minSplitWork = WorldDef{}.minSplitWork;
+    def.enqueueTask = JobSystem::enqueue;
+    def.finishTask = JobSystem::finish;
+    def.userTaskContext = &jobs;
+    EXPECT_EQ(run(def, buildMixed, 150), reference);
+    EXPECT_EQ(jobs.tasks, 0);
+}
+
 // A pile holding more than a worker's share of the constraints is solved by all workers
 // together (so the cases above split one island across workers); small piles each go whole to
 // one worker, and one worker solves everything whole.
@@ -477,6 +492,8 @@ TEST(WorldThreads, TheDefIsChecked) {
                      "physics::World::World(): def.workerCount must be in [1, 64], got 0");
     E2D_EXPECT_ERROR(World(WorldDef{.workerCount = 65}),
                      "physics::World::World(): def.workerCount must be in [1, 64], got 65");
+    E2D_EXPECT_ERROR(World(WorldDef{.minSplitWork = -1}),
+                     "physics::World::World(): def.minSplitWork must be >= 0, got -1");
     E2D_EXPECT_ERROR(World(WorldDef{.enqueueTask = JobSystem::enqueue}),
                      "physics::World::World(): def.enqueueTask and def.finishTask must both be set "
                      "or both be null, got only enqueueTask");

@@ -62,6 +62,12 @@ struct WorldDef {
     /// enqueueTask, the world starts workerCount - 1 threads of its own (the thread calling
     /// step() is the first worker) and stops them when it is destroyed. Default 1 (no threads).
     int workerCount = 1;
+    /// The least work, in nanoseconds of one worker as estimated from the scene's counts (never
+    /// timed, so it changes the speed only), a stage of the step needs before it is split over
+    /// the workers: below it, handing work to another thread (and waking it) costs more than it
+    /// saves (bench/README.md, "Threads"). >= 0; 0 splits every stage of two items or more.
+    /// Default 200 000 (0.2 ms).
+    int minSplitWork = 200'000;
     /// The game's job system, instead of the world's own threads: both set or both null.
     /// enqueueTask must give each piece a worker index in [0, workerCount). Default null.
     EnqueueTaskFunction enqueueTask = nullptr;
