@@ -4,18 +4,38 @@
 #include "ogg_pages.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <span>
 #include <sstream>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 namespace e2d::audio::detail {
 
 namespace {
+
+// The formats e2d reads are WAV, Ogg and FLAC. libsndfile guesses among about twenty more from
+// the bytes (MPEG through libmpg123, PAF, IRCAM, ...), and some of those parsers never return on
+// damaged input (a fuzzed MPEG stream kept sf_open_virtual() busy for 20 minutes): anything
+// else is refused before libsndfile sees it. Empty when `head` (the first bytes) starts one of
+// the three, else the reason.
+std::string unsupportedFormat(std::span<const std::byte> head) {
+    auto at = [&](std::size_t offset, std::string_view tag) {
+        return head.size() >= offset + tag.size() &&
+               std::memcmp(head.data() + offset, tag.data(), tag.size()) == 0;
+    };
+    const bool wav = (at(0, "RIFF") || at(0, "RIFX") || at(0, "RF64")) && at(8, "WAVE");
+    if (wav || at(0, "OggS") || at(0, "fLaC")) {
+        return {};
+    }
+    return "not a WAV, Ogg or FLAC file (the formats e2d::audio reads)";
+}
 
 // libsndfile's virtual I/O over a block of memory (Decoder::Memory).
 using MemoryCursor = Decoder::Memory;
@@ -98,6 +118,16 @@ std::unique_ptr<Decoder> Decoder::open(const std::filesystem::path& path,
         error = "'" + decoder->name_ + "': is a directory";
         return nullptr;
     }
+    {
+        std::array<std::byte, 12> head{};
+        std::ifstream file(path, std::ios::binary);
+        file.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
+        const auto got = static_cast<std::size_t>(std::max<std::streamsize>(file.gcount(), 0));
+        if (std::string problem = unsupportedFormat(std::span(head).first(got)); !problem.empty()) {
+            error = "'" + decoder->name_ + "': " + problem;
+            return nullptr;
+        }
+    }
     decoder->path_ = path;
     decoder->file_ = sf_open(decoder->name_.c_str(), SFM_READ, &decoder->info_);
     if (!decoder->finishOpen(limits, error, checked)) {
@@ -110,6 +140,10 @@ std::unique_ptr<Decoder> Decoder::open(std::span<const std::byte> bytes, std::st
                                        const DecodeLimits& limits, std::string& error) {
     std::unique_ptr<Decoder> decoder(new Decoder());
     decoder->name_ = std::string(name);
+    if (std::string problem = unsupportedFormat(bytes); !problem.empty()) {
+        error = "'" + decoder->name_ + "': " + problem;
+        return nullptr;
+    }
     decoder->memory_ = Memory{bytes, 0};
     SF_VIRTUAL_IO io{vioLength, vioSeek, vioRead, vioWrite, vioTell};
     decoder->file_ = sf_open_virtual(&io, SFM_READ, &decoder->info_, &decoder->memory_);

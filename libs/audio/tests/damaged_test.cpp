@@ -10,7 +10,11 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <limits>
+#include <span>
+#include <string>
 
 namespace e2d::audio {
 namespace {
@@ -224,3 +228,29 @@ TEST(DamagedFloat, AddRefusesSamplesThatAreNotFinite) {
 
 } // namespace
 } // namespace e2d::audio
+
+// Only WAV, Ogg and FLAC reach libsndfile: an MPEG stream (which libsndfile would hand to
+// libmpg123, whose resync never returned on one fuzzed input) or any other bytes are refused
+// by name, from memory and from a file.
+TEST(DamagedFormat, OtherFormatsAreRefusedBeforeLibsndfileSeesThem) {
+    const std::string mpeg = std::string("ID3\x03\x00\x00\x00\x00\x00\x00", 10) +
+                             std::string("\xff\xfb\x90\x64", 4) + std::string(400, '\x55');
+    const auto bytes = std::as_bytes(std::span(mpeg.data(), mpeg.size()));
+    const e2d::audio::DecodeResult fromMemory =
+        e2d::audio::decodeSoundMemory(bytes, "song.mp3", e2d::audio::DecodeLimits{});
+    EXPECT_FALSE(fromMemory.ok());
+    EXPECT_NE(fromMemory.error.find("'song.mp3': not a WAV, Ogg or FLAC file"), std::string::npos)
+        << fromMemory.error;
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / "e2d_damaged_format_test.mp3";
+    {
+        std::ofstream file(path, std::ios::binary);
+        file.write(mpeg.data(), static_cast<std::streamsize>(mpeg.size()));
+    }
+    const e2d::audio::DecodeResult fromFile =
+        e2d::audio::decodeSoundFile(path, e2d::audio::DecodeLimits{});
+    std::filesystem::remove(path);
+    EXPECT_FALSE(fromFile.ok());
+    EXPECT_NE(fromFile.error.find("not a WAV, Ogg or FLAC file"), std::string::npos)
+        << fromFile.error;
+}
