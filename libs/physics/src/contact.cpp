@@ -141,9 +141,12 @@ bool isRecyclable(const ShapeGeometry& g) {
     return type == ShapeType::Polygon || type == ShapeType::Segment;
 }
 
-// SolverDef::contactRecycleDistance, capped at the speculative distance (see its doc).
+// SolverDef::contactRecycleDistance, capped at the speculative distance; 0 in classic mode
+// (see its doc).
 float effectiveRecycleDistance(const SolverDef& def, float speculativeDistance) {
-    return std::min(def.contactRecycleDistance, speculativeDistance);
+    return def.mode == SolverMode::Classic
+               ? 0.0f
+               : std::min(def.contactRecycleDistance, speculativeDistance);
 }
 
 // The farthest a point of the body's shapes is from its origin, metres.

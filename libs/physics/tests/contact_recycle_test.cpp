@@ -192,6 +192,29 @@ TEST(ContactRecycle, SensorsAndRoundShapesAreAlwaysCollided) {
     EXPECT_LE(recycled, 30);
 }
 
+// Box2D 2.4's recipe collides every contact every step: a classic world recycles nothing, the
+// same stack in the soft step does.
+TEST(ContactRecycle, ClassicModeNeverRecycles) {
+    const auto recycledOnAStack = [](SolverMode mode) {
+        WorldDef def = recyclingDef({0.0f, -10.0f});
+        def.solver.mode = mode;
+        World world{def};
+        addGround(world);
+        for (int i = 0; i < 3; ++i) {
+            addBox(world, {0.0f, 0.5f + static_cast<float>(i)}, 0.5f);
+        }
+        int recycled = 0;
+        for (int step = 0; step < 60; ++step) {
+            world.step(kStep);
+            recycled += world.stepCounters().manifoldsRecycled;
+        }
+        EXPECT_EQ(world.stepCounters().contactConstraints, 3);
+        return recycled;
+    };
+    EXPECT_EQ(recycledOnAStack(SolverMode::Classic), 0);
+    EXPECT_GT(recycledOnAStack(SolverMode::SoftStep), 60);
+}
+
 TEST(ContactRecycle, TheDistanceIsChecked) {
     for (float bad : {-0.001f, 0.2f, std::nanf("")}) {
         WorldDef def;
