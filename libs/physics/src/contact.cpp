@@ -252,7 +252,9 @@ inline void recycleManifold(Manifold& m, const detail::ManifoldOrigin& o, const 
     const __m128 normal =
         _mm_add_ps(_mm_mul_ps(cA, normalInA), _mm_mul_ps(sA, swapHalves(normalInA)));
     storeLow(m.normal, normal);
-    if (m.pointCount == 0) {
+    // Read once: the stores below may alias it as far as the compiler knows.
+    const int pointCount = m.pointCount;
+    if (pointCount == 0) {
         return;
     }
     const __m128 pA = _mm_movelh_ps(a, a);
@@ -262,7 +264,7 @@ inline void recycleManifold(Manifold& m, const detail::ManifoldOrigin& o, const 
     const __m128 onA = _mm_add_ps(_mm_mul_ps(cA, surfaceA), _mm_mul_ps(sA, swapHalves(surfaceA)));
     const __m128 onB = _mm_add_ps(_mm_mul_ps(cB, surfaceB), _mm_mul_ps(sB, swapHalves(surfaceB)));
     const __m128 gap = _mm_sub_ps(_mm_add_ps(offset, onB), onA);
-    const __m128 anchorA = _mm_add_ps(onA, _mm_mul_ps(_mm_setr_ps(0.5f, 0.5f, 0.5f, 0.5f), gap));
+    const __m128 anchorA = _mm_add_ps(onA, _mm_mul_ps(_mm_set1_ps(0.5f), gap));
     const __m128 anchorB = _mm_sub_ps(anchorA, offset);
     const __m128 point = _mm_add_ps(pA, anchorA);
     const __m128 products = _mm_mul_ps(gap, _mm_movelh_ps(normal, normal));
@@ -273,7 +275,7 @@ inline void recycleManifold(Manifold& m, const detail::ManifoldOrigin& o, const 
     storeLow(p0.anchorB, anchorB);
     _mm_store_ss(&p0.separation, separation);
     p0.persisted = true;
-    if (m.pointCount == 2) {
+    if (pointCount == 2) {
         ManifoldPoint& p1 = m.points[1];
         storeHigh(p1.point, point);
         storeHigh(p1.anchorA, anchorA);
@@ -346,8 +348,9 @@ enum Collided : unsigned char { kNoPoints = 0, kPoints = 1, kRecycled = 2 };
     if (origin.valid) {
         if (recycleDistance > 0.0f &&
             motionSince(origin, ba.transform, bb.transform) + dt * closing <= recycleDistance) {
+            const unsigned points = c.manifold.pointCount > 0 ? kPoints : kNoPoints;
             recycleManifold(c.manifold, origin, ba.transform, bb.transform);
-            return kRecycled | (c.manifold.pointCount > 0 ? kPoints : kNoPoints);
+            return kRecycled | points;
         }
         origin.valid = false;
     }

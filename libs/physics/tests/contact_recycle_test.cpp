@@ -133,7 +133,7 @@ TEST(ContactRecycle, APairThatMovesBeyondTheDistanceIsCollidedAgain) {
 // the routine finds overlapping at the step's start or end pose is in the manifold the step
 // solved with (a rule without the step's own motion, dt * closing, misses the corner at the end
 // of a step at 8 m/s^2 and up; one without the rotation's chord keeps the one point while the
-// corner sinks 1 to 20 cm), and the box ends flat on both corners.
+// corner sinks up to 20 cm), and the box ends flat on both corners.
 TEST(ContactRecycle, ATippingBoxsSecondCornerIsNeverMissed) {
     const auto run = [](float gravity, float recycle, int& recycledWhileTipping) {
         WorldDef def = recyclingDef({0.0f, -gravity});
