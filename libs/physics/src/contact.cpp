@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
 #include <cstdint>
 #include <new>
 #include <variant>
@@ -159,8 +158,7 @@ void recordOrigin(detail::ManifoldOrigin& o, const Manifold& m, const detail::Bo
                   const detail::Body& bb) {
     const Transform& xfA = ba.transform;
     const Transform& xfB = bb.transform;
-    o.bInA = invMulTransforms(xfA, xfB);
-    o.aInB = invRotate(xfB.q, xfA.p - xfB.p);
+    o.setFrames(invRotate(xfB.q, xfA.p - xfB.p), invMulTransforms(xfA, xfB));
     o.extentA = extentFromOrigin(ba);
     o.extentB = extentFromOrigin(bb);
     o.normalInA = invRotate(xfA.q, m.normal);
@@ -175,11 +173,12 @@ void recordOrigin(detail::ManifoldOrigin& o, const Manifold& m, const detail::Bo
 
 #if defined(__SSE2__)
 
-// The recycle path is most of a resting pile's narrow phase, so it is written for SSE2 with two
-// 2-vectors a register. Every lane does the scalar code's operations (below) on the same
+// The recycle path is most of a resting pile's narrow phase, so it is written for SSE2: the
+// motion bound with its three 2-vectors' x and y components in two registers, the move with
+// two points a register. Every lane does the scalar code's operations (below) on the same
 // operands in the same order (x - y as x + (-y), a + b as b + a; no FMA on the SSE2
-// baseline), so the results are bit for bit the scalar ones. Both functions start from the
-// same two loads and shuffles, which the compiler shares once they are inlined together.
+// baseline), so the results are bit for bit the scalar ones. Both functions load the two
+// transforms whole; inlined together, they share the loads.
 
 static_assert(sizeof(Transform) == 4 * sizeof(float), "Transform is p.x p.y q.c q.s");
 
@@ -195,44 +194,36 @@ inline __m128 lanes(__m128 v) {
 }
 // (x0, y0, x1, y1) -> (y0, x0, y1, x1).
 inline __m128 swapHalves(__m128 v) { return lanes<1, 0, 3, 2>(v); }
-// Flips the sign of lanes 1 and 3, or of lanes 0 and 2.
-inline __m128 negateOdd(__m128 v) { return _mm_xor_ps(v, _mm_setr_ps(0.0f, -0.0f, 0.0f, -0.0f)); }
+// Flips the sign of lanes 0 and 2.
 inline __m128 negateEven(__m128 v) { return _mm_xor_ps(v, _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)); }
 inline void storeLow(Vec2& to, __m128 v) { _mm_storel_pi(reinterpret_cast<__m64*>(&to.x), v); }
 inline void storeHigh(Vec2& to, __m128 v) { _mm_storeh_pi(reinterpret_cast<__m64*>(&to.x), v); }
 
-static_assert(offsetof(detail::ManifoldOrigin, bInA) == offsetof(detail::ManifoldOrigin, aInB) + 8,
-              "motionSince() loads aInB and bInA.p, then bInA, in one register each");
-
 // How far any point of one body has moved relative to the other since the origin was noted, at
 // most: the translation of one body's origin in the other's frame plus the chord the relative
 // rotation turns the farthest point through (the smaller bound of the two ways round).
-// Lanes 0-1 hold A's origin in B's frame, lanes 2-3 B's origin in A's frame and then the
-// relative rotation; the three lengths take one square root.
+// Computed in the lanes of ManifoldOrigin::frameX and frameY (A's origin in B's frame, B's
+// origin in A's frame, B's rotation in A's frame): x rows c u + s v, y rows c v - s u.
 inline float motionSince(const detail::ManifoldOrigin& o, const Transform& xfA,
                          const Transform& xfB) {
     const __m128 a = loadTransform(xfA);
     const __m128 b = loadTransform(xfB);
-    const __m128 q = _mm_movehl_ps(a, b);             // cB sB cA sA
-    const __m128 c = lanes<0, 0, 2, 2>(q);            // cB cB cA cA
-    const __m128 s = negateOdd(lanes<1, 1, 3, 3>(q)); // sB -sB sA -sA
-    // invRotate(qB, pA - pB), invRotate(qA, pB - pA): c v + s (v.y, v.x).
-    const __m128 d = _mm_sub_ps(_mm_movelh_ps(a, b), _mm_movelh_ps(b, a));
-    const __m128 frames = _mm_add_ps(_mm_mul_ps(c, d), _mm_mul_ps(s, swapHalves(d)));
-    const __m128 moved = _mm_sub_ps(frames, _mm_loadu_ps(&o.aInB.x));
-    // invMulRot(qA, qB) in lanes 2-3.
-    const __m128 qB = _mm_movelh_ps(q, q);
-    const __m128 relative = _mm_add_ps(_mm_mul_ps(c, qB), _mm_mul_ps(s, swapHalves(qB)));
-    const __m128 turned = _mm_sub_ps(relative, _mm_loadu_ps(&o.bInA.p.x));
-    const __m128 movedSquared = _mm_mul_ps(moved, moved);
-    const __m128 turnedSquared = _mm_mul_ps(turned, turned);
-    const __m128 lengths = _mm_sqrt_ps(
-        _mm_add_ps(_mm_shuffle_ps(movedSquared, turnedSquared, _MM_SHUFFLE(2, 2, 2, 0)),
-                   _mm_shuffle_ps(movedSquared, turnedSquared, _MM_SHUFFLE(3, 3, 3, 1))));
-    // |A moved in B| + chord extentA, |B moved in A| + chord extentB; std::min(b, a) is
-    // minss(a, b), which keeps the second on a tie or a NaN as std::min does.
+    const __m128 p = _mm_unpacklo_ps(a, b);                         // pAx pBx pAy pBy
+    const __m128 q = _mm_unpackhi_ps(a, b);                         // cA cB sA sB
+    const __m128 d = _mm_sub_ps(p, lanes<1, 0, 3, 2>(p));           // x: pA - pB, pB - pA; y: same
+    const __m128 u = _mm_shuffle_ps(d, q, _MM_SHUFFLE(3, 1, 1, 0)); // dx(A-B) dx(B-A) cB
+    const __m128 v = _mm_shuffle_ps(d, q, _MM_SHUFFLE(3, 3, 3, 2)); // dy(A-B) dy(B-A) sB
+    const __m128 c = lanes<1, 0, 0, 0>(q);                          // cB cA cA
+    const __m128 s = lanes<3, 2, 2, 2>(q);                          // sB sA sA
+    const __m128 x =
+        _mm_sub_ps(_mm_add_ps(_mm_mul_ps(c, u), _mm_mul_ps(s, v)), _mm_loadu_ps(o.frameX));
+    const __m128 y =
+        _mm_sub_ps(_mm_sub_ps(_mm_mul_ps(c, v), _mm_mul_ps(s, u)), _mm_loadu_ps(o.frameY));
+    // |A moved in B|, |B moved in A|, the chord; then + chord (extentA, extentB). std::min(b, a)
+    // is minss(a, b), which keeps the second on a tie or a NaN as std::min does.
+    const __m128 lengths = _mm_sqrt_ps(_mm_add_ps(_mm_mul_ps(x, x), _mm_mul_ps(y, y)));
     const __m128 bounds =
-        _mm_add_ps(lengths, _mm_mul_ps(_mm_movehl_ps(lengths, lengths), loadLow(&o.extentA)));
+        _mm_add_ps(lengths, _mm_mul_ps(lanes<2, 2, 2, 2>(lengths), loadLow(&o.extentA)));
     return _mm_cvtss_f32(_mm_min_ss(bounds, lanes<1, 1, 1, 1>(bounds)));
 }
 
@@ -293,9 +284,10 @@ inline void recycleManifold(Manifold& m, const detail::ManifoldOrigin& o, const 
 float motionSince(const detail::ManifoldOrigin& o, const Transform& xfA, const Transform& xfB) {
     const Transform bInA = invMulTransforms(xfA, xfB);
     const Vec2 aInB = invRotate(xfB.q, xfA.p - xfB.p);
-    const float chord = length(Vec2{bInA.q.c - o.bInA.q.c, bInA.q.s - o.bInA.q.s});
-    return std::min(length(bInA.p - o.bInA.p) + chord * o.extentB,
-                    length(aInB - o.aInB) + chord * o.extentA);
+    const Transform bInA0 = o.bInA();
+    const float chord = length(Vec2{bInA.q.c - bInA0.q.c, bInA.q.s - bInA0.q.s});
+    return std::min(length(bInA.p - bInA0.p) + chord * o.extentB,
+                    length(aInB - o.aInB()) + chord * o.extentA);
 }
 
 // The noted manifold moved with the bodies: each point's two surface points where the bodies

@@ -72,10 +72,11 @@ inline int findRoot(std::vector<int>& parent, int i) {
 // that later steps can move it with the bodies instead of colliding again
 // (SolverDef::contactRecycleDistance; contact.cpp).
 struct ManifoldOrigin {
-    // A's origin in B's frame, and body B's origin and rotation in body A's frame (in this
-    // order: contact.cpp's SSE2 code loads aInB and bInA.p together).
-    Vec2 aInB{0.0f, 0.0f};
-    Transform bInA{};
+    // The bodies' relative pose, x components in one row and y components in the other (lanes
+    // of contact.cpp's SSE2 code): 0, A's origin in B's frame; 1, B's origin in A's frame; 2,
+    // B's rotation in A's frame (cos, sin); 3, unused.
+    float frameX[4]{};
+    float frameY[4]{};
     // The farthest any point of the body's shapes was from its origin, metres.
     float extentA = 0.0f;
     float extentB = 0.0f;
@@ -86,6 +87,19 @@ struct ManifoldOrigin {
     Vec2 surfaceB[2]{};
     // False until the routine has run with recycling on (and for sensors and chain segments).
     bool valid = false;
+
+    [[nodiscard]] Vec2 aInB() const { return {frameX[0], frameY[0]}; }
+    [[nodiscard]] Transform bInA() const {
+        return {{frameX[1], frameY[1]}, {frameX[2], frameY[2]}};
+    }
+    void setFrames(Vec2 aInB, const Transform& bInA) {
+        frameX[0] = aInB.x;
+        frameY[0] = aInB.y;
+        frameX[1] = bInA.p.x;
+        frameY[1] = bInA.p.y;
+        frameX[2] = bInA.q.c;
+        frameY[2] = bInA.q.s;
+    }
 };
 
 struct Contact {

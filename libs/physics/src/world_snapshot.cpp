@@ -164,8 +164,11 @@ void transfer(Io& io, Manifold& m) {
 }
 template <class Io>
 void transfer(Io& io, ManifoldOrigin& o) {
-    field(io, "bInA", o.bInA);
-    field(io, "aInB", o.aInB);
+    Transform bInA = o.bInA();
+    Vec2 aInB = o.aInB();
+    field(io, "bInA", bInA);
+    field(io, "aInB", aInB);
+    o.setFrames(aInB, bInA);
     field(io, "extentA", o.extentA);
     field(io, "extentB", o.extentB);
     field(io, "normalInA", o.normalInA);
