@@ -72,9 +72,10 @@ inline int findRoot(std::vector<int>& parent, int i) {
 // that later steps can move it with the bodies instead of colliding again
 // (SolverDef::contactRecycleDistance; contact.cpp).
 struct ManifoldOrigin {
-    // Body B's origin and rotation in body A's frame, and A's origin in B's frame.
-    Transform bInA{};
+    // A's origin in B's frame, and body B's origin and rotation in body A's frame (in this
+    // order: contact.cpp's SSE2 code loads aInB and bInA.p together).
     Vec2 aInB{0.0f, 0.0f};
+    Transform bInA{};
     // The farthest any point of the body's shapes was from its origin, metres.
     float extentA = 0.0f;
     float extentB = 0.0f;

@@ -127,45 +127,62 @@ TEST(ContactRecycle, APairThatMovesBeyondTheDistanceIsCollidedAgain) {
     }
 }
 
-// A box balanced on one corner, tipped a little past it, falls onto its second corner: at
-// every step, every corner the routine finds overlapping (at the step's starting pose) is in
-// the manifold the step solved with, and the box ends up flat on both.
+// A box resting on one corner, its second corner 0.5 mm beyond the speculative distance above
+// the ground, tips onto that corner under gravities of 1 to 30 m/s^2: slowly enough that the
+// one-point manifold is recycled on one step or more at every speed. At every step, each corner
+// the routine finds overlapping at the step's start or end pose is in the manifold the step
+// solved with (a rule without the step's own motion, dt * closing, misses the corner at the end
+// of a step at 8 m/s^2 and up; one without the rotation's chord keeps the one point while the
+// corner sinks up to 20 cm), and the box ends flat on both corners.
 TEST(ContactRecycle, ATippingBoxsSecondCornerIsNeverMissed) {
-    const auto run = [](float recycle, int& recycled) {
-        WorldDef def = recyclingDef({0.0f, -10.0f});
+    const auto run = [](float gravity, float recycle, int& recycledWhileTipping) {
+        WorldDef def = recyclingDef({0.0f, -gravity});
         def.solver.contactRecycleDistance = recycle;
         World world{def};
         const BodyId ground = addGround(world);
-        // Corner down, 0.05 rad past balance.
-        const float angle = 0.25f * 3.14159265f - 0.05f;
-        const Vec2 corner = rotate(Rot{std::cos(angle), std::sin(angle)}, {0.5f, -0.5f});
+        const float gap = kSpeculativeDistance + 0.0005f;
+        const float angle = std::asin(gap);
+        const Vec2 corner = rotate(Rot{std::cos(angle), std::sin(angle)}, {-0.5f, -0.5f});
         const BodyId box = addBox(world, {-corner.x, -corner.y}, 0.5f, 0.6f, 1.0f, angle);
-        float deepest = 0.0f;
-        recycled = 0;
-        for (int step = 0; step < 150; ++step) {
-            const Transform xfBox = world.transform(box);
-            world.step(kStep);
-            recycled += world.stepCounters().manifoldsRecycled;
-            const Compared m = compare(world, world.transform(ground), xfBox, ground);
-            int overlapping = 0;
-            for (int i = 0; i < m.fresh.pointCount; ++i) {
-                overlapping += m.fresh.points[i].separation <= 0.0f ? 1 : 0;
+        const auto overlapping = [](const Manifold& m) {
+            int count = 0;
+            for (int i = 0; i < m.pointCount; ++i) {
+                count += m.points[i].separation <= 0.0f ? 1 : 0;
             }
-            EXPECT_GE(m.world.pointCount, overlapping) << "step " << step;
+            return count;
+        };
+        float deepest = 0.0f;
+        recycledWhileTipping = 0;
+        for (int step = 0; step < 60; ++step) {
+            const Transform xfStart = world.transform(box);
+            world.step(kStep);
+            const Compared start = compare(world, world.transform(ground), xfStart, ground);
+            const Compared end =
+                compare(world, world.transform(ground), world.transform(box), ground);
+            if (world.stepCounters().manifoldsRecycled == 1 && start.world.pointCount == 1) {
+                ++recycledWhileTipping;
+            }
+            EXPECT_GE(start.world.pointCount, overlapping(start.fresh)) << "start of step " << step;
+            EXPECT_GE(start.world.pointCount, overlapping(end.fresh)) << "end of step " << step;
             deepest = std::max(deepest, maxPenetration(world));
         }
-        EXPECT_EQ(world.stepCounters().contactConstraints, 1);
         const Compared last = compare(world, world.transform(ground), world.transform(box), ground);
         EXPECT_EQ(last.world.pointCount, 2) << "flat on both corners";
         return deepest;
     };
-    int recycled = 0;
-    int collidedOnly = 0;
-    const float withRecycling = run(kRecycle, recycled);
-    const float without = run(0.0f, collidedOnly);
-    EXPECT_GT(recycled, 50) << "the resting box's contact was recycled";
-    EXPECT_EQ(collidedOnly, 0);
-    EXPECT_LT(withRecycling, without + 1e-3f);
+    int recycledWhileTipping = 0;
+    for (float gravity : {1.0f, 2.0f, 4.0f, 8.0f, 12.0f, 25.0f, 30.0f}) {
+        SCOPED_TRACE(gravity);
+        int recycled = 0;
+        int collidedOnly = 0;
+        const float withRecycling = run(gravity, kRecycle, recycled);
+        const float without = run(gravity, 0.0f, collidedOnly);
+        EXPECT_GE(recycled, 1) << "the one-point manifold was recycled while the box tipped";
+        EXPECT_EQ(collidedOnly, 0);
+        EXPECT_LT(withRecycling, without + 1e-3f);
+        recycledWhileTipping += recycled;
+    }
+    EXPECT_GE(recycledWhileTipping, 20);
 }
 
 TEST(ContactRecycle, SensorsAndRoundShapesAreAlwaysCollided) {
@@ -190,6 +207,29 @@ TEST(ContactRecycle, SensorsAndRoundShapesAreAlwaysCollided) {
     // Only the box on the ground: the ball's and the sensor's contacts are collided each step.
     EXPECT_GT(recycled, 20);
     EXPECT_LE(recycled, 30);
+}
+
+// Box2D 2.4's recipe collides every contact every step: a classic world recycles nothing, the
+// same stack in the soft step does.
+TEST(ContactRecycle, ClassicModeNeverRecycles) {
+    const auto recycledOnAStack = [](SolverMode mode) {
+        WorldDef def = recyclingDef({0.0f, -10.0f});
+        def.solver.mode = mode;
+        World world{def};
+        addGround(world);
+        for (int i = 0; i < 3; ++i) {
+            addBox(world, {0.0f, 0.5f + static_cast<float>(i)}, 0.5f);
+        }
+        int recycled = 0;
+        for (int step = 0; step < 60; ++step) {
+            world.step(kStep);
+            recycled += world.stepCounters().manifoldsRecycled;
+        }
+        EXPECT_EQ(world.stepCounters().contactConstraints, 3);
+        return recycled;
+    };
+    EXPECT_EQ(recycledOnAStack(SolverMode::Classic), 0);
+    EXPECT_GT(recycledOnAStack(SolverMode::SoftStep), 60);
 }
 
 TEST(ContactRecycle, TheDistanceIsChecked) {

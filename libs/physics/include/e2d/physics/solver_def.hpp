@@ -153,7 +153,10 @@ struct SolverDef {
     /// that, until then, the manifold keeps its points and normal (a box sliding off an edge
     /// keeps its point past the edge for that far) and a contact ends that much later.
     /// Only pairs of polygons and segments are recycled (their routine is the costly one);
-    /// sensors, circles, capsules and chain segments are always collided. Default 0.02
+    /// sensors, circles, capsules and chain segments are always collided. Soft step only:
+    /// SolverMode::Classic collides every contact every step whatever this says, as Box2D 2.4
+    /// does (with recycling, its validation scenarios house_of_cards and scissor_lift_3 ended
+    /// further from their expected results). Default 0.02
     /// (kSpeculativeDistance): 15 % fewer instructions per step on a pyramid, no validation
     /// scenario lost (bench/README.md, "Contact recycling").
     float contactRecycleDistance = 0.02f;
