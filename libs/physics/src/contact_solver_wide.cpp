@@ -240,15 +240,17 @@ int hitLanes(const WideConstraintT<8>& group, float threshold) {
 #endif
 }
 
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<4>& in,
-                      std::span<BodyState> states) {
-    lanes4::prepareGroup(in, wide.constraints4[static_cast<std::size_t>(group)], states.data());
+int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<4>& in,
+                     std::span<BodyState> states) {
+    return lanes4::prepareGroup(in, wide.constraints4[static_cast<std::size_t>(group)],
+                                states.data());
 }
 
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<8>& in,
-                      std::span<BodyState> states) {
+int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<8>& in,
+                     std::span<BodyState> states) {
 #if defined(E2D_HAS_WIDE8)
-    lanes8::prepareGroup(in, wide.constraints8[static_cast<std::size_t>(group)], states.data());
+    return lanes8::prepareGroup(in, wide.constraints8[static_cast<std::size_t>(group)],
+                                states.data());
 #else
     // Unreachable: without AVX2 kernels layoutWide() never makes eight-lane groups.
     (void)wide;

@@ -92,97 +92,56 @@ void layoutWide(WideContacts& wide, std::span<const int> levelStart, int lanes);
 void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint& c,
                   std::span<BodyState> states);
 
-// What prepareContact() reads for N constraints, one per lane: the manifold, both sides'
-// ContactBodyView and the material. The world gathers a group's lanes here (setLane(),
-// clearLane()) and prepareWideGroup() turns them into the group's packed constraints, all
-// lanes at once, bit for bit what prepareContact() and packWideLane() give one at a time.
-template <int N>
-struct alignas(32) WideManifoldT {
-    int indexA[N];
-    int indexB[N];
-    int pointCount[N]; // 0: an empty lane
-    float normalX[N], normalY[N];
-    float offsetAx[N], offsetAy[N], offsetBx[N], offsetBy[N]; // ContactBodyView::centerOffset
-    float velocityAx[N], velocityAy[N], angularVelocityA[N];
-    float velocityBx[N], velocityBy[N], angularVelocityB[N];
-    float invMassAx[N], invMassAy[N], invMassBx[N], invMassBy[N];
-    float invInertiaA[N], invInertiaB[N];
-    float friction[N];
-    float biasRate[N], massScale[N], impulseScale[N];
-    struct Point {
-        float anchorAx[N], anchorAy[N], anchorBx[N], anchorBy[N];
-        float separation[N];
-        float normalImpulse[N], tangentImpulse[N];
-    };
-    Point points[2];
+// A row of four zero floats: the centre offset and masses of an empty lane (WideGatherT).
+alignas(16) inline constexpr float kZeroRow[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+// The manifold of an empty lane: no points.
+inline const Manifold kEmptyManifold{};
 
-    // Inlined into the world's gather loop (out of line its arguments go through memory).
-    [[gnu::always_inline]] void setLane(int lane, const Manifold& m, const ContactBodyView& a,
-                                        const ContactBodyView& b, float frictionOf,
-                                        Softness softness) {
-        indexA[lane] = a.stateIndex;
-        indexB[lane] = b.stateIndex;
-        pointCount[lane] = m.pointCount;
-        normalX[lane] = m.normal.x;
-        normalY[lane] = m.normal.y;
-        offsetAx[lane] = a.centerOffset.x;
-        offsetAy[lane] = a.centerOffset.y;
-        offsetBx[lane] = b.centerOffset.x;
-        offsetBy[lane] = b.centerOffset.y;
-        velocityAx[lane] = a.linearVelocity.x;
-        velocityAy[lane] = a.linearVelocity.y;
-        angularVelocityA[lane] = a.angularVelocity;
-        velocityBx[lane] = b.linearVelocity.x;
-        velocityBy[lane] = b.linearVelocity.y;
-        angularVelocityB[lane] = b.angularVelocity;
-        invMassAx[lane] = a.invMass.x;
-        invMassAy[lane] = a.invMass.y;
-        invMassBx[lane] = b.invMass.x;
-        invMassBy[lane] = b.invMass.y;
-        invInertiaA[lane] = a.invInertia;
-        invInertiaB[lane] = b.invInertia;
-        friction[lane] = frictionOf;
-        biasRate[lane] = softness.biasRate;
-        massScale[lane] = softness.massScale;
-        impulseScale[lane] = softness.impulseScale;
-        for (int i = 0; i < 2; ++i) {
-            // A missing point's inputs are zero; prepareWideGroup() zeroes its outputs anyway.
-            // (Field by field: a copy of the whole ManifoldPoint or a default one cost 18
-            // instructions a contact.)
-            Point& p = points[i];
-            if (i < m.pointCount) {
-                const ManifoldPoint& mp = m.points[i];
-                p.anchorAx[lane] = mp.anchorA.x;
-                p.anchorAy[lane] = mp.anchorA.y;
-                p.anchorBx[lane] = mp.anchorB.x;
-                p.anchorBy[lane] = mp.anchorB.y;
-                p.separation[lane] = mp.separation;
-                p.normalImpulse[lane] = mp.normalImpulse;
-                p.tangentImpulse[lane] = mp.tangentImpulse;
-            } else {
-                p.anchorAx[lane] = 0.0f;
-                p.anchorAy[lane] = 0.0f;
-                p.anchorBx[lane] = 0.0f;
-                p.anchorBy[lane] = 0.0f;
-                p.separation[lane] = 0.0f;
-                p.normalImpulse[lane] = 0.0f;
-                p.tangentImpulse[lane] = 0.0f;
-            }
-        }
-    }
+// Where prepareWideGroup() reads what prepareContact() reads for N constraints, one per lane:
+// the manifold itself, and each side's ContactBodyView as rows of four floats read whole (their
+// last floats are not used), so that a group's lanes are gathered with a few loads and
+// shuffles instead of copied field by field. A side's velocity is its state's (states[index]),
+// a static side's zero. Empty lanes: kEmptyManifold, kZeroRow and index -1 everywhere.
+template <int N>
+struct WideGatherT {
+    const Manifold* manifold[N];
+    // {centerOffset.x, centerOffset.y, -, -} and {invMass.x, invMass.y, invInertia, -} of
+    // each side (in the world: BodySim::centerOffset and BodySim::invMass, or a static side's
+    // offset and kZeroRow).
+    const float* offsetA[N];
+    const float* offsetB[N];
+    const float* massA[N];
+    const float* massB[N];
+    int indexA[N]; // ContactBodyView::stateIndex
+    int indexB[N];
+    float friction[N];
+    // The lane's softness: vsStatic where a side is rigid (no mass, no inertia: a static side
+    // too), as the world picks it; an empty lane gets Softness{}.
+    Softness dynamic;
+    Softness vsStatic;
 
     // An empty lane: no bodies, no points; it packs as ContactConstraint{} does.
     void clearLane(int lane) {
-        setLane(lane, Manifold{}, ContactBodyView{}, ContactBodyView{}, 0.0f, Softness{});
+        manifold[lane] = &kEmptyManifold;
+        offsetA[lane] = kZeroRow;
+        offsetB[lane] = kZeroRow;
+        massA[lane] = kZeroRow;
+        massB[lane] = kZeroRow;
+        indexA[lane] = -1;
+        indexB[lane] = -1;
+        friction[lane] = 0.0f;
     }
 };
 
-// Prepares and packs the group of constraints `group` from `in` (see WideManifoldT), whose
-// bodies are in `states` (the array the passes then run on). The lane count must be wide.lanes.
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<4>& in,
-                      std::span<BodyState> states);
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<8>& in,
-                      std::span<BodyState> states);
+// Prepares and packs the group of constraints `group` from the lanes of `in` (see
+// WideGatherT), bit for bit what prepareContact() and packWideLane() give one at a time, all
+// lanes at once. Their bodies are in `states` (the array the passes then run on). The lane
+// count must be wide.lanes. Returns the lanes whose manifold has a point deeper than
+// kLinearSlop, lane k in bit k: where isPushedApart() must ask isDeepPushedApart().
+int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<4>& in,
+                     std::span<BodyState> states);
+int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<8>& in,
+                     std::span<BodyState> states);
 
 // Packs the constraints of each level, constraints[levelOrder[levelStart[k] ..
 // levelStart[k + 1])], into groups of `lanes` (the last group of a level padded with empty

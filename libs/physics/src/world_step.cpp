@@ -10,6 +10,7 @@
 #include "world_impl.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -459,11 +460,11 @@ void World::Impl::solve(float dt) {
                     s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
             }
         };
-        // Group `group` of level `level`: its constraints gathered lane by lane and prepared all
-        // at once (prepareWideGroup()), right before its block is solved: no constraint array
-        // in between, and the block's contacts, lanes and bodies stay in cache through build,
-        // sub-steps and store. Appends its restitution entries; returns whether it holds shapes
-        // pushed apart.
+        // Group `group` of level `level`: where its constraints' manifolds and bodies are,
+        // gathered lane by lane, then prepared all at once (prepareWideGroup()), right before
+        // its block is solved: no constraint array in between, and the block's contacts, lanes
+        // and bodies stay in cache through build, sub-steps and store. Appends its restitution
+        // entries; returns whether it holds shapes pushed apart.
         auto buildGroup = [&](auto& in, int level, int group,
                               std::vector<detail::WideRestitution>& restitution) {
             constexpr int N = static_cast<int>(sizeof(in.indexA) / sizeof(in.indexA[0]));
@@ -472,30 +473,61 @@ void World::Impl::solve(float dt) {
             const int first =
                 levelFirst +
                 (group - s.wideContacts.levelStart[static_cast<std::size_t>(level)]) * N;
-            bool groupPushOut = false;
-            for (int lane = 0; lane < N; ++lane) {
-                const int slot = first + lane;
-                if (slot >= levelEnd) {
-                    in.clearLane(lane);
-                    continue;
+            // A static (or asleep) side's centre offset, viewOf()'s, as a row of four floats.
+            alignas(16) float staticOffset[2 * N][4];
+            auto sideRows = [&](int lane, int side, int bodyIndex, int solverIndex,
+                                const float*& offset, const float*& mass) {
+                if (solverIndex != kNullIndex) {
+                    const detail::BodySim& bs = s.sims[static_cast<std::size_t>(solverIndex)];
+                    offset = &bs.centerOffset.x;
+                    mass = &bs.invMass.x;
+                    return;
                 }
+                float(&row)[4] = staticOffset[2 * lane + side];
+                const Vec2 o = viewOf(bodyIndex, kNullIndex).centerOffset;
+                row[0] = o.x;
+                row[1] = o.y;
+                row[2] = 0.0f;
+                row[3] = 0.0f;
+                offset = row;
+                mass = detail::kZeroRow;
+            };
+            const int used = std::min(N, levelEnd - first);
+            for (int lane = 0; lane < used; ++lane) {
+                const int slot = first + lane;
                 prefetchContact(slot);
                 const auto at = static_cast<std::size_t>(slot);
                 const detail::Contact& c = s.contacts[static_cast<std::size_t>(s.slotContact[at])];
-                const detail::ContactBodyView a = viewOf(c.bodyA, s.slotBodies[at].indexA);
-                const detail::ContactBodyView b = viewOf(c.bodyB, s.slotBodies[at].indexB);
-                const detail::Softness laneSoftness = softnessOf(a, b);
-                in.setLane(lane, c.manifold, a, b, c.friction, laneSoftness);
-                // pushedApart() on the softness just picked (the wide path is soft-step).
-                groupPushOut =
-                    groupPushOut || detail::isPushedApart(c.manifold, a, b, laneSoftness);
+                const detail::Simulation::ConstraintBodies sides = s.slotBodies[at];
+                in.manifold[lane] = &c.manifold;
+                in.indexA[lane] = sides.indexA;
+                in.indexB[lane] = sides.indexB;
+                in.friction[lane] = c.friction;
+                sideRows(lane, 0, c.bodyA, sides.indexA, in.offsetA[lane], in.massA[lane]);
+                sideRows(lane, 1, c.bodyB, sides.indexB, in.offsetB[lane], in.massB[lane]);
                 if (c.restitution != 0.0f) {
-                    restitution.push_back({level, slot - levelFirst, c.manifold.pointCount,
-                                           c.restitution, pressOf(c, a, b), s.slotConstraint[at]});
+                    restitution.push_back(
+                        {level, slot - levelFirst, c.manifold.pointCount, c.restitution,
+                         pressOf(c, viewOf(c.bodyA, sides.indexA), viewOf(c.bodyB, sides.indexB)),
+                         s.slotConstraint[at]});
                 }
             }
-            detail::prepareWideGroup(s.wideContacts, group, in, s.states);
-            return groupPushOut;
+            for (int lane = used; lane < N; ++lane) {
+                in.clearLane(lane);
+            }
+            int deep = detail::prepareWideGroup(s.wideContacts, group, in, s.states);
+            // pushedApart() on the lanes with a deep point (the wide path is soft-step).
+            for (; deep != 0; deep &= deep - 1) {
+                const auto at =
+                    static_cast<std::size_t>(first + std::countr_zero(static_cast<unsigned>(deep)));
+                const detail::Contact& c = s.contacts[static_cast<std::size_t>(s.slotContact[at])];
+                const detail::ContactBodyView a = viewOf(c.bodyA, s.slotBodies[at].indexA);
+                const detail::ContactBodyView b = viewOf(c.bodyB, s.slotBodies[at].indexB);
+                if (detail::isDeepPushedApart(c.manifold, a, b, softnessOf(a, b))) {
+                    return true;
+                }
+            }
+            return false;
         };
         // The level holding group `group` among levels [firstLevel, endLevel) (a group past
         // the last of a level is in the next non-empty one).
@@ -521,10 +553,14 @@ void World::Impl::solve(float dt) {
                 return pushOutHere;
             };
             if (s.wideContacts.lanes == 8) {
-                detail::WideManifoldT<8> lanes8;
+                detail::WideGatherT<8> lanes8;
+                lanes8.dynamic = softness.dynamic;
+                lanes8.vsStatic = softness.vsStatic;
                 return build(lanes8);
             }
-            detail::WideManifoldT<4> lanes4;
+            detail::WideGatherT<4> lanes4;
+            lanes4.dynamic = softness.dynamic;
+            lanes4.vsStatic = softness.vsStatic;
             return build(lanes4);
         };
         // applyRestitution() goes in constraint order.
