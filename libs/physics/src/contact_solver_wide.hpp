@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 // The soft-step contact passes several constraints at a time. Mirrors warmStartContacts() and
@@ -168,28 +169,23 @@ struct WideRestitution {
 void applyRestitutionWide(WideContacts& wide, std::span<const WideRestitution> list,
                           std::span<BodyState> states, float threshold, float h);
 
-// What the step leaves in one lane for the world: per point, impulses (for next step's warm
-// start) and the impact bookkeeping (hit events). mayHit: whether a point was pushed on
-// (maxNormalImpulse > 0) while approaching faster than the visit's hit threshold; where it is
-// false, relativeVelocity and maxNormalImpulse are not filled in (a resting pile: every lane).
-struct WideLaneResult {
-    float normalImpulse[2];
-    float tangentImpulse[2];
-    bool mayHit;
+// What a lane that may hit leaves for the world's hit events, per point: whether a point was
+// pushed on (maxNormalImpulse > 0) while approaching faster than the store's hit threshold
+// (-relativeVelocity). The other lanes (a resting pile: every lane) skip it.
+struct WideLaneHit {
     float relativeVelocity[2];
     float maxNormalImpulse[2];
 };
 
-// Calls visit(slot, result) for every packed constraint, slot being its place in level order
-// (level k holds slots [levelStart[k], levelStart[k + 1])), in slot order; hitThreshold: the
-// approach speed above which a lane may hit (WideLaneResult::mayHit).
-template <class Visit>
-void visitWide(const WideContacts& wide, std::span<const int> levelStart, float hitThreshold,
-               Visit&& visit);
-// The same over levels [firstLevel, endLevel) only.
-template <class Visit>
-void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
-               int endLevel, float hitThreshold, Visit&& visit);
+// Stores what the step leaves in each packed constraint of levels [firstLevel, endLevel): its
+// impulses go to its manifold, manifoldOf(slot) (a Manifold&, the one it was prepared from,
+// for next step's warm start; its points only), and hit(slot, manifold, WideLaneHit) is
+// called for the lanes that may hit, slot being the constraint's place in level order (level
+// k holds slots [levelStart[k], levelStart[k + 1])), in slot order. hitThreshold: the
+// approach speed above which a lane may hit.
+template <class ManifoldOf, class Hit>
+void storeWideImpulses(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
+                       int endLevel, float hitThreshold, ManifoldOf&& manifoldOf, Hit&& hit);
 
 // warmStartContacts() and solveContacts() over every packed constraint, level after level
 // (backward: last level first; reversePoints: each constraint's points last to first).
@@ -203,9 +199,10 @@ void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyS
                float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints);
 
 // The same over the groups [groupBegin, groupEnd) of level `level` only.
-template <class Visit>
-void visitWideGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
-                     int groupBegin, int groupEnd, float hitThreshold, Visit&& visit);
+template <class ManifoldOf, class Hit>
+void storeWideImpulsesOfGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
+                               int groupBegin, int groupEnd, float hitThreshold,
+                               ManifoldOf&& manifoldOf, Hit&& hit);
 
 // warmStartWide() and solveWide() over the packed groups [groupBegin, groupEnd) of one level
 // (its constraints share no moving body: any part of a level may run while another worker
@@ -222,88 +219,62 @@ int hitLanes(const WideConstraintT<8>& group, float threshold);
 
 namespace wide_detail {
 
-// Visits group g's lanes, the first holding slot `first`, up to slot `end`.
-template <int N, class Visit>
-[[gnu::always_inline]] inline void visitGroup(const std::vector<WideConstraintT<N>>& groups, int g,
+// Stores group g's lanes, the first holding slot `first`, up to slot `end`.
+template <int N, class ManifoldOf, class Hit>
+[[gnu::always_inline]] inline void storeGroup(const std::vector<WideConstraintT<N>>& groups, int g,
                                               int first, int end, float hitThreshold,
-                                              Visit& visit) {
-    WideLaneResult r;
+                                              ManifoldOf& manifoldOf, Hit& hit) {
     const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
     // The world's test for a hit, on all lanes at once (missing points have no impulse).
     const int mayHit = hitLanes(w, hitThreshold);
-    for (int lane = 0; lane < N && first + lane < end; ++lane) {
-        r.mayHit = ((mayHit >> lane) & 1) != 0;
-        for (int i = 0; i < 2; ++i) {
-            const WidePointT<N>& wp = w.points[i];
-            r.normalImpulse[i] = wp.normalImpulse[lane];
-            r.tangentImpulse[i] = wp.tangentImpulse[lane];
-            if (r.mayHit) {
-                r.relativeVelocity[i] = wp.relativeVelocity[lane];
-                r.maxNormalImpulse[i] = wp.maxNormalImpulse[lane];
+    const int used = std::min(N, end - first);
+    for (int lane = 0; lane < used; ++lane) {
+        Manifold& m = manifoldOf(first + lane);
+        for (int i = 0; i < m.pointCount; ++i) {
+            m.points[i].normalImpulse = w.points[i].normalImpulse[lane];
+            m.points[i].tangentImpulse = w.points[i].tangentImpulse[lane];
+        }
+        if (((mayHit >> lane) & 1) != 0) {
+            WideLaneHit h;
+            for (int i = 0; i < 2; ++i) {
+                h.relativeVelocity[i] = w.points[i].relativeVelocity[lane];
+                h.maxNormalImpulse[i] = w.points[i].maxNormalImpulse[lane];
             }
+            hit(first + lane, static_cast<const Manifold&>(m), h);
         }
-        visit(first + lane, r);
-    }
-}
-
-template <int N, class Visit>
-void visitLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
-                std::span<const int> levelStart, std::size_t firstLevel, std::size_t endLevel,
-                float hitThreshold, Visit& visit) {
-    for (std::size_t k = firstLevel; k < endLevel; ++k) {
-        const int end = levelStart[k + 1];
-        int g = wideStart[k];
-        for (int first = levelStart[k]; first < end; first += N, ++g) {
-            visitGroup(groups, g, first, end, hitThreshold, visit);
-        }
-    }
-}
-
-template <int N, class Visit>
-void visitGroups(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
-                 std::span<const int> levelStart, std::size_t level, int groupBegin, int groupEnd,
-                 float hitThreshold, Visit& visit) {
-    const int end = levelStart[level + 1];
-    for (int g = groupBegin; g < groupEnd; ++g) {
-        visitGroup(groups, g, levelStart[level] + (g - wideStart[level]) * N, end, hitThreshold,
-                   visit);
     }
 }
 
 } // namespace wide_detail
 
-template <class Visit>
-void visitWideGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
-                     int groupBegin, int groupEnd, float hitThreshold, Visit&& visit) {
+template <class ManifoldOf, class Hit>
+void storeWideImpulsesOfGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
+                               int groupBegin, int groupEnd, float hitThreshold,
+                               ManifoldOf&& manifoldOf, Hit&& hit) {
     const auto at = static_cast<std::size_t>(level);
+    const int end = levelStart[at + 1];
+    auto run = [&](const auto& groups, auto lanes) {
+        constexpr int N = decltype(lanes)::value;
+        for (int g = groupBegin; g < groupEnd; ++g) {
+            wide_detail::storeGroup<N>(groups, g, levelStart[at] + (g - wide.levelStart[at]) * N,
+                                       end, hitThreshold, manifoldOf, hit);
+        }
+    };
     if (wide.lanes == 8) {
-        wide_detail::visitGroups(wide.constraints8, wide.levelStart, levelStart, at, groupBegin,
-                                 groupEnd, hitThreshold, visit);
+        run(wide.constraints8, std::integral_constant<int, 8>{});
     } else {
-        wide_detail::visitGroups(wide.constraints4, wide.levelStart, levelStart, at, groupBegin,
-                                 groupEnd, hitThreshold, visit);
+        run(wide.constraints4, std::integral_constant<int, 4>{});
     }
 }
 
-template <class Visit>
-void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
-               int endLevel, float hitThreshold, Visit&& visit) {
-    const auto first = static_cast<std::size_t>(firstLevel);
-    const auto end = static_cast<std::size_t>(std::max(endLevel, firstLevel));
-    if (wide.lanes == 8) {
-        wide_detail::visitLanes(wide.constraints8, wide.levelStart, levelStart, first, end,
-                                hitThreshold, visit);
-    } else {
-        wide_detail::visitLanes(wide.constraints4, wide.levelStart, levelStart, first, end,
-                                hitThreshold, visit);
+template <class ManifoldOf, class Hit>
+void storeWideImpulses(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
+                       int endLevel, float hitThreshold, ManifoldOf&& manifoldOf, Hit&& hit) {
+    for (int level = firstLevel; level < endLevel; ++level) {
+        const auto at = static_cast<std::size_t>(level);
+        storeWideImpulsesOfGroups(wide, levelStart, level, wide.levelStart[at],
+                                  wide.levelStart[at + 1], hitThreshold, manifoldOf, hit);
     }
-}
-
-template <class Visit>
-void visitWide(const WideContacts& wide, std::span<const int> levelStart, float hitThreshold,
-               Visit&& visit) {
-    visitWide(wide, levelStart, 0, levelStart.empty() ? 0 : static_cast<int>(levelStart.size()) - 1,
-              hitThreshold, visit);
 }
 
 } // namespace e2d::physics::detail

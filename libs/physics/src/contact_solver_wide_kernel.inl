@@ -329,7 +329,7 @@ E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<const int
     }
 }
 
-// The lanes of `c` that may hit (WideLaneResult::mayHit), lane k in bit k.
+// The lanes of `c` that may hit (WideLaneHit), lane k in bit k.
 E2D_WIDE_FN int hitLanes(const Constraint& c, float threshold) {
     I mayHit = I{};
     for (const Point& cp : c.points) {

@@ -412,19 +412,11 @@ void World::Impl::solve(float dt) {
     // Impulses go back to the manifolds for next step's warm start; a hit event for the
     // fastest approaching point of each, emitted in contact order at the end.
     s.hitCandidates.clear();
-    // mayHit false: no point can hit (the wide visit's test, WideLaneResult::mayHit), and
-    // relativeVelocity and maxNormalImpulse are not read.
-    auto store = [&](std::vector<detail::Simulation::HitCandidate>& hits, int contactIndex,
-                     int pointCount, const float* normalImpulse, const float* tangentImpulse,
-                     bool mayHit, const float* relativeVelocity, const float* maxNormalImpulse) {
-        detail::Contact& c = s.contacts[static_cast<std::size_t>(contactIndex)];
-        for (int j = 0; j < pointCount; ++j) {
-            c.manifold.points[j].normalImpulse = normalImpulse[j];
-            c.manifold.points[j].tangentImpulse = tangentImpulse[j];
-        }
-        if (!mayHit) {
-            return;
-        }
+    // A hit candidate for the fastest approaching point of contact `contactIndex` that was
+    // pushed on, if one approached faster than the threshold.
+    auto noteHit = [&](std::vector<detail::Simulation::HitCandidate>& hits, int contactIndex,
+                       int pointCount, const float* relativeVelocity,
+                       const float* maxNormalImpulse) {
         float fastest = def.hitEventThreshold;
         int fastestPoint = -1;
         for (int j = 0; j < pointCount; ++j) {
@@ -570,14 +562,18 @@ void World::Impl::solve(float dt) {
                           return x.constraint < y.constraint;
                       });
         };
-        // Stores a lane's impulses in its contact's manifold, and its hit in `hits`.
-        auto storeLane = [&](std::vector<detail::Simulation::HitCandidate>& hits) {
-            return [&, out = &hits](int slot, const detail::WideLaneResult& r) {
-                prefetchContact(slot);
-                const int ci = s.slotContact[static_cast<std::size_t>(slot)];
-                store(*out, ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount,
-                      r.normalImpulse, r.tangentImpulse, r.mayHit, r.relativeVelocity,
-                      r.maxNormalImpulse);
+        // Where a slot's impulses go (detail::storeWideImpulses()): its contact's manifold.
+        auto manifoldOfSlot = [&](int slot) -> Manifold& {
+            prefetchContact(slot);
+            return s
+                .contacts[static_cast<std::size_t>(s.slotContact[static_cast<std::size_t>(slot)])]
+                .manifold;
+        };
+        // A slot's hit, noted in `hits`.
+        auto hitOfSlot = [&](std::vector<detail::Simulation::HitCandidate>& hits) {
+            return [&, out = &hits](int slot, const Manifold& m, const detail::WideLaneHit& h) {
+                noteHit(*out, s.slotContact[static_cast<std::size_t>(slot)], m.pointCount,
+                        h.relativeVelocity, h.maxNormalImpulse);
             };
         };
         const std::span<const int> blockBodies = s.blockBodies;
@@ -646,13 +642,14 @@ void World::Impl::solve(float dt) {
                                         bodiesOf(b), restitution, tasks, s.softStepStages);
             tasks.parallelFor(
                 groupEnd - groupBegin, kGroupsPerPiece, [&](int begin, int end, int worker) {
-                    auto visit = storeLane(s.blockWorkers[static_cast<std::size_t>(worker)].hits);
+                    auto hit = hitOfSlot(s.blockWorkers[static_cast<std::size_t>(worker)].hits);
                     int level = levelOfGroup(firstLevel, endLevel, groupBegin + begin);
                     for (int g = groupBegin + begin; g < groupBegin + end;) {
                         const int levelEnd = std::min(
                             groupStart[static_cast<std::size_t>(level) + 1], groupBegin + end);
-                        detail::visitWideGroups(s.wideContacts, s.levelStart, level, g, levelEnd,
-                                                def.hitEventThreshold, visit);
+                        detail::storeWideImpulsesOfGroups(s.wideContacts, s.levelStart, level, g,
+                                                          levelEnd, def.hitEventThreshold,
+                                                          manifoldOfSlot, hit);
                         g = levelEnd;
                         ++level;
                     }
@@ -695,8 +692,9 @@ void World::Impl::solve(float dt) {
                           .subspan(static_cast<std::size_t>(s.blockJointStart[b]),
                                    static_cast<std::size_t>(s.blockJointStart[b + 1] -
                                                             s.blockJointStart[b])));
-            detail::visitWide(s.wideContacts, s.levelStart, firstLevel, endLevel,
-                              def.hitEventThreshold, storeLane(worker.hits));
+            detail::storeWideImpulses(s.wideContacts, s.levelStart, firstLevel, endLevel,
+                                      def.hitEventThreshold, manifoldOfSlot,
+                                      hitOfSlot(worker.hits));
             if (impacts) {
                 worker.impacts.apply(s);
             }
@@ -769,18 +767,18 @@ void World::Impl::solve(float dt) {
             if (!s.contacts[static_cast<std::size_t>(cc.contactIndex)].alive) {
                 continue; // ended with a non-finite body
             }
-            float normalImpulse[2];
-            float tangentImpulse[2];
+            // Impulses back to the manifold for next step's warm start.
+            Manifold& m = s.contacts[static_cast<std::size_t>(cc.contactIndex)].manifold;
             float relativeVelocity[2];
             float maxNormalImpulse[2];
             for (int j = 0; j < cc.pointCount; ++j) {
-                normalImpulse[j] = cc.points[j].normalImpulse;
-                tangentImpulse[j] = cc.points[j].tangentImpulse;
+                m.points[j].normalImpulse = cc.points[j].normalImpulse;
+                m.points[j].tangentImpulse = cc.points[j].tangentImpulse;
                 relativeVelocity[j] = cc.points[j].relativeVelocity;
                 maxNormalImpulse[j] = cc.points[j].maxNormalImpulse;
             }
-            store(s.hitCandidates, cc.contactIndex, cc.pointCount, normalImpulse, tangentImpulse,
-                  true, relativeVelocity, maxNormalImpulse);
+            noteHit(s.hitCandidates, cc.contactIndex, cc.pointCount, relativeVelocity,
+                    maxNormalImpulse);
         }
     } else {
         std::sort(s.hitCandidates.begin(), s.hitCandidates.end(),
