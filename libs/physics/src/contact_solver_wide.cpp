@@ -285,14 +285,14 @@ void storeWide(const WideContacts& wide, std::span<ContactConstraint> constraint
     }
 }
 
-void warmStartWide(const WideContacts& wide, std::span<BodyState> states) {
-    warmStartWide(wide, 0, static_cast<int>(wide.levelStart.size()) - 1, states);
+void warmStartWide(const WideContacts& wide) {
+    warmStartWide(wide, 0, static_cast<int>(wide.levelStart.size()) - 1);
 }
 
-void solveWide(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
-               float pushMaxSpeed, bool backward, bool reversePoints) {
-    solveWide(wide, 0, static_cast<int>(wide.levelStart.size()) - 1, states, invH, useBias,
-              pushMaxSpeed, backward, reversePoints);
+void solveWide(WideContacts& wide, float invH, bool useBias, float pushMaxSpeed, bool backward,
+               bool reversePoints) {
+    solveWide(wide, 0, static_cast<int>(wide.levelStart.size()) - 1, invH, useBias, pushMaxSpeed,
+              backward, reversePoints);
 }
 
 namespace {
@@ -346,29 +346,23 @@ void solveLevels(WideContacts& wide, std::span<const int> levels, float invH, bo
 
 } // namespace
 
-void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
-                   std::span<BodyState> states) {
-    (void)states; // the groups' own addresses into them (see warmStartLevels())
+void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel) {
     warmStartLevels(wide, levelRange(wide, firstLevel, endLevel));
 }
 
-void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyState> states,
-               float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints) {
-    (void)states;
+void solveWide(WideContacts& wide, int firstLevel, int endLevel, float invH, bool useBias,
+               float pushMaxSpeed, bool backward, bool reversePoints) {
     solveLevels(wide, levelRange(wide, firstLevel, endLevel), invH, useBias, pushMaxSpeed, backward,
                 reversePoints);
 }
 
-void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd,
-                         std::span<BodyState> states) {
-    (void)states;
+void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd) {
     const int groups[2] = {groupBegin, groupEnd};
     warmStartLevels(wide, groups);
 }
 
-void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, std::span<BodyState> states,
-                     float invH, bool useBias, float pushMaxSpeed, bool reversePoints) {
-    (void)states;
+void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, float invH, bool useBias,
+                     float pushMaxSpeed, bool reversePoints) {
     const int groups[2] = {groupBegin, groupEnd};
     solveLevels(wide, groups, invH, useBias, pushMaxSpeed, false, reversePoints);
 }

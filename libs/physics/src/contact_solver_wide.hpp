@@ -188,15 +188,15 @@ void storeWideImpulses(const WideContacts& wide, std::span<const int> levelStart
                        int endLevel, float hitThreshold, ManifoldOf&& manifoldOf, Hit&& hit);
 
 // warmStartContacts() and solveContacts() over every packed constraint, level after level
-// (backward: last level first; reversePoints: each constraint's points last to first).
-void warmStartWide(const WideContacts& wide, std::span<BodyState> states);
-void solveWide(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
-               float pushMaxSpeed, bool backward, bool reversePoints);
+// (backward: last level first; reversePoints: each constraint's points last to first), on the
+// states the groups were prepared with (their bodies' addresses are in the groups).
+void warmStartWide(const WideContacts& wide);
+void solveWide(WideContacts& wide, float invH, bool useBias, float pushMaxSpeed, bool backward,
+               bool reversePoints);
 // The same over levels [firstLevel, endLevel) only.
-void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
-                   std::span<BodyState> states);
-void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyState> states,
-               float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints);
+void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel);
+void solveWide(WideContacts& wide, int firstLevel, int endLevel, float invH, bool useBias,
+               float pushMaxSpeed, bool backward, bool reversePoints);
 
 // The same over the groups [groupBegin, groupEnd) of level `level` only.
 template <class ManifoldOf, class Hit>
@@ -207,10 +207,9 @@ void storeWideImpulsesOfGroups(const WideContacts& wide, std::span<const int> le
 // warmStartWide() and solveWide() over the packed groups [groupBegin, groupEnd) of one level
 // (its constraints share no moving body: any part of a level may run while another worker
 // runs another part).
-void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd,
-                         std::span<BodyState> states);
-void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, std::span<BodyState> states,
-                     float invH, bool useBias, float pushMaxSpeed, bool reversePoints);
+void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd);
+void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, float invH, bool useBias,
+                     float pushMaxSpeed, bool reversePoints);
 
 // The lanes of `group` whose points may hit: pushed on (maxNormalImpulse > 0) while
 // approaching faster than `threshold` (-relativeVelocity > threshold); lane k in bit k.

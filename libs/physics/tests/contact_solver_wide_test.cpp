@@ -299,11 +299,9 @@ void expectWideMatchesScalar(std::uint32_t seed, int maxPoints) {
             }
             for (int round = 0; round < 4; ++round) {
                 bool reversePoints = round >= 2;
-                warmStartWide(packed, wide.states);
-                solveWide(packed, wide.states, 1.0f / kH, true, kPushMaxSpeed, false,
-                          reversePoints);
-                solveWide(packed, wide.states, 1.0f / kH, false, kPushMaxSpeed, true,
-                          reversePoints);
+                warmStartWide(packed);
+                solveWide(packed, 1.0f / kH, true, kPushMaxSpeed, false, reversePoints);
+                solveWide(packed, 1.0f / kH, false, kPushMaxSpeed, true, reversePoints);
             }
             storeWide(packed, wide.constraints, order, levelStart);
 
