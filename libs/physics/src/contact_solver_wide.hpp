@@ -137,8 +137,8 @@ struct WideGatherT {
 // Prepares and packs the group of constraints `group` from the lanes of `in` (see
 // WideGatherT), bit for bit what prepareContact() and packWideLane() give one at a time, all
 // lanes at once. Their bodies are in `states` (the array the passes then run on). The lane
-// count must be wide.lanes. Returns the lanes whose manifold has a point deeper than
-// kLinearSlop, lane k in bit k: where isPushedApart() must ask isDeepPushedApart().
+// count must be wide.lanes. Returns the lanes isPushedApart() holds pushed apart (on the
+// lane's softness), lane k in bit k.
 int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<4>& in,
                      std::span<BodyState> states);
 int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<8>& in,

@@ -387,8 +387,8 @@ E2D_WIDE_FN F softnessOf(I empty, I rigid, const Gather& in, float Softness::*fi
                   select(rigid, splat(in.vsStatic.*field), splat(in.dynamic.*field)));
 }
 
-// `states`: the array the group's bodies are in. Returns the lanes with a point deeper than
-// kLinearSlop (prepareWideGroup()).
+// `states`: the array the group's bodies are in. Returns the lanes isPushedApart() holds pushed
+// apart (prepareWideGroup()).
 E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states) {
     const F zero = splat(0.0f);
     const F one = splat(1.0f);
@@ -424,7 +424,9 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
     c.biasRate = softnessOf(empty, rigid, in, &Softness::biasRate);
     c.massScale = softnessOf(empty, rigid, in, &Softness::massScale);
     c.impulseScale = softnessOf(empty, rigid, in, &Softness::impulseScale);
+    // Per point, isPushedApart()'s first test and what its second reads.
     I deep = I{};
+    F depth[2];
     const F tx = ny;
     const F ty = -nx;
     for (int i = 0; i < 2; ++i) {
@@ -440,6 +442,7 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
                  tangentImpulse, unused0);
         // isPushedApart()'s first test.
         deep |= present & (separation < splat(-kLinearSlop));
+        depth[i] = select(present, -separation, zero);
         F rAx = anchorAx - oAx;
         F rAy = anchorAy - oAy;
         F rBx = anchorBx - oBx;
@@ -475,9 +478,29 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
     F rn2B = p2.anchorBx * ny - p2.anchorBy * nx;
     F k11 = linear + c.invInertiaA * rn1A * rn1A + c.invInertiaB * rn1B * rn1B;
     F k22 = linear + c.invInertiaA * rn2A * rn2A + c.invInertiaB * rn2B * rn2B;
+    F k12 = linear + c.invInertiaA * rn1A * rn2A + c.invInertiaB * rn1B * rn2B;
+    // isDeepPushedApart(): K's rows (before the rounding term; K21 rounds apart from K12) times
+    // the stored impulses, against the overlaps.
+    {
+        const I two = count == 2;
+        const F k21 = linear + c.invInertiaA * rn2A * rn1A + c.invInertiaB * rn2B * rn1B;
+        const F stiffness = c.massScale * c.biasRate;
+        const I soft = stiffness > zero;
+        const F restPerImpulse =
+            splat(kPushOutRestMargin) * c.impulseScale / select(soft, stiffness, one);
+        const F lambda1 = p1.normalImpulse;
+        const F lambda2 = p2.normalImpulse;
+        F load1 = zero + k11 * lambda1;
+        F load2 = zero + k21 * lambda1;
+        load1 = select(two, load1 + k12 * lambda2, load1);
+        load2 = select(two, load2 + k22 * lambda2, load2);
+        const I beyond1 = depth[0] > splat(kLinearSlop) + restPerImpulse * maxOf(load1, zero);
+        const I beyond2 =
+            two & (depth[1] > splat(kLinearSlop) + restPerImpulse * maxOf(load2, zero));
+        deep &= soft & (beyond1 | beyond2);
+    }
     k11 = k11 + leverRoundingOf(c, p1.anchorAx, p1.anchorAy, p1.anchorBx, p1.anchorBy);
     k22 = k22 + leverRoundingOf(c, p2.anchorAx, p2.anchorAy, p2.anchorBx, p2.anchorBy);
-    F k12 = linear + c.invInertiaA * rn1A * rn2A + c.invInertiaB * rn1B * rn2B;
     F det = k11 * k22 - k12 * k12;
     const I block = (count == 2) & (k11 * k11 < splat(kMaxBlockConditionNumber) * det) &
                     (det >= splat(kMinBlockDeterminant));

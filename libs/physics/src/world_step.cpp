@@ -507,19 +507,8 @@ void World::Impl::solve(float dt) {
             for (int lane = used; lane < N; ++lane) {
                 in.clearLane(lane);
             }
-            int deep = detail::prepareWideGroup(s.wideContacts, group, in, s.states);
-            // pushedApart() on the lanes with a deep point (the wide path is soft-step).
-            for (; deep != 0; deep &= deep - 1) {
-                const auto at =
-                    static_cast<std::size_t>(first + std::countr_zero(static_cast<unsigned>(deep)));
-                const detail::Contact& c = s.contacts[static_cast<std::size_t>(s.slotContact[at])];
-                const detail::ContactBodyView a = viewOf(c.bodyA, s.slotBodies[at].indexA);
-                const detail::ContactBodyView b = viewOf(c.bodyB, s.slotBodies[at].indexB);
-                if (detail::isDeepPushedApart(c.manifold, a, b, softnessOf(a, b))) {
-                    return true;
-                }
-            }
-            return false;
+            // pushedApart() on every lane (the wide path is soft-step).
+            return detail::prepareWideGroup(s.wideContacts, group, in, s.states) != 0;
         };
         // The level holding group `group` among levels [firstLevel, endLevel) (a group past
         // the last of a level is in the next non-empty one).

@@ -354,9 +354,10 @@ Softness softnessFor(const Problem& p, const ContactBodyView& a, const ContactBo
 
 // The groups prepareWideGroup() makes from gathered lanes, byte for byte the ones
 // prepareContact() and packWideLane() make one constraint at a time, and the lanes it finds
-// deep, those where isPushedApart() asks isDeepPushedApart().
+// pushed apart, isPushedApart()'s; counts those (pushed) and the others with a point deeper
+// than the slop (held: their load explains it).
 template <int N>
-void expectSameGroups(const Problem& p, const Schedule& schedule) {
+void expectSameGroups(const Problem& p, const Schedule& schedule, int& pushed, int& held) {
     std::vector<BodyState> states = p.states;
     WideContacts reference;
     prepareWide(reference, p.constraints, schedule.order, schedule.levelStart, N, states);
@@ -373,7 +374,7 @@ void expectSameGroups(const Problem& p, const Schedule& schedule) {
             WideGatherT<N> in;
             in.dynamic = p.dynamic;
             in.vsStatic = p.vsStatic;
-            int deepLanes = 0;
+            int pushedLanes = 0;
             for (int lane = 0; lane < N; ++lane) {
                 if (slot + lane < end) {
                     const PrepareInput& pi = p.inputs[static_cast<std::size_t>(
@@ -390,14 +391,18 @@ void expectSameGroups(const Problem& p, const Schedule& schedule) {
                     in.indexB[lane] = pi.b.stateIndex;
                     in.friction[lane] = pi.friction;
                     const Manifold& m = pi.manifold;
-                    const bool deep = (m.pointCount > 0 && m.points[0].separation < -kLinearSlop) ||
-                                      (m.pointCount > 1 && m.points[1].separation < -kLinearSlop);
-                    deepLanes |= deep ? 1 << lane : 0;
+                    if (isPushedApart(m, pi.a, pi.b, pi.softness)) {
+                        pushedLanes |= 1 << lane;
+                        ++pushed;
+                    } else if (m.points[0].separation < -kLinearSlop ||
+                               (m.pointCount > 1 && m.points[1].separation < -kLinearSlop)) {
+                        ++held;
+                    }
                 } else {
                     in.clearLane(lane);
                 }
             }
-            EXPECT_EQ(prepareWideGroup(gathered, g, in, states), deepLanes) << "group " << g;
+            EXPECT_EQ(prepareWideGroup(gathered, g, in, states), pushedLanes) << "group " << g;
             ++groups;
         }
     }
@@ -483,10 +488,15 @@ TEST(WideContactSolver, PreparesGroupsAsPrepareContactDoes) {
         ASSERT_FALSE(p.constraints[6].blockSolve);
         const Schedule schedule = scheduleOf(p);
         SCOPED_TRACE(seed);
-        expectSameGroups<4>(p, schedule);
+        int pushed = 0;
+        int held = 0;
+        expectSameGroups<4>(p, schedule, pushed, held);
         if (bestWideLanes() >= 8) {
-            expectSameGroups<8>(p, schedule);
+            expectSameGroups<8>(p, schedule, pushed, held);
         }
+        // Both answers of isPushedApart()'s second test come up.
+        EXPECT_GT(pushed, 0);
+        EXPECT_GT(held, 0);
     }
 }
 
