@@ -407,14 +407,14 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
         }
         void warmStart() {
             warmStartJointsOf(step, joints);
-            warmStartWide(wide, firstLevel, endLevel, step.states);
+            warmStartWide(wide, firstLevel, endLevel);
         }
         void solve(bool useBias, bool backward, bool reversePoints, bool withJoints) {
             if (withJoints) {
                 solveJointsOf(step, joints, useBias);
             }
-            solveWide(wide, firstLevel, endLevel, step.states, 1.0f / h, useBias,
-                      step.def->contactPushMaxSpeed, backward, reversePoints);
+            solveWide(wide, firstLevel, endLevel, 1.0f / h, useBias, step.def->contactPushMaxSpeed,
+                      backward, reversePoints);
         }
         void integratePositions() {
             detail::integratePositions(step.states, bodies, h, step.def->maxLinearSpeed);
