@@ -2,6 +2,7 @@
 // Contacts: created from new broad-phase pairs, destroyed when the fat boxes part or a shape
 // goes, updated by the narrow phase (carrying impulses by feature id) with begin/end and
 // sensor events.
+#include "manifold_circles.hpp"
 #include "prefetch.hpp"
 #include "world_impl.hpp"
 
@@ -251,8 +252,13 @@ enum Collided : unsigned char { kNoPoints = 0, kPoints = 1, kRecycled = 2 };
             ? collidePolygons(*std::get_if<Polygon>(&sa.geometry), ba.transform,
                               *std::get_if<Polygon>(&sb.geometry), bb.transform, margin)
         : sameType && type == kCircleIndex
+#if defined(__SSE2__)
+            ? detail::collideCirclesSse2(*std::get_if<Circle>(&sa.geometry), ba.transform,
+                                         *std::get_if<Circle>(&sb.geometry), bb.transform, margin)
+#else
             ? collideCircles(*std::get_if<Circle>(&sa.geometry), ba.transform,
                              *std::get_if<Circle>(&sb.geometry), bb.transform, margin)
+#endif
             : collide(sa.geometry, ba.transform, sb.geometry, bb.transform, collisionAlgorithm,
                       margin));
     // Impulses carry over from the first old point with the same id.
