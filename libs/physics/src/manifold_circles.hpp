@@ -97,7 +97,7 @@ static_assert(offsetof(Manifold, pointCount) == 88 && sizeof(Manifold) == 92);
     const __m128 separation = _mm_sub_ss(dist, radius);
     const __m128 anchorA =
         _mm_add_ps(cA, _mm_mul_ps(sse::splat<0>(_mm_add_ss(_mm_mul_ss(_mm_set_ss(0.5f), separation),
-                                                      _mm_load_ss(&a.radius))),
+                                                           _mm_load_ss(&a.radius))),
                                   normal));
     // Lanes 0-1 the world point (anchorA + pA), lanes 2-3 anchorB (anchorA + (pA - pB)).
     const __m128 pointAnchorB =
