@@ -660,23 +660,99 @@ void solveClassic(const SolverStep& step) {
     }
 }
 
+namespace {
+
+inline void finalizePosition(BodySim& sim, const BodyState& state) {
+    sim.center = sim.center0 + state.deltaPosition;
+    Rot q = mulRot(state.deltaRotation, sim.rotation0);
+    float mag = std::sqrt(q.c * q.c + q.s * q.s);
+    if (mag > 0.0f) {
+        q = {q.c / mag, q.s / mag};
+    }
+    sim.transform.q = q;
+    sim.transform.p = sim.center - rotate(q, sim.localCenter);
+    // The next step starts from the centre the float transform gives; what it misses of
+    // center0 + deltaPosition is kept. Near each other (the usual case far away, where it
+    // matters) the two centres subtract exactly.
+    const Vec2 next = transformPoint(sim.transform, sim.localCenter);
+    sim.positionResidual = state.deltaPosition - (next - sim.center0);
+}
+
+#if defined(__SSE2__)
+
+static_assert(offsetof(BodySim, transform) == 0 && offsetof(BodySim, center) == 16 &&
+                  offsetof(BodySim, rotation0) == offsetof(BodySim, center0) + 8 &&
+                  offsetof(BodySim, positionResidual) % 4 == 0,
+              "finalizePositions4() loads center0 and rotation0 as one row and stores the "
+              "transform as one");
+
+// finalizePosition() on sims[i..i+3] and states[i..i+3], each lane doing its operations in its
+// order (no FMA on the SSE2 baseline; the normalisation divides every lane and keeps the
+// quotient where mag > 0), so the results are bit for bit its own. About a third of its
+// instructions a body.
+inline void finalizePositions4(BodySim* sims, const BodyState* states) {
+    __m128 c0x = _mm_loadu_ps(&sims[0].center0.x);
+    __m128 c0y = _mm_loadu_ps(&sims[1].center0.x);
+    __m128 r0c = _mm_loadu_ps(&sims[2].center0.x);
+    __m128 r0s = _mm_loadu_ps(&sims[3].center0.x);
+    _MM_TRANSPOSE4_PS(c0x, c0y, r0c, r0s);
+    __m128 dpx = _mm_loadu_ps(&states[0].deltaPosition.x);
+    __m128 dpy = _mm_loadu_ps(&states[1].deltaPosition.x);
+    __m128 drc = _mm_loadu_ps(&states[2].deltaPosition.x);
+    __m128 drs = _mm_loadu_ps(&states[3].deltaPosition.x);
+    _MM_TRANSPOSE4_PS(dpx, dpy, drc, drs);
+    // localCenter (x, y) of bodies 0 1 2 3, as two rows.
+    const __m128 lc01 = _mm_loadh_pi(
+        _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&sims[0].localCenter))),
+        reinterpret_cast<const __m64*>(&sims[1].localCenter));
+    const __m128 lc23 = _mm_loadh_pi(
+        _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&sims[2].localCenter))),
+        reinterpret_cast<const __m64*>(&sims[3].localCenter));
+    const __m128 lcx = _mm_shuffle_ps(lc01, lc23, _MM_SHUFFLE(2, 0, 2, 0));
+    const __m128 lcy = _mm_shuffle_ps(lc01, lc23, _MM_SHUFFLE(3, 1, 3, 1));
+
+    __m128 cx = _mm_add_ps(c0x, dpx);
+    __m128 cy = _mm_add_ps(c0y, dpy);
+    __m128 qc = _mm_sub_ps(_mm_mul_ps(drc, r0c), _mm_mul_ps(drs, r0s));
+    __m128 qs = _mm_add_ps(_mm_mul_ps(drs, r0c), _mm_mul_ps(drc, r0s));
+    const __m128 mag = _mm_sqrt_ps(_mm_add_ps(_mm_mul_ps(qc, qc), _mm_mul_ps(qs, qs)));
+    const __m128 positive = _mm_cmpgt_ps(mag, _mm_setzero_ps());
+    qc = _mm_or_ps(_mm_and_ps(positive, _mm_div_ps(qc, mag)), _mm_andnot_ps(positive, qc));
+    qs = _mm_or_ps(_mm_and_ps(positive, _mm_div_ps(qs, mag)), _mm_andnot_ps(positive, qs));
+    // rotate(q, localCenter)
+    const __m128 rx = _mm_sub_ps(_mm_mul_ps(qc, lcx), _mm_mul_ps(qs, lcy));
+    const __m128 ry = _mm_add_ps(_mm_mul_ps(qs, lcx), _mm_mul_ps(qc, lcy));
+    __m128 px = _mm_sub_ps(cx, rx);
+    __m128 py = _mm_sub_ps(cy, ry);
+    __m128 residualX = _mm_sub_ps(dpx, _mm_sub_ps(_mm_add_ps(rx, px), c0x));
+    __m128 residualY = _mm_sub_ps(dpy, _mm_sub_ps(_mm_add_ps(ry, py), c0y));
+
+    _MM_TRANSPOSE4_PS(px, py, qc, qs);
+    _mm_storeu_ps(&sims[0].transform.p.x, px);
+    _mm_storeu_ps(&sims[1].transform.p.x, py);
+    _mm_storeu_ps(&sims[2].transform.p.x, qc);
+    _mm_storeu_ps(&sims[3].transform.p.x, qs);
+    _MM_TRANSPOSE4_PS(cx, cy, residualX, residualY); // rows: centre x y, residual x y
+    const __m128 rows[4] = {cx, cy, residualX, residualY};
+    for (int k = 0; k < 4; ++k) {
+        _mm_storel_pi(reinterpret_cast<__m64*>(&sims[k].center), rows[k]);
+        _mm_storeh_pi(reinterpret_cast<__m64*>(&sims[k].positionResidual), rows[k]);
+    }
+}
+
+#endif
+
+} // namespace
+
 void finalizePositions(std::span<BodySim> sims, std::span<const BodyState> states) {
-    for (std::size_t i = 0; i < sims.size(); ++i) {
-        BodySim& sim = sims[i];
-        const BodyState& state = states[i];
-        sim.center = sim.center0 + state.deltaPosition;
-        Rot q = mulRot(state.deltaRotation, sim.rotation0);
-        float mag = std::sqrt(q.c * q.c + q.s * q.s);
-        if (mag > 0.0f) {
-            q = {q.c / mag, q.s / mag};
-        }
-        sim.transform.q = q;
-        sim.transform.p = sim.center - rotate(q, sim.localCenter);
-        // The next step starts from the centre the float transform gives; what it misses of
-        // center0 + deltaPosition is kept. Near each other (the usual case far away, where it
-        // matters) the two centres subtract exactly.
-        const Vec2 next = transformPoint(sim.transform, sim.localCenter);
-        sim.positionResidual = state.deltaPosition - (next - sim.center0);
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    for (; i + 4 <= sims.size(); i += 4) {
+        finalizePositions4(&sims[i], &states[i]);
+    }
+#endif
+    for (; i < sims.size(); ++i) {
+        finalizePosition(sims[i], states[i]);
     }
 }
 

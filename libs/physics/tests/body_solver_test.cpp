@@ -135,5 +135,38 @@ TEST(BodySolver, IndexedIntegrationLoopsMatchOneBodyAtATime) {
     }
 }
 
+TEST(BodySolver, FinalizePositionsMatchesOneBodyAtATime) {
+    // Four bodies a register where the target has SSE2: each must end as the one-body call
+    // leaves it, bit for bit, a rotation that does not normalise (zero) included.
+    for (int count : {1, 4, 7, 13}) {
+        Bodies all = makeBodies(count, static_cast<unsigned>(100 + count));
+        std::mt19937 random(static_cast<unsigned>(count));
+        std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+        for (std::size_t i = 0; i < all.sims.size(); ++i) {
+            BodySim& sim = all.sims[i];
+            sim.center0 = {100.0f * unit(random), 50.0f * unit(random)};
+            const float angle = 3.0f * unit(random);
+            sim.rotation0 = {std::cos(angle), std::sin(angle)};
+            sim.localCenter =
+                i % 3 == 0 ? Vec2{0.0f, 0.0f} : Vec2{0.5f * unit(random), 0.5f * unit(random)};
+        }
+        if (count > 2) {
+            all.states[2].deltaRotation = {0.0f, 0.0f}; // stays unnormalised
+        }
+        Bodies alone = all;
+        finalizePositions(all.sims, all.states);
+        for (std::size_t i = 0; i < alone.sims.size(); ++i) {
+            finalizePositions(std::span<BodySim>(&alone.sims[i], 1),
+                              std::span<const BodyState>(&alone.states[i], 1));
+        }
+        for (std::size_t i = 0; i < all.sims.size(); ++i) {
+            EXPECT_EQ(std::memcmp(&all.sims[i], &alone.sims[i], sizeof(BodySim)), 0)
+                << "body " << i << " of " << count << ": p (" << all.sims[i].transform.p.x << ", "
+                << all.sims[i].transform.p.y << "), want (" << alone.sims[i].transform.p.x << ", "
+                << alone.sims[i].transform.p.y << ")";
+        }
+    }
+}
+
 } // namespace
 } // namespace e2d::physics::detail
