@@ -12,8 +12,10 @@
 #include <span>
 
 // libsndfile 1.2.0 with libvorbis 1.3.7 leaks the Vorbis info block of some corrupt Ogg
-// streams (allocated in vorbis_info_init, never cleared on libsndfile's error path). Not ours to
-// fix; the suppression names the third-party library only, so a leak in e2d still fails.
+// streams (allocated in vorbis_info_init, never cleared on libsndfile's error path). The decoder
+// checks every Ogg page's checksum before libsndfile reads any, so only a stream damaged with
+// valid checksums gets there; the suppression names the third-party library only, so a leak in
+// e2d still fails.
 extern "C" const char* __lsan_default_suppressions() { return "leak:libvorbis.so\n"; }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -20,18 +20,24 @@ namespace e2d::audio::detail {
 
 namespace {
 
+bool startsWith(std::span<const std::byte> bytes, std::size_t offset, std::string_view tag) {
+    return bytes.size() >= offset + tag.size() &&
+           std::memcmp(bytes.data() + offset, tag.data(), tag.size()) == 0;
+}
+
+// An Ogg container (libsndfile reads it as Ogg by the same capture pattern).
+bool isOgg(std::span<const std::byte> head) { return startsWith(head, 0, "OggS"); }
+
 // The formats e2d reads are WAV, Ogg and FLAC. libsndfile guesses among about twenty more from
 // the bytes (MPEG through libmpg123, PAF, IRCAM, ...), and some of those parsers never return on
 // damaged input (a fuzzed MPEG stream kept sf_open_virtual() busy for 20 minutes): anything
 // else is refused before libsndfile sees it. Empty when `head` (the first bytes) starts one of
 // the three, else the reason.
 std::string unsupportedFormat(std::span<const std::byte> head) {
-    auto at = [&](std::size_t offset, std::string_view tag) {
-        return head.size() >= offset + tag.size() &&
-               std::memcmp(head.data() + offset, tag.data(), tag.size()) == 0;
-    };
-    const bool wav = (at(0, "RIFF") || at(0, "RIFX") || at(0, "RF64")) && at(8, "WAVE");
-    if (wav || at(0, "OggS") || at(0, "fLaC")) {
+    const bool wav = (startsWith(head, 0, "RIFF") || startsWith(head, 0, "RIFX") ||
+                      startsWith(head, 0, "RF64")) &&
+                     startsWith(head, 8, "WAVE");
+    if (wav || isOgg(head) || startsWith(head, 0, "fLaC")) {
         return {};
     }
     return "not a WAV, Ogg or FLAC file (the formats e2d::audio reads)";
@@ -123,14 +129,18 @@ std::unique_ptr<Decoder> Decoder::open(const std::filesystem::path& path,
         std::ifstream file(path, std::ios::binary);
         file.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
         const auto got = static_cast<std::size_t>(std::max<std::streamsize>(file.gcount(), 0));
-        if (std::string problem = unsupportedFormat(std::span(head).first(got)); !problem.empty()) {
+        const std::span<const std::byte> read = std::span(head).first(got);
+        std::string problem = unsupportedFormat(read);
+        if (problem.empty() && isOgg(read) && !checked) {
+            problem = checkOggPages(fileBytes(path));
+        }
+        if (!problem.empty()) {
             error = "'" + decoder->name_ + "': " + problem;
             return nullptr;
         }
     }
-    decoder->path_ = path;
     decoder->file_ = sf_open(decoder->name_.c_str(), SFM_READ, &decoder->info_);
-    if (!decoder->finishOpen(limits, error, checked)) {
+    if (!decoder->finishOpen(limits, error)) {
         return nullptr;
     }
     return decoder;
@@ -140,20 +150,24 @@ std::unique_ptr<Decoder> Decoder::open(std::span<const std::byte> bytes, std::st
                                        const DecodeLimits& limits, std::string& error) {
     std::unique_ptr<Decoder> decoder(new Decoder());
     decoder->name_ = std::string(name);
-    if (std::string problem = unsupportedFormat(bytes); !problem.empty()) {
+    std::string problem = unsupportedFormat(bytes);
+    if (problem.empty() && isOgg(bytes)) {
+        problem = checkOggPages(bytes);
+    }
+    if (!problem.empty()) {
         error = "'" + decoder->name_ + "': " + problem;
         return nullptr;
     }
     decoder->memory_ = Memory{bytes, 0};
     SF_VIRTUAL_IO io{vioLength, vioSeek, vioRead, vioWrite, vioTell};
     decoder->file_ = sf_open_virtual(&io, SFM_READ, &decoder->info_, &decoder->memory_);
-    if (!decoder->finishOpen(limits, error, false)) {
+    if (!decoder->finishOpen(limits, error)) {
         return nullptr;
     }
     return decoder;
 }
 
-bool Decoder::finishOpen(const DecodeLimits& limits, std::string& error, bool checked) {
+bool Decoder::finishOpen(const DecodeLimits& limits, std::string& error) {
     const std::string prefix = "'" + name_ + "': ";
     if (file_ == nullptr) {
         error = prefix + sf_strerror(nullptr);
@@ -186,15 +200,6 @@ bool Decoder::finishOpen(const DecodeLimits& limits, std::string& error, bool ch
             return false;
         }
         begin = end + 1;
-    }
-    if ((info_.format & SF_FORMAT_TYPEMASK) == SF_FORMAT_OGG && !checked) {
-        const std::vector<std::byte> fromFile =
-            path_.empty() ? std::vector<std::byte>() : fileBytes(path_);
-        if (std::string problem = checkOggPages(path_.empty() ? memory_.bytes : fromFile);
-            !problem.empty()) {
-            error = prefix + problem;
-            return false;
-        }
     }
     // libsndfile says SF_COUNT_MAX when the length is unknown.
     headerFrames_ = info_.frames == SF_COUNT_MAX ? -1 : static_cast<std::int64_t>(info_.frames);

@@ -20,7 +20,8 @@ namespace e2d::audio::detail {
 class Decoder {
 public:
     /// Opens `path` and checks its header against `limits` (channels, sample rate, at least one
-    /// frame) and, for Ogg, every page of the container (checkOggPages). Returns null and sets
+    /// frame) and, for Ogg, every page of the container (checkOggPages, before libsndfile reads
+    /// any: a Vorbis stream libsndfile fails to open leaks its info block). Returns null and sets
     /// `error` ("'<name>': <reason>") when that fails. `checked`: the file passed this check
     /// before (a streaming voice reopening a loaded sound), so the pages are not read again.
     static std::unique_ptr<Decoder> open(const std::filesystem::path& path,
@@ -60,7 +61,7 @@ public:
 
 private:
     Decoder() = default;
-    bool finishOpen(const DecodeLimits& limits, std::string& error, bool checked);
+    bool finishOpen(const DecodeLimits& limits, std::string& error);
     void setError(std::string_view reason);
     // "1.25 s (frame 55125)": where in the sound `frame` is, for messages.
     [[nodiscard]] std::string where(std::int64_t frame) const;
@@ -71,7 +72,6 @@ private:
     std::int64_t headerFrames_ = -1;
     std::int64_t position_ = 0; // the frame read next
     float maxMagnitude_ = 0.0f;
-    std::filesystem::path path_; // empty when reading memory
     std::string name_;
     std::string error_;
 };

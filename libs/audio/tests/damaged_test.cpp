@@ -99,6 +99,23 @@ TEST(DamagedOgg, ADamagedMiddleIsRefusedWhole) {
     expectRefused(result, damaged.string(), "damaged: Ogg page 3 at byte 3446 fails its checksum");
 }
 
+// Damage in the header pages (here the Vorbis comment packet on page 2) is found before
+// libsndfile reads the stream: libsndfile 1.2 fails to open it and leaks libvorbis's info block
+// each time (the sound loader's fuzzer ran out of memory on such inputs).
+TEST(DamagedOgg, DamagedHeaderPagesAreRefusedBeforeLibsndfileOpensThem) {
+    const auto full = oggTone("full_head.ogg");
+    const auto bytes = readBytes(full);
+    const auto pages = oggPages(bytes);
+    ASSERT_GE(pages.size(), 3u);
+    const std::string reason =
+        "damaged: Ogg page 2 at byte " + std::to_string(pages[1]) + " fails its checksum";
+    const auto damaged = damagedCopy(full, "damaged_head.ogg", pages[1] + 40, 8);
+    expectRefused(decodeSoundFile(damaged), damaged.string(), reason);
+    const auto inMemory = readBytes(damaged);
+    expectRefused(decodeSoundMemory(std::as_bytes(std::span(inMemory)), "head-in-memory.ogg"),
+                  "head-in-memory.ogg", reason);
+}
+
 TEST(DamagedStream, CutAndDamagedOggAreRefusedWhenLoadedAsStreams) {
     Rig rig;
     const auto full = oggTone("stream_full.ogg");

@@ -267,6 +267,11 @@ LineCheck checkLine(std::string_view line) {
     }
     if (line.back() != ',') {
         check.kept.pop_back(); // no longer than the line, so within GLFW's limit
+        // Fields left out may have followed a free-form one that ends in blanks ("hint:x ,q:r");
+        // the kept line ends where a line read back would end, so it reads back as itself.
+        while (check.kept.back() == ' ' || check.kept.back() == '\t') {
+            check.kept.pop_back();
+        }
     }
     return check;
 }

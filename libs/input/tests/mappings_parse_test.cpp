@@ -151,6 +151,20 @@ TEST(MappingParse, EveryMappingGlfwCanUseIsKeptWithWarningsApartFromErrors) {
                 HasSubstr("db.txt:3: unknown field 'face' ignored"));
 }
 
+// The kept line is what GLFW gets and what a reader of it would read back: fields left out
+// after a free-form value that ends in a blank leave no blank at the end (found by the fuzzer).
+TEST(MappingParse, AKeptLineReadsBackAsItself) {
+    const std::string g = "00000000000000000000000000000000,n,a:b0,";
+    for (const std::string& line : {g + "hint:x ,q:r", g + "crc:\t,+leftx:a0", g + "hint:x ,"}) {
+        const MappingParseResult r = parseGamepadMappings(line);
+        ASSERT_EQ(r.lines.size(), 1u) << line;
+        const MappingParseResult again = parseGamepadMappings(r.lines[0]);
+        EXPECT_TRUE(again.diagnostics.empty()) << line;
+        EXPECT_THAT(again.lines, ElementsAre(r.lines[0])) << line;
+    }
+    EXPECT_THAT(parseGamepadMappings(g + "hint:x ,q:r").lines, ElementsAre(g + "hint:x"));
+}
+
 // A database cut short (a download that stopped) ends inside its last line. Cut anywhere, that
 // line lacks the ',' that closes each of SDL's lines or the platform field that ends them.
 TEST(MappingParse, ACutLastLineIsAnErrorNotAMapping) {

@@ -6,7 +6,7 @@
 #include <cstddef>
 
 #if defined(__SSE2__)
-#include <xmmintrin.h>
+#include <immintrin.h>
 #endif
 
 namespace e2d::physics::detail {
@@ -224,6 +224,199 @@ inline float* row(BodyState& state) { return &state.linearVelocity.x; }
     return true;
 }
 
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#define E2D_BODY_AVX2 1
+
+// The same lanes eight bodies a register, on AVX2 machines (checked at run time; the build's
+// baseline is SSE2). A 256-bit register holds bodies 0-3 in its low half and 4-7 in its high
+// half, each half transposed as the four-lane code transposes its register: half the
+// transposes and arithmetic instructions per body. AVX2 brings no FMA, so every lane still
+// rounds as the scalar code does.
+namespace avx2 {
+
+// _MM_TRANSPOSE4_PS in each 128-bit half.
+#define E2D_TRANSPOSE4X2_PS(r0, r1, r2, r3)                                                        \
+    do {                                                                                           \
+        const __m256 t0 = _mm256_unpacklo_ps(r0, r1);                                              \
+        const __m256 t1 = _mm256_unpacklo_ps(r2, r3);                                              \
+        const __m256 t2 = _mm256_unpackhi_ps(r0, r1);                                              \
+        const __m256 t3 = _mm256_unpackhi_ps(r2, r3);                                              \
+        r0 = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(1, 0, 1, 0));                                   \
+        r1 = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(3, 2, 3, 2));                                   \
+        r2 = _mm256_shuffle_ps(t2, t3, _MM_SHUFFLE(1, 0, 1, 0));                                   \
+        r3 = _mm256_shuffle_ps(t2, t3, _MM_SHUFFLE(3, 2, 3, 2));                                   \
+    } while (false)
+
+// Rows lo (low half) and hi (high half), four floats each.
+[[gnu::always_inline]] __attribute__((target("avx2"))) inline __m256 load2(const float* lo,
+                                                                           const float* hi) {
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(lo)), _mm_loadu_ps(hi), 1);
+}
+[[gnu::always_inline]] __attribute__((target("avx2"))) inline void store2(float* lo, float* hi,
+                                                                          __m256 v) {
+    _mm_storeu_ps(lo, _mm256_castps256_ps128(v));
+    _mm_storeu_ps(hi, _mm256_extractf128_ps(v, 1));
+}
+
+struct Caps {
+    __m256 linearSquared;
+    __m256 angularLow;
+    __m256 angularHigh;
+};
+
+[[gnu::always_inline]] __attribute__((target("avx2"))) inline Caps caps8(SpeedCaps caps) {
+    return {_mm256_set1_ps(caps.linear * caps.linear), _mm256_set1_ps(-caps.angular),
+            _mm256_set1_ps(caps.angular)};
+}
+
+// overSpeedCap(), clampAngular() and the finiteness test of the four-lane code.
+[[gnu::always_inline]] __attribute__((target("avx2"))) inline __m256
+overSpeedCap(__m256 vx, __m256 vy, const Caps& caps) {
+    return _mm256_cmp_ps(_mm256_add_ps(_mm256_mul_ps(vx, vx), _mm256_mul_ps(vy, vy)),
+                         caps.linearSquared, _CMP_GT_OS);
+}
+[[gnu::always_inline]] __attribute__((target("avx2"))) inline __m256
+clampAngular(__m256 w, const Caps& caps) {
+    return _mm256_min_ps(caps.angularHigh, _mm256_max_ps(caps.angularLow, w));
+}
+[[gnu::always_inline]] __attribute__((target("avx2"))) inline __m256 isFinite(__m256 v) {
+    const __m256 absMask = _mm256_castsi256_ps(_mm256_set1_epi32(0x7FFFFFFF));
+    return _mm256_cmp_ps(_mm256_and_ps(v, absMask), _mm256_set1_ps(3.40282347e38f), _CMP_LE_OS);
+}
+
+// integrateVelocity4() for bodies at[0..7].
+[[gnu::always_inline]] __attribute__((target("avx2"))) inline bool
+integrateVelocity8(std::span<const BodySim> sims, std::span<BodyState> states,
+                   const std::size_t (&at)[8], const Caps& caps) {
+    __m256 vx = load2(row(states[at[0]]), row(states[at[4]]));
+    __m256 vy = load2(row(states[at[1]]), row(states[at[5]]));
+    __m256 w = load2(row(states[at[2]]), row(states[at[6]]));
+    __m256 flags = load2(row(states[at[3]]), row(states[at[7]]));
+    E2D_TRANSPOSE4X2_PS(vx, vy, w, flags);
+    __m256 stepX = load2(&sims[at[0]].velocityStep.x, &sims[at[4]].velocityStep.x);
+    __m256 stepY = load2(&sims[at[1]].velocityStep.x, &sims[at[5]].velocityStep.x);
+    __m256 stepW = load2(&sims[at[2]].velocityStep.x, &sims[at[6]].velocityStep.x);
+    __m256 linearDamping = load2(&sims[at[3]].velocityStep.x, &sims[at[7]].velocityStep.x);
+    E2D_TRANSPOSE4X2_PS(stepX, stepY, stepW, linearDamping);
+    const __m256 angularDamping =
+        _mm256_setr_ps(sims[at[0]].angularDampingFactor, sims[at[1]].angularDampingFactor,
+                       sims[at[2]].angularDampingFactor, sims[at[3]].angularDampingFactor,
+                       sims[at[4]].angularDampingFactor, sims[at[5]].angularDampingFactor,
+                       sims[at[6]].angularDampingFactor, sims[at[7]].angularDampingFactor);
+    vx = _mm256_add_ps(stepX, _mm256_mul_ps(linearDamping, vx));
+    vy = _mm256_add_ps(stepY, _mm256_mul_ps(linearDamping, vy));
+    w = clampAngular(_mm256_add_ps(stepW, _mm256_mul_ps(angularDamping, w)), caps);
+    const __m256 finite = _mm256_and_ps(_mm256_and_ps(isFinite(vx), isFinite(vy)), isFinite(w));
+    const __m256i heldStill =
+        _mm256_and_si256(_mm256_castps_si256(flags), _mm256_set1_epi32(kNonFinite));
+    const __m256 rare =
+        _mm256_or_ps(_mm256_or_ps(overSpeedCap(vx, vy, caps),
+                                  _mm256_cmp_ps(finite, _mm256_setzero_ps(), _CMP_EQ_OQ)),
+                     _mm256_castsi256_ps(_mm256_cmpgt_epi32(heldStill, _mm256_setzero_si256())));
+    if (_mm256_movemask_ps(rare) != 0) {
+        return false;
+    }
+    E2D_TRANSPOSE4X2_PS(vx, vy, w, flags);
+    store2(row(states[at[0]]), row(states[at[4]]), vx);
+    store2(row(states[at[1]]), row(states[at[5]]), vy);
+    store2(row(states[at[2]]), row(states[at[6]]), w);
+    store2(row(states[at[3]]), row(states[at[7]]), flags);
+    return true;
+}
+
+// integratePosition4() for bodies at[0..7].
+[[gnu::always_inline]] __attribute__((target("avx2"))) inline bool
+integratePosition8(std::span<BodyState> states, const std::size_t (&at)[8], __m256 h,
+                   const Caps& caps) {
+    float* const rows[8] = {row(states[at[0]]), row(states[at[1]]), row(states[at[2]]),
+                            row(states[at[3]]), row(states[at[4]]), row(states[at[5]]),
+                            row(states[at[6]]), row(states[at[7]])};
+    __m256 vx = load2(rows[0], rows[4]);
+    __m256 vy = load2(rows[1], rows[5]);
+    __m256 w = load2(rows[2], rows[6]);
+    __m256 flags = load2(rows[3], rows[7]);
+    E2D_TRANSPOSE4X2_PS(vx, vy, w, flags);
+    __m256 px = load2(rows[0] + 4, rows[4] + 4);
+    __m256 py = load2(rows[1] + 4, rows[5] + 4);
+    __m256 qc = load2(rows[2] + 4, rows[6] + 4);
+    __m256 qs = load2(rows[3] + 4, rows[7] + 4);
+    E2D_TRANSPOSE4X2_PS(px, py, qc, qs);
+    w = clampAngular(w, caps);
+    const __m256 da = _mm256_mul_ps(h, w);
+    const __m256 c = _mm256_sub_ps(qc, _mm256_mul_ps(da, qs));
+    const __m256 s = _mm256_add_ps(qs, _mm256_mul_ps(da, qc));
+    const __m256 mag = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(c, c), _mm256_mul_ps(s, s)));
+    const __m256 normalises =
+        _mm256_and_ps(_mm256_cmp_ps(mag, _mm256_setzero_ps(), _CMP_GT_OS),
+                      _mm256_cmp_ps(mag, _mm256_set1_ps(INFINITY), _CMP_LT_OS));
+    if (_mm256_movemask_ps(normalises) != 0xFF ||
+        _mm256_movemask_ps(overSpeedCap(vx, vy, caps)) != 0) {
+        return false;
+    }
+    const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), mag);
+    qc = _mm256_mul_ps(c, inv);
+    qs = _mm256_mul_ps(s, inv);
+    px = _mm256_add_ps(px, _mm256_mul_ps(h, vx));
+    py = _mm256_add_ps(py, _mm256_mul_ps(h, vy));
+    E2D_TRANSPOSE4X2_PS(vx, vy, w, flags);
+    E2D_TRANSPOSE4X2_PS(px, py, qc, qs);
+    store2(rows[0], rows[4], vx);
+    store2(rows[1], rows[5], vy);
+    store2(rows[2], rows[6], w);
+    store2(rows[3], rows[7], flags);
+    store2(rows[0] + 4, rows[4] + 4, px);
+    store2(rows[1] + 4, rows[5] + 4, py);
+    store2(rows[2] + 4, rows[6] + 4, qc);
+    store2(rows[3] + 4, rows[7] + 4, qs);
+    return true;
+}
+
+#undef E2D_TRANSPOSE4X2_PS
+
+// The groups of eight of the first `count` bodies; returns how many bodies it did (a multiple
+// of eight). A group with a body on a rare path goes to the scalar functions whole, as in the
+// four-lane loops.
+template <class Index>
+__attribute__((target("avx2"))) std::size_t
+integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, std::size_t count,
+                    Index index, SpeedCaps caps) {
+    const Caps wide = caps8(caps);
+    std::size_t k = 0;
+    for (; k + 8 <= count; k += 8) {
+        const std::size_t at[8] = {index(k),     index(k + 1), index(k + 2), index(k + 3),
+                                   index(k + 4), index(k + 5), index(k + 6), index(k + 7)};
+        if (!integrateVelocity8(sims, states, at, wide)) {
+            for (std::size_t i : at) {
+                integrateVelocity(sims[i], states[i], caps);
+            }
+        }
+    }
+    return k;
+}
+
+template <class Index>
+__attribute__((target("avx2"))) std::size_t integratePositions(std::span<BodyState> states,
+                                                               std::size_t count, Index index,
+                                                               float h, SpeedCaps caps) {
+    const Caps wide = caps8(caps);
+    const __m256 wideH = _mm256_set1_ps(h);
+    std::size_t k = 0;
+    for (; k + 8 <= count; k += 8) {
+        const std::size_t at[8] = {index(k),     index(k + 1), index(k + 2), index(k + 3),
+                                   index(k + 4), index(k + 5), index(k + 6), index(k + 7)};
+        if (!integratePosition8(states, at, wideH, wide)) {
+            for (std::size_t i : at) {
+                integratePosition(states[i], h, caps);
+            }
+        }
+    }
+    return k;
+}
+
+} // namespace avx2
+
+#endif
+
 #endif
 
 // The loops over `count` bodies, body k being states[index(k)] (and sims[index(k)]).
@@ -232,6 +425,11 @@ void integrateVelocitiesOf(std::span<const BodySim> sims, std::span<BodyState> s
                            std::size_t count, Index index, SpeedCaps caps) {
     std::size_t k = 0;
 #if defined(__SSE2__)
+#if defined(E2D_BODY_AVX2)
+    if (__builtin_cpu_supports("avx2")) {
+        k = avx2::integrateVelocities(sims, states, count, index, caps);
+    }
+#endif
     const WideCaps wide = wideCaps(caps);
     for (; k + 4 <= count; k += 4) {
         const std::size_t at[4] = {index(k), index(k + 1), index(k + 2), index(k + 3)};
@@ -253,6 +451,11 @@ void integratePositionsOf(std::span<BodyState> states, std::size_t count, Index 
                           SpeedCaps caps) {
     std::size_t k = 0;
 #if defined(__SSE2__)
+#if defined(E2D_BODY_AVX2)
+    if (__builtin_cpu_supports("avx2")) {
+        k = avx2::integratePositions(states, count, index, h, caps);
+    }
+#endif
     const WideCaps wide = wideCaps(caps);
     const __m128 wideH = _mm_set1_ps(h);
     for (; k + 4 <= count; k += 4) {
@@ -407,14 +610,14 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
         }
         void warmStart() {
             warmStartJointsOf(step, joints);
-            warmStartWide(wide, firstLevel, endLevel, step.states);
+            warmStartWide(wide, firstLevel, endLevel);
         }
         void solve(bool useBias, bool backward, bool reversePoints, bool withJoints) {
             if (withJoints) {
                 solveJointsOf(step, joints, useBias);
             }
-            solveWide(wide, firstLevel, endLevel, step.states, 1.0f / h, useBias,
-                      step.def->contactPushMaxSpeed, backward, reversePoints);
+            solveWide(wide, firstLevel, endLevel, 1.0f / h, useBias, step.def->contactPushMaxSpeed,
+                      backward, reversePoints);
         }
         void integratePositions() {
             detail::integratePositions(step.states, bodies, h, step.def->maxLinearSpeed);
@@ -457,23 +660,99 @@ void solveClassic(const SolverStep& step) {
     }
 }
 
+namespace {
+
+inline void finalizePosition(BodySim& sim, const BodyState& state) {
+    sim.center = sim.center0 + state.deltaPosition;
+    Rot q = mulRot(state.deltaRotation, sim.rotation0);
+    float mag = std::sqrt(q.c * q.c + q.s * q.s);
+    if (mag > 0.0f) {
+        q = {q.c / mag, q.s / mag};
+    }
+    sim.transform.q = q;
+    sim.transform.p = sim.center - rotate(q, sim.localCenter);
+    // The next step starts from the centre the float transform gives; what it misses of
+    // center0 + deltaPosition is kept. Near each other (the usual case far away, where it
+    // matters) the two centres subtract exactly.
+    const Vec2 next = transformPoint(sim.transform, sim.localCenter);
+    sim.positionResidual = state.deltaPosition - (next - sim.center0);
+}
+
+#if defined(__SSE2__)
+
+static_assert(offsetof(BodySim, transform) == 0 && offsetof(BodySim, center) == 16 &&
+                  offsetof(BodySim, rotation0) == offsetof(BodySim, center0) + 8 &&
+                  offsetof(BodySim, positionResidual) % 4 == 0,
+              "finalizePositions4() loads center0 and rotation0 as one row and stores the "
+              "transform as one");
+
+// finalizePosition() on sims[i..i+3] and states[i..i+3], each lane doing its operations in its
+// order (no FMA on the SSE2 baseline; the normalisation divides every lane and keeps the
+// quotient where mag > 0), so the results are bit for bit its own. About a third of its
+// instructions a body.
+inline void finalizePositions4(BodySim* sims, const BodyState* states) {
+    __m128 c0x = _mm_loadu_ps(&sims[0].center0.x);
+    __m128 c0y = _mm_loadu_ps(&sims[1].center0.x);
+    __m128 r0c = _mm_loadu_ps(&sims[2].center0.x);
+    __m128 r0s = _mm_loadu_ps(&sims[3].center0.x);
+    _MM_TRANSPOSE4_PS(c0x, c0y, r0c, r0s);
+    __m128 dpx = _mm_loadu_ps(&states[0].deltaPosition.x);
+    __m128 dpy = _mm_loadu_ps(&states[1].deltaPosition.x);
+    __m128 drc = _mm_loadu_ps(&states[2].deltaPosition.x);
+    __m128 drs = _mm_loadu_ps(&states[3].deltaPosition.x);
+    _MM_TRANSPOSE4_PS(dpx, dpy, drc, drs);
+    // localCenter (x, y) of bodies 0 1 2 3, as two rows.
+    const __m128 lc01 = _mm_loadh_pi(
+        _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&sims[0].localCenter))),
+        reinterpret_cast<const __m64*>(&sims[1].localCenter));
+    const __m128 lc23 = _mm_loadh_pi(
+        _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&sims[2].localCenter))),
+        reinterpret_cast<const __m64*>(&sims[3].localCenter));
+    const __m128 lcx = _mm_shuffle_ps(lc01, lc23, _MM_SHUFFLE(2, 0, 2, 0));
+    const __m128 lcy = _mm_shuffle_ps(lc01, lc23, _MM_SHUFFLE(3, 1, 3, 1));
+
+    __m128 cx = _mm_add_ps(c0x, dpx);
+    __m128 cy = _mm_add_ps(c0y, dpy);
+    __m128 qc = _mm_sub_ps(_mm_mul_ps(drc, r0c), _mm_mul_ps(drs, r0s));
+    __m128 qs = _mm_add_ps(_mm_mul_ps(drs, r0c), _mm_mul_ps(drc, r0s));
+    const __m128 mag = _mm_sqrt_ps(_mm_add_ps(_mm_mul_ps(qc, qc), _mm_mul_ps(qs, qs)));
+    const __m128 positive = _mm_cmpgt_ps(mag, _mm_setzero_ps());
+    qc = _mm_or_ps(_mm_and_ps(positive, _mm_div_ps(qc, mag)), _mm_andnot_ps(positive, qc));
+    qs = _mm_or_ps(_mm_and_ps(positive, _mm_div_ps(qs, mag)), _mm_andnot_ps(positive, qs));
+    // rotate(q, localCenter)
+    const __m128 rx = _mm_sub_ps(_mm_mul_ps(qc, lcx), _mm_mul_ps(qs, lcy));
+    const __m128 ry = _mm_add_ps(_mm_mul_ps(qs, lcx), _mm_mul_ps(qc, lcy));
+    __m128 px = _mm_sub_ps(cx, rx);
+    __m128 py = _mm_sub_ps(cy, ry);
+    __m128 residualX = _mm_sub_ps(dpx, _mm_sub_ps(_mm_add_ps(rx, px), c0x));
+    __m128 residualY = _mm_sub_ps(dpy, _mm_sub_ps(_mm_add_ps(ry, py), c0y));
+
+    _MM_TRANSPOSE4_PS(px, py, qc, qs);
+    _mm_storeu_ps(&sims[0].transform.p.x, px);
+    _mm_storeu_ps(&sims[1].transform.p.x, py);
+    _mm_storeu_ps(&sims[2].transform.p.x, qc);
+    _mm_storeu_ps(&sims[3].transform.p.x, qs);
+    _MM_TRANSPOSE4_PS(cx, cy, residualX, residualY); // rows: centre x y, residual x y
+    const __m128 rows[4] = {cx, cy, residualX, residualY};
+    for (int k = 0; k < 4; ++k) {
+        _mm_storel_pi(reinterpret_cast<__m64*>(&sims[k].center), rows[k]);
+        _mm_storeh_pi(reinterpret_cast<__m64*>(&sims[k].positionResidual), rows[k]);
+    }
+}
+
+#endif
+
+} // namespace
+
 void finalizePositions(std::span<BodySim> sims, std::span<const BodyState> states) {
-    for (std::size_t i = 0; i < sims.size(); ++i) {
-        BodySim& sim = sims[i];
-        const BodyState& state = states[i];
-        sim.center = sim.center0 + state.deltaPosition;
-        Rot q = mulRot(state.deltaRotation, sim.rotation0);
-        float mag = std::sqrt(q.c * q.c + q.s * q.s);
-        if (mag > 0.0f) {
-            q = {q.c / mag, q.s / mag};
-        }
-        sim.transform.q = q;
-        sim.transform.p = sim.center - rotate(q, sim.localCenter);
-        // The next step starts from the centre the float transform gives; what it misses of
-        // center0 + deltaPosition is kept. Near each other (the usual case far away, where it
-        // matters) the two centres subtract exactly.
-        const Vec2 next = transformPoint(sim.transform, sim.localCenter);
-        sim.positionResidual = state.deltaPosition - (next - sim.center0);
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    for (; i + 4 <= sims.size(); i += 4) {
+        finalizePositions4(&sims[i], &states[i]);
+    }
+#endif
+    for (; i < sims.size(); ++i) {
+        finalizePosition(sims[i], states[i]);
     }
 }
 

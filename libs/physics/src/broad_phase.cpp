@@ -121,6 +121,10 @@ namespace {
 
 bool BroadPhase::needsMove(int proxyKey, const Aabb& aabb, Vec2 displacement) const {
     checkKey(proxyKey, "needsMove");
+    return needsMoveLive(proxyKey, aabb, displacement);
+}
+
+bool BroadPhase::needsMoveLive(int proxyKey, const Aabb& aabb, Vec2 displacement) const {
     const BodyType type = proxyTypeOf(proxyKey);
 #if defined(__SSE2__)
     // The scalar code below with a box in one register (lower x y, upper x y), operation for
@@ -133,7 +137,7 @@ bool BroadPhase::needsMove(int proxyKey, const Aabb& aabb, Vec2 displacement) co
         return _mm_movelh_ps(_mm_min_ps(zero, v), _mm_max_ps(zero, v));
     };
     const __m128 box = _mm_loadu_ps(&aabb.lower.x);
-    const __m128 current = _mm_loadu_ps(&fatAabb(proxyKey).lower.x);
+    const __m128 current = _mm_loadu_ps(&fatAabbLive(proxyKey).lower.x);
     const __m128 d = _mm_setr_ps(displacement.x, displacement.y, displacement.x, displacement.y);
     const __m128 swept = _mm_add_ps(box, spread(d));
     // contains(current, swept): current.lower <= swept.lower, swept.upper <= current.upper.
@@ -157,7 +161,7 @@ bool BroadPhase::needsMove(int proxyKey, const Aabb& aabb, Vec2 displacement) co
     Aabb swept = aabb;
     swept.lower += Vec2{std::min(displacement.x, 0.0f), std::min(displacement.y, 0.0f)};
     swept.upper += Vec2{std::max(displacement.x, 0.0f), std::max(displacement.y, 0.0f)};
-    const Aabb& current = fatAabb(proxyKey);
+    const Aabb& current = fatAabbLive(proxyKey);
     if (!contains(current, swept)) {
         return true;
     }

@@ -71,6 +71,10 @@ public:
     /// box only, which moving or destroying other proxies leaves as it is: the step asks it for
     /// every shape on several workers, then moves the ones that need it in shape order.
     [[nodiscard]] bool needsMove(int proxyKey, const Aabb& aabb, Vec2 displacement) const;
+    /// needsMove() without the key check, for the write-back's loop over the awake shapes, whose
+    /// keys are live by construction (the check was about 30 instructions a shape, a third of
+    /// the call); a bad key here reads out of bounds.
+    [[nodiscard]] bool needsMoveLive(int proxyKey, const Aabb& aabb, Vec2 displacement) const;
     /// Buffers the proxy as moved so the next update looks for its pairs again (e.g. after its
     /// filter changed or its body woke up).
     void bufferMove(int proxyKey);
@@ -78,13 +82,18 @@ public:
     [[nodiscard]] const Aabb& fatAabb(int proxyKey) const {
         return trees_[treeIndex(proxyKey)].aabb(proxyIdOf(proxyKey));
     }
-    /// fatAabb() without the key check, for the narrow phase's loop over contacts, whose shapes'
-    /// keys are live by construction (a shape's contacts go before its proxy). The check cost
-    /// about 28 instructions per contact; a bad key here reads out of bounds.
-    [[nodiscard]] const Aabb& fatAabbOfLive(int proxyKey) const {
-        return trees_[treeIndex(proxyKey)]
-            .nodes_[static_cast<std::size_t>(proxyIdOf(proxyKey))]
-            .aabb;
+    /// Whether the fat boxes of two proxies overlap (touching counts), without the key check:
+    /// for the narrow phase's loop over contacts, whose shapes' keys are live by construction (a
+    /// shape's contacts go before its proxy). The check cost about 28 instructions per contact;
+    /// a bad key here reads out of bounds.
+    [[nodiscard]] bool fatAabbsOverlapLive(int proxyKeyA, int proxyKeyB) const {
+        const Aabb& a = fatAabbLive(proxyKeyA);
+        const Aabb& b = fatAabbLive(proxyKeyB);
+#if defined(__SSE2__)
+        return overlapsBox(a, _mm_loadu_ps(&b.lower.x));
+#else
+        return overlaps(a, b);
+#endif
     }
     [[nodiscard]] std::uint64_t userData(int proxyKey) const {
         return trees_[treeIndex(proxyKey)].userData(proxyIdOf(proxyKey));
@@ -148,6 +157,12 @@ private:
     };
 
     static std::size_t treeIndex(int proxyKey) { return static_cast<std::size_t>(proxyKey & 3); }
+    // fatAabb() without the key check.
+    [[nodiscard]] const Aabb& fatAabbLive(int proxyKey) const {
+        return trees_[treeIndex(proxyKey)]
+            .nodes_[static_cast<std::size_t>(proxyIdOf(proxyKey))]
+            .aabb;
+    }
     ProxyInfo& info(int proxyKey) { return infos_[static_cast<std::size_t>(proxyKey)]; }
     [[nodiscard]] bool isMoved(int proxyKey) const {
         return infos_[static_cast<std::size_t>(proxyKey)].moveIndex >= 0;

@@ -2,6 +2,7 @@
 // Contacts: created from new broad-phase pairs, destroyed when the fat boxes part or a shape
 // goes, updated by the narrow phase (carrying impulses by feature id) with begin/end and
 // sensor events.
+#include "manifold_circles.hpp"
 #include "prefetch.hpp"
 #include "world_impl.hpp"
 
@@ -368,8 +369,13 @@ enum Collided : unsigned char { kNoPoints = 0, kPoints = 1, kRecycled = 2 };
             ? collidePolygons(*std::get_if<Polygon>(&sa.geometry), ba.transform,
                               *std::get_if<Polygon>(&sb.geometry), bb.transform, margin)
         : sameType && type == kCircleIndex
+#if defined(__SSE2__)
+            ? detail::collideCirclesSse2(*std::get_if<Circle>(&sa.geometry), ba.transform,
+                                         *std::get_if<Circle>(&sb.geometry), bb.transform, margin)
+#else
             ? collideCircles(*std::get_if<Circle>(&sa.geometry), ba.transform,
                              *std::get_if<Circle>(&sb.geometry), bb.transform, margin)
+#endif
             : collide(sa.geometry, ba.transform, sb.geometry, bb.transform, collisionAlgorithm,
                       margin));
     // Impulses carry over from the first old point with the same id.
@@ -427,33 +433,42 @@ void World::Impl::updateContacts(float dt) {
     constexpr int kPrefetchAhead = 6;
     const float recycle = effectiveRecycleDistance(s.def, speculativeDistance);
     auto updatePiece = [&](int begin, int end, int /*worker*/) {
+        // The arrays and settings in locals: each contact's store to `updates` (a char, which
+        // may alias anything) made the compiler load them from the world again for every
+        // contact.
+        detail::Contact* const contacts = s.contacts.data();
+        unsigned char* const updates = s.contactUpdates.data();
+        const detail::Shape* const shapeSlots = shapes.data();
+        const detail::Body* const bodySlots = bodies.data();
+        const detail::BroadPhase& bp = broadPhase;
+        const CollisionAlgorithm algorithm = collisionAlgorithm;
+        const float speculative = speculativeDistance;
+        const float stepDt = dt;
         for (int ci = begin; ci < end; ++ci) {
             if (ci + kPrefetchAhead < end) {
-                const detail::Contact& ahead =
-                    s.contacts[static_cast<std::size_t>(ci + kPrefetchAhead)];
+                const detail::Contact& ahead = contacts[ci + kPrefetchAhead];
                 if (ahead.alive) {
-                    detail::prefetchObject(&shape(ahead.shapeA));
-                    detail::prefetchObject(&shape(ahead.shapeB));
-                    detail::prefetchObject(&body(ahead.bodyA));
-                    detail::prefetchObject(&body(ahead.bodyB));
+                    detail::prefetchObject(shapeSlots + ahead.shapeA);
+                    detail::prefetchObject(shapeSlots + ahead.shapeB);
+                    detail::prefetchObject(bodySlots + ahead.bodyA);
+                    detail::prefetchObject(bodySlots + ahead.bodyB);
                 }
             }
-            detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
-            unsigned char& update = s.contactUpdates[static_cast<std::size_t>(ci)];
+            detail::Contact& c = contacts[ci];
+            unsigned char& update = updates[ci];
             if (!c.alive) {
                 update = kDead;
                 continue;
             }
-            const ContactSides sides{shape(c.shapeA), shape(c.shapeB), body(c.bodyA),
-                                     body(c.bodyB)};
-            if (!overlaps(broadPhase.fatAabbOfLive(sides.sa.proxyKey),
-                          broadPhase.fatAabbOfLive(sides.sb.proxyKey))) {
+            const ContactSides sides{shapeSlots[c.shapeA], shapeSlots[c.shapeB], bodySlots[c.bodyA],
+                                     bodySlots[c.bodyB]};
+            if (!bp.fatAabbsOverlapLive(sides.sa.proxyKey, sides.sb.proxyKey)) {
                 update = kApart;
             } else if (!sides.ba.motion.awake && !sides.bb.motion.awake) {
                 update = kAsleep;
             } else {
                 const unsigned collided =
-                    collideContact(c, sides, collisionAlgorithm, speculativeDistance, recycle, dt);
+                    collideContact(c, sides, algorithm, speculative, recycle, stepDt);
                 update =
                     static_cast<unsigned char>(((collided & kPoints) != 0 ? kTouching : kApartNow) |
                                                ((collided & kRecycled) != 0 ? kRecycledFlag : 0));

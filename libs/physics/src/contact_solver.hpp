@@ -144,7 +144,8 @@ inline constexpr float kPushOutRestMargin = 2.0f;
 // points, s_i its overlap), which in terms of the softness is
 // s_i = (K lambda)_i impulseScale / (massScale biasRate). Most contacts overlap less than the
 // slop and need nothing more: that test is inline (the solver asks every contact each step),
-// the rest is isDeepPushedApart().
+// the rest is isDeepPushedApart(). prepareWideGroup() takes both on a group's lanes at once,
+// operation for operation: change them together.
 bool isDeepPushedApart(const Manifold& m, const ContactBodyView& a, const ContactBodyView& b,
                        Softness softness);
 inline bool isPushedApart(const Manifold& m, const ContactBodyView& a, const ContactBodyView& b,

@@ -240,15 +240,17 @@ int hitLanes(const WideConstraintT<8>& group, float threshold) {
 #endif
 }
 
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<4>& in,
-                      std::span<BodyState> states) {
-    lanes4::prepareGroup(in, wide.constraints4[static_cast<std::size_t>(group)], states.data());
+int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<4>& in,
+                     std::span<BodyState> states) {
+    return lanes4::prepareGroup(in, wide.constraints4[static_cast<std::size_t>(group)],
+                                states.data());
 }
 
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<8>& in,
-                      std::span<BodyState> states) {
+int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<8>& in,
+                     std::span<BodyState> states) {
 #if defined(E2D_HAS_WIDE8)
-    lanes8::prepareGroup(in, wide.constraints8[static_cast<std::size_t>(group)], states.data());
+    return lanes8::prepareGroup(in, wide.constraints8[static_cast<std::size_t>(group)],
+                                states.data());
 #else
     // Unreachable: without AVX2 kernels layoutWide() never makes eight-lane groups.
     (void)wide;
@@ -283,14 +285,14 @@ void storeWide(const WideContacts& wide, std::span<ContactConstraint> constraint
     }
 }
 
-void warmStartWide(const WideContacts& wide, std::span<BodyState> states) {
-    warmStartWide(wide, 0, static_cast<int>(wide.levelStart.size()) - 1, states);
+void warmStartWide(const WideContacts& wide) {
+    warmStartWide(wide, 0, static_cast<int>(wide.levelStart.size()) - 1);
 }
 
-void solveWide(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
-               float pushMaxSpeed, bool backward, bool reversePoints) {
-    solveWide(wide, 0, static_cast<int>(wide.levelStart.size()) - 1, states, invH, useBias,
-              pushMaxSpeed, backward, reversePoints);
+void solveWide(WideContacts& wide, float invH, bool useBias, float pushMaxSpeed, bool backward,
+               bool reversePoints) {
+    solveWide(wide, 0, static_cast<int>(wide.levelStart.size()) - 1, invH, useBias, pushMaxSpeed,
+              backward, reversePoints);
 }
 
 namespace {
@@ -344,29 +346,23 @@ void solveLevels(WideContacts& wide, std::span<const int> levels, float invH, bo
 
 } // namespace
 
-void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
-                   std::span<BodyState> states) {
-    (void)states; // the groups' own addresses into them (see warmStartLevels())
+void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel) {
     warmStartLevels(wide, levelRange(wide, firstLevel, endLevel));
 }
 
-void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyState> states,
-               float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints) {
-    (void)states;
+void solveWide(WideContacts& wide, int firstLevel, int endLevel, float invH, bool useBias,
+               float pushMaxSpeed, bool backward, bool reversePoints) {
     solveLevels(wide, levelRange(wide, firstLevel, endLevel), invH, useBias, pushMaxSpeed, backward,
                 reversePoints);
 }
 
-void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd,
-                         std::span<BodyState> states) {
-    (void)states;
+void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd) {
     const int groups[2] = {groupBegin, groupEnd};
     warmStartLevels(wide, groups);
 }
 
-void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, std::span<BodyState> states,
-                     float invH, bool useBias, float pushMaxSpeed, bool reversePoints) {
-    (void)states;
+void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, float invH, bool useBias,
+                     float pushMaxSpeed, bool reversePoints) {
     const int groups[2] = {groupBegin, groupEnd};
     solveLevels(wide, groups, invH, useBias, pushMaxSpeed, false, reversePoints);
 }

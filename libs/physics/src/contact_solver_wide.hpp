@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 // The soft-step contact passes several constraints at a time. Mirrors warmStartContacts() and
@@ -92,97 +93,56 @@ void layoutWide(WideContacts& wide, std::span<const int> levelStart, int lanes);
 void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint& c,
                   std::span<BodyState> states);
 
-// What prepareContact() reads for N constraints, one per lane: the manifold, both sides'
-// ContactBodyView and the material. The world gathers a group's lanes here (setLane(),
-// clearLane()) and prepareWideGroup() turns them into the group's packed constraints, all
-// lanes at once, bit for bit what prepareContact() and packWideLane() give one at a time.
-template <int N>
-struct alignas(32) WideManifoldT {
-    int indexA[N];
-    int indexB[N];
-    int pointCount[N]; // 0: an empty lane
-    float normalX[N], normalY[N];
-    float offsetAx[N], offsetAy[N], offsetBx[N], offsetBy[N]; // ContactBodyView::centerOffset
-    float velocityAx[N], velocityAy[N], angularVelocityA[N];
-    float velocityBx[N], velocityBy[N], angularVelocityB[N];
-    float invMassAx[N], invMassAy[N], invMassBx[N], invMassBy[N];
-    float invInertiaA[N], invInertiaB[N];
-    float friction[N];
-    float biasRate[N], massScale[N], impulseScale[N];
-    struct Point {
-        float anchorAx[N], anchorAy[N], anchorBx[N], anchorBy[N];
-        float separation[N];
-        float normalImpulse[N], tangentImpulse[N];
-    };
-    Point points[2];
+// A row of four zero floats: the centre offset and masses of an empty lane (WideGatherT).
+alignas(16) inline constexpr float kZeroRow[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+// The manifold of an empty lane: no points.
+inline const Manifold kEmptyManifold{};
 
-    // Inlined into the world's gather loop (out of line its arguments go through memory).
-    [[gnu::always_inline]] void setLane(int lane, const Manifold& m, const ContactBodyView& a,
-                                        const ContactBodyView& b, float frictionOf,
-                                        Softness softness) {
-        indexA[lane] = a.stateIndex;
-        indexB[lane] = b.stateIndex;
-        pointCount[lane] = m.pointCount;
-        normalX[lane] = m.normal.x;
-        normalY[lane] = m.normal.y;
-        offsetAx[lane] = a.centerOffset.x;
-        offsetAy[lane] = a.centerOffset.y;
-        offsetBx[lane] = b.centerOffset.x;
-        offsetBy[lane] = b.centerOffset.y;
-        velocityAx[lane] = a.linearVelocity.x;
-        velocityAy[lane] = a.linearVelocity.y;
-        angularVelocityA[lane] = a.angularVelocity;
-        velocityBx[lane] = b.linearVelocity.x;
-        velocityBy[lane] = b.linearVelocity.y;
-        angularVelocityB[lane] = b.angularVelocity;
-        invMassAx[lane] = a.invMass.x;
-        invMassAy[lane] = a.invMass.y;
-        invMassBx[lane] = b.invMass.x;
-        invMassBy[lane] = b.invMass.y;
-        invInertiaA[lane] = a.invInertia;
-        invInertiaB[lane] = b.invInertia;
-        friction[lane] = frictionOf;
-        biasRate[lane] = softness.biasRate;
-        massScale[lane] = softness.massScale;
-        impulseScale[lane] = softness.impulseScale;
-        for (int i = 0; i < 2; ++i) {
-            // A missing point's inputs are zero; prepareWideGroup() zeroes its outputs anyway.
-            // (Field by field: a copy of the whole ManifoldPoint or a default one cost 18
-            // instructions a contact.)
-            Point& p = points[i];
-            if (i < m.pointCount) {
-                const ManifoldPoint& mp = m.points[i];
-                p.anchorAx[lane] = mp.anchorA.x;
-                p.anchorAy[lane] = mp.anchorA.y;
-                p.anchorBx[lane] = mp.anchorB.x;
-                p.anchorBy[lane] = mp.anchorB.y;
-                p.separation[lane] = mp.separation;
-                p.normalImpulse[lane] = mp.normalImpulse;
-                p.tangentImpulse[lane] = mp.tangentImpulse;
-            } else {
-                p.anchorAx[lane] = 0.0f;
-                p.anchorAy[lane] = 0.0f;
-                p.anchorBx[lane] = 0.0f;
-                p.anchorBy[lane] = 0.0f;
-                p.separation[lane] = 0.0f;
-                p.normalImpulse[lane] = 0.0f;
-                p.tangentImpulse[lane] = 0.0f;
-            }
-        }
-    }
+// Where prepareWideGroup() reads what prepareContact() reads for N constraints, one per lane:
+// the manifold itself, and each side's ContactBodyView as rows of four floats read whole (their
+// last floats are not used), so that a group's lanes are gathered with a few loads and
+// shuffles instead of copied field by field. A side's velocity is its state's (states[index]),
+// a static side's zero. Empty lanes: kEmptyManifold, kZeroRow and index -1 everywhere.
+template <int N>
+struct WideGatherT {
+    const Manifold* manifold[N];
+    // {centerOffset.x, centerOffset.y, -, -} and {invMass.x, invMass.y, invInertia, -} of
+    // each side (in the world: BodySim::centerOffset and BodySim::invMass, or a static side's
+    // offset and kZeroRow).
+    const float* offsetA[N];
+    const float* offsetB[N];
+    const float* massA[N];
+    const float* massB[N];
+    int indexA[N]; // ContactBodyView::stateIndex
+    int indexB[N];
+    float friction[N];
+    // The lane's softness: vsStatic where a side is rigid (no mass, no inertia: a static side
+    // too), as the world picks it; an empty lane gets Softness{}.
+    Softness dynamic;
+    Softness vsStatic;
 
     // An empty lane: no bodies, no points; it packs as ContactConstraint{} does.
     void clearLane(int lane) {
-        setLane(lane, Manifold{}, ContactBodyView{}, ContactBodyView{}, 0.0f, Softness{});
+        manifold[lane] = &kEmptyManifold;
+        offsetA[lane] = kZeroRow;
+        offsetB[lane] = kZeroRow;
+        massA[lane] = kZeroRow;
+        massB[lane] = kZeroRow;
+        indexA[lane] = -1;
+        indexB[lane] = -1;
+        friction[lane] = 0.0f;
     }
 };
 
-// Prepares and packs the group of constraints `group` from `in` (see WideManifoldT), whose
-// bodies are in `states` (the array the passes then run on). The lane count must be wide.lanes.
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<4>& in,
-                      std::span<BodyState> states);
-void prepareWideGroup(WideContacts& wide, int group, const WideManifoldT<8>& in,
-                      std::span<BodyState> states);
+// Prepares and packs the group of constraints `group` from the lanes of `in` (see
+// WideGatherT), bit for bit what prepareContact() and packWideLane() give one at a time, all
+// lanes at once. Their bodies are in `states` (the array the passes then run on). The lane
+// count must be wide.lanes. Returns the lanes isPushedApart() holds pushed apart (on the
+// lane's softness), lane k in bit k.
+int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<4>& in,
+                     std::span<BodyState> states);
+int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<8>& in,
+                     std::span<BodyState> states);
 
 // Packs the constraints of each level, constraints[levelOrder[levelStart[k] ..
 // levelStart[k + 1])], into groups of `lanes` (the last group of a level padded with empty
@@ -209,52 +169,47 @@ struct WideRestitution {
 void applyRestitutionWide(WideContacts& wide, std::span<const WideRestitution> list,
                           std::span<BodyState> states, float threshold, float h);
 
-// What the step leaves in one lane for the world: per point, impulses (for next step's warm
-// start) and the impact bookkeeping (hit events). mayHit: whether a point was pushed on
-// (maxNormalImpulse > 0) while approaching faster than the visit's hit threshold; where it is
-// false, relativeVelocity and maxNormalImpulse are not filled in (a resting pile: every lane).
-struct WideLaneResult {
-    float normalImpulse[2];
-    float tangentImpulse[2];
-    bool mayHit;
+// What a lane that may hit leaves for the world's hit events, per point: whether a point was
+// pushed on (maxNormalImpulse > 0) while approaching faster than the store's hit threshold
+// (-relativeVelocity). The other lanes (a resting pile: every lane) skip it.
+struct WideLaneHit {
     float relativeVelocity[2];
     float maxNormalImpulse[2];
 };
 
-// Calls visit(slot, result) for every packed constraint, slot being its place in level order
-// (level k holds slots [levelStart[k], levelStart[k + 1])), in slot order; hitThreshold: the
-// approach speed above which a lane may hit (WideLaneResult::mayHit).
-template <class Visit>
-void visitWide(const WideContacts& wide, std::span<const int> levelStart, float hitThreshold,
-               Visit&& visit);
-// The same over levels [firstLevel, endLevel) only.
-template <class Visit>
-void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
-               int endLevel, float hitThreshold, Visit&& visit);
+// Stores what the step leaves in each packed constraint of levels [firstLevel, endLevel): its
+// impulses go to its manifold, manifoldOf(slot) (a Manifold&, the one it was prepared from,
+// for next step's warm start; its points only), and hit(slot, manifold, WideLaneHit) is
+// called for the lanes that may hit, slot being the constraint's place in level order (level
+// k holds slots [levelStart[k], levelStart[k + 1])), in slot order. hitThreshold: the
+// approach speed above which a lane may hit.
+template <class ManifoldOf, class Hit>
+void storeWideImpulses(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
+                       int endLevel, float hitThreshold, ManifoldOf&& manifoldOf, Hit&& hit);
 
 // warmStartContacts() and solveContacts() over every packed constraint, level after level
-// (backward: last level first; reversePoints: each constraint's points last to first).
-void warmStartWide(const WideContacts& wide, std::span<BodyState> states);
-void solveWide(WideContacts& wide, std::span<BodyState> states, float invH, bool useBias,
-               float pushMaxSpeed, bool backward, bool reversePoints);
+// (backward: last level first; reversePoints: each constraint's points last to first), on the
+// states the groups were prepared with (their bodies' addresses are in the groups).
+void warmStartWide(const WideContacts& wide);
+void solveWide(WideContacts& wide, float invH, bool useBias, float pushMaxSpeed, bool backward,
+               bool reversePoints);
 // The same over levels [firstLevel, endLevel) only.
-void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel,
-                   std::span<BodyState> states);
-void solveWide(WideContacts& wide, int firstLevel, int endLevel, std::span<BodyState> states,
-               float invH, bool useBias, float pushMaxSpeed, bool backward, bool reversePoints);
+void warmStartWide(const WideContacts& wide, int firstLevel, int endLevel);
+void solveWide(WideContacts& wide, int firstLevel, int endLevel, float invH, bool useBias,
+               float pushMaxSpeed, bool backward, bool reversePoints);
 
 // The same over the groups [groupBegin, groupEnd) of level `level` only.
-template <class Visit>
-void visitWideGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
-                     int groupBegin, int groupEnd, float hitThreshold, Visit&& visit);
+template <class ManifoldOf, class Hit>
+void storeWideImpulsesOfGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
+                               int groupBegin, int groupEnd, float hitThreshold,
+                               ManifoldOf&& manifoldOf, Hit&& hit);
 
 // warmStartWide() and solveWide() over the packed groups [groupBegin, groupEnd) of one level
 // (its constraints share no moving body: any part of a level may run while another worker
 // runs another part).
-void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd,
-                         std::span<BodyState> states);
-void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, std::span<BodyState> states,
-                     float invH, bool useBias, float pushMaxSpeed, bool reversePoints);
+void warmStartWideGroups(const WideContacts& wide, int groupBegin, int groupEnd);
+void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, float invH, bool useBias,
+                     float pushMaxSpeed, bool reversePoints);
 
 // The lanes of `group` whose points may hit: pushed on (maxNormalImpulse > 0) while
 // approaching faster than `threshold` (-relativeVelocity > threshold); lane k in bit k.
@@ -263,88 +218,62 @@ int hitLanes(const WideConstraintT<8>& group, float threshold);
 
 namespace wide_detail {
 
-// Visits group g's lanes, the first holding slot `first`, up to slot `end`.
-template <int N, class Visit>
-[[gnu::always_inline]] inline void visitGroup(const std::vector<WideConstraintT<N>>& groups, int g,
+// Stores group g's lanes, the first holding slot `first`, up to slot `end`.
+template <int N, class ManifoldOf, class Hit>
+[[gnu::always_inline]] inline void storeGroup(const std::vector<WideConstraintT<N>>& groups, int g,
                                               int first, int end, float hitThreshold,
-                                              Visit& visit) {
-    WideLaneResult r;
+                                              ManifoldOf& manifoldOf, Hit& hit) {
     const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
     // The world's test for a hit, on all lanes at once (missing points have no impulse).
     const int mayHit = hitLanes(w, hitThreshold);
-    for (int lane = 0; lane < N && first + lane < end; ++lane) {
-        r.mayHit = ((mayHit >> lane) & 1) != 0;
-        for (int i = 0; i < 2; ++i) {
-            const WidePointT<N>& wp = w.points[i];
-            r.normalImpulse[i] = wp.normalImpulse[lane];
-            r.tangentImpulse[i] = wp.tangentImpulse[lane];
-            if (r.mayHit) {
-                r.relativeVelocity[i] = wp.relativeVelocity[lane];
-                r.maxNormalImpulse[i] = wp.maxNormalImpulse[lane];
+    const int used = std::min(N, end - first);
+    for (int lane = 0; lane < used; ++lane) {
+        Manifold& m = manifoldOf(first + lane);
+        for (int i = 0; i < m.pointCount; ++i) {
+            m.points[i].normalImpulse = w.points[i].normalImpulse[lane];
+            m.points[i].tangentImpulse = w.points[i].tangentImpulse[lane];
+        }
+        if (((mayHit >> lane) & 1) != 0) {
+            WideLaneHit h;
+            for (int i = 0; i < 2; ++i) {
+                h.relativeVelocity[i] = w.points[i].relativeVelocity[lane];
+                h.maxNormalImpulse[i] = w.points[i].maxNormalImpulse[lane];
             }
+            hit(first + lane, static_cast<const Manifold&>(m), h);
         }
-        visit(first + lane, r);
-    }
-}
-
-template <int N, class Visit>
-void visitLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
-                std::span<const int> levelStart, std::size_t firstLevel, std::size_t endLevel,
-                float hitThreshold, Visit& visit) {
-    for (std::size_t k = firstLevel; k < endLevel; ++k) {
-        const int end = levelStart[k + 1];
-        int g = wideStart[k];
-        for (int first = levelStart[k]; first < end; first += N, ++g) {
-            visitGroup(groups, g, first, end, hitThreshold, visit);
-        }
-    }
-}
-
-template <int N, class Visit>
-void visitGroups(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
-                 std::span<const int> levelStart, std::size_t level, int groupBegin, int groupEnd,
-                 float hitThreshold, Visit& visit) {
-    const int end = levelStart[level + 1];
-    for (int g = groupBegin; g < groupEnd; ++g) {
-        visitGroup(groups, g, levelStart[level] + (g - wideStart[level]) * N, end, hitThreshold,
-                   visit);
     }
 }
 
 } // namespace wide_detail
 
-template <class Visit>
-void visitWideGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
-                     int groupBegin, int groupEnd, float hitThreshold, Visit&& visit) {
+template <class ManifoldOf, class Hit>
+void storeWideImpulsesOfGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
+                               int groupBegin, int groupEnd, float hitThreshold,
+                               ManifoldOf&& manifoldOf, Hit&& hit) {
     const auto at = static_cast<std::size_t>(level);
+    const int end = levelStart[at + 1];
+    auto run = [&](const auto& groups, auto lanes) {
+        constexpr int N = decltype(lanes)::value;
+        for (int g = groupBegin; g < groupEnd; ++g) {
+            wide_detail::storeGroup<N>(groups, g, levelStart[at] + (g - wide.levelStart[at]) * N,
+                                       end, hitThreshold, manifoldOf, hit);
+        }
+    };
     if (wide.lanes == 8) {
-        wide_detail::visitGroups(wide.constraints8, wide.levelStart, levelStart, at, groupBegin,
-                                 groupEnd, hitThreshold, visit);
+        run(wide.constraints8, std::integral_constant<int, 8>{});
     } else {
-        wide_detail::visitGroups(wide.constraints4, wide.levelStart, levelStart, at, groupBegin,
-                                 groupEnd, hitThreshold, visit);
+        run(wide.constraints4, std::integral_constant<int, 4>{});
     }
 }
 
-template <class Visit>
-void visitWide(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
-               int endLevel, float hitThreshold, Visit&& visit) {
-    const auto first = static_cast<std::size_t>(firstLevel);
-    const auto end = static_cast<std::size_t>(std::max(endLevel, firstLevel));
-    if (wide.lanes == 8) {
-        wide_detail::visitLanes(wide.constraints8, wide.levelStart, levelStart, first, end,
-                                hitThreshold, visit);
-    } else {
-        wide_detail::visitLanes(wide.constraints4, wide.levelStart, levelStart, first, end,
-                                hitThreshold, visit);
+template <class ManifoldOf, class Hit>
+void storeWideImpulses(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
+                       int endLevel, float hitThreshold, ManifoldOf&& manifoldOf, Hit&& hit) {
+    for (int level = firstLevel; level < endLevel; ++level) {
+        const auto at = static_cast<std::size_t>(level);
+        storeWideImpulsesOfGroups(wide, levelStart, level, wide.levelStart[at],
+                                  wide.levelStart[at + 1], hitThreshold, manifoldOf, hit);
     }
-}
-
-template <class Visit>
-void visitWide(const WideContacts& wide, std::span<const int> levelStart, float hitThreshold,
-               Visit&& visit) {
-    visitWide(wide, levelStart, 0, levelStart.empty() ? 0 : static_cast<int>(levelStart.size()) - 1,
-              hitThreshold, visit);
 }
 
 } // namespace e2d::physics::detail

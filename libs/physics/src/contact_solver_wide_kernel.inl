@@ -329,7 +329,7 @@ E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<const int
     }
 }
 
-// The lanes of `c` that may hit (WideLaneResult::mayHit), lane k in bit k.
+// The lanes of `c` that may hit (WideLaneHit), lane k in bit k.
 E2D_WIDE_FN int hitLanes(const Constraint& c, float threshold) {
     I mayHit = I{};
     for (const Point& cp : c.points) {
@@ -342,7 +342,7 @@ E2D_WIDE_FN int hitLanes(const Constraint& c, float threshold) {
 
 // --- Prepare: prepareContact(), prepareBlock() and packLane() on every lane at once ---
 
-using Manifolds = WideManifoldT<N>;
+using Gather = WideGatherT<N>;
 
 E2D_WIDE_FN F vectorOf(const float (&x)[N]) {
     F v;
@@ -350,11 +350,16 @@ E2D_WIDE_FN F vectorOf(const float (&x)[N]) {
     return v;
 }
 
-E2D_WIDE_FN I vectorOf(const int (&x)[N]) {
-    I v;
-    std::memcpy(&v, x, sizeof v);
-    return v;
-}
+// The manifold rows prepareGroup() reads: {normal, -, -}, and per point {anchorA, anchorB} and
+// {separation, normalImpulse, tangentImpulse, -} (the last float is the id's bytes, not used).
+static_assert(offsetof(Manifold, normal) == 0 && sizeof(ManifoldPoint) == 40 &&
+                  offsetof(ManifoldPoint, anchorB) == offsetof(ManifoldPoint, anchorA) + 8 &&
+                  offsetof(ManifoldPoint, normalImpulse) ==
+                      offsetof(ManifoldPoint, separation) + 4 &&
+                  offsetof(ManifoldPoint, tangentImpulse) ==
+                      offsetof(ManifoldPoint, separation) + 8 &&
+                  offsetof(ManifoldPoint, separation) + 16 <= sizeof(ManifoldPoint),
+              "prepareGroup() reads Manifold rows of four floats");
 
 // leverRounding().
 E2D_WIDE_FN F leverRoundingOf(const Constraint& c, F rAx, F rAy, F rBx, F rBy) {
@@ -375,59 +380,81 @@ E2D_WIDE_FN F effectiveMassOf(const Constraint& c, F ax, F ay, F rAx, F rAy, F r
     return select(positive, splat(1.0f) / select(positive, k, splat(1.0f)), zero);
 }
 
-// `states`: the array the group's bodies are in.
-E2D_WIDE_FN void prepareGroup(const Manifolds& in, Constraint& c, BodyState* states) {
+// A softness field: Softness{}'s in `empty` lanes, else vsStatic's in `rigid` ones, else
+// dynamic's.
+E2D_WIDE_FN F softnessOf(I empty, I rigid, const Gather& in, float Softness::*field) {
+    return select(empty, splat(Softness{}.*field),
+                  select(rigid, splat(in.vsStatic.*field), splat(in.dynamic.*field)));
+}
+
+// `states`: the array the group's bodies are in. Returns the lanes isPushedApart() holds pushed
+// apart (prepareWideGroup()).
+E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states) {
     const F zero = splat(0.0f);
     const F one = splat(1.0f);
     std::memcpy(c.indexA, in.indexA, sizeof c.indexA);
     std::memcpy(c.indexB, in.indexB, sizeof c.indexB);
     bodiesAt(in.indexA, states, &c.pad, c.bodyA);
     bodiesAt(in.indexB, states, &c.pad, c.bodyB);
-    const I count = vectorOf(in.pointCount);
-    const F nx = vectorOf(in.normalX);
-    const F ny = vectorOf(in.normalY);
+    // Static sides and empty lanes read the pad: at rest, as ContactBodyView{} is.
+    resetPad(c);
+    int pointCount[N];
+    for (int lane = 0; lane < N; ++lane) {
+        pointCount[lane] = in.manifold[lane]->pointCount;
+    }
+    I count;
+    std::memcpy(&count, pointCount, sizeof count);
+    F nx, ny, unused0, unused1;
+    loadRows(in.manifold, offsetof(Manifold, normal), nx, ny, unused0, unused1);
     c.normalX = nx;
     c.normalY = ny;
-    c.invMassAx = vectorOf(in.invMassAx);
-    c.invMassAy = vectorOf(in.invMassAy);
-    c.invMassBx = vectorOf(in.invMassBx);
-    c.invMassBy = vectorOf(in.invMassBy);
-    c.invInertiaA = vectorOf(in.invInertiaA);
-    c.invInertiaB = vectorOf(in.invInertiaB);
+    F oAx, oAy, oBx, oBy;
+    loadRows(in.offsetA, 0, oAx, oAy, unused0, unused1);
+    loadRows(in.offsetB, 0, oBx, oBy, unused0, unused1);
+    loadRows(in.massA, 0, c.invMassAx, c.invMassAy, c.invInertiaA, unused0);
+    loadRows(in.massB, 0, c.invMassBx, c.invMassBy, c.invInertiaB, unused0);
+    F vAx, vAy, wA, vBx, vBy, wB;
+    loadRows(c.bodyA, 0, vAx, vAy, wA, unused0);
+    loadRows(c.bodyB, 0, vBx, vBy, wB, unused0);
     c.friction = vectorOf(in.friction);
-    c.biasRate = vectorOf(in.biasRate);
-    c.massScale = vectorOf(in.massScale);
-    c.impulseScale = vectorOf(in.impulseScale);
-    const F oAx = vectorOf(in.offsetAx);
-    const F oAy = vectorOf(in.offsetAy);
-    const F oBx = vectorOf(in.offsetBx);
-    const F oBy = vectorOf(in.offsetBy);
-    const F vAx = vectorOf(in.velocityAx);
-    const F vAy = vectorOf(in.velocityAy);
-    const F wA = vectorOf(in.angularVelocityA);
-    const F vBx = vectorOf(in.velocityBx);
-    const F vBy = vectorOf(in.velocityBy);
-    const F wB = vectorOf(in.angularVelocityB);
+    // The world's choice of softness (vsStatic against a rigid side), Softness{} in empty lanes.
+    const I rigid = ((c.invMassAx == zero) & (c.invMassAy == zero) & (c.invInertiaA == zero)) |
+                    ((c.invMassBx == zero) & (c.invMassBy == zero) & (c.invInertiaB == zero));
+    const I empty = count == 0;
+    c.biasRate = softnessOf(empty, rigid, in, &Softness::biasRate);
+    c.massScale = softnessOf(empty, rigid, in, &Softness::massScale);
+    c.impulseScale = softnessOf(empty, rigid, in, &Softness::impulseScale);
+    // Per point, isPushedApart()'s first test and what its second reads.
+    I deep = I{};
+    F depth[2];
     const F tx = ny;
     const F ty = -nx;
     for (int i = 0; i < 2; ++i) {
-        const typename Manifolds::Point& mp = in.points[i];
         Point& cp = c.points[i];
-        // A missing point (or an empty lane) packs as ContactConstraintPoint{}: all zero.
+        // A missing point (or an empty lane) packs as ContactConstraintPoint{}: all zero. What
+        // the manifold holds there is read but never kept.
         const I present = count > i;
-        F rAx = vectorOf(mp.anchorAx) - oAx;
-        F rAy = vectorOf(mp.anchorAy) - oAy;
-        F rBx = vectorOf(mp.anchorBx) - oBx;
-        F rBy = vectorOf(mp.anchorBy) - oBy;
-        const F separation = vectorOf(mp.separation);
+        const std::size_t at = offsetof(Manifold, points) + sizeof(ManifoldPoint) * i;
+        F anchorAx, anchorAy, anchorBx, anchorBy, separation, normalImpulse, tangentImpulse;
+        loadRows(in.manifold, at + offsetof(ManifoldPoint, anchorA), anchorAx, anchorAy, anchorBx,
+                 anchorBy);
+        loadRows(in.manifold, at + offsetof(ManifoldPoint, separation), separation, normalImpulse,
+                 tangentImpulse, unused0);
+        // isPushedApart()'s first test.
+        deep |= present & (separation < splat(-kLinearSlop));
+        depth[i] = select(present, -separation, zero);
+        F rAx = anchorAx - oAx;
+        F rAy = anchorAy - oAy;
+        F rBx = anchorBx - oBx;
+        F rBy = anchorBy - oBy;
         cp.anchorAx = select(present, rAx, zero);
         cp.anchorAy = select(present, rAy, zero);
         cp.anchorBx = select(present, rBx, zero);
         cp.anchorBy = select(present, rBy, zero);
         cp.baseSeparation =
             select(present, separation - ((rBx - rAx) * nx + (rBy - rAy) * ny), zero);
-        cp.normalImpulse = select(present, vectorOf(mp.normalImpulse), zero);
-        cp.tangentImpulse = select(present, vectorOf(mp.tangentImpulse), zero);
+        cp.normalImpulse = select(present, normalImpulse, zero);
+        cp.tangentImpulse = select(present, tangentImpulse, zero);
         cp.maxNormalImpulse = zero;
         cp.normalMass = select(present, effectiveMassOf(c, nx, ny, rAx, rAy, rBx, rBy), zero);
         cp.tangentMass = select(present, effectiveMassOf(c, tx, ty, rAx, rAy, rBx, rBy), zero);
@@ -451,9 +478,29 @@ E2D_WIDE_FN void prepareGroup(const Manifolds& in, Constraint& c, BodyState* sta
     F rn2B = p2.anchorBx * ny - p2.anchorBy * nx;
     F k11 = linear + c.invInertiaA * rn1A * rn1A + c.invInertiaB * rn1B * rn1B;
     F k22 = linear + c.invInertiaA * rn2A * rn2A + c.invInertiaB * rn2B * rn2B;
+    F k12 = linear + c.invInertiaA * rn1A * rn2A + c.invInertiaB * rn1B * rn2B;
+    // isDeepPushedApart(): K's rows (before the rounding term; K21 rounds apart from K12) times
+    // the stored impulses, against the overlaps.
+    {
+        const I two = count == 2;
+        const F k21 = linear + c.invInertiaA * rn2A * rn1A + c.invInertiaB * rn2B * rn1B;
+        const F stiffness = c.massScale * c.biasRate;
+        const I soft = stiffness > zero;
+        const F restPerImpulse =
+            splat(kPushOutRestMargin) * c.impulseScale / select(soft, stiffness, one);
+        const F lambda1 = p1.normalImpulse;
+        const F lambda2 = p2.normalImpulse;
+        F load1 = zero + k11 * lambda1;
+        F load2 = zero + k21 * lambda1;
+        load1 = select(two, load1 + k12 * lambda2, load1);
+        load2 = select(two, load2 + k22 * lambda2, load2);
+        const I beyond1 = depth[0] > splat(kLinearSlop) + restPerImpulse * maxOf(load1, zero);
+        const I beyond2 =
+            two & (depth[1] > splat(kLinearSlop) + restPerImpulse * maxOf(load2, zero));
+        deep &= soft & (beyond1 | beyond2);
+    }
     k11 = k11 + leverRoundingOf(c, p1.anchorAx, p1.anchorAy, p1.anchorBx, p1.anchorBy);
     k22 = k22 + leverRoundingOf(c, p2.anchorAx, p2.anchorAy, p2.anchorBx, p2.anchorBy);
-    F k12 = linear + c.invInertiaA * rn1A * rn2A + c.invInertiaB * rn1B * rn2B;
     F det = k11 * k22 - k12 * k12;
     const I block = (count == 2) & (k11 * k11 < splat(kMaxBlockConditionNumber) * det) &
                     (det >= splat(kMinBlockDeterminant));
@@ -465,6 +512,7 @@ E2D_WIDE_FN void prepareGroup(const Manifolds& in, Constraint& c, BodyState* sta
     c.inv11 = select(block, invDet * k22, one);
     c.inv12 = select(block, -invDet * k12, zero);
     c.inv22 = select(block, invDet * k11, one);
-    c.blockSolve = block | (count == 0);
+    c.blockSolve = block | empty;
     c.twoPoints = count == 2;
+    return laneBits(deep);
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <e2d/physics/manifold.hpp>
 
+#include "manifold_circles.hpp"
 #include "manifold_detail.hpp"
 #include "shape_detail.hpp"
 #include "sse_lanes.hpp"
@@ -45,13 +46,6 @@ inline Manifold onePoint(Vec2 normal, Vec2 point, Vec2 anchorA, Vec2 anchorB, fl
     m.points[0].separation = separation;
     m.pointCount = 1;
     return m;
-}
-
-// Both circles centred on their bodies (centres +0, as most are): the centres need no rotation.
-// Compared as bits, so a centre of -0 takes the general path (which it matches but for signed
-// zeros). Both collideCircles paths test this, so they stay bit-identical.
-inline bool bothCentred(const Circle& a, const Circle& b) {
-    return (std::bit_cast<std::uint64_t>(a.center) | std::bit_cast<std::uint64_t>(b.center)) == 0;
 }
 
 // One point between two round features: cores at pA and pB (A's frame) `distance` apart along
@@ -113,13 +107,6 @@ struct FaceSeparation {
 using detail::sse::padLanes;
 using detail::sse::splat;
 
-// Lanes of v in the order `Imm` (_MM_SHUFFLE) names: one pshufd where shufps of a register
-// with itself needs a copy first.
-template <int Imm>
-inline __m128 permute(__m128 v) {
-    return _mm_castsi128_ps(_mm_shuffle_epi32(_mm_castps_si128(v), Imm));
-}
-
 inline __m128 maxAcrossLanes(__m128 v) {
     v = _mm_max_ps(_mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1)), v);
     return _mm_max_ps(_mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 0, 3, 2)), v);
@@ -170,81 +157,9 @@ inline FaceSeparation maxFaceSeparation(const Polygon& a, __m128 cx, __m128 cy) 
 
 #if E2D_ROUND_SSE2
 
-// The SSE2 circle pair builds the Manifold's bytes in registers: these are the offsets it
-// writes (normal and first point's world point, the two anchors, the separation and the
-// zeros after it, the second point, the count).
-static_assert(offsetof(Manifold, normal) == 0 && offsetof(Manifold, points) == 8);
-static_assert(offsetof(ManifoldPoint, point) == 0 && offsetof(ManifoldPoint, anchorA) == 8 &&
-              offsetof(ManifoldPoint, anchorB) == 16 && offsetof(ManifoldPoint, separation) == 24 &&
-              offsetof(ManifoldPoint, normalImpulse) == 28 && sizeof(ManifoldPoint) == 40);
-static_assert(offsetof(Manifold, pointCount) == 88 && sizeof(Manifold) == 92);
-
 Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
                         const Transform& xfB, float margin) {
-    // The scalar routine below (the #else branch) two lanes at a time: both centres rotated in
-    // one register (centred circles skip it, as there), the normal divided in one instruction,
-    // the result stored as 16-byte blocks instead of one store per field. Each lane does the scalar code's products and sums
-    // in its order (a - b as a + -b, which is exact), so the Manifold is bit-identical to it
-    // (manifold_round_scalar_test).
-    const __m128 tA = _mm_loadu_ps(&xfA.p.x); // pA.x pA.y cA sA
-    const __m128 tB = _mm_loadu_ps(&xfB.p.x);
-    // cA and cB in lanes 0-1 (lanes 2-3 hold finite leftovers, not read).
-    __m128 cA = _mm_setzero_ps();
-    __m128 cB = _mm_sub_ps(tB, tA);
-    if (!bothCentred(a, b)) {
-        const __m128 centres = _mm_loadh_pi(
-            _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&a.center.x))),
-            reinterpret_cast<const __m64*>(&b.center.x)); // a.x a.y b.x b.y
-        const __m128 cosSin = _mm_shuffle_ps(tA, tB, _MM_SHUFFLE(3, 2, 3, 2));
-        // Lanes 0-1 rotate(qA, a.center), lanes 2-3 rotate(qB, b.center).
-        cA = _mm_add_ps(_mm_mul_ps(cosSin, permute<_MM_SHUFFLE(2, 2, 0, 0)>(centres)),
-                        _mm_xor_ps(_mm_mul_ps(permute<_MM_SHUFFLE(2, 3, 0, 1)>(cosSin),
-                                              permute<_MM_SHUFFLE(3, 3, 1, 1)>(centres)),
-                                   _mm_setr_ps(-0.0f, 0.0f, -0.0f, 0.0f)));
-        cB = _mm_add_ps(permute<_MM_SHUFFLE(3, 2, 3, 2)>(cA), cB);
-    }
-    const __m128 d = _mm_sub_ps(cB, cA);
-    const __m128 dd = _mm_mul_ps(d, d);
-    const __m128 distSq = _mm_add_ss(dd, splat<1>(dd));
-    // The radii loaded as vectors (upper lanes zero): the separation is stored from one.
-    // (Sums written b + a where the scalar code has a + b: the same value, and a.radius is then
-    // read from memory by the addition instead of kept in a register.)
-    const __m128 radius = _mm_add_ss(_mm_load_ss(&b.radius), _mm_load_ss(&a.radius));
-    const float limit = _mm_cvtss_f32(radius) + margin;
-    if (_mm_cvtss_f32(distSq) > limit * limit) {
-        return Manifold{};
-    }
-    const __m128 dist = _mm_sqrt_ss(distSq);
-    __m128 normal;
-    if (_mm_cvtss_f32(dist) > FLT_EPSILON) [[likely]] {
-        normal = _mm_div_ps(d, splat<0>(dist));
-    } else {
-        // Concentric: A's x axis, as below.
-        normal = permute<_MM_SHUFFLE(3, 2, 3, 2)>(tA);
-    }
-    const __m128 separation = _mm_sub_ss(dist, radius);
-    const __m128 anchorA =
-        _mm_add_ps(cA, _mm_mul_ps(splat<0>(_mm_add_ss(_mm_mul_ss(_mm_set_ss(0.5f), separation),
-                                                      _mm_load_ss(&a.radius))),
-                                  normal));
-    // Lanes 0-1 the world point (anchorA + pA), lanes 2-3 anchorB (anchorA + (pA - pB)).
-    const __m128 pointAnchorB =
-        _mm_add_ps(_mm_movelh_ps(anchorA, anchorA), _mm_movelh_ps(tA, _mm_sub_ps(tA, tB)));
-    Manifold m;
-    auto* bytes = reinterpret_cast<unsigned char*>(&m);
-    const __m128 zero = _mm_setzero_ps();
-    const __m128 blocks[3] = {_mm_movelh_ps(normal, pointAnchorB),
-                              _mm_shuffle_ps(anchorA, pointAnchorB, _MM_SHUFFLE(3, 2, 1, 0)),
-                              _mm_move_ss(zero, separation)};
-    std::memcpy(bytes, &blocks[0], 16);
-    std::memcpy(bytes + 16, &blocks[1], 16);
-    std::memcpy(bytes + 32, &blocks[2], 16);
-    std::memcpy(bytes + 48, &zero, 16);
-    std::memcpy(bytes + 64, &zero, 16);
-    // The second point's last 8 bytes and the count.
-    constexpr std::int32_t tail[3] = {0, 0, 1};
-    std::memcpy(bytes + 80, tail, sizeof tail);
-    return m;
+    return detail::collideCirclesSse2(a, xfA, b, xfB, margin);
 }
 
 #else
@@ -255,7 +170,7 @@ Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,
     // circles, and the anchors come out directly. Centred circles (most) skip the rotations.
     Vec2 cA{0.0f, 0.0f};
     Vec2 cB = xfB.p - xfA.p;
-    if (!bothCentred(a, b)) {
+    if (!detail::bothCentred(a, b)) {
         cA = rotate(xfA.q, a.center);
         cB = rotate(xfB.q, b.center) + cB;
     }

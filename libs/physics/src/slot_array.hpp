@@ -56,6 +56,9 @@ public:
     [[nodiscard]] bool empty() const { return size_ == 0; }
     T& operator[](std::size_t i) { return data_[i]; }
     const T& operator[](std::size_t i) const { return data_[i]; }
+    /// The first slot (null while the array has never held one).
+    [[nodiscard]] T* data() { return data_; }
+    [[nodiscard]] const T* data() const { return data_; }
 
     /// Room for `capacity` elements. Throws std::bad_alloc; the array is unchanged then.
     void reserve(std::size_t capacity) {

@@ -102,11 +102,11 @@ void runStage(int stageIndex, int block, int /*worker*/, void* context) {
         integrateVelocities(c.step.sims, c.step.states, bodies(), c.h, def.maxLinearSpeed);
         break;
     case SoftStage::Kind::WarmStart:
-        warmStartWideGroups(c.wide, begin, end, c.step.states);
+        warmStartWideGroups(c.wide, begin, end);
         break;
     case SoftStage::Kind::Solve:
-        solveWideGroups(c.wide, begin, end, c.step.states, 1.0f / c.h, stage.useBias,
-                        def.contactPushMaxSpeed, stage.reversePoints);
+        solveWideGroups(c.wide, begin, end, 1.0f / c.h, stage.useBias, def.contactPushMaxSpeed,
+                        stage.reversePoints);
         break;
     case SoftStage::Kind::IntegratePositions:
         integratePositions(c.step.states, bodies(), c.h, def.maxLinearSpeed);

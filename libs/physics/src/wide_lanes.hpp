@@ -16,8 +16,8 @@
 // Lane vectors for the passes that solve several constraints at a time (contacts, plain
 // hinges): the vector types of four and eight lanes and, per width, splat, select, maxOf,
 // anyLane, allLanes, laneBits, lanesOf and bodiesAt (where each lane reads and writes its body),
-// transposeRows, and loadRows/storeRows, which gather BodyStates into lane vectors and scatter
-// them back with shuffles only. Four lanes everywhere (SSE2 on x86-64, NEON on ARM64, plain
+// transposeRows, and loadRows/storeRows, which gather BodyStates (or any rows of four floats,
+// one per lane) into lane vectors and scatter BodyStates back with shuffles only. Four lanes everywhere (SSE2 on x86-64, NEON on ARM64, plain
 // scalar code where the target has no SIMD); eight on x86-64 (AVX2, E2D_HAS_WIDE8), for code
 // that checked the CPU at run time. No "fma" in the target: a fused multiply-add rounds once
 // where the scalar code rounds twice, so every width gives the scalar results.
@@ -82,7 +82,9 @@ static_assert(offsetof(BodyState, linearVelocity) == 0 &&
                   offsetof(BodyState, deltaRotation) == 24,
               "BodyState rows out of order");
 
-inline Float4 loadRow(const BodyState* s, std::size_t offset) {
+// The 16 bytes `offset` bytes into *s (a BodyState row, or four floats of another object).
+template <class T>
+inline Float4 loadRow(const T* s, std::size_t offset) {
     Float4 row;
     std::memcpy(&row, reinterpret_cast<const unsigned char*>(s) + offset, sizeof row);
     return row;
@@ -148,7 +150,9 @@ inline void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {
     c3 = __builtin_shufflevector(t2, t3, 2, 3, 6, 7);
 }
 
-inline void loadRows(const BodyState* const* s, std::size_t offset, F& c0, F& c1, F& c2, F& c3) {
+// Lane k's row (`offset` bytes into *s[k]) transposed: float j of it in lane k of c_j.
+template <class T>
+inline void loadRows(const T* const* s, std::size_t offset, F& c0, F& c1, F& c2, F& c3) {
     transposeRows(loadRow(s[0], offset), loadRow(s[1], offset), loadRow(s[2], offset),
                   loadRow(s[3], offset), c0, c1, c2, c3);
 }
@@ -193,13 +197,14 @@ E2D_AVX2_FN void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c
     c3 = __builtin_shufflevector(t2, t3, 2, 3, 10, 11, 6, 7, 14, 15);
 }
 
-E2D_AVX2_FN F joinRows(const BodyState* low, const BodyState* high, std::size_t offset) {
+template <class T>
+E2D_AVX2_FN F joinRows(const T* low, const T* high, std::size_t offset) {
     return __builtin_shufflevector(loadRow(low, offset), loadRow(high, offset), 0, 1, 2, 3, 4, 5, 6,
                                    7);
 }
 
-E2D_AVX2_FN void loadRows(const BodyState* const* s, std::size_t offset, F& c0, F& c1, F& c2,
-                          F& c3) {
+template <class T>
+E2D_AVX2_FN void loadRows(const T* const* s, std::size_t offset, F& c0, F& c1, F& c2, F& c3) {
     transposeRows(joinRows(s[0], s[4], offset), joinRows(s[1], s[5], offset),
                   joinRows(s[2], s[6], offset), joinRows(s[3], s[7], offset), c0, c1, c2, c3);
 }

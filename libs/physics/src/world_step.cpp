@@ -10,6 +10,7 @@
 #include "world_impl.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -411,19 +412,11 @@ void World::Impl::solve(float dt) {
     // Impulses go back to the manifolds for next step's warm start; a hit event for the
     // fastest approaching point of each, emitted in contact order at the end.
     s.hitCandidates.clear();
-    // mayHit false: no point can hit (the wide visit's test, WideLaneResult::mayHit), and
-    // relativeVelocity and maxNormalImpulse are not read.
-    auto store = [&](std::vector<detail::Simulation::HitCandidate>& hits, int contactIndex,
-                     int pointCount, const float* normalImpulse, const float* tangentImpulse,
-                     bool mayHit, const float* relativeVelocity, const float* maxNormalImpulse) {
-        detail::Contact& c = s.contacts[static_cast<std::size_t>(contactIndex)];
-        for (int j = 0; j < pointCount; ++j) {
-            c.manifold.points[j].normalImpulse = normalImpulse[j];
-            c.manifold.points[j].tangentImpulse = tangentImpulse[j];
-        }
-        if (!mayHit) {
-            return;
-        }
+    // A hit candidate for the fastest approaching point of contact `contactIndex` that was
+    // pushed on, if one approached faster than the threshold.
+    auto noteHit = [&](std::vector<detail::Simulation::HitCandidate>& hits, int contactIndex,
+                       int pointCount, const float* relativeVelocity,
+                       const float* maxNormalImpulse) {
         float fastest = def.hitEventThreshold;
         int fastestPoint = -1;
         for (int j = 0; j < pointCount; ++j) {
@@ -459,11 +452,11 @@ void World::Impl::solve(float dt) {
                     s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
             }
         };
-        // Group `group` of level `level`: its constraints gathered lane by lane and prepared all
-        // at once (prepareWideGroup()), right before its block is solved: no constraint array
-        // in between, and the block's contacts, lanes and bodies stay in cache through build,
-        // sub-steps and store. Appends its restitution entries; returns whether it holds shapes
-        // pushed apart.
+        // Group `group` of level `level`: where its constraints' manifolds and bodies are,
+        // gathered lane by lane, then prepared all at once (prepareWideGroup()), right before
+        // its block is solved: no constraint array in between, and the block's contacts, lanes
+        // and bodies stay in cache through build, sub-steps and store. Appends its restitution
+        // entries; returns whether it holds shapes pushed apart.
         auto buildGroup = [&](auto& in, int level, int group,
                               std::vector<detail::WideRestitution>& restitution) {
             constexpr int N = static_cast<int>(sizeof(in.indexA) / sizeof(in.indexA[0]));
@@ -472,30 +465,50 @@ void World::Impl::solve(float dt) {
             const int first =
                 levelFirst +
                 (group - s.wideContacts.levelStart[static_cast<std::size_t>(level)]) * N;
-            bool groupPushOut = false;
-            for (int lane = 0; lane < N; ++lane) {
-                const int slot = first + lane;
-                if (slot >= levelEnd) {
-                    in.clearLane(lane);
-                    continue;
+            // A static (or asleep) side's centre offset, viewOf()'s, as a row of four floats.
+            alignas(16) float staticOffset[2 * N][4];
+            auto sideRows = [&](int lane, int side, int bodyIndex, int solverIndex,
+                                const float*& offset, const float*& mass) {
+                if (solverIndex != kNullIndex) {
+                    const detail::BodySim& bs = s.sims[static_cast<std::size_t>(solverIndex)];
+                    offset = &bs.centerOffset.x;
+                    mass = &bs.invMass.x;
+                    return;
                 }
+                float(&row)[4] = staticOffset[2 * lane + side];
+                const Vec2 o = viewOf(bodyIndex, kNullIndex).centerOffset;
+                row[0] = o.x;
+                row[1] = o.y;
+                row[2] = 0.0f;
+                row[3] = 0.0f;
+                offset = row;
+                mass = detail::kZeroRow;
+            };
+            const int used = std::min(N, levelEnd - first);
+            for (int lane = 0; lane < used; ++lane) {
+                const int slot = first + lane;
                 prefetchContact(slot);
                 const auto at = static_cast<std::size_t>(slot);
                 const detail::Contact& c = s.contacts[static_cast<std::size_t>(s.slotContact[at])];
-                const detail::ContactBodyView a = viewOf(c.bodyA, s.slotBodies[at].indexA);
-                const detail::ContactBodyView b = viewOf(c.bodyB, s.slotBodies[at].indexB);
-                const detail::Softness laneSoftness = softnessOf(a, b);
-                in.setLane(lane, c.manifold, a, b, c.friction, laneSoftness);
-                // pushedApart() on the softness just picked (the wide path is soft-step).
-                groupPushOut =
-                    groupPushOut || detail::isPushedApart(c.manifold, a, b, laneSoftness);
+                const detail::Simulation::ConstraintBodies sides = s.slotBodies[at];
+                in.manifold[lane] = &c.manifold;
+                in.indexA[lane] = sides.indexA;
+                in.indexB[lane] = sides.indexB;
+                in.friction[lane] = c.friction;
+                sideRows(lane, 0, c.bodyA, sides.indexA, in.offsetA[lane], in.massA[lane]);
+                sideRows(lane, 1, c.bodyB, sides.indexB, in.offsetB[lane], in.massB[lane]);
                 if (c.restitution != 0.0f) {
-                    restitution.push_back({level, slot - levelFirst, c.manifold.pointCount,
-                                           c.restitution, pressOf(c, a, b), s.slotConstraint[at]});
+                    restitution.push_back(
+                        {level, slot - levelFirst, c.manifold.pointCount, c.restitution,
+                         pressOf(c, viewOf(c.bodyA, sides.indexA), viewOf(c.bodyB, sides.indexB)),
+                         s.slotConstraint[at]});
                 }
             }
-            detail::prepareWideGroup(s.wideContacts, group, in, s.states);
-            return groupPushOut;
+            for (int lane = used; lane < N; ++lane) {
+                in.clearLane(lane);
+            }
+            // pushedApart() on every lane (the wide path is soft-step).
+            return detail::prepareWideGroup(s.wideContacts, group, in, s.states) != 0;
         };
         // The level holding group `group` among levels [firstLevel, endLevel) (a group past
         // the last of a level is in the next non-empty one).
@@ -521,10 +534,14 @@ void World::Impl::solve(float dt) {
                 return pushOutHere;
             };
             if (s.wideContacts.lanes == 8) {
-                detail::WideManifoldT<8> lanes8;
+                detail::WideGatherT<8> lanes8;
+                lanes8.dynamic = softness.dynamic;
+                lanes8.vsStatic = softness.vsStatic;
                 return build(lanes8);
             }
-            detail::WideManifoldT<4> lanes4;
+            detail::WideGatherT<4> lanes4;
+            lanes4.dynamic = softness.dynamic;
+            lanes4.vsStatic = softness.vsStatic;
             return build(lanes4);
         };
         // applyRestitution() goes in constraint order.
@@ -534,14 +551,18 @@ void World::Impl::solve(float dt) {
                           return x.constraint < y.constraint;
                       });
         };
-        // Stores a lane's impulses in its contact's manifold, and its hit in `hits`.
-        auto storeLane = [&](std::vector<detail::Simulation::HitCandidate>& hits) {
-            return [&, out = &hits](int slot, const detail::WideLaneResult& r) {
-                prefetchContact(slot);
-                const int ci = s.slotContact[static_cast<std::size_t>(slot)];
-                store(*out, ci, s.contacts[static_cast<std::size_t>(ci)].manifold.pointCount,
-                      r.normalImpulse, r.tangentImpulse, r.mayHit, r.relativeVelocity,
-                      r.maxNormalImpulse);
+        // Where a slot's impulses go (detail::storeWideImpulses()): its contact's manifold.
+        auto manifoldOfSlot = [&](int slot) -> Manifold& {
+            prefetchContact(slot);
+            return s
+                .contacts[static_cast<std::size_t>(s.slotContact[static_cast<std::size_t>(slot)])]
+                .manifold;
+        };
+        // A slot's hit, noted in `hits`.
+        auto hitOfSlot = [&](std::vector<detail::Simulation::HitCandidate>& hits) {
+            return [&, out = &hits](int slot, const Manifold& m, const detail::WideLaneHit& h) {
+                noteHit(*out, s.slotContact[static_cast<std::size_t>(slot)], m.pointCount,
+                        h.relativeVelocity, h.maxNormalImpulse);
             };
         };
         const std::span<const int> blockBodies = s.blockBodies;
@@ -610,13 +631,14 @@ void World::Impl::solve(float dt) {
                                         bodiesOf(b), restitution, tasks, s.softStepStages);
             tasks.parallelFor(
                 groupEnd - groupBegin, kGroupsPerPiece, [&](int begin, int end, int worker) {
-                    auto visit = storeLane(s.blockWorkers[static_cast<std::size_t>(worker)].hits);
+                    auto hit = hitOfSlot(s.blockWorkers[static_cast<std::size_t>(worker)].hits);
                     int level = levelOfGroup(firstLevel, endLevel, groupBegin + begin);
                     for (int g = groupBegin + begin; g < groupBegin + end;) {
                         const int levelEnd = std::min(
                             groupStart[static_cast<std::size_t>(level) + 1], groupBegin + end);
-                        detail::visitWideGroups(s.wideContacts, s.levelStart, level, g, levelEnd,
-                                                def.hitEventThreshold, visit);
+                        detail::storeWideImpulsesOfGroups(s.wideContacts, s.levelStart, level, g,
+                                                          levelEnd, def.hitEventThreshold,
+                                                          manifoldOfSlot, hit);
                         g = levelEnd;
                         ++level;
                     }
@@ -659,8 +681,9 @@ void World::Impl::solve(float dt) {
                           .subspan(static_cast<std::size_t>(s.blockJointStart[b]),
                                    static_cast<std::size_t>(s.blockJointStart[b + 1] -
                                                             s.blockJointStart[b])));
-            detail::visitWide(s.wideContacts, s.levelStart, firstLevel, endLevel,
-                              def.hitEventThreshold, storeLane(worker.hits));
+            detail::storeWideImpulses(s.wideContacts, s.levelStart, firstLevel, endLevel,
+                                      def.hitEventThreshold, manifoldOfSlot,
+                                      hitOfSlot(worker.hits));
             if (impacts) {
                 worker.impacts.apply(s);
             }
@@ -733,18 +756,18 @@ void World::Impl::solve(float dt) {
             if (!s.contacts[static_cast<std::size_t>(cc.contactIndex)].alive) {
                 continue; // ended with a non-finite body
             }
-            float normalImpulse[2];
-            float tangentImpulse[2];
+            // Impulses back to the manifold for next step's warm start.
+            Manifold& m = s.contacts[static_cast<std::size_t>(cc.contactIndex)].manifold;
             float relativeVelocity[2];
             float maxNormalImpulse[2];
             for (int j = 0; j < cc.pointCount; ++j) {
-                normalImpulse[j] = cc.points[j].normalImpulse;
-                tangentImpulse[j] = cc.points[j].tangentImpulse;
+                m.points[j].normalImpulse = cc.points[j].normalImpulse;
+                m.points[j].tangentImpulse = cc.points[j].tangentImpulse;
                 relativeVelocity[j] = cc.points[j].relativeVelocity;
                 maxNormalImpulse[j] = cc.points[j].maxNormalImpulse;
             }
-            store(s.hitCandidates, cc.contactIndex, cc.pointCount, normalImpulse, tangentImpulse,
-                  true, relativeVelocity, maxNormalImpulse);
+            noteHit(s.hitCandidates, cc.contactIndex, cc.pointCount, relativeVelocity,
+                    maxNormalImpulse);
         }
     } else {
         std::sort(s.hitCandidates.begin(), s.hitCandidates.end(),

@@ -66,15 +66,26 @@ void World::Impl::writeBack(float dt) {
     detail::Simulation& s = sim;
     std::vector<BodyMoveEvent>& moveEvents = hooks.moveEvents;
     const int simCount = static_cast<int>(s.sims.size());
-    moveEvents.clear();
+    // Every event is written below (or dropped with its disabled body): no need to clear them
+    // first, which zeroed them all each step.
     moveEvents.resize(static_cast<std::size_t>(simCount));
     s.writeBackResults.resize(static_cast<std::size_t>(simCount));
     auto writePiece = [&](int begin, int end, int /*worker*/) {
+        // The arrays in locals: the stores below may alias them for the compiler, which then
+        // loaded them from the world again at every use.
+        const detail::BodySim* const sims = s.sims.data();
+        const detail::BodyState* const states = s.states.data();
+        unsigned char* const results = s.writeBackResults.data();
+        BodyMoveEvent* const events = moveEvents.data();
+        detail::Body* const bodySlots = bodies.data();
+        detail::Shape* const shapeSlots = shapes.data();
+        const detail::BroadPhase& bp = broadPhase;
+        const float stepDt = dt;
         for (int k = begin; k < end; ++k) {
-            const detail::BodySim& bs = s.sims[static_cast<std::size_t>(k)];
-            const detail::BodyState& st = s.states[static_cast<std::size_t>(k)];
-            unsigned char& result = s.writeBackResults[static_cast<std::size_t>(k)];
-            detail::Body& b = body(bs.bodyIndex);
+            const detail::BodySim& bs = sims[k];
+            const detail::BodyState& st = states[k];
+            unsigned char& result = results[k];
+            detail::Body& b = bodySlots[bs.bodyIndex];
             b.motion.force = {0.0f, 0.0f};
             b.motion.torque = 0.0f;
             if (!isWritable(bs, st)) [[unlikely]] {
@@ -87,22 +98,25 @@ void World::Impl::writeBack(float dt) {
             b.angularVelocity = st.angularVelocity;
             // The broad-phase box also covers where the body will be next step, so the pairs
             // (and speculative contacts) exist before a fast body arrives.
-            const Vec2 ahead = dt * b.linearVelocity;
-            result = kWritten;
-            for (int si = b.headShape; si != kNullIndex; si = shape(si).nextShape) {
-                detail::Shape& sh = shape(si);
+            const Vec2 ahead = stepDt * b.linearVelocity;
+            unsigned char written = kWritten;
+            for (int si = b.headShape; si != kNullIndex; si = shapeSlots[si].nextShape) {
+                detail::Shape& sh = shapeSlots[si];
                 sh.aabb = computeAabb(sh.geometry, b.transform);
-                if (sh.proxyKey != kNullIndex &&
-                    broadPhase.needsMove(sh.proxyKey, sh.aabb, ahead)) {
-                    result = kMoveProxies;
+                // An enabled body's shapes have live proxies (kNullIndex while disabled).
+                if (sh.proxyKey != kNullIndex && bp.needsMoveLive(sh.proxyKey, sh.aabb, ahead)) {
+                    written = kMoveProxies;
                 }
             }
+            result = written;
             // Field by field: a braced temporary is built on the stack and copied out in 16-byte
             // loads that wait for its 4-byte stores (a store-forwarding stall, about 1.5 % of the
             // joint grid's step).
-            BodyMoveEvent& event = moveEvents[static_cast<std::size_t>(k)];
-            event.body = bodyId(bs.bodyIndex);
+            BodyMoveEvent& event = events[k];
+            event.body =
+                BodyId::forSlot(static_cast<std::uint32_t>(bs.bodyIndex), b.generation, tag);
             event.transform = b.transform;
+            event.fellAsleep = false;
         }
     };
     // A body is about 30 ns.

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// The integration loops take four bodies a register where the target has SSE2: every body must
-// come out as the one-body (scalar) loop leaves it, bit for bit, the rare paths (a speed over
-// the cap, a non-finite value, a body already held still, a rotation that does not normalise)
-// mixed into groups of ordinary bodies included.
+// The integration loops take four bodies a register where the target has SSE2, and eight where
+// the machine has AVX2: every body must come out as the one-body (scalar) loop leaves it, bit
+// for bit, the rare paths (a speed over the cap, a non-finite value, a body already held still,
+// a rotation that does not normalise) mixed into groups of ordinary bodies included, and groups
+// of ordinary bodies alone (which take the lanes' own path).
 #include "../src/body_solver.hpp"
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include <limits>
 #include <numeric>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace e2d::physics::detail {
@@ -25,8 +27,8 @@ struct Bodies {
     std::vector<BodyState> states;
 };
 
-// Mostly ordinary bodies; every seventh one takes one of the rare cases.
-Bodies makeBodies(int count, unsigned seed) {
+// Mostly ordinary bodies; every `rareEvery`-th one takes one of the rare cases.
+Bodies makeBodies(int count, unsigned seed, int rareEvery = 7) {
     std::mt19937 random(seed);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
     Bodies b;
@@ -42,7 +44,7 @@ Bodies makeBodies(int count, unsigned seed) {
         st.deltaPosition = {0.1f * unit(random), 0.1f * unit(random)};
         const float angle = 3.0f * unit(random);
         st.deltaRotation = {std::cos(angle), std::sin(angle)};
-        switch (i % 7 == 6 ? (i / 7) % 7 : -1) {
+        switch (i % rareEvery == rareEvery - 1 ? (i / rareEvery) % 7 : -1) {
         case 0:
             st.linearVelocity = {900.0f, -700.0f}; // over the speed cap
             break;
@@ -85,8 +87,18 @@ void expectSameStates(const std::vector<BodyState>& got, const std::vector<BodyS
 }
 
 TEST(BodySolver, IntegrationLoopsMatchOneBodyAtATime) {
-    for (int count : {1, 3, 4, 7, 8, 50, 101}) {
-        Bodies all = makeBodies(count, static_cast<unsigned>(count));
+    // Every seventh body rare: no group of eight is free of one. Every 40th: most groups are.
+    for (const auto& [count, rareEvery] : {std::pair{1, 7},
+                                           {3, 7},
+                                           {4, 7},
+                                           {7, 7},
+                                           {8, 7},
+                                           {50, 7},
+                                           {101, 7},
+                                           {8, 40},
+                                           {13, 40},
+                                           {203, 40}}) {
+        Bodies all = makeBodies(count, static_cast<unsigned>(count), rareEvery);
         Bodies alone = all;
         for (int subStep = 0; subStep < 4; ++subStep) {
             integrateVelocities(std::span<const BodySim>(all.sims), all.states, kH, kMaxSpeed);
@@ -103,7 +115,7 @@ TEST(BodySolver, IntegrationLoopsMatchOneBodyAtATime) {
 
 TEST(BodySolver, IndexedIntegrationLoopsMatchOneBodyAtATime) {
     // A block's bodies: a subset of the states, in any order.
-    Bodies all = makeBodies(120, 5);
+    Bodies all = makeBodies(120, 5, 11);
     Bodies alone = all;
     std::vector<int> indices;
     for (int i = 0; i < 120; i += 1 + i % 3) {
@@ -120,6 +132,39 @@ TEST(BodySolver, IndexedIntegrationLoopsMatchOneBodyAtATime) {
             integratePositions(alone.states, one, kH, kMaxSpeed);
         }
         expectSameStates(all.states, alone.states);
+    }
+}
+
+TEST(BodySolver, FinalizePositionsMatchesOneBodyAtATime) {
+    // Four bodies a register where the target has SSE2: each must end as the one-body call
+    // leaves it, bit for bit, a rotation that does not normalise (zero) included.
+    for (int count : {1, 4, 7, 13}) {
+        Bodies all = makeBodies(count, static_cast<unsigned>(100 + count));
+        std::mt19937 random(static_cast<unsigned>(count));
+        std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+        for (std::size_t i = 0; i < all.sims.size(); ++i) {
+            BodySim& sim = all.sims[i];
+            sim.center0 = {100.0f * unit(random), 50.0f * unit(random)};
+            const float angle = 3.0f * unit(random);
+            sim.rotation0 = {std::cos(angle), std::sin(angle)};
+            sim.localCenter =
+                i % 3 == 0 ? Vec2{0.0f, 0.0f} : Vec2{0.5f * unit(random), 0.5f * unit(random)};
+        }
+        if (count > 2) {
+            all.states[2].deltaRotation = {0.0f, 0.0f}; // stays unnormalised
+        }
+        Bodies alone = all;
+        finalizePositions(all.sims, all.states);
+        for (std::size_t i = 0; i < alone.sims.size(); ++i) {
+            finalizePositions(std::span<BodySim>(&alone.sims[i], 1),
+                              std::span<const BodyState>(&alone.states[i], 1));
+        }
+        for (std::size_t i = 0; i < all.sims.size(); ++i) {
+            EXPECT_EQ(std::memcmp(&all.sims[i], &alone.sims[i], sizeof(BodySim)), 0)
+                << "body " << i << " of " << count << ": p (" << all.sims[i].transform.p.x << ", "
+                << all.sims[i].transform.p.y << "), want (" << alone.sims[i].transform.p.x << ", "
+                << alone.sims[i].transform.p.y << ")";
+        }
     }
 }
 

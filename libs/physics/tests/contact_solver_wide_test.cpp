@@ -104,6 +104,10 @@ struct PrepareInput {
 };
 
 struct Problem {
+    // The softness of contacts against a rigid side (no mass, no inertia: a static side too)
+    // and of the others, the world's pick (softnessFor()).
+    Softness dynamic;
+    Softness vsStatic;
     std::vector<ContactConstraint> constraints;
     std::vector<BodyState> states;
     std::vector<PrepareInput> inputs; // per constraint
@@ -133,6 +137,8 @@ Problem randomProblem(std::uint32_t seed, int bodyCount, int contactCount, float
     }
     const Softness dynamic = makeSoftness(30.0f, 10.0f, h);
     const Softness vsStatic = makeSoftness(60.0f, 10.0f, h);
+    p.dynamic = dynamic;
+    p.vsStatic = vsStatic;
     for (int k = 0; k < contactCount; ++k) {
         int a = rng.below(bodyCount);
         int b = rng.below(bodyCount - 1);
@@ -293,11 +299,9 @@ void expectWideMatchesScalar(std::uint32_t seed, int maxPoints) {
             }
             for (int round = 0; round < 4; ++round) {
                 bool reversePoints = round >= 2;
-                warmStartWide(packed, wide.states);
-                solveWide(packed, wide.states, 1.0f / kH, true, kPushMaxSpeed, false,
-                          reversePoints);
-                solveWide(packed, wide.states, 1.0f / kH, false, kPushMaxSpeed, true,
-                          reversePoints);
+                warmStartWide(packed);
+                solveWide(packed, 1.0f / kH, true, kPushMaxSpeed, false, reversePoints);
+                solveWide(packed, 1.0f / kH, false, kPushMaxSpeed, true, reversePoints);
             }
             storeWide(packed, wide.constraints, order, levelStart);
 
@@ -340,10 +344,20 @@ const std::vector<WideConstraintT<N>>& groupsOf(const WideContacts& wide) {
     }
 }
 
+// The softness the world gives a contact between `a` and `b`.
+Softness softnessFor(const Problem& p, const ContactBodyView& a, const ContactBodyView& b) {
+    auto rigid = [](const ContactBodyView& v) {
+        return v.invMass.x == 0.0f && v.invMass.y == 0.0f && v.invInertia == 0.0f;
+    };
+    return rigid(a) || rigid(b) ? p.vsStatic : p.dynamic;
+}
+
 // The groups prepareWideGroup() makes from gathered lanes, byte for byte the ones
-// prepareContact() and packWideLane() make one constraint at a time.
+// prepareContact() and packWideLane() make one constraint at a time, and the lanes it finds
+// pushed apart, isPushedApart()'s; counts those (pushed) and the others with a point deeper
+// than the slop (held: their load explains it).
 template <int N>
-void expectSameGroups(const Problem& p, const Schedule& schedule) {
+void expectSameGroups(const Problem& p, const Schedule& schedule, int& pushed, int& held) {
     std::vector<BodyState> states = p.states;
     WideContacts reference;
     prepareWide(reference, p.constraints, schedule.order, schedule.levelStart, N, states);
@@ -357,17 +371,38 @@ void expectSameGroups(const Problem& p, const Schedule& schedule) {
         const int end = schedule.levelStart[static_cast<std::size_t>(level) + 1];
         int g = gathered.levelStart[static_cast<std::size_t>(level)];
         for (int slot = first; slot < end; slot += N, ++g) {
-            WideManifoldT<N> in;
+            WideGatherT<N> in;
+            in.dynamic = p.dynamic;
+            in.vsStatic = p.vsStatic;
+            int pushedLanes = 0;
             for (int lane = 0; lane < N; ++lane) {
                 if (slot + lane < end) {
                     const PrepareInput& pi = p.inputs[static_cast<std::size_t>(
                         schedule.order[static_cast<std::size_t>(slot + lane)])];
-                    in.setLane(lane, pi.manifold, pi.a, pi.b, pi.friction, pi.softness);
+                    const Softness picked = softnessFor(p, pi.a, pi.b);
+                    ASSERT_EQ(std::memcmp(&pi.softness, &picked, sizeof picked), 0);
+                    // The views' rows; their velocities are the states'.
+                    in.manifold[lane] = &pi.manifold;
+                    in.offsetA[lane] = &pi.a.centerOffset.x;
+                    in.offsetB[lane] = &pi.b.centerOffset.x;
+                    in.massA[lane] = &pi.a.invMass.x;
+                    in.massB[lane] = &pi.b.invMass.x;
+                    in.indexA[lane] = pi.a.stateIndex;
+                    in.indexB[lane] = pi.b.stateIndex;
+                    in.friction[lane] = pi.friction;
+                    const Manifold& m = pi.manifold;
+                    if (isPushedApart(m, pi.a, pi.b, pi.softness)) {
+                        pushedLanes |= 1 << lane;
+                        ++pushed;
+                    } else if (m.points[0].separation < -kLinearSlop ||
+                               (m.pointCount > 1 && m.points[1].separation < -kLinearSlop)) {
+                        ++held;
+                    }
                 } else {
                     in.clearLane(lane);
                 }
             }
-            prepareWideGroup(gathered, g, in, states);
+            EXPECT_EQ(prepareWideGroup(gathered, g, in, states), pushedLanes) << "group " << g;
             ++groups;
         }
     }
@@ -438,8 +473,12 @@ TEST(WideContactSolver, PreparesGroupsAsPrepareContactDoes) {
         giant.manifold.normal = {0.0f, 1.0f};
         giant.manifold.points[0].anchorB = {0.0034f, -445.0f};
         giant.manifold.points[1].anchorB = {-0.062f, -445.0f};
-        for (std::size_t k = 0; k < 7; ++k) {
-            const PrepareInput& in = p.inputs[k];
+        // A rigid moving side (no mass, no inertia): the static softness.
+        p.inputs[7].b.invMass = {0.0f, 0.0f};
+        p.inputs[7].b.invInertia = 0.0f;
+        for (std::size_t k = 0; k < 8; ++k) {
+            PrepareInput& in = p.inputs[k];
+            in.softness = softnessFor(p, in.a, in.b);
             prepareContact(p.constraints[k], in.manifold, in.a, in.b, {in.friction, 0.0f, 0.0f},
                            in.softness);
         }
@@ -449,10 +488,15 @@ TEST(WideContactSolver, PreparesGroupsAsPrepareContactDoes) {
         ASSERT_FALSE(p.constraints[6].blockSolve);
         const Schedule schedule = scheduleOf(p);
         SCOPED_TRACE(seed);
-        expectSameGroups<4>(p, schedule);
+        int pushed = 0;
+        int held = 0;
+        expectSameGroups<4>(p, schedule, pushed, held);
         if (bestWideLanes() >= 8) {
-            expectSameGroups<8>(p, schedule);
+            expectSameGroups<8>(p, schedule, pushed, held);
         }
+        // Both answers of isPushedApart()'s second test come up.
+        EXPECT_GT(pushed, 0);
+        EXPECT_GT(held, 0);
     }
 }
 

@@ -10,12 +10,16 @@
 #include <utility>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
+
 namespace e2d::physics {
 
 namespace detail {
 
 struct SnapshotAccess; // World's snapshots (world_snapshot.cpp) read and write the tree whole.
-class BroadPhase;      // reads its own live proxies' boxes unchecked (BroadPhase::fatAabbOfLive).
+class BroadPhase;      // reads its own live proxies' boxes unchecked (BroadPhase::fatAabbLive()).
 
 /// A LIFO stack of node indices that lives on the call stack while it holds at most `N` entries
 /// and spills into a std::vector past that, so tree traversals allocate nothing for trees of
@@ -30,21 +34,34 @@ public:
             overflow_.push_back(value);
         }
     }
+    // The overflow holds entries only while the fixed part is full, so count_ alone says
+    // whether the stack is empty, and the overflow is looked at only when count_ is N.
     int pop() {
-        if (!overflow_.empty()) {
+        if (count_ == N && !overflow_.empty()) [[unlikely]] {
             int value = overflow_.back();
             overflow_.pop_back();
             return value;
         }
         return fixed_[--count_];
     }
-    [[nodiscard]] bool empty() const { return count_ == 0 && overflow_.empty(); }
+    [[nodiscard]] bool empty() const { return count_ == 0; }
 
 private:
     int fixed_[N];
     int count_ = 0;
     std::vector<int> overflow_;
 };
+
+#if defined(__SSE2__)
+/// overlaps(a, b) (touching counts) with b loaded in a register (lower x y, upper x y): apart
+/// when (a.lower, b.lower) > (b.upper, a.upper) in any lane, one comparison for the four of
+/// overlaps(); a NaN compares false there as in overlaps().
+inline bool overlapsBox(const Aabb& a, __m128 b) {
+    static_assert(sizeof(Aabb) == 4 * sizeof(float));
+    const __m128 va = _mm_loadu_ps(&a.lower.x);
+    return _mm_movemask_ps(_mm_cmpgt_ps(_mm_movelh_ps(va, b), _mm_movehl_ps(va, b))) == 0;
+}
+#endif
 
 } // namespace detail
 
@@ -263,15 +280,27 @@ void DynamicTree::query(const Aabb& box, std::uint64_t maskBits, F&& callback) c
     if (root_ == kNullProxy) {
         return;
     }
+#if defined(__SSE2__)
+    const __m128 query = _mm_loadu_ps(&box.lower.x);
+#endif
+    // Depth first, child1 before child2: a matching internal node goes on to its child1 at
+    // once and leaves child2 on the stack.
     detail::TreeStack<128> stack;
-    stack.push(root_);
-    while (!stack.empty()) {
-        const int index = stack.pop();
+    int index = root_;
+    for (;;) {
         const Node& node = nodes_[static_cast<std::size_t>(index)];
-        if ((node.categoryBits & maskBits) == 0 || !overlaps(node.aabb, box)) {
-            continue;
-        }
-        if (node.isLeaf()) {
+#if defined(__SSE2__)
+        const bool hit =
+            (node.categoryBits & maskBits) != 0 && detail::overlapsBox(node.aabb, query);
+#else
+        const bool hit = (node.categoryBits & maskBits) != 0 && overlaps(node.aabb, box);
+#endif
+        if (hit) {
+            if (!node.isLeaf()) {
+                stack.push(node.child2);
+                index = node.child1;
+                continue;
+            }
             if constexpr (std::is_void_v<std::invoke_result_t<F&, int, std::uint64_t>>) {
                 callback(index, node.userData);
             } else {
@@ -279,10 +308,11 @@ void DynamicTree::query(const Aabb& box, std::uint64_t maskBits, F&& callback) c
                     return;
                 }
             }
-        } else {
-            stack.push(node.child2);
-            stack.push(node.child1);
         }
+        if (stack.empty()) {
+            return;
+        }
+        index = stack.pop();
     }
 }
 
