@@ -17,7 +17,14 @@ using Point = WidePointT<N>;
 
 // Where a group's lanes read and write their bodies: the addresses prepareGroup() recorded,
 // static sides and empty lanes at the group's pad, reset here before the lanes are read.
-E2D_WIDE_INLINE void resetPad(const Constraint& c) { c.pad = BodyState{}; }
+// One 32-byte store (the member-wise assignment takes four stores and a load).
+E2D_WIDE_INLINE void resetPad(const Constraint& c) {
+    const BodyState resting{};
+    Float8 rows;
+    static_assert(sizeof rows == sizeof resting);
+    std::memcpy(&rows, &resting, sizeof rows);
+    std::memcpy(reinterpret_cast<unsigned char*>(&c.pad), &rows, sizeof rows);
+}
 
 // One side's velocity rows as lane vectors; flags ride along unchanged, to be stored back.
 struct Velocities {
