@@ -280,6 +280,12 @@ E2D_WIDE_INLINE void solveGroup(Constraint& c, F invH, bool useBias, float pushM
             solveBlock<true>(c, s, a, b, block, invH, useBias, pushMaxSpeed);
         }
     }
+    if constexpr (kPoints == 2) {
+        // Two points' constants do not fit in the registers with the velocities: without this,
+        // the compiler keeps the anchors it loaded for the separations and spills them to the
+        // stack; past this point (memory may have changed) it reads them from `c` again.
+        asm volatile("" ::: "memory");
+    }
 #pragma GCC unroll 2
     for (int j = 0; j < kPoints; ++j) {
         solveFrictionAt(c, c.points[j], a, b);
