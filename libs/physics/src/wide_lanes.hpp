@@ -201,9 +201,8 @@ E2D_AVX2_FN void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c
 // shuffle of two loaded rows costs a load more.
 template <class T>
 E2D_AVX2_FN F joinRows(const T* low, const T* high, std::size_t offset) {
-    const auto* h = reinterpret_cast<const float*>(reinterpret_cast<const unsigned char*>(high) +
-                                                   offset);
-    return _mm256_insertf128_ps(_mm256_castps128_ps256(loadRow(low, offset)), _mm_loadu_ps(h), 1);
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(loadRow(low, offset)), loadRow(high, offset),
+                                1);
 }
 
 template <class T>
