@@ -310,16 +310,33 @@ E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints,
     }
 }
 
-template <bool kReversePoints>
+// kUseBias a constant: each pass runs one kind (solve or relax), and the relax pass's targets
+// (mass scale one, impulse scale zero) then fold into the code instead of being selected.
+template <bool kReversePoints, bool kUseBias>
 E2D_WIDE_FN void solveGroups(std::span<Constraint> constraints, int first, int end, F invH,
-                             bool useBias, float pushMaxSpeed) {
+                             float pushMaxSpeed) {
     for (int g = first; g < end; ++g) {
         Constraint& c = constraints[static_cast<std::size_t>(g)];
         if (anyLane(c.twoPoints)) {
-            solveGroup<kReversePoints, 2>(c, invH, useBias, pushMaxSpeed);
+            solveGroup<kReversePoints, 2>(c, invH, kUseBias, pushMaxSpeed);
         } else {
-            solveGroup<kReversePoints, 1>(c, invH, useBias, pushMaxSpeed);
+            solveGroup<kReversePoints, 1>(c, invH, kUseBias, pushMaxSpeed);
         }
+    }
+}
+
+template <bool kReversePoints, bool kUseBias>
+E2D_WIDE_FN void solveLevels(std::span<Constraint> constraints, std::span<const int> levelStart,
+                             F invH, float pushMaxSpeed, bool backward) {
+    if (!backward) {
+        solveGroups<kReversePoints, kUseBias>(constraints, levelStart.front(), levelStart.back(),
+                                              invH, pushMaxSpeed);
+        return;
+    }
+    // Within a level the order does not matter; backward only reverses the levels.
+    for (std::size_t k = levelStart.size() - 1; k-- > 0;) {
+        solveGroups<kReversePoints, kUseBias>(constraints, levelStart[k], levelStart[k + 1], invH,
+                                              pushMaxSpeed);
     }
 }
 
@@ -330,15 +347,10 @@ E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<const int
         return;
     }
     const F vInvH = splat(invH);
-    if (!backward) {
-        solveGroups<kReversePoints>(constraints, levelStart.front(), levelStart.back(), vInvH,
-                                    useBias, pushMaxSpeed);
-        return;
-    }
-    // Within a level the order does not matter; backward only reverses the levels.
-    for (std::size_t k = levelStart.size() - 1; k-- > 0;) {
-        solveGroups<kReversePoints>(constraints, levelStart[k], levelStart[k + 1], vInvH, useBias,
-                                    pushMaxSpeed);
+    if (useBias) {
+        solveLevels<kReversePoints, true>(constraints, levelStart, vInvH, pushMaxSpeed, backward);
+    } else {
+        solveLevels<kReversePoints, false>(constraints, levelStart, vInvH, pushMaxSpeed, backward);
     }
 }
 
