@@ -282,8 +282,11 @@ E2D_WIDE_INLINE void solveGroup(Constraint& c, F invH, bool useBias, float pushM
     }
     if constexpr (kPoints == 2) {
         // Two points' constants do not fit in the registers with the velocities: without this,
-        // the compiler keeps the anchors it loaded for the separations and spills them to the
-        // stack; past this point (memory may have changed) it reads them from `c` again.
+        // the compiler keeps what it loaded from `c` for the separations and the normal solve
+        // in stack slots for friction too (a store each); past this point (memory may have
+        // changed, to the compiler) friction reads them from `c` again. An instruction
+        // barrier only: it changes no result. With one point it costs more than it saves, and
+        // so does one before the normal solve (measured with callgrind).
         asm volatile("" ::: "memory");
     }
 #pragma GCC unroll 2
