@@ -489,12 +489,10 @@ void World::Impl::updateContacts(float dt) {
                 }
                 const ContactSides sides{shapeSlots[c.shapeA], shapeSlots[c.shapeB],
                                          bodySlots[c.bodyA], bodySlots[c.bodyB]};
-                const bool awakeA = sides.ba.motion.awake;
-                const bool awakeB = sides.bb.motion.awake;
                 unsigned char update;
                 if (!bp.fatAabbsOverlapLive(sides.sa.proxyKey, sides.sb.proxyKey)) {
                     update = kApart;
-                } else if (!awakeA && !awakeB) {
+                } else if (!sides.ba.motion.awake && !sides.bb.motion.awake) {
                     // Settled unless an earlier contact wakes a side in the second pass.
                     if (c.touching && !c.sensor && c.enabled) {
                         *touching++ = {ci, c.bodyA, c.bodyB, c.rollingResistance};
@@ -507,7 +505,9 @@ void World::Impl::updateContacts(float dt) {
                     counts.manifoldsRecycled += (collided & kRecycled) != 0 ? 1 : 0;
                     const bool nowTouching = (collided & kPoints) != 0;
                     // Something awake touching a sleeping body that can wake.
-                    const bool wakes = nowTouching && !c.sensor && awakeA != awakeB &&
+                    const bool awakeA = sides.ba.motion.awake;
+                    const bool wakes = nowTouching && !c.sensor &&
+                                       awakeA != sides.bb.motion.awake &&
                                        (awakeA ? sides.bb : sides.ba).type != BodyType::Static;
                     if (serialAll || wakes || (nowTouching != c.touching && c.touchEvents)) {
                         update = nowTouching ? kTouching : kApartNow;
