@@ -21,8 +21,7 @@ namespace {
 using namespace e2d::physics;
 using Bytes = std::vector<std::uint8_t>;
 
-// The snapshot header's size (see world_snapshot.cpp): magic, version, layout, length, checksum.
-constexpr std::size_t kHeaderBytes = 32;
+constexpr std::size_t kHeaderBytes = kSnapshotHeaderBytes;
 constexpr float kStep = 1.0f / 60.0f;
 
 // A fixed world tag: otherwise every world gets one derived at run time, which the snapshot

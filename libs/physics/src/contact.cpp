@@ -420,99 +420,136 @@ void World::Impl::updateContacts(float dt) {
 
     // The narrow phase in two passes. The first updates each contact on its own (on several
     // workers): whether the fat boxes parted, and the new manifold of every contact with an
-    // awake side, noted per contact. The second goes through the contacts in order, alone:
-    // ends, events, the pre-solve hook and waking, which other contacts see. A contact whose
-    // bodies were both asleep in the first pass and that an earlier contact woke is updated
-    // there, as it would have been in one pass in contact order.
-    // kRecycledFlag is added to kTouching or kApartNow when the manifold was recycled.
-    enum : unsigned char { kDead, kApart, kAsleep, kTouching, kApartNow, kRecycledFlag = 0x80 };
+    // awake side. A contact whose update nothing else sees (no event, no hook, no body to wake)
+    // is settled there; the others are noted for the second pass, which goes through them in
+    // contact order, alone: ends, events, the pre-solve hook and waking, which other contacts
+    // see. A contact whose bodies were both asleep in the first pass and that an earlier contact
+    // woke is updated there, as it would have been in one pass in contact order. Settling a
+    // contact early changes nothing the second pass reads: waking only follows contacts to
+    // sleeping bodies, and a contact the first pass updated had an awake side.
+    enum : unsigned char { kApart, kAsleep, kTouching, kApartNow };
+    using TouchingContact = detail::Simulation::TouchingContact;
+    constexpr int kBlock = detail::Simulation::kNarrowBlock;
     const int contactSlots = static_cast<int>(s.contacts.size());
+    const int blockCount = (contactSlots + kBlock - 1) / kBlock;
     s.contactUpdates.resize(static_cast<std::size_t>(contactSlots));
+    s.blockTouching.resize(static_cast<std::size_t>(contactSlots));
+    s.blockSerial.resize(static_cast<std::size_t>(contactSlots));
+    s.narrowBlocks.resize(static_cast<std::size_t>(blockCount));
+    // With the pre-solve hook set, every update goes through the second pass (the hook is
+    // called there, in contact order, and sees the others as they were).
+    const bool allSerial = static_cast<bool>(hooks.preSolve);
     // Each contact reads two shapes and two bodies scattered over arrays far larger than the
     // cache: they are fetched a few contacts ahead.
     constexpr int kPrefetchAhead = 6;
     const float recycle = effectiveRecycleDistance(s.def, speculativeDistance);
-    auto updatePiece = [&](int begin, int end, int /*worker*/) {
+    auto updateBlocks = [&](int firstBlock, int endBlock, int /*worker*/) {
         // The arrays and settings in locals: each contact's store to `updates` (a char, which
         // may alias anything) made the compiler load them from the world again for every
         // contact.
         detail::Contact* const contacts = s.contacts.data();
         unsigned char* const updates = s.contactUpdates.data();
+        TouchingContact* const touchingSlots = s.blockTouching.data();
+        int* const serialSlots = s.blockSerial.data();
         const detail::Shape* const shapeSlots = shapes.data();
         const detail::Body* const bodySlots = bodies.data();
         const detail::BroadPhase& bp = broadPhase;
         const CollisionAlgorithm algorithm = collisionAlgorithm;
         const float speculative = speculativeDistance;
         const float stepDt = dt;
-        for (int ci = begin; ci < end; ++ci) {
-            if (ci + kPrefetchAhead < end) {
-                const detail::Contact& ahead = contacts[ci + kPrefetchAhead];
-                if (ahead.alive) {
-                    detail::prefetchObject(shapeSlots + ahead.shapeA);
-                    detail::prefetchObject(shapeSlots + ahead.shapeB);
-                    detail::prefetchObject(bodySlots + ahead.bodyA);
-                    detail::prefetchObject(bodySlots + ahead.bodyB);
+        const bool serialAll = allSerial;
+        const int pieceEnd = std::min(endBlock * kBlock, contactSlots);
+        for (int b = firstBlock; b < endBlock; ++b) {
+            const int begin = b * kBlock;
+            const int end = std::min(begin + kBlock, contactSlots);
+            TouchingContact* touching = touchingSlots + begin;
+            int* serial = serialSlots + begin;
+            detail::Simulation::NarrowBlock counts;
+            for (int ci = begin; ci < end; ++ci) {
+                if (ci + kPrefetchAhead < pieceEnd) {
+                    const detail::Contact& ahead = contacts[ci + kPrefetchAhead];
+                    if (ahead.alive) {
+                        detail::prefetchObject(shapeSlots + ahead.shapeA);
+                        detail::prefetchObject(shapeSlots + ahead.shapeB);
+                        detail::prefetchObject(bodySlots + ahead.bodyA);
+                        detail::prefetchObject(bodySlots + ahead.bodyB);
+                    }
                 }
+                detail::Contact& c = contacts[ci];
+                if (!c.alive) {
+                    continue;
+                }
+                const ContactSides sides{shapeSlots[c.shapeA], shapeSlots[c.shapeB],
+                                         bodySlots[c.bodyA], bodySlots[c.bodyB]};
+                unsigned char update;
+                if (!bp.fatAabbsOverlapLive(sides.sa.proxyKey, sides.sb.proxyKey)) {
+                    update = kApart;
+                } else if (!sides.ba.motion.awake && !sides.bb.motion.awake) {
+                    // Settled unless an earlier contact wakes a side in the second pass.
+                    if (c.touching && !c.sensor && c.enabled) {
+                        *touching++ = {ci, c.bodyA, c.bodyB, c.rollingResistance};
+                    }
+                    update = kAsleep;
+                } else {
+                    const unsigned collided =
+                        collideContact(c, sides, algorithm, speculative, recycle, stepDt);
+                    ++counts.manifoldUpdates;
+                    counts.manifoldsRecycled += (collided & kRecycled) != 0 ? 1 : 0;
+                    const bool nowTouching = (collided & kPoints) != 0;
+                    // Something awake touching a sleeping body that can wake.
+                    const bool awakeA = sides.ba.motion.awake;
+                    const bool wakes = nowTouching && !c.sensor &&
+                                       awakeA != sides.bb.motion.awake &&
+                                       (awakeA ? sides.bb : sides.ba).type != BodyType::Static;
+                    if (serialAll || wakes || (nowTouching != c.touching && c.touchEvents)) {
+                        update = nowTouching ? kTouching : kApartNow;
+                    } else {
+                        c.touching = nowTouching;
+                        if (!c.sensor) {
+                            c.enabled = true;
+                            if (nowTouching) {
+                                *touching++ = {ci, c.bodyA, c.bodyB, c.rollingResistance};
+                            }
+                        }
+                        continue;
+                    }
+                }
+                updates[ci] = update;
+                *serial++ = ci;
             }
-            detail::Contact& c = contacts[ci];
-            unsigned char& update = updates[ci];
-            if (!c.alive) {
-                update = kDead;
-                continue;
-            }
-            const ContactSides sides{shapeSlots[c.shapeA], shapeSlots[c.shapeB], bodySlots[c.bodyA],
-                                     bodySlots[c.bodyB]};
-            if (!bp.fatAabbsOverlapLive(sides.sa.proxyKey, sides.sb.proxyKey)) {
-                update = kApart;
-            } else if (!sides.ba.motion.awake && !sides.bb.motion.awake) {
-                update = kAsleep;
-            } else {
-                const unsigned collided =
-                    collideContact(c, sides, algorithm, speculative, recycle, stepDt);
-                update =
-                    static_cast<unsigned char>(((collided & kPoints) != 0 ? kTouching : kApartNow) |
-                                               ((collided & kRecycled) != 0 ? kRecycledFlag : 0));
-            }
+            counts.touching = static_cast<int>(touching - (touchingSlots + begin));
+            counts.serial = static_cast<int>(serial - (serialSlots + begin));
+            s.narrowBlocks[static_cast<std::size_t>(b)] = counts;
         }
     };
-    // A contact is 25 (circles) to 55 ns (boxes).
-    tasks.parallelFor(contactSlots, tasks.minRange(30), updatePiece);
+    // A block is 64 contacts of 25 (circles) to 55 ns (boxes).
+    tasks.parallelFor(blockCount, tasks.minRange(30 * kBlock), updateBlocks);
 
     // The touching solid contacts, in contact order, as they are after the narrow phase: what
-    // the solver makes constraints of (without streaming the whole contact array again).
+    // the solver makes constraints of (without streaming the whole contact array again). Each
+    // block's settled ones, with the contacts of the second pass in between.
     s.touchingContacts.clear();
     auto listTouching = [&](int ci, const detail::Contact& c) {
         if (c.touching && !c.sensor && c.enabled) {
             s.touchingContacts.push_back({ci, c.bodyA, c.bodyB, c.rollingResistance});
         }
     };
-    for (int ci = 0; ci < contactSlots; ++ci) {
-        unsigned char update = s.contactUpdates[static_cast<std::size_t>(ci)];
-        if ((update & kRecycledFlag) != 0) {
-            ++s.counters.manifoldsRecycled;
-            update = static_cast<unsigned char>(update & ~kRecycledFlag);
-        }
-        if (update == kDead) {
-            continue;
-        }
+    // The second pass's work on one contact; whether it woke a body.
+    auto finishContact = [&](int ci, unsigned char update) {
         detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
         if (update == kApart) {
             broadPhase.removePair(static_cast<std::uint64_t>(c.shapeA),
                                   static_cast<std::uint64_t>(c.shapeB));
             destroyContact(ci, true);
-            continue;
+            return false;
         }
         const bool awakeA = body(c.bodyA).motion.awake;
         const bool awakeB = body(c.bodyB).motion.awake;
         if (update == kAsleep) {
-            if (!awakeA && !awakeB) {
-                // kAsleep (or asleep against static): nothing moved, the manifold still holds.
-                listTouching(ci, c);
-                continue;
-            }
-            update = updateManifold(c, dt) ? kTouching : kApartNow; // woken by an earlier one
+            // Woken by an earlier one.
+            update = updateManifold(c, dt) ? kTouching : kApartNow;
+            ++s.counters.manifoldUpdates;
         }
-        ++s.counters.manifoldUpdates;
         const bool wasTouching = c.touching;
         c.touching = update == kTouching;
         if (c.sensor) {
@@ -526,7 +563,7 @@ void World::Impl::updateContacts(float dt) {
                     s.sensorEndEvents.push_back({sensorId, visitorId});
                 }
             }
-            continue;
+            return false;
         }
         if (c.touching && !wasTouching && c.touchEvents) {
             s.beginEvents.push_back({c.idA, c.idB, c.manifold});
@@ -550,11 +587,43 @@ void World::Impl::updateContacts(float dt) {
         } else {
             c.enabled = true;
         }
+        bool woke = false;
         if (c.touching && awakeA != awakeB) {
             // Something awake touches a sleeping island: it wakes (static bodies never do).
             wakeBody(awakeA ? c.bodyB : c.bodyA);
+            woke = true;
         }
         listTouching(ci, c);
+        return woke;
+    };
+    // Until a body wakes here, every contact found asleep stays as it was.
+    bool anyWoken = false;
+    for (int b = 0; b < blockCount; ++b) {
+        const detail::Simulation::NarrowBlock& block = s.narrowBlocks[static_cast<std::size_t>(b)];
+        s.counters.manifoldUpdates += block.manifoldUpdates;
+        s.counters.manifoldsRecycled += block.manifoldsRecycled;
+        const TouchingContact* settled = s.blockTouching.data() + b * kBlock;
+        const TouchingContact* const settledEnd = settled + block.touching;
+        const int* const serial = s.blockSerial.data() + b * kBlock;
+        for (int k = 0; k < block.serial; ++k) {
+            const int ci = serial[k];
+            const unsigned char update = s.contactUpdates[static_cast<std::size_t>(ci)];
+            if (update == kAsleep) {
+                const detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
+                if (!anyWoken || (!body(c.bodyA).motion.awake && !body(c.bodyB).motion.awake)) {
+                    continue; // nothing moved, the manifold still holds
+                }
+            }
+            const TouchingContact* before = settled;
+            while (before != settledEnd && before->contact < ci) {
+                ++before;
+            }
+            s.touchingContacts.insert(s.touchingContacts.end(), settled, before);
+            // A woken contact's entry from when it was asleep: the update lists it anew.
+            settled = before != settledEnd && before->contact == ci ? before + 1 : before;
+            anyWoken = finishContact(ci, update) || anyWoken;
+        }
+        s.touchingContacts.insert(s.touchingContacts.end(), settled, settledEnd);
     }
 }
 

@@ -17,7 +17,14 @@ using Point = WidePointT<N>;
 
 // Where a group's lanes read and write their bodies: the addresses prepareGroup() recorded,
 // static sides and empty lanes at the group's pad, reset here before the lanes are read.
-E2D_WIDE_INLINE void resetPad(const Constraint& c) { c.pad = BodyState{}; }
+// One 32-byte store (the member-wise assignment takes four stores and a load).
+E2D_WIDE_INLINE void resetPad(const Constraint& c) {
+    const BodyState resting{};
+    Float8 rows;
+    static_assert(sizeof rows == sizeof resting);
+    std::memcpy(&rows, &resting, sizeof rows);
+    std::memcpy(reinterpret_cast<unsigned char*>(&c.pad), &rows, sizeof rows);
+}
 
 // One side's velocity rows as lane vectors; flags ride along unchanged, to be stored back.
 struct Velocities {
@@ -273,6 +280,15 @@ E2D_WIDE_INLINE void solveGroup(Constraint& c, F invH, bool useBias, float pushM
             solveBlock<true>(c, s, a, b, block, invH, useBias, pushMaxSpeed);
         }
     }
+    if constexpr (kPoints == 2) {
+        // Two points' constants do not fit in the registers with the velocities: without this,
+        // the compiler keeps what it loaded from `c` for the separations and the normal solve
+        // in stack slots for friction too (a store each); past this point (memory may have
+        // changed, to the compiler) friction reads them from `c` again. An instruction
+        // barrier only: it changes no result. With one point it costs more than it saves, and
+        // so does one before the normal solve (measured with callgrind).
+        asm volatile("" ::: "memory");
+    }
 #pragma GCC unroll 2
     for (int j = 0; j < kPoints; ++j) {
         solveFrictionAt(c, c.points[j], a, b);
@@ -297,16 +313,33 @@ E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints,
     }
 }
 
-template <bool kReversePoints>
+// kUseBias a constant: each pass runs one kind (solve or relax), and the relax pass's targets
+// (mass scale one, impulse scale zero) then fold into the code instead of being selected.
+template <bool kReversePoints, bool kUseBias>
 E2D_WIDE_FN void solveGroups(std::span<Constraint> constraints, int first, int end, F invH,
-                             bool useBias, float pushMaxSpeed) {
+                             float pushMaxSpeed) {
     for (int g = first; g < end; ++g) {
         Constraint& c = constraints[static_cast<std::size_t>(g)];
         if (anyLane(c.twoPoints)) {
-            solveGroup<kReversePoints, 2>(c, invH, useBias, pushMaxSpeed);
+            solveGroup<kReversePoints, 2>(c, invH, kUseBias, pushMaxSpeed);
         } else {
-            solveGroup<kReversePoints, 1>(c, invH, useBias, pushMaxSpeed);
+            solveGroup<kReversePoints, 1>(c, invH, kUseBias, pushMaxSpeed);
         }
+    }
+}
+
+template <bool kReversePoints, bool kUseBias>
+E2D_WIDE_FN void solveLevels(std::span<Constraint> constraints, std::span<const int> levelStart,
+                             F invH, float pushMaxSpeed, bool backward) {
+    if (!backward) {
+        solveGroups<kReversePoints, kUseBias>(constraints, levelStart.front(), levelStart.back(),
+                                              invH, pushMaxSpeed);
+        return;
+    }
+    // Within a level the order does not matter; backward only reverses the levels.
+    for (std::size_t k = levelStart.size() - 1; k-- > 0;) {
+        solveGroups<kReversePoints, kUseBias>(constraints, levelStart[k], levelStart[k + 1], invH,
+                                              pushMaxSpeed);
     }
 }
 
@@ -317,15 +350,10 @@ E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<const int
         return;
     }
     const F vInvH = splat(invH);
-    if (!backward) {
-        solveGroups<kReversePoints>(constraints, levelStart.front(), levelStart.back(), vInvH,
-                                    useBias, pushMaxSpeed);
-        return;
-    }
-    // Within a level the order does not matter; backward only reverses the levels.
-    for (std::size_t k = levelStart.size() - 1; k-- > 0;) {
-        solveGroups<kReversePoints>(constraints, levelStart[k], levelStart[k + 1], vInvH, useBias,
-                                    pushMaxSpeed);
+    if (useBias) {
+        solveLevels<kReversePoints, true>(constraints, levelStart, vInvH, pushMaxSpeed, backward);
+    } else {
+        solveLevels<kReversePoints, false>(constraints, levelStart, vInvH, pushMaxSpeed, backward);
     }
 }
 

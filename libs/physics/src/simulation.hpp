@@ -144,7 +144,20 @@ struct Simulation {
         float rollingResistance = 0.0f;
     };
     std::vector<TouchingContact> touchingContacts;
-    // Per contact slot, what the narrow phase's parallel pass found (World::Impl::updateContacts()).
+    // The narrow phase's parallel pass (World::Impl::updateContacts()) goes through the contact
+    // slots in blocks of kNarrowBlock; per block, from slot block * kNarrowBlock on, it lists the
+    // touching contacts it settled and the contacts the serial pass must see, with counts here.
+    static constexpr int kNarrowBlock = 64;
+    struct NarrowBlock {
+        int touching = 0;
+        int serial = 0;
+        int manifoldUpdates = 0;
+        int manifoldsRecycled = 0;
+    };
+    std::vector<NarrowBlock> narrowBlocks;
+    std::vector<TouchingContact> blockTouching;
+    std::vector<int> blockSerial;
+    // Per contact slot listed in blockSerial, what the parallel pass found.
     std::vector<unsigned char> contactUpdates;
     // The soft step's relax iterations on top of SolverDef::relaxIterations in the last solve,
     // the most of any block (detail::kPushOutRelaxIterations while shapes were pushed apart).

@@ -552,7 +552,7 @@ using detail::SnapshotAccess;
 
 constexpr const char* kRestore = "physics::World::restoreSnapshot()";
 constexpr char kMagic[8] = {'E', '2', 'D', 'S', 'N', 'A', 'P', '\0'};
-constexpr std::size_t kHeaderBytes = 32;
+constexpr std::size_t kHeaderBytes = kSnapshotHeaderBytes;
 // What the payload's layout depends on beyond the version: the polygon vertex capacity (every
 // polygon is written with that many vertices and normals) and the widths of an index (4) and a
 // float (4). A build with another kMaxPolygonVertices reads none of these snapshots.

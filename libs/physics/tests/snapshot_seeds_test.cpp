@@ -17,7 +17,7 @@ namespace {
 
 using Bytes = std::vector<std::uint8_t>;
 
-constexpr std::size_t kHeaderBytes = 32; // the snapshot header (world_snapshot.cpp)
+constexpr std::size_t kHeaderBytes = kSnapshotHeaderBytes;
 
 Bytes readSeed(const std::string& name) {
     const std::string path = std::string(E2D_PHYSICS_SNAPSHOT_SEEDS) + "/" + name;

@@ -146,5 +146,33 @@ TEST(WorldSleep, KinematicBodyRunningIntoASleepingIslandWakesIt) {
     EXPECT_GT(s.world.transform(pusher).p.x, -1.0f - 0.2f);
 }
 
+// The narrow phase goes through the contacts in slot order; a sleeping contact after the one
+// that wakes its island is updated in that same step, and listed for the solver once.
+TEST(WorldSleep, IslandWokenInTheNarrowPhaseHasItsLaterContactsUpdated) {
+    World world;
+    addGround(world);
+    // A box away from the pile takes the first contact slot, freed again below: the ball's
+    // contact, made last, reuses it and so comes before every contact of the pile.
+    BodyId first = addBox(world, {-20.0f, 0.5f}, 0.5f);
+    world.step(kStep);
+    std::vector<BodyId> pile = addPyramid(world, 3); // 6 boxes
+    world.step(kStep);
+    world.destroyBody(first);
+    stepUntilAsleep(world, pile);
+    const BodyId top = pile.back();
+    addBall(world, world.transform(top).p + Vec2{0.0f, 2.0f}, 0.25f);
+    bool woke = false;
+    for (int i = 0; i < 120 && !woke; ++i) {
+        world.step(kStep);
+        woke = world.isAwake(top);
+    }
+    ASSERT_TRUE(woke);
+    // Every touching contact in the solver was updated in the step (the ball's and the pile's,
+    // woken by it), none twice.
+    StepCounters wake = world.stepCounters();
+    EXPECT_GE(wake.contactConstraints, 1 + 3 + 4);
+    EXPECT_GE(wake.manifoldUpdates, wake.contactConstraints);
+}
+
 } // namespace
 } // namespace e2d::physics::test

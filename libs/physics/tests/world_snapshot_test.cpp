@@ -423,10 +423,10 @@ Bytes smallSnapshot() {
 // the checksum must catch what it no longer does.
 void resealSnapshot(Bytes& bytes) {
     std::uint64_t h = kHashSeed;
-    for (std::size_t i = 32; i < bytes.size(); ++i) {
+    for (std::size_t i = kSnapshotHeaderBytes; i < bytes.size(); ++i) {
         h = (h ^ bytes[i]) * 1099511628211ull;
     }
-    const std::uint64_t length = bytes.size() - 32;
+    const std::uint64_t length = bytes.size() - kSnapshotHeaderBytes;
     for (int i = 0; i < 8; ++i) {
         bytes[16 + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(length >> (8 * i));
         bytes[24 + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(h >> (8 * i));
@@ -450,10 +450,10 @@ TEST(WorldSnapshot, EveryTruncationIsRefused) {
     for (std::size_t length = 0; length < good.size(); ++length) {
         SCOPED_TRACE(length);
         const Bytes cut(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(length));
-        expectRefused(world, cut, before, length < 32 ? "header" : "truncated");
+        expectRefused(world, cut, before, length < kSnapshotHeaderBytes ? "header" : "truncated");
     }
     // Cut short with the header made to match: the reader finds the end of the bytes.
-    for (std::size_t length = 32; length < good.size(); length += 7) {
+    for (std::size_t length = kSnapshotHeaderBytes; length < good.size(); length += 7) {
         SCOPED_TRACE(length);
         Bytes cut(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(length));
         resealSnapshot(cut);
@@ -504,7 +504,7 @@ TEST(WorldSnapshot, ChangedPayloadsBehindAValidChecksumAreRefusedOrSafe) {
     World world(def);
     const Bytes before = world.saveSnapshot();
     int refused = 0;
-    for (std::size_t i = 32; i < good.size(); ++i) {
+    for (std::size_t i = kSnapshotHeaderBytes; i < good.size(); ++i) {
         for (std::uint8_t value : {std::uint8_t{0x00}, std::uint8_t{0xFF}, std::uint8_t{0x7F}}) {
             Bytes bad = good;
             if (bad[i] == value) {

@@ -14,6 +14,7 @@
 #include <e2d/physics/task.hpp>
 #include <e2d/physics/types.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -247,6 +248,9 @@ using PairFilterCallback = std::function<bool(ShapeId shapeA, ShapeId shapeB)>;
 /// snapshot of another version is refused. Raised whenever the bytes of a World's state change
 /// meaning.
 inline constexpr std::uint32_t kSnapshotFormatVersion = 2;
+/// The size of a snapshot's header, bytes (its layout: World::saveSnapshot()); the payload
+/// follows it.
+inline constexpr std::size_t kSnapshotHeaderBytes = 32;
 
 class Body;
 class Joint;
