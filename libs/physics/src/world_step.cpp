@@ -331,21 +331,25 @@ void World::Impl::solve(float dt) {
     };
     bool pushOut = false; // the scalar solvers': any contact in the world
     // One constraint per touching solid contact with a moving side, in contact order.
+    // Sized for every touching contact and cut to the ones kept: a push_back per constraint
+    // checked the capacity of both arrays each time.
     bool rolling = false;
     int constraintCount = 0;
-    s.constraintContacts.clear();
-    s.constraintBodies.clear();
+    s.constraintContacts.resize(s.touchingContacts.size());
+    s.constraintBodies.resize(s.touchingContacts.size());
     for (const detail::Simulation::TouchingContact& c : s.touchingContacts) {
         const int indexA = body(c.bodyA).motion.solverIndex;
         const int indexB = body(c.bodyB).motion.solverIndex;
         if (indexA == kNullIndex && indexB == kNullIndex) {
             continue;
         }
-        rolling = rolling || c.rollingResistance > 0.0f;
-        s.constraintContacts.push_back(c.contact);
-        s.constraintBodies.push_back({indexA, indexB});
-        ++constraintCount;
+        rolling |= c.rollingResistance > 0.0f;
+        const auto k = static_cast<std::size_t>(constraintCount++);
+        s.constraintContacts[k] = c.contact;
+        s.constraintBodies[k] = {indexA, indexB};
     }
+    s.constraintContacts.resize(static_cast<std::size_t>(constraintCount));
+    s.constraintBodies.resize(static_cast<std::size_t>(constraintCount));
 
     // Rolling resistance is scalar only (and solved in contact order).
     const bool wide = def.mode == SolverMode::SoftStep && !rolling;
