@@ -13,36 +13,6 @@ namespace e2d::physics::detail {
 
 namespace {
 
-// Largest rotation of one integration step, radians (Box2D 2.4's value): 94 rad/s at 60 Hz,
-// 377 rad/s with 4 sub-steps.
-constexpr float kMaxRotation = 0.5f * 3.14159265f;
-
-// The speeds integrateVelocities() and clampVelocity() allow for a step of h seconds.
-struct SpeedCaps {
-    float linear;
-    float angular;
-};
-
-inline SpeedCaps speedCaps(float maxLinearSpeed, float h) {
-    // The rotation integrator is only right for small angles, and a huge one overflows it
-    // into a zero (not unit) rotation that no finiteness check would catch.
-    return {maxLinearSpeed, kMaxRotation / h};
-}
-
-inline void clampVelocity(Vec2& v, float& w, SpeedCaps caps) {
-    float speedSquared = dot(v, v);
-    if (speedSquared > caps.linear * caps.linear) {
-        if (std::isinf(speedSquared)) {
-            // Past about 1.8e19 m/s the square overflows, and scaling by cap / inf would stop
-            // the body dead: bring the components to at most 1 first (still the same direction).
-            v *= 1.0f / std::max(std::fabs(v.x), std::fabs(v.y));
-            speedSquared = dot(v, v);
-        }
-        v *= caps.linear / std::sqrt(speedSquared);
-    }
-    w = std::clamp(w, -caps.angular, caps.angular);
-}
-
 // Implicit damping, 1 / (1 + h c): stable for any coefficient and step. Most bodies have
 // none, and skipping the division then gives the same 1.
 inline float dampingFactor(float h, float coefficient) {
@@ -50,10 +20,6 @@ inline float dampingFactor(float h, float coefficient) {
 }
 
 } // namespace
-
-void clampVelocity(Vec2& v, float& w, float maxLinearSpeed, float h) {
-    clampVelocity(v, w, speedCaps(maxLinearSpeed, h));
-}
 
 namespace {
 

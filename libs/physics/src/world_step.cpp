@@ -240,6 +240,7 @@ void World::Impl::solve(float dt) {
     s.sims.resize(static_cast<std::size_t>(simCount));
     s.states.resize(static_cast<std::size_t>(simCount));
     s.stateRigid.resize(static_cast<std::size_t>(simCount));
+    const detail::SpeedCaps caps = detail::speedCaps(def.maxLinearSpeed, integrationStep);
     for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
         const detail::Body& b = bodies[bi];
         const detail::BodyMotion& m = b.motion;
@@ -278,7 +279,7 @@ void World::Impl::solve(float dt) {
         // Velocities set beyond the caps (a finite 1e38 spin) are capped before the contacts
         // read them: integration would cap them anyway, and a contact's approach speed taken
         // from the raw value could overflow its restitution and hit event.
-        detail::clampVelocity(v, w, def.maxLinearSpeed, integrationStep);
+        detail::clampVelocity(v, w, caps);
         s.states[k] = detail::BodyState{
             .linearVelocity = v, .angularVelocity = w, .deltaPosition = m.positionResidual};
     }
