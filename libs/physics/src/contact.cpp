@@ -464,6 +464,7 @@ void World::Impl::updateContacts(float dt) {
         const CollisionAlgorithm algorithm = collisionAlgorithm;
         const float speculative = speculativeDistance;
         const float stepDt = dt;
+        const float recycleDistance = recycle;
         const bool serialAll = allSerial;
         const int prefetchEnd = prefetch ? std::min(endBlock * kBlock, contactSlots) : 0;
         for (int b = firstBlock; b < endBlock; ++b) {
@@ -499,7 +500,7 @@ void World::Impl::updateContacts(float dt) {
                     update = kAsleep;
                 } else {
                     const unsigned collided =
-                        collideContact(c, sides, algorithm, speculative, recycle, stepDt);
+                        collideContact(c, sides, algorithm, speculative, recycleDistance, stepDt);
                     ++counts.manifoldUpdates;
                     counts.manifoldsRecycled += (collided & kRecycled) != 0 ? 1 : 0;
                     const bool nowTouching = (collided & kPoints) != 0;
