@@ -168,8 +168,7 @@ inline float* row(BodyState& state) { return &state.linearVelocity.x; }
     const __m128 mag = _mm_sqrt_ps(_mm_add_ps(_mm_mul_ps(c, c), _mm_mul_ps(s, s)));
     const __m128 normalises =
         _mm_and_ps(_mm_cmpgt_ps(mag, _mm_setzero_ps()), _mm_cmplt_ps(mag, _mm_set1_ps(INFINITY)));
-    if (_mm_movemask_ps(_mm_andnot_ps(normalises, _mm_castsi128_ps(_mm_set1_epi32(-1)))) != 0 ||
-        _mm_movemask_ps(overSpeedCap(vx, vy, caps)) != 0) {
+    if (_mm_movemask_ps(normalises) != 0xF || _mm_movemask_ps(overSpeedCap(vx, vy, caps)) != 0) {
         return false;
     }
     const __m128 inv = _mm_div_ps(_mm_set1_ps(1.0f), mag);
@@ -197,7 +196,9 @@ inline float* row(BodyState& state) { return &state.linearVelocity.x; }
 // baseline is SSE2). A 256-bit register holds bodies 0-3 in its low half and 4-7 in its high
 // half, each half transposed as the four-lane code transposes its register: half the
 // transposes and arithmetic instructions per body. AVX2 brings no FMA, so every lane still
-// rounds as the scalar code does.
+// rounds as the scalar code does. It mirrors the four-lane functions above line for line (change
+// both together; BodySolver.* compares each with the scalar code): one kernel written over
+// wide_lanes.hpp for both widths was measured at +63 k instructions a falling_circles_1000 step.
 namespace avx2 {
 
 // _MM_TRANSPOSE4_PS in each 128-bit half.
