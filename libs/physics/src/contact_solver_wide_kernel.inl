@@ -253,7 +253,24 @@ template <bool kReversePoints, int kPoints>
 E2D_WIDE_INLINE void solveGroup(Constraint& c, F invH, bool useBias, float pushMaxSpeed) {
     resetPad(c);
     F s[2];
-    separationsOf<kPoints>(c, s);
+    if (c.separationsKnown != 0) {
+        if (useBias) {
+            c.separationsKnown = 0;
+        }
+#pragma GCC unroll 2
+        for (int j = 0; j < kPoints; ++j) {
+            s[j] = c.separation[j];
+        }
+    } else {
+        separationsOf<kPoints>(c, s);
+        if (!useBias) {
+#pragma GCC unroll 2
+            for (int j = 0; j < kPoints; ++j) {
+                c.separation[j] = s[j];
+            }
+            c.separationsKnown = 1;
+        }
+    }
     Velocities a = velocitiesOf(c.bodyA);
     Velocities b = velocitiesOf(c.bodyB);
     const I all = ~I{};
@@ -542,5 +559,6 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
     c.inv22 = select(block, invDet * k11, one);
     c.blockSolve = block | empty;
     c.twoPoints = count == 2;
+    c.separationsKnown = 0;
     return laneBits(deep);
 }
