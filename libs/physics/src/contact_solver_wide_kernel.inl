@@ -420,7 +420,8 @@ static_assert(offsetof(Manifold, normal) == 0 && sizeof(ManifoldPoint) == 40 &&
                       offsetof(ManifoldPoint, separation) + 4 &&
                   offsetof(ManifoldPoint, tangentImpulse) ==
                       offsetof(ManifoldPoint, separation) + 8 &&
-                  offsetof(ManifoldPoint, separation) + 16 <= sizeof(ManifoldPoint),
+                  offsetof(ManifoldPoint, separation) + 16 <= sizeof(ManifoldPoint) &&
+                  sizeof(Manifold::pointCount) == 4 && offsetof(Manifold, pointCount) >= 12,
               "prepareGroup() reads Manifold rows of four floats");
 
 // leverRounding().
@@ -460,13 +461,14 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
     bodiesAt(in.indexB, states, &c.pad, c.bodyB);
     // Static sides and empty lanes read the pad: at rest, as ContactBodyView{} is.
     resetPad(c);
-    int pointCount[N];
-    for (int lane = 0; lane < N; ++lane) {
-        pointCount[lane] = in.manifold[lane]->pointCount;
-    }
+    F unused0, unused1, unused2, countBits;
+    // The row that ends with the point count (its bits ride through the shuffles unchanged):
+    // a few loads and shuffles where a lane at a time took a load, a load and a store.
+    loadRows(in.manifold, offsetof(Manifold, pointCount) + sizeof(int) - 16, unused0, unused1,
+             unused2, countBits);
     I count;
-    std::memcpy(&count, pointCount, sizeof count);
-    F nx, ny, unused0, unused1;
+    std::memcpy(&count, &countBits, sizeof count);
+    F nx, ny;
     loadRows(in.manifold, offsetof(Manifold, normal), nx, ny, unused0, unused1);
     c.normalX = nx;
     c.normalY = ny;
