@@ -493,11 +493,19 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
     F depth[2];
     const F tx = ny;
     const F ty = -nx;
+#pragma GCC unroll 2
     for (int i = 0; i < 2; ++i) {
         Point& cp = c.points[i];
         // A missing point (or an empty lane) packs as ContactConstraintPoint{}: all zero. What
         // the manifold holds there is read but never kept.
         const I present = count > i;
+        if (i == 1 && !anyLane(present)) {
+            // No lane has a second point (a pile of circles): all zero, what the lines below
+            // give such a point, without reading it.
+            cp = Point{};
+            depth[i] = zero;
+            continue;
+        }
         const std::size_t at = offsetof(Manifold, points) + sizeof(ManifoldPoint) * i;
         F anchorAx, anchorAy, anchorBx, anchorBy, separation, normalImpulse, tangentImpulse;
         loadRows(in.manifold, at + offsetof(ManifoldPoint, anchorA), anchorAx, anchorAy, anchorBx,
