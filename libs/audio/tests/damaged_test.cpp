@@ -9,6 +9,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -338,6 +339,11 @@ TEST(DamagedWav, AListEntryOf2GiBOrMoreIsRefusedBeforeLibsndfileLoopsOnIt) {
         expectRefused(decodeSoundFile(path), path.string(), reason);
         expectRefused(decodeSoundMemory(std::as_bytes(std::span(looping)), "loop-in-memory.wav"),
                       "loop-in-memory.wav", reason);
+        // A list that claims 0xffffffff bytes is read to the end of the file all the same.
+        std::vector<char> endless = looping;
+        std::fill_n(endless.begin() + 80, 4, '\xff');
+        expectRefused(decodeSoundMemory(std::as_bytes(std::span(endless)), "endless.wav"),
+                      "endless.wav", reason);
 
         const std::vector<char> sane = wavWithListEntry(list, "INAM", 16, 16);
         const DecodeResult loaded =
