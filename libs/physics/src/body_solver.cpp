@@ -13,27 +13,6 @@ namespace e2d::physics::detail {
 
 namespace {
 
-// Implicit damping, 1 / (1 + h c): stable for any coefficient and step. Most bodies have
-// none, and skipping the division then gives the same 1.
-inline float dampingFactor(float h, float coefficient) {
-    return coefficient == 0.0f ? 1.0f : 1.0f / (1.0f + h * coefficient);
-}
-
-} // namespace
-
-namespace {
-
-inline void prepareIntegration(BodySim& sim, Vec2 gravity, float h) {
-    sim.linearDampingFactor = dampingFactor(h, sim.linearDamping);
-    sim.angularDampingFactor = dampingFactor(h, sim.angularDamping);
-    // Gravity acts on each axis that can move (a kinematic body has none).
-    Vec2 g = sim.gravityScale * gravity;
-    Vec2 accel{sim.invMass.x > 0.0f ? g.x + sim.invMass.x * sim.force.x : 0.0f,
-               sim.invMass.y > 0.0f ? g.y + sim.invMass.y * sim.force.y : 0.0f};
-    sim.velocityStep = h * accel;
-    sim.angularVelocityStep = h * sim.invInertia * sim.torque;
-}
-
 inline void integrateVelocity(const BodySim& sim, BodyState& state, SpeedCaps caps) {
     Vec2 v = sim.velocityStep + sim.linearDampingFactor * state.linearVelocity;
     float w = sim.angularVelocityStep + sim.angularDampingFactor * state.angularVelocity;
@@ -447,13 +426,6 @@ void prepareIntegration(std::span<BodySim> sims, Vec2 gravity, float h) {
     }
 }
 
-void prepareIntegration(std::span<BodySim> sims, std::span<const int> indices, Vec2 gravity,
-                        float h) {
-    for (int i : indices) {
-        prepareIntegration(sims[static_cast<std::size_t>(i)], gravity, h);
-    }
-}
-
 void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, float h,
                          float maxLinearSpeed) {
     integrateVelocitiesOf(
@@ -568,10 +540,7 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
         std::span<const int> joints;
         float h;
 
-        void integrateVelocities(int subStep) {
-            if (subStep == 0) {
-                prepareIntegration(step.sims, bodies, step.gravity, h);
-            }
+        void integrateVelocities(int /*subStep*/) {
             detail::integrateVelocities(step.sims, step.states, bodies, h,
                                         step.def->maxLinearSpeed);
         }

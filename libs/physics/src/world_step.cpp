@@ -230,19 +230,26 @@ void World::Impl::solve(float dt) {
     // Two passes: the solver indices first, so the arrays are sized once and each body written
     // whole in its place (growing them body by body, each element default-built and then
     // overwritten, was about 80 instructions a body).
+    detail::Body* const bodySlots = bodies.data();
+    const std::size_t bodyCount = bodies.size();
     int simCount = 0;
-    for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
-        detail::Body& b = bodies[bi];
-        detail::BodyMotion& m = b.motion;
-        const bool moving = b.alive && b.enabled && b.type != BodyType::Static && m.awake;
-        m.solverIndex = moving ? simCount++ : kNullIndex;
+    for (std::size_t bi = 0; bi < bodyCount; ++bi) {
+        detail::Body& b = bodySlots[bi];
+        const bool moving = b.alive & b.enabled & (b.type != BodyType::Static) & b.motion.awake;
+        b.motion.solverIndex = moving ? simCount++ : kNullIndex;
     }
     s.sims.resize(static_cast<std::size_t>(simCount));
     s.states.resize(static_cast<std::size_t>(simCount));
     s.stateRigid.resize(static_cast<std::size_t>(simCount));
+    // The arrays in locals: the byte stores to stateRigid may alias them for the compiler, which
+    // then loaded them from the world again for every body.
+    detail::BodySim* const sims = s.sims.data();
+    detail::BodyState* const states = s.states.data();
+    unsigned char* const stateRigid = s.stateRigid.data();
+    const Vec2 bodyGravity = gravity;
     const detail::SpeedCaps caps = detail::speedCaps(def.maxLinearSpeed, integrationStep);
-    for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
-        const detail::Body& b = bodies[bi];
+    for (std::size_t bi = 0; bi < bodyCount; ++bi) {
+        const detail::Body& b = bodySlots[bi];
         const detail::BodyMotion& m = b.motion;
         if (m.solverIndex == kNullIndex) {
             continue;
@@ -252,7 +259,8 @@ void World::Impl::solve(float dt) {
         const Vec2 centerOffset = rotate(b.transform.q, m.localCenter);
         const Vec2 center = centerOffset + b.transform.p;
         const Vec2 invMass{m.lockX ? 0.0f : m.invMass, m.lockY ? 0.0f : m.invMass};
-        s.sims[k] = detail::BodySim{
+        detail::BodySim& entry = sims[k];
+        entry = detail::BodySim{
             .transform = b.transform,
             .center = center,
             .center0 = center,
@@ -271,7 +279,11 @@ void World::Impl::solve(float dt) {
             .bodyIndex = static_cast<int>(bi),
             .flags = m.isBullet ? std::uint32_t{detail::kIsBullet} : 0u,
         };
-        s.stateRigid[k] = invMass.x == 0.0f && invMass.y == 0.0f && m.invInertia == 0.0f;
+        // The integration steps' gravity, forces and damping, here while the body is at hand
+        // rather than in a pass of its own (the soft step's sub-steps; the classic solver and
+        // solveSoftStep() prepare their own).
+        detail::prepareIntegration(entry, bodyGravity, integrationStep);
+        stateRigid[k] = invMass.x == 0.0f && invMass.y == 0.0f && m.invInertia == 0.0f;
         // A kinematic body keeps its velocity; a locked axis has none.
         Vec2 v{m.lockX && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.x,
                m.lockY && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.y};
@@ -280,7 +292,7 @@ void World::Impl::solve(float dt) {
         // read them: integration would cap them anyway, and a contact's approach speed taken
         // from the raw value could overflow its restitution and hit event.
         detail::clampVelocity(v, w, caps);
-        s.states[k] = detail::BodyState{
+        states[k] = detail::BodyState{
             .linearVelocity = v, .angularVelocity = w, .deltaPosition = m.positionResidual};
     }
 
