@@ -283,7 +283,9 @@ void World::Impl::solve(float dt) {
         // rather than in a pass of its own (the soft step's sub-steps; the classic solver and
         // solveSoftStep() prepare their own).
         detail::prepareIntegration(entry, bodyGravity, integrationStep);
-        stateRigid[k] = invMass.x == 0.0f && invMass.y == 0.0f && m.invInertia == 0.0f;
+        // Without branches (&, not &&): which way each goes varies body by body.
+        stateRigid[k] = static_cast<unsigned char>((invMass.x == 0.0f) & (invMass.y == 0.0f) &
+                                                   (m.invInertia == 0.0f));
         // A kinematic body keeps its velocity; a locked axis has none.
         Vec2 v{m.lockX && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.x,
                m.lockY && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.y};
@@ -350,16 +352,21 @@ void World::Impl::solve(float dt) {
     int constraintCount = 0;
     s.constraintContacts.resize(s.touchingContacts.size());
     s.constraintBodies.resize(s.touchingContacts.size());
-    for (const detail::Simulation::TouchingContact& c : s.touchingContacts) {
-        const int indexA = body(c.bodyA).motion.solverIndex;
-        const int indexB = body(c.bodyB).motion.solverIndex;
-        if (indexA == kNullIndex && indexB == kNullIndex) {
-            continue;
+    {
+        // The arrays in locals, as in the copy above.
+        int* const contactsOut = s.constraintContacts.data();
+        detail::Simulation::ConstraintBodies* const bodiesOut = s.constraintBodies.data();
+        for (const detail::Simulation::TouchingContact& c : s.touchingContacts) {
+            const int indexA = bodySlots[c.bodyA].motion.solverIndex;
+            const int indexB = bodySlots[c.bodyB].motion.solverIndex;
+            if (indexA == kNullIndex && indexB == kNullIndex) {
+                continue;
+            }
+            rolling |= c.rollingResistance > 0.0f;
+            const auto k = static_cast<std::size_t>(constraintCount++);
+            contactsOut[k] = c.contact;
+            bodiesOut[k] = {indexA, indexB};
         }
-        rolling |= c.rollingResistance > 0.0f;
-        const auto k = static_cast<std::size_t>(constraintCount++);
-        s.constraintContacts[k] = c.contact;
-        s.constraintBodies[k] = {indexA, indexB};
     }
     s.constraintContacts.resize(static_cast<std::size_t>(constraintCount));
     s.constraintBodies.resize(static_cast<std::size_t>(constraintCount));
