@@ -353,9 +353,11 @@ void World::Impl::solve(float dt) {
     s.constraintContacts.resize(s.touchingContacts.size());
     s.constraintBodies.resize(s.touchingContacts.size());
     {
-        // The arrays in locals, as in the copy above.
+        // The arrays and the count in locals, as in the copy above (the lambdas below take
+        // constraintCount by reference, which kept it in memory through the loop).
         int* const contactsOut = s.constraintContacts.data();
         detail::Simulation::ConstraintBodies* const bodiesOut = s.constraintBodies.data();
+        std::size_t kept = 0;
         for (const detail::Simulation::TouchingContact& c : s.touchingContacts) {
             const int indexA = bodySlots[c.bodyA].motion.solverIndex;
             const int indexB = bodySlots[c.bodyB].motion.solverIndex;
@@ -363,10 +365,11 @@ void World::Impl::solve(float dt) {
                 continue;
             }
             rolling |= c.rollingResistance > 0.0f;
-            const auto k = static_cast<std::size_t>(constraintCount++);
-            contactsOut[k] = c.contact;
-            bodiesOut[k] = {indexA, indexB};
+            contactsOut[kept] = c.contact;
+            bodiesOut[kept] = {indexA, indexB};
+            ++kept;
         }
+        constraintCount = static_cast<int>(kept);
     }
     s.constraintContacts.resize(static_cast<std::size_t>(constraintCount));
     s.constraintBodies.resize(static_cast<std::size_t>(constraintCount));
@@ -489,12 +492,18 @@ void World::Impl::solve(float dt) {
             const int first =
                 levelFirst +
                 (group - s.wideContacts.levelStart[static_cast<std::size_t>(level)]) * N;
+            // The arrays in locals: the lanes' pointer stores below may alias them for the
+            // compiler, which then loaded them from the world again for every lane.
+            const detail::BodySim* const groupSims = s.sims.data();
+            const detail::Contact* const contacts = s.contacts.data();
+            const int* const slotContact = s.slotContact.data();
+            const detail::Simulation::ConstraintBodies* const slotBodies = s.slotBodies.data();
             // A static (or asleep) side's centre offset, viewOf()'s, as a row of four floats.
             alignas(16) float staticOffset[2 * N][4];
             auto sideRows = [&](int lane, int side, int bodyIndex, int solverIndex,
                                 const float*& offset, const float*& mass) {
                 if (solverIndex != kNullIndex) {
-                    const detail::BodySim& bs = s.sims[static_cast<std::size_t>(solverIndex)];
+                    const detail::BodySim& bs = groupSims[solverIndex];
                     offset = &bs.centerOffset.x;
                     mass = &bs.invMass.x;
                     return;
@@ -513,8 +522,8 @@ void World::Impl::solve(float dt) {
                 const int slot = first + lane;
                 prefetchContact(slot);
                 const auto at = static_cast<std::size_t>(slot);
-                const detail::Contact& c = s.contacts[static_cast<std::size_t>(s.slotContact[at])];
-                const detail::Simulation::ConstraintBodies sides = s.slotBodies[at];
+                const detail::Contact& c = contacts[slotContact[at]];
+                const detail::Simulation::ConstraintBodies sides = slotBodies[at];
                 in.manifold[lane] = &c.manifold;
                 in.indexA[lane] = sides.indexA;
                 in.indexB[lane] = sides.indexB;
