@@ -459,6 +459,43 @@ void integratePositions(std::span<BodyState> states, std::span<const int> indice
         speedCaps(maxLinearSpeed, h));
 }
 
+namespace {
+
+// `increasing` (indices in increasing order) as one run of the arrays: its first index and
+// length, or a length of 0 when it is not one (a gap between its first and last).
+struct BodyRun {
+    std::size_t start = 0;
+    std::size_t length = 0;
+};
+BodyRun runOf(std::span<const int> increasing) {
+    if (increasing.empty() ||
+        static_cast<std::size_t>(increasing.back() - increasing.front()) != increasing.size() - 1) {
+        return {};
+    }
+    return {static_cast<std::size_t>(increasing.front()), increasing.size()};
+}
+
+} // namespace
+
+void integrateBlockVelocities(std::span<const BodySim> sims, std::span<BodyState> states,
+                              std::span<const int> increasing, float h, float maxLinearSpeed) {
+    if (const BodyRun run = runOf(increasing); run.length != 0) {
+        integrateVelocities(sims.subspan(run.start, run.length),
+                            states.subspan(run.start, run.length), h, maxLinearSpeed);
+        return;
+    }
+    integrateVelocities(sims, states, increasing, h, maxLinearSpeed);
+}
+
+void integrateBlockPositions(std::span<BodyState> states, std::span<const int> increasing, float h,
+                             float maxLinearSpeed) {
+    if (const BodyRun run = runOf(increasing); run.length != 0) {
+        integratePositions(states.subspan(run.start, run.length), h, maxLinearSpeed);
+        return;
+    }
+    integratePositions(states, increasing, h, maxLinearSpeed);
+}
+
 ContactSoftness makeContactSoftness(const SolverDef& def, float dt) {
     float h = dt / static_cast<float>(def.subSteps);
     float hertz = std::min(def.contactHertz, 0.25f / h);
@@ -541,8 +578,7 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
         float h;
 
         void integrateVelocities(int /*subStep*/) {
-            detail::integrateVelocities(step.sims, step.states, bodies, h,
-                                        step.def->maxLinearSpeed);
+            integrateBlockVelocities(step.sims, step.states, bodies, h, step.def->maxLinearSpeed);
         }
         void warmStart() {
             warmStartJointsOf(step, joints);
@@ -556,7 +592,7 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
                       backward, reversePoints);
         }
         void integratePositions() {
-            detail::integratePositions(step.states, bodies, h, step.def->maxLinearSpeed);
+            integrateBlockPositions(step.states, bodies, h, step.def->maxLinearSpeed);
         }
         void restitution() {
             applyRestitutionWide(wide, restituted, step.states, step.def->restitutionThreshold, h);

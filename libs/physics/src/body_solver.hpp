@@ -113,6 +113,13 @@ void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> sta
                          std::span<const int> indices, float h, float maxLinearSpeed);
 void integratePositions(std::span<BodyState> states, std::span<const int> indices, float h,
                         float maxLinearSpeed);
+// The same for a block's bodies, `increasing` (indices in increasing order): read in place when
+// they are one run of the arrays (a block holding every awake body, about a third of the
+// indexed loops' instructions saved), through the indices otherwise.
+void integrateBlockVelocities(std::span<const BodySim> sims, std::span<BodyState> states,
+                              std::span<const int> increasing, float h, float maxLinearSpeed);
+void integrateBlockPositions(std::span<BodyState> states, std::span<const int> increasing, float h,
+                             float maxLinearSpeed);
 
 // Runs the velocity and position stages of one step; positions end in the states' deltas.
 void solveSoftStep(const SolverStep& step);

@@ -96,7 +96,7 @@ void runStage(int stageIndex, int block, int /*worker*/, void* context) {
     };
     switch (stage.kind) {
     case SoftStage::Kind::IntegrateVelocities:
-        integrateVelocities(c.step.sims, c.step.states, bodies(), c.h, def.maxLinearSpeed);
+        integrateBlockVelocities(c.step.sims, c.step.states, bodies(), c.h, def.maxLinearSpeed);
         break;
     case SoftStage::Kind::WarmStart:
         warmStartWideGroups(c.wide, begin, end);
@@ -106,7 +106,7 @@ void runStage(int stageIndex, int block, int /*worker*/, void* context) {
                         stage.reversePoints);
         break;
     case SoftStage::Kind::IntegratePositions:
-        integratePositions(c.step.states, bodies(), c.h, def.maxLinearSpeed);
+        integrateBlockPositions(c.step.states, bodies(), c.h, def.maxLinearSpeed);
         break;
     case SoftStage::Kind::Restitution:
         applyRestitutionWide(c.wide, c.restitution, c.step.states, def.restitutionThreshold, c.h);
