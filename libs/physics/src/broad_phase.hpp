@@ -211,6 +211,8 @@ private:
         }
     }
     [[noreturn]] static void throwBadKey(int proxyKey, const char* function);
+    // bufferMove() without the key check, for keys just checked or created.
+    void bufferMoveLive(int proxyKey);
     // updatePairs()'s queries for moved proxy `key`: the accepted pairs not in the set yet
     // into `found`, the tree queries counted into `queries`.
     template <class ShouldPair, class QueryMask>
@@ -354,26 +356,31 @@ void BroadPhase::findPairsOf(int key, ShouldPair& shouldPair, QueryMask& queryMa
 
     auto queryTree = [&](BodyType otherType) {
         ++queries;
-        trees_[static_cast<std::size_t>(otherType)].query(
-            box, mask, [&](int otherId, std::uint64_t otherUd) {
-                const int otherKey = makeProxyKey(otherId, otherType);
-                // When both moved, the one with the lower key reports the pair (the queries
-                // are symmetric: each one's query covers the other's tree).
-                if (otherKey == key || (otherKey < key && isMoved(otherKey))) {
-                    return;
-                }
-                const std::uint64_t pairKey = makePairKey(ud, otherUd);
-                if (pairs_.contains(pairKey)) {
-                    return;
-                }
-                const bool mineIsA = ud < otherUd;
-                const std::uint64_t a = mineIsA ? ud : otherUd;
-                const std::uint64_t b = mineIsA ? otherUd : ud;
-                if (!shouldPair(a, b)) {
-                    return;
-                }
-                found.push_back({a, b, mineIsA ? key : otherKey, mineIsA ? otherKey : key});
-            });
+        const DynamicTree& tree = trees_[static_cast<std::size_t>(otherType)];
+        if (tree.isEmpty()) {
+            return; // often the kinematic tree
+        }
+        // The box is a tree's own: valid, no need to check it again.
+        auto report = [&](int otherId, std::uint64_t otherUd) {
+            const int otherKey = makeProxyKey(otherId, otherType);
+            // When both moved, the one with the lower key reports the pair (the queries
+            // are symmetric: each one's query covers the other's tree).
+            if (otherKey == key || (otherKey < key && isMoved(otherKey))) {
+                return;
+            }
+            const std::uint64_t pairKey = makePairKey(ud, otherUd);
+            if (pairs_.contains(pairKey)) {
+                return;
+            }
+            const bool mineIsA = ud < otherUd;
+            const std::uint64_t a = mineIsA ? ud : otherUd;
+            const std::uint64_t b = mineIsA ? otherUd : ud;
+            if (!shouldPair(a, b)) {
+                return;
+            }
+            found.push_back({a, b, mineIsA ? key : otherKey, mineIsA ? otherKey : key});
+        };
+        tree.queryValid(box, mask, report);
     };
     switch (type) {
     case BodyType::Dynamic:

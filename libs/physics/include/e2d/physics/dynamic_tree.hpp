@@ -205,6 +205,11 @@ private:
         [[nodiscard]] bool isLeaf() const { return child1 == kNullProxy; }
     };
 
+    // query() without the box check, for a box taken from a tree (BroadPhase::findPairsOf()).
+    template <class F>
+    void queryValid(const Aabb& box, std::uint64_t maskBits, F& callback) const;
+    // Whether no proxy is in the hierarchy (deferred ones aside): every query finds nothing.
+    [[nodiscard]] bool isEmpty() const { return root_ == kNullProxy; }
     int allocateNode();
     void freeNode(int index);
     void insertLeaf(int leaf);
@@ -277,6 +282,11 @@ void DynamicTree::query(const Aabb& box, std::uint64_t maskBits, F&& callback) c
     if (!isValidBox(box)) {
         throwBadQueryBox(box);
     }
+    queryValid(box, maskBits, callback);
+}
+
+template <class F>
+void DynamicTree::queryValid(const Aabb& box, std::uint64_t maskBits, F& callback) const {
     if (root_ == kNullProxy) {
         return;
     }
