@@ -52,7 +52,7 @@ int BroadPhase::createProxy(const Aabb& aabb, BodyType type, std::uint64_t categ
         }
     }
     info(key) = ProxyInfo{};
-    bufferMove(key);
+    bufferMoveLive(key);
     return key;
 }
 
@@ -90,12 +90,16 @@ bool BroadPhase::moveProxy(int proxyKey, const Aabb& aabb, Vec2 displacement) {
     reserveOneMore(moveBuffer_);
     trees_[treeIndex(proxyKey)].moveProxy(
         proxyIdOf(proxyKey), predictedFatBox(aabb, proxyTypeOf(proxyKey), displacement));
-    bufferMove(proxyKey);
+    bufferMoveLive(proxyKey);
     return true;
 }
 
 void BroadPhase::bufferMove(int proxyKey) {
     checkKey(proxyKey, "bufferMove");
+    bufferMoveLive(proxyKey);
+}
+
+void BroadPhase::bufferMoveLive(int proxyKey) {
     ProxyInfo& pi = info(proxyKey);
     if (pi.moveIndex >= 0) {
         return;
