@@ -68,6 +68,16 @@ constexpr int kMaxImbalance = 4;
 
 DynamicTree::DynamicTree() = default;
 
+// Inline: every climb up the tree refits node by node.
+inline void DynamicTree::refit(int index) {
+    Node& node = nodes_[static_cast<std::size_t>(index)];
+    const Node& a = nodes_[static_cast<std::size_t>(node.child1)];
+    const Node& b = nodes_[static_cast<std::size_t>(node.child2)];
+    node.aabb = merge(a.aabb, b.aabb);
+    node.categoryBits = a.categoryBits | b.categoryBits;
+    node.height = 1 + std::max(a.height, b.height);
+}
+
 void DynamicTree::throwBadQueryBox(const Aabb& box) {
     throw core::Error("physics::DynamicTree::query(): box must be finite, got " + formatBox(box));
 }
@@ -450,15 +460,6 @@ int DynamicTree::findBestSibling(const Aabb& box, int start) const {
     return best;
 }
 
-void DynamicTree::refit(int index) {
-    Node& node = nodes_[static_cast<std::size_t>(index)];
-    const Node& a = nodes_[static_cast<std::size_t>(node.child1)];
-    const Node& b = nodes_[static_cast<std::size_t>(node.child2)];
-    node.aabb = merge(a.aabb, b.aabb);
-    node.categoryBits = a.categoryBits | b.categoryBits;
-    node.height = 1 + std::max(a.height, b.height);
-}
-
 // Tree rotations at node A (children B, C): swap a child of A with a grandchild on the other side
 // when that shrinks the inner node it lands in (surface area, after Kopta et al. 2012). Area alone
 // lets the height grow on adversarial input (a spiral of boxes), so when A's subtrees differ in
@@ -486,7 +487,7 @@ bool DynamicTree::rotate(int index) {
                         nodes_[static_cast<std::size_t>(a.child1)].height;
     const bool mustLower = balance > kMaxImbalance || balance < -kMaxImbalance;
 
-    auto consider = [&](int low, int high) {
+    auto consider = [&](int low, int high) __attribute__((always_inline)) {
         const Node& lowNode = nodes_[static_cast<std::size_t>(low)];
         const Node& highNode = nodes_[static_cast<std::size_t>(high)];
         if (highNode.isLeaf()) {
