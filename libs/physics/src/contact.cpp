@@ -312,12 +312,80 @@ void recycleManifold(Manifold& m, const detail::ManifoldOrigin& o, const Transfo
 
 #endif
 
-// World::Impl::updateManifold() on sides already looked up: forced inline into the parallel
-// pass's loop, which has just read them (the call and the second lookup cost about 30
-// instructions a contact).
 // What collideContact() found: whether the manifold has points, and whether it was recycled.
 enum Collided : unsigned char { kNoPoints = 0, kPoints = 1, kRecycled = 2 };
 
+// How fast the pair can close, at most (m/s): the relative speed of the origins plus each
+// body's fastest turning point.
+inline float closingSpeed(const detail::Body& ba, const detail::Body& bb) {
+    return length(bb.linearVelocity - ba.linearVelocity) +
+           std::abs(ba.angularVelocity) * ba.motion.maxExtent +
+           std::abs(bb.angularVelocity) * bb.motion.maxExtent;
+}
+
+// Speculative margin: the fixed one plus how far the pair can close in one step, so a fast
+// approach is caught before it overlaps (bounded, as a huge margin would stop bodies against
+// points they would have passed).
+inline float speculativeMargin(float speculativeDistance, float dt, float closing) {
+    return std::min(speculativeDistance + dt * closing, 4.0f * kAabbMargin);
+}
+
+// Last step's impulses of one point by feature id (-1: no point), kept aside so that the new
+// manifold can be built in place, without a 92-byte copy.
+struct OldPoint {
+    int id;
+    float normalImpulse;
+    float tangentImpulse;
+};
+struct OldPoints {
+    OldPoint p0;
+    OldPoint p1;
+};
+
+inline OldPoints oldPoints(const Manifold& old) {
+    return {{old.pointCount > 0 ? old.points[0].id : -1, old.points[0].normalImpulse,
+             old.points[0].tangentImpulse},
+            {old.pointCount > 1 ? old.points[1].id : -1, old.points[1].normalImpulse,
+             old.points[1].tangentImpulse}};
+}
+
+// Impulses carry over from the first old point with the same id.
+inline void carryImpulses(Manifold& m, const OldPoints& old) {
+    for (int i = 0; i < m.pointCount; ++i) {
+        ManifoldPoint& mp = m.points[i];
+        const OldPoint* match = mp.id == old.p0.id   ? &old.p0
+                                : mp.id == old.p1.id ? &old.p1
+                                                     : nullptr;
+        mp.normalImpulse = match != nullptr ? match->normalImpulse : 0.0f;
+        mp.tangentImpulse = match != nullptr ? match->tangentImpulse : 0.0f;
+        mp.persisted = match != nullptr;
+    }
+}
+
+#if defined(__SSE2__)
+
+// collideContact() for two circles with no noted origin (circle pairs are never recycled): the
+// old impulses are only looked at for circles within the margin, and nothing else is.
+[[gnu::always_inline]] inline unsigned collideCircleContact(detail::Contact& c, const Circle& a,
+                                                            const Circle& b, const detail::Body& ba,
+                                                            const detail::Body& bb,
+                                                            float speculativeDistance, float dt) {
+    const detail::CircleGapSse2 gap = detail::circleGapSse2(a, ba.transform, b, bb.transform);
+    if (gap.beyond(speculativeMargin(speculativeDistance, dt, closingSpeed(ba, bb)))) {
+        c.manifold = Manifold{};
+        return kNoPoints;
+    }
+    const OldPoints old = oldPoints(c.manifold);
+    Manifold& m = *::new (&c.manifold) Manifold(detail::circleManifoldSse2(gap, a));
+    carryImpulses(m, old);
+    return kPoints;
+}
+
+#endif
+
+// World::Impl::updateManifold() on sides already looked up: forced inline into the parallel
+// pass's loop, which has just read them (the call and the second lookup cost about 30
+// instructions a contact).
 [[gnu::always_inline]] inline unsigned collideContact(detail::Contact& c, const ContactSides& sides,
                                                       CollisionAlgorithm collisionAlgorithm,
                                                       float speculativeDistance,
@@ -328,17 +396,13 @@ enum Collided : unsigned char { kNoPoints = 0, kPoints = 1, kRecycled = 2 };
             collide(sa.geometry, ba.transform, sb.geometry, bb.transform, collisionAlgorithm, 0.0f);
         return m.pointCount > 0 ? kPoints : kNoPoints;
     }
-    // Speculative margin: the fixed one plus how far the pair can close in one step, so a
-    // fast approach is caught before it overlaps (bounded, as a huge margin would stop
-    // bodies against points they would have passed).
-    float closing = length(bb.linearVelocity - ba.linearVelocity) +
-                    std::abs(ba.angularVelocity) * ba.motion.maxExtent +
-                    std::abs(bb.angularVelocity) * bb.motion.maxExtent;
-    float margin = std::min(speculativeDistance + dt * closing, 4.0f * kAabbMargin);
     // Recycling: the old manifold moved with the bodies while they, with this step's motion at
-    // the current speeds, stay within the distance of where the routine last saw them.
+    // the current speeds, stay within the distance of where the routine last saw them. Most of
+    // a resting pile's contacts end here, without a look at their shapes.
     detail::ManifoldOrigin& origin = c.origin;
+    float closing;
     if (origin.valid) {
+        closing = closingSpeed(ba, bb);
         if (recycleDistance > 0.0f &&
             motionSince(origin, ba.transform, bb.transform) + dt * closing <= recycleDistance) {
             const unsigned points = c.manifold.pointCount > 0 ? kPoints : kNoPoints;
@@ -346,46 +410,33 @@ enum Collided : unsigned char { kNoPoints = 0, kPoints = 1, kRecycled = 2 };
             return kRecycled | points;
         }
         origin.valid = false;
+    } else {
+#if defined(__SSE2__)
+        if (sa.geometry.index() == kCircleIndex && sb.geometry.index() == kCircleIndex) {
+            return collideCircleContact(c, *std::get_if<Circle>(&sa.geometry),
+                                        *std::get_if<Circle>(&sb.geometry), ba, bb,
+                                        speculativeDistance, dt);
+        }
+#endif
+        closing = closingSpeed(ba, bb);
     }
-    // Last step's impulses by feature id (-1: no point), kept aside so that the new manifold can
-    // be built in place, without a 92-byte copy.
-    struct OldPoint {
-        int id;
-        float normalImpulse;
-        float tangentImpulse;
-    };
-    const Manifold& old = c.manifold;
-    const OldPoint old0{old.pointCount > 0 ? old.points[0].id : -1, old.points[0].normalImpulse,
-                        old.points[0].tangentImpulse};
-    const OldPoint old1{old.pointCount > 1 ? old.points[1].id : -1, old.points[1].normalImpulse,
-                        old.points[1].tangentImpulse};
+    const float margin = speculativeMargin(speculativeDistance, dt, closing);
+    const OldPoints old = oldPoints(c.manifold);
+    const std::size_t type = sa.geometry.index();
+    const bool sameType = type == sb.geometry.index();
     // Polygon pairs (most of a box scene) and circle pairs (most of a ball pit) call their
     // routine directly, skipping collide()'s dispatch on both geometries (about 30
     // instructions a circle pair). The routine's result initialises c.manifold directly.
-    const std::size_t type = sa.geometry.index();
-    const bool sameType = type == sb.geometry.index();
     Manifold& m = *::new (&c.manifold) Manifold(
         sameType && type == kPolygonIndex && collisionAlgorithm == CollisionAlgorithm::Sat
             ? collidePolygons(*std::get_if<Polygon>(&sa.geometry), ba.transform,
                               *std::get_if<Polygon>(&sb.geometry), bb.transform, margin)
         : sameType && type == kCircleIndex
-#if defined(__SSE2__)
-            ? detail::collideCirclesSse2(*std::get_if<Circle>(&sa.geometry), ba.transform,
-                                         *std::get_if<Circle>(&sb.geometry), bb.transform, margin)
-#else
             ? collideCircles(*std::get_if<Circle>(&sa.geometry), ba.transform,
                              *std::get_if<Circle>(&sb.geometry), bb.transform, margin)
-#endif
             : collide(sa.geometry, ba.transform, sb.geometry, bb.transform, collisionAlgorithm,
                       margin));
-    // Impulses carry over from the first old point with the same id.
-    for (int i = 0; i < m.pointCount; ++i) {
-        ManifoldPoint& mp = m.points[i];
-        const OldPoint* match = mp.id == old0.id ? &old0 : mp.id == old1.id ? &old1 : nullptr;
-        mp.normalImpulse = match != nullptr ? match->normalImpulse : 0.0f;
-        mp.tangentImpulse = match != nullptr ? match->tangentImpulse : 0.0f;
-        mp.persisted = match != nullptr;
-    }
+    carryImpulses(m, old);
     if (recycleDistance > 0.0f && isRecyclable(sa.geometry) && isRecyclable(sb.geometry)) {
         recordOrigin(origin, m, ba, bb);
     }
