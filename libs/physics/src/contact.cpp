@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <new>
+#include <type_traits>
 #include <variant>
 
 #if defined(__SSE2__)
@@ -26,6 +27,22 @@ int sideOf(const detail::Contact& c, int bodyIndex) { return c.bodyA == bodyInde
 
 constexpr std::size_t kPolygonIndex = static_cast<std::size_t>(ShapeType::Polygon);
 constexpr std::size_t kCircleIndex = static_cast<std::size_t>(ShapeType::Circle);
+
+// The circle of a shape known to be one (Contact::circles): std::get_if's test of the
+// variant's index, and its load from another cache line of the shape, are left out.
+const Circle& knownCircle(const detail::Shape& s) {
+    if (s.geometry.index() != kCircleIndex) {
+        __builtin_unreachable();
+    }
+    return *std::get_if<Circle>(&s.geometry);
+}
+
+// Contact::proxyKeyA, proxyKeyB and circles from the contact's shapes.
+void copyShapes(detail::Contact& c, const detail::Shape& a, const detail::Shape& b) {
+    c.proxyKeyA = a.proxyKey;
+    c.proxyKeyB = b.proxyKey;
+    c.circles = a.geometry.index() == kCircleIndex && b.geometry.index() == kCircleIndex;
+}
 
 } // namespace
 
@@ -47,6 +64,7 @@ void World::Impl::createContact(int shapeA, int shapeB) {
     c.shapeB = shapeB;
     c.bodyA = a.body;
     c.bodyB = b.body;
+    copyShapes(c, a, b);
     c.idA = shapeId(shapeA);
     c.idB = shapeId(shapeB);
     c.sensor = a.isSensor || b.isSensor;
@@ -68,6 +86,14 @@ void World::Impl::createContact(int shapeA, int shapeB) {
         m.contactHead = ci;
     }
     ++s.contactCount;
+}
+
+void World::Impl::copyContactShapes() {
+    for (detail::Contact& c : sim.contacts) {
+        if (c.alive) {
+            copyShapes(c, shape(c.shapeA), shape(c.shapeB));
+        }
+    }
 }
 
 void World::Impl::destroyContact(int contactIndex, bool reportEnd) {
@@ -123,10 +149,10 @@ void World::Impl::destroyContacts(int shapeIndex) {
 
 namespace {
 
-// A contact's two shapes and bodies, as the narrow phase reads them.
+// A contact's two bodies, as the narrow phase reads them, and the shape array (its shapes are
+// only looked at when the manifold is not recycled).
 struct ContactSides {
-    const detail::Shape& sa;
-    const detail::Shape& sb;
+    const detail::Shape* shapes;
     const detail::Body& ba;
     const detail::Body& bb;
 };
@@ -372,12 +398,12 @@ inline void carryImpulses(Manifold& m, const OldPoints& old) {
                                                             float speculativeDistance, float dt) {
     const detail::CircleGapSse2 gap = detail::circleGapSse2(a, ba.transform, b, bb.transform);
     if (gap.beyond(speculativeMargin(speculativeDistance, dt, closingSpeed(ba, bb)))) {
-        c.manifold = Manifold{};
+        detail::storeNoManifoldSse2(c.manifold);
         return kNoPoints;
     }
     const OldPoints old = oldPoints(c.manifold);
-    Manifold& m = *::new (&c.manifold) Manifold(detail::circleManifoldSse2(gap, a));
-    carryImpulses(m, old);
+    detail::storeCircleManifoldSse2(gap, a, c.manifold);
+    carryImpulses(c.manifold, old);
     return kPoints;
 }
 
@@ -390,15 +416,12 @@ inline void carryImpulses(Manifold& m, const OldPoints& old) {
                                                       CollisionAlgorithm collisionAlgorithm,
                                                       float speculativeDistance,
                                                       float recycleDistance, float dt) {
-    const auto& [sa, sb, ba, bb] = sides;
-    if (c.sensor) {
-        Manifold m =
-            collide(sa.geometry, ba.transform, sb.geometry, bb.transform, collisionAlgorithm, 0.0f);
-        return m.pointCount > 0 ? kPoints : kNoPoints;
-    }
+    const detail::Body& ba = sides.ba;
+    const detail::Body& bb = sides.bb;
     // Recycling: the old manifold moved with the bodies while they, with this step's motion at
     // the current speeds, stay within the distance of where the routine last saw them. Most of
-    // a resting pile's contacts end here, without a look at their shapes.
+    // a resting pile's contacts end here, without a look at their shapes. (A sensor's origin is
+    // never noted.)
     detail::ManifoldOrigin& origin = c.origin;
     float closing;
     if (origin.valid) {
@@ -411,15 +434,23 @@ inline void carryImpulses(Manifold& m, const OldPoints& old) {
         }
         origin.valid = false;
     } else {
+        const detail::Shape& sa = sides.shapes[c.shapeA];
+        const detail::Shape& sb = sides.shapes[c.shapeB];
+        if (c.sensor) {
+            Manifold m = collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
+                                 collisionAlgorithm, 0.0f);
+            return m.pointCount > 0 ? kPoints : kNoPoints;
+        }
 #if defined(__SSE2__)
-        if (sa.geometry.index() == kCircleIndex && sb.geometry.index() == kCircleIndex) {
-            return collideCircleContact(c, *std::get_if<Circle>(&sa.geometry),
-                                        *std::get_if<Circle>(&sb.geometry), ba, bb,
+        if (c.circles) {
+            return collideCircleContact(c, knownCircle(sa), knownCircle(sb), ba, bb,
                                         speculativeDistance, dt);
         }
 #endif
         closing = closingSpeed(ba, bb);
     }
+    const detail::Shape& sa = sides.shapes[c.shapeA];
+    const detail::Shape& sb = sides.shapes[c.shapeB];
     const float margin = speculativeMargin(speculativeDistance, dt, closing);
     const OldPoints old = oldPoints(c.manifold);
     const std::size_t type = sa.geometry.index();
@@ -449,8 +480,8 @@ inline void carryImpulses(Manifold& m, const OldPoints& old) {
 // impulses carried over by feature id; a sensor's is not kept) and whether it touches. Reads the
 // contact's shapes and bodies only, so contacts are updated on several workers at once.
 bool World::Impl::updateManifold(detail::Contact& c, float dt) const {
-    return (collideContact(c, {shape(c.shapeA), shape(c.shapeB), body(c.bodyA), body(c.bodyB)},
-                           collisionAlgorithm, speculativeDistance,
+    return (collideContact(c, {shapes.data(), body(c.bodyA), body(c.bodyB)}, collisionAlgorithm,
+                           speculativeDistance,
                            effectiveRecycleDistance(sim.def, speculativeDistance), dt) &
             kPoints) != 0;
 }
@@ -494,14 +525,16 @@ void World::Impl::updateContacts(float dt) {
     // where these are larger than a core's own cache, they are fetched a few contacts ahead
     // (many_pyramids: about -6 % narrow-phase time). Where they fit, the prefetches only cost
     // their 47 instructions a contact (falling_circles_1000: -5 % instructions a step and
-    // faster without them), so they are left out by a fetch limit of 0, which adds no test.
+    // faster without them), so they are left out.
     constexpr int kPrefetchAhead = 6;
     constexpr std::size_t kPrefetchBytes = std::size_t{1} << 20;
     const bool prefetch =
         shapes.size() * sizeof(detail::Shape) + bodies.size() * sizeof(detail::Body) >
         kPrefetchBytes;
     const float recycle = effectiveRecycleDistance(s.def, speculativeDistance);
-    auto updateBlocks = [&](int firstBlock, int endBlock, int /*worker*/) {
+    // Blocks [firstBlock, endBlock), with prefetches if WithPrefetch::value (a separate loop
+    // without them: the test for them was 3 instructions a contact).
+    auto updateRange = [&](auto withPrefetch, int firstBlock, int endBlock) {
         // The arrays and settings in locals: each contact's store to `updates` (a char, which
         // may alias anything) made the compiler load them from the world again for every
         // contact.
@@ -517,7 +550,7 @@ void World::Impl::updateContacts(float dt) {
         const float stepDt = dt;
         const float recycleDistance = recycle;
         const bool serialAll = allSerial;
-        const int prefetchEnd = prefetch ? std::min(endBlock * kBlock, contactSlots) : 0;
+        const int prefetchEnd = std::min(endBlock * kBlock, contactSlots);
         for (int b = firstBlock; b < endBlock; ++b) {
             const int begin = b * kBlock;
             const int end = std::min(begin + kBlock, contactSlots);
@@ -525,41 +558,42 @@ void World::Impl::updateContacts(float dt) {
             int* serial = serialSlots + begin;
             detail::Simulation::NarrowBlock counts;
             for (int ci = begin; ci < end; ++ci) {
-                if (ci + kPrefetchAhead < prefetchEnd) {
-                    const detail::Contact& ahead = contacts[ci + kPrefetchAhead];
-                    if (ahead.alive) {
-                        detail::prefetchObject(shapeSlots + ahead.shapeA);
-                        detail::prefetchObject(shapeSlots + ahead.shapeB);
-                        detail::prefetchObject(bodySlots + ahead.bodyA);
-                        detail::prefetchObject(bodySlots + ahead.bodyB);
+                if constexpr (decltype(withPrefetch)::value) {
+                    if (ci + kPrefetchAhead < prefetchEnd) {
+                        const detail::Contact& ahead = contacts[ci + kPrefetchAhead];
+                        if (ahead.alive) {
+                            detail::prefetchObject(shapeSlots + ahead.shapeA);
+                            detail::prefetchObject(shapeSlots + ahead.shapeB);
+                            detail::prefetchObject(bodySlots + ahead.bodyA);
+                            detail::prefetchObject(bodySlots + ahead.bodyB);
+                        }
                     }
                 }
                 detail::Contact& c = contacts[ci];
                 if (!c.alive) {
                     continue;
                 }
-                const ContactSides sides{shapeSlots[c.shapeA], shapeSlots[c.shapeB],
-                                         bodySlots[c.bodyA], bodySlots[c.bodyB]};
                 unsigned char update;
-                if (!bp.fatAabbsOverlapLive(sides.sa.proxyKey, sides.sb.proxyKey)) {
+                const detail::Body& ba = bodySlots[c.bodyA];
+                const detail::Body& bb = bodySlots[c.bodyB];
+                if (!bp.fatAabbsOverlapLive(c.proxyKeyA, c.proxyKeyB)) {
                     update = kApart;
-                } else if (!sides.ba.motion.awake && !sides.bb.motion.awake) {
+                } else if (!ba.motion.awake && !bb.motion.awake) {
                     // Settled unless an earlier contact wakes a side in the second pass.
                     if (c.touching && !c.sensor && c.enabled) {
                         *touching++ = {ci, c.bodyA, c.bodyB, c.rollingResistance};
                     }
                     update = kAsleep;
                 } else {
-                    const unsigned collided =
-                        collideContact(c, sides, algorithm, speculative, recycleDistance, stepDt);
+                    const unsigned collided = collideContact(c, {shapeSlots, ba, bb}, algorithm,
+                                                             speculative, recycleDistance, stepDt);
                     ++counts.manifoldUpdates;
                     counts.manifoldsRecycled += (collided & kRecycled) != 0 ? 1 : 0;
                     const bool nowTouching = (collided & kPoints) != 0;
                     // Something awake touching a sleeping body that can wake.
-                    const bool awakeA = sides.ba.motion.awake;
-                    const bool wakes = nowTouching && !c.sensor &&
-                                       awakeA != sides.bb.motion.awake &&
-                                       (awakeA ? sides.bb : sides.ba).type != BodyType::Static;
+                    const bool awakeA = ba.motion.awake;
+                    const bool wakes = nowTouching && !c.sensor && awakeA != bb.motion.awake &&
+                                       (awakeA ? bb : ba).type != BodyType::Static;
                     if (serialAll || wakes || (nowTouching != c.touching && c.touchEvents)) {
                         update = nowTouching ? kTouching : kApartNow;
                     } else {
@@ -579,6 +613,13 @@ void World::Impl::updateContacts(float dt) {
             counts.touching = static_cast<int>(touching - (touchingSlots + begin));
             counts.serial = static_cast<int>(serial - (serialSlots + begin));
             s.narrowBlocks[static_cast<std::size_t>(b)] = counts;
+        }
+    };
+    auto updateBlocks = [&](int firstBlock, int endBlock, int /*worker*/) {
+        if (prefetch) {
+            updateRange(std::true_type{}, firstBlock, endBlock);
+        } else {
+            updateRange(std::false_type{}, firstBlock, endBlock);
         }
     };
     // A block is 64 contacts of 25 (circles) to 55 ns (boxes).

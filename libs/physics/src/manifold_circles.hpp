@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #if defined(__SSE2__)
 #include "sse_lanes.hpp"
@@ -49,6 +50,7 @@ static_assert(offsetof(ManifoldPoint, point) == 0 && offsetof(ManifoldPoint, anc
               offsetof(ManifoldPoint, anchorB) == 16 && offsetof(ManifoldPoint, separation) == 24 &&
               offsetof(ManifoldPoint, normalImpulse) == 28 && sizeof(ManifoldPoint) == 40);
 static_assert(offsetof(Manifold, pointCount) == 88 && sizeof(Manifold) == 92);
+static_assert(std::is_trivially_copyable_v<Manifold>);
 
 // The first half of collideCirclesSse2(): the centres relative to A's origin along world axes
 // and the radii's sum, enough to tell whether the pair is within a margin. The narrow phase
@@ -105,11 +107,11 @@ struct CircleGapSse2 {
     return g;
 }
 
-// The second half: the manifold of circles within the margin (!gap.beyond(margin)); `a` is
-// the pair's first circle. The normal is divided in one instruction, and the result stored as
-// 16-byte blocks instead of one store per field.
-[[gnu::always_inline]] inline Manifold circleManifoldSse2(const CircleGapSse2& gap,
-                                                          const Circle& a) {
+// The second half: the manifold of circles within the margin (!gap.beyond(margin)), written
+// over `out` (all its bytes); `a` is the pair's first circle. The normal is divided in one
+// instruction, and the result stored as 16-byte blocks instead of one store per field.
+[[gnu::always_inline]] inline void storeCircleManifoldSse2(const CircleGapSse2& gap,
+                                                           const Circle& a, Manifold& out) {
     const __m128 dist = _mm_sqrt_ss(gap.distSq);
     __m128 normal;
     if (_mm_cvtss_f32(dist) > FLT_EPSILON) [[likely]] {
@@ -126,8 +128,7 @@ struct CircleGapSse2 {
     // Lanes 0-1 the world point (anchorA + pA), lanes 2-3 anchorB (anchorA + (pA - pB)).
     const __m128 pointAnchorB = _mm_add_ps(_mm_movelh_ps(anchorA, anchorA),
                                            _mm_movelh_ps(gap.tA, _mm_sub_ps(gap.tA, gap.tB)));
-    Manifold m;
-    auto* bytes = reinterpret_cast<unsigned char*>(&m);
+    auto* bytes = reinterpret_cast<unsigned char*>(&out);
     const __m128 zero = _mm_setzero_ps();
     const __m128 blocks[3] = {_mm_movelh_ps(normal, pointAnchorB),
                               _mm_shuffle_ps(anchorA, pointAnchorB, _MM_SHUFFLE(3, 2, 1, 0)),
@@ -140,17 +141,28 @@ struct CircleGapSse2 {
     // The second point's last 8 bytes and the count.
     constexpr std::int32_t tail[3] = {0, 0, 1};
     std::memcpy(bytes + 80, tail, sizeof tail);
-    return m;
+}
+
+// Manifold{} (all zero bytes) written over `out` as 16-byte blocks: assigned, it is built on the
+// stack and copied, and a memset of its 92 bytes is a rep stos of a dozen steps.
+[[gnu::always_inline]] inline void storeNoManifoldSse2(Manifold& out) {
+    auto* bytes = reinterpret_cast<unsigned char*>(&out);
+    const __m128 zero = _mm_setzero_ps();
+    for (std::size_t offset = 0; offset < 80; offset += 16) {
+        std::memcpy(bytes + offset, &zero, 16);
+    }
+    std::memcpy(bytes + sizeof(Manifold) - 16, &zero, 16); // the last 12, overlapping
 }
 
 [[gnu::always_inline]] inline Manifold collideCirclesSse2(const Circle& a, const Transform& xfA,
                                                           const Circle& b, const Transform& xfB,
                                                           float margin) {
     const CircleGapSse2 gap = circleGapSse2(a, xfA, b, xfB);
-    if (gap.beyond(margin)) {
-        return Manifold{};
+    Manifold m;
+    if (!gap.beyond(margin)) {
+        storeCircleManifoldSse2(gap, a, m);
     }
-    return circleManifoldSse2(gap, a);
+    return m;
 }
 
 #endif
