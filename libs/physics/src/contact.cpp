@@ -344,8 +344,15 @@ enum Collided : unsigned char { kNoPoints = 0, kPoints = 1, kRecycled = 2 };
 // How fast the pair can close, at most (m/s): the relative speed of the origins plus each
 // body's fastest turning point.
 inline float closingSpeed(const detail::Body& ba, const detail::Body& bb) {
-    return length(bb.linearVelocity - ba.linearVelocity) +
-           std::abs(ba.angularVelocity) * ba.motion.maxExtent +
+    const Vec2 v = bb.linearVelocity - ba.linearVelocity;
+#if defined(__SSE2__)
+    // length(v) with sqrtss itself: std::sqrt's check for a negative argument (for errno),
+    // a compare and a branch around it, goes.
+    const float speed = _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(v.x * v.x + v.y * v.y)));
+#else
+    const float speed = length(v);
+#endif
+    return speed + std::abs(ba.angularVelocity) * ba.motion.maxExtent +
            std::abs(bb.angularVelocity) * bb.motion.maxExtent;
 }
 
@@ -409,9 +416,18 @@ inline void carryImpulses(Manifold& m, const OldPoints& old) {
 
 #endif
 
-// World::Impl::updateManifold() on sides already looked up: forced inline into the parallel
-// pass's loop, which has just read them (the call and the second lookup cost about 30
-// instructions a contact).
+// Whether a sensor contact's shapes overlap (a sensor keeps no manifold).
+bool sensorOverlaps(const detail::Contact& c, const ContactSides& sides,
+                    CollisionAlgorithm collisionAlgorithm) {
+    const Manifold m =
+        collide(sides.shapes[c.shapeA].geometry, sides.ba.transform,
+                sides.shapes[c.shapeB].geometry, sides.bb.transform, collisionAlgorithm, 0.0f);
+    return m.pointCount > 0;
+}
+
+// World::Impl::updateManifold() of a solid (not sensor) contact on sides already looked up:
+// forced inline into the parallel pass's loop, which has just read them (the call and the
+// second lookup cost about 30 instructions a contact).
 [[gnu::always_inline]] inline unsigned collideContact(detail::Contact& c, const ContactSides& sides,
                                                       CollisionAlgorithm collisionAlgorithm,
                                                       float speculativeDistance,
@@ -420,8 +436,7 @@ inline void carryImpulses(Manifold& m, const OldPoints& old) {
     const detail::Body& bb = sides.bb;
     // Recycling: the old manifold moved with the bodies while they, with this step's motion at
     // the current speeds, stay within the distance of where the routine last saw them. Most of
-    // a resting pile's contacts end here, without a look at their shapes. (A sensor's origin is
-    // never noted.)
+    // a resting pile's contacts end here, without a look at their shapes.
     detail::ManifoldOrigin& origin = c.origin;
     float closing;
     if (origin.valid) {
@@ -436,11 +451,6 @@ inline void carryImpulses(Manifold& m, const OldPoints& old) {
     } else {
         const detail::Shape& sa = sides.shapes[c.shapeA];
         const detail::Shape& sb = sides.shapes[c.shapeB];
-        if (c.sensor) {
-            Manifold m = collide(sa.geometry, ba.transform, sb.geometry, bb.transform,
-                                 collisionAlgorithm, 0.0f);
-            return m.pointCount > 0 ? kPoints : kNoPoints;
-        }
 #if defined(__SSE2__)
         if (c.circles) {
             return collideCircleContact(c, knownCircle(sa), knownCircle(sb), ba, bb,
@@ -480,8 +490,11 @@ inline void carryImpulses(Manifold& m, const OldPoints& old) {
 // impulses carried over by feature id; a sensor's is not kept) and whether it touches. Reads the
 // contact's shapes and bodies only, so contacts are updated on several workers at once.
 bool World::Impl::updateManifold(detail::Contact& c, float dt) const {
-    return (collideContact(c, {shapes.data(), body(c.bodyA), body(c.bodyB)}, collisionAlgorithm,
-                           speculativeDistance,
+    const ContactSides sides{shapes.data(), body(c.bodyA), body(c.bodyB)};
+    if (c.sensor) {
+        return sensorOverlaps(c, sides, collisionAlgorithm);
+    }
+    return (collideContact(c, sides, collisionAlgorithm, speculativeDistance,
                            effectiveRecycleDistance(sim.def, speculativeDistance), dt) &
             kPoints) != 0;
 }
@@ -584,6 +597,16 @@ void World::Impl::updateContacts(float dt) {
                         *touching++ = {ci, c.bodyA, c.bodyB, c.rollingResistance};
                     }
                     update = kAsleep;
+                } else if (c.sensor) {
+                    // Overlap only: no manifold is kept and no body woken.
+                    const bool nowTouching = sensorOverlaps(c, {shapeSlots, ba, bb}, algorithm);
+                    ++counts.manifoldUpdates;
+                    if (serialAll || (nowTouching != c.touching && c.touchEvents)) {
+                        update = nowTouching ? kTouching : kApartNow;
+                    } else {
+                        c.touching = nowTouching;
+                        continue;
+                    }
                 } else {
                     const unsigned collided = collideContact(c, {shapeSlots, ba, bb}, algorithm,
                                                              speculative, recycleDistance, stepDt);
@@ -592,17 +615,15 @@ void World::Impl::updateContacts(float dt) {
                     const bool nowTouching = (collided & kPoints) != 0;
                     // Something awake touching a sleeping body that can wake.
                     const bool awakeA = ba.motion.awake;
-                    const bool wakes = nowTouching && !c.sensor && awakeA != bb.motion.awake &&
+                    const bool wakes = nowTouching && awakeA != bb.motion.awake &&
                                        (awakeA ? bb : ba).type != BodyType::Static;
                     if (serialAll || wakes || (nowTouching != c.touching && c.touchEvents)) {
                         update = nowTouching ? kTouching : kApartNow;
                     } else {
                         c.touching = nowTouching;
-                        if (!c.sensor) {
-                            c.enabled = true;
-                            if (nowTouching) {
-                                *touching++ = {ci, c.bodyA, c.bodyB, c.rollingResistance};
-                            }
+                        c.enabled = true;
+                        if (nowTouching) {
+                            *touching++ = {ci, c.bodyA, c.bodyB, c.rollingResistance};
                         }
                         continue;
                     }
