@@ -339,7 +339,7 @@ E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints,
     }
     for (int g = levelStart.front(); g < levelStart.back(); ++g) {
         const Constraint& c = constraints[static_cast<std::size_t>(g)];
-        if (anyLane(c.twoPoints)) {
+        if (c.anyTwoPoints != 0) {
             warmStartGroup<2>(c);
         } else {
             warmStartGroup<1>(c);
@@ -354,7 +354,7 @@ E2D_WIDE_FN void solveGroups(std::span<Constraint> constraints, int first, int e
                              float pushMaxSpeed) {
     for (int g = first; g < end; ++g) {
         Constraint& c = constraints[static_cast<std::size_t>(g)];
-        if (anyLane(c.twoPoints)) {
+        if (c.anyTwoPoints != 0) {
             solveGroup<kReversePoints, 2>(c, invH, kUseBias, pushMaxSpeed);
         } else {
             solveGroup<kReversePoints, 1>(c, invH, kUseBias, pushMaxSpeed);
@@ -586,6 +586,7 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
     c.inv22 = select(block, invDet * k11, one);
     c.blockSolve = block | empty;
     c.twoPoints = count == 2;
+    c.anyTwoPoints = anyLane(c.twoPoints) ? 1 : 0;
     c.separationsKnown = 0;
     return laneBits(deep);
 }
