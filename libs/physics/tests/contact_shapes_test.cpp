@@ -104,8 +104,7 @@ TEST(ContactShapes, ACirclePairKeepsTheRoutinesManifoldWithinTheMargin) {
 
 TEST(ContactShapes, ACirclePairBeyondTheMarginHasNoPoint) {
     TwoBodies scene = ballsApart();
-    scene.world.setTransform(scene.b, scene.world.transform(scene.b).p + Vec2{0.05f, 0.0f},
-                             0.0f);
+    scene.world.setTransform(scene.b, scene.world.transform(scene.b).p + Vec2{0.05f, 0.0f}, 0.0f);
     scene.world.step(kStep);
     EXPECT_EQ(scene.world.contactCount(), 1); // the fat boxes still overlap
     int touching = 0;
