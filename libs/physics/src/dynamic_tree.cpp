@@ -19,16 +19,33 @@ std::string formatBox(const Aabb& box) {
     return "lower " + core::formatVector(box.lower) + " upper " + core::formatVector(box.upper);
 }
 
-void checkBox(const Aabb& box, const char* function) {
+[[noreturn, gnu::cold]] void throwBadBox(const Aabb& box, const char* function) {
     const bool finite = isFinite(box.lower) && isFinite(box.upper);
-    if (!finite) {
-        throw core::Error(std::string("physics::DynamicTree::") + function +
-                          "(): aabb must be finite, got " + formatBox(box));
+    throw core::Error(
+        std::string("physics::DynamicTree::") + function +
+        (finite ? "(): aabb must have lower <= upper, got " : "(): aabb must be finite, got ") +
+        formatBox(box));
+}
+
+// Throws unless the box is finite with lower <= upper. Inline: every proxy move checks its box.
+inline void checkBox(const Aabb& box, const char* function) {
+#if defined(__SSE2__)
+    // x - x is 0 for a finite x and NaN for an infinite or NaN one; then lower <= upper in the
+    // two low lanes (false for NaN, which is already out).
+    static_assert(sizeof(Aabb) == 4 * sizeof(float));
+    const __m128 v = _mm_loadu_ps(&box.lower.x);
+    const __m128 zeroIfFinite = _mm_sub_ps(v, v);
+    const bool finite = _mm_movemask_ps(_mm_cmpord_ps(zeroIfFinite, zeroIfFinite)) == 0xF;
+    const bool ordered = (_mm_movemask_ps(_mm_cmple_ps(v, _mm_movehl_ps(v, v))) & 3) == 3;
+    if (!finite || !ordered) [[unlikely]] {
+        throwBadBox(box, function);
     }
-    if (box.lower.x > box.upper.x || box.lower.y > box.upper.y) {
-        throw core::Error(std::string("physics::DynamicTree::") + function +
-                          "(): aabb must have lower <= upper, got " + formatBox(box));
+#else
+    if (!(isFinite(box.lower) && isFinite(box.upper) && box.lower.x <= box.upper.x &&
+          box.lower.y <= box.upper.y)) [[unlikely]] {
+        throwBadBox(box, function);
     }
+#endif
 }
 
 Vec2 centerOf(const Aabb& box) { return 0.5f * (box.lower + box.upper); }
@@ -50,6 +67,16 @@ constexpr int kMaxImbalance = 4;
 } // namespace
 
 DynamicTree::DynamicTree() = default;
+
+// Inline: every climb up the tree refits node by node.
+inline void DynamicTree::refit(int index) {
+    Node& node = nodes_[static_cast<std::size_t>(index)];
+    const Node& a = nodes_[static_cast<std::size_t>(node.child1)];
+    const Node& b = nodes_[static_cast<std::size_t>(node.child2)];
+    node.aabb = merge(a.aabb, b.aabb);
+    node.categoryBits = a.categoryBits | b.categoryBits;
+    node.height = 1 + std::max(a.height, b.height);
+}
 
 void DynamicTree::throwBadQueryBox(const Aabb& box) {
     throw core::Error("physics::DynamicTree::query(): box must be finite, got " + formatBox(box));
@@ -433,15 +460,6 @@ int DynamicTree::findBestSibling(const Aabb& box, int start) const {
     return best;
 }
 
-void DynamicTree::refit(int index) {
-    Node& node = nodes_[static_cast<std::size_t>(index)];
-    const Node& a = nodes_[static_cast<std::size_t>(node.child1)];
-    const Node& b = nodes_[static_cast<std::size_t>(node.child2)];
-    node.aabb = merge(a.aabb, b.aabb);
-    node.categoryBits = a.categoryBits | b.categoryBits;
-    node.height = 1 + std::max(a.height, b.height);
-}
-
 // Tree rotations at node A (children B, C): swap a child of A with a grandchild on the other side
 // when that shrinks the inner node it lands in (surface area, after Kopta et al. 2012). Area alone
 // lets the height grow on adversarial input (a spiral of boxes), so when A's subtrees differ in
@@ -469,7 +487,7 @@ bool DynamicTree::rotate(int index) {
                         nodes_[static_cast<std::size_t>(a.child1)].height;
     const bool mustLower = balance > kMaxImbalance || balance < -kMaxImbalance;
 
-    auto consider = [&](int low, int high) {
+    auto consider = [&](int low, int high) __attribute__((always_inline)) {
         const Node& lowNode = nodes_[static_cast<std::size_t>(low)];
         const Node& highNode = nodes_[static_cast<std::size_t>(high)];
         if (highNode.isLeaf()) {

@@ -5,17 +5,6 @@
 
 namespace e2d::physics::detail {
 
-// Keys are structured (small ids in both halves); the splitmix64 finaliser spreads them so that
-// linear probing sees near-random slots.
-std::uint64_t PairSet::hash(std::uint64_t key) {
-    key ^= key >> 30;
-    key *= 0xbf58476d1ce4e5b9ull;
-    key ^= key >> 27;
-    key *= 0x94d049bb133111ebull;
-    key ^= key >> 31;
-    return key;
-}
-
 void PairSet::grow() {
     const std::size_t newCapacity = slots_.empty() ? 32 : 2 * slots_.size();
     std::vector<PairEntry> old(newCapacity);
@@ -48,21 +37,6 @@ bool PairSet::insert(const PairEntry& entry) {
     slots_[i] = entry;
     ++size_;
     return true;
-}
-
-const PairEntry* PairSet::find(std::uint64_t key) const {
-    if (slots_.empty() || key == 0) {
-        return nullptr;
-    }
-    const std::size_t mask = slots_.size() - 1;
-    std::size_t i = static_cast<std::size_t>(hash(key)) & mask;
-    while (slots_[i].key != 0) {
-        if (slots_[i].key == key) {
-            return &slots_[i];
-        }
-        i = (i + 1) & mask;
-    }
-    return nullptr;
 }
 
 bool PairSet::erase(std::uint64_t key, PairEntry* removed) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -30,7 +31,8 @@ class PairSet {
 public:
     /// Inserts; returns false (and changes nothing) if the key is already there.
     bool insert(const PairEntry& entry);
-    /// The entry for `key`, or nullptr.
+    /// The entry for `key`, or nullptr. Inline: the broad phase asks for every overlap its
+    /// queries find.
     [[nodiscard]] const PairEntry* find(std::uint64_t key) const;
     [[nodiscard]] bool contains(std::uint64_t key) const { return find(key) != nullptr; }
     /// Removes `key`; returns false if it was not there. Copies the removed entry to `removed`.
@@ -50,11 +52,35 @@ public:
 
 private:
     friend struct SnapshotAccess;
-    static std::uint64_t hash(std::uint64_t key);
+    static std::uint64_t hash(std::uint64_t key) {
+        // Keys are structured (small ids in both halves); the splitmix64 finaliser spreads them
+        // so that linear probing sees near-random slots.
+        key ^= key >> 30;
+        key *= 0xbf58476d1ce4e5b9ull;
+        key ^= key >> 27;
+        key *= 0x94d049bb133111ebull;
+        key ^= key >> 31;
+        return key;
+    }
     void grow();
 
     std::vector<PairEntry> slots_;
     int size_ = 0;
 };
+
+inline const PairEntry* PairSet::find(std::uint64_t key) const {
+    if (slots_.empty() || key == 0) {
+        return nullptr;
+    }
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t i = static_cast<std::size_t>(hash(key)) & mask;
+    while (slots_[i].key != 0) {
+        if (slots_[i].key == key) {
+            return &slots_[i];
+        }
+        i = (i + 1) & mask;
+    }
+    return nullptr;
+}
 
 } // namespace e2d::physics::detail
