@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The narrow phase's own path for circle pairs and what a contact copies from its shapes
 // (contact.cpp): the manifold a step keeps is the pair routine's to the bit, for circles within
-// the speculative distance and for a shape whose geometry changed while it touched.
+// the speculative distance and for a shape whose geometry changed while it touched. And its
+// fat-box test, skipped while no fat box changed: a contact still ends when its boxes part.
 #include <e2d/physics/world.hpp>
 
 #include "world_step_util.hpp"
@@ -121,6 +122,27 @@ TEST(ContactShapes, AShapeTurnedFromCircleToBoxIsCollidedAsABox) {
     scene.world.setShapeGeometry(scene.shapeA, makeBox(0.55f, 0.55f));
     const Manifold boxBall = scene.stepAndCompare();
     EXPECT_EQ(boxBall.pointCount, 1);
+}
+
+// A ball resting on the ground until no proxy has moved for a while (the narrow phase stops
+// testing the fat boxes), then moved away by hand: its contact ends that step.
+TEST(ContactFatBoxes, AContactEndsWhenItsBoxesPartAfterStepsWithoutMoves) {
+    WorldDef def;
+    def.solver.enableSleep = false;
+    World world{def};
+    addGround(world);
+    const BodyId ball = addBall(world, {0.0f, 0.25f}, 0.25f);
+    int stillSteps = 0;
+    for (int i = 0; i < 300 && stillSteps < 10; ++i) {
+        world.step(kStep);
+        stillSteps = world.stepCounters().proxyMoves == 0 ? stillSteps + 1 : 0;
+    }
+    ASSERT_EQ(stillSteps, 10);
+    ASSERT_EQ(world.contactCount(), 1);
+    world.setTransform(ball, {0.0f, 5.0f}, 0.0f);
+    world.step(kStep);
+    EXPECT_EQ(world.contactCount(), 0);
+    EXPECT_EQ(world.contactEndEvents().size(), 1u);
 }
 
 } // namespace
