@@ -2,6 +2,7 @@
 #include "sound_decoder.hpp"
 
 #include "ogg_pages.hpp"
+#include "riff_chunks.hpp"
 
 #include <algorithm>
 #include <array>
@@ -33,11 +34,14 @@ bool isOgg(std::span<const std::byte> head) { return startsWith(head, 0, "OggS")
 // damaged input (a fuzzed MPEG stream kept sf_open_virtual() busy for 20 minutes): anything
 // else is refused before libsndfile sees it. Empty when `head` (the first bytes) starts one of
 // the three, else the reason.
+bool isWav(std::span<const std::byte> head) {
+    return (startsWith(head, 0, "RIFF") || startsWith(head, 0, "RIFX") ||
+            startsWith(head, 0, "RF64")) &&
+           startsWith(head, 8, "WAVE");
+}
+
 std::string unsupportedFormat(std::span<const std::byte> head) {
-    const bool wav = (startsWith(head, 0, "RIFF") || startsWith(head, 0, "RIFX") ||
-                      startsWith(head, 0, "RF64")) &&
-                     startsWith(head, 8, "WAVE");
-    if (wav || isOgg(head) || startsWith(head, 0, "fLaC")) {
+    if (isWav(head) || isOgg(head) || startsWith(head, 0, "fLaC")) {
         return {};
     }
     return "not a WAV, Ogg or FLAC file (the formats e2d::audio reads)";
@@ -102,6 +106,29 @@ std::vector<std::byte> fileBytes(const std::filesystem::path& path) {
     return bytes;
 }
 
+// checkWavChunks reading a block of memory.
+ReadAt memoryReader(std::span<const std::byte> bytes) {
+    return [bytes](std::uint64_t offset, std::span<std::byte> out) -> std::size_t {
+        if (offset >= bytes.size()) {
+            return 0;
+        }
+        const auto count =
+            static_cast<std::size_t>(std::min<std::uint64_t>(out.size(), bytes.size() - offset));
+        std::memcpy(out.data(), bytes.data() + offset, count);
+        return count;
+    };
+}
+
+// checkWavChunks reading an open file.
+ReadAt fileReader(std::ifstream& file) {
+    return [&file](std::uint64_t offset, std::span<std::byte> out) -> std::size_t {
+        file.clear();
+        file.seekg(static_cast<std::streamoff>(offset));
+        file.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(out.size()));
+        return static_cast<std::size_t>(std::max<std::streamsize>(file.gcount(), 0));
+    };
+}
+
 std::string seconds(std::int64_t frames, int rate) {
     char text[32];
     std::snprintf(text, sizeof(text), "%.2f s", static_cast<double>(frames) / rate);
@@ -131,8 +158,12 @@ std::unique_ptr<Decoder> Decoder::open(const std::filesystem::path& path,
         const auto got = static_cast<std::size_t>(std::max<std::streamsize>(file.gcount(), 0));
         const std::span<const std::byte> read = std::span(head).first(got);
         std::string problem = unsupportedFormat(read);
-        if (problem.empty() && isOgg(read) && !checked) {
-            problem = checkOggPages(fileBytes(path));
+        if (problem.empty() && !checked) {
+            if (isOgg(read)) {
+                problem = checkOggPages(fileBytes(path));
+            } else if (isWav(read)) {
+                problem = checkWavChunks(std::filesystem::file_size(path, ec), fileReader(file));
+            }
         }
         if (!problem.empty()) {
             error = "'" + decoder->name_ + "': " + problem;
@@ -153,6 +184,8 @@ std::unique_ptr<Decoder> Decoder::open(std::span<const std::byte> bytes, std::st
     std::string problem = unsupportedFormat(bytes);
     if (problem.empty() && isOgg(bytes)) {
         problem = checkOggPages(bytes);
+    } else if (problem.empty() && isWav(bytes)) {
+        problem = checkWavChunks(bytes.size(), memoryReader(bytes));
     }
     if (!problem.empty()) {
         error = "'" + decoder->name_ + "': " + problem;

@@ -20,10 +20,12 @@ namespace e2d::audio::detail {
 class Decoder {
 public:
     /// Opens `path` and checks its header against `limits` (channels, sample rate, at least one
-    /// frame) and, for Ogg, every page of the container (checkOggPages, before libsndfile reads
-    /// any: a Vorbis stream libsndfile fails to open leaks its info block). Returns null and sets
-    /// `error` ("'<name>': <reason>") when that fails. `checked`: the file passed this check
-    /// before (a streaming voice reopening a loaded sound), so the pages are not read again.
+    /// frame) and, before libsndfile reads any of it, the container: every page of an Ogg file
+    /// (checkOggPages: a Vorbis stream libsndfile fails to open leaks its info block) and the
+    /// chunks of a WAV file (checkWavChunks: some sizes keep libsndfile's parser busy for ever).
+    /// Returns null and sets `error` ("'<name>': <reason>") when that fails. `checked`: the file
+    /// passed these checks before (a streaming voice reopening a loaded sound), so they are not
+    /// run again.
     static std::unique_ptr<Decoder> open(const std::filesystem::path& path,
                                          const DecodeLimits& limits, std::string& error,
                                          bool checked = false);

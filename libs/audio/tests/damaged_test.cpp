@@ -9,6 +9,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -271,3 +272,86 @@ TEST(DamagedFormat, OtherFormatsAreRefusedBeforeLibsndfileSeesThem) {
     EXPECT_NE(fromFile.error.find("not a WAV, Ogg or FLAC file"), std::string::npos)
         << fromFile.error;
 }
+
+namespace e2d::audio {
+namespace {
+
+using namespace test;
+
+// A mono 16-bit WAV of 16 frames whose list chunk `list` (after the samples, where most writers
+// put it) holds one entry with id `entry` and size `entrySize`, and `tail` bytes after it.
+std::vector<char> wavWithListEntry(std::string_view list, std::string_view entry,
+                                   std::uint32_t entrySize, std::size_t tail) {
+    std::vector<char> bytes;
+    auto put = [&bytes](std::string_view text) {
+        bytes.insert(bytes.end(), text.begin(), text.end());
+    };
+    auto put32 = [&bytes](std::uint32_t v) {
+        for (int i = 0; i < 4; ++i) {
+            bytes.push_back(static_cast<char>((v >> (8 * i)) & 0xffu));
+        }
+    };
+    auto put16 = [&bytes](std::uint16_t v) {
+        bytes.push_back(static_cast<char>(v & 0xffu));
+        bytes.push_back(static_cast<char>(v >> 8));
+    };
+    put("RIFF");
+    put32(0); // set below
+    put("WAVEfmt ");
+    put32(16);
+    put16(1);     // PCM
+    put16(1);     // channels
+    put32(8000);  // frames per second
+    put32(16000); // bytes per second
+    put16(2);     // bytes per frame
+    put16(16);    // bits per sample
+    put("data");
+    put32(32);
+    for (int i = 0; i < 16; ++i) {
+        put16(static_cast<std::uint16_t>(i * 1000));
+    }
+    put(list);
+    put32(static_cast<std::uint32_t>(4 + 8 + tail));
+    put("INFO");
+    put(entry);
+    put32(entrySize);
+    bytes.insert(bytes.end(), tail, '\0');
+    const auto riffSize = static_cast<std::uint32_t>(bytes.size() - 8);
+    for (int i = 0; i < 4; ++i) {
+        bytes[4 + static_cast<std::size_t>(i)] = static_cast<char>((riffSize >> (8 * i)) & 0xffu);
+    }
+    return bytes;
+}
+
+// libsndfile 1.2 steps over a list entry by its size as a signed 32-bit number: a size of
+// 0xfffffff8 takes it back to the entry's own id, and sf_open() never returns (the sound
+// loader's fuzzer found such 133-byte files, in a LIST chunk and in a top-level INFO chunk,
+// which libsndfile also reads as a list). The chunks are walked first and the file is refused
+// by name, from memory and from a file; the same file with a sane entry loads.
+TEST(DamagedWav, AListEntryOf2GiBOrMoreIsRefusedBeforeLibsndfileLoopsOnIt) {
+    for (const std::string_view list : {"LIST", "INFO"}) {
+        SCOPED_TRACE(list);
+        const std::vector<char> looping = wavWithListEntry(list, "abcd", 0xfffffff8u, 16);
+        const std::string reason = "damaged: entry 'abcd' at byte 88 (in the list chunk at byte "
+                                   "76) claims 4294967288 bytes; the file has " +
+                                   std::to_string(looping.size());
+        const auto path = writeBytes("list_entry_loop.wav", looping);
+        expectRefused(decodeSoundFile(path), path.string(), reason);
+        expectRefused(decodeSoundMemory(std::as_bytes(std::span(looping)), "loop-in-memory.wav"),
+                      "loop-in-memory.wav", reason);
+        // A list that claims 0xffffffff bytes is read to the end of the file all the same.
+        std::vector<char> endless = looping;
+        std::fill_n(endless.begin() + 80, 4, '\xff');
+        expectRefused(decodeSoundMemory(std::as_bytes(std::span(endless)), "endless.wav"),
+                      "endless.wav", reason);
+
+        const std::vector<char> sane = wavWithListEntry(list, "INAM", 16, 16);
+        const DecodeResult loaded =
+            decodeSoundMemory(std::as_bytes(std::span(sane)), "sane-in-memory.wav");
+        ASSERT_TRUE(loaded.ok()) << loaded.error;
+        EXPECT_EQ(loaded.data.frames(), 16);
+    }
+}
+
+} // namespace
+} // namespace e2d::audio

@@ -13,27 +13,6 @@ namespace e2d::physics::detail {
 
 namespace {
 
-// Implicit damping, 1 / (1 + h c): stable for any coefficient and step. Most bodies have
-// none, and skipping the division then gives the same 1.
-inline float dampingFactor(float h, float coefficient) {
-    return coefficient == 0.0f ? 1.0f : 1.0f / (1.0f + h * coefficient);
-}
-
-} // namespace
-
-namespace {
-
-inline void prepareIntegration(BodySim& sim, Vec2 gravity, float h) {
-    sim.linearDampingFactor = dampingFactor(h, sim.linearDamping);
-    sim.angularDampingFactor = dampingFactor(h, sim.angularDamping);
-    // Gravity acts on each axis that can move (a kinematic body has none).
-    Vec2 g = sim.gravityScale * gravity;
-    Vec2 accel{sim.invMass.x > 0.0f ? g.x + sim.invMass.x * sim.force.x : 0.0f,
-               sim.invMass.y > 0.0f ? g.y + sim.invMass.y * sim.force.y : 0.0f};
-    sim.velocityStep = h * accel;
-    sim.angularVelocityStep = h * sim.invInertia * sim.torque;
-}
-
 inline void integrateVelocity(const BodySim& sim, BodyState& state, SpeedCaps caps) {
     Vec2 v = sim.velocityStep + sim.linearDampingFactor * state.linearVelocity;
     float w = sim.angularVelocityStep + sim.angularDampingFactor * state.angularVelocity;
@@ -447,13 +426,6 @@ void prepareIntegration(std::span<BodySim> sims, Vec2 gravity, float h) {
     }
 }
 
-void prepareIntegration(std::span<BodySim> sims, std::span<const int> indices, Vec2 gravity,
-                        float h) {
-    for (int i : indices) {
-        prepareIntegration(sims[static_cast<std::size_t>(i)], gravity, h);
-    }
-}
-
 void integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, float h,
                          float maxLinearSpeed) {
     integrateVelocitiesOf(
@@ -485,6 +457,43 @@ void integratePositions(std::span<BodyState> states, std::span<const int> indice
         states, indices.size(),
         [indices](std::size_t k) { return static_cast<std::size_t>(indices[k]); }, h,
         speedCaps(maxLinearSpeed, h));
+}
+
+namespace {
+
+// `increasing` (indices in increasing order) as one run of the arrays: its first index and
+// length, or a length of 0 when it is not one (a gap between its first and last).
+struct BodyRun {
+    std::size_t start = 0;
+    std::size_t length = 0;
+};
+BodyRun runOf(std::span<const int> increasing) {
+    if (increasing.empty() ||
+        static_cast<std::size_t>(increasing.back() - increasing.front()) != increasing.size() - 1) {
+        return {};
+    }
+    return {static_cast<std::size_t>(increasing.front()), increasing.size()};
+}
+
+} // namespace
+
+void integrateBlockVelocities(std::span<const BodySim> sims, std::span<BodyState> states,
+                              std::span<const int> increasing, float h, float maxLinearSpeed) {
+    if (const BodyRun run = runOf(increasing); run.length != 0) {
+        integrateVelocities(sims.subspan(run.start, run.length),
+                            states.subspan(run.start, run.length), h, maxLinearSpeed);
+        return;
+    }
+    integrateVelocities(sims, states, increasing, h, maxLinearSpeed);
+}
+
+void integrateBlockPositions(std::span<BodyState> states, std::span<const int> increasing, float h,
+                             float maxLinearSpeed) {
+    if (const BodyRun run = runOf(increasing); run.length != 0) {
+        integratePositions(states.subspan(run.start, run.length), h, maxLinearSpeed);
+        return;
+    }
+    integratePositions(states, increasing, h, maxLinearSpeed);
 }
 
 ContactSoftness makeContactSoftness(const SolverDef& def, float dt) {
@@ -568,12 +577,8 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
         std::span<const int> joints;
         float h;
 
-        void integrateVelocities(int subStep) {
-            if (subStep == 0) {
-                prepareIntegration(step.sims, bodies, step.gravity, h);
-            }
-            detail::integrateVelocities(step.sims, step.states, bodies, h,
-                                        step.def->maxLinearSpeed);
+        void integrateVelocities(int /*subStep*/) {
+            integrateBlockVelocities(step.sims, step.states, bodies, h, step.def->maxLinearSpeed);
         }
         void warmStart() {
             warmStartJointsOf(step, joints);
@@ -587,7 +592,7 @@ void solveSoftStepBlock(const SolverStep& step, WideContacts& wide, int firstLev
                       backward, reversePoints);
         }
         void integratePositions() {
-            detail::integratePositions(step.states, bodies, h, step.def->maxLinearSpeed);
+            integrateBlockPositions(step.states, bodies, h, step.def->maxLinearSpeed);
         }
         void restitution() {
             applyRestitutionWide(wide, restituted, step.states, step.def->restitutionThreshold, h);

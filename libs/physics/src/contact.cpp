@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <new>
+#include <type_traits>
 #include <variant>
 
 #if defined(__SSE2__)
@@ -26,6 +27,22 @@ int sideOf(const detail::Contact& c, int bodyIndex) { return c.bodyA == bodyInde
 
 constexpr std::size_t kPolygonIndex = static_cast<std::size_t>(ShapeType::Polygon);
 constexpr std::size_t kCircleIndex = static_cast<std::size_t>(ShapeType::Circle);
+
+// The circle of a shape known to be one (Contact::circles): std::get_if's test of the
+// variant's index, and its load from another cache line of the shape, are left out.
+const Circle& knownCircle(const detail::Shape& s) {
+    if (s.geometry.index() != kCircleIndex) {
+        __builtin_unreachable();
+    }
+    return *std::get_if<Circle>(&s.geometry);
+}
+
+// Contact::proxyKeyA, proxyKeyB and circles from the contact's shapes.
+void copyShapes(detail::Contact& c, const detail::Shape& a, const detail::Shape& b) {
+    c.proxyKeyA = a.proxyKey;
+    c.proxyKeyB = b.proxyKey;
+    c.circles = a.geometry.index() == kCircleIndex && b.geometry.index() == kCircleIndex;
+}
 
 } // namespace
 
@@ -47,6 +64,7 @@ void World::Impl::createContact(int shapeA, int shapeB) {
     c.shapeB = shapeB;
     c.bodyA = a.body;
     c.bodyB = b.body;
+    copyShapes(c, a, b);
     c.idA = shapeId(shapeA);
     c.idB = shapeId(shapeB);
     c.sensor = a.isSensor || b.isSensor;
@@ -68,6 +86,14 @@ void World::Impl::createContact(int shapeA, int shapeB) {
         m.contactHead = ci;
     }
     ++s.contactCount;
+}
+
+void World::Impl::copyContactShapes() {
+    for (detail::Contact& c : sim.contacts) {
+        if (c.alive) {
+            copyShapes(c, shape(c.shapeA), shape(c.shapeB));
+        }
+    }
 }
 
 void World::Impl::destroyContact(int contactIndex, bool reportEnd) {
@@ -123,10 +149,10 @@ void World::Impl::destroyContacts(int shapeIndex) {
 
 namespace {
 
-// A contact's two shapes and bodies, as the narrow phase reads them.
+// A contact's two bodies, as the narrow phase reads them, and the shape array (its shapes are
+// only looked at when the manifold is not recycled).
 struct ContactSides {
-    const detail::Shape& sa;
-    const detail::Shape& sb;
+    const detail::Shape* shapes;
     const detail::Body& ba;
     const detail::Body& bb;
 };
@@ -312,33 +338,109 @@ void recycleManifold(Manifold& m, const detail::ManifoldOrigin& o, const Transfo
 
 #endif
 
-// World::Impl::updateManifold() on sides already looked up: forced inline into the parallel
-// pass's loop, which has just read them (the call and the second lookup cost about 30
-// instructions a contact).
 // What collideContact() found: whether the manifold has points, and whether it was recycled.
 enum Collided : unsigned char { kNoPoints = 0, kPoints = 1, kRecycled = 2 };
 
+// How fast the pair can close, at most (m/s): the relative speed of the origins plus each
+// body's fastest turning point.
+inline float closingSpeed(const detail::Body& ba, const detail::Body& bb) {
+    const Vec2 v = bb.linearVelocity - ba.linearVelocity;
+#if defined(__SSE2__)
+    // length(v) with sqrtss itself: std::sqrt's check for a negative argument (for errno),
+    // a compare and a branch around it, goes.
+    const float speed = _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(v.x * v.x + v.y * v.y)));
+#else
+    const float speed = length(v);
+#endif
+    return speed + std::abs(ba.angularVelocity) * ba.motion.maxExtent +
+           std::abs(bb.angularVelocity) * bb.motion.maxExtent;
+}
+
+// Speculative margin: the fixed one plus how far the pair can close in one step, so a fast
+// approach is caught before it overlaps (bounded, as a huge margin would stop bodies against
+// points they would have passed).
+inline float speculativeMargin(float speculativeDistance, float dt, float closing) {
+    return std::min(speculativeDistance + dt * closing, 4.0f * kAabbMargin);
+}
+
+// Last step's impulses of one point by feature id (-1: no point), kept aside so that the new
+// manifold can be built in place, without a 92-byte copy.
+struct OldPoint {
+    int id;
+    float normalImpulse;
+    float tangentImpulse;
+};
+struct OldPoints {
+    OldPoint p0;
+    OldPoint p1;
+};
+
+inline OldPoints oldPoints(const Manifold& old) {
+    return {{old.pointCount > 0 ? old.points[0].id : -1, old.points[0].normalImpulse,
+             old.points[0].tangentImpulse},
+            {old.pointCount > 1 ? old.points[1].id : -1, old.points[1].normalImpulse,
+             old.points[1].tangentImpulse}};
+}
+
+// Impulses carry over from the first old point with the same id.
+inline void carryImpulses(Manifold& m, const OldPoints& old) {
+    for (int i = 0; i < m.pointCount; ++i) {
+        ManifoldPoint& mp = m.points[i];
+        const OldPoint* match = mp.id == old.p0.id   ? &old.p0
+                                : mp.id == old.p1.id ? &old.p1
+                                                     : nullptr;
+        mp.normalImpulse = match != nullptr ? match->normalImpulse : 0.0f;
+        mp.tangentImpulse = match != nullptr ? match->tangentImpulse : 0.0f;
+        mp.persisted = match != nullptr;
+    }
+}
+
+#if defined(__SSE2__)
+
+// collideContact() for two circles with no noted origin (circle pairs are never recycled): the
+// old impulses are only looked at for circles within the margin, and nothing else is.
+[[gnu::always_inline]] inline unsigned collideCircleContact(detail::Contact& c, const Circle& a,
+                                                            const Circle& b, const detail::Body& ba,
+                                                            const detail::Body& bb,
+                                                            float speculativeDistance, float dt) {
+    const detail::CircleGapSse2 gap = detail::circleGapSse2(a, ba.transform, b, bb.transform);
+    if (gap.beyond(speculativeMargin(speculativeDistance, dt, closingSpeed(ba, bb)))) {
+        detail::storeNoManifoldSse2(c.manifold);
+        return kNoPoints;
+    }
+    const OldPoints old = oldPoints(c.manifold);
+    detail::storeCircleManifoldSse2(gap, a, c.manifold);
+    carryImpulses(c.manifold, old);
+    return kPoints;
+}
+
+#endif
+
+// Whether a sensor contact's shapes overlap (a sensor keeps no manifold).
+bool sensorOverlaps(const detail::Contact& c, const ContactSides& sides,
+                    CollisionAlgorithm collisionAlgorithm) {
+    const Manifold m =
+        collide(sides.shapes[c.shapeA].geometry, sides.ba.transform,
+                sides.shapes[c.shapeB].geometry, sides.bb.transform, collisionAlgorithm, 0.0f);
+    return m.pointCount > 0;
+}
+
+// World::Impl::updateManifold() of a solid (not sensor) contact on sides already looked up:
+// forced inline into the parallel pass's loop, which has just read them (the call and the
+// second lookup cost about 30 instructions a contact).
 [[gnu::always_inline]] inline unsigned collideContact(detail::Contact& c, const ContactSides& sides,
                                                       CollisionAlgorithm collisionAlgorithm,
                                                       float speculativeDistance,
                                                       float recycleDistance, float dt) {
-    const auto& [sa, sb, ba, bb] = sides;
-    if (c.sensor) {
-        Manifold m =
-            collide(sa.geometry, ba.transform, sb.geometry, bb.transform, collisionAlgorithm, 0.0f);
-        return m.pointCount > 0 ? kPoints : kNoPoints;
-    }
-    // Speculative margin: the fixed one plus how far the pair can close in one step, so a
-    // fast approach is caught before it overlaps (bounded, as a huge margin would stop
-    // bodies against points they would have passed).
-    float closing = length(bb.linearVelocity - ba.linearVelocity) +
-                    std::abs(ba.angularVelocity) * ba.motion.maxExtent +
-                    std::abs(bb.angularVelocity) * bb.motion.maxExtent;
-    float margin = std::min(speculativeDistance + dt * closing, 4.0f * kAabbMargin);
+    const detail::Body& ba = sides.ba;
+    const detail::Body& bb = sides.bb;
     // Recycling: the old manifold moved with the bodies while they, with this step's motion at
-    // the current speeds, stay within the distance of where the routine last saw them.
+    // the current speeds, stay within the distance of where the routine last saw them. Most of
+    // a resting pile's contacts end here, without a look at their shapes.
     detail::ManifoldOrigin& origin = c.origin;
+    float closing;
     if (origin.valid) {
+        closing = closingSpeed(ba, bb);
         if (recycleDistance > 0.0f &&
             motionSince(origin, ba.transform, bb.transform) + dt * closing <= recycleDistance) {
             const unsigned points = c.manifold.pointCount > 0 ? kPoints : kNoPoints;
@@ -346,46 +448,36 @@ enum Collided : unsigned char { kNoPoints = 0, kPoints = 1, kRecycled = 2 };
             return kRecycled | points;
         }
         origin.valid = false;
+    } else {
+        const detail::Shape& sa = sides.shapes[c.shapeA];
+        const detail::Shape& sb = sides.shapes[c.shapeB];
+#if defined(__SSE2__)
+        if (c.circles) {
+            return collideCircleContact(c, knownCircle(sa), knownCircle(sb), ba, bb,
+                                        speculativeDistance, dt);
+        }
+#endif
+        closing = closingSpeed(ba, bb);
     }
-    // Last step's impulses by feature id (-1: no point), kept aside so that the new manifold can
-    // be built in place, without a 92-byte copy.
-    struct OldPoint {
-        int id;
-        float normalImpulse;
-        float tangentImpulse;
-    };
-    const Manifold& old = c.manifold;
-    const OldPoint old0{old.pointCount > 0 ? old.points[0].id : -1, old.points[0].normalImpulse,
-                        old.points[0].tangentImpulse};
-    const OldPoint old1{old.pointCount > 1 ? old.points[1].id : -1, old.points[1].normalImpulse,
-                        old.points[1].tangentImpulse};
+    const detail::Shape& sa = sides.shapes[c.shapeA];
+    const detail::Shape& sb = sides.shapes[c.shapeB];
+    const float margin = speculativeMargin(speculativeDistance, dt, closing);
+    const OldPoints old = oldPoints(c.manifold);
+    const std::size_t type = sa.geometry.index();
+    const bool sameType = type == sb.geometry.index();
     // Polygon pairs (most of a box scene) and circle pairs (most of a ball pit) call their
     // routine directly, skipping collide()'s dispatch on both geometries (about 30
     // instructions a circle pair). The routine's result initialises c.manifold directly.
-    const std::size_t type = sa.geometry.index();
-    const bool sameType = type == sb.geometry.index();
     Manifold& m = *::new (&c.manifold) Manifold(
         sameType && type == kPolygonIndex && collisionAlgorithm == CollisionAlgorithm::Sat
             ? collidePolygons(*std::get_if<Polygon>(&sa.geometry), ba.transform,
                               *std::get_if<Polygon>(&sb.geometry), bb.transform, margin)
         : sameType && type == kCircleIndex
-#if defined(__SSE2__)
-            ? detail::collideCirclesSse2(*std::get_if<Circle>(&sa.geometry), ba.transform,
-                                         *std::get_if<Circle>(&sb.geometry), bb.transform, margin)
-#else
             ? collideCircles(*std::get_if<Circle>(&sa.geometry), ba.transform,
                              *std::get_if<Circle>(&sb.geometry), bb.transform, margin)
-#endif
             : collide(sa.geometry, ba.transform, sb.geometry, bb.transform, collisionAlgorithm,
                       margin));
-    // Impulses carry over from the first old point with the same id.
-    for (int i = 0; i < m.pointCount; ++i) {
-        ManifoldPoint& mp = m.points[i];
-        const OldPoint* match = mp.id == old0.id ? &old0 : mp.id == old1.id ? &old1 : nullptr;
-        mp.normalImpulse = match != nullptr ? match->normalImpulse : 0.0f;
-        mp.tangentImpulse = match != nullptr ? match->tangentImpulse : 0.0f;
-        mp.persisted = match != nullptr;
-    }
+    carryImpulses(m, old);
     if (recycleDistance > 0.0f && isRecyclable(sa.geometry) && isRecyclable(sb.geometry)) {
         recordOrigin(origin, m, ba, bb);
     }
@@ -398,8 +490,11 @@ enum Collided : unsigned char { kNoPoints = 0, kPoints = 1, kRecycled = 2 };
 // impulses carried over by feature id; a sensor's is not kept) and whether it touches. Reads the
 // contact's shapes and bodies only, so contacts are updated on several workers at once.
 bool World::Impl::updateManifold(detail::Contact& c, float dt) const {
-    return (collideContact(c, {shape(c.shapeA), shape(c.shapeB), body(c.bodyA), body(c.bodyB)},
-                           collisionAlgorithm, speculativeDistance,
+    const ContactSides sides{shapes.data(), body(c.bodyA), body(c.bodyB)};
+    if (c.sensor) {
+        return sensorOverlaps(c, sides, collisionAlgorithm);
+    }
+    return (collideContact(c, sides, collisionAlgorithm, speculativeDistance,
                            effectiveRecycleDistance(sim.def, speculativeDistance), dt) &
             kPoints) != 0;
 }
@@ -443,14 +538,16 @@ void World::Impl::updateContacts(float dt) {
     // where these are larger than a core's own cache, they are fetched a few contacts ahead
     // (many_pyramids: about -6 % narrow-phase time). Where they fit, the prefetches only cost
     // their 47 instructions a contact (falling_circles_1000: -5 % instructions a step and
-    // faster without them), so they are left out by a fetch limit of 0, which adds no test.
+    // faster without them), so they are left out.
     constexpr int kPrefetchAhead = 6;
     constexpr std::size_t kPrefetchBytes = std::size_t{1} << 20;
     const bool prefetch =
         shapes.size() * sizeof(detail::Shape) + bodies.size() * sizeof(detail::Body) >
         kPrefetchBytes;
     const float recycle = effectiveRecycleDistance(s.def, speculativeDistance);
-    auto updateBlocks = [&](int firstBlock, int endBlock, int /*worker*/) {
+    // Blocks [firstBlock, endBlock), with prefetches if WithPrefetch::value (a separate loop
+    // without them: the test for them was 3 instructions a contact).
+    auto updateRange = [&](auto withPrefetch, int firstBlock, int endBlock) {
         // The arrays and settings in locals: each contact's store to `updates` (a char, which
         // may alias anything) made the compiler load them from the world again for every
         // contact.
@@ -466,7 +563,7 @@ void World::Impl::updateContacts(float dt) {
         const float stepDt = dt;
         const float recycleDistance = recycle;
         const bool serialAll = allSerial;
-        const int prefetchEnd = prefetch ? std::min(endBlock * kBlock, contactSlots) : 0;
+        const int prefetchEnd = std::min(endBlock * kBlock, contactSlots);
         for (int b = firstBlock; b < endBlock; ++b) {
             const int begin = b * kBlock;
             const int end = std::min(begin + kBlock, contactSlots);
@@ -474,50 +571,59 @@ void World::Impl::updateContacts(float dt) {
             int* serial = serialSlots + begin;
             detail::Simulation::NarrowBlock counts;
             for (int ci = begin; ci < end; ++ci) {
-                if (ci + kPrefetchAhead < prefetchEnd) {
-                    const detail::Contact& ahead = contacts[ci + kPrefetchAhead];
-                    if (ahead.alive) {
-                        detail::prefetchObject(shapeSlots + ahead.shapeA);
-                        detail::prefetchObject(shapeSlots + ahead.shapeB);
-                        detail::prefetchObject(bodySlots + ahead.bodyA);
-                        detail::prefetchObject(bodySlots + ahead.bodyB);
+                if constexpr (decltype(withPrefetch)::value) {
+                    if (ci + kPrefetchAhead < prefetchEnd) {
+                        const detail::Contact& ahead = contacts[ci + kPrefetchAhead];
+                        if (ahead.alive) {
+                            detail::prefetchObject(shapeSlots + ahead.shapeA);
+                            detail::prefetchObject(shapeSlots + ahead.shapeB);
+                            detail::prefetchObject(bodySlots + ahead.bodyA);
+                            detail::prefetchObject(bodySlots + ahead.bodyB);
+                        }
                     }
                 }
                 detail::Contact& c = contacts[ci];
                 if (!c.alive) {
                     continue;
                 }
-                const ContactSides sides{shapeSlots[c.shapeA], shapeSlots[c.shapeB],
-                                         bodySlots[c.bodyA], bodySlots[c.bodyB]};
                 unsigned char update;
-                if (!bp.fatAabbsOverlapLive(sides.sa.proxyKey, sides.sb.proxyKey)) {
+                const detail::Body& ba = bodySlots[c.bodyA];
+                const detail::Body& bb = bodySlots[c.bodyB];
+                if (!bp.fatAabbsOverlapLive(c.proxyKeyA, c.proxyKeyB)) {
                     update = kApart;
-                } else if (!sides.ba.motion.awake && !sides.bb.motion.awake) {
+                } else if (!ba.motion.awake && !bb.motion.awake) {
                     // Settled unless an earlier contact wakes a side in the second pass.
                     if (c.touching && !c.sensor && c.enabled) {
                         *touching++ = {ci, c.bodyA, c.bodyB, c.rollingResistance};
                     }
                     update = kAsleep;
+                } else if (c.sensor) {
+                    // Overlap only: no manifold is kept and no body woken.
+                    const bool nowTouching = sensorOverlaps(c, {shapeSlots, ba, bb}, algorithm);
+                    ++counts.manifoldUpdates;
+                    if (serialAll || (nowTouching != c.touching && c.touchEvents)) {
+                        update = nowTouching ? kTouching : kApartNow;
+                    } else {
+                        c.touching = nowTouching;
+                        continue;
+                    }
                 } else {
-                    const unsigned collided =
-                        collideContact(c, sides, algorithm, speculative, recycleDistance, stepDt);
+                    const unsigned collided = collideContact(c, {shapeSlots, ba, bb}, algorithm,
+                                                             speculative, recycleDistance, stepDt);
                     ++counts.manifoldUpdates;
                     counts.manifoldsRecycled += (collided & kRecycled) != 0 ? 1 : 0;
                     const bool nowTouching = (collided & kPoints) != 0;
                     // Something awake touching a sleeping body that can wake.
-                    const bool awakeA = sides.ba.motion.awake;
-                    const bool wakes = nowTouching && !c.sensor &&
-                                       awakeA != sides.bb.motion.awake &&
-                                       (awakeA ? sides.bb : sides.ba).type != BodyType::Static;
+                    const bool awakeA = ba.motion.awake;
+                    const bool wakes = nowTouching && awakeA != bb.motion.awake &&
+                                       (awakeA ? bb : ba).type != BodyType::Static;
                     if (serialAll || wakes || (nowTouching != c.touching && c.touchEvents)) {
                         update = nowTouching ? kTouching : kApartNow;
                     } else {
                         c.touching = nowTouching;
-                        if (!c.sensor) {
-                            c.enabled = true;
-                            if (nowTouching) {
-                                *touching++ = {ci, c.bodyA, c.bodyB, c.rollingResistance};
-                            }
+                        c.enabled = true;
+                        if (nowTouching) {
+                            *touching++ = {ci, c.bodyA, c.bodyB, c.rollingResistance};
                         }
                         continue;
                     }
@@ -528,6 +634,13 @@ void World::Impl::updateContacts(float dt) {
             counts.touching = static_cast<int>(touching - (touchingSlots + begin));
             counts.serial = static_cast<int>(serial - (serialSlots + begin));
             s.narrowBlocks[static_cast<std::size_t>(b)] = counts;
+        }
+    };
+    auto updateBlocks = [&](int firstBlock, int endBlock, int /*worker*/) {
+        if (prefetch) {
+            updateRange(std::true_type{}, firstBlock, endBlock);
+        } else {
+            updateRange(std::false_type{}, firstBlock, endBlock);
         }
     };
     // A block is 64 contacts of 25 (circles) to 55 ns (boxes).

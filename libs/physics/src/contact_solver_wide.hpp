@@ -67,6 +67,16 @@ struct alignas(4 * N) WideConstraintT {
     BodyState* bodyA[N];
     BodyState* bodyB[N];
     mutable BodyState pad;
+    // The points' separations as a relax pass (useBias false) found them, for the passes up
+    // to the next biased one to use instead of working them out again. Positions only change
+    // in integratePositions(), and the soft step's sub-step (forEachSoftStepPass()) runs its
+    // biased passes, then integratePositions(), then its relax passes: from a relax pass to
+    // the next biased pass nothing moves. So a relax pass sets separationsKnown, the passes
+    // after it use the separations, and the first biased pass that does clears it (the
+    // passes that follow it may come after integratePositions()); prepareGroup() and
+    // packWideLane() clear it too. Warm starts do not touch it.
+    F separation[2];
+    int separationsKnown;
 };
 
 static_assert(sizeof(WidePointT<8>) % 32 == 0 && sizeof(WideConstraintT<8>) % 32 == 0 &&
@@ -189,7 +199,11 @@ void storeWideImpulses(const WideContacts& wide, std::span<const int> levelStart
 
 // warmStartContacts() and solveContacts() over every packed constraint, level after level
 // (backward: last level first; reversePoints: each constraint's points last to first), on the
-// states the groups were prepared with (their bodies' addresses are in the groups).
+// states the groups were prepared with (their bodies' addresses are in the groups). The passes
+// keep the separations a relax pass finds for the passes up to the next biased one
+// (WideConstraintT::separation): between a relax pass and the next biased pass over the same
+// groups the bodies' positions must not change, and between an integratePositions() and the
+// next relax pass there must be a biased pass, as in forEachSoftStepPass().
 void warmStartWide(const WideContacts& wide);
 void solveWide(WideContacts& wide, float invH, bool useBias, float pushMaxSpeed, bool backward,
                bool reversePoints);

@@ -26,6 +26,16 @@ E2D_WIDE_INLINE void resetPad(const Constraint& c) {
     std::memcpy(reinterpret_cast<unsigned char*>(&c.pad), &rows, sizeof rows);
 }
 
+// The same object, which the compiler can no longer tell is `x`: what is read through it is
+// read from memory again (a memory operand, no instruction of its own) instead of kept in a
+// register or a stack slot since an earlier read. Changes no result.
+template <class T>
+E2D_WIDE_INLINE T& reread(T& x) {
+    T* p = &x;
+    asm("" : "+r"(p));
+    return *p;
+}
+
 // One side's velocity rows as lane vectors; flags ride along unchanged, to be stored back.
 struct Velocities {
     F vx, vy, w, flags;
@@ -139,28 +149,31 @@ E2D_WIDE_FN F keep(I lanes, F updated, F old) {
 }
 
 // The scalar pass's normal solve of point `cp` (separation s), on the lanes of `lanes`.
-template <bool kMasked>
+template <bool kMasked, bool kReread = false>
 E2D_WIDE_INLINE void solvePoint(Constraint& c, Point& cp, F s, Velocities& a, Velocities& b,
                                 I lanes, F invH, bool useBias, float pushMaxSpeed) {
-    const F nx = c.normalX;
-    const F ny = c.normalY;
     Target t = targetOf(c, s, invH, useBias, pushMaxSpeed);
     F vn = normalVelocityOf(cp, c, a, b);
     noteImpact(cp, lanes, vn, s, invH, useBias);
-    F impulse = (-cp.normalMass) * t.massScale * (vn + t.bias) - t.impulseScale * cp.normalImpulse;
-    F newImpulse = maxOf(cp.normalImpulse + impulse, splat(0.0f));
-    impulse = newImpulse - cp.normalImpulse;
-    cp.normalImpulse = keep<kMasked>(lanes, newImpulse, cp.normalImpulse);
-    cp.maxNormalImpulse =
-        keep<kMasked>(lanes, maxOf(cp.maxNormalImpulse, impulse), cp.maxNormalImpulse);
+    // As in solveBlock(), where it saves instructions (measured).
+    Constraint& k = kReread ? reread(c) : c;
+    Point& q = kReread ? reread(cp) : cp;
+    const F nx = k.normalX;
+    const F ny = k.normalY;
+    F impulse = (-q.normalMass) * t.massScale * (vn + t.bias) - t.impulseScale * q.normalImpulse;
+    F newImpulse = maxOf(q.normalImpulse + impulse, splat(0.0f));
+    impulse = newImpulse - q.normalImpulse;
+    q.normalImpulse = keep<kMasked>(lanes, newImpulse, q.normalImpulse);
+    q.maxNormalImpulse =
+        keep<kMasked>(lanes, maxOf(q.maxNormalImpulse, impulse), q.maxNormalImpulse);
     F px = impulse * nx;
     F py = impulse * ny;
-    a.vx = keep<kMasked>(lanes, a.vx - c.invMassAx * px, a.vx);
-    a.vy = keep<kMasked>(lanes, a.vy - c.invMassAy * py, a.vy);
-    a.w = keep<kMasked>(lanes, a.w - c.invInertiaA * (cp.anchorAx * py - cp.anchorAy * px), a.w);
-    b.vx = keep<kMasked>(lanes, b.vx + c.invMassBx * px, b.vx);
-    b.vy = keep<kMasked>(lanes, b.vy + c.invMassBy * py, b.vy);
-    b.w = keep<kMasked>(lanes, b.w + c.invInertiaB * (cp.anchorBx * py - cp.anchorBy * px), b.w);
+    a.vx = keep<kMasked>(lanes, a.vx - k.invMassAx * px, a.vx);
+    a.vy = keep<kMasked>(lanes, a.vy - k.invMassAy * py, a.vy);
+    a.w = keep<kMasked>(lanes, a.w - k.invInertiaA * (q.anchorAx * py - q.anchorAy * px), a.w);
+    b.vx = keep<kMasked>(lanes, b.vx + k.invMassBx * px, b.vx);
+    b.vy = keep<kMasked>(lanes, b.vy + k.invMassBy * py, b.vy);
+    b.w = keep<kMasked>(lanes, b.w + k.invInertiaB * (q.anchorBx * py - q.anchorBy * px), b.w);
 }
 
 // The scalar pass's block solve (solveBlock() on each point's soft right-hand side) on the
@@ -177,21 +190,27 @@ E2D_WIDE_INLINE void solveBlock(Constraint& c, const F (&s)[2], Velocities& a, V
     F vn2 = normalVelocityOf(cp2, c, a, b);
     noteImpact(cp1, lanes, vn1, s[0], invH, useBias);
     noteImpact(cp2, lanes, vn2, s[1], invH, useBias);
-    const F acc1 = cp1.normalImpulse;
-    const F acc2 = cp2.normalImpulse;
-    F r1 = t1.massScale * (vn1 + t1.bias) + t1.impulseScale * (c.k11 * acc1 + c.k12 * acc2);
-    F r2 = t2.massScale * (vn2 + t2.bias) + t2.impulseScale * (c.k12 * acc1 + c.k22 * acc2);
-    F x1 = acc1 - (c.inv11 * r1 + c.inv12 * r2);
-    F x2 = acc2 - (c.inv12 * r1 + c.inv22 * r2);
+    // Read again from memory what follows reads of `c` (a memory operand each) rather than
+    // keep what the velocities and separations loaded: the anchors and the normal otherwise
+    // sit in stack slots (a store each).
+    Constraint& k = reread(c);
+    Point& k1 = k.points[0];
+    Point& k2 = k.points[1];
+    const F acc1 = k1.normalImpulse;
+    const F acc2 = k2.normalImpulse;
+    F r1 = t1.massScale * (vn1 + t1.bias) + t1.impulseScale * (k.k11 * acc1 + k.k12 * acc2);
+    F r2 = t2.massScale * (vn2 + t2.bias) + t2.impulseScale * (k.k12 * acc1 + k.k22 * acc2);
+    F x1 = acc1 - (k.inv11 * r1 + k.inv12 * r2);
+    F x2 = acc2 - (k.inv12 * r1 + k.inv22 * r2);
     I okBoth = (x1 >= zero) & (x2 >= zero);
     // A resting pile has both points pushing in every lane: the other cases are rare.
     if (!allLanes(okBoth | ~lanes)) {
-        F b1 = r1 - (c.k11 * acc1 + c.k12 * acc2);
-        F b2 = r2 - (c.k12 * acc1 + c.k22 * acc2);
-        F first = -b1 * cp1.normalMass;
-        I okFirst = (first >= zero) & (c.k12 * first + b2 >= zero);
-        F second = -b2 * cp2.normalMass;
-        I okSecond = (second >= zero) & (c.k12 * second + b1 >= zero);
+        F b1 = r1 - (k.k11 * acc1 + k.k12 * acc2);
+        F b2 = r2 - (k.k12 * acc1 + k.k22 * acc2);
+        F first = -b1 * k1.normalMass;
+        I okFirst = (first >= zero) & (k.k12 * first + b2 >= zero);
+        F second = -b2 * k2.normalMass;
+        I okSecond = (second >= zero) & (k.k12 * second + b1 >= zero);
         I okNone = (b1 >= zero) & (b2 >= zero);
         // The first feasible case wins; none feasible keeps the impulses.
         x1 = select(okBoth, x1, select(okFirst, first, select(okSecond | okNone, zero, acc1)));
@@ -200,27 +219,25 @@ E2D_WIDE_INLINE void solveBlock(Constraint& c, const F (&s)[2], Velocities& a, V
     }
     F d1 = x1 - acc1;
     F d2 = x2 - acc2;
-    cp1.normalImpulse = keep<kMasked>(lanes, x1, acc1);
-    cp2.normalImpulse = keep<kMasked>(lanes, x2, acc2);
-    cp1.maxNormalImpulse =
-        keep<kMasked>(lanes, maxOf(cp1.maxNormalImpulse, d1), cp1.maxNormalImpulse);
-    cp2.maxNormalImpulse =
-        keep<kMasked>(lanes, maxOf(cp2.maxNormalImpulse, d2), cp2.maxNormalImpulse);
-    F p1x = d1 * c.normalX;
-    F p1y = d1 * c.normalY;
-    F p2x = d2 * c.normalX;
-    F p2y = d2 * c.normalY;
-    a.vx = keep<kMasked>(lanes, a.vx - c.invMassAx * (p1x + p2x), a.vx);
-    a.vy = keep<kMasked>(lanes, a.vy - c.invMassAy * (p1y + p2y), a.vy);
+    k1.normalImpulse = keep<kMasked>(lanes, x1, acc1);
+    k2.normalImpulse = keep<kMasked>(lanes, x2, acc2);
+    k1.maxNormalImpulse = keep<kMasked>(lanes, maxOf(k1.maxNormalImpulse, d1), k1.maxNormalImpulse);
+    k2.maxNormalImpulse = keep<kMasked>(lanes, maxOf(k2.maxNormalImpulse, d2), k2.maxNormalImpulse);
+    F p1x = d1 * k.normalX;
+    F p1y = d1 * k.normalY;
+    F p2x = d2 * k.normalX;
+    F p2y = d2 * k.normalY;
+    a.vx = keep<kMasked>(lanes, a.vx - k.invMassAx * (p1x + p2x), a.vx);
+    a.vy = keep<kMasked>(lanes, a.vy - k.invMassAy * (p1y + p2y), a.vy);
     a.w = keep<kMasked>(lanes,
-                        a.w - c.invInertiaA * ((cp1.anchorAx * p1y - cp1.anchorAy * p1x) +
-                                               (cp2.anchorAx * p2y - cp2.anchorAy * p2x)),
+                        a.w - k.invInertiaA * ((k1.anchorAx * p1y - k1.anchorAy * p1x) +
+                                               (k2.anchorAx * p2y - k2.anchorAy * p2x)),
                         a.w);
-    b.vx = keep<kMasked>(lanes, b.vx + c.invMassBx * (p1x + p2x), b.vx);
-    b.vy = keep<kMasked>(lanes, b.vy + c.invMassBy * (p1y + p2y), b.vy);
+    b.vx = keep<kMasked>(lanes, b.vx + k.invMassBx * (p1x + p2x), b.vx);
+    b.vy = keep<kMasked>(lanes, b.vy + k.invMassBy * (p1y + p2y), b.vy);
     b.w = keep<kMasked>(lanes,
-                        b.w + c.invInertiaB * ((cp1.anchorBx * p1y - cp1.anchorBy * p1x) +
-                                               (cp2.anchorBx * p2y - cp2.anchorBy * p2x)),
+                        b.w + k.invInertiaB * ((k1.anchorBx * p1y - k1.anchorBy * p1x) +
+                                               (k2.anchorBx * p2y - k2.anchorBy * p2x)),
                         b.w);
 }
 
@@ -253,12 +270,29 @@ template <bool kReversePoints, int kPoints>
 E2D_WIDE_INLINE void solveGroup(Constraint& c, F invH, bool useBias, float pushMaxSpeed) {
     resetPad(c);
     F s[2];
-    separationsOf<kPoints>(c, s);
+    if (c.separationsKnown != 0) {
+        if (useBias) {
+            c.separationsKnown = 0;
+        }
+#pragma GCC unroll 2
+        for (int j = 0; j < kPoints; ++j) {
+            s[j] = c.separation[j];
+        }
+    } else {
+        separationsOf<kPoints>(c, s);
+        if (!useBias) {
+#pragma GCC unroll 2
+            for (int j = 0; j < kPoints; ++j) {
+                c.separation[j] = s[j];
+            }
+            c.separationsKnown = 1;
+        }
+    }
     Velocities a = velocitiesOf(c.bodyA);
     Velocities b = velocitiesOf(c.bodyB);
     const I all = ~I{};
     if constexpr (kPoints == 1) {
-        solvePoint<false>(c, c.points[0], s[0], a, b, all, invH, useBias, pushMaxSpeed);
+        solvePoint<false, true>(c, c.points[0], s[0], a, b, all, invH, useBias, pushMaxSpeed);
     } else {
         // Lanes of well-conditioned 2-point manifolds take the block solve, the others go point
         // by point; a group is usually all one kind (a pile of boxes). Reversed, a one-point
@@ -386,7 +420,8 @@ static_assert(offsetof(Manifold, normal) == 0 && sizeof(ManifoldPoint) == 40 &&
                       offsetof(ManifoldPoint, separation) + 4 &&
                   offsetof(ManifoldPoint, tangentImpulse) ==
                       offsetof(ManifoldPoint, separation) + 8 &&
-                  offsetof(ManifoldPoint, separation) + 16 <= sizeof(ManifoldPoint),
+                  offsetof(ManifoldPoint, separation) + 16 <= sizeof(ManifoldPoint) &&
+                  sizeof(Manifold::pointCount) == 4 && offsetof(Manifold, pointCount) >= 12,
               "prepareGroup() reads Manifold rows of four floats");
 
 // leverRounding().
@@ -426,13 +461,14 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
     bodiesAt(in.indexB, states, &c.pad, c.bodyB);
     // Static sides and empty lanes read the pad: at rest, as ContactBodyView{} is.
     resetPad(c);
-    int pointCount[N];
-    for (int lane = 0; lane < N; ++lane) {
-        pointCount[lane] = in.manifold[lane]->pointCount;
-    }
+    F unused0, unused1, unused2, countBits;
+    // The row that ends with the point count (its bits ride through the shuffles unchanged):
+    // a few loads and shuffles where a lane at a time took a load, a load and a store.
+    loadRows(in.manifold, offsetof(Manifold, pointCount) + sizeof(int) - 16, unused0, unused1,
+             unused2, countBits);
     I count;
-    std::memcpy(&count, pointCount, sizeof count);
-    F nx, ny, unused0, unused1;
+    std::memcpy(&count, &countBits, sizeof count);
+    F nx, ny;
     loadRows(in.manifold, offsetof(Manifold, normal), nx, ny, unused0, unused1);
     c.normalX = nx;
     c.normalY = ny;
@@ -542,5 +578,6 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
     c.inv22 = select(block, invDet * k11, one);
     c.blockSolve = block | empty;
     c.twoPoints = count == 2;
+    c.separationsKnown = 0;
     return laneBits(deep);
 }

@@ -112,6 +112,13 @@ struct Contact {
     int shapeB = -1;
     int bodyA = -1;
     int bodyB = -1;
+    // Copies of what the narrow phase asks of the shapes every step, which stay while the
+    // contact lives (a shape's contacts end before its proxy goes or its geometry changes): the
+    // proxy keys (Shape::proxyKey) of the fat-box test, and whether both are circles (their own
+    // path). Not in snapshots: restoreSnapshot() sets them (World::Impl::copyContactShapes()).
+    int proxyKeyA = -1;
+    int proxyKeyB = -1;
+    bool circles = false;
     int prev[2] = {-1, -1};
     int next[2] = {-1, -1};
     ShapeId idA{};

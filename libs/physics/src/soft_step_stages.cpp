@@ -40,8 +40,8 @@ struct StageList {
         add(stage, kMinGroupsPerBlock);
     }
 
-    void integrateVelocities(int subStep) {
-        SoftStage stage{.kind = SoftStage::Kind::IntegrateVelocities, .prepare = subStep == 0};
+    void integrateVelocities(int /*subStep*/) {
+        SoftStage stage{.kind = SoftStage::Kind::IntegrateVelocities};
         stage.end = bodyCount;
         add(stage, kMinBodiesPerBlock);
     }
@@ -96,10 +96,7 @@ void runStage(int stageIndex, int block, int /*worker*/, void* context) {
     };
     switch (stage.kind) {
     case SoftStage::Kind::IntegrateVelocities:
-        if (stage.prepare) {
-            prepareIntegration(c.step.sims, bodies(), c.step.gravity, c.h);
-        }
-        integrateVelocities(c.step.sims, c.step.states, bodies(), c.h, def.maxLinearSpeed);
+        integrateBlockVelocities(c.step.sims, c.step.states, bodies(), c.h, def.maxLinearSpeed);
         break;
     case SoftStage::Kind::WarmStart:
         warmStartWideGroups(c.wide, begin, end);
@@ -109,7 +106,7 @@ void runStage(int stageIndex, int block, int /*worker*/, void* context) {
                         stage.reversePoints);
         break;
     case SoftStage::Kind::IntegratePositions:
-        integratePositions(c.step.states, bodies(), c.h, def.maxLinearSpeed);
+        integrateBlockPositions(c.step.states, bodies(), c.h, def.maxLinearSpeed);
         break;
     case SoftStage::Kind::Restitution:
         applyRestitutionWide(c.wide, c.restitution, c.step.states, def.restitutionThreshold, c.h);

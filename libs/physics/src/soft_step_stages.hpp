@@ -24,7 +24,6 @@ struct SoftStage {
         Restitution, // one block: the list in constraint order
     };
     Kind kind = Kind::Solve;
-    bool prepare = false; // IntegrateVelocities: the first sub-step's, prepareIntegration() too
     bool useBias = false; // Solve
     bool reversePoints = false;
     int begin = 0;

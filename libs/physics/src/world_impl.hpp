@@ -171,6 +171,9 @@ struct World::Impl {
     // One contact's narrow phase (contact.cpp): its new manifold and whether it touches.
     [[nodiscard]] bool updateManifold(detail::Contact& c, float dt) const;
     void createContact(int shapeA, int shapeB);
+    // Sets what the live contacts copy from their shapes (Contact::proxyKeyA, proxyKeyB,
+    // circles): after restoreSnapshot(), whose contacts do not carry it.
+    void copyContactShapes();
     void destroyContact(int contactIndex, bool reportEnd);
     void solve(float dt);
     void scheduleWide(int constraintCount);

@@ -1126,6 +1126,7 @@ void World::restoreSnapshot(std::span<const std::uint8_t> snapshot) {
     check.contacts();
     section("BRPH");
     check.broadPhase();
+    fresh->copyContactShapes();
     // Not state: how this world runs (its callbacks, its workers, its SIMD width) stays.
     fresh->hooks.preSolve = std::move(impl_->hooks.preSolve);
     fresh->hooks.pairFilter = std::move(impl_->hooks.pairFilter);

@@ -230,19 +230,26 @@ void World::Impl::solve(float dt) {
     // Two passes: the solver indices first, so the arrays are sized once and each body written
     // whole in its place (growing them body by body, each element default-built and then
     // overwritten, was about 80 instructions a body).
+    detail::Body* const bodySlots = bodies.data();
+    const std::size_t bodyCount = bodies.size();
     int simCount = 0;
-    for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
-        detail::Body& b = bodies[bi];
-        detail::BodyMotion& m = b.motion;
-        const bool moving = b.alive && b.enabled && b.type != BodyType::Static && m.awake;
-        m.solverIndex = moving ? simCount++ : kNullIndex;
+    for (std::size_t bi = 0; bi < bodyCount; ++bi) {
+        detail::Body& b = bodySlots[bi];
+        const bool moving = b.alive & b.enabled & (b.type != BodyType::Static) & b.motion.awake;
+        b.motion.solverIndex = moving ? simCount++ : kNullIndex;
     }
     s.sims.resize(static_cast<std::size_t>(simCount));
     s.states.resize(static_cast<std::size_t>(simCount));
     s.stateRigid.resize(static_cast<std::size_t>(simCount));
+    // The arrays in locals: the byte stores to stateRigid may alias them for the compiler, which
+    // then loaded them from the world again for every body.
+    detail::BodySim* const sims = s.sims.data();
+    detail::BodyState* const states = s.states.data();
+    unsigned char* const stateRigid = s.stateRigid.data();
+    const Vec2 bodyGravity = gravity;
     const detail::SpeedCaps caps = detail::speedCaps(def.maxLinearSpeed, integrationStep);
-    for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
-        const detail::Body& b = bodies[bi];
+    for (std::size_t bi = 0; bi < bodyCount; ++bi) {
+        const detail::Body& b = bodySlots[bi];
         const detail::BodyMotion& m = b.motion;
         if (m.solverIndex == kNullIndex) {
             continue;
@@ -252,7 +259,8 @@ void World::Impl::solve(float dt) {
         const Vec2 centerOffset = rotate(b.transform.q, m.localCenter);
         const Vec2 center = centerOffset + b.transform.p;
         const Vec2 invMass{m.lockX ? 0.0f : m.invMass, m.lockY ? 0.0f : m.invMass};
-        s.sims[k] = detail::BodySim{
+        detail::BodySim& entry = sims[k];
+        entry = detail::BodySim{
             .transform = b.transform,
             .center = center,
             .center0 = center,
@@ -271,7 +279,13 @@ void World::Impl::solve(float dt) {
             .bodyIndex = static_cast<int>(bi),
             .flags = m.isBullet ? std::uint32_t{detail::kIsBullet} : 0u,
         };
-        s.stateRigid[k] = invMass.x == 0.0f && invMass.y == 0.0f && m.invInertia == 0.0f;
+        // The integration steps' gravity, forces and damping, here while the body is at hand
+        // rather than in a pass of its own (the soft step's sub-steps; the classic solver and
+        // solveSoftStep() prepare their own).
+        detail::prepareIntegration(entry, bodyGravity, integrationStep);
+        // Without branches (&, not &&): which way each goes varies body by body.
+        stateRigid[k] = static_cast<unsigned char>((invMass.x == 0.0f) & (invMass.y == 0.0f) &
+                                                   (m.invInertia == 0.0f));
         // A kinematic body keeps its velocity; a locked axis has none.
         Vec2 v{m.lockX && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.x,
                m.lockY && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.y};
@@ -280,7 +294,7 @@ void World::Impl::solve(float dt) {
         // read them: integration would cap them anyway, and a contact's approach speed taken
         // from the raw value could overflow its restitution and hit event.
         detail::clampVelocity(v, w, caps);
-        s.states[k] = detail::BodyState{
+        states[k] = detail::BodyState{
             .linearVelocity = v, .angularVelocity = w, .deltaPosition = m.positionResidual};
     }
 
@@ -338,16 +352,24 @@ void World::Impl::solve(float dt) {
     int constraintCount = 0;
     s.constraintContacts.resize(s.touchingContacts.size());
     s.constraintBodies.resize(s.touchingContacts.size());
-    for (const detail::Simulation::TouchingContact& c : s.touchingContacts) {
-        const int indexA = body(c.bodyA).motion.solverIndex;
-        const int indexB = body(c.bodyB).motion.solverIndex;
-        if (indexA == kNullIndex && indexB == kNullIndex) {
-            continue;
+    {
+        // The arrays and the count in locals, as in the copy above (the lambdas below take
+        // constraintCount by reference, which kept it in memory through the loop).
+        int* const contactsOut = s.constraintContacts.data();
+        detail::Simulation::ConstraintBodies* const bodiesOut = s.constraintBodies.data();
+        std::size_t kept = 0;
+        for (const detail::Simulation::TouchingContact& c : s.touchingContacts) {
+            const int indexA = bodySlots[c.bodyA].motion.solverIndex;
+            const int indexB = bodySlots[c.bodyB].motion.solverIndex;
+            if (indexA == kNullIndex && indexB == kNullIndex) {
+                continue;
+            }
+            rolling |= c.rollingResistance > 0.0f;
+            contactsOut[kept] = c.contact;
+            bodiesOut[kept] = {indexA, indexB};
+            ++kept;
         }
-        rolling |= c.rollingResistance > 0.0f;
-        const auto k = static_cast<std::size_t>(constraintCount++);
-        s.constraintContacts[k] = c.contact;
-        s.constraintBodies[k] = {indexA, indexB};
+        constraintCount = static_cast<int>(kept);
     }
     s.constraintContacts.resize(static_cast<std::size_t>(constraintCount));
     s.constraintBodies.resize(static_cast<std::size_t>(constraintCount));
@@ -470,12 +492,18 @@ void World::Impl::solve(float dt) {
             const int first =
                 levelFirst +
                 (group - s.wideContacts.levelStart[static_cast<std::size_t>(level)]) * N;
+            // The arrays in locals: the lanes' pointer stores below may alias them for the
+            // compiler, which then loaded them from the world again for every lane.
+            const detail::BodySim* const groupSims = s.sims.data();
+            const detail::Contact* const contacts = s.contacts.data();
+            const int* const slotContact = s.slotContact.data();
+            const detail::Simulation::ConstraintBodies* const slotBodies = s.slotBodies.data();
             // A static (or asleep) side's centre offset, viewOf()'s, as a row of four floats.
             alignas(16) float staticOffset[2 * N][4];
             auto sideRows = [&](int lane, int side, int bodyIndex, int solverIndex,
                                 const float*& offset, const float*& mass) {
                 if (solverIndex != kNullIndex) {
-                    const detail::BodySim& bs = s.sims[static_cast<std::size_t>(solverIndex)];
+                    const detail::BodySim& bs = groupSims[solverIndex];
                     offset = &bs.centerOffset.x;
                     mass = &bs.invMass.x;
                     return;
@@ -494,8 +522,8 @@ void World::Impl::solve(float dt) {
                 const int slot = first + lane;
                 prefetchContact(slot);
                 const auto at = static_cast<std::size_t>(slot);
-                const detail::Contact& c = s.contacts[static_cast<std::size_t>(s.slotContact[at])];
-                const detail::Simulation::ConstraintBodies sides = s.slotBodies[at];
+                const detail::Contact& c = contacts[slotContact[at]];
+                const detail::Simulation::ConstraintBodies sides = slotBodies[at];
                 in.manifold[lane] = &c.manifold;
                 in.indexA[lane] = sides.indexA;
                 in.indexB[lane] = sides.indexB;

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -53,7 +55,7 @@ bool isWritable(const detail::BodySim& s, const detail::BodyState& st) {
 }
 
 // What the parallel pass left for the ordered one, per solver body.
-enum : unsigned char { kWritten, kMoveProxies, kNonFiniteBody, kOutOfRangeBody };
+enum : unsigned char { kWritten = 0, kMoveProxies, kNonFiniteBody, kOutOfRangeBody };
 
 } // namespace
 
@@ -123,8 +125,19 @@ void World::Impl::writeBack(float dt) {
     tasks.parallelFor(simCount, tasks.minRange(30), writePiece);
 
     s.disabledSims.clear();
+    const unsigned char* const results = s.writeBackResults.data();
     for (int k = 0; k < simCount; ++k) {
-        const unsigned char result = s.writeBackResults[static_cast<std::size_t>(k)];
+        // Most bodies of a resting pile need nothing more: their results (kWritten, zero) are
+        // skipped eight at a time.
+        if ((k & 7) == 0 && k + 8 <= simCount) {
+            std::uint64_t eight = 0;
+            std::memcpy(&eight, results + k, sizeof eight);
+            if (eight == 0) {
+                k += 7;
+                continue;
+            }
+        }
+        const unsigned char result = results[k];
         if (result == kWritten) {
             continue;
         }
