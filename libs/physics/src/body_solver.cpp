@@ -317,6 +317,65 @@ integratePosition8(std::span<BodyState> states, const std::size_t (&at)[8], __m2
     return true;
 }
 
+// finalizePositions4() for sims[0..7] and states[0..7].
+__attribute__((target("avx2"))) void finalizePositions8(BodySim* sims, const BodyState* states) {
+    __m256 c0x = load2(&sims[0].center0.x, &sims[4].center0.x);
+    __m256 c0y = load2(&sims[1].center0.x, &sims[5].center0.x);
+    __m256 r0c = load2(&sims[2].center0.x, &sims[6].center0.x);
+    __m256 r0s = load2(&sims[3].center0.x, &sims[7].center0.x);
+    E2D_TRANSPOSE4X2_PS(c0x, c0y, r0c, r0s);
+    __m256 dpx = load2(&states[0].deltaPosition.x, &states[4].deltaPosition.x);
+    __m256 dpy = load2(&states[1].deltaPosition.x, &states[5].deltaPosition.x);
+    __m256 drc = load2(&states[2].deltaPosition.x, &states[6].deltaPosition.x);
+    __m256 drs = load2(&states[3].deltaPosition.x, &states[7].deltaPosition.x);
+    E2D_TRANSPOSE4X2_PS(dpx, dpy, drc, drs);
+    // localCenter (x, y) of bodies 0 1 2 3 (low halves) and 4 5 6 7 (high), as two rows.
+    auto pair = [&](int a) {
+        return _mm_loadh_pi(_mm_castsi128_ps(_mm_loadl_epi64(
+                                reinterpret_cast<const __m128i*>(&sims[a].localCenter))),
+                            reinterpret_cast<const __m64*>(&sims[a + 1].localCenter));
+    };
+    const __m256 lc01 = _mm256_insertf128_ps(_mm256_castps128_ps256(pair(0)), pair(4), 1);
+    const __m256 lc23 = _mm256_insertf128_ps(_mm256_castps128_ps256(pair(2)), pair(6), 1);
+    const __m256 lcx = _mm256_shuffle_ps(lc01, lc23, _MM_SHUFFLE(2, 0, 2, 0));
+    const __m256 lcy = _mm256_shuffle_ps(lc01, lc23, _MM_SHUFFLE(3, 1, 3, 1));
+
+    __m256 cx = _mm256_add_ps(c0x, dpx);
+    __m256 cy = _mm256_add_ps(c0y, dpy);
+    __m256 qc = _mm256_sub_ps(_mm256_mul_ps(drc, r0c), _mm256_mul_ps(drs, r0s));
+    __m256 qs = _mm256_add_ps(_mm256_mul_ps(drs, r0c), _mm256_mul_ps(drc, r0s));
+    const __m256 mag = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(qc, qc), _mm256_mul_ps(qs, qs)));
+    const __m256 positive = _mm256_cmp_ps(mag, _mm256_setzero_ps(), _CMP_GT_OS);
+    qc = _mm256_or_ps(_mm256_and_ps(positive, _mm256_div_ps(qc, mag)),
+                      _mm256_andnot_ps(positive, qc));
+    qs = _mm256_or_ps(_mm256_and_ps(positive, _mm256_div_ps(qs, mag)),
+                      _mm256_andnot_ps(positive, qs));
+    // rotate(q, localCenter)
+    const __m256 rx = _mm256_sub_ps(_mm256_mul_ps(qc, lcx), _mm256_mul_ps(qs, lcy));
+    const __m256 ry = _mm256_add_ps(_mm256_mul_ps(qs, lcx), _mm256_mul_ps(qc, lcy));
+    __m256 px = _mm256_sub_ps(cx, rx);
+    __m256 py = _mm256_sub_ps(cy, ry);
+    __m256 residualX = _mm256_sub_ps(dpx, _mm256_sub_ps(_mm256_add_ps(rx, px), c0x));
+    __m256 residualY = _mm256_sub_ps(dpy, _mm256_sub_ps(_mm256_add_ps(ry, py), c0y));
+
+    E2D_TRANSPOSE4X2_PS(px, py, qc, qs);
+    store2(&sims[0].transform.p.x, &sims[4].transform.p.x, px);
+    store2(&sims[1].transform.p.x, &sims[5].transform.p.x, py);
+    store2(&sims[2].transform.p.x, &sims[6].transform.p.x, qc);
+    store2(&sims[3].transform.p.x, &sims[7].transform.p.x, qs);
+    E2D_TRANSPOSE4X2_PS(cx, cy, residualX, residualY); // rows: centre x y, residual x y
+    const __m256 rows[4] = {cx, cy, residualX, residualY};
+    for (int k = 0; k < 4; ++k) {
+        const __m128 halves[2] = {_mm256_castps256_ps128(rows[k]),
+                                  _mm256_extractf128_ps(rows[k], 1)};
+        for (int half = 0; half < 2; ++half) {
+            BodySim& sim = sims[k + 4 * half];
+            _mm_storel_pi(reinterpret_cast<__m64*>(&sim.center), halves[half]);
+            _mm_storeh_pi(reinterpret_cast<__m64*>(&sim.positionResidual), halves[half]);
+        }
+    }
+}
+
 #undef E2D_TRANSPOSE4X2_PS
 
 // The groups of eight of the first `count` bodies; returns how many bodies it did (a multiple
@@ -719,6 +778,13 @@ inline void finalizePositions4(BodySim* sims, const BodyState* states) {
 void finalizePositions(std::span<BodySim> sims, std::span<const BodyState> states) {
     std::size_t i = 0;
 #if defined(__SSE2__)
+#if defined(E2D_BODY_AVX2)
+    if (__builtin_cpu_supports("avx2")) {
+        for (; i + 8 <= sims.size(); i += 8) {
+            avx2::finalizePositions8(&sims[i], &states[i]);
+        }
+    }
+#endif
     for (; i + 4 <= sims.size(); i += 4) {
         finalizePositions4(&sims[i], &states[i]);
     }

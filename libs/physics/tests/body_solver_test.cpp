@@ -160,9 +160,9 @@ TEST(BodySolver, BlockIntegrationMatchesTheIndexedLoops) {
 }
 
 TEST(BodySolver, FinalizePositionsMatchesOneBodyAtATime) {
-    // Four bodies a register where the target has SSE2: each must end as the one-body call
-    // leaves it, bit for bit, a rotation that does not normalise (zero) included.
-    for (int count : {1, 4, 7, 13}) {
+    // Four bodies a register where the target has SSE2, eight with AVX2: each must end as the
+    // one-body call leaves it, bit for bit, a rotation that does not normalise (zero) included.
+    for (int count : {1, 4, 7, 13, 8, 21}) {
         Bodies all = makeBodies(count, static_cast<unsigned>(100 + count));
         std::mt19937 random(static_cast<unsigned>(count));
         std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
