@@ -58,6 +58,10 @@ void packLane(WideConstraintT<N>& w, int lane, const ContactConstraint& c, BodyS
     w.inv22[lane] = inv.a22;
     w.blockSolve[lane] = c.blockSolve ? -1 : 0;
     w.twoPoints[lane] = c.pointCount == 2 ? -1 : 0;
+    w.anyTwoPoints = 0;
+    for (int other = 0; other < N; ++other) {
+        w.anyTwoPoints |= w.twoPoints[other] != 0 ? 1 : 0;
+    }
     w.separationsKnown = 0;
     for (int i = 0; i < 2; ++i) {
         // A missing second point has no mass: its impulses stay zero.

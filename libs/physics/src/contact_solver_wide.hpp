@@ -77,6 +77,9 @@ struct alignas(4 * N) WideConstraintT {
     // packWideLane() clear it too. Warm starts do not touch it.
     F separation[2];
     int separationsKnown;
+    // Non-zero where some lane has a second point (twoPoints): the passes pick their kernel
+    // with one test of memory.
+    int anyTwoPoints;
 };
 
 static_assert(sizeof(WidePointT<8>) % 32 == 0 && sizeof(WideConstraintT<8>) % 32 == 0 &&

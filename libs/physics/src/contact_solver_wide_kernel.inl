@@ -339,7 +339,7 @@ E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints,
     }
     for (int g = levelStart.front(); g < levelStart.back(); ++g) {
         const Constraint& c = constraints[static_cast<std::size_t>(g)];
-        if (anyLane(c.twoPoints)) {
+        if (c.anyTwoPoints != 0) {
             warmStartGroup<2>(c);
         } else {
             warmStartGroup<1>(c);
@@ -354,7 +354,7 @@ E2D_WIDE_FN void solveGroups(std::span<Constraint> constraints, int first, int e
                              float pushMaxSpeed) {
     for (int g = first; g < end; ++g) {
         Constraint& c = constraints[static_cast<std::size_t>(g)];
-        if (anyLane(c.twoPoints)) {
+        if (c.anyTwoPoints != 0) {
             solveGroup<kReversePoints, 2>(c, invH, kUseBias, pushMaxSpeed);
         } else {
             solveGroup<kReversePoints, 1>(c, invH, kUseBias, pushMaxSpeed);
@@ -493,11 +493,19 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
     F depth[2];
     const F tx = ny;
     const F ty = -nx;
+#pragma GCC unroll 2
     for (int i = 0; i < 2; ++i) {
         Point& cp = c.points[i];
         // A missing point (or an empty lane) packs as ContactConstraintPoint{}: all zero. What
         // the manifold holds there is read but never kept.
         const I present = count > i;
+        if (i == 1 && !anyLane(present)) {
+            // No lane has a second point (a pile of circles): all zero, what the lines below
+            // give such a point, without reading it.
+            cp = Point{};
+            depth[i] = zero;
+            continue;
+        }
         const std::size_t at = offsetof(Manifold, points) + sizeof(ManifoldPoint) * i;
         F anchorAx, anchorAy, anchorBx, anchorBy, separation, normalImpulse, tangentImpulse;
         loadRows(in.manifold, at + offsetof(ManifoldPoint, anchorA), anchorAx, anchorAy, anchorBx,
@@ -578,6 +586,7 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
     c.inv22 = select(block, invDet * k11, one);
     c.blockSolve = block | empty;
     c.twoPoints = count == 2;
+    c.anyTwoPoints = anyLane(c.twoPoints) ? 1 : 0;
     c.separationsKnown = 0;
     return laneBits(deep);
 }

@@ -354,6 +354,15 @@ const std::vector<WideConstraintT<N>>& groupsOf(const WideContacts& wide) {
     }
 }
 
+template <int N>
+std::vector<WideConstraintT<N>>& groupsOf(WideContacts& wide) {
+    if constexpr (N == 8) {
+        return wide.constraints8;
+    } else {
+        return wide.constraints4;
+    }
+}
+
 // The softness the world gives a contact between `a` and `b`.
 Softness softnessFor(const Problem& p, const ContactBodyView& a, const ContactBodyView& b) {
     auto rigid = [](const ContactBodyView& v) {
@@ -373,6 +382,11 @@ void expectSameGroups(const Problem& p, const Schedule& schedule, int& pushed, i
     prepareWide(reference, p.constraints, schedule.order, schedule.levelStart, N, states);
     WideContacts gathered;
     layoutWide(gathered, schedule.levelStart, N);
+    // Whatever an earlier step left in the groups: prepareWideGroup() writes every byte the
+    // comparison below reads.
+    for (WideConstraintT<N>& g : groupsOf<N>(gathered)) {
+        std::memset(static_cast<void*>(&g), 0x5A, offsetof(WideConstraintT<N>, bodyA));
+    }
     ASSERT_EQ(reference.lanes, N);
     ASSERT_EQ(gathered.lanes, N);
     int groups = 0;
@@ -507,6 +521,25 @@ TEST(WideContactSolver, PreparesGroupsAsPrepareContactDoes) {
         // Both answers of isPushedApart()'s second test come up.
         EXPECT_GT(pushed, 0);
         EXPECT_GT(held, 0);
+    }
+}
+
+// Groups whose lanes have one point each (a pile of circles) skip the second point: packed as
+// prepareContact() packs a missing point, whatever the manifolds hold there.
+TEST(WideContactSolver, PreparesOnePointGroupsAsPrepareContactDoes) {
+    constexpr float kH = 1.0f / 240.0f;
+    Problem p = randomProblem(9u, 40, 150, kH, 1);
+    for (std::size_t k = 0; k < p.inputs.size(); ++k) {
+        PrepareInput& in = p.inputs[k];
+        ASSERT_EQ(in.manifold.pointCount, 1);
+        in.manifold.points[1] = in.manifold.points[0];
+    }
+    const Schedule schedule = scheduleOf(p);
+    int pushed = 0;
+    int held = 0;
+    expectSameGroups<4>(p, schedule, pushed, held);
+    if (bestWideLanes() >= 8) {
+        expectSameGroups<8>(p, schedule, pushed, held);
     }
 }
 
