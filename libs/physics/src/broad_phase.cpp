@@ -53,6 +53,7 @@ int BroadPhase::createProxy(const Aabb& aabb, BodyType type, std::uint64_t categ
     }
     info(key) = ProxyInfo{};
     bufferMoveLive(key);
+    ++fatBoxChanges_;
     return key;
 }
 
@@ -76,6 +77,7 @@ void BroadPhase::destroyProxy(int proxyKey) {
     }
     trees_[treeIndex(proxyKey)].destroyProxy(proxyIdOf(proxyKey));
     info(proxyKey) = ProxyInfo{};
+    ++fatBoxChanges_;
 }
 
 bool BroadPhase::needsMove(int proxyKey, const Aabb& aabb, Vec2 displacement) const {
@@ -91,6 +93,7 @@ bool BroadPhase::moveProxy(int proxyKey, const Aabb& aabb, Vec2 displacement) {
     trees_[treeIndex(proxyKey)].moveProxy(
         proxyIdOf(proxyKey), predictedFatBox(aabb, proxyTypeOf(proxyKey), displacement));
     bufferMoveLive(proxyKey);
+    ++fatBoxChanges_;
     return true;
 }
 

@@ -130,6 +130,10 @@ public:
         return overlaps(a, b);
 #endif
     }
+    /// How many times a fat box changed: every proxy created, destroyed or moved counts one.
+    /// While it stays the same, so does every fat box (the narrow phase then skips its fat-box
+    /// test: contact.cpp).
+    [[nodiscard]] std::uint64_t fatBoxChanges() const { return fatBoxChanges_; }
     [[nodiscard]] std::uint64_t userData(int proxyKey) const {
         return trees_[treeIndex(proxyKey)].userData(proxyIdOf(proxyKey));
     }
@@ -224,6 +228,7 @@ private:
     mutable std::array<DynamicTree, kBodyTypeCount> trees_;
     std::vector<ProxyInfo> infos_; // indexed by proxy key
     std::vector<int> moveBuffer_;
+    std::uint64_t fatBoxChanges_ = 0; // fatBoxChanges(); not in snapshots
     std::vector<ProxyPair> newPairs_;
     // updatePairs() on several workers: each worker's pairs found and tree queries run.
     std::vector<std::vector<ProxyPair>> workerPairs_;

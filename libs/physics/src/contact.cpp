@@ -534,17 +534,21 @@ void World::Impl::updateContacts(float dt) {
     // With the pre-solve hook set, every update goes through the second pass (the hook is
     // called there, in contact order, and sees the others as they were).
     const bool allSerial = static_cast<bool>(hooks.preSolve);
-    // Each contact reads two shapes and two bodies scattered over the shape and body arrays:
-    // where these are larger than a core's own cache, they are fetched a few contacts ahead
-    // (many_pyramids: about -6 % narrow-phase time). Where they fit, the prefetches only cost
-    // their 47 instructions a contact (falling_circles_1000: -5 % instructions a step and
-    // faster without them), so they are left out.
+    // Each contact reads two bodies and (unless its manifold is recycled) two shapes scattered
+    // over the body and shape arrays: where these are larger than a core's own cache, they are
+    // fetched a few contacts ahead (many_pyramids: about -6 % narrow-phase time). Where they
+    // fit, the prefetches only cost their 47 instructions a contact (falling_circles_1000: -5 %
+    // instructions a step and faster without them), so they are left out.
     constexpr int kPrefetchAhead = 6;
     constexpr std::size_t kPrefetchBytes = std::size_t{1} << 20;
     const bool prefetch =
         shapes.size() * sizeof(detail::Shape) + bodies.size() * sizeof(detail::Body) >
         kPrefetchBytes;
     const float recycle = effectiveRecycleDistance(s.def, speculativeDistance);
+    // The fat-box test (about 26 instructions a contact) only where a fat box changed since it
+    // last ran: in a resting pile, no proxy moves for many steps.
+    const bool testFatBoxes = broadPhase.fatBoxChanges() != s.fatBoxChangesTested;
+    s.fatBoxChangesTested = broadPhase.fatBoxChanges();
     // Blocks [firstBlock, endBlock), with prefetches if WithPrefetch::value (a separate loop
     // without them: the test for them was 3 instructions a contact).
     auto updateRange = [&](auto withPrefetch, int firstBlock, int endBlock) {
@@ -563,6 +567,7 @@ void World::Impl::updateContacts(float dt) {
         const float stepDt = dt;
         const float recycleDistance = recycle;
         const bool serialAll = allSerial;
+        const bool testBoxes = testFatBoxes;
         const int prefetchEnd = std::min(endBlock * kBlock, contactSlots);
         for (int b = firstBlock; b < endBlock; ++b) {
             const int begin = b * kBlock;
@@ -575,10 +580,13 @@ void World::Impl::updateContacts(float dt) {
                     if (ci + kPrefetchAhead < prefetchEnd) {
                         const detail::Contact& ahead = contacts[ci + kPrefetchAhead];
                         if (ahead.alive) {
-                            detail::prefetchObject(shapeSlots + ahead.shapeA);
-                            detail::prefetchObject(shapeSlots + ahead.shapeB);
                             detail::prefetchObject(bodySlots + ahead.bodyA);
                             detail::prefetchObject(bodySlots + ahead.bodyB);
+                            // A manifold moved with its bodies reads no shape.
+                            if (!ahead.origin.valid) {
+                                detail::prefetchObject(shapeSlots + ahead.shapeA);
+                                detail::prefetchObject(shapeSlots + ahead.shapeB);
+                            }
                         }
                     }
                 }
@@ -589,7 +597,7 @@ void World::Impl::updateContacts(float dt) {
                 unsigned char update;
                 const detail::Body& ba = bodySlots[c.bodyA];
                 const detail::Body& bb = bodySlots[c.bodyB];
-                if (!bp.fatAabbsOverlapLive(c.proxyKeyA, c.proxyKeyB)) {
+                if (testBoxes && !bp.fatAabbsOverlapLive(c.proxyKeyA, c.proxyKeyB)) {
                     update = kApart;
                 } else if (!ba.motion.awake && !bb.motion.awake) {
                     // Settled unless an earlier contact wakes a side in the second pass.

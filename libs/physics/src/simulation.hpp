@@ -151,6 +151,10 @@ struct Simulation {
         float rollingResistance = 0.0f;
     };
     std::vector<TouchingContact> touchingContacts;
+    // BroadPhase::fatBoxChanges() when the narrow phase last tested the contacts' fat boxes (~0:
+    // never, as after restoreSnapshot()). While it is the same, the fat boxes of every live
+    // contact still overlap: those that parted ended then, and a pair found since overlaps.
+    std::uint64_t fatBoxChangesTested = ~std::uint64_t{0};
     // The narrow phase's parallel pass (World::Impl::updateContacts()) goes through the contact
     // slots in blocks of kNarrowBlock; per block, from slot block * kNarrowBlock on, it lists the
     // touching contacts it settled and the contacts the serial pass must see, with counts here.

@@ -239,6 +239,56 @@ TEST(DynamicTree, QueryMatchesBruteForce) {
     }
 }
 
+// query() reports in the tree's order (depth first, child1 before child2), whatever it prunes: a
+// box query's leaves, and a ray cast's, come in the order a query over everything lists them.
+TEST(DynamicTree, QueriesReportLeavesInTheTreesOrder) {
+    std::mt19937 rng(7);
+    DynamicTree tree;
+    std::vector<int> ids;
+    for (int i = 0; i < 500; ++i) {
+        ids.push_back(tree.createProxy(randomBox(rng, 30.0f, 1.5f), 1, 0));
+    }
+    for (int i = 0; i < 500; i += 3) {
+        tree.moveProxy(ids[static_cast<std::size_t>(i)], randomBox(rng, 30.0f, 1.5f));
+    }
+    std::vector<int> all;
+    tree.query({{-100, -100}, {100, 100}}, DynamicTree::kAllBits,
+               [&](int id, std::uint64_t) { all.push_back(id); });
+    ASSERT_EQ(all.size(), ids.size());
+    std::vector<int> rank(ids.size() * 2, -1);
+    for (std::size_t k = 0; k < all.size(); ++k) {
+        rank[static_cast<std::size_t>(all[k])] = static_cast<int>(k);
+    }
+    auto inTreeOrder = [&](const std::vector<int>& found) {
+        for (std::size_t k = 1; k < found.size(); ++k) {
+            if (rank[static_cast<std::size_t>(found[k - 1])] >=
+                rank[static_cast<std::size_t>(found[k])]) {
+                return false;
+            }
+        }
+        return true;
+    };
+    int nonTrivial = 0;
+    for (int q = 0; q < 100; ++q) {
+        std::vector<int> found;
+        tree.query(randomBox(rng, 30.0f, 6.0f), DynamicTree::kAllBits,
+                   [&](int id, std::uint64_t) { found.push_back(id); });
+        nonTrivial += found.size() >= 3 ? 1 : 0;
+        ASSERT_TRUE(inTreeOrder(found)) << "query " << q;
+        std::vector<int> crossed;
+        const RayCastInput ray{{uniform(rng, -30, 30), uniform(rng, -30, 30)},
+                               {uniform(rng, -20, 20), uniform(rng, -20, 20)},
+                               1.0f};
+        tree.rayCast(ray, DynamicTree::kAllBits,
+                     [&](const RayCastInput& clipped, int id, std::uint64_t) {
+                         crossed.push_back(id);
+                         return clipped.maxFraction; // all hits, unclipped
+                     });
+        ASSERT_TRUE(inTreeOrder(crossed)) << "ray " << q;
+    }
+    EXPECT_GT(nonTrivial, 50); // the order was tested on queries with several leaves
+}
+
 TEST(DynamicTree, RayCastMatchesBruteForce) {
     std::mt19937 rng(7);
     DynamicTree tree;
@@ -517,6 +567,20 @@ TEST(DynamicTree, RejectsBadInput) {
     } catch (const Error& e) {
         EXPECT_THAT(e.what(), HasSubstr("physics::DynamicTree::enlargeProxy(): aabb must have "
                                         "lower <= upper, got lower (2, 0) upper (1, 1)"));
+    }
+    try {
+        tree.moveProxy(id, {{0, 2}, {1, 1}}); // inverted in y only
+        ADD_FAILURE() << "no throw";
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("physics::DynamicTree::moveProxy(): aabb must have "
+                                        "lower <= upper, got lower (0, 2) upper (1, 1)"));
+    }
+    try {
+        tree.moveProxy(id, {{0, -inf}, {1, 1}});
+        ADD_FAILURE() << "no throw";
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("physics::DynamicTree::moveProxy(): aabb must be finite, "
+                                        "got lower (0, -inf) upper (1, 1)"));
     }
     // The failed calls left the tree as it was.
     EXPECT_EQ(tree.proxyCount(), 1);
