@@ -540,10 +540,9 @@ void World::Impl::updateContacts(float dt) {
     // fit, the prefetches only cost their 47 instructions a contact (falling_circles_1000: -5 %
     // instructions a step and faster without them), so they are left out.
     constexpr int kPrefetchAhead = 6;
-    constexpr std::size_t kPrefetchBytes = std::size_t{1} << 20;
     const bool prefetch =
         shapes.size() * sizeof(detail::Shape) + bodies.size() * sizeof(detail::Body) >
-        kPrefetchBytes;
+        detail::kPrefetchBytes;
     const float recycle = effectiveRecycleDistance(s.def, speculativeDistance);
     // The fat-box test (about 26 instructions a contact) only where a fat box changed since it
     // last ran: in a resting pile, no proxy moves for many steps.
