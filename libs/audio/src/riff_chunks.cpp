@@ -32,7 +32,11 @@ bool is(const Id& id, std::string_view tag) { return std::memcmp(id.data(), tag.
 
 std::string idText(const Id& id) {
     if (printable(id)) {
-        return "'" + std::string(id.data(), id.size()) + "'";
+        // Appended piece by piece: GCC 12 at -O3 warns (-Wrestrict) on "'" + std::string + "'".
+        std::string text(1, '\'');
+        text.append(id.data(), id.size());
+        text += '\'';
+        return text;
     }
     std::array<char, 16> text{};
     std::snprintf(text.data(), text.size(), "0x%02x%02x%02x%02x", static_cast<unsigned char>(id[0]),
