@@ -32,8 +32,6 @@ namespace {
 // `states`: where the constraint's bodies are (unused for static sides).
 template <int N>
 void packLane(WideConstraintT<N>& w, int lane, const ContactConstraint& c, BodyState* states) {
-    w.indexA[lane] = c.indexA;
-    w.indexB[lane] = c.indexB;
     w.bodyA[lane] = c.indexA >= 0 ? states + c.indexA : &w.pad;
     w.bodyB[lane] = c.indexB >= 0 ? states + c.indexB : &w.pad;
     w.normalX[lane] = c.normal.x;
@@ -57,11 +55,8 @@ void packLane(WideConstraintT<N>& w, int lane, const ContactConstraint& c, BodyS
     w.inv12[lane] = inv.a12;
     w.inv22[lane] = inv.a22;
     w.blockSolve[lane] = c.blockSolve ? -1 : 0;
-    w.twoPoints[lane] = c.pointCount == 2 ? -1 : 0;
-    w.anyTwoPoints = 0;
-    for (int other = 0; other < N; ++other) {
-        w.anyTwoPoints |= w.twoPoints[other] != 0 ? 1 : 0;
-    }
+    const int bit = 1 << lane;
+    w.twoPointLanes = c.pointCount == 2 ? (w.twoPointLanes | bit) : (w.twoPointLanes & ~bit);
     w.separationsKnown = 0;
     for (int i = 0; i < 2; ++i) {
         // A missing second point has no mass: its impulses stay zero.
@@ -138,10 +133,18 @@ void storeLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const i
     }
 }
 
+// The state index of a lane's side at `at` (packLane()): -1 at the pad.
 template <int N>
-void unpackLane(const WideConstraintT<N>& w, int lane, ContactConstraint& c) {
-    c.indexA = w.indexA[lane];
-    c.indexB = w.indexB[lane];
+int stateIndexOf(const WideConstraintT<N>& w, const BodyState* at, const BodyState* states) {
+    return at == &w.pad ? -1 : static_cast<int>(at - states);
+}
+
+// `states`: the array the group was prepared on.
+template <int N>
+void unpackLane(const WideConstraintT<N>& w, int lane, ContactConstraint& c,
+                const BodyState* states) {
+    c.indexA = stateIndexOf(w, w.bodyA[lane], states);
+    c.indexB = stateIndexOf(w, w.bodyB[lane], states);
     c.normal = {w.normalX[lane], w.normalY[lane]};
     c.invMassA = {w.invMassAx[lane], w.invMassAy[lane]};
     c.invMassB = {w.invMassBx[lane], w.invMassBy[lane]};
@@ -174,7 +177,7 @@ void restituteLanes(std::vector<WideConstraintT<N>>& groups, std::span<const int
         const int lane = r.at % N;
         // The scalar pass on a copy of the lane, so both paths run the same code.
         ContactConstraint c;
-        unpackLane(w, lane, c);
+        unpackLane(w, lane, c, states.data());
         c.pointCount = r.pointCount;
         c.restitution = r.restitution;
         c.pressAcceleration = r.pressAcceleration;

@@ -45,8 +45,6 @@ template <int N>
 struct alignas(4 * N) WideConstraintT {
     using F = typename WideLanes<N>::F;
     using I = typename WideLanes<N>::I;
-    int indexA[N]; // BodyState index, -1: static (or an empty lane)
-    int indexB[N];
     F normalX, normalY;
     F invMassAx, invMassAy, invMassBx, invMassBy;
     F invInertiaA, invInertiaB;
@@ -58,11 +56,11 @@ struct alignas(4 * N) WideConstraintT {
     // well). Other lanes hold K = identity.
     F k11, k12, k22, inv11, inv12, inv22;
     I blockSolve;
-    I twoPoints; // all ones where the lane has a second point
     WidePointT<N> points[2];
     // Where each lane reads and writes its bodies this step (bodiesAt()), set with the rest so
     // that the passes do not work the addresses out again: a state in the step's array, or
-    // `pad` for a static side and an empty lane. Each pass resets the pad before it reads the
+    // `pad` for a static side and an empty lane (the only record of the lane's bodies: a
+    // lane's state index is its address's distance from the array's start). Each pass resets the pad before it reads the
     // lanes (it may write there), so a static side always reads a resting state.
     BodyState* bodyA[N];
     BodyState* bodyB[N];
@@ -77,13 +75,13 @@ struct alignas(4 * N) WideConstraintT {
     // packWideLane() clear it too. Warm starts do not touch it.
     F separation[2];
     int separationsKnown;
-    // Non-zero where some lane has a second point (twoPoints): the passes pick their kernel
-    // with one test of memory.
-    int anyTwoPoints;
+    // The lanes with a second point, lane k in bit k: the passes pick their kernel with one
+    // test of memory (zero: every lane has at most one point).
+    int twoPointLanes;
 };
 
 static_assert(sizeof(WidePointT<8>) % 32 == 0 && sizeof(WideConstraintT<8>) % 32 == 0 &&
-                  offsetof(WideConstraintT<8>, normalX) == 64,
+                  offsetof(WideConstraintT<8>, normalX) == 0,
               "wide constraints must be whole vectors");
 
 // The packed constraints of one step, `lanes` constraints per group.

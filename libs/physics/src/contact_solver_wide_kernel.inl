@@ -339,7 +339,7 @@ E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints,
     }
     for (int g = levelStart.front(); g < levelStart.back(); ++g) {
         const Constraint& c = constraints[static_cast<std::size_t>(g)];
-        if (c.anyTwoPoints != 0) {
+        if (c.twoPointLanes != 0) {
             warmStartGroup<2>(c);
         } else {
             warmStartGroup<1>(c);
@@ -354,7 +354,7 @@ E2D_WIDE_FN void solveGroups(std::span<Constraint> constraints, int first, int e
                              float pushMaxSpeed) {
     for (int g = first; g < end; ++g) {
         Constraint& c = constraints[static_cast<std::size_t>(g)];
-        if (c.anyTwoPoints != 0) {
+        if (c.twoPointLanes != 0) {
             solveGroup<kReversePoints, 2>(c, invH, kUseBias, pushMaxSpeed);
         } else {
             solveGroup<kReversePoints, 1>(c, invH, kUseBias, pushMaxSpeed);
@@ -455,8 +455,6 @@ E2D_WIDE_FN F softnessOf(I empty, I rigid, const Gather& in, float Softness::*fi
 E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states) {
     const F zero = splat(0.0f);
     const F one = splat(1.0f);
-    std::memcpy(c.indexA, in.indexA, sizeof c.indexA);
-    std::memcpy(c.indexB, in.indexB, sizeof c.indexB);
     bodiesAt(in.indexA, states, &c.pad, c.bodyA);
     bodiesAt(in.indexB, states, &c.pad, c.bodyB);
     // Static sides and empty lanes read the pad: at rest, as ContactBodyView{} is.
@@ -585,8 +583,7 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
     c.inv12 = select(block, -invDet * k12, zero);
     c.inv22 = select(block, invDet * k11, one);
     c.blockSolve = block | empty;
-    c.twoPoints = count == 2;
-    c.anyTwoPoints = anyLane(c.twoPoints) ? 1 : 0;
+    c.twoPointLanes = laneBits(count == 2);
     c.separationsKnown = 0;
     return laneBits(deep);
 }

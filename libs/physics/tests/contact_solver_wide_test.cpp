@@ -237,12 +237,7 @@ void expectSame(const Problem& scalar, const Problem& wide) {
 
 template <int N>
 bool onePointLanes(const WideConstraintT<N>& g) {
-    for (int lane = 0; lane < N; ++lane) {
-        if (g.twoPoints[lane] != 0) {
-            return false;
-        }
-    }
-    return true;
+    return g.twoPointLanes == 0;
 }
 
 // Random piles (randomProblem(seed, 40, 150, h, maxPoints)) solved by the scalar passes and by
@@ -440,6 +435,7 @@ void expectSameGroups(const Problem& p, const Schedule& schedule, int& pushed, i
         const Group& e = expected[g];
         const Group& a = actual[g];
         EXPECT_EQ(std::memcmp(&e, &a, offsetof(Group, bodyA)), 0) << "group " << g;
+        EXPECT_EQ(e.twoPointLanes, a.twoPointLanes) << "group " << g;
         for (int lane = 0; lane < N; ++lane) {
             for (auto side : {&Group::bodyA, &Group::bodyB}) {
                 const BodyState* want = (e.*side)[lane];
