@@ -29,9 +29,11 @@ namespace {
 
 namespace {
 
-// `states`: where the constraint's bodies are (unused for static sides).
+// `states`: where the constraint's bodies are (unused for static sides); `im`: the group's
+// impact bookkeeping.
 template <int N>
-void packLane(WideConstraintT<N>& w, int lane, const ContactConstraint& c, BodyState* states) {
+void packLane(WideConstraintT<N>& w, WideImpactT<N>& im, int lane, const ContactConstraint& c,
+              BodyState* states) {
     w.bodyA[lane] = c.indexA >= 0 ? states + c.indexA : &w.pad;
     w.bodyB[lane] = c.indexB >= 0 ? states + c.indexB : &w.pad;
     w.normalX[lane] = c.normal.x;
@@ -67,20 +69,21 @@ void packLane(WideConstraintT<N>& w, int lane, const ContactConstraint& c, BodyS
         wp.anchorBx[lane] = cp.anchorB.x;
         wp.anchorBy[lane] = cp.anchorB.y;
         wp.baseSeparation[lane] = cp.baseSeparation;
-        wp.relativeVelocity[lane] = cp.relativeVelocity;
         wp.normalImpulse[lane] = cp.normalImpulse;
         wp.tangentImpulse[lane] = cp.tangentImpulse;
         wp.maxNormalImpulse[lane] = cp.maxNormalImpulse;
         wp.normalMass[lane] = cp.normalMass;
         wp.tangentMass[lane] = cp.tangentMass;
-        wp.impactGap[lane] = cp.impactGap;
-        wp.impactSeen[lane] = cp.impactSeen ? -1 : 0;
+        im.relativeVelocity[i][lane] = cp.relativeVelocity;
+        im.impactGap[i][lane] = cp.impactGap;
+        im.impactSeen[i][lane] = cp.impactSeen ? -1 : 0;
+        w.unseenLanes[i] = cp.impactSeen ? (w.unseenLanes[i] & ~bit) : (w.unseenLanes[i] | bit);
     }
 }
 
 template <int N>
-void layoutLanes(std::vector<WideConstraintT<N>>& groups, std::vector<int>& wideStart,
-                 std::span<const int> levelStart) {
+void layoutLanes(std::vector<WideConstraintT<N>>& groups, std::vector<WideImpactT<N>>& impacts,
+                 std::vector<int>& wideStart, std::span<const int> levelStart) {
     const std::size_t levelCount = levelStart.empty() ? 0 : levelStart.size() - 1;
     wideStart.assign(levelCount + 1, 0);
     int count = 0;
@@ -90,6 +93,7 @@ void layoutLanes(std::vector<WideConstraintT<N>>& groups, std::vector<int>& wide
     }
     wideStart[levelCount] = count;
     groups.resize(static_cast<std::size_t>(count));
+    impacts.resize(static_cast<std::size_t>(count));
     // The lanes past a level's last constraint stay empty: no bodies, no mass, so every impulse
     // they compute is zero.
     for (std::size_t k = 0; k < levelCount; ++k) {
@@ -97,16 +101,18 @@ void layoutLanes(std::vector<WideConstraintT<N>>& groups, std::vector<int>& wide
         if (inLevel % N == 0) {
             continue;
         }
-        WideConstraintT<N>& w = groups[static_cast<std::size_t>(wideStart[k + 1] - 1)];
+        const auto last = static_cast<std::size_t>(wideStart[k + 1] - 1);
+        WideConstraintT<N>& w = groups[last];
         for (int lane = inLevel % N; lane < N; ++lane) {
-            packLane(w, lane, ContactConstraint{}, nullptr);
+            packLane(w, impacts[last], lane, ContactConstraint{}, nullptr);
             w.blockSolve[lane] = -1;
         }
     }
 }
 
 template <int N>
-void storeLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
+void storeLanes(const std::vector<WideConstraintT<N>>& groups,
+                const std::vector<WideImpactT<N>>& impacts, std::span<const int> wideStart,
                 std::span<ContactConstraint> constraints, std::span<const int> levelOrder,
                 std::span<const int> levelStart) {
     const std::size_t levelCount = levelStart.empty() ? 0 : levelStart.size() - 1;
@@ -115,18 +121,19 @@ void storeLanes(const std::vector<WideConstraintT<N>>& groups, std::span<const i
         int g = wideStart[k];
         for (int first = levelStart[k]; first < end; first += N, ++g) {
             const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
+            const WideImpactT<N>& im = impacts[static_cast<std::size_t>(g)];
             for (int lane = 0; lane < N && first + lane < end; ++lane) {
                 ContactConstraint& c = constraints[static_cast<std::size_t>(
                     levelOrder[static_cast<std::size_t>(first + lane)])];
                 for (int i = 0; i < c.pointCount; ++i) {
                     ContactConstraintPoint& cp = c.points[i];
                     const WidePointT<N>& wp = w.points[i];
-                    cp.relativeVelocity = wp.relativeVelocity[lane];
+                    cp.relativeVelocity = im.relativeVelocity[i][lane];
                     cp.normalImpulse = wp.normalImpulse[lane];
                     cp.tangentImpulse = wp.tangentImpulse[lane];
                     cp.maxNormalImpulse = wp.maxNormalImpulse[lane];
-                    cp.impactGap = wp.impactGap[lane];
-                    cp.impactSeen = wp.impactSeen[lane] != 0;
+                    cp.impactGap = im.impactGap[i][lane];
+                    cp.impactSeen = im.impactSeen[i][lane] != 0;
                 }
             }
         }
@@ -139,10 +146,10 @@ int stateIndexOf(const WideConstraintT<N>& w, const BodyState* at, const BodySta
     return at == &w.pad ? -1 : static_cast<int>(at - states);
 }
 
-// `states`: the array the group was prepared on.
+// `states`: the array the group was prepared on; `im`: the group's impact bookkeeping.
 template <int N>
-void unpackLane(const WideConstraintT<N>& w, int lane, ContactConstraint& c,
-                const BodyState* states) {
+void unpackLane(const WideConstraintT<N>& w, const WideImpactT<N>& im, int lane,
+                ContactConstraint& c, const BodyState* states) {
     c.indexA = stateIndexOf(w, w.bodyA[lane], states);
     c.indexB = stateIndexOf(w, w.bodyB[lane], states);
     c.normal = {w.normalX[lane], w.normalY[lane]};
@@ -156,28 +163,30 @@ void unpackLane(const WideConstraintT<N>& w, int lane, ContactConstraint& c,
         cp.anchorA = {wp.anchorAx[lane], wp.anchorAy[lane]};
         cp.anchorB = {wp.anchorBx[lane], wp.anchorBy[lane]};
         cp.baseSeparation = wp.baseSeparation[lane];
-        cp.relativeVelocity = wp.relativeVelocity[lane];
+        cp.relativeVelocity = im.relativeVelocity[i][lane];
         cp.normalImpulse = wp.normalImpulse[lane];
         cp.tangentImpulse = wp.tangentImpulse[lane];
         cp.maxNormalImpulse = wp.maxNormalImpulse[lane];
         cp.normalMass = wp.normalMass[lane];
         cp.tangentMass = wp.tangentMass[lane];
-        cp.impactGap = wp.impactGap[lane];
-        cp.impactSeen = wp.impactSeen[lane] != 0;
+        cp.impactGap = im.impactGap[i][lane];
+        cp.impactSeen = im.impactSeen[i][lane] != 0;
     }
 }
 
 template <int N>
-void restituteLanes(std::vector<WideConstraintT<N>>& groups, std::span<const int> wideStart,
+void restituteLanes(std::vector<WideConstraintT<N>>& groups,
+                    const std::vector<WideImpactT<N>>& impacts, std::span<const int> wideStart,
                     std::span<const WideRestitution> list, std::span<BodyState> states,
                     float threshold, float h) {
     for (const WideRestitution& r : list) {
-        WideConstraintT<N>& w = groups[static_cast<std::size_t>(
-            wideStart[static_cast<std::size_t>(r.level)] + r.at / N)];
+        const auto g =
+            static_cast<std::size_t>(wideStart[static_cast<std::size_t>(r.level)] + r.at / N);
+        WideConstraintT<N>& w = groups[g];
         const int lane = r.at % N;
         // The scalar pass on a copy of the lane, so both paths run the same code.
         ContactConstraint c;
-        unpackLane(w, lane, c, states.data());
+        unpackLane(w, impacts[g], lane, c, states.data());
         c.pointCount = r.pointCount;
         c.restitution = r.restitution;
         c.pressAcceleration = r.pressAcceleration;
@@ -194,9 +203,11 @@ void restituteLanes(std::vector<WideConstraintT<N>>& groups, std::span<const int
 void applyRestitutionWide(WideContacts& wide, std::span<const WideRestitution> list,
                           std::span<BodyState> states, float threshold, float h) {
     if (wide.lanes == 8) {
-        restituteLanes(wide.constraints8, wide.levelStart, list, states, threshold, h);
+        restituteLanes(wide.constraints8, wide.impacts8, wide.levelStart, list, states, threshold,
+                       h);
     } else {
-        restituteLanes(wide.constraints4, wide.levelStart, list, states, threshold, h);
+        restituteLanes(wide.constraints4, wide.impacts4, wide.levelStart, list, states, threshold,
+                       h);
     }
 }
 
@@ -216,9 +227,9 @@ void layoutWide(WideContacts& wide, std::span<const int> levelStart, int lanes) 
     wide.lanes = 4;
 #endif
     if (wide.lanes == 8) {
-        layoutLanes(wide.constraints8, wide.levelStart, levelStart);
+        layoutLanes(wide.constraints8, wide.impacts8, wide.levelStart, levelStart);
     } else {
-        layoutLanes(wide.constraints4, wide.levelStart, levelStart);
+        layoutLanes(wide.constraints4, wide.impacts4, wide.levelStart, levelStart);
     }
 }
 
@@ -226,23 +237,24 @@ void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint
                   std::span<BodyState> states) {
     const int first = wide.levelStart[static_cast<std::size_t>(level)];
     if (wide.lanes == 8) {
-        packLane(wide.constraints8[static_cast<std::size_t>(first + at / 8)], at % 8, c,
-                 states.data());
+        const auto g = static_cast<std::size_t>(first + at / 8);
+        packLane(wide.constraints8[g], wide.impacts8[g], at % 8, c, states.data());
     } else {
-        packLane(wide.constraints4[static_cast<std::size_t>(first + at / 4)], at % 4, c,
-                 states.data());
+        const auto g = static_cast<std::size_t>(first + at / 4);
+        packLane(wide.constraints4[g], wide.impacts4[g], at % 4, c, states.data());
     }
 }
 
-int hitLanes(const WideConstraintT<4>& group, float threshold) {
-    return lanes4::hitLanes(group, threshold);
+int hitLanes(const WideConstraintT<4>& group, const WideImpactT<4>& impact, float threshold) {
+    return lanes4::hitLanes(group, impact, threshold);
 }
 
-int hitLanes(const WideConstraintT<8>& group, float threshold) {
+int hitLanes(const WideConstraintT<8>& group, const WideImpactT<8>& impact, float threshold) {
 #if defined(E2D_HAS_WIDE8)
-    return lanes8::hitLanes(group, threshold);
+    return lanes8::hitLanes(group, impact, threshold);
 #else
     (void)group; // unreachable, as prepareWideGroup() below
+    (void)impact;
     (void)threshold;
     std::abort();
 #endif
@@ -250,15 +262,15 @@ int hitLanes(const WideConstraintT<8>& group, float threshold) {
 
 int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<4>& in,
                      std::span<BodyState> states) {
-    return lanes4::prepareGroup(in, wide.constraints4[static_cast<std::size_t>(group)],
-                                states.data());
+    const auto g = static_cast<std::size_t>(group);
+    return lanes4::prepareGroup(in, wide.constraints4[g], wide.impacts4[g], states.data());
 }
 
 int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<8>& in,
                      std::span<BodyState> states) {
 #if defined(E2D_HAS_WIDE8)
-    return lanes8::prepareGroup(in, wide.constraints8[static_cast<std::size_t>(group)],
-                                states.data());
+    const auto g = static_cast<std::size_t>(group);
+    return lanes8::prepareGroup(in, wide.constraints8[g], wide.impacts8[g], states.data());
 #else
     // Unreachable: without AVX2 kernels layoutWide() never makes eight-lane groups.
     (void)wide;
@@ -287,9 +299,11 @@ void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constrai
 void storeWide(const WideContacts& wide, std::span<ContactConstraint> constraints,
                std::span<const int> levelOrder, std::span<const int> levelStart) {
     if (wide.lanes == 8) {
-        storeLanes(wide.constraints8, wide.levelStart, constraints, levelOrder, levelStart);
+        storeLanes(wide.constraints8, wide.impacts8, wide.levelStart, constraints, levelOrder,
+                   levelStart);
     } else {
-        storeLanes(wide.constraints4, wide.levelStart, constraints, levelOrder, levelStart);
+        storeLanes(wide.constraints4, wide.impacts4, wide.levelStart, constraints, levelOrder,
+                   levelStart);
     }
 }
 
@@ -336,19 +350,21 @@ void solveLevels(WideContacts& wide, std::span<const int> levels, float invH, bo
 #if defined(E2D_HAS_WIDE8)
     if (wide.lanes == 8) {
         if (reversePoints) {
-            lanes8::solveAll<true>(wide.constraints8, levels, invH, useBias, pushMaxSpeed,
-                                   backward);
+            lanes8::solveAll<true>(wide.constraints8, wide.impacts8, levels, invH, useBias,
+                                   pushMaxSpeed, backward);
         } else {
-            lanes8::solveAll<false>(wide.constraints8, levels, invH, useBias, pushMaxSpeed,
-                                    backward);
+            lanes8::solveAll<false>(wide.constraints8, wide.impacts8, levels, invH, useBias,
+                                    pushMaxSpeed, backward);
         }
         return;
     }
 #endif
     if (reversePoints) {
-        lanes4::solveAll<true>(wide.constraints4, levels, invH, useBias, pushMaxSpeed, backward);
+        lanes4::solveAll<true>(wide.constraints4, wide.impacts4, levels, invH, useBias,
+                               pushMaxSpeed, backward);
     } else {
-        lanes4::solveAll<false>(wide.constraints4, levels, invH, useBias, pushMaxSpeed, backward);
+        lanes4::solveAll<false>(wide.constraints4, wide.impacts4, levels, invH, useBias,
+                                pushMaxSpeed, backward);
     }
 }
 

@@ -34,11 +34,22 @@ struct alignas(4 * N) WidePointT {
     using I = typename WideLanes<N>::I;
     F anchorAx, anchorAy, anchorBx, anchorBy;
     F baseSeparation;
-    F relativeVelocity;
     F normalImpulse, tangentImpulse, maxNormalImpulse;
     F normalMass, tangentMass;
-    F impactGap;
-    I impactSeen; // all bits set when seen
+};
+
+// A group's impact bookkeeping (ContactConstraintPoint's relativeVelocity, impactGap and
+// impactSeen), per point: the store, restitution and hit code read it, the passes only while a
+// lane has a point not yet seen (WideConstraintT::unseenLanes), which is rare once a pile has
+// settled. Kept apart from the groups (WideContacts::impacts4 and impacts8, indexed like the
+// groups) so that the passes do not stream it.
+template <int N>
+struct alignas(4 * N) WideImpactT {
+    using F = typename WideLanes<N>::F;
+    using I = typename WideLanes<N>::I;
+    F relativeVelocity[2];
+    F impactGap[2];
+    I impactSeen[2]; // all bits set when seen
 };
 
 template <int N>
@@ -78,17 +89,26 @@ struct alignas(4 * N) WideConstraintT {
     // The lanes with a second point, lane k in bit k: the passes pick their kernel with one
     // test of memory (zero: every lane has at most one point).
     int twoPointLanes;
+    // Per point, the lanes whose point is not seen yet (not all bits of the group's
+    // WideImpactT::impactSeen), lane k in bit k: zero, the passes skip the impact bookkeeping
+    // without reading it.
+    int unseenLanes[2];
 };
 
 static_assert(sizeof(WidePointT<8>) % 32 == 0 && sizeof(WideConstraintT<8>) % 32 == 0 &&
-                  offsetof(WideConstraintT<8>, normalX) == 0,
+                  sizeof(WideImpactT<8>) % 32 == 0 && offsetof(WideConstraintT<8>, normalX) == 0,
               "wide constraints must be whole vectors");
+// What the passes stream per group of eight contacts (the large piles are memory-bound).
+static_assert(sizeof(WideConstraintT<8>) == 1504, "the wide constraint's size changed");
 
 // The packed constraints of one step, `lanes` constraints per group.
 struct WideContacts {
     int lanes = 4;
     std::vector<WideConstraintT<4>> constraints4; // lanes == 4
     std::vector<WideConstraintT<8>> constraints8; // lanes == 8
+    // Each group's impact bookkeeping, at the group's index.
+    std::vector<WideImpactT<4>> impacts4; // lanes == 4
+    std::vector<WideImpactT<8>> impacts8; // lanes == 8
     // Packed groups of level k: [levelStart[k], levelStart[k + 1]).
     std::vector<int> levelStart;
 };
@@ -228,19 +248,21 @@ void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, float inv
 
 // The lanes of `group` whose points may hit: pushed on (maxNormalImpulse > 0) while
 // approaching faster than `threshold` (-relativeVelocity > threshold); lane k in bit k.
-int hitLanes(const WideConstraintT<4>& group, float threshold);
-int hitLanes(const WideConstraintT<8>& group, float threshold);
+int hitLanes(const WideConstraintT<4>& group, const WideImpactT<4>& impact, float threshold);
+int hitLanes(const WideConstraintT<8>& group, const WideImpactT<8>& impact, float threshold);
 
 namespace wide_detail {
 
 // Stores group g's lanes, the first holding slot `first`, up to slot `end`.
 template <int N, class ManifoldOf, class Hit>
-[[gnu::always_inline]] inline void storeGroup(const std::vector<WideConstraintT<N>>& groups, int g,
+[[gnu::always_inline]] inline void storeGroup(const std::vector<WideConstraintT<N>>& groups,
+                                              const std::vector<WideImpactT<N>>& impacts, int g,
                                               int first, int end, float hitThreshold,
                                               ManifoldOf& manifoldOf, Hit& hit) {
     const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
+    const WideImpactT<N>& impact = impacts[static_cast<std::size_t>(g)];
     // The world's test for a hit, on all lanes at once (missing points have no impulse).
-    const int mayHit = hitLanes(w, hitThreshold);
+    const int mayHit = hitLanes(w, impact, hitThreshold);
     const int used = std::min(N, end - first);
     for (int lane = 0; lane < used; ++lane) {
         Manifold& m = manifoldOf(first + lane);
@@ -251,7 +273,7 @@ template <int N, class ManifoldOf, class Hit>
         if (((mayHit >> lane) & 1) != 0) {
             WideLaneHit h;
             for (int i = 0; i < 2; ++i) {
-                h.relativeVelocity[i] = w.points[i].relativeVelocity[lane];
+                h.relativeVelocity[i] = impact.relativeVelocity[i][lane];
                 h.maxNormalImpulse[i] = w.points[i].maxNormalImpulse[lane];
             }
             hit(first + lane, static_cast<const Manifold&>(m), h);
@@ -267,17 +289,18 @@ void storeWideImpulsesOfGroups(const WideContacts& wide, std::span<const int> le
                                ManifoldOf&& manifoldOf, Hit&& hit) {
     const auto at = static_cast<std::size_t>(level);
     const int end = levelStart[at + 1];
-    auto run = [&](const auto& groups, auto lanes) {
+    auto run = [&](const auto& groups, const auto& impacts, auto lanes) {
         constexpr int N = decltype(lanes)::value;
         for (int g = groupBegin; g < groupEnd; ++g) {
-            wide_detail::storeGroup<N>(groups, g, levelStart[at] + (g - wide.levelStart[at]) * N,
-                                       end, hitThreshold, manifoldOf, hit);
+            wide_detail::storeGroup<N>(groups, impacts, g,
+                                       levelStart[at] + (g - wide.levelStart[at]) * N, end,
+                                       hitThreshold, manifoldOf, hit);
         }
     };
     if (wide.lanes == 8) {
-        run(wide.constraints8, std::integral_constant<int, 8>{});
+        run(wide.constraints8, wide.impacts8, std::integral_constant<int, 8>{});
     } else {
-        run(wide.constraints4, std::integral_constant<int, 4>{});
+        run(wide.constraints4, wide.impacts4, std::integral_constant<int, 4>{});
     }
 }
 

@@ -14,6 +14,10 @@
 
 using Constraint = WideConstraintT<N>;
 using Point = WidePointT<N>;
+using Impact = WideImpactT<N>;
+
+// Every lane, lane k in bit k.
+constexpr int kAllLaneBits = (1 << N) - 1;
 
 // Where a group's lanes read and write their bodies: the addresses prepareGroup() recorded,
 // static sides and empty lanes at the group's pad, reset here before the lanes are read.
@@ -120,18 +124,21 @@ E2D_WIDE_FN Target targetOf(const Constraint& c, F s, F invH, bool useBias, floa
     return {select(speculative, s * invH, zero), one, zero};
 }
 
-// noteImpact() on the lanes of `lanes`.
-E2D_WIDE_FN void noteImpact(Point& cp, I lanes, F vn, F s, F invH, bool useBias) {
-    // Points touching when the step began start seen: in a resting pile, all of them.
-    if (allLanes(cp.impactSeen)) {
+// noteImpact() on point j's lanes of `lanes` (its bookkeeping in `im`).
+E2D_WIDE_FN void noteImpact(Constraint& c, Impact& im, int j, I lanes, F vn, F s, F invH,
+                            bool useBias) {
+    // Points touching when the step began start seen: in a resting pile, all of them (and
+    // `im` is not read).
+    if (c.unseenLanes[j] == 0) {
         return;
     }
-    I impact = lanes & ~cp.impactSeen & (vn + maxOf(s, splat(0.0f)) * invH < splat(0.0f));
+    I impact = lanes & ~im.impactSeen[j] & (vn + maxOf(s, splat(0.0f)) * invH < splat(0.0f));
     // Rare once a pile has settled: skip the stores (and the division) when no lane hits.
     if (anyLane(impact)) {
-        cp.impactSeen |= impact;
-        cp.relativeVelocity = select(impact, vn, cp.relativeVelocity);
-        cp.impactGap = select(impact, useBias ? s + vn / invH : s, cp.impactGap);
+        im.impactSeen[j] |= impact;
+        im.relativeVelocity[j] = select(impact, vn, im.relativeVelocity[j]);
+        im.impactGap[j] = select(impact, useBias ? s + vn / invH : s, im.impactGap[j]);
+        c.unseenLanes[j] = ~laneBits(im.impactSeen[j]) & kAllLaneBits;
     }
 }
 
@@ -148,13 +155,14 @@ E2D_WIDE_FN F keep(I lanes, F updated, F old) {
     }
 }
 
-// The scalar pass's normal solve of point `cp` (separation s), on the lanes of `lanes`.
+// The scalar pass's normal solve of point j (separation s), on the lanes of `lanes`.
 template <bool kMasked, bool kReread = false>
-E2D_WIDE_INLINE void solvePoint(Constraint& c, Point& cp, F s, Velocities& a, Velocities& b,
+E2D_WIDE_INLINE void solvePoint(Constraint& c, Impact& im, int j, F s, Velocities& a, Velocities& b,
                                 I lanes, F invH, bool useBias, float pushMaxSpeed) {
+    Point& cp = c.points[j];
     Target t = targetOf(c, s, invH, useBias, pushMaxSpeed);
     F vn = normalVelocityOf(cp, c, a, b);
-    noteImpact(cp, lanes, vn, s, invH, useBias);
+    noteImpact(c, im, j, lanes, vn, s, invH, useBias);
     // As in solveBlock(), where it saves instructions (measured).
     Constraint& k = kReread ? reread(c) : c;
     Point& q = kReread ? reread(cp) : cp;
@@ -179,8 +187,8 @@ E2D_WIDE_INLINE void solvePoint(Constraint& c, Point& cp, F s, Velocities& a, Ve
 // The scalar pass's block solve (solveBlock() on each point's soft right-hand side) on the
 // lanes of `lanes`; s: the points' separations.
 template <bool kMasked>
-E2D_WIDE_INLINE void solveBlock(Constraint& c, const F (&s)[2], Velocities& a, Velocities& b,
-                                I lanes, F invH, bool useBias, float pushMaxSpeed) {
+E2D_WIDE_INLINE void solveBlock(Constraint& c, Impact& im, const F (&s)[2], Velocities& a,
+                                Velocities& b, I lanes, F invH, bool useBias, float pushMaxSpeed) {
     const F zero = splat(0.0f);
     Point& cp1 = c.points[0];
     Point& cp2 = c.points[1];
@@ -188,8 +196,8 @@ E2D_WIDE_INLINE void solveBlock(Constraint& c, const F (&s)[2], Velocities& a, V
     Target t2 = targetOf(c, s[1], invH, useBias, pushMaxSpeed);
     F vn1 = normalVelocityOf(cp1, c, a, b);
     F vn2 = normalVelocityOf(cp2, c, a, b);
-    noteImpact(cp1, lanes, vn1, s[0], invH, useBias);
-    noteImpact(cp2, lanes, vn2, s[1], invH, useBias);
+    noteImpact(c, im, 0, lanes, vn1, s[0], invH, useBias);
+    noteImpact(c, im, 1, lanes, vn2, s[1], invH, useBias);
     // Read again from memory what follows reads of `c` (a memory operand each) rather than
     // keep what the velocities and separations loaded: the anchors and the normal otherwise
     // sit in stack slots (a store each).
@@ -267,7 +275,8 @@ E2D_WIDE_INLINE void solveFrictionAt(Constraint& c, Point& cp, Velocities& a, Ve
 
 // solveContacts() on one group, whose lanes have at most kPoints points.
 template <bool kReversePoints, int kPoints>
-E2D_WIDE_INLINE void solveGroup(Constraint& c, F invH, bool useBias, float pushMaxSpeed) {
+E2D_WIDE_INLINE void solveGroup(Constraint& c, Impact& im, F invH, bool useBias,
+                                float pushMaxSpeed) {
     resetPad(c);
     F s[2];
     if (c.separationsKnown != 0) {
@@ -292,7 +301,7 @@ E2D_WIDE_INLINE void solveGroup(Constraint& c, F invH, bool useBias, float pushM
     Velocities b = velocitiesOf(c.bodyB);
     const I all = ~I{};
     if constexpr (kPoints == 1) {
-        solvePoint<false, true>(c, c.points[0], s[0], a, b, all, invH, useBias, pushMaxSpeed);
+        solvePoint<false, true>(c, im, 0, s[0], a, b, all, invH, useBias, pushMaxSpeed);
     } else {
         // Lanes of well-conditioned 2-point manifolds take the block solve, the others go point
         // by point; a group is usually all one kind (a pile of boxes). Reversed, a one-point
@@ -301,17 +310,16 @@ E2D_WIDE_INLINE void solveGroup(Constraint& c, F invH, bool useBias, float pushM
         const I block = c.blockSolve;
         const int first = kReversePoints ? 1 : 0;
         if (allLanes(block)) {
-            solveBlock<false>(c, s, a, b, all, invH, useBias, pushMaxSpeed);
+            solveBlock<false>(c, im, s, a, b, all, invH, useBias, pushMaxSpeed);
         } else if (!anyLane(block)) {
-            solvePoint<false>(c, c.points[first], s[first], a, b, all, invH, useBias, pushMaxSpeed);
-            solvePoint<false>(c, c.points[1 - first], s[1 - first], a, b, all, invH, useBias,
+            solvePoint<false>(c, im, first, s[first], a, b, all, invH, useBias, pushMaxSpeed);
+            solvePoint<false>(c, im, 1 - first, s[1 - first], a, b, all, invH, useBias,
                               pushMaxSpeed);
         } else {
-            solvePoint<true>(c, c.points[first], s[first], a, b, ~block, invH, useBias,
+            solvePoint<true>(c, im, first, s[first], a, b, ~block, invH, useBias, pushMaxSpeed);
+            solvePoint<true>(c, im, 1 - first, s[1 - first], a, b, ~block, invH, useBias,
                              pushMaxSpeed);
-            solvePoint<true>(c, c.points[1 - first], s[1 - first], a, b, ~block, invH, useBias,
-                             pushMaxSpeed);
-            solveBlock<true>(c, s, a, b, block, invH, useBias, pushMaxSpeed);
+            solveBlock<true>(c, im, s, a, b, block, invH, useBias, pushMaxSpeed);
         }
     }
     if constexpr (kPoints == 2) {
@@ -349,53 +357,60 @@ E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints,
 
 // kUseBias a constant: each pass runs one kind (solve or relax), and the relax pass's targets
 // (mass scale one, impulse scale zero) then fold into the code instead of being selected.
+// impacts: the groups' impact bookkeeping, at the groups' indices.
 template <bool kReversePoints, bool kUseBias>
-E2D_WIDE_FN void solveGroups(std::span<Constraint> constraints, int first, int end, F invH,
-                             float pushMaxSpeed) {
+E2D_WIDE_FN void solveGroups(std::span<Constraint> constraints, std::span<Impact> impacts,
+                             int first, int end, F invH, float pushMaxSpeed) {
     for (int g = first; g < end; ++g) {
         Constraint& c = constraints[static_cast<std::size_t>(g)];
+        Impact& im = impacts[static_cast<std::size_t>(g)];
         if (c.twoPointLanes != 0) {
-            solveGroup<kReversePoints, 2>(c, invH, kUseBias, pushMaxSpeed);
+            solveGroup<kReversePoints, 2>(c, im, invH, kUseBias, pushMaxSpeed);
         } else {
-            solveGroup<kReversePoints, 1>(c, invH, kUseBias, pushMaxSpeed);
+            solveGroup<kReversePoints, 1>(c, im, invH, kUseBias, pushMaxSpeed);
         }
     }
 }
 
 template <bool kReversePoints, bool kUseBias>
-E2D_WIDE_FN void solveLevels(std::span<Constraint> constraints, std::span<const int> levelStart,
-                             F invH, float pushMaxSpeed, bool backward) {
+E2D_WIDE_FN void solveLevels(std::span<Constraint> constraints, std::span<Impact> impacts,
+                             std::span<const int> levelStart, F invH, float pushMaxSpeed,
+                             bool backward) {
     if (!backward) {
-        solveGroups<kReversePoints, kUseBias>(constraints, levelStart.front(), levelStart.back(),
-                                              invH, pushMaxSpeed);
+        solveGroups<kReversePoints, kUseBias>(constraints, impacts, levelStart.front(),
+                                              levelStart.back(), invH, pushMaxSpeed);
         return;
     }
     // Within a level the order does not matter; backward only reverses the levels.
     for (std::size_t k = levelStart.size() - 1; k-- > 0;) {
-        solveGroups<kReversePoints, kUseBias>(constraints, levelStart[k], levelStart[k + 1], invH,
-                                              pushMaxSpeed);
+        solveGroups<kReversePoints, kUseBias>(constraints, impacts, levelStart[k],
+                                              levelStart[k + 1], invH, pushMaxSpeed);
     }
 }
 
 template <bool kReversePoints>
-E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<const int> levelStart,
-                          float invH, bool useBias, float pushMaxSpeed, bool backward) {
+E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<Impact> impacts,
+                          std::span<const int> levelStart, float invH, bool useBias,
+                          float pushMaxSpeed, bool backward) {
     if (levelStart.size() < 2) {
         return;
     }
     const F vInvH = splat(invH);
     if (useBias) {
-        solveLevels<kReversePoints, true>(constraints, levelStart, vInvH, pushMaxSpeed, backward);
+        solveLevels<kReversePoints, true>(constraints, impacts, levelStart, vInvH, pushMaxSpeed,
+                                          backward);
     } else {
-        solveLevels<kReversePoints, false>(constraints, levelStart, vInvH, pushMaxSpeed, backward);
+        solveLevels<kReversePoints, false>(constraints, impacts, levelStart, vInvH, pushMaxSpeed,
+                                           backward);
     }
 }
 
-// The lanes of `c` that may hit (WideLaneHit), lane k in bit k.
-E2D_WIDE_FN int hitLanes(const Constraint& c, float threshold) {
+// The lanes of `c` (its impact bookkeeping in `im`) that may hit (WideLaneHit), lane k in bit k.
+E2D_WIDE_FN int hitLanes(const Constraint& c, const Impact& im, float threshold) {
     I mayHit = I{};
-    for (const Point& cp : c.points) {
-        mayHit |= (cp.maxNormalImpulse > splat(0.0f)) & (-cp.relativeVelocity > splat(threshold));
+    for (int j = 0; j < 2; ++j) {
+        mayHit |= (c.points[j].maxNormalImpulse > splat(0.0f)) &
+                  (-im.relativeVelocity[j] > splat(threshold));
     }
     return laneBits(mayHit);
 }
@@ -452,7 +467,8 @@ E2D_WIDE_FN F softnessOf(I empty, I rigid, const Gather& in, float Softness::*fi
 
 // `states`: the array the group's bodies are in. Returns the lanes isPushedApart() holds pushed
 // apart (prepareWideGroup()).
-E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states) {
+// `im`: the group's impact bookkeeping.
+E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, Impact& im, BodyState* states) {
     const F zero = splat(0.0f);
     const F one = splat(1.0f);
     bodiesAt(in.indexA, states, &c.pad, c.bodyA);
@@ -501,6 +517,10 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
             // No lane has a second point (a pile of circles): all zero, what the lines below
             // give such a point, without reading it.
             cp = Point{};
+            im.relativeVelocity[i] = zero;
+            im.impactGap[i] = zero;
+            im.impactSeen[i] = I{};
+            c.unseenLanes[i] = kAllLaneBits;
             depth[i] = zero;
             continue;
         }
@@ -532,10 +552,11 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, BodyState* states)
         F vrAy = vAy + wA * rAx;
         F vrBx = vBx + (-wB) * rBy;
         F vrBy = vBy + wB * rBx;
-        cp.relativeVelocity = select(present, nx * (vrBx - vrAx) + ny * (vrBy - vrAy), zero);
+        im.relativeVelocity[i] = select(present, nx * (vrBx - vrAx) + ny * (vrBy - vrAy), zero);
         const I seen = present & (separation <= splat(kTouchingSeparation));
-        cp.impactSeen = seen;
-        cp.impactGap = select(seen, separation, zero);
+        im.impactSeen[i] = seen;
+        im.impactGap[i] = select(seen, separation, zero);
+        c.unseenLanes[i] = ~laneBits(seen) & kAllLaneBits;
     }
 
     // prepareBlock(), on the anchors just packed.

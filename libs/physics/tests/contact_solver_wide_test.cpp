@@ -358,6 +358,15 @@ std::vector<WideConstraintT<N>>& groupsOf(WideContacts& wide) {
     }
 }
 
+template <int N>
+std::vector<WideImpactT<N>>& impactsOf(WideContacts& wide) {
+    if constexpr (N == 8) {
+        return wide.impacts8;
+    } else {
+        return wide.impacts4;
+    }
+}
+
 // The softness the world gives a contact between `a` and `b`.
 Softness softnessFor(const Problem& p, const ContactBodyView& a, const ContactBodyView& b) {
     auto rigid = [](const ContactBodyView& v) {
@@ -381,6 +390,12 @@ void expectSameGroups(const Problem& p, const Schedule& schedule, int& pushed, i
     // comparison below reads.
     for (WideConstraintT<N>& g : groupsOf<N>(gathered)) {
         std::memset(static_cast<void*>(&g), 0x5A, offsetof(WideConstraintT<N>, bodyA));
+        g.twoPointLanes = 0x5A;
+        g.unseenLanes[0] = 0x5A;
+        g.unseenLanes[1] = 0x5A;
+    }
+    for (WideImpactT<N>& im : impactsOf<N>(gathered)) {
+        std::memset(static_cast<void*>(&im), 0x5A, sizeof im);
     }
     ASSERT_EQ(reference.lanes, N);
     ASSERT_EQ(gathered.lanes, N);
@@ -436,6 +451,12 @@ void expectSameGroups(const Problem& p, const Schedule& schedule, int& pushed, i
         const Group& a = actual[g];
         EXPECT_EQ(std::memcmp(&e, &a, offsetof(Group, bodyA)), 0) << "group " << g;
         EXPECT_EQ(e.twoPointLanes, a.twoPointLanes) << "group " << g;
+        EXPECT_EQ(e.unseenLanes[0], a.unseenLanes[0]) << "group " << g;
+        EXPECT_EQ(e.unseenLanes[1], a.unseenLanes[1]) << "group " << g;
+        EXPECT_EQ(std::memcmp(&impactsOf<N>(reference)[g], &impactsOf<N>(gathered)[g],
+                              sizeof(WideImpactT<N>)),
+                  0)
+            << "group " << g;
         for (int lane = 0; lane < N; ++lane) {
             for (auto side : {&Group::bodyA, &Group::bodyB}) {
                 const BodyState* want = (e.*side)[lane];
