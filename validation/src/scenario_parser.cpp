@@ -42,8 +42,10 @@ std::string typeName(const json& value) {
                                          core::printable(message)});
 }
 
+// A key as the path names it: the empty key (valid JSON) as "", so the message still says where.
 std::string join(const std::string& path, const std::string& key) {
-    return path.empty() ? key : path + "." + key;
+    const std::string name = key.empty() ? "\"\"" : key;
+    return path.empty() ? name : path + "." + name;
 }
 
 // Edit distance (insertions, deletions, substitutions, each 1), for "did you mean".

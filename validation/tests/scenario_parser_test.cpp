@@ -77,6 +77,12 @@ TEST(ScenarioParser, RejectsUnknownFieldsWithTheirPath) {
     // A field of another shape type is unknown for this one.
     EXPECT_EQ(errorOf(scene("", R"({"type": "circle", "radius": 1, "halfExtents": [1, 1]})")),
               "bodies[3].shapes[0].halfExtents: unknown field");
+    // The empty key is valid JSON; the path still names it (the scenario fuzzer found an
+    // error message without a place).
+    EXPECT_EQ(errorOf(scene(R"(, "": 3)", R"({"type": "circle", "radius": 1})")),
+              "\"\": unknown field");
+    EXPECT_EQ(errorOf(scene("", R"({"type": "circle", "radius": 1, "": 0.2})")),
+              "bodies[3].shapes[0].\"\": unknown field");
 }
 
 TEST(ScenarioParser, RejectsWrongTypes) {
