@@ -23,4 +23,15 @@ template <class T>
     __builtin_prefetch(bytes + sizeof(T) - 1);
 }
 
+// Asks for the cache lines of the first kBytes bytes of *p (all of them where p is aligned to
+// a line; same rules as prefetchObject()).
+template <std::size_t kBytes, class T>
+[[gnu::always_inline]] inline void prefetchFirst(const T* p) {
+    static_assert(kBytes <= sizeof(T));
+    const auto* bytes = reinterpret_cast<const char*>(p);
+    for (std::size_t offset = 0; offset < kBytes; offset += 64) {
+        __builtin_prefetch(bytes + offset);
+    }
+}
+
 } // namespace e2d::physics::detail
