@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: MIT
-// Continuous collision: a fast body (or a bullet) is swept from where it started the step to
-// where the solver put it, against static shapes (bullets: also against kinematic and
-// non-bullet dynamic shapes at their end-of-step poses), and stopped at the first time of
-// impact. The next step's speculative contact then does the rest.
+// The solved bodies' final poses, then continuous collision: a fast body (or a bullet) is swept
+// from where it started the step to where the solver put it, against static shapes (bullets:
+// also against kinematic and non-bullet dynamic shapes at their end-of-step poses), and stopped
+// at the first time of impact. The next step's speculative contact then does the rest.
 #include <e2d/physics/time_of_impact.hpp>
 
+#include "body_solver.hpp"
 #include "world_impl.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <span>
 
 namespace e2d::physics {
 
@@ -25,19 +28,22 @@ Rot nlerp(Rot q1, Rot q2, float t) {
 
 } // namespace
 
-void World::Impl::solveContinuous() {
+void World::Impl::finalizeAndSweep(bool continuous) {
     // Decided from the step's own arrays (the extents and bullet flag copied at the start of
     // the step), so the bodies that stay slow, nearly all of them, never read their world slot.
     // A fast body that is no bullet is swept against static shapes only and changes its own
-    // pose only: those sweeps run on several workers. Bullets go after them, alone, against
-    // every other body's final pose. The pair filter is the game's code, called from the
-    // stepping thread only: with one set, every sweep runs here, in body order.
+    // pose only: those sweeps run on the workers, each right after its body's final pose. Bullets
+    // go after them, alone, against every other body's final pose. The pair filter is the
+    // game's code, called from the stepping thread only: with one set, every sweep runs here,
+    // in body order, after all the poses.
     const int n = static_cast<int>(sim.sims.size());
-    for (BodyType type : {BodyType::Static, BodyType::Kinematic, BodyType::Dynamic}) {
-        (void)broadPhase.tree(type); // proxies created since the pair update go in now, here
+    if (continuous) {
+        for (BodyType type : {BodyType::Static, BodyType::Kinematic, BodyType::Dynamic}) {
+            (void)broadPhase.tree(type); // proxies created since the pair update go in now, here
+        }
     }
     std::atomic<bool> bullets{false};
-    auto sweepFast = [&](int begin, int end, int /*worker*/) {
+    auto sweepFast = [&](int begin, int end) {
         bool bullet = false;
         for (int k = begin; k < end; ++k) {
             const detail::BodySim& bs = sim.sims[static_cast<std::size_t>(k)];
@@ -58,11 +64,26 @@ void World::Impl::solveContinuous() {
             bullets.store(true, std::memory_order_relaxed);
         }
     };
-    // The slow-body test is about 5 ns a body.
-    if (hooks.pairFilter) {
-        sweepFast(0, n, 0);
-    } else {
-        tasks.parallelFor(n, tasks.minRange(5), sweepFast);
+    const bool sweepHere = continuous && !hooks.pairFilter;
+    // In pieces of whole rows of eight bodies: each body goes through the same lanes of
+    // detail::finalizePositions() as in one call over all of them.
+    constexpr int kRow = 8;
+    auto piece = [&](int beginRow, int endRow, int /*worker*/) {
+        const int begin = beginRow * kRow;
+        const int end = std::min(endRow * kRow, n);
+        const auto at = static_cast<std::size_t>(begin);
+        const auto count = static_cast<std::size_t>(end - begin);
+        detail::finalizePositions(
+            std::span(sim.sims).subspan(at, count),
+            std::span<const detail::BodyState>(sim.states).subspan(at, count));
+        if (sweepHere) {
+            sweepFast(begin, end);
+        }
+    };
+    // A body's final pose and slow-body test are about 10 ns.
+    tasks.parallelFor((n + kRow - 1) / kRow, tasks.minRange(10 * kRow), piece);
+    if (continuous && !sweepHere) {
+        sweepFast(0, n);
     }
     if (bullets.load(std::memory_order_relaxed)) {
         for (int k = 0; k < n; ++k) {

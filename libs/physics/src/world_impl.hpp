@@ -177,9 +177,11 @@ struct World::Impl {
     void destroyContact(int contactIndex, bool reportEnd);
     void solve(float dt);
     void scheduleWide(int constraintCount);
-    // Time of impact for this step's fast bodies and bullets (continuous.cpp): solveContinuous()
-    // picks them from the solver arrays, sweepBody() sweeps one (index in sims).
-    void solveContinuous();
+    // The solved bodies' final poses (detail::finalizePositions()) and, if `continuous`, time of
+    // impact for this step's fast bodies and bullets (continuous.cpp), on the workers:
+    // finalizeAndSweep() picks them from the solver arrays, sweepBody() sweeps one (index in
+    // sims).
+    void finalizeAndSweep(bool continuous);
     void sweepBody(int simIndex);
     // The solved states back to the bodies, the broad-phase moves and the move events
     // (world_write_back.cpp).

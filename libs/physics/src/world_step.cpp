@@ -776,13 +776,9 @@ void World::Impl::solve(float dt) {
             projectJoints();
         }
     }
-    detail::finalizePositions(s.sims, s.states);
-
-    if (def.enableContinuous) {
-        solveContinuous();
-        if (!s.activeJoints.empty() && def.mode == SolverMode::SoftStep) {
-            reprojectJointsAfterContinuous();
-        }
+    finalizeAndSweep(def.enableContinuous);
+    if (def.enableContinuous && !s.activeJoints.empty() && def.mode == SolverMode::SoftStep) {
+        reprojectJointsAfterContinuous();
     }
 
     // Write back, move the proxies, the move events (collectMoveEvents() marks the ones
