@@ -196,6 +196,8 @@ struct Simulation {
     };
     std::vector<int> constraintContacts;
     std::vector<ConstraintBodies> constraintBodies;
+    // Per chunk of the touching contacts (World::Impl::solve()), how many it kept.
+    std::vector<int> constraintChunkKept;
     // Per BodyState: zero inverse mass and inertia (no constraint changes its velocity).
     std::vector<unsigned char> stateRigid;
     // Classic mode and rolling resistance only: the wide solver packs each constraint as it is
