@@ -177,6 +177,9 @@ struct Simulation {
         int manifoldsRecycled = 0;
     };
     std::vector<NarrowBlock> narrowBlocks;
+    // Where each block's settled touching contacts go in touchingContacts when no contact needs
+    // the serial pass (narrowBlocks.size() + 1 entries).
+    std::vector<int> narrowTouchingStart;
     std::vector<TouchingContact> blockTouching;
     std::vector<int> blockSerial;
     // Per contact slot listed in blockSerial, what the parallel pass found.
