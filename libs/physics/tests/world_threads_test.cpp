@@ -204,6 +204,27 @@ void buildRunaways(Scene& s) {
     }
 }
 
+// A row of boxes resting apart on one long ground, two of every three of which fall asleep
+// after half a second while the third stays awake: past then, the touching contacts of the
+// sleeping ones are left out of the solve in every chunk of the solver's walk over them
+// (World::Impl::solve()), which closes the chunks up in order.
+void buildHalfAsleepRow(Scene& s) {
+    constexpr int kBoxes = 1600;
+    BodyDef ground;
+    ground.position = {0.0f, -0.5f};
+    const BodyId floor = s.world.createBody(ground);
+    s.world.createShape(floor, {}, makeBox(0.5f * kBoxes + 2.0f, 0.5f));
+    for (int i = 0; i < kBoxes; ++i) {
+        BodyDef bd;
+        bd.type = BodyType::Dynamic;
+        bd.position = {static_cast<float>(i) - 0.5f * kBoxes, 0.2f};
+        bd.enableSleep = i % 3 != 0;
+        const BodyId box = s.world.createBody(bd);
+        s.world.createShape(box, {}, makeBox(0.2f, 0.2f));
+        s.bodies.push_back(box);
+    }
+}
+
 // A pyramid of unit boxes on the ground, `base` boxes wide.
 void addPyramid(Scene& s, int base) {
     addGround(s.world);
@@ -299,6 +320,7 @@ const Case kCases[] = {
     {"pyramid", buildPyramid, SolverMode::SoftStep, 12},
     {"struck_pyramid", buildStruckPyramid, SolverMode::SoftStep, 20},
     {"runaways", buildRunaways, SolverMode::SoftStep, 40},
+    {"half_asleep_row", buildHalfAsleepRow, SolverMode::SoftStep, 40},
 };
 
 TEST(WorldThreads, EveryWorkerCountAndSimdWidthGivesTheSameSteps) {
@@ -311,6 +333,20 @@ TEST(WorldThreads, EveryWorkerCountAndSimdWidthGivesTheSameSteps) {
             }
         }
     }
+}
+
+// half_asleep_row is what it says: by its last step the solver runs the awake third of the
+// boxes' contacts only, more than one chunk of the walk over the touching contacts apart.
+TEST(WorldThreads, HalfAsleepRowLeavesOutTheSleepingContacts) {
+    Scene s{World{threadedDef(2, 8)}, {}};
+    buildHalfAsleepRow(s);
+    for (int i = 0; i < 40; ++i) {
+        s.world.step(kStep);
+    }
+    const auto awake = std::count_if(s.bodies.begin(), s.bodies.end(),
+                                     [&](BodyId id) { return s.world.isAwake(id); });
+    EXPECT_EQ(awake, (s.bodies.size() + 2) / 3);
+    EXPECT_EQ(s.world.stepCounters().contactConstraints, awake);
 }
 
 // Recycling decides per contact from that contact's bodies alone: the same on every worker.
