@@ -138,16 +138,21 @@ void buildPile(Scene& s) {
     }
 }
 
+// A static ground 1 m thick whose top is y = 0, from x = -halfWidth to halfWidth.
+void addLongGround(World& world, float halfWidth) {
+    BodyDef ground;
+    ground.position = {0.0f, -0.5f};
+    const BodyId floor = world.createBody(ground);
+    world.createShape(floor, {}, makeBox(halfWidth, 0.5f));
+}
+
 // Short stacks of three boxes dropped from a little above each other onto one long ground:
 // more constraints than one block of the wide solver holds (World::Impl::scheduleWide()), so
 // the blocks are solved on several workers, and all stacks land in the same steps (hit events
 // from every block at once).
 void buildStacks(Scene& s) {
     constexpr int kStacks = 1500;
-    BodyDef ground;
-    ground.position = {0.0f, -0.5f};
-    const BodyId floor = s.world.createBody(ground);
-    s.world.createShape(floor, {}, makeBox(0.8f * kStacks + 2.0f, 0.5f));
+    addLongGround(s.world, 0.8f * kStacks + 2.0f);
     for (int i = 0; i < kStacks; ++i) {
         const float x = 1.6f * (static_cast<float>(i) - 0.5f * kStacks);
         for (int level = 0; level < 3; ++level) {
@@ -210,10 +215,7 @@ void buildRunaways(Scene& s) {
 // (World::Impl::solve()), which closes the chunks up in order.
 void buildHalfAsleepRow(Scene& s) {
     constexpr int kBoxes = 1600;
-    BodyDef ground;
-    ground.position = {0.0f, -0.5f};
-    const BodyId floor = s.world.createBody(ground);
-    s.world.createShape(floor, {}, makeBox(0.5f * kBoxes + 2.0f, 0.5f));
+    addLongGround(s.world, 0.5f * kBoxes + 2.0f);
     for (int i = 0; i < kBoxes; ++i) {
         BodyDef bd;
         bd.type = BodyType::Dynamic;
