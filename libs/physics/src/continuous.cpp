@@ -25,9 +25,10 @@ Rot nlerp(Rot q1, Rot q2, float t) {
 
 } // namespace
 
-void World::Impl::solveContinuous() {
-    // Decided from the step's own arrays (the extents and bullet flag copied at the start of
-    // the step), so the bodies that stay slow, nearly all of them, never read their world slot.
+void World::Impl::solveContinuous(bool sweeps) {
+    // Decided from the step's own arrays (the bullet flag copied at the start of the step, the
+    // fast flag set by finalizePositions()), so the bodies that stay slow, nearly all of them,
+    // never read their world slot.
     // A fast body that is no bullet is swept against static shapes only and changes its own
     // pose only: those sweeps run on several workers. Bullets go after them, alone, against
     // every other body's final pose. The pair filter is the game's code, called from the
@@ -35,6 +36,9 @@ void World::Impl::solveContinuous() {
     const int n = static_cast<int>(sim.sims.size());
     for (BodyType type : {BodyType::Static, BodyType::Kinematic, BodyType::Dynamic}) {
         (void)broadPhase.tree(type); // proxies created since the pair update go in now, here
+    }
+    if (!sweeps) {
+        return;
     }
     std::atomic<bool> bullets{false};
     auto sweepFast = [&](int begin, int end, int /*worker*/) {
@@ -45,12 +49,8 @@ void World::Impl::solveContinuous() {
                 bullet = true;
                 continue;
             }
-            // Slow enough that no shape can pass through a static one within a step: the
-            // speculative contacts already cover it (Box2D v3's rule, safety factor 0.5).
-            float travel =
-                length(bs.center - bs.center0) +
-                std::abs(sim.states[static_cast<std::size_t>(k)].deltaRotation.s) * bs.maxExtent;
-            if (travel >= 0.5f * bs.minExtent) {
+            // Slow bodies (detail::movedFast()) are left to their speculative contacts.
+            if ((bs.flags & detail::kIsFast) != 0) {
                 sweepBody(k);
             }
         }

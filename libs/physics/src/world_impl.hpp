@@ -178,8 +178,9 @@ struct World::Impl {
     void solve(float dt);
     void scheduleWide(int constraintCount);
     // Time of impact for this step's fast bodies and bullets (continuous.cpp): solveContinuous()
-    // picks them from the solver arrays, sweepBody() sweeps one (index in sims).
-    void solveContinuous();
+    // picks them from the solver arrays (kIsFast, kIsBullet; none when `sweeps` is false, as
+    // detail::finalizePositions() says), sweepBody() sweeps one (index in sims).
+    void solveContinuous(bool sweeps);
     void sweepBody(int simIndex);
     // The solved states back to the bodies, the broad-phase moves and the move events
     // (world_write_back.cpp).

@@ -776,10 +776,10 @@ void World::Impl::solve(float dt) {
             projectJoints();
         }
     }
-    detail::finalizePositions(s.sims, s.states);
+    const bool sweeps = detail::finalizePositions(s.sims, s.states);
 
     if (def.enableContinuous) {
-        solveContinuous();
+        solveContinuous(sweeps);
         if (!s.activeJoints.empty() && def.mode == SolverMode::SoftStep) {
             reprojectJointsAfterContinuous();
         }
