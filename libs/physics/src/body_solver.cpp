@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 
 #if defined(__SSE2__)
 #include <immintrin.h>
@@ -39,6 +40,12 @@ inline void integratePosition(BodyState& state, float h, SpeedCaps caps) {
     state.deltaRotation = integrateRotation(state.deltaRotation, h * state.angularVelocity);
     state.deltaPosition += h * state.linearVelocity;
 }
+
+// Body k of a loop over a block's bodies: indices[k], the indices in increasing order.
+struct IncreasingIndex {
+    std::span<const int> indices;
+    std::size_t operator()(std::size_t k) const { return static_cast<std::size_t>(indices[k]); }
+};
 
 #if defined(__SSE2__)
 
@@ -400,6 +407,38 @@ __attribute__((target("avx2"))) bool finalizePositions8(BodySim* sims, const Bod
 
 #undef E2D_TRANSPOSE4X2_PS
 
+// Whether bodies index(k) .. index(k + 7) of a loop are consecutive, index(k) + 0 .. 7: so where
+// the indices are in increasing order (IncreasingIndex) and these eight span eight places. Such
+// a group is given as a base and constant offsets, which saves about a third of an indexed
+// group's instructions (a block's islands are mostly runs of the arrays).
+template <class Index>
+[[gnu::always_inline]] inline bool consecutive8(Index index, std::size_t k) {
+    if constexpr (std::is_same_v<Index, IncreasingIndex>) {
+        return index(k + 7) == index(k) + 7;
+    }
+    return false;
+}
+
+// integrateVelocity8(), or the scalar function on each body when one is on a rare path.
+[[gnu::always_inline]] __attribute__((target("avx2"))) inline void
+integrateVelocities8(std::span<const BodySim> sims, std::span<BodyState> states,
+                     const std::size_t (&at)[8], const Caps& wide, SpeedCaps caps) {
+    if (!integrateVelocity8(sims, states, at, wide)) {
+        for (std::size_t i : at) {
+            integrateVelocity(sims[i], states[i], caps);
+        }
+    }
+}
+[[gnu::always_inline]] __attribute__((target("avx2"))) inline void
+integratePositions8(std::span<BodyState> states, const std::size_t (&at)[8], __m256 wideH,
+                    const Caps& wide, float h, SpeedCaps caps) {
+    if (!integratePosition8(states, at, wideH, wide)) {
+        for (std::size_t i : at) {
+            integratePosition(states[i], h, caps);
+        }
+    }
+}
+
 // The groups of eight of the first `count` bodies; returns how many bodies it did (a multiple
 // of eight). A group with a body on a rare path goes to the scalar functions whole, as in the
 // four-lane loops.
@@ -410,13 +449,15 @@ integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, 
     const Caps wide = caps8(caps);
     std::size_t k = 0;
     for (; k + 8 <= count; k += 8) {
+        if (consecutive8(index, k)) {
+            const std::size_t i = index(k);
+            const std::size_t at[8] = {i, i + 1, i + 2, i + 3, i + 4, i + 5, i + 6, i + 7};
+            integrateVelocities8(sims, states, at, wide, caps);
+            continue;
+        }
         const std::size_t at[8] = {index(k),     index(k + 1), index(k + 2), index(k + 3),
                                    index(k + 4), index(k + 5), index(k + 6), index(k + 7)};
-        if (!integrateVelocity8(sims, states, at, wide)) {
-            for (std::size_t i : at) {
-                integrateVelocity(sims[i], states[i], caps);
-            }
-        }
+        integrateVelocities8(sims, states, at, wide, caps);
     }
     return k;
 }
@@ -429,13 +470,15 @@ __attribute__((target("avx2"))) std::size_t integratePositions(std::span<BodySta
     const __m256 wideH = _mm256_set1_ps(h);
     std::size_t k = 0;
     for (; k + 8 <= count; k += 8) {
+        if (consecutive8(index, k)) {
+            const std::size_t i = index(k);
+            const std::size_t at[8] = {i, i + 1, i + 2, i + 3, i + 4, i + 5, i + 6, i + 7};
+            integratePositions8(states, at, wideH, wide, h, caps);
+            continue;
+        }
         const std::size_t at[8] = {index(k),     index(k + 1), index(k + 2), index(k + 3),
                                    index(k + 4), index(k + 5), index(k + 6), index(k + 7)};
-        if (!integratePosition8(states, at, wideH, wide)) {
-            for (std::size_t i : at) {
-                integratePosition(states[i], h, caps);
-            }
-        }
+        integratePositions8(states, at, wideH, wide, h, caps);
     }
     return k;
 }
@@ -565,7 +608,8 @@ void integrateBlockVelocities(std::span<const BodySim> sims, std::span<BodyState
                             states.subspan(run.start, run.length), h, maxLinearSpeed);
         return;
     }
-    integrateVelocities(sims, states, increasing, h, maxLinearSpeed);
+    integrateVelocitiesOf(sims, states, increasing.size(), IncreasingIndex{increasing},
+                          speedCaps(maxLinearSpeed, h));
 }
 
 void integrateBlockPositions(std::span<BodyState> states, std::span<const int> increasing, float h,
@@ -574,7 +618,8 @@ void integrateBlockPositions(std::span<BodyState> states, std::span<const int> i
         integratePositions(states.subspan(run.start, run.length), h, maxLinearSpeed);
         return;
     }
-    integratePositions(states, increasing, h, maxLinearSpeed);
+    integratePositionsOf(states, increasing.size(), IncreasingIndex{increasing}, h,
+                         speedCaps(maxLinearSpeed, h));
 }
 
 ContactSoftness makeContactSoftness(const SolverDef& def, float dt) {
