@@ -478,6 +478,9 @@ void World::Impl::solve(float dt) {
         // do not fit in the cache, fetch the ones a few slots ahead: the lines the solver reads
         // (Contact::kSolverBytes), not the whole contact. (Always inlined: GCC deletes a call to
         // a function that only prefetches, see prefetch.hpp.)
+        // The lanes pick their softness from these (prepareWideGroup()).
+        s.wideContacts.dynamic = softness.dynamic;
+        s.wideContacts.vsStatic = softness.vsStatic;
         constexpr int kPrefetchAhead = 16;
         const bool prefetchContacts =
             s.contacts.size() * sizeof(detail::Contact) > detail::kPrefetchBytes;
@@ -577,13 +580,9 @@ void World::Impl::solve(float dt) {
             };
             if (s.wideContacts.lanes == 8) {
                 detail::WideGatherT<8> lanes8;
-                lanes8.dynamic = softness.dynamic;
-                lanes8.vsStatic = softness.vsStatic;
                 return build(lanes8);
             }
             detail::WideGatherT<4> lanes4;
-            lanes4.dynamic = softness.dynamic;
-            lanes4.vsStatic = softness.vsStatic;
             return build(lanes4);
         };
         // applyRestitution() goes in constraint order.
