@@ -41,6 +41,13 @@ inline void integratePosition(BodyState& state, float h, SpeedCaps caps) {
     state.deltaPosition += h * state.linearVelocity;
 }
 
+// Flags sims[i] kIsFast for each bit i of `lanes` (a lane mask of finalizePositions4/8()).
+inline void flagFast(BodySim* sims, int lanes) {
+    for (auto bits = static_cast<unsigned>(lanes); bits != 0; bits &= bits - 1) {
+        sims[std::countr_zero(bits)].flags |= kIsFast;
+    }
+}
+
 // Body k of a loop over a block's bodies: indices[k], the indices in increasing order.
 struct IncreasingIndex {
     std::span<const int> indices;
@@ -383,9 +390,7 @@ __attribute__((target("avx2"))) bool finalizePositions8(BodySim* sims, const Bod
     const __m256i bullet = _mm256_set1_epi32(kIsBullet);
     const int bullets = _mm256_movemask_ps(_mm256_castsi256_ps(
         _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_castps_si256(flags), bullet), bullet)));
-    for (unsigned lanes = static_cast<unsigned>(fast); lanes != 0; lanes &= lanes - 1) {
-        sims[std::countr_zero(lanes)].flags |= kIsFast;
-    }
+    flagFast(sims, fast);
     E2D_TRANSPOSE4X2_PS(px, py, qc, qs);
     store2(&sims[0].transform.p.x, &sims[4].transform.p.x, px);
     store2(&sims[1].transform.p.x, &sims[5].transform.p.x, py);
@@ -846,9 +851,7 @@ inline bool finalizePositions4(BodySim* sims, const BodyState* states) {
     const __m128i bullet = _mm_set1_epi32(kIsBullet);
     const int bullets = _mm_movemask_ps(
         _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(flags), bullet), bullet)));
-    for (unsigned lanes = static_cast<unsigned>(fast); lanes != 0; lanes &= lanes - 1) {
-        sims[std::countr_zero(lanes)].flags |= kIsFast;
-    }
+    flagFast(sims, fast);
     _MM_TRANSPOSE4_PS(px, py, qc, qs);
     _mm_storeu_ps(&sims[0].transform.p.x, px);
     _mm_storeu_ps(&sims[1].transform.p.x, py);
