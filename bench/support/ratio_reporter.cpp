@@ -96,7 +96,7 @@ std::string RatioReporter::markdownTable(const std::string& unit, double nsPerUn
             if (it == byEngine.end() || base == byEngine.end()) {
                 out << " - |";
             } else {
-                std::snprintf(buf, sizeof buf, " %.2f |", it->second / base->second);
+                std::snprintf(buf, sizeof buf, " %.3f |", it->second / base->second);
                 out << buf;
             }
         }

@@ -28,9 +28,9 @@ public:
 
     void ReportRuns(const std::vector<Run>& reports) override;
 
-    /// The table: one row per case, one column per engine, then ratios to the baseline (and the
-    /// target columns, see RatioTargets). Times are ns per item divided by `nsPerUnit` (1e6 for
-    /// ms).
+    /// The table: one row per case, one column per engine, then ratios to the baseline, to three
+    /// decimals (a ratio at a two-decimal target shows which side it is on), and the target
+    /// columns (see RatioTargets). Times are ns per item divided by `nsPerUnit` (1e6 for ms).
     std::string markdownTable(const std::string& unit = "ns per pair",
                               double nsPerUnit = 1.0) const;
 

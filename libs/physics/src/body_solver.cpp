@@ -2,8 +2,10 @@
 #include "body_solver.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 
 #if defined(__SSE2__)
 #include <immintrin.h>
@@ -38,6 +40,19 @@ inline void integratePosition(BodyState& state, float h, SpeedCaps caps) {
     state.deltaRotation = integrateRotation(state.deltaRotation, h * state.angularVelocity);
     state.deltaPosition += h * state.linearVelocity;
 }
+
+// Flags sims[i] kIsFast for each bit i of `lanes` (a lane mask of finalizePositions4/8()).
+inline void flagFast(BodySim* sims, int lanes) {
+    for (auto bits = static_cast<unsigned>(lanes); bits != 0; bits &= bits - 1) {
+        sims[std::countr_zero(bits)].flags |= kIsFast;
+    }
+}
+
+// Body k of a loop over a block's bodies: indices[k], the indices in increasing order.
+struct IncreasingIndex {
+    std::span<const int> indices;
+    std::size_t operator()(std::size_t k) const { return static_cast<std::size_t>(indices[k]); }
+};
 
 #if defined(__SSE2__)
 
@@ -318,7 +333,7 @@ integratePosition8(std::span<BodyState> states, const std::size_t (&at)[8], __m2
 }
 
 // finalizePositions4() for sims[0..7] and states[0..7].
-__attribute__((target("avx2"))) void finalizePositions8(BodySim* sims, const BodyState* states) {
+__attribute__((target("avx2"))) bool finalizePositions8(BodySim* sims, const BodyState* states) {
     __m256 c0x = load2(&sims[0].center0.x, &sims[4].center0.x);
     __m256 c0y = load2(&sims[1].center0.x, &sims[5].center0.x);
     __m256 r0c = load2(&sims[2].center0.x, &sims[6].center0.x);
@@ -358,6 +373,24 @@ __attribute__((target("avx2"))) void finalizePositions8(BodySim* sims, const Bod
     __m256 residualX = _mm256_sub_ps(dpx, _mm256_sub_ps(_mm256_add_ps(rx, px), c0x));
     __m256 residualY = _mm256_sub_ps(dpy, _mm256_sub_ps(_mm256_add_ps(ry, py), c0y));
 
+    // movedFast(), and the bullets: rows maxExtent, minExtent, bodyIndex, flags.
+    __m256 maxExtent = load2(&sims[0].maxExtent, &sims[4].maxExtent);
+    __m256 minExtent = load2(&sims[1].maxExtent, &sims[5].maxExtent);
+    __m256 bodyIndex = load2(&sims[2].maxExtent, &sims[6].maxExtent);
+    __m256 flags = load2(&sims[3].maxExtent, &sims[7].maxExtent);
+    E2D_TRANSPOSE4X2_PS(maxExtent, minExtent, bodyIndex, flags);
+    const __m256 dx = _mm256_sub_ps(cx, c0x);
+    const __m256 dy = _mm256_sub_ps(cy, c0y);
+    const __m256 turn = _mm256_and_ps(drs, _mm256_castsi256_ps(_mm256_set1_epi32(0x7FFFFFFF)));
+    const __m256 travel =
+        _mm256_add_ps(_mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy))),
+                      _mm256_mul_ps(turn, maxExtent));
+    const int fast = _mm256_movemask_ps(
+        _mm256_cmp_ps(travel, _mm256_mul_ps(_mm256_set1_ps(0.5f), minExtent), _CMP_GE_OQ));
+    const __m256i bullet = _mm256_set1_epi32(kIsBullet);
+    const int bullets = _mm256_movemask_ps(_mm256_castsi256_ps(
+        _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_castps_si256(flags), bullet), bullet)));
+    flagFast(sims, fast);
     E2D_TRANSPOSE4X2_PS(px, py, qc, qs);
     store2(&sims[0].transform.p.x, &sims[4].transform.p.x, px);
     store2(&sims[1].transform.p.x, &sims[5].transform.p.x, py);
@@ -374,9 +407,42 @@ __attribute__((target("avx2"))) void finalizePositions8(BodySim* sims, const Bod
             _mm_storeh_pi(reinterpret_cast<__m64*>(&sim.positionResidual), halves[half]);
         }
     }
+    return (fast | bullets) != 0;
 }
 
 #undef E2D_TRANSPOSE4X2_PS
+
+// Whether bodies index(k) .. index(k + 7) of a loop are consecutive, index(k) + 0 .. 7: so where
+// the indices are in increasing order (IncreasingIndex) and these eight span eight places. Such
+// a group is given as a base and constant offsets, which saves about a third of an indexed
+// group's instructions (a block's islands are mostly runs of the arrays).
+template <class Index>
+[[gnu::always_inline]] inline bool consecutive8(Index index, std::size_t k) {
+    if constexpr (std::is_same_v<Index, IncreasingIndex>) {
+        return index(k + 7) == index(k) + 7;
+    }
+    return false;
+}
+
+// integrateVelocity8(), or the scalar function on each body when one is on a rare path.
+[[gnu::always_inline]] __attribute__((target("avx2"))) inline void
+integrateVelocities8(std::span<const BodySim> sims, std::span<BodyState> states,
+                     const std::size_t (&at)[8], const Caps& wide, SpeedCaps caps) {
+    if (!integrateVelocity8(sims, states, at, wide)) {
+        for (std::size_t i : at) {
+            integrateVelocity(sims[i], states[i], caps);
+        }
+    }
+}
+[[gnu::always_inline]] __attribute__((target("avx2"))) inline void
+integratePositions8(std::span<BodyState> states, const std::size_t (&at)[8], __m256 wideH,
+                    const Caps& wide, float h, SpeedCaps caps) {
+    if (!integratePosition8(states, at, wideH, wide)) {
+        for (std::size_t i : at) {
+            integratePosition(states[i], h, caps);
+        }
+    }
+}
 
 // The groups of eight of the first `count` bodies; returns how many bodies it did (a multiple
 // of eight). A group with a body on a rare path goes to the scalar functions whole, as in the
@@ -388,13 +454,15 @@ integrateVelocities(std::span<const BodySim> sims, std::span<BodyState> states, 
     const Caps wide = caps8(caps);
     std::size_t k = 0;
     for (; k + 8 <= count; k += 8) {
+        if (consecutive8(index, k)) {
+            const std::size_t i = index(k);
+            const std::size_t at[8] = {i, i + 1, i + 2, i + 3, i + 4, i + 5, i + 6, i + 7};
+            integrateVelocities8(sims, states, at, wide, caps);
+            continue;
+        }
         const std::size_t at[8] = {index(k),     index(k + 1), index(k + 2), index(k + 3),
                                    index(k + 4), index(k + 5), index(k + 6), index(k + 7)};
-        if (!integrateVelocity8(sims, states, at, wide)) {
-            for (std::size_t i : at) {
-                integrateVelocity(sims[i], states[i], caps);
-            }
-        }
+        integrateVelocities8(sims, states, at, wide, caps);
     }
     return k;
 }
@@ -407,13 +475,15 @@ __attribute__((target("avx2"))) std::size_t integratePositions(std::span<BodySta
     const __m256 wideH = _mm256_set1_ps(h);
     std::size_t k = 0;
     for (; k + 8 <= count; k += 8) {
+        if (consecutive8(index, k)) {
+            const std::size_t i = index(k);
+            const std::size_t at[8] = {i, i + 1, i + 2, i + 3, i + 4, i + 5, i + 6, i + 7};
+            integratePositions8(states, at, wideH, wide, h, caps);
+            continue;
+        }
         const std::size_t at[8] = {index(k),     index(k + 1), index(k + 2), index(k + 3),
                                    index(k + 4), index(k + 5), index(k + 6), index(k + 7)};
-        if (!integratePosition8(states, at, wideH, wide)) {
-            for (std::size_t i : at) {
-                integratePosition(states[i], h, caps);
-            }
-        }
+        integratePositions8(states, at, wideH, wide, h, caps);
     }
     return k;
 }
@@ -543,7 +613,8 @@ void integrateBlockVelocities(std::span<const BodySim> sims, std::span<BodyState
                             states.subspan(run.start, run.length), h, maxLinearSpeed);
         return;
     }
-    integrateVelocities(sims, states, increasing, h, maxLinearSpeed);
+    integrateVelocitiesOf(sims, states, increasing.size(), IncreasingIndex{increasing},
+                          speedCaps(maxLinearSpeed, h));
 }
 
 void integrateBlockPositions(std::span<BodyState> states, std::span<const int> increasing, float h,
@@ -552,7 +623,8 @@ void integrateBlockPositions(std::span<BodyState> states, std::span<const int> i
         integratePositions(states.subspan(run.start, run.length), h, maxLinearSpeed);
         return;
     }
-    integratePositions(states, increasing, h, maxLinearSpeed);
+    integratePositionsOf(states, increasing.size(), IncreasingIndex{increasing}, h,
+                         speedCaps(maxLinearSpeed, h));
 }
 
 ContactSoftness makeContactSoftness(const SolverDef& def, float dt) {
@@ -693,7 +765,7 @@ void solveClassic(const SolverStep& step) {
 
 namespace {
 
-inline void finalizePosition(BodySim& sim, const BodyState& state) {
+inline bool finalizePosition(BodySim& sim, const BodyState& state) {
     sim.center = sim.center0 + state.deltaPosition;
     Rot q = mulRot(state.deltaRotation, sim.rotation0);
     float mag = std::sqrt(q.c * q.c + q.s * q.s);
@@ -707,6 +779,10 @@ inline void finalizePosition(BodySim& sim, const BodyState& state) {
     // matters) the two centres subtract exactly.
     const Vec2 next = transformPoint(sim.transform, sim.localCenter);
     sim.positionResidual = state.deltaPosition - (next - sim.center0);
+    if (movedFast(sim.center - sim.center0, state.deltaRotation.s, sim.maxExtent, sim.minExtent)) {
+        sim.flags |= kIsFast;
+    }
+    return (sim.flags & (kIsFast | kIsBullet)) != 0;
 }
 
 #if defined(__SSE2__)
@@ -721,7 +797,7 @@ static_assert(offsetof(BodySim, transform) == 0 && offsetof(BodySim, center) == 
 // order (no FMA on the SSE2 baseline; the normalisation divides every lane and keeps the
 // quotient where mag > 0), so the results are bit for bit its own. About a third of its
 // instructions a body.
-inline void finalizePositions4(BodySim* sims, const BodyState* states) {
+inline bool finalizePositions4(BodySim* sims, const BodyState* states) {
     __m128 c0x = _mm_loadu_ps(&sims[0].center0.x);
     __m128 c0y = _mm_loadu_ps(&sims[1].center0.x);
     __m128 r0c = _mm_loadu_ps(&sims[2].center0.x);
@@ -758,6 +834,24 @@ inline void finalizePositions4(BodySim* sims, const BodyState* states) {
     __m128 residualX = _mm_sub_ps(dpx, _mm_sub_ps(_mm_add_ps(rx, px), c0x));
     __m128 residualY = _mm_sub_ps(dpy, _mm_sub_ps(_mm_add_ps(ry, py), c0y));
 
+    // movedFast(), and the bullets: rows maxExtent, minExtent, bodyIndex, flags.
+    __m128 maxExtent = _mm_loadu_ps(&sims[0].maxExtent);
+    __m128 minExtent = _mm_loadu_ps(&sims[1].maxExtent);
+    __m128 bodyIndex = _mm_loadu_ps(&sims[2].maxExtent);
+    __m128 flags = _mm_loadu_ps(&sims[3].maxExtent);
+    _MM_TRANSPOSE4_PS(maxExtent, minExtent, bodyIndex, flags);
+    const __m128 dx = _mm_sub_ps(cx, c0x);
+    const __m128 dy = _mm_sub_ps(cy, c0y);
+    const __m128 turn = _mm_and_ps(drs, _mm_castsi128_ps(_mm_set1_epi32(0x7FFFFFFF)));
+    const __m128 travel =
+        _mm_add_ps(_mm_sqrt_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy))),
+                   _mm_mul_ps(turn, maxExtent));
+    const int fast =
+        _mm_movemask_ps(_mm_cmpge_ps(travel, _mm_mul_ps(_mm_set1_ps(0.5f), minExtent)));
+    const __m128i bullet = _mm_set1_epi32(kIsBullet);
+    const int bullets = _mm_movemask_ps(
+        _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(flags), bullet), bullet)));
+    flagFast(sims, fast);
     _MM_TRANSPOSE4_PS(px, py, qc, qs);
     _mm_storeu_ps(&sims[0].transform.p.x, px);
     _mm_storeu_ps(&sims[1].transform.p.x, py);
@@ -769,29 +863,32 @@ inline void finalizePositions4(BodySim* sims, const BodyState* states) {
         _mm_storel_pi(reinterpret_cast<__m64*>(&sims[k].center), rows[k]);
         _mm_storeh_pi(reinterpret_cast<__m64*>(&sims[k].positionResidual), rows[k]);
     }
+    return (fast | bullets) != 0;
 }
 
 #endif
 
 } // namespace
 
-void finalizePositions(std::span<BodySim> sims, std::span<const BodyState> states) {
+bool finalizePositions(std::span<BodySim> sims, std::span<const BodyState> states) {
+    bool sweeps = false;
     std::size_t i = 0;
 #if defined(__SSE2__)
 #if defined(E2D_BODY_AVX2)
     if (__builtin_cpu_supports("avx2")) {
         for (; i + 8 <= sims.size(); i += 8) {
-            avx2::finalizePositions8(&sims[i], &states[i]);
+            sweeps = avx2::finalizePositions8(&sims[i], &states[i]) || sweeps;
         }
     }
 #endif
     for (; i + 4 <= sims.size(); i += 4) {
-        finalizePositions4(&sims[i], &states[i]);
+        sweeps = finalizePositions4(&sims[i], &states[i]) || sweeps;
     }
 #endif
     for (; i < sims.size(); ++i) {
-        finalizePosition(sims[i], states[i]);
+        sweeps = finalizePosition(sims[i], states[i]) || sweeps;
     }
+    return sweeps;
 }
 
 } // namespace e2d::physics::detail

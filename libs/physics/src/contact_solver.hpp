@@ -91,6 +91,7 @@ struct ContactConstraint {
     // impulses together (solveBlock() in contact_solver_common.hpp).
     BlockMatrix blockK{};
     BlockMatrix blockInvK{};
+    float blockInvDet = 0.0f; // 1 / det blockK: blockInvK is its products with blockK's entries
     bool blockSolve = false;
     int indexA = -1; // BodyState index, -1 for a static body
     int indexB = -1;

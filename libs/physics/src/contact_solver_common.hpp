@@ -28,8 +28,8 @@ inline float effectiveMass(Vec2 axis, Vec2 rA, Vec2 rB, const ContactConstraint&
     return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
-// Sets blockK, blockInvK and blockSolve for a 2-point manifold (blockSolve false for any other).
-// K says how each point's normal impulse changes both points' normal velocities. Its condition
+// Sets blockK, blockInvK, blockInvDet and blockSolve for a 2-point manifold (blockSolve false
+// for any other). K says how each point's normal impulse changes both points' normal velocities. Its condition
 // number, estimated as k11^2 / det K, must stay below kMaxBlockConditionNumber: above it the two
 // rows are (nearly) the same constraint, e.g. a body that cannot rotate, and the block would be
 // ill-conditioned. det K must not underflow either (kMinBlockDeterminant).
@@ -56,6 +56,7 @@ inline void prepareBlock(ContactConstraint& c) {
         c.blockK = {k11, k12, k22};
         float invDet = 1.0f / det;
         c.blockInvK = {invDet * k22, -invDet * k12, invDet * k11};
+        c.blockInvDet = invDet;
     }
 }
 

@@ -30,12 +30,15 @@ namespace {
 namespace {
 
 // `states`: where the constraint's bodies are (unused for static sides); `im`: the group's
-// impact bookkeeping.
+// side data.
 template <int N>
 void packLane(WideConstraintT<N>& w, WideImpactT<N>& im, int lane, const ContactConstraint& c,
               BodyState* states) {
-    w.bodyA[lane] = c.indexA >= 0 ? states + c.indexA : &w.pad;
-    w.bodyB[lane] = c.indexB >= 0 ? states + c.indexB : &w.pad;
+    const int bit = 1 << lane;
+    w.bodyA[lane] = c.indexA >= 0 ? states + c.indexA : &im.pad;
+    w.bodyB[lane] = c.indexB >= 0 ? states + c.indexB : &im.pad;
+    const bool pad = c.indexA < 0 || c.indexB < 0;
+    w.padLanes = pad ? (w.padLanes | bit) : (w.padLanes & ~bit);
     w.normalX[lane] = c.normal.x;
     w.normalY[lane] = c.normal.y;
     w.invMassAx[lane] = c.invMassA.x;
@@ -45,19 +48,19 @@ void packLane(WideConstraintT<N>& w, WideImpactT<N>& im, int lane, const Contact
     w.invInertiaA[lane] = c.invInertiaA;
     w.invInertiaB[lane] = c.invInertiaB;
     w.friction[lane] = c.friction;
-    w.biasRate[lane] = c.softness.biasRate;
-    w.massScale[lane] = c.softness.massScale;
-    w.impulseScale[lane] = c.softness.impulseScale;
+    // The world's choice of softness (packWideLane()): vsStatic against a rigid side.
+    auto rigid = [](Vec2 invMass, float invInertia) {
+        return invMass.x == 0.0f && invMass.y == 0.0f && invInertia == 0.0f;
+    };
+    const bool rigidLane = rigid(c.invMassA, c.invInertiaA) || rigid(c.invMassB, c.invInertiaB);
+    w.rigidLanes = rigidLane ? (w.rigidLanes | bit) : (w.rigidLanes & ~bit);
     const BlockMatrix k = c.blockSolve ? c.blockK : BlockMatrix{1.0f, 0.0f, 1.0f};
-    const BlockMatrix inv = c.blockSolve ? c.blockInvK : BlockMatrix{1.0f, 0.0f, 1.0f};
     w.k11[lane] = k.a11;
     w.k12[lane] = k.a12;
     w.k22[lane] = k.a22;
-    w.inv11[lane] = inv.a11;
-    w.inv12[lane] = inv.a12;
-    w.inv22[lane] = inv.a22;
-    w.blockSolve[lane] = c.blockSolve ? -1 : 0;
-    const int bit = 1 << lane;
+    // prepareBlock()'s 1 / det K, whose products with K's entries are blockInvK.
+    w.invDet[lane] = c.blockSolve ? c.blockInvDet : 1.0f;
+    w.blockLanes = c.blockSolve ? (w.blockLanes | bit) : (w.blockLanes & ~bit);
     w.twoPointLanes = c.pointCount == 2 ? (w.twoPointLanes | bit) : (w.twoPointLanes & ~bit);
     w.separationsKnown = 0;
     for (int i = 0; i < 2; ++i) {
@@ -105,7 +108,7 @@ void layoutLanes(std::vector<WideConstraintT<N>>& groups, std::vector<WideImpact
         WideConstraintT<N>& w = groups[last];
         for (int lane = inLevel % N; lane < N; ++lane) {
             packLane(w, impacts[last], lane, ContactConstraint{}, nullptr);
-            w.blockSolve[lane] = -1;
+            w.blockLanes |= 1 << lane;
         }
     }
 }
@@ -140,18 +143,18 @@ void storeLanes(const std::vector<WideConstraintT<N>>& groups,
     }
 }
 
-// The state index of a lane's side at `at` (packLane()): -1 at the pad.
+// The state index of a lane's side at `at` (packLane()): -1 at the pad (in `im`).
 template <int N>
-int stateIndexOf(const WideConstraintT<N>& w, const BodyState* at, const BodyState* states) {
-    return at == &w.pad ? -1 : static_cast<int>(at - states);
+int stateIndexOf(const WideImpactT<N>& im, const BodyState* at, const BodyState* states) {
+    return at == &im.pad ? -1 : static_cast<int>(at - states);
 }
 
-// `states`: the array the group was prepared on; `im`: the group's impact bookkeeping.
+// `states`: the array the group was prepared on; `im`: the group's side data.
 template <int N>
 void unpackLane(const WideConstraintT<N>& w, const WideImpactT<N>& im, int lane,
                 ContactConstraint& c, const BodyState* states) {
-    c.indexA = stateIndexOf(w, w.bodyA[lane], states);
-    c.indexB = stateIndexOf(w, w.bodyB[lane], states);
+    c.indexA = stateIndexOf(im, w.bodyA[lane], states);
+    c.indexB = stateIndexOf(im, w.bodyB[lane], states);
     c.normal = {w.normalX[lane], w.normalY[lane]};
     c.invMassA = {w.invMassAx[lane], w.invMassAy[lane]};
     c.invMassB = {w.invMassBx[lane], w.invMassBy[lane]};
@@ -263,14 +266,16 @@ int hitLanes(const WideConstraintT<8>& group, const WideImpactT<8>& impact, floa
 int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<4>& in,
                      std::span<BodyState> states) {
     const auto g = static_cast<std::size_t>(group);
-    return lanes4::prepareGroup(in, wide.constraints4[g], wide.impacts4[g], states.data());
+    return lanes4::prepareGroup(in, wide.constraints4[g], wide.impacts4[g], states.data(),
+                                wide.dynamic, wide.vsStatic);
 }
 
 int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<8>& in,
                      std::span<BodyState> states) {
 #if defined(E2D_HAS_WIDE8)
     const auto g = static_cast<std::size_t>(group);
-    return lanes8::prepareGroup(in, wide.constraints8[g], wide.impacts8[g], states.data());
+    return lanes8::prepareGroup(in, wide.constraints8[g], wide.impacts8[g], states.data(),
+                                wide.dynamic, wide.vsStatic);
 #else
     // Unreachable: without AVX2 kernels layoutWide() never makes eight-lane groups.
     (void)wide;
@@ -338,11 +343,11 @@ namespace {
 void warmStartLevels(const WideContacts& wide, std::span<const int> levels) {
 #if defined(E2D_HAS_WIDE8)
     if (wide.lanes == 8) {
-        lanes8::warmStartAll(wide.constraints8, levels);
+        lanes8::warmStartAll(wide.constraints8, wide.impacts8, levels);
         return;
     }
 #endif
-    lanes4::warmStartAll(wide.constraints4, levels);
+    lanes4::warmStartAll(wide.constraints4, wide.impacts4, levels);
 }
 
 void solveLevels(WideContacts& wide, std::span<const int> levels, float invH, bool useBias,
@@ -351,20 +356,20 @@ void solveLevels(WideContacts& wide, std::span<const int> levels, float invH, bo
     if (wide.lanes == 8) {
         if (reversePoints) {
             lanes8::solveAll<true>(wide.constraints8, wide.impacts8, levels, invH, useBias,
-                                   pushMaxSpeed, backward);
+                                   pushMaxSpeed, backward, wide.dynamic, wide.vsStatic);
         } else {
             lanes8::solveAll<false>(wide.constraints8, wide.impacts8, levels, invH, useBias,
-                                    pushMaxSpeed, backward);
+                                    pushMaxSpeed, backward, wide.dynamic, wide.vsStatic);
         }
         return;
     }
 #endif
     if (reversePoints) {
         lanes4::solveAll<true>(wide.constraints4, wide.impacts4, levels, invH, useBias,
-                               pushMaxSpeed, backward);
+                               pushMaxSpeed, backward, wide.dynamic, wide.vsStatic);
     } else {
         lanes4::solveAll<false>(wide.constraints4, wide.impacts4, levels, invH, useBias,
-                                pushMaxSpeed, backward);
+                                pushMaxSpeed, backward, wide.dynamic, wide.vsStatic);
     }
 }
 

@@ -38,11 +38,15 @@ struct alignas(4 * N) WidePointT {
     F normalMass, tangentMass;
 };
 
-// A group's impact bookkeeping (ContactConstraintPoint's relativeVelocity, impactGap and
-// impactSeen), per point: the store, restitution and hit code read it, the passes only while a
-// lane has a point not yet seen (WideConstraintT::unseenLanes), which is rare once a pile has
-// settled. Kept apart from the groups (WideContacts::impacts4 and impacts8, indexed like the
-// groups) so that the passes do not stream it.
+// What a group's passes rarely touch, kept apart from the groups (WideContacts::impacts4 and
+// impacts8, indexed like the groups) so that the passes do not stream it:
+// - the impact bookkeeping (ContactConstraintPoint's relativeVelocity, impactGap and
+//   impactSeen), per point: the store, restitution and hit code read it, the passes only while
+//   a lane has a point not yet seen (WideConstraintT::unseenLanes), which is rare once a pile
+//   has settled;
+// - the pad, where the lanes of a static side or an empty lane read and write their body
+//   (WideConstraintT::bodyA and bodyB): only groups with such lanes touch it
+//   (WideConstraintT::padLanes), a pile's few ground contacts and each level's last group.
 template <int N>
 struct alignas(4 * N) WideImpactT {
     using F = typename WideLanes<N>::F;
@@ -50,32 +54,32 @@ struct alignas(4 * N) WideImpactT {
     F relativeVelocity[2];
     F impactGap[2];
     I impactSeen[2]; // all bits set when seen
+    mutable BodyState pad;
 };
 
+// Aligned to cache lines: a group of eight is twenty lines, of four ten.
 template <int N>
-struct alignas(4 * N) WideConstraintT {
+struct alignas(64) WideConstraintT {
     using F = typename WideLanes<N>::F;
     using I = typename WideLanes<N>::I;
     F normalX, normalY;
     F invMassAx, invMassAy, invMassBx, invMassBy;
     F invInertiaA, invInertiaB;
     F friction;
-    F biasRate, massScale, impulseScale;
-    // The block matrix K of a 2-point manifold and its inverse (ContactConstraint's blockK and
-    // blockInvK); blockSolve lanes are all ones, empty lanes too (their block gives zero
-    // impulses, and a group of block constraints then never runs the point-by-point solve as
-    // well). Other lanes hold K = identity.
-    F k11, k12, k22, inv11, inv12, inv22;
-    I blockSolve;
+    // The block matrix K of a 2-point manifold (ContactConstraint's blockK) and 1 / det K: the
+    // passes work K's inverse out from them as prepareBlock() does, bit for bit (a few
+    // multiplies a group cost less than streaming two more vectors). Lanes outside blockLanes
+    // hold K = identity.
+    F k11, k12, k22, invDet;
     WidePointT<N> points[2];
     // Where each lane reads and writes its bodies this step (bodiesAt()), set with the rest so
-    // that the passes do not work the addresses out again: a state in the step's array, or
-    // `pad` for a static side and an empty lane (the only record of the lane's bodies: a
-    // lane's state index is its address's distance from the array's start). Each pass resets the pad before it reads the
-    // lanes (it may write there), so a static side always reads a resting state.
+    // that the passes do not work the addresses out again: a state in the step's array, or the
+    // group's pad (WideImpactT::pad) for a static side and an empty lane (the only record of
+    // the lane's bodies: a lane's state index is its address's distance from the array's
+    // start). Each pass resets the pad before it reads the lanes (it may write there), so a
+    // static side always reads a resting state.
     BodyState* bodyA[N];
     BodyState* bodyB[N];
-    mutable BodyState pad;
     // The points' separations as a relax pass (useBias false) found them, for the passes up
     // to the next biased one to use instead of working them out again. Positions only change
     // in integratePositions(), and the soft step's sub-step (forEachSoftStepPass()) runs its
@@ -93,17 +97,36 @@ struct alignas(4 * N) WideConstraintT {
     // WideImpactT::impactSeen), lane k in bit k: zero, the passes skip the impact bookkeeping
     // without reading it.
     int unseenLanes[2];
+    // The lanes of well-conditioned 2-point manifolds, which take the block solve
+    // (ContactConstraint::blockSolve), and the empty lanes too (their block gives zero
+    // impulses, and a group of block constraints then never runs the point-by-point solve as
+    // well); lane k in bit k.
+    int blockLanes;
+    // The lanes against a rigid side (no mass, no inertia: a static side too), whose softness
+    // is WideContacts::vsStatic; the others' is WideContacts::dynamic.
+    int rigidLanes;
+    // The lanes with a side at the pad (a static side or an empty lane): zero, the passes do
+    // not touch the pad.
+    int padLanes;
 };
 
 static_assert(sizeof(WidePointT<8>) % 32 == 0 && sizeof(WideConstraintT<8>) % 32 == 0 &&
                   sizeof(WideImpactT<8>) % 32 == 0 && offsetof(WideConstraintT<8>, normalX) == 0,
               "wide constraints must be whole vectors");
-// What the passes stream per group of eight contacts (the large piles are memory-bound).
-static_assert(sizeof(WideConstraintT<8>) == 1504, "the wide constraint's size changed");
+// What the passes stream per group of eight contacts: the large piles are bound by memory
+// (reading 512 more bytes a group in the warm start alone slowed a base-100 pyramid by 8 %),
+// so what the passes can work out cheaply or rarely read is not kept here (1 504 bytes before
+// the softness, the block inverse, the block lanes and the pad came out).
+static_assert(sizeof(WideConstraintT<8>) == 1280 && sizeof(WideConstraintT<4>) % 64 == 0,
+              "the wide constraint's size changed");
 
 // The packed constraints of one step, `lanes` constraints per group.
 struct WideContacts {
     int lanes = 4;
+    // The lanes' softness (the world's choice, as makeContactSoftness() gives it): vsStatic on a
+    // group's rigidLanes, dynamic on the others.
+    Softness dynamic;
+    Softness vsStatic;
     std::vector<WideConstraintT<4>> constraints4; // lanes == 4
     std::vector<WideConstraintT<8>> constraints8; // lanes == 8
     // Each group's impact bookkeeping, at the group's index.
@@ -121,6 +144,8 @@ int bestWideLanes();
 // others.
 void layoutWide(WideContacts& wide, std::span<const int> levelStart, int lanes);
 // Puts constraint `c`, the `at`-th of level `level`, in its lane; its bodies are in `states`.
+// Its softness must be the world's choice: wide.vsStatic against a rigid side (no mass, no
+// inertia), else wide.dynamic (the lane records which).
 void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint& c,
                   std::span<BodyState> states);
 
@@ -147,10 +172,6 @@ struct WideGatherT {
     int indexA[N]; // ContactBodyView::stateIndex
     int indexB[N];
     float friction[N];
-    // The lane's softness: vsStatic where a side is rigid (no mass, no inertia: a static side
-    // too), as the world picks it; an empty lane gets Softness{}.
-    Softness dynamic;
-    Softness vsStatic;
 
     // An empty lane: no bodies, no points; it packs as ContactConstraint{} does.
     void clearLane(int lane) {
@@ -167,9 +188,10 @@ struct WideGatherT {
 
 // Prepares and packs the group of constraints `group` from the lanes of `in` (see
 // WideGatherT), bit for bit what prepareContact() and packWideLane() give one at a time, all
-// lanes at once. Their bodies are in `states` (the array the passes then run on). The lane
-// count must be wide.lanes. Returns the lanes isPushedApart() holds pushed apart (on the
-// lane's softness), lane k in bit k.
+// lanes at once; the lanes' softness is the world's choice between wide.dynamic and
+// wide.vsStatic (vsStatic where a side is rigid: no mass, no inertia). Their bodies are in
+// `states` (the array the passes then run on). The lane count must be wide.lanes. Returns the
+// lanes isPushedApart() holds pushed apart (on the lane's softness), lane k in bit k.
 int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<4>& in,
                      std::span<BodyState> states);
 int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<8>& in,
@@ -177,7 +199,8 @@ int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<8>& in,
 
 // Packs the constraints of each level, constraints[levelOrder[levelStart[k] ..
 // levelStart[k + 1])], into groups of `lanes` (the last group of a level padded with empty
-// lanes); their bodies are in `states`.
+// lanes); their bodies are in `states`, their softness wide.dynamic or wide.vsStatic (set
+// them first; see packWideLane()).
 void prepareWide(WideContacts& wide, std::span<const ContactConstraint> constraints,
                  std::span<const int> levelOrder, std::span<const int> levelStart, int lanes,
                  std::span<BodyState> states);

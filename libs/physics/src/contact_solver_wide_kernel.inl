@@ -20,14 +20,18 @@ using Impact = WideImpactT<N>;
 constexpr int kAllLaneBits = (1 << N) - 1;
 
 // Where a group's lanes read and write their bodies: the addresses prepareGroup() recorded,
-// static sides and empty lanes at the group's pad, reset here before the lanes are read.
-// One 32-byte store (the member-wise assignment takes four stores and a load).
-E2D_WIDE_INLINE void resetPad(const Constraint& c) {
+// static sides and empty lanes at the group's pad (in `im`), reset here before the lanes are
+// read when a lane uses it. One 32-byte store (the member-wise assignment takes four stores
+// and a load).
+E2D_WIDE_INLINE void resetPad(const Constraint& c, const Impact& im) {
+    if (c.padLanes == 0) {
+        return;
+    }
     const BodyState resting{};
     Float8 rows;
     static_assert(sizeof rows == sizeof resting);
     std::memcpy(&rows, &resting, sizeof rows);
-    std::memcpy(reinterpret_cast<unsigned char*>(&c.pad), &rows, sizeof rows);
+    std::memcpy(reinterpret_cast<unsigned char*>(&im.pad), &rows, sizeof rows);
 }
 
 // The same object, which the compiler can no longer tell is `x`: what is read through it is
@@ -77,8 +81,8 @@ E2D_WIDE_INLINE void separationsOf(const Constraint& c, F (&s)[2]) {
 }
 
 template <int kPoints>
-E2D_WIDE_INLINE void warmStartGroup(const Constraint& c) {
-    resetPad(c);
+E2D_WIDE_INLINE void warmStartGroup(const Constraint& c, const Impact& im) {
+    resetPad(c, im);
     Velocities a = velocitiesOf(c.bodyA);
     Velocities b = velocitiesOf(c.bodyB);
     const F nx = c.normalX;
@@ -108,18 +112,46 @@ E2D_WIDE_FN F normalVelocityOf(const Point& cp, const Constraint& c, const Veloc
     return dvx * c.normalX + dvy * c.normalY;
 }
 
+// A softness in every lane, or each lane's own. Only the biased passes read it.
+struct LaneSoftness {
+    F biasRate, massScale, impulseScale;
+};
+
+E2D_WIDE_FN LaneSoftness splatSoftness(const Softness& s) {
+    return {splat(s.biasRate), splat(s.massScale), splat(s.impulseScale)};
+}
+
+// The lanes' softness: `rigid` lanes take vsStatic's, the others dynamic's.
+E2D_WIDE_FN LaneSoftness softnessOf(I rigid, const LaneSoftness& dynamic,
+                                    const LaneSoftness& vsStatic) {
+    return {select(rigid, vsStatic.biasRate, dynamic.biasRate),
+            select(rigid, vsStatic.massScale, dynamic.massScale),
+            select(rigid, vsStatic.impulseScale, dynamic.impulseScale)};
+}
+
+// What a pass needs beyond the groups: the sub-step's 1/h and push-out speed cap, and the two
+// softnesses the groups' lanes pick from (WideContacts::dynamic and vsStatic).
+struct PassInput {
+    F invH;
+    float pushMaxSpeed;
+    LaneSoftness dynamic;
+    LaneSoftness vsStatic;
+};
+
 // A point's bias, mass scale and impulse scale, as targetOf() in contact_solver.cpp picks them.
 struct Target {
     F bias, massScale, impulseScale;
 };
 
-E2D_WIDE_FN Target targetOf(const Constraint& c, F s, F invH, bool useBias, float pushMaxSpeed) {
+E2D_WIDE_FN Target targetOf(const LaneSoftness& soft, F s, F invH, bool useBias,
+                            float pushMaxSpeed) {
     const F zero = splat(0.0f);
     const F one = splat(1.0f);
     I speculative = s > zero;
     if (useBias) {
-        return {select(speculative, s * invH, maxOf(c.biasRate * s, splat(-pushMaxSpeed))),
-                select(speculative, one, c.massScale), select(speculative, zero, c.impulseScale)};
+        return {select(speculative, s * invH, maxOf(soft.biasRate * s, splat(-pushMaxSpeed))),
+                select(speculative, one, soft.massScale),
+                select(speculative, zero, soft.impulseScale)};
     }
     return {select(speculative, s * invH, zero), one, zero};
 }
@@ -158,9 +190,10 @@ E2D_WIDE_FN F keep(I lanes, F updated, F old) {
 // The scalar pass's normal solve of point j (separation s), on the lanes of `lanes`.
 template <bool kMasked, bool kReread = false>
 E2D_WIDE_INLINE void solvePoint(Constraint& c, Impact& im, int j, F s, Velocities& a, Velocities& b,
-                                I lanes, F invH, bool useBias, float pushMaxSpeed) {
+                                I lanes, const LaneSoftness& soft, F invH, bool useBias,
+                                float pushMaxSpeed) {
     Point& cp = c.points[j];
-    Target t = targetOf(c, s, invH, useBias, pushMaxSpeed);
+    Target t = targetOf(soft, s, invH, useBias, pushMaxSpeed);
     F vn = normalVelocityOf(cp, c, a, b);
     noteImpact(c, im, j, lanes, vn, s, invH, useBias);
     // As in solveBlock(), where it saves instructions (measured).
@@ -188,12 +221,13 @@ E2D_WIDE_INLINE void solvePoint(Constraint& c, Impact& im, int j, F s, Velocitie
 // lanes of `lanes`; s: the points' separations.
 template <bool kMasked>
 E2D_WIDE_INLINE void solveBlock(Constraint& c, Impact& im, const F (&s)[2], Velocities& a,
-                                Velocities& b, I lanes, F invH, bool useBias, float pushMaxSpeed) {
+                                Velocities& b, I lanes, const LaneSoftness& soft, F invH,
+                                bool useBias, float pushMaxSpeed) {
     const F zero = splat(0.0f);
     Point& cp1 = c.points[0];
     Point& cp2 = c.points[1];
-    Target t1 = targetOf(c, s[0], invH, useBias, pushMaxSpeed);
-    Target t2 = targetOf(c, s[1], invH, useBias, pushMaxSpeed);
+    Target t1 = targetOf(soft, s[0], invH, useBias, pushMaxSpeed);
+    Target t2 = targetOf(soft, s[1], invH, useBias, pushMaxSpeed);
     F vn1 = normalVelocityOf(cp1, c, a, b);
     F vn2 = normalVelocityOf(cp2, c, a, b);
     noteImpact(c, im, 0, lanes, vn1, s[0], invH, useBias);
@@ -206,10 +240,14 @@ E2D_WIDE_INLINE void solveBlock(Constraint& c, Impact& im, const F (&s)[2], Velo
     Point& k2 = k.points[1];
     const F acc1 = k1.normalImpulse;
     const F acc2 = k2.normalImpulse;
+    // K's inverse, as prepareBlock() works it out (K = identity gives the identity).
+    const F inv11 = k.invDet * k.k22;
+    const F inv12 = -k.invDet * k.k12;
+    const F inv22 = k.invDet * k.k11;
     F r1 = t1.massScale * (vn1 + t1.bias) + t1.impulseScale * (k.k11 * acc1 + k.k12 * acc2);
     F r2 = t2.massScale * (vn2 + t2.bias) + t2.impulseScale * (k.k12 * acc1 + k.k22 * acc2);
-    F x1 = acc1 - (k.inv11 * r1 + k.inv12 * r2);
-    F x2 = acc2 - (k.inv12 * r1 + k.inv22 * r2);
+    F x1 = acc1 - (inv11 * r1 + inv12 * r2);
+    F x2 = acc2 - (inv12 * r1 + inv22 * r2);
     I okBoth = (x1 >= zero) & (x2 >= zero);
     // A resting pile has both points pushing in every lane: the other cases are rare.
     if (!allLanes(okBoth | ~lanes)) {
@@ -274,10 +312,11 @@ E2D_WIDE_INLINE void solveFrictionAt(Constraint& c, Point& cp, Velocities& a, Ve
 }
 
 // solveContacts() on one group, whose lanes have at most kPoints points.
+// pass: the softnesses (invH and pushMaxSpeed come apart, in registers).
 template <bool kReversePoints, int kPoints>
-E2D_WIDE_INLINE void solveGroup(Constraint& c, Impact& im, F invH, bool useBias,
-                                float pushMaxSpeed) {
-    resetPad(c);
+E2D_WIDE_INLINE void solveGroup(Constraint& c, Impact& im, F invH, bool useBias, float pushMaxSpeed,
+                                const PassInput& pass) {
+    resetPad(c, im);
     F s[2];
     if (c.separationsKnown != 0) {
         if (useBias) {
@@ -300,26 +339,36 @@ E2D_WIDE_INLINE void solveGroup(Constraint& c, Impact& im, F invH, bool useBias,
     Velocities a = velocitiesOf(c.bodyA);
     Velocities b = velocitiesOf(c.bodyB);
     const I all = ~I{};
+    // The relax passes use no softness (folded away). Most groups have no rigid lane: they
+    // read the pass's, from memory as a group's own fields are read (kept in registers through
+    // the solve, three more vectors spill others).
+    LaneSoftness mixed;
+    if (useBias && c.rigidLanes != 0) {
+        mixed = softnessOf(laneMaskOf(c.rigidLanes), pass.dynamic, pass.vsStatic);
+    }
+    const LaneSoftness& soft = !useBias || c.rigidLanes == 0 ? pass.dynamic : reread(mixed);
     if constexpr (kPoints == 1) {
-        solvePoint<false, true>(c, im, 0, s[0], a, b, all, invH, useBias, pushMaxSpeed);
+        solvePoint<false, true>(c, im, 0, s[0], a, b, all, soft, invH, useBias, pushMaxSpeed);
     } else {
         // Lanes of well-conditioned 2-point manifolds take the block solve, the others go point
         // by point; a group is usually all one kind (a pile of boxes). Reversed, a one-point
         // lane meets its empty second point first: zero normal mass, no impulse, the same
         // result as the scalar pass that skips it.
-        const I block = c.blockSolve;
+        const int blockLanes = c.blockLanes;
         const int first = kReversePoints ? 1 : 0;
-        if (allLanes(block)) {
-            solveBlock<false>(c, im, s, a, b, all, invH, useBias, pushMaxSpeed);
-        } else if (!anyLane(block)) {
-            solvePoint<false>(c, im, first, s[first], a, b, all, invH, useBias, pushMaxSpeed);
-            solvePoint<false>(c, im, 1 - first, s[1 - first], a, b, all, invH, useBias,
+        if (blockLanes == kAllLaneBits) {
+            solveBlock<false>(c, im, s, a, b, all, soft, invH, useBias, pushMaxSpeed);
+        } else if (blockLanes == 0) {
+            solvePoint<false>(c, im, first, s[first], a, b, all, soft, invH, useBias, pushMaxSpeed);
+            solvePoint<false>(c, im, 1 - first, s[1 - first], a, b, all, soft, invH, useBias,
                               pushMaxSpeed);
         } else {
-            solvePoint<true>(c, im, first, s[first], a, b, ~block, invH, useBias, pushMaxSpeed);
-            solvePoint<true>(c, im, 1 - first, s[1 - first], a, b, ~block, invH, useBias,
+            const I block = laneMaskOf(blockLanes);
+            solvePoint<true>(c, im, first, s[first], a, b, ~block, soft, invH, useBias,
                              pushMaxSpeed);
-            solveBlock<true>(c, im, s, a, b, block, invH, useBias, pushMaxSpeed);
+            solvePoint<true>(c, im, 1 - first, s[1 - first], a, b, ~block, soft, invH, useBias,
+                             pushMaxSpeed);
+            solveBlock<true>(c, im, s, a, b, block, soft, invH, useBias, pushMaxSpeed);
         }
     }
     if constexpr (kPoints == 2) {
@@ -339,18 +388,20 @@ E2D_WIDE_INLINE void solveGroup(Constraint& c, Impact& im, F invH, bool useBias,
     storeVelocities(b, c.bodyB);
 }
 
-// levelStart: the group boundaries of the levels to run (absolute indices into constraints).
+// levelStart: the group boundaries of the levels to run (absolute indices into constraints);
+// impacts: the groups' side data (their pads), at the groups' indices.
 E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints,
-                              std::span<const int> levelStart) {
+                              std::span<const Impact> impacts, std::span<const int> levelStart) {
     if (levelStart.size() < 2) {
         return;
     }
     for (int g = levelStart.front(); g < levelStart.back(); ++g) {
         const Constraint& c = constraints[static_cast<std::size_t>(g)];
+        const Impact& im = impacts[static_cast<std::size_t>(g)];
         if (c.twoPointLanes != 0) {
-            warmStartGroup<2>(c);
+            warmStartGroup<2>(c, im);
         } else {
-            warmStartGroup<1>(c);
+            warmStartGroup<1>(c, im);
         }
     }
 }
@@ -360,48 +411,50 @@ E2D_WIDE_FN void warmStartAll(std::span<const Constraint> constraints,
 // impacts: the groups' impact bookkeeping, at the groups' indices.
 template <bool kReversePoints, bool kUseBias>
 E2D_WIDE_FN void solveGroups(std::span<Constraint> constraints, std::span<Impact> impacts,
-                             int first, int end, F invH, float pushMaxSpeed) {
+                             int first, int end, const PassInput& pass) {
+    const F invH = pass.invH;
     for (int g = first; g < end; ++g) {
         Constraint& c = constraints[static_cast<std::size_t>(g)];
         Impact& im = impacts[static_cast<std::size_t>(g)];
         if (c.twoPointLanes != 0) {
-            solveGroup<kReversePoints, 2>(c, im, invH, kUseBias, pushMaxSpeed);
+            solveGroup<kReversePoints, 2>(c, im, invH, kUseBias, pass.pushMaxSpeed, pass);
         } else {
-            solveGroup<kReversePoints, 1>(c, im, invH, kUseBias, pushMaxSpeed);
+            solveGroup<kReversePoints, 1>(c, im, invH, kUseBias, pass.pushMaxSpeed, pass);
         }
     }
 }
 
 template <bool kReversePoints, bool kUseBias>
 E2D_WIDE_FN void solveLevels(std::span<Constraint> constraints, std::span<Impact> impacts,
-                             std::span<const int> levelStart, F invH, float pushMaxSpeed,
+                             std::span<const int> levelStart, const PassInput& pass,
                              bool backward) {
     if (!backward) {
         solveGroups<kReversePoints, kUseBias>(constraints, impacts, levelStart.front(),
-                                              levelStart.back(), invH, pushMaxSpeed);
+                                              levelStart.back(), pass);
         return;
     }
     // Within a level the order does not matter; backward only reverses the levels.
     for (std::size_t k = levelStart.size() - 1; k-- > 0;) {
         solveGroups<kReversePoints, kUseBias>(constraints, impacts, levelStart[k],
-                                              levelStart[k + 1], invH, pushMaxSpeed);
+                                              levelStart[k + 1], pass);
     }
 }
 
+// dynamic, vsStatic: the softnesses the groups' lanes pick from (WideContacts).
 template <bool kReversePoints>
 E2D_WIDE_FN void solveAll(std::span<Constraint> constraints, std::span<Impact> impacts,
                           std::span<const int> levelStart, float invH, bool useBias,
-                          float pushMaxSpeed, bool backward) {
+                          float pushMaxSpeed, bool backward, const Softness& dynamic,
+                          const Softness& vsStatic) {
     if (levelStart.size() < 2) {
         return;
     }
-    const F vInvH = splat(invH);
+    const PassInput pass{splat(invH), pushMaxSpeed, splatSoftness(dynamic),
+                         splatSoftness(vsStatic)};
     if (useBias) {
-        solveLevels<kReversePoints, true>(constraints, impacts, levelStart, vInvH, pushMaxSpeed,
-                                          backward);
+        solveLevels<kReversePoints, true>(constraints, impacts, levelStart, pass, backward);
     } else {
-        solveLevels<kReversePoints, false>(constraints, impacts, levelStart, vInvH, pushMaxSpeed,
-                                           backward);
+        solveLevels<kReversePoints, false>(constraints, impacts, levelStart, pass, backward);
     }
 }
 
@@ -458,23 +511,22 @@ E2D_WIDE_FN F effectiveMassOf(const Constraint& c, F ax, F ay, F rAx, F rAy, F r
     return select(positive, splat(1.0f) / select(positive, k, splat(1.0f)), zero);
 }
 
-// A softness field: Softness{}'s in `empty` lanes, else vsStatic's in `rigid` ones, else
-// dynamic's.
-E2D_WIDE_FN F softnessOf(I empty, I rigid, const Gather& in, float Softness::*field) {
-    return select(empty, splat(Softness{}.*field),
-                  select(rigid, splat(in.vsStatic.*field), splat(in.dynamic.*field)));
-}
-
-// `states`: the array the group's bodies are in. Returns the lanes isPushedApart() holds pushed
-// apart (prepareWideGroup()).
-// `im`: the group's impact bookkeeping.
-E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, Impact& im, BodyState* states) {
+// `states`: the array the group's bodies are in; `im`: the group's side data; dynamic and
+// vsStatic: the softnesses its lanes pick from (WideContacts). Returns the lanes
+// isPushedApart() holds pushed apart (prepareWideGroup()).
+E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, Impact& im, BodyState* states,
+                             const Softness& dynamic, const Softness& vsStatic) {
     const F zero = splat(0.0f);
     const F one = splat(1.0f);
-    bodiesAt(in.indexA, states, &c.pad, c.bodyA);
-    bodiesAt(in.indexB, states, &c.pad, c.bodyB);
+    bodiesAt(in.indexA, states, &im.pad, c.bodyA);
+    bodiesAt(in.indexB, states, &im.pad, c.bodyB);
+    int padLanes = 0;
+    for (int lane = 0; lane < N; ++lane) {
+        padLanes |= (in.indexA[lane] < 0 || in.indexB[lane] < 0) ? 1 << lane : 0;
+    }
+    c.padLanes = padLanes;
     // Static sides and empty lanes read the pad: at rest, as ContactBodyView{} is.
-    resetPad(c);
+    resetPad(c, im);
     F unused0, unused1, unused2, countBits;
     // The row that ends with the point count (its bits ride through the shuffles unchanged):
     // a few loads and shuffles where a lane at a time took a load, a load and a store.
@@ -495,13 +547,17 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, Impact& im, BodySt
     loadRows(c.bodyA, 0, vAx, vAy, wA, unused0);
     loadRows(c.bodyB, 0, vBx, vBy, wB, unused0);
     c.friction = vectorOf(in.friction);
-    // The world's choice of softness (vsStatic against a rigid side), Softness{} in empty lanes.
+    // The world's choice of softness: vsStatic against a rigid side (empty lanes are rigid; no
+    // impulse comes of theirs). isDeepPushedApart() below reads an empty lane's as
+    // Softness{}, as ContactConstraint{} holds it.
     const I rigid = ((c.invMassAx == zero) & (c.invMassAy == zero) & (c.invInertiaA == zero)) |
                     ((c.invMassBx == zero) & (c.invMassBy == zero) & (c.invInertiaB == zero));
     const I empty = count == 0;
-    c.biasRate = softnessOf(empty, rigid, in, &Softness::biasRate);
-    c.massScale = softnessOf(empty, rigid, in, &Softness::massScale);
-    c.impulseScale = softnessOf(empty, rigid, in, &Softness::impulseScale);
+    c.rigidLanes = laneBits(rigid);
+    const LaneSoftness picked = softnessOf(rigid, splatSoftness(dynamic), splatSoftness(vsStatic));
+    const LaneSoftness soft{select(empty, splat(Softness{}.biasRate), picked.biasRate),
+                            select(empty, splat(Softness{}.massScale), picked.massScale),
+                            select(empty, splat(Softness{}.impulseScale), picked.impulseScale)};
     // Per point, isPushedApart()'s first test and what its second reads.
     I deep = I{};
     F depth[2];
@@ -575,10 +631,10 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, Impact& im, BodySt
     {
         const I two = count == 2;
         const F k21 = linear + c.invInertiaA * rn2A * rn1A + c.invInertiaB * rn2B * rn1B;
-        const F stiffness = c.massScale * c.biasRate;
-        const I soft = stiffness > zero;
+        const F stiffness = soft.massScale * soft.biasRate;
+        const I stiff = stiffness > zero;
         const F restPerImpulse =
-            splat(kPushOutRestMargin) * c.impulseScale / select(soft, stiffness, one);
+            splat(kPushOutRestMargin) * soft.impulseScale / select(stiff, stiffness, one);
         const F lambda1 = p1.normalImpulse;
         const F lambda2 = p2.normalImpulse;
         F load1 = zero + k11 * lambda1;
@@ -588,7 +644,7 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, Impact& im, BodySt
         const I beyond1 = depth[0] > splat(kLinearSlop) + restPerImpulse * maxOf(load1, zero);
         const I beyond2 =
             two & (depth[1] > splat(kLinearSlop) + restPerImpulse * maxOf(load2, zero));
-        deep &= soft & (beyond1 | beyond2);
+        deep &= stiff & (beyond1 | beyond2);
     }
     k11 = k11 + leverRoundingOf(c, p1.anchorAx, p1.anchorAy, p1.anchorBx, p1.anchorBy);
     k22 = k22 + leverRoundingOf(c, p2.anchorAx, p2.anchorAy, p2.anchorBx, p2.anchorBy);
@@ -600,10 +656,8 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, Impact& im, BodySt
     c.k11 = select(block, k11, one);
     c.k12 = select(block, k12, zero);
     c.k22 = select(block, k22, one);
-    c.inv11 = select(block, invDet * k22, one);
-    c.inv12 = select(block, -invDet * k12, zero);
-    c.inv22 = select(block, invDet * k11, one);
-    c.blockSolve = block | empty;
+    c.invDet = invDet;
+    c.blockLanes = laneBits(block | empty);
     c.twoPointLanes = laneBits(count == 2);
     c.separationsKnown = 0;
     return laneBits(deep);

@@ -29,13 +29,14 @@ Rot nlerp(Rot q1, Rot q2, float t) {
 } // namespace
 
 void World::Impl::finalizeAndSweep(bool continuous) {
-    // Decided from the step's own arrays (the extents and bullet flag copied at the start of
-    // the step), so the bodies that stay slow, nearly all of them, never read their world slot.
+    // Decided from the step's own arrays (the bullet flag copied at the start of the step, the
+    // fast flag set by finalizePositions()), so the bodies that stay slow, nearly all of them,
+    // never read their world slot.
     // A fast body that is no bullet is swept against static shapes only and changes its own
-    // pose only: those sweeps run on the workers, each right after its body's final pose. Bullets
-    // go after them, alone, against every other body's final pose. The pair filter is the
-    // game's code, called from the stepping thread only: with one set, every sweep runs here,
-    // in body order, after all the poses.
+    // pose only: those sweeps run on the workers, right after the final poses of their row of
+    // bodies. Bullets go after them, alone, against every other body's final pose. The pair
+    // filter is the game's code, called from the stepping thread only: with one set, every
+    // sweep runs here, in body order, after all the poses.
     const int n = static_cast<int>(sim.sims.size());
     if (continuous) {
         for (BodyType type : {BodyType::Static, BodyType::Kinematic, BodyType::Dynamic}) {
@@ -43,6 +44,7 @@ void World::Impl::finalizeAndSweep(bool continuous) {
         }
     }
     std::atomic<bool> bullets{false};
+    std::atomic<bool> sweeps{false};
     auto sweepFast = [&](int begin, int end) {
         bool bullet = false;
         for (int k = begin; k < end; ++k) {
@@ -51,12 +53,8 @@ void World::Impl::finalizeAndSweep(bool continuous) {
                 bullet = true;
                 continue;
             }
-            // Slow enough that no shape can pass through a static one within a step: the
-            // speculative contacts already cover it (Box2D v3's rule, safety factor 0.5).
-            float travel =
-                length(bs.center - bs.center0) +
-                std::abs(sim.states[static_cast<std::size_t>(k)].deltaRotation.s) * bs.maxExtent;
-            if (travel >= 0.5f * bs.minExtent) {
+            // Slow bodies (detail::movedFast()) are left to their speculative contacts.
+            if ((bs.flags & detail::kIsFast) != 0) {
                 sweepBody(k);
             }
         }
@@ -73,16 +71,19 @@ void World::Impl::finalizeAndSweep(bool continuous) {
         const int end = std::min(endRow * kRow, n);
         const auto at = static_cast<std::size_t>(begin);
         const auto count = static_cast<std::size_t>(end - begin);
-        detail::finalizePositions(
-            std::span(sim.sims).subspan(at, count),
-            std::span<const detail::BodyState>(sim.states).subspan(at, count));
-        if (sweepHere) {
-            sweepFast(begin, end);
+        // Whether a body of these is fast or a bullet.
+        if (detail::finalizePositions(
+                std::span(sim.sims).subspan(at, count),
+                std::span<const detail::BodyState>(sim.states).subspan(at, count))) {
+            sweeps.store(true, std::memory_order_relaxed);
+            if (sweepHere) {
+                sweepFast(begin, end);
+            }
         }
     };
-    // A body's final pose and slow-body test are about 10 ns.
-    tasks.parallelFor((n + kRow - 1) / kRow, tasks.minRange(10 * kRow), piece);
-    if (continuous && !sweepHere) {
+    // A body's final pose and slow-body test are about 5 ns.
+    tasks.parallelFor((n + kRow - 1) / kRow, tasks.minRange(5 * kRow), piece);
+    if (continuous && !sweepHere && sweeps.load(std::memory_order_relaxed)) {
         sweepFast(0, n);
     }
     if (bullets.load(std::memory_order_relaxed)) {

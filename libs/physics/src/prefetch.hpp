@@ -23,8 +23,7 @@ template <class T>
     __builtin_prefetch(bytes + sizeof(T) - 1);
 }
 
-// Asks for the cache lines of the first kBytes bytes of *p (all of them where p is aligned to
-// a line; same rules as prefetchObject()).
+// Asks for the cache lines of the first kBytes bytes of *p (same rules as prefetchObject()).
 template <std::size_t kBytes, class T>
 [[gnu::always_inline]] inline void prefetchFirst(const T* p) {
     static_assert(kBytes <= sizeof(T));
@@ -32,6 +31,7 @@ template <std::size_t kBytes, class T>
     for (std::size_t offset = 0; offset < kBytes; offset += 64) {
         __builtin_prefetch(bytes + offset);
     }
+    __builtin_prefetch(bytes + kBytes - 1);
 }
 
 } // namespace e2d::physics::detail

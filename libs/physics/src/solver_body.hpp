@@ -15,7 +15,7 @@ enum BodyFlag : std::uint8_t {
     kLockY = 2,        // ... along y
     kLockRotation = 4, // fixed rotation
     kIsBullet = 8,
-    kIsFast = 16,    // moved far enough this step to need time of impact
+    kIsFast = 16,    // moved far enough this step to need time of impact (finalizePositions())
     kNonFinite = 32, // its velocity overflowed this step: held still, disabled afterwards
 };
 

@@ -15,10 +15,11 @@
 
 // Lane vectors for the passes that solve several constraints at a time (contacts, plain
 // hinges): the vector types of four and eight lanes and, per width, splat, select, maxOf,
-// anyLane, allLanes, laneBits, lanesOf and bodiesAt (where each lane reads and writes its body),
-// transposeRows, and loadRows/storeRows, which gather BodyStates (or any rows of four floats,
-// one per lane) into lane vectors and scatter BodyStates back with shuffles only. Four lanes everywhere (SSE2 on x86-64, NEON on ARM64, plain
-// scalar code where the target has no SIMD); eight on x86-64 (AVX2, E2D_HAS_WIDE8), for code
+// anyLane, allLanes, laneBits, laneMaskOf, lanesOf and bodiesAt (where each lane reads and
+// writes its body), transposeRows, and loadRows/storeRows, which gather BodyStates (or any
+// rows of four floats, one per lane) into lane vectors and scatter BodyStates back with
+// shuffles only. Four lanes everywhere (SSE2 on x86-64, NEON on ARM64, plain scalar code where
+// the target has no SIMD); eight on x86-64 (AVX2, E2D_HAS_WIDE8), for code
 // that checked the CPU at run time. No "fma" in the target: a fused multiply-add rounds once
 // where the scalar code rounds twice, so every width gives the scalar results.
 namespace e2d::physics::detail {
@@ -139,6 +140,9 @@ inline int laneBits(I mask) {
 #endif
 }
 
+// The mask whose lane k is all ones where bit k of `bits` is set (laneBits() undone).
+inline I laneMaskOf(int bits) { return ((I{} + bits) & I{1, 2, 4, 8}) != I{}; }
+
 inline void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {
     F t0 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);
     F t1 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
@@ -184,6 +188,9 @@ E2D_AVX2_FN F maxOf(F a, F b) { return _mm256_max_ps(b, a); }
 E2D_AVX2_FN bool anyLane(I mask) { return _mm256_movemask_ps((__m256)mask) != 0; }
 E2D_AVX2_FN bool allLanes(I mask) { return _mm256_movemask_ps((__m256)mask) == 0xFF; }
 E2D_AVX2_FN int laneBits(I mask) { return _mm256_movemask_ps((__m256)mask); }
+E2D_AVX2_FN I laneMaskOf(int bits) {
+    return ((I{} + bits) & I{1, 2, 4, 8, 16, 32, 64, 128}) != I{};
+}
 
 // Rows k and k + 4 share a vector (low and high half); the halves transpose independently.
 E2D_AVX2_FN void transposeRows(F r0, F r1, F r2, F r3, F& c0, F& c1, F& c2, F& c3) {

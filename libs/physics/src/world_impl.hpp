@@ -179,8 +179,8 @@ struct World::Impl {
     void scheduleWide(int constraintCount);
     // The solved bodies' final poses (detail::finalizePositions()) and, if `continuous`, time of
     // impact for this step's fast bodies and bullets (continuous.cpp), on the workers:
-    // finalizeAndSweep() picks them from the solver arrays, sweepBody() sweeps one (index in
-    // sims).
+    // finalizeAndSweep() picks them from the solver arrays (kIsFast, kIsBullet), sweepBody()
+    // sweeps one (index in sims).
     void finalizeAndSweep(bool continuous);
     void sweepBody(int simIndex);
     // The solved states back to the bodies, the broad-phase moves and the move events

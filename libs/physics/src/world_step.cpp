@@ -289,9 +289,14 @@ void World::Impl::solve(float dt) {
             // rather than in a pass of its own (the soft step's sub-steps; the classic solver and
             // solveSoftStep() prepare their own).
             detail::prepareIntegration(entry, bodyGravity, integrationStep);
-            // Without branches (&, not &&): which way each goes varies body by body.
-            stateRigid[k] = static_cast<unsigned char>((invMass.x == 0.0f) & (invMass.y == 0.0f) &
-                                                       (m.invInertia == 0.0f));
+            // Whether invMass.x, invMass.y and invInertia are all zero (+0 or -0): their bits past
+            // the sign are. One test for the three float comparisons (== 0.0f each), which cost
+            // about fifteen instructions a body without branches.
+            stateRigid[k] =
+                static_cast<unsigned char>(((std::bit_cast<std::uint32_t>(invMass.x) |
+                                             std::bit_cast<std::uint32_t>(invMass.y) |
+                                             std::bit_cast<std::uint32_t>(m.invInertia)) &
+                                            0x7FFFFFFFu) == 0u);
             // A kinematic body keeps its velocity; a locked axis has none.
             Vec2 v{m.lockX && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.x,
                    m.lockY && b.type == BodyType::Dynamic ? 0.0f : b.linearVelocity.y};
@@ -520,6 +525,9 @@ void World::Impl::solve(float dt) {
         // do not fit in the cache, fetch the ones a few slots ahead: the lines the solver reads
         // (Contact::kSolverBytes), not the whole contact. (Always inlined: GCC deletes a call to
         // a function that only prefetches, see prefetch.hpp.)
+        // The lanes pick their softness from these (prepareWideGroup()).
+        s.wideContacts.dynamic = softness.dynamic;
+        s.wideContacts.vsStatic = softness.vsStatic;
         constexpr int kPrefetchAhead = 16;
         const bool prefetchContacts =
             s.contacts.size() * sizeof(detail::Contact) > detail::kPrefetchBytes;
@@ -619,13 +627,9 @@ void World::Impl::solve(float dt) {
             };
             if (s.wideContacts.lanes == 8) {
                 detail::WideGatherT<8> lanes8;
-                lanes8.dynamic = softness.dynamic;
-                lanes8.vsStatic = softness.vsStatic;
                 return build(lanes8);
             }
             detail::WideGatherT<4> lanes4;
-            lanes4.dynamic = softness.dynamic;
-            lanes4.vsStatic = softness.vsStatic;
             return build(lanes4);
         };
         // applyRestitution() goes in constraint order.

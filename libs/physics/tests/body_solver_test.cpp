@@ -161,7 +161,8 @@ TEST(BodySolver, BlockIntegrationMatchesTheIndexedLoops) {
 
 TEST(BodySolver, FinalizePositionsMatchesOneBodyAtATime) {
     // Four bodies a register where the target has SSE2, eight with AVX2: each must end as the
-    // one-body call leaves it, bit for bit, a rotation that does not normalise (zero) included.
+    // one-body call leaves it, bit for bit, a rotation that does not normalise (zero) included,
+    // flagged kIsFast exactly when movedFast() says so.
     for (int count : {1, 4, 7, 13, 8, 21}) {
         Bodies all = makeBodies(count, static_cast<unsigned>(100 + count));
         std::mt19937 random(static_cast<unsigned>(count));
@@ -173,15 +174,35 @@ TEST(BodySolver, FinalizePositionsMatchesOneBodyAtATime) {
             sim.rotation0 = {std::cos(angle), std::sin(angle)};
             sim.localCenter =
                 i % 3 == 0 ? Vec2{0.0f, 0.0f} : Vec2{0.5f * unit(random), 0.5f * unit(random)};
+            // Shapes from 0.05 to 0.5 m across: some bodies move fast (deltaPosition up to 0.1 m
+            // a step), most do not; one in five is a bullet.
+            sim.minExtent = 0.05f + 0.2f * (1.0f + unit(random));
+            sim.maxExtent = sim.minExtent + 0.1f * (1.0f + unit(random));
+            sim.flags = i % 5 == 4 ? std::uint32_t{kIsBullet} : 0u;
         }
         if (count > 2) {
             all.states[2].deltaRotation = {0.0f, 0.0f}; // stays unnormalised
         }
         Bodies alone = all;
-        finalizePositions(all.sims, all.states);
+        const bool sweeps = finalizePositions(all.sims, all.states);
+        bool sweepsAlone = false;
         for (std::size_t i = 0; i < alone.sims.size(); ++i) {
-            finalizePositions(std::span<BodySim>(&alone.sims[i], 1),
-                              std::span<const BodyState>(&alone.states[i], 1));
+            sweepsAlone = finalizePositions(std::span<BodySim>(&alone.sims[i], 1),
+                                            std::span<const BodyState>(&alone.states[i], 1)) ||
+                          sweepsAlone;
+        }
+        EXPECT_EQ(sweeps, sweepsAlone) << count << " bodies";
+        int fast = 0;
+        for (std::size_t i = 0; i < all.sims.size(); ++i) {
+            const BodySim& sim = all.sims[i];
+            const bool moved = movedFast(sim.center - sim.center0, all.states[i].deltaRotation.s,
+                                         sim.maxExtent, sim.minExtent);
+            EXPECT_EQ((sim.flags & kIsFast) != 0, moved) << "body " << i << " of " << count;
+            fast += moved ? 1 : 0;
+        }
+        if (count >= 8) {
+            EXPECT_GT(fast, 0) << "no fast body among " << count;
+            EXPECT_LT(fast, count) << "no slow body among " << count;
         }
         for (std::size_t i = 0; i < all.sims.size(); ++i) {
             EXPECT_EQ(std::memcmp(&all.sims[i], &alone.sims[i], sizeof(BodySim)), 0)

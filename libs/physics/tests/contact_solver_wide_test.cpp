@@ -282,6 +282,8 @@ void expectWideMatchesScalar(std::uint32_t seed, int maxPoints) {
             }
             wide = unsolved;
             WideContacts packed;
+            packed.dynamic = wide.dynamic;
+            packed.vsStatic = wide.vsStatic;
             prepareWide(packed, wide.constraints, order, levelStart, lanes, wide.states);
             ASSERT_EQ(packed.lanes, lanes);
             // Groups of one-point lanes (only those) take their own passes.
@@ -383,8 +385,12 @@ template <int N>
 void expectSameGroups(const Problem& p, const Schedule& schedule, int& pushed, int& held) {
     std::vector<BodyState> states = p.states;
     WideContacts reference;
+    reference.dynamic = p.dynamic;
+    reference.vsStatic = p.vsStatic;
     prepareWide(reference, p.constraints, schedule.order, schedule.levelStart, N, states);
     WideContacts gathered;
+    gathered.dynamic = p.dynamic;
+    gathered.vsStatic = p.vsStatic;
     layoutWide(gathered, schedule.levelStart, N);
     // Whatever an earlier step left in the groups: prepareWideGroup() writes every byte the
     // comparison below reads.
@@ -393,6 +399,9 @@ void expectSameGroups(const Problem& p, const Schedule& schedule, int& pushed, i
         g.twoPointLanes = 0x5A;
         g.unseenLanes[0] = 0x5A;
         g.unseenLanes[1] = 0x5A;
+        g.blockLanes = 0x5A;
+        g.rigidLanes = 0x5A;
+        g.padLanes = 0x5A;
     }
     for (WideImpactT<N>& im : impactsOf<N>(gathered)) {
         std::memset(static_cast<void*>(&im), 0x5A, sizeof im);
@@ -406,8 +415,6 @@ void expectSameGroups(const Problem& p, const Schedule& schedule, int& pushed, i
         int g = gathered.levelStart[static_cast<std::size_t>(level)];
         for (int slot = first; slot < end; slot += N, ++g) {
             WideGatherT<N> in;
-            in.dynamic = p.dynamic;
-            in.vsStatic = p.vsStatic;
             int pushedLanes = 0;
             for (int lane = 0; lane < N; ++lane) {
                 if (slot + lane < end) {
@@ -453,16 +460,23 @@ void expectSameGroups(const Problem& p, const Schedule& schedule, int& pushed, i
         EXPECT_EQ(e.twoPointLanes, a.twoPointLanes) << "group " << g;
         EXPECT_EQ(e.unseenLanes[0], a.unseenLanes[0]) << "group " << g;
         EXPECT_EQ(e.unseenLanes[1], a.unseenLanes[1]) << "group " << g;
-        EXPECT_EQ(std::memcmp(&impactsOf<N>(reference)[g], &impactsOf<N>(gathered)[g],
-                              sizeof(WideImpactT<N>)),
-                  0)
-            << "group " << g;
+        EXPECT_EQ(e.blockLanes, a.blockLanes) << "group " << g;
+        EXPECT_EQ(e.rigidLanes, a.rigidLanes) << "group " << g;
+        EXPECT_EQ(e.padLanes, a.padLanes) << "group " << g;
+        const WideImpactT<N>& ei = impactsOf<N>(reference)[g];
+        const WideImpactT<N>& ai = impactsOf<N>(gathered)[g];
+        EXPECT_EQ(std::memcmp(&ei, &ai, offsetof(WideImpactT<N>, pad)), 0) << "group " << g;
+        // A pad in use is at rest, as the passes reset it.
+        if (a.padLanes != 0) {
+            EXPECT_EQ(std::memcmp(&ei.pad, &ai.pad, sizeof ai.pad), 0) << "group " << g;
+        }
         for (int lane = 0; lane < N; ++lane) {
             for (auto side : {&Group::bodyA, &Group::bodyB}) {
                 const BodyState* want = (e.*side)[lane];
                 const BodyState* got = (a.*side)[lane];
-                if (want == &e.pad) {
-                    EXPECT_EQ(got, &a.pad) << "group " << g << " lane " << lane;
+                if (want == &ei.pad) {
+                    EXPECT_EQ(got, &ai.pad) << "group " << g << " lane " << lane;
+                    EXPECT_NE((a.padLanes >> lane) & 1, 0) << "group " << g << " lane " << lane;
                 } else {
                     EXPECT_EQ(got, want) << "group " << g << " lane " << lane;
                     EXPECT_TRUE(want >= states.data() && want < states.data() + states.size());
