@@ -81,8 +81,8 @@ void World::Impl::finalizeAndSweep(bool continuous) {
             }
         }
     };
-    // A body's final pose and slow-body test are about 5 ns.
-    tasks.parallelFor((n + kRow - 1) / kRow, tasks.minRange(5 * kRow), piece);
+    // A body's final pose is about 10 ns (its BodySim streams in from memory).
+    tasks.parallelFor((n + kRow - 1) / kRow, tasks.minRange(10 * kRow), piece);
     if (continuous && !sweepHere && sweeps.load(std::memory_order_relaxed)) {
         sweepFast(0, n);
     }
