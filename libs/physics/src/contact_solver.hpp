@@ -99,6 +99,13 @@ struct ContactConstraint {
     int contactIndex = -1; // the world's contact, to store impulses back
 };
 
+// Whether no impulse changes a side's velocity (no mass on either axis, no inertia: a static
+// side too): the world gives a contact with such a side the static softness
+// (ContactSoftness::vsStatic).
+inline bool isRigidSide(Vec2 invMass, float invInertia) {
+    return invMass.x == 0.0f && invMass.y == 0.0f && invInertia == 0.0f;
+}
+
 // One side of a contact as prepare() needs it.
 struct ContactBodyView {
     Vec2 centerOffset{0.0f, 0.0f}; // centre of mass minus origin, world axes

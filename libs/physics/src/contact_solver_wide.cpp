@@ -49,10 +49,8 @@ void packLane(WideConstraintT<N>& w, WideImpactT<N>& im, int lane, const Contact
     w.invInertiaB[lane] = c.invInertiaB;
     w.friction[lane] = c.friction;
     // The world's choice of softness (packWideLane()): vsStatic against a rigid side.
-    auto rigid = [](Vec2 invMass, float invInertia) {
-        return invMass.x == 0.0f && invMass.y == 0.0f && invInertia == 0.0f;
-    };
-    const bool rigidLane = rigid(c.invMassA, c.invInertiaA) || rigid(c.invMassB, c.invInertiaB);
+    const bool rigidLane =
+        isRigidSide(c.invMassA, c.invInertiaA) || isRigidSide(c.invMassB, c.invInertiaB);
     w.rigidLanes = rigidLane ? (w.rigidLanes | bit) : (w.rigidLanes & ~bit);
     const BlockMatrix k = c.blockSolve ? c.blockK : BlockMatrix{1.0f, 0.0f, 1.0f};
     w.k11[lane] = k.a11;

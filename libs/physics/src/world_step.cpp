@@ -339,7 +339,7 @@ void World::Impl::solve(float dt) {
                                        .stateIndex = solverIndex};
     };
     auto isRigid = [](const detail::ContactBodyView& v) {
-        return v.invMass.x == 0.0f && v.invMass.y == 0.0f && v.invInertia == 0.0f;
+        return detail::isRigidSide(v.invMass, v.invInertia);
     };
     auto softnessOf = [&](const detail::ContactBodyView& a, const detail::ContactBodyView& b) {
         return isRigid(a) || isRigid(b) ? softness.vsStatic : softness.dynamic;
@@ -525,15 +525,15 @@ void World::Impl::solve(float dt) {
     pushOutSweeps(step, pushOut);
     s.extraRelaxIterations = step.extraRelaxIterations;
     if (wide) {
+        // The lanes pick their softness from these (prepareWideGroup()).
+        s.wideContacts.dynamic = softness.dynamic;
+        s.wideContacts.vsStatic = softness.vsStatic;
         // Contacts are visited in slot order, twice a block: gathered before it is solved and
         // their impulses stored right after, while its lanes are in cache. A level's contacts
         // lie one island apart in the array, too far for the hardware prefetcher: where they
         // do not fit in the cache, fetch the ones a few slots ahead: the lines the solver reads
         // (Contact::kSolverBytes), not the whole contact. (Always inlined: GCC deletes a call to
         // a function that only prefetches, see prefetch.hpp.)
-        // The lanes pick their softness from these (prepareWideGroup()).
-        s.wideContacts.dynamic = softness.dynamic;
-        s.wideContacts.vsStatic = softness.vsStatic;
         constexpr int kPrefetchAhead = 16;
         const bool prefetchContacts =
             s.contacts.size() * sizeof(detail::Contact) > detail::kPrefetchBytes;
