@@ -149,37 +149,29 @@ void layoutWide(WideContacts& wide, std::span<const int> levelStart, int lanes);
 void packWideLane(WideContacts& wide, int level, int at, const ContactConstraint& c,
                   std::span<BodyState> states);
 
-// A row of four zero floats: the centre offset and masses of an empty lane (WideGatherT).
-alignas(16) inline constexpr float kZeroRow[4] = {0.0f, 0.0f, 0.0f, 0.0f};
 // The manifold of an empty lane: no points.
 inline const Manifold kEmptyManifold{};
 
 // Where prepareWideGroup() reads what prepareContact() reads for N constraints, one per lane:
-// the manifold itself, and each side's ContactBodyView as rows of four floats read whole (their
-// last floats are not used), so that a group's lanes are gathered with a few loads and
-// shuffles instead of copied field by field. A side's velocity is its state's (states[index]),
-// a static side's zero. Empty lanes: kEmptyManifold, kZeroRow and index -1 everywhere.
+// the manifold itself, and each side's ContactBodyView as a ContactBodyRow (its velocity, masses
+// and centre offset), read whole as two rows of four floats, so that a group's lanes are
+// gathered with a few loads and shuffles instead of copied field by field. A static side's row
+// holds its centre offset and zeros. Empty lanes: kEmptyManifold, a zero row and index -1.
 template <int N>
 struct WideGatherT {
     const Manifold* manifold[N];
-    // {centerOffset.x, centerOffset.y, -, -} and {invMass.x, invMass.y, invInertia, -} of
-    // each side (in the world: BodySim::centerOffset and BodySim::invMass, or a static side's
-    // offset and kZeroRow).
-    const float* offsetA[N];
-    const float* offsetB[N];
-    const float* massA[N];
-    const float* massB[N];
+    const ContactBodyRow* sideA[N];
+    const ContactBodyRow* sideB[N];
     int indexA[N]; // ContactBodyView::stateIndex
     int indexB[N];
     float friction[N];
 
     // An empty lane: no bodies, no points; it packs as ContactConstraint{} does.
     void clearLane(int lane) {
+        static constexpr ContactBodyRow kNoBody{};
         manifold[lane] = &kEmptyManifold;
-        offsetA[lane] = kZeroRow;
-        offsetB[lane] = kZeroRow;
-        massA[lane] = kZeroRow;
-        massB[lane] = kZeroRow;
+        sideA[lane] = &kNoBody;
+        sideB[lane] = &kNoBody;
         indexA[lane] = -1;
         indexB[lane] = -1;
         friction[lane] = 0.0f;
@@ -190,8 +182,9 @@ struct WideGatherT {
 // WideGatherT), bit for bit what prepareContact() and packWideLane() give one at a time, all
 // lanes at once; the lanes' softness is the world's choice between wide.dynamic and
 // wide.vsStatic (vsStatic where a side is rigid: no mass, no inertia). Their bodies are in
-// `states` (the array the passes then run on). The lane count must be wide.lanes. Returns the
-// lanes isPushedApart() holds pushed apart (on the lane's softness), lane k in bit k.
+// `states` (the array the passes then run on; the build reads their rows, not the states). The
+// lane count must be wide.lanes. Returns the lanes isPushedApart() holds pushed apart (on the
+// lane's softness), lane k in bit k.
 int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<4>& in,
                      std::span<BodyState> states);
 int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<8>& in,

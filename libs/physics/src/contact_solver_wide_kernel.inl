@@ -538,14 +538,18 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, Impact& im, BodySt
     loadRows(in.manifold, offsetof(Manifold, normal), nx, ny, unused0, unused1);
     c.normalX = nx;
     c.normalY = ny;
-    F oAx, oAy, oBx, oBy;
-    loadRows(in.offsetA, 0, oAx, oAy, unused0, unused1);
-    loadRows(in.offsetB, 0, oBx, oBy, unused0, unused1);
-    loadRows(in.massA, 0, c.invMassAx, c.invMassAy, c.invInertiaA, unused0);
-    loadRows(in.massB, 0, c.invMassBx, c.invMassBy, c.invInertiaB, unused0);
-    F vAx, vAy, wA, vBx, vBy, wB;
-    loadRows(c.bodyA, 0, vAx, vAy, wA, unused0);
-    loadRows(c.bodyB, 0, vBx, vBy, wB, unused0);
+    // Each side's ContactBodyRow: {vx, vy, w, invInertia} and {centerOffset, invMass}.
+    static_assert(offsetof(ContactBodyRow, linearVelocity) == 0 &&
+                      offsetof(ContactBodyRow, angularVelocity) == 8 &&
+                      offsetof(ContactBodyRow, invInertia) == 12 &&
+                      offsetof(ContactBodyRow, centerOffset) == 16 &&
+                      offsetof(ContactBodyRow, invMass) == 24,
+                  "prepareGroup() reads ContactBodyRow as two rows of four floats");
+    F vAx, vAy, wA, vBx, vBy, wB, oAx, oAy, oBx, oBy;
+    loadRows(in.sideA, 0, vAx, vAy, wA, c.invInertiaA);
+    loadRows(in.sideB, 0, vBx, vBy, wB, c.invInertiaB);
+    loadRows(in.sideA, 16, oAx, oAy, c.invMassAx, c.invMassAy);
+    loadRows(in.sideB, 16, oBx, oBy, c.invMassBx, c.invMassBy);
     c.friction = vectorOf(in.friction);
     // The world's choice of softness: vsStatic against a rigid side (empty lanes are rigid; no
     // impulse comes of theirs). isDeepPushedApart() below reads an empty lane's as

@@ -193,6 +193,7 @@ struct Simulation {
     // Per-step scratch, same order: the awake moving bodies and their world slots.
     std::vector<BodySim> sims;
     std::vector<BodyState> states;
+    std::vector<ContactBodyRow> contactRows; // the wide contact build's copy of each body
     // The solved contacts, in contact order: contact index and the sides' BodyState indices
     // (-1: static or asleep).
     struct ConstraintBodies {

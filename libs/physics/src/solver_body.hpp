@@ -68,6 +68,22 @@ struct BodySim {
     float angularDampingFactor = 1.0f;
 };
 
+// What building a contact's constraint reads of an awake moving side (prepareWideGroup()), one
+// row per body in BodyState order, written with the body's BodySim and BodyState: its velocity
+// as the step begins (the BodyState's until the body's block is solved), inverse mass and
+// inertia, and centre offset (BodySim::centerOffset). The build visits the bodies in colour
+// order, scattered: here it reads one cache line a side, where the BodySim's fields (spread over
+// two of its three lines) and the BodyState took two or three. Two rows of four floats:
+// {vx, vy, w, invInertia} and {centerOffset, invMass}.
+struct alignas(32) ContactBodyRow {
+    Vec2 linearVelocity{0.0f, 0.0f};
+    float angularVelocity = 0.0f;
+    float invInertia = 0.0f;
+    Vec2 centerOffset{0.0f, 0.0f};
+    Vec2 invMass{0.0f, 0.0f}; // per axis, as BodySim::invMass
+};
+static_assert(sizeof(ContactBodyRow) == 32, "ContactBodyRow must stay two 16-byte rows");
+
 // q advanced by angle `da` (small): q + da * perp(q), renormalised. Cheaper than sin/cos and
 // exact enough for one sub-step.
 inline Rot integrateRotation(Rot q, float da) {

@@ -243,6 +243,7 @@ void World::Impl::solve(float dt) {
     }
     s.sims.resize(static_cast<std::size_t>(simCount));
     s.states.resize(static_cast<std::size_t>(simCount));
+    s.contactRows.resize(static_cast<std::size_t>(simCount));
     s.stateRigid.resize(static_cast<std::size_t>(simCount));
     // Each body writes its own slots: on the workers (about 50 ns a body).
     auto copyIn = [&](int firstBody, int endBody, int /*worker*/) {
@@ -250,6 +251,7 @@ void World::Impl::solve(float dt) {
         // then loaded them from the world again for every body.
         detail::BodySim* const sims = s.sims.data();
         detail::BodyState* const states = s.states.data();
+        detail::ContactBodyRow* const contactRows = s.contactRows.data();
         unsigned char* const stateRigid = s.stateRigid.data();
         const Vec2 bodyGravity = gravity;
         const detail::SpeedCaps caps = detail::speedCaps(def.maxLinearSpeed, integrationStep);
@@ -314,6 +316,11 @@ void World::Impl::solve(float dt) {
             detail::clampVelocity(v, w, caps);
             states[k] = detail::BodyState{
                 .linearVelocity = v, .angularVelocity = w, .deltaPosition = m.positionResidual};
+            contactRows[k] = detail::ContactBodyRow{.linearVelocity = v,
+                                                    .angularVelocity = w,
+                                                    .invInertia = m.invInertia,
+                                                    .centerOffset = centerOffset,
+                                                    .invMass = invMass};
         }
     };
     tasks.parallelFor(static_cast<int>(bodyCount), tasks.minRange(50), copyIn);
@@ -559,28 +566,20 @@ void World::Impl::solve(float dt) {
                 (group - s.wideContacts.levelStart[static_cast<std::size_t>(level)]) * N;
             // The arrays in locals: the lanes' pointer stores below may alias them for the
             // compiler, which then loaded them from the world again for every lane.
-            const detail::BodySim* const groupSims = s.sims.data();
+            const detail::ContactBodyRow* const rows = s.contactRows.data();
             const detail::Contact* const contacts = s.contacts.data();
             const int* const slotContact = s.slotContact.data();
             const detail::Simulation::ConstraintBodies* const slotBodies = s.slotBodies.data();
-            // A static (or asleep) side's centre offset, viewOf()'s, as a row of four floats.
-            alignas(16) float staticOffset[2 * N][4];
-            auto sideRows = [&](int lane, int side, int bodyIndex, int solverIndex,
-                                const float*& offset, const float*& mass) {
+            // A static (or asleep) side's row: viewOf()'s centre offset, no velocity, no mass.
+            detail::ContactBodyRow staticRows[2 * N];
+            auto sideRow = [&](int lane, int side, int bodyIndex,
+                               int solverIndex) -> const detail::ContactBodyRow* {
                 if (solverIndex != kNullIndex) {
-                    const detail::BodySim& bs = groupSims[solverIndex];
-                    offset = &bs.centerOffset.x;
-                    mass = &bs.invMass.x;
-                    return;
+                    return rows + solverIndex;
                 }
-                float(&row)[4] = staticOffset[2 * lane + side];
-                const Vec2 o = viewOf(bodyIndex, kNullIndex).centerOffset;
-                row[0] = o.x;
-                row[1] = o.y;
-                row[2] = 0.0f;
-                row[3] = 0.0f;
-                offset = row;
-                mass = detail::kZeroRow;
+                detail::ContactBodyRow& row = staticRows[2 * lane + side];
+                row = {.centerOffset = viewOf(bodyIndex, kNullIndex).centerOffset};
+                return &row;
             };
             const int used = std::min(N, levelEnd - first);
             for (int lane = 0; lane < used; ++lane) {
@@ -593,8 +592,8 @@ void World::Impl::solve(float dt) {
                 in.indexA[lane] = sides.indexA;
                 in.indexB[lane] = sides.indexB;
                 in.friction[lane] = c.friction;
-                sideRows(lane, 0, c.bodyA, sides.indexA, in.offsetA[lane], in.massA[lane]);
-                sideRows(lane, 1, c.bodyB, sides.indexB, in.offsetB[lane], in.massB[lane]);
+                in.sideA[lane] = sideRow(lane, 0, c.bodyA, sides.indexA);
+                in.sideB[lane] = sideRow(lane, 1, c.bodyB, sides.indexB);
                 if (c.restitution != 0.0f) {
                     restitution.push_back(
                         {level, slot - levelFirst, c.manifold.pointCount, c.restitution,

@@ -415,6 +415,14 @@ void expectSameGroups(const Problem& p, const Schedule& schedule, int& pushed, i
         int g = gathered.levelStart[static_cast<std::size_t>(level)];
         for (int slot = first; slot < end; slot += N, ++g) {
             WideGatherT<N> in;
+            ContactBodyRow rows[2 * N];
+            auto rowOf = [](const ContactBodyView& v) {
+                return ContactBodyRow{.linearVelocity = v.linearVelocity,
+                                      .angularVelocity = v.angularVelocity,
+                                      .invInertia = v.invInertia,
+                                      .centerOffset = v.centerOffset,
+                                      .invMass = v.invMass};
+            };
             int pushedLanes = 0;
             for (int lane = 0; lane < N; ++lane) {
                 if (slot + lane < end) {
@@ -424,10 +432,10 @@ void expectSameGroups(const Problem& p, const Schedule& schedule, int& pushed, i
                     ASSERT_EQ(std::memcmp(&pi.softness, &picked, sizeof picked), 0);
                     // The views' rows; their velocities are the states'.
                     in.manifold[lane] = &pi.manifold;
-                    in.offsetA[lane] = &pi.a.centerOffset.x;
-                    in.offsetB[lane] = &pi.b.centerOffset.x;
-                    in.massA[lane] = &pi.a.invMass.x;
-                    in.massB[lane] = &pi.b.invMass.x;
+                    rows[2 * lane] = rowOf(pi.a);
+                    rows[2 * lane + 1] = rowOf(pi.b);
+                    in.sideA[lane] = &rows[2 * lane];
+                    in.sideB[lane] = &rows[2 * lane + 1];
                     in.indexA[lane] = pi.a.stateIndex;
                     in.indexB[lane] = pi.b.stateIndex;
                     in.friction[lane] = pi.friction;
