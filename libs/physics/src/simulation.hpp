@@ -193,6 +193,9 @@ struct Simulation {
     // Per-step scratch, same order: the awake moving bodies and their world slots.
     std::vector<BodySim> sims;
     std::vector<BodyState> states;
+    // Per world body slot, its BodyMotion::solverIndex this step: the constraint list's walk
+    // reads two a contact, scattered, and the bodies themselves are too large to stay in cache.
+    std::vector<int> bodySolverIndex;
     std::vector<ContactBodyRow> contactRows; // the wide contact build's copy of each body
     // The solved contacts, in contact order: contact index and the sides' BodyState indices
     // (-1: static or asleep).

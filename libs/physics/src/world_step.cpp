@@ -256,10 +256,12 @@ void World::Impl::solve(float dt) {
     detail::Body* const bodySlots = bodies.data();
     const std::size_t bodyCount = bodies.size();
     int simCount = 0;
+    s.bodySolverIndex.resize(bodyCount);
     for (std::size_t bi = 0; bi < bodyCount; ++bi) {
         detail::Body& b = bodySlots[bi];
         const bool moving = b.alive & b.enabled & (b.type != BodyType::Static) & b.motion.awake;
         b.motion.solverIndex = moving ? simCount++ : kNullIndex;
+        s.bodySolverIndex[bi] = b.motion.solverIndex;
     }
     s.sims.resize(static_cast<std::size_t>(simCount));
     s.states.resize(static_cast<std::size_t>(simCount));
@@ -413,7 +415,7 @@ void World::Impl::solve(float dt) {
             int* const contactsOut = s.constraintContacts.data();
             detail::Simulation::ConstraintBodies* const bodiesOut = s.constraintBodies.data();
             const detail::Simulation::TouchingContact* const touchingIn = s.touchingContacts.data();
-            const detail::Body* const slots = bodySlots;
+            const int* const solverIndexOf = s.bodySolverIndex.data();
             bool rollingHere = false;
             for (int ch = firstChunk; ch < endChunk; ++ch) {
                 const int begin = ch * chunk;
@@ -421,8 +423,8 @@ void World::Impl::solve(float dt) {
                 int kept = begin;
                 for (int i = begin; i < end; ++i) {
                     const detail::Simulation::TouchingContact& c = touchingIn[i];
-                    const int indexA = slots[c.bodyA].motion.solverIndex;
-                    const int indexB = slots[c.bodyB].motion.solverIndex;
+                    const int indexA = solverIndexOf[c.bodyA];
+                    const int indexB = solverIndexOf[c.bodyB];
                     if (indexA == kNullIndex && indexB == kNullIndex) {
                         continue;
                     }
