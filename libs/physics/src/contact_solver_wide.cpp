@@ -261,17 +261,6 @@ int hitLanes(const WideConstraintT<8>& group, const WideImpactT<8>& impact, floa
 #endif
 }
 
-void copyWideImpulses(const WideContacts& wide, int group, ConstraintImpulses* const* out) {
-    const auto g = static_cast<std::size_t>(group);
-#if defined(E2D_HAS_WIDE8)
-    if (wide.lanes == 8) {
-        lanes8::copyImpulses(wide.constraints8[g], out);
-        return;
-    }
-#endif
-    lanes4::copyImpulses(wide.constraints4[g], out);
-}
-
 int prepareWideGroup(WideContacts& wide, int group, const WideGatherT<4>& in,
                      std::span<BodyState> states) {
     const auto g = static_cast<std::size_t>(group);

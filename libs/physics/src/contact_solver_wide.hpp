@@ -6,7 +6,6 @@
 #include "wide_lanes.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -166,9 +165,6 @@ struct WideGatherT {
     int indexA[N]; // ContactBodyView::stateIndex
     int indexB[N];
     float friction[N];
-    // Room for the rows of static sides, lane k's A side at 2 k, its B side at 2 k + 1 (the
-    // caller's to fill; kept with the lanes so that each group does not initialise its own).
-    ContactBodyRow staticSides[2 * N];
 
     // An empty lane: no bodies, no points; it packs as ContactConstraint{} does.
     void clearLane(int lane) {
@@ -228,33 +224,15 @@ struct WideLaneHit {
     float maxNormalImpulse[2];
 };
 
-// A packed constraint's impulses as the passes leave them, per point (a missing point's are
-// zero): what goes back to its manifold for next step's warm start. One row of four floats,
-// {normal, tangent} of each point, as the lanes transpose into it.
-struct alignas(16) ConstraintImpulses {
-    struct Point {
-        float normalImpulse = 0.0f;
-        float tangentImpulse = 0.0f;
-    };
-    Point points[2];
-};
-static_assert(sizeof(ConstraintImpulses) == 16, "ConstraintImpulses must stay one row");
-
-// Copies the impulses of group `group`'s lanes to *out[lane] (wide.lanes pointers; an empty
-// lane's anywhere writable).
-void copyWideImpulses(const WideContacts& wide, int group, ConstraintImpulses* const* out);
-
-// Takes what the step leaves in each packed constraint of levels [firstLevel, endLevel): its
-// impulses go to impulses[slotConstraint[slot]], slot being the constraint's place in level
-// order (level k holds slots [levelStart[k], levelStart[k + 1])), and hit(slot, WideLaneHit)
-// is called for the lanes that may hit, in slot order. hitThreshold: the approach speed above
-// which a lane may hit. The caller puts the impulses in the manifolds afterwards, in contact
-// order: visited in slot order (colour by colour, scattered over the contacts) the contacts
-// cost a cache miss or two each on a large pile, while the impulses' rows stay in cache.
-template <class Hit>
-void takeWideImpulses(const WideContacts& wide, std::span<const int> levelStart,
-                      std::span<const int> slotConstraint, int firstLevel, int endLevel,
-                      float hitThreshold, std::span<ConstraintImpulses> impulses, Hit&& hit);
+// Stores what the step leaves in each packed constraint of levels [firstLevel, endLevel): its
+// impulses go to its manifold, manifoldOf(slot) (a Manifold&, the one it was prepared from,
+// for next step's warm start; its points only), and hit(slot, manifold, WideLaneHit) is
+// called for the lanes that may hit, slot being the constraint's place in level order (level
+// k holds slots [levelStart[k], levelStart[k + 1])), in slot order. hitThreshold: the
+// approach speed above which a lane may hit.
+template <class ManifoldOf, class Hit>
+void storeWideImpulses(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
+                       int endLevel, float hitThreshold, ManifoldOf&& manifoldOf, Hit&& hit);
 
 // warmStartContacts() and solveContacts() over every packed constraint, level after level
 // (backward: last level first; reversePoints: each constraint's points last to first), on the
@@ -272,11 +250,10 @@ void solveWide(WideContacts& wide, int firstLevel, int endLevel, float invH, boo
                float pushMaxSpeed, bool backward, bool reversePoints);
 
 // The same over the groups [groupBegin, groupEnd) of level `level` only.
-template <class Hit>
-void takeWideImpulsesOfGroups(const WideContacts& wide, std::span<const int> levelStart,
-                              std::span<const int> slotConstraint, int level, int groupBegin,
-                              int groupEnd, float hitThreshold,
-                              std::span<ConstraintImpulses> impulses, Hit&& hit);
+template <class ManifoldOf, class Hit>
+void storeWideImpulsesOfGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
+                               int groupBegin, int groupEnd, float hitThreshold,
+                               ManifoldOf&& manifoldOf, Hit&& hit);
 
 // warmStartWide() and solveWide() over the packed groups [groupBegin, groupEnd) of one level
 // (its constraints share no moving body: any part of a level may run while another worker
@@ -290,40 +267,50 @@ void solveWideGroups(WideContacts& wide, int groupBegin, int groupEnd, float inv
 int hitLanes(const WideConstraintT<4>& group, const WideImpactT<4>& impact, float threshold);
 int hitLanes(const WideConstraintT<8>& group, const WideImpactT<8>& impact, float threshold);
 
-template <class Hit>
-void takeWideImpulsesOfGroups(const WideContacts& wide, std::span<const int> levelStart,
-                              std::span<const int> slotConstraint, int level, int groupBegin,
-                              int groupEnd, float hitThreshold,
-                              std::span<ConstraintImpulses> impulses, Hit&& hit) {
+namespace wide_detail {
+
+// Stores group g's lanes, the first holding slot `first`, up to slot `end`.
+template <int N, class ManifoldOf, class Hit>
+[[gnu::always_inline]] inline void storeGroup(const std::vector<WideConstraintT<N>>& groups,
+                                              const std::vector<WideImpactT<N>>& impacts, int g,
+                                              int first, int end, float hitThreshold,
+                                              ManifoldOf& manifoldOf, Hit& hit) {
+    const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
+    const WideImpactT<N>& impact = impacts[static_cast<std::size_t>(g)];
+    // The world's test for a hit, on all lanes at once (missing points have no impulse).
+    const int mayHit = hitLanes(w, impact, hitThreshold);
+    const int used = std::min(N, end - first);
+    for (int lane = 0; lane < used; ++lane) {
+        Manifold& m = manifoldOf(first + lane);
+        for (int i = 0; i < m.pointCount; ++i) {
+            m.points[i].normalImpulse = w.points[i].normalImpulse[lane];
+            m.points[i].tangentImpulse = w.points[i].tangentImpulse[lane];
+        }
+        if (((mayHit >> lane) & 1) != 0) {
+            WideLaneHit h;
+            for (int i = 0; i < 2; ++i) {
+                h.relativeVelocity[i] = impact.relativeVelocity[i][lane];
+                h.maxNormalImpulse[i] = w.points[i].maxNormalImpulse[lane];
+            }
+            hit(first + lane, static_cast<const Manifold&>(m), h);
+        }
+    }
+}
+
+} // namespace wide_detail
+
+template <class ManifoldOf, class Hit>
+void storeWideImpulsesOfGroups(const WideContacts& wide, std::span<const int> levelStart, int level,
+                               int groupBegin, int groupEnd, float hitThreshold,
+                               ManifoldOf&& manifoldOf, Hit&& hit) {
     const auto at = static_cast<std::size_t>(level);
     const int end = levelStart[at + 1];
     auto run = [&](const auto& groups, const auto& impacts, auto lanes) {
         constexpr int N = decltype(lanes)::value;
-        ConstraintImpulses sink; // an empty lane's
-        ConstraintImpulses* out[N];
         for (int g = groupBegin; g < groupEnd; ++g) {
-            const int first = levelStart[at] + (g - wide.levelStart[at]) * N;
-            const int used = std::min(N, end - first);
-            for (int lane = 0; lane < N; ++lane) {
-                out[lane] = lane < used
-                                ? &impulses[static_cast<std::size_t>(
-                                      slotConstraint[static_cast<std::size_t>(first + lane)])]
-                                : &sink;
-            }
-            copyWideImpulses(wide, g, out);
-            const WideConstraintT<N>& w = groups[static_cast<std::size_t>(g)];
-            const WideImpactT<N>& impact = impacts[static_cast<std::size_t>(g)];
-            // The world's test for a hit, on all lanes at once (missing points have no impulse).
-            const int mayHit = hitLanes(w, impact, hitThreshold) & ((1 << used) - 1);
-            for (int bits = mayHit; bits != 0; bits &= bits - 1) {
-                const int lane = std::countr_zero(static_cast<unsigned>(bits));
-                WideLaneHit h;
-                for (int i = 0; i < 2; ++i) {
-                    h.relativeVelocity[i] = impact.relativeVelocity[i][lane];
-                    h.maxNormalImpulse[i] = w.points[i].maxNormalImpulse[lane];
-                }
-                hit(first + lane, h);
-            }
+            wide_detail::storeGroup<N>(groups, impacts, g,
+                                       levelStart[at] + (g - wide.levelStart[at]) * N, end,
+                                       hitThreshold, manifoldOf, hit);
         }
     };
     if (wide.lanes == 8) {
@@ -333,14 +320,13 @@ void takeWideImpulsesOfGroups(const WideContacts& wide, std::span<const int> lev
     }
 }
 
-template <class Hit>
-void takeWideImpulses(const WideContacts& wide, std::span<const int> levelStart,
-                      std::span<const int> slotConstraint, int firstLevel, int endLevel,
-                      float hitThreshold, std::span<ConstraintImpulses> impulses, Hit&& hit) {
+template <class ManifoldOf, class Hit>
+void storeWideImpulses(const WideContacts& wide, std::span<const int> levelStart, int firstLevel,
+                       int endLevel, float hitThreshold, ManifoldOf&& manifoldOf, Hit&& hit) {
     for (int level = firstLevel; level < endLevel; ++level) {
         const auto at = static_cast<std::size_t>(level);
-        takeWideImpulsesOfGroups(wide, levelStart, slotConstraint, level, wide.levelStart[at],
-                                 wide.levelStart[at + 1], hitThreshold, impulses, hit);
+        storeWideImpulsesOfGroups(wide, levelStart, level, wide.levelStart[at],
+                                  wide.levelStart[at + 1], hitThreshold, manifoldOf, hit);
     }
 }
 

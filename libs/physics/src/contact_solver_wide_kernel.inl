@@ -468,16 +468,6 @@ E2D_WIDE_FN int hitLanes(const Constraint& c, const Impact& im, float threshold)
     return laneBits(mayHit);
 }
 
-// The impulses of `c`'s lanes to *out[lane], one row each (copyWideImpulses()).
-E2D_WIDE_FN void copyImpulses(const Constraint& c, ConstraintImpulses* const* out) {
-    static_assert(offsetof(ConstraintImpulses, points[0].tangentImpulse) == 4 &&
-                      offsetof(ConstraintImpulses, points[1].normalImpulse) == 8 &&
-                      offsetof(ConstraintImpulses, points[1].tangentImpulse) == 12,
-                  "copyImpulses() writes ConstraintImpulses as one row of four floats");
-    storeRows(c.points[0].normalImpulse, c.points[0].tangentImpulse, c.points[1].normalImpulse,
-              c.points[1].tangentImpulse, out);
-}
-
 #undef E2D_WIDE_INLINE
 
 // --- Prepare: prepareContact(), prepareBlock() and packLane() on every lane at once ---

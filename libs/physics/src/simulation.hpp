@@ -254,9 +254,8 @@ struct Simulation {
     WideContacts wideContacts;
     // Blocks of islands (World::Impl::scheduleWide()): per body a union-find parent and its
     // block, per island root its constraint count and block, per constraint its island root;
-    // block b's levels [blockLevelStart[b], blockLevelStart[b + 1]), bodies
-    // blockBodies[blockBodyStart[b] .. blockBodyStart[b + 1]) and constraints, in constraint
-    // order, blockConstraints[blockConstraintStart[b] .. blockConstraintStart[b + 1]).
+    // block b's levels [blockLevelStart[b], blockLevelStart[b + 1]) and bodies
+    // blockBodies[blockBodyStart[b] .. blockBodyStart[b + 1]).
     std::vector<int> blockParent;
     std::vector<int> bodyBlock;
     std::vector<int> islandConstraints;
@@ -265,11 +264,6 @@ struct Simulation {
     std::vector<int> blockLevelStart;
     std::vector<int> blockBodyStart;
     std::vector<int> blockBodies;
-    std::vector<int> blockConstraintStart;
-    std::vector<int> blockConstraints;
-    // Per constraint, its impulses as a block's solve leaves them, on their way to its
-    // contact's manifold (World::Impl::solve()).
-    std::vector<ConstraintImpulses> constraintImpulses;
     std::vector<unsigned char> blockRigid; // per block: a constraint with a rigid state
     // The schedule above depends on nothing but the constraints (contacts and sides) and which
     // states are rigid. wideScheduleValid: it was built from the last solve's

@@ -17,8 +17,8 @@
 // hinges): the vector types of four and eight lanes and, per width, splat, select, maxOf,
 // anyLane, allLanes, laneBits, laneMaskOf, lanesOf and bodiesAt (where each lane reads and
 // writes its body), transposeRows, and loadRows/storeRows, which gather BodyStates (or any
-// rows of four floats, one per lane) into lane vectors and scatter them back with shuffles
-// only. Four lanes everywhere (SSE2 on x86-64, NEON on ARM64, plain scalar code where
+// rows of four floats, one per lane) into lane vectors and scatter BodyStates back with
+// shuffles only. Four lanes everywhere (SSE2 on x86-64, NEON on ARM64, plain scalar code where
 // the target has no SIMD); eight on x86-64 (AVX2, E2D_HAS_WIDE8), for code
 // that checked the CPU at run time. No "fma" in the target: a fused multiply-add rounds once
 // where the scalar code rounds twice, so every width gives the scalar results.
@@ -91,10 +91,8 @@ inline Float4 loadRow(const T* s, std::size_t offset) {
     return row;
 }
 
-// Row `row` to the first 16 bytes of *s (a BodyState, or any trivially copyable object).
-template <class T>
-inline void storeRow(T& s, Float4 row) {
-    static_assert(sizeof(T) >= sizeof row);
+inline void storeRow(BodyState& s, Float4 row) {
+    // BodyState is trivially copyable: its first row takes the lane whole.
     std::memcpy(reinterpret_cast<unsigned char*>(&s), &row, sizeof row);
 }
 
@@ -163,8 +161,7 @@ inline void loadRows(const T* const* s, std::size_t offset, F& c0, F& c1, F& c2,
                   loadRow(s[3], offset), c0, c1, c2, c3);
 }
 
-template <class T>
-inline void storeRows(F c0, F c1, F c2, F c3, T* const* out) {
+inline void storeRows(F c0, F c1, F c2, F c3, BodyState* const* out) {
     F r0, r1, r2, r3;
     transposeRows(c0, c1, c2, c3, r0, r1, r2, r3);
     storeRow(*out[0], r0);
@@ -222,15 +219,12 @@ E2D_AVX2_FN void loadRows(const T* const* s, std::size_t offset, F& c0, F& c1, F
 }
 
 // Row k to lane k (low half) and lane k + 4 (high half): one store each.
-template <class T>
-E2D_AVX2_FN void splitRow(F row, T* low, T* high) {
-    static_assert(sizeof(T) >= 16);
+E2D_AVX2_FN void splitRow(F row, BodyState* low, BodyState* high) {
     _mm_storeu_ps(reinterpret_cast<float*>(low), _mm256_castps256_ps128(row));
     _mm_storeu_ps(reinterpret_cast<float*>(high), _mm256_extractf128_ps(row, 1));
 }
 
-template <class T>
-E2D_AVX2_FN void storeRows(F c0, F c1, F c2, F c3, T* const* out) {
+E2D_AVX2_FN void storeRows(F c0, F c1, F c2, F c3, BodyState* const* out) {
     F r0, r1, r2, r3;
     transposeRows(c0, c1, c2, c3, r0, r1, r2, r3);
     splitRow(r0, out[0], out[4]);

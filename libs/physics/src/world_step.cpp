@@ -212,26 +212,6 @@ void World::Impl::scheduleWide(int constraintCount) {
         s.blockBodies[static_cast<std::size_t>(
             s.levelNext[static_cast<std::size_t>(s.bodyBlock[i])]++)] = static_cast<int>(i);
     }
-
-    // The constraints by block, in constraint order within a block.
-    s.blockConstraintStart.assign(static_cast<std::size_t>(blockCount) + 2, 0);
-    auto blockOf = [&](std::size_t k) {
-        return static_cast<std::size_t>(
-            s.islandBlock[static_cast<std::size_t>(s.constraintIsland[k])]);
-    };
-    for (std::size_t k = 0; k < count; ++k) {
-        ++s.blockConstraintStart[blockOf(k) + 1];
-    }
-    for (int b = 0; b <= blockCount; ++b) {
-        s.blockConstraintStart[static_cast<std::size_t>(b) + 1] +=
-            s.blockConstraintStart[static_cast<std::size_t>(b)];
-    }
-    s.levelNext.assign(s.blockConstraintStart.begin(), s.blockConstraintStart.end() - 1);
-    s.blockConstraints.resize(count);
-    for (std::size_t k = 0; k < count; ++k) {
-        s.blockConstraints[static_cast<std::size_t>(s.levelNext[blockOf(k)]++)] =
-            static_cast<int>(k);
-    }
 }
 
 void World::Impl::solve(float dt) {
@@ -593,12 +573,13 @@ void World::Impl::solve(float dt) {
             const int* const slotContact = s.slotContact.data();
             const detail::Simulation::ConstraintBodies* const slotBodies = s.slotBodies.data();
             // A static (or asleep) side's row: viewOf()'s centre offset, no velocity, no mass.
+            detail::ContactBodyRow staticRows[2 * N];
             auto sideRow = [&](int lane, int side, int bodyIndex,
                                int solverIndex) -> const detail::ContactBodyRow* {
                 if (solverIndex != kNullIndex) {
                     return rows + solverIndex;
                 }
-                detail::ContactBodyRow& row = in.staticSides[2 * lane + side];
+                detail::ContactBodyRow& row = staticRows[2 * lane + side];
                 row = {.centerOffset = viewOf(bodyIndex, kNullIndex).centerOffset};
                 return &row;
             };
@@ -665,37 +646,19 @@ void World::Impl::solve(float dt) {
                           return x.constraint < y.constraint;
                       });
         };
+        // Where a slot's impulses go (detail::storeWideImpulses()): its contact's manifold.
+        auto manifoldOfSlot = [&](int slot) -> Manifold& {
+            prefetchContact(slot);
+            return s
+                .contacts[static_cast<std::size_t>(s.slotContact[static_cast<std::size_t>(slot)])]
+                .manifold;
+        };
         // A slot's hit, noted in `hits`.
         auto hitOfSlot = [&](std::vector<detail::Simulation::HitCandidate>& hits) {
-            return [&, out = &hits](int slot, const detail::WideLaneHit& h) {
-                const int contact = s.slotContact[static_cast<std::size_t>(slot)];
-                noteHit(*out, contact,
-                        s.contacts[static_cast<std::size_t>(contact)].manifold.pointCount,
+            return [&, out = &hits](int slot, const Manifold& m, const detail::WideLaneHit& h) {
+                noteHit(*out, s.slotContact[static_cast<std::size_t>(slot)], m.pointCount,
                         h.relativeVelocity, h.maxNormalImpulse);
             };
-        };
-        // The impulses of block b's constraints [begin, end) (in its list,
-        // Simulation::blockConstraints) to their manifolds for next step's warm start, their
-        // points only, as detail::takeWideImpulses() left them: in constraint order, so that the
-        // contacts are written in array order.
-        s.constraintImpulses.resize(static_cast<std::size_t>(constraintCount));
-        auto storeImpulses = [&](std::size_t b, int begin, int end) {
-            const int* const list = s.blockConstraints.data() + s.blockConstraintStart[b];
-            const detail::ConstraintImpulses* const impulses = s.constraintImpulses.data();
-            const int* const contactOf = s.constraintContacts.data();
-            detail::Contact* const contacts = s.contacts.data();
-            for (int i = begin; i < end; ++i) {
-                const int k = list[i];
-                Manifold& m = contacts[contactOf[k]].manifold;
-                const detail::ConstraintImpulses& p = impulses[k];
-                for (int j = 0; j < m.pointCount; ++j) {
-                    m.points[j].normalImpulse = p.points[j].normalImpulse;
-                    m.points[j].tangentImpulse = p.points[j].tangentImpulse;
-                }
-            }
-        };
-        auto constraintsIn = [&](std::size_t b) {
-            return s.blockConstraintStart[b + 1] - s.blockConstraintStart[b];
         };
         const std::span<const int> blockBodies = s.blockBodies;
         auto bodiesOf = [&](std::size_t b) {
@@ -768,16 +731,13 @@ void World::Impl::solve(float dt) {
                     for (int g = groupBegin + begin; g < groupBegin + end;) {
                         const int levelEnd = std::min(
                             groupStart[static_cast<std::size_t>(level) + 1], groupBegin + end);
-                        detail::takeWideImpulsesOfGroups(
-                            s.wideContacts, s.levelStart, s.slotConstraint, level, g, levelEnd,
-                            def.hitEventThreshold, s.constraintImpulses, hit);
+                        detail::storeWideImpulsesOfGroups(s.wideContacts, s.levelStart, level, g,
+                                                          levelEnd, def.hitEventThreshold,
+                                                          manifoldOfSlot, hit);
                         g = levelEnd;
                         ++level;
                     }
                 });
-            tasks.parallelFor(
-                constraintsIn(b), kGroupsPerPiece * s.wideContacts.lanes,
-                [&](int begin, int end, int /*worker*/) { storeImpulses(b, begin, end); });
             if (impacts) {
                 s.impacts.apply(s);
             }
@@ -816,10 +776,9 @@ void World::Impl::solve(float dt) {
                           .subspan(static_cast<std::size_t>(s.blockJointStart[b]),
                                    static_cast<std::size_t>(s.blockJointStart[b + 1] -
                                                             s.blockJointStart[b])));
-            detail::takeWideImpulses(s.wideContacts, s.levelStart, s.slotConstraint, firstLevel,
-                                     endLevel, def.hitEventThreshold, s.constraintImpulses,
-                                     hitOfSlot(worker.hits));
-            storeImpulses(b, 0, constraintsIn(b));
+            detail::storeWideImpulses(s.wideContacts, s.levelStart, firstLevel, endLevel,
+                                      def.hitEventThreshold, manifoldOfSlot,
+                                      hitOfSlot(worker.hits));
             if (impacts) {
                 worker.impacts.apply(s);
             }
