@@ -165,6 +165,9 @@ struct WideGatherT {
     int indexA[N]; // ContactBodyView::stateIndex
     int indexB[N];
     float friction[N];
+    // Room for the rows of static sides, lane k's A side at 2 k, its B side at 2 k + 1 (the
+    // caller's to fill; kept with the lanes so that each group does not initialise its own).
+    ContactBodyRow staticSides[2 * N];
 
     // An empty lane: no bodies, no points; it packs as ContactConstraint{} does.
     void clearLane(int lane) {

@@ -573,13 +573,12 @@ void World::Impl::solve(float dt) {
             const int* const slotContact = s.slotContact.data();
             const detail::Simulation::ConstraintBodies* const slotBodies = s.slotBodies.data();
             // A static (or asleep) side's row: viewOf()'s centre offset, no velocity, no mass.
-            detail::ContactBodyRow staticRows[2 * N];
             auto sideRow = [&](int lane, int side, int bodyIndex,
                                int solverIndex) -> const detail::ContactBodyRow* {
                 if (solverIndex != kNullIndex) {
                     return rows + solverIndex;
                 }
-                detail::ContactBodyRow& row = staticRows[2 * lane + side];
+                detail::ContactBodyRow& row = in.staticSides[2 * lane + side];
                 row = {.centerOffset = viewOf(bodyIndex, kNullIndex).centerOffset};
                 return &row;
             };
