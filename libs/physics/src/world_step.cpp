@@ -543,15 +543,15 @@ void World::Impl::solve(float dt) {
         // do not fit in the cache, fetch the ones a few slots ahead: the lines the solver reads
         // (Contact::kSolverBytes), not the whole contact. (Always inlined: GCC deletes a call to
         // a function that only prefetches, see prefetch.hpp.)
+        // prefetchEnd: the slots before it fetch (zero: none).
         constexpr int kPrefetchAhead = 16;
-        const bool prefetchContacts =
-            s.contacts.size() * sizeof(detail::Contact) > detail::kPrefetchBytes;
-        auto prefetchContact = [&](int slot) __attribute__((always_inline)) {
-            if (prefetchContacts && slot + kPrefetchAhead < constraintCount) {
-                detail::prefetchFirst<detail::Contact::kSolverBytes>(
-                    &s.contacts[static_cast<std::size_t>(
-                        s.slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)])]);
-            }
+        const int prefetchEnd = s.contacts.size() * sizeof(detail::Contact) > detail::kPrefetchBytes
+                                    ? constraintCount - kPrefetchAhead
+                                    : 0;
+        auto prefetchContact = [](const detail::Contact* contacts, const int* slotContact, int slot)
+            __attribute__((always_inline)) {
+            detail::prefetchFirst<detail::Contact::kSolverBytes>(
+                contacts + slotContact[static_cast<std::size_t>(slot + kPrefetchAhead)]);
         };
         // Group `group` of level `level`: where its constraints' manifolds and bodies are,
         // gathered lane by lane, then prepared all at once (prepareWideGroup()), right before
@@ -572,6 +572,7 @@ void World::Impl::solve(float dt) {
             const detail::Contact* const contacts = s.contacts.data();
             const int* const slotContact = s.slotContact.data();
             const detail::Simulation::ConstraintBodies* const slotBodies = s.slotBodies.data();
+            const int prefetchBefore = prefetchEnd;
             // A static (or asleep) side's row: viewOf()'s centre offset, no velocity, no mass.
             auto sideRow = [&](int lane, int side, int bodyIndex,
                                int solverIndex) -> const detail::ContactBodyRow* {
@@ -585,7 +586,9 @@ void World::Impl::solve(float dt) {
             const int used = std::min(N, levelEnd - first);
             for (int lane = 0; lane < used; ++lane) {
                 const int slot = first + lane;
-                prefetchContact(slot);
+                if (slot < prefetchBefore) {
+                    prefetchContact(contacts, slotContact, slot);
+                }
                 const auto at = static_cast<std::size_t>(slot);
                 const detail::Contact& c = contacts[slotContact[at]];
                 const detail::Simulation::ConstraintBodies sides = slotBodies[at];
@@ -647,7 +650,9 @@ void World::Impl::solve(float dt) {
         };
         // Where a slot's impulses go (detail::storeWideImpulses()): its contact's manifold.
         auto manifoldOfSlot = [&](int slot) -> Manifold& {
-            prefetchContact(slot);
+            if (slot < prefetchEnd) {
+                prefetchContact(s.contacts.data(), s.slotContact.data(), slot);
+            }
             return s
                 .contacts[static_cast<std::size_t>(s.slotContact[static_cast<std::size_t>(slot)])]
                 .manifold;
