@@ -649,13 +649,13 @@ void World::Impl::solve(float dt) {
                       });
         };
         // Where a slot's impulses go (detail::storeWideImpulses()): its contact's manifold.
-        auto manifoldOfSlot = [&](int slot) -> Manifold& {
+        // (The arrays by value: through the world the compiler loaded them again for each lane.)
+        auto manifoldOfSlot = [contacts = s.contacts.data(), slotContact = s.slotContact.data(),
+                               prefetchEnd, prefetchContact](int slot) -> Manifold& {
             if (slot < prefetchEnd) {
-                prefetchContact(s.contacts.data(), s.slotContact.data(), slot);
+                prefetchContact(contacts, slotContact, slot);
             }
-            return s
-                .contacts[static_cast<std::size_t>(s.slotContact[static_cast<std::size_t>(slot)])]
-                .manifold;
+            return contacts[slotContact[static_cast<std::size_t>(slot)]].manifold;
         };
         // A slot's hit, noted in `hits`.
         auto hitOfSlot = [&](std::vector<detail::Simulation::HitCandidate>& hits) {
