@@ -40,9 +40,6 @@ struct BodySim {
     Vec2 center0{0.0f, 0.0f}; // centre of mass at the start of the step
     Rot rotation0{};          // rotation at the start of the step
     Vec2 localCenter{0.0f, 0.0f};
-    // rotate(rotation0, localCenter): the centre of mass from the origin, world axes, at the
-    // start of the step (what each contact's constraint build reads of the body).
-    Vec2 centerOffset{0.0f, 0.0f};
     // What the float centre at the end of the step cannot hold (BodyMotion::positionResidual),
     // set by finalizePositions().
     Vec2 positionResidual{0.0f, 0.0f};
@@ -68,13 +65,14 @@ struct BodySim {
     float angularDampingFactor = 1.0f;
 };
 
-// What building a contact's constraint reads of an awake moving side (prepareWideGroup()), one
-// row per body in BodyState order, written with the body's BodySim and BodyState: its velocity
-// as the step begins (the BodyState's until the body's block is solved), inverse mass and
-// inertia, and centre offset (BodySim::centerOffset). The build visits the bodies in colour
-// order, scattered: here it reads one cache line a side, where the BodySim's fields (spread over
-// two of its three lines) and the BodyState took two or three. Two rows of four floats:
-// {vx, vy, w, invInertia} and {centerOffset, invMass}.
+// What building a contact's constraint reads of an awake moving side (prepareWideGroup(), the
+// world's ContactBodyView), one row per body in BodyState order, written with the body's BodySim
+// and BodyState: its velocity as the step begins (the BodyState's until the body's block is
+// solved), inverse mass and inertia (the BodySim's), and centre offset: rotate(rotation0,
+// localCenter), the centre of mass from the origin in world axes at the start of the step. The
+// build visits the bodies in colour order, scattered: here it reads one cache line a side, where
+// the BodySim's fields (spread over two of its three lines) and the BodyState took two or three.
+// Two rows of four floats: {vx, vy, w, invInertia} and {centerOffset, invMass}.
 struct alignas(32) ContactBodyRow {
     Vec2 linearVelocity{0.0f, 0.0f};
     float angularVelocity = 0.0f;

@@ -282,7 +282,6 @@ void World::Impl::solve(float dt) {
                 .center0 = center,
                 .rotation0 = b.transform.q,
                 .localCenter = m.localCenter,
-                .centerOffset = centerOffset,
                 .force = m.force,
                 .torque = m.torque,
                 .invMass = invMass,
@@ -337,14 +336,14 @@ void World::Impl::solve(float dt) {
             return detail::ContactBodyView{.centerOffset =
                                                rotate(b.transform.q, b.motion.localCenter)};
         }
-        // The step's copy of the body (its centre offset rotated once for all its contacts).
-        const detail::BodySim& bs = s.sims[static_cast<std::size_t>(solverIndex)];
-        const detail::BodyState& st = s.states[static_cast<std::size_t>(solverIndex)];
-        return detail::ContactBodyView{.centerOffset = bs.centerOffset,
-                                       .linearVelocity = st.linearVelocity,
-                                       .angularVelocity = st.angularVelocity,
-                                       .invMass = bs.invMass,
-                                       .invInertia = bs.invInertia,
+        // The step's copy of the body (its centre offset rotated once for all its contacts), as
+        // the step begins: contacts are prepared before any solve moves their bodies.
+        const detail::ContactBodyRow& row = s.contactRows[static_cast<std::size_t>(solverIndex)];
+        return detail::ContactBodyView{.centerOffset = row.centerOffset,
+                                       .linearVelocity = row.linearVelocity,
+                                       .angularVelocity = row.angularVelocity,
+                                       .invMass = row.invMass,
+                                       .invInertia = row.invInertia,
                                        .stateIndex = solverIndex};
     };
     auto isRigid = [](const detail::ContactBodyView& v) {
