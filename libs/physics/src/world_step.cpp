@@ -572,17 +572,11 @@ void World::Impl::solve(float dt) {
             const int* const slotContact = s.slotContact.data();
             const detail::Simulation::ConstraintBodies* const slotBodies = s.slotBodies.data();
             const int prefetchBefore = prefetchEnd;
-            // A static (or asleep) side's row: viewOf()'s centre offset, no velocity, no mass.
-            auto sideRow = [&](int lane, int side, int bodyIndex,
-                               int solverIndex) -> const detail::ContactBodyRow* {
-                if (solverIndex != kNullIndex) {
-                    return rows + solverIndex;
-                }
-                detail::ContactBodyRow& row = in.staticSides[2 * lane + side];
-                row = {.centerOffset = viewOf(bodyIndex, kNullIndex).centerOffset};
-                return &row;
-            };
+            // The lanes' common case first, in a loop without calls: a moving side's row, and
+            // which lanes have a static (or asleep) side or restitution, handled after it.
             const int used = std::min(N, levelEnd - first);
+            int staticLanes = 0;
+            int restitutionLanes = 0;
             for (int lane = 0; lane < used; ++lane) {
                 const int slot = first + lane;
                 if (slot < prefetchBefore) {
@@ -595,14 +589,36 @@ void World::Impl::solve(float dt) {
                 in.indexA[lane] = sides.indexA;
                 in.indexB[lane] = sides.indexB;
                 in.friction[lane] = c.friction;
-                in.sideA[lane] = sideRow(lane, 0, c.bodyA, sides.indexA);
-                in.sideB[lane] = sideRow(lane, 1, c.bodyB, sides.indexB);
-                if (c.restitution != 0.0f) {
-                    restitution.push_back(
-                        {level, slot - levelFirst, c.manifold.pointCount, c.restitution,
-                         pressOf(c, viewOf(c.bodyA, sides.indexA), viewOf(c.bodyB, sides.indexB)),
-                         s.slotConstraint[at]});
+                in.sideA[lane] = rows + std::max(sides.indexA, 0);
+                in.sideB[lane] = rows + std::max(sides.indexB, 0);
+                staticLanes |= (sides.indexA < 0 || sides.indexB < 0 ? 1 : 0) << lane;
+                restitutionLanes |= (c.restitution != 0.0f ? 1 : 0) << lane;
+            }
+            // A static side's row: viewOf()'s centre offset, no velocity, no mass.
+            for (int bits = staticLanes; bits != 0; bits &= bits - 1) {
+                const int lane = std::countr_zero(static_cast<unsigned>(bits));
+                const detail::Contact& c =
+                    contacts[slotContact[static_cast<std::size_t>(first + lane)]];
+                if (in.indexA[lane] < 0) {
+                    detail::ContactBodyRow& row = in.staticSides[2 * lane];
+                    row = {.centerOffset = viewOf(c.bodyA, kNullIndex).centerOffset};
+                    in.sideA[lane] = &row;
                 }
+                if (in.indexB[lane] < 0) {
+                    detail::ContactBodyRow& row = in.staticSides[2 * lane + 1];
+                    row = {.centerOffset = viewOf(c.bodyB, kNullIndex).centerOffset};
+                    in.sideB[lane] = &row;
+                }
+            }
+            for (int bits = restitutionLanes; bits != 0; bits &= bits - 1) {
+                const int lane = std::countr_zero(static_cast<unsigned>(bits));
+                const int slot = first + lane;
+                const auto at = static_cast<std::size_t>(slot);
+                const detail::Contact& c = contacts[slotContact[at]];
+                restitution.push_back(
+                    {level, slot - levelFirst, c.manifold.pointCount, c.restitution,
+                     pressOf(c, viewOf(c.bodyA, in.indexA[lane]), viewOf(c.bodyB, in.indexB[lane])),
+                     s.slotConstraint[at]});
             }
             for (int lane = used; lane < N; ++lane) {
                 in.clearLane(lane);
