@@ -37,10 +37,11 @@ const Circle& knownCircle(const detail::Shape& s) {
     return *std::get_if<Circle>(&s.geometry);
 }
 
-// Contact::proxyKeyA, proxyKeyB and circles from the contact's shapes.
-void copyShapes(detail::Contact& c, const detail::Shape& a, const detail::Shape& b) {
-    c.proxyKeyA = a.proxyKey;
-    c.proxyKeyB = b.proxyKey;
+// ContactLinks::proxyKeyA, proxyKeyB and Contact::circles from the contact's shapes.
+void copyShapes(detail::Contact& c, detail::ContactLinks& l, const detail::Shape& a,
+                const detail::Shape& b) {
+    l.proxyKeyA = a.proxyKey;
+    l.proxyKeyB = b.proxyKey;
     c.circles = a.geometry.index() == kCircleIndex && b.geometry.index() == kCircleIndex;
 }
 
@@ -55,18 +56,21 @@ void World::Impl::createContact(int shapeA, int shapeB) {
     } else {
         ci = static_cast<int>(s.contacts.size());
         s.contacts.emplace_back();
+        s.contactLinks.emplace_back();
     }
     const detail::Shape& a = shape(shapeA);
     const detail::Shape& b = shape(shapeB);
     detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
+    detail::ContactLinks& l = s.contactLinks[static_cast<std::size_t>(ci)];
     c = detail::Contact{};
-    c.shapeA = shapeA;
-    c.shapeB = shapeB;
+    l = detail::ContactLinks{};
+    l.shapeA = shapeA;
+    l.shapeB = shapeB;
     c.bodyA = a.body;
     c.bodyB = b.body;
-    copyShapes(c, a, b);
-    c.idA = shapeId(shapeA);
-    c.idB = shapeId(shapeB);
+    copyShapes(c, l, a, b);
+    l.idA = shapeId(shapeA);
+    l.idB = shapeId(shapeB);
     c.sensor = a.isSensor || b.isSensor;
     c.friction = detail::mixFriction(s.def, a.friction, b.friction);
     c.restitution = detail::mixRestitution(s.def, a.restitution, b.restitution);
@@ -77,11 +81,11 @@ void World::Impl::createContact(int shapeA, int shapeB) {
     c.alive = true;
     for (int side = 0; side < 2; ++side) {
         detail::BodyMotion& m = body(side == 0 ? c.bodyA : c.bodyB).motion;
-        c.prev[side] = kNullIndex;
-        c.next[side] = m.contactHead;
+        l.prev[side] = kNullIndex;
+        l.next[side] = m.contactHead;
         if (m.contactHead != kNullIndex) {
-            detail::Contact& head = s.contacts[static_cast<std::size_t>(m.contactHead)];
-            head.prev[sideOf(head, side == 0 ? c.bodyA : c.bodyB)] = ci;
+            const auto head = static_cast<std::size_t>(m.contactHead);
+            s.contactLinks[head].prev[sideOf(s.contacts[head], side == 0 ? c.bodyA : c.bodyB)] = ci;
         }
         m.contactHead = ci;
     }
@@ -89,9 +93,11 @@ void World::Impl::createContact(int shapeA, int shapeB) {
 }
 
 void World::Impl::copyContactShapes() {
-    for (detail::Contact& c : sim.contacts) {
+    for (std::size_t i = 0; i < sim.contacts.size(); ++i) {
+        detail::Contact& c = sim.contacts[i];
+        detail::ContactLinks& l = sim.contactLinks[i];
         if (c.alive) {
-            copyShapes(c, shape(c.shapeA), shape(c.shapeB));
+            copyShapes(c, l, shape(l.shapeA), shape(l.shapeB));
         }
     }
 }
@@ -99,27 +105,28 @@ void World::Impl::copyContactShapes() {
 void World::Impl::destroyContact(int contactIndex, bool reportEnd) {
     detail::Simulation& s = sim;
     detail::Contact& c = s.contacts[static_cast<std::size_t>(contactIndex)];
+    const detail::ContactLinks& l = s.contactLinks[static_cast<std::size_t>(contactIndex)];
     if (reportEnd && c.touching && c.touchEvents) {
         if (c.sensor) {
-            bool aIsSensor = shape(c.shapeA).isSensor;
+            bool aIsSensor = shape(l.shapeA).isSensor;
             (s.inStep ? s.sensorEndEvents : s.pendingSensorEndEvents)
-                .push_back(aIsSensor ? SensorEndTouchEvent{c.idA, c.idB}
-                                     : SensorEndTouchEvent{c.idB, c.idA});
+                .push_back(aIsSensor ? SensorEndTouchEvent{l.idA, l.idB}
+                                     : SensorEndTouchEvent{l.idB, l.idA});
         } else {
-            (s.inStep ? s.endEvents : s.pendingEndEvents).push_back({c.idA, c.idB});
+            (s.inStep ? s.endEvents : s.pendingEndEvents).push_back({l.idA, l.idB});
         }
     }
     for (int side = 0; side < 2; ++side) {
         int bodyIndex = side == 0 ? c.bodyA : c.bodyB;
-        if (c.prev[side] != kNullIndex) {
-            detail::Contact& p = s.contacts[static_cast<std::size_t>(c.prev[side])];
-            p.next[sideOf(p, bodyIndex)] = c.next[side];
+        if (l.prev[side] != kNullIndex) {
+            const auto p = static_cast<std::size_t>(l.prev[side]);
+            s.contactLinks[p].next[sideOf(s.contacts[p], bodyIndex)] = l.next[side];
         } else {
-            body(bodyIndex).motion.contactHead = c.next[side];
+            body(bodyIndex).motion.contactHead = l.next[side];
         }
-        if (c.next[side] != kNullIndex) {
-            detail::Contact& n = s.contacts[static_cast<std::size_t>(c.next[side])];
-            n.prev[sideOf(n, bodyIndex)] = c.prev[side];
+        if (l.next[side] != kNullIndex) {
+            const auto n = static_cast<std::size_t>(l.next[side]);
+            s.contactLinks[n].prev[sideOf(s.contacts[n], bodyIndex)] = l.prev[side];
         }
     }
     c.alive = false;
@@ -131,16 +138,17 @@ void World::Impl::destroyContacts(int shapeIndex) {
     int bodyIndex = shape(shapeIndex).body;
     int ci = body(bodyIndex).motion.contactHead;
     while (ci != kNullIndex) {
-        detail::Contact& c = sim.contacts[static_cast<std::size_t>(ci)];
-        int next = c.next[sideOf(c, bodyIndex)];
-        if (c.shapeA == shapeIndex || c.shapeB == shapeIndex) {
+        const detail::Contact& c = sim.contacts[static_cast<std::size_t>(ci)];
+        const detail::ContactLinks& l = sim.contactLinks[static_cast<std::size_t>(ci)];
+        int next = l.next[sideOf(c, bodyIndex)];
+        if (l.shapeA == shapeIndex || l.shapeB == shapeIndex) {
             int other = c.bodyA == bodyIndex ? c.bodyB : c.bodyA;
             // Whatever rested on this shape must notice it is gone.
             if (c.touching) {
                 wakeBody(other);
             }
-            broadPhase.removePair(static_cast<std::uint64_t>(c.shapeA),
-                                  static_cast<std::uint64_t>(c.shapeB));
+            broadPhase.removePair(static_cast<std::uint64_t>(l.shapeA),
+                                  static_cast<std::uint64_t>(l.shapeB));
             destroyContact(ci, true);
         }
         ci = next;
@@ -149,12 +157,16 @@ void World::Impl::destroyContacts(int shapeIndex) {
 
 namespace {
 
-// A contact's two bodies, as the narrow phase reads them, and the shape array (its shapes are
-// only looked at when the manifold is not recycled).
+// A contact's two bodies, as the narrow phase reads them, and its shapes (only looked at when
+// the manifold is not recycled: the links and the shape array).
 struct ContactSides {
+    const detail::ContactLinks& links;
     const detail::Shape* shapes;
     const detail::Body& ba;
     const detail::Body& bb;
+
+    const detail::Shape& shapeA() const { return shapes[links.shapeA]; }
+    const detail::Shape& shapeB() const { return shapes[links.shapeB]; }
 };
 
 // Recycling is for pairs of polygons and segments, whose routine (SAT or GJK/EPA and clipping)
@@ -195,7 +207,6 @@ void recordOrigin(detail::ManifoldOrigin& o, const Manifold& m, const detail::Bo
         o.surfaceA[i] = invRotate(xfA.q, mp.anchorA - half);
         o.surfaceB[i] = invRotate(xfB.q, mp.anchorB + half);
     }
-    o.valid = true;
 }
 
 #if defined(__SSE2__)
@@ -229,8 +240,8 @@ inline void storeHigh(Vec2& to, __m128 v) { _mm_storeh_pi(reinterpret_cast<__m64
 // How far any point of one body has moved relative to the other since the origin was noted, at
 // most: the translation of one body's origin in the other's frame plus the chord the relative
 // rotation turns the farthest point through (the smaller bound of the two ways round).
-// Computed in the lanes of ManifoldOrigin::frameX and frameY (A's origin in B's frame, B's
-// origin in A's frame, B's rotation in A's frame): x rows c u + s v, y rows c v - s u.
+// Computed in the lanes of ManifoldOrigin::frame's rows (A's origin in B's frame, B's origin in
+// A's frame, B's rotation in A's frame; lane 3 unused): x rows c u + s v, y rows c v - s u.
 inline float motionSince(const detail::ManifoldOrigin& o, const Transform& xfA,
                          const Transform& xfB) {
     const __m128 a = loadTransform(xfA);
@@ -243,9 +254,9 @@ inline float motionSince(const detail::ManifoldOrigin& o, const Transform& xfA,
     const __m128 c = lanes<1, 0, 0, 0>(q);                          // cB cA cA
     const __m128 s = lanes<3, 2, 2, 2>(q);                          // sB sA sA
     const __m128 x =
-        _mm_sub_ps(_mm_add_ps(_mm_mul_ps(c, u), _mm_mul_ps(s, v)), _mm_loadu_ps(o.frameX));
+        _mm_sub_ps(_mm_add_ps(_mm_mul_ps(c, u), _mm_mul_ps(s, v)), _mm_loadu_ps(o.frame));
     const __m128 y =
-        _mm_sub_ps(_mm_sub_ps(_mm_mul_ps(c, v), _mm_mul_ps(s, u)), _mm_loadu_ps(o.frameY));
+        _mm_sub_ps(_mm_sub_ps(_mm_mul_ps(c, v), _mm_mul_ps(s, u)), _mm_loadu_ps(o.frame + 3));
     // |A moved in B|, |B moved in A|, the chord; then + chord (extentA, extentB). std::min(b, a)
     // is minss(a, b), which keeps the second on a tie or a NaN as std::min does.
     const __m128 lengths = _mm_sqrt_ps(_mm_add_ps(_mm_mul_ps(x, x), _mm_mul_ps(y, y)));
@@ -417,11 +428,9 @@ inline void carryImpulses(Manifold& m, const OldPoints& old) {
 #endif
 
 // Whether a sensor contact's shapes overlap (a sensor keeps no manifold).
-bool sensorOverlaps(const detail::Contact& c, const ContactSides& sides,
-                    CollisionAlgorithm collisionAlgorithm) {
-    const Manifold m =
-        collide(sides.shapes[c.shapeA].geometry, sides.ba.transform,
-                sides.shapes[c.shapeB].geometry, sides.bb.transform, collisionAlgorithm, 0.0f);
+bool sensorOverlaps(const ContactSides& sides, CollisionAlgorithm collisionAlgorithm) {
+    const Manifold m = collide(sides.shapeA().geometry, sides.ba.transform, sides.shapeB().geometry,
+                               sides.bb.transform, collisionAlgorithm, 0.0f);
     return m.pointCount > 0;
 }
 
@@ -439,7 +448,7 @@ bool sensorOverlaps(const detail::Contact& c, const ContactSides& sides,
     // a resting pile's contacts end here, without a look at their shapes.
     detail::ManifoldOrigin& origin = c.origin;
     float closing;
-    if (origin.valid) {
+    if (c.originValid) {
         closing = closingSpeed(ba, bb);
         if (recycleDistance > 0.0f &&
             motionSince(origin, ba.transform, bb.transform) + dt * closing <= recycleDistance) {
@@ -447,10 +456,10 @@ bool sensorOverlaps(const detail::Contact& c, const ContactSides& sides,
             recycleManifold(c.manifold, origin, ba.transform, bb.transform);
             return kRecycled | points;
         }
-        origin.valid = false;
+        c.originValid = false;
     } else {
-        const detail::Shape& sa = sides.shapes[c.shapeA];
-        const detail::Shape& sb = sides.shapes[c.shapeB];
+        const detail::Shape& sa = sides.shapeA();
+        const detail::Shape& sb = sides.shapeB();
 #if defined(__SSE2__)
         if (c.circles) {
             return collideCircleContact(c, knownCircle(sa), knownCircle(sb), ba, bb,
@@ -459,8 +468,8 @@ bool sensorOverlaps(const detail::Contact& c, const ContactSides& sides,
 #endif
         closing = closingSpeed(ba, bb);
     }
-    const detail::Shape& sa = sides.shapes[c.shapeA];
-    const detail::Shape& sb = sides.shapes[c.shapeB];
+    const detail::Shape& sa = sides.shapeA();
+    const detail::Shape& sb = sides.shapeB();
     const float margin = speculativeMargin(speculativeDistance, dt, closing);
     const OldPoints old = oldPoints(c.manifold);
     const std::size_t type = sa.geometry.index();
@@ -480,6 +489,7 @@ bool sensorOverlaps(const detail::Contact& c, const ContactSides& sides,
     carryImpulses(m, old);
     if (recycleDistance > 0.0f && isRecyclable(sa.geometry) && isRecyclable(sb.geometry)) {
         recordOrigin(origin, m, ba, bb);
+        c.originValid = true;
     }
     return m.pointCount > 0 ? kPoints : kNoPoints;
 }
@@ -489,10 +499,11 @@ bool sensorOverlaps(const detail::Contact& c, const ContactSides& sides,
 // The narrow phase of one contact whose bodies are not both asleep: its new manifold (kept, with
 // impulses carried over by feature id; a sensor's is not kept) and whether it touches. Reads the
 // contact's shapes and bodies only, so contacts are updated on several workers at once.
-bool World::Impl::updateManifold(detail::Contact& c, float dt) const {
-    const ContactSides sides{shapes.data(), body(c.bodyA), body(c.bodyB)};
+bool World::Impl::updateManifold(detail::Contact& c, const detail::ContactLinks& links,
+                                 float dt) const {
+    const ContactSides sides{links, shapes.data(), body(c.bodyA), body(c.bodyB)};
     if (c.sensor) {
-        return sensorOverlaps(c, sides, collisionAlgorithm);
+        return sensorOverlaps(sides, collisionAlgorithm);
     }
     return (collideContact(c, sides, collisionAlgorithm, speculativeDistance,
                            effectiveRecycleDistance(sim.def, speculativeDistance), dt) &
@@ -555,6 +566,7 @@ void World::Impl::updateContacts(float dt) {
         // may alias anything) made the compiler load them from the world again for every
         // contact.
         detail::Contact* const contacts = s.contacts.data();
+        const detail::ContactLinks* const links = s.contactLinks.data();
         unsigned char* const updates = s.contactUpdates.data();
         TouchingContact* const touchingSlots = s.blockTouching.data();
         int* const serialSlots = s.blockSerial.data();
@@ -582,9 +594,10 @@ void World::Impl::updateContacts(float dt) {
                             detail::prefetchObject(bodySlots + ahead.bodyA);
                             detail::prefetchObject(bodySlots + ahead.bodyB);
                             // A manifold moved with its bodies reads no shape.
-                            if (!ahead.origin.valid) {
-                                detail::prefetchObject(shapeSlots + ahead.shapeA);
-                                detail::prefetchObject(shapeSlots + ahead.shapeB);
+                            if (!ahead.originValid) {
+                                const detail::ContactLinks& l = links[ci + kPrefetchAhead];
+                                detail::prefetchObject(shapeSlots + l.shapeA);
+                                detail::prefetchObject(shapeSlots + l.shapeB);
                             }
                         }
                     }
@@ -596,7 +609,8 @@ void World::Impl::updateContacts(float dt) {
                 unsigned char update;
                 const detail::Body& ba = bodySlots[c.bodyA];
                 const detail::Body& bb = bodySlots[c.bodyB];
-                if (testBoxes && !bp.fatAabbsOverlapLive(c.proxyKeyA, c.proxyKeyB)) {
+                if (testBoxes &&
+                    !bp.fatAabbsOverlapLive(links[ci].proxyKeyA, links[ci].proxyKeyB)) {
                     update = kApart;
                 } else if (!ba.motion.awake && !bb.motion.awake) {
                     // Settled unless an earlier contact wakes a side in the second pass.
@@ -606,7 +620,8 @@ void World::Impl::updateContacts(float dt) {
                     update = kAsleep;
                 } else if (c.sensor) {
                     // Overlap only: no manifold is kept and no body woken.
-                    const bool nowTouching = sensorOverlaps(c, {shapeSlots, ba, bb}, algorithm);
+                    const bool nowTouching =
+                        sensorOverlaps({links[ci], shapeSlots, ba, bb}, algorithm);
                     ++counts.manifoldUpdates;
                     if (serialAll || (nowTouching != c.touching && c.touchEvents)) {
                         update = nowTouching ? kTouching : kApartNow;
@@ -615,8 +630,9 @@ void World::Impl::updateContacts(float dt) {
                         continue;
                     }
                 } else {
-                    const unsigned collided = collideContact(c, {shapeSlots, ba, bb}, algorithm,
-                                                             speculative, recycleDistance, stepDt);
+                    const unsigned collided =
+                        collideContact(c, {links[ci], shapeSlots, ba, bb}, algorithm, speculative,
+                                       recycleDistance, stepDt);
                     ++counts.manifoldUpdates;
                     counts.manifoldsRecycled += (collided & kRecycled) != 0 ? 1 : 0;
                     const bool nowTouching = (collided & kPoints) != 0;
@@ -666,9 +682,10 @@ void World::Impl::updateContacts(float dt) {
     // The second pass's work on one contact; whether it woke a body.
     auto finishContact = [&](int ci, unsigned char update) {
         detail::Contact& c = s.contacts[static_cast<std::size_t>(ci)];
+        const detail::ContactLinks& l = s.contactLinks[static_cast<std::size_t>(ci)];
         if (update == kApart) {
-            broadPhase.removePair(static_cast<std::uint64_t>(c.shapeA),
-                                  static_cast<std::uint64_t>(c.shapeB));
+            broadPhase.removePair(static_cast<std::uint64_t>(l.shapeA),
+                                  static_cast<std::uint64_t>(l.shapeB));
             destroyContact(ci, true);
             return false;
         }
@@ -676,16 +693,16 @@ void World::Impl::updateContacts(float dt) {
         const bool awakeB = body(c.bodyB).motion.awake;
         if (update == kAsleep) {
             // Woken by an earlier one.
-            update = updateManifold(c, dt) ? kTouching : kApartNow;
+            update = updateManifold(c, l, dt) ? kTouching : kApartNow;
             ++s.counters.manifoldUpdates;
         }
         const bool wasTouching = c.touching;
         c.touching = update == kTouching;
         if (c.sensor) {
             if (c.touching != wasTouching && c.touchEvents) {
-                bool aIsSensor = shape(c.shapeA).isSensor;
-                ShapeId sensorId = aIsSensor ? c.idA : c.idB;
-                ShapeId visitorId = aIsSensor ? c.idB : c.idA;
+                bool aIsSensor = shape(l.shapeA).isSensor;
+                ShapeId sensorId = aIsSensor ? l.idA : l.idB;
+                ShapeId visitorId = aIsSensor ? l.idB : l.idA;
                 if (c.touching) {
                     s.sensorBeginEvents.push_back({sensorId, visitorId});
                 } else {
@@ -695,14 +712,14 @@ void World::Impl::updateContacts(float dt) {
             return false;
         }
         if (c.touching && !wasTouching && c.touchEvents) {
-            s.beginEvents.push_back({c.idA, c.idB, c.manifold});
+            s.beginEvents.push_back({l.idA, l.idB, c.manifold});
         } else if (!c.touching && wasTouching && c.touchEvents) {
-            s.endEvents.push_back({c.idA, c.idB});
+            s.endEvents.push_back({l.idA, l.idB});
         }
         if (hooks.preSolve) {
             if (c.touching) {
                 CallbackLock lock(*this, "step", "pre-solve");
-                c.enabled = hooks.preSolve(c.idA, c.idB, c.manifold);
+                c.enabled = hooks.preSolve(l.idA, l.idB, c.manifold);
             } else {
                 c.enabled = true;
             }

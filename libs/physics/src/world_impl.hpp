@@ -169,10 +169,11 @@ struct World::Impl {
     // Pairs -> contacts; narrow phase; begin/end/sensor events.
     void updateContacts(float dt);
     // One contact's narrow phase (contact.cpp): its new manifold and whether it touches.
-    [[nodiscard]] bool updateManifold(detail::Contact& c, float dt) const;
+    [[nodiscard]] bool updateManifold(detail::Contact& c, const detail::ContactLinks& links,
+                                      float dt) const;
     void createContact(int shapeA, int shapeB);
-    // Sets what the live contacts copy from their shapes (Contact::proxyKeyA, proxyKeyB,
-    // circles): after restoreSnapshot(), whose contacts do not carry it.
+    // Sets what the live contacts copy from their shapes (ContactLinks::proxyKeyA, proxyKeyB,
+    // Contact::circles): after restoreSnapshot(), whose contacts do not carry it.
     void copyContactShapes();
     void destroyContact(int contactIndex, bool reportEnd);
     void solve(float dt);
