@@ -643,8 +643,15 @@ void World::Impl::updateContacts(float dt) {
                     if (serialAll || wakes || (nowTouching != c.touching && c.touchEvents)) {
                         update = nowTouching ? kTouching : kApartNow;
                     } else {
-                        c.touching = nowTouching;
-                        c.enabled = true;
+                        // Stored only when they change: a store dirties the contact's last
+                        // cache line (its origin and flags), which a recycled manifold leaves
+                        // clean, and so adds a line's write-back per contact.
+                        if (c.touching != nowTouching) {
+                            c.touching = nowTouching;
+                        }
+                        if (!c.enabled) {
+                            c.enabled = true;
+                        }
                         if (nowTouching) {
                             *touching++ = {ci, c.bodyA, c.bodyB, c.rollingResistance};
                         }
