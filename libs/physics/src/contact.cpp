@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <new>
 #include <type_traits>
@@ -551,6 +552,12 @@ void World::Impl::updateContacts(float dt) {
     // fit, the prefetches only cost their 47 instructions a contact (falling_circles_1000: -5 %
     // instructions a step and faster without them), so they are left out.
     constexpr int kPrefetchAhead = 6;
+    // What the loop reads of a body: the fields up to BodyMotion::awake (see Body).
+    constexpr std::size_t kBodyBytesRead =
+        offsetof(detail::Body, motion) + offsetof(detail::BodyMotion, awake) + sizeof(bool);
+    static_assert(offsetof(detail::Body, type) < kBodyBytesRead &&
+                      offsetof(detail::BodyMotion, maxExtent) < offsetof(detail::BodyMotion, awake),
+                  "the body fields the narrow phase reads come first (Body)");
     const bool prefetch =
         shapes.size() * sizeof(detail::Shape) + bodies.size() * sizeof(detail::Body) >
         detail::kPrefetchBytes;
@@ -591,8 +598,8 @@ void World::Impl::updateContacts(float dt) {
                     if (ci + kPrefetchAhead < prefetchEnd) {
                         const detail::Contact& ahead = contacts[ci + kPrefetchAhead];
                         if (ahead.alive) {
-                            detail::prefetchObject(bodySlots + ahead.bodyA);
-                            detail::prefetchObject(bodySlots + ahead.bodyB);
+                            detail::prefetchFirst<kBodyBytesRead>(bodySlots + ahead.bodyA);
+                            detail::prefetchFirst<kBodyBytesRead>(bodySlots + ahead.bodyB);
                             // A manifold moved with its bodies reads no shape.
                             if (!ahead.originValid) {
                                 const detail::ContactLinks& l = links[ci + kPrefetchAhead];

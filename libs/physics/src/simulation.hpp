@@ -25,6 +25,17 @@ namespace e2d::physics::detail {
 
 // A body's dynamics, kept in its world slot (detail::Body::motion).
 struct BodyMotion {
+    // Smallest and largest distance from the centre of mass to the shapes' surfaces, metres:
+    // a body that moves more than minExtent in a step may tunnel (continuous collision).
+    // maxExtent and awake come first: the narrow phase reads them with the body's pose (Body).
+    float maxExtent = 0.0f;
+    float minExtent = 0.0f;
+    bool awake = true;
+    bool fixedRotation = false;
+    bool lockX = false;
+    bool lockY = false;
+    bool isBullet = false;
+    bool enableSleep = true;
     Vec2 localCenter{0.0f, 0.0f};
     float mass = 0.0f;
     float inertia = 0.0f; // about the centre of mass
@@ -42,18 +53,8 @@ struct BodyMotion {
     // step of the centre; zero until the solver moves the body, and after setTransform().
     Vec2 positionResidual{0.0f, 0.0f};
     float sleepTime = 0.0f;
-    // Smallest and largest distance from the centre of mass to the shapes' surfaces, metres:
-    // a body that moves more than minExtent in a step may tunnel (continuous collision).
-    float minExtent = 0.0f;
-    float maxExtent = 0.0f;
     int contactHead = -1; // intrusive list of the body's contacts
     int solverIndex = -1; // index in this step's awake arrays, -1 when not awake
-    bool fixedRotation = false;
-    bool lockX = false;
-    bool lockY = false;
-    bool isBullet = false;
-    bool enableSleep = true;
-    bool awake = true;
 };
 
 // The root of i's set in a union-find forest (parent[root] == root), halving the path on the
