@@ -359,8 +359,9 @@ inline float closingSpeed(const detail::Body& ba, const detail::Body& bb) {
     const Vec2 v = bb.linearVelocity - ba.linearVelocity;
 #if defined(__SSE2__)
     // length(v) with sqrtss itself: std::sqrt's check for a negative argument (for errno),
-    // a compare and a branch around it, goes.
-    const float speed = _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(v.x * v.x + v.y * v.y)));
+    // a compare and a branch around it, goes. (The square in every lane: _mm_set_ss's zeroed
+    // upper lanes cost GCC a round trip through a general register.)
+    const float speed = _mm_cvtss_f32(_mm_sqrt_ss(_mm_set1_ps(v.x * v.x + v.y * v.y)));
 #else
     const float speed = length(v);
 #endif
@@ -549,8 +550,10 @@ void World::Impl::updateContacts(float dt) {
     // Each contact reads two bodies and (unless its manifold is recycled) two shapes scattered
     // over the body and shape arrays: where these are larger than a core's own cache, they are
     // fetched a few contacts ahead (many_pyramids: about -6 % narrow-phase time). Where they
-    // fit, the prefetches only cost their 47 instructions a contact (falling_circles_1000: -5 %
-    // instructions a step and faster without them), so they are left out.
+    // fit, the prefetches only cost their instructions (47 a contact when this was measured,
+    // about 20 since only a body's first line or two are asked for; falling_circles_1000: -5 %
+    // instructions a step and faster without them, and still so with the contact arrays counted
+    // in the sizes), so they are left out.
     constexpr int kPrefetchAhead = 6;
     // What the loop reads of a body: the fields up to BodyMotion::awake (see Body).
     constexpr std::size_t kBodyBytesRead =
