@@ -70,6 +70,19 @@ inline constexpr float kMinBlockDeterminant = 0x1p-126f; // FLT_MIN
 // so changes nothing, unless iA |rA|^2 exceeds about 1e5 times the rest of K.
 inline constexpr float kLeverRounding2 = 0x1p-42f;
 
+// A side locked along one axis (BodyDef::lockX, lockY) moves along a contact's normal only by
+// the normal's component on its free axis. When that component is tiny (a normal a billionth
+// of a radian off the locked axis, which is the rounding of a normal along it), K is that
+// component squared times the inverse mass, and the impulse that stops the normal velocity
+// throws the body along its free axis at the closing speed divided by the component: 1e12 m/s
+// in one iteration, impulses of 1e29 N s within a few steps, and then an overflow that reaches
+// every body through a zero inverse mass (a fuzz finding). An effective mass therefore never
+// lets an impulse move a side along the axis by more than kMaxContactGain times the velocity
+// it corrects: K is at least each side's largest inverse mass times the axis' component on
+// that side's free axis, over kMaxContactGain. A side free on both axes has K at least its
+// inverse mass, so the floor binds only on locked sides (and changes nothing elsewhere).
+inline constexpr float kMaxContactGain = 1024.0f;
+
 struct ContactConstraint {
     ContactConstraintPoint points[2];
     Vec2 normal{0.0f, 0.0f};

@@ -4,6 +4,7 @@
 #include "contact_solver.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 
 // Small inline pieces the soft-step (contact_solver.cpp) and classic
@@ -18,6 +19,17 @@ inline float leverRounding(Vec2 rA, Vec2 rB, const ContactConstraint& c) {
     return kLeverRounding2 * (c.invInertiaA * dot(rA, rA) + c.invInertiaB * dot(rB, rB));
 }
 
+// The least K along `axis` may be (see kMaxContactGain).
+inline float lockedAxisFloor(Vec2 axis, const ContactConstraint& c) {
+    const float ax = std::abs(axis.x);
+    const float ay = std::abs(axis.y);
+    const float a = std::max(c.invMassA.x * ax, c.invMassA.y * ay);
+    const float b = std::max(c.invMassB.x * ax, c.invMassB.y * ay);
+    return std::max(a, b) * (1.0f / kMaxContactGain);
+}
+
+// 1 / K along `axis` at one point (K: how a unit impulse along it changes the point's velocity
+// along it); 0 where K is not positive.
 inline float effectiveMass(Vec2 axis, Vec2 rA, Vec2 rB, const ContactConstraint& c) {
     float rnA = cross(rA, axis);
     float rnB = cross(rB, axis);
@@ -25,6 +37,7 @@ inline float effectiveMass(Vec2 axis, Vec2 rA, Vec2 rB, const ContactConstraint&
               c.invMassB.x * axis.x * axis.x + c.invMassB.y * axis.y * axis.y +
               c.invInertiaA * rnA * rnA + c.invInertiaB * rnB * rnB;
     k += leverRounding(rA, rB, c);
+    k = std::max(k, lockedAxisFloor(axis, c));
     return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
@@ -51,7 +64,10 @@ inline void prepareBlock(ContactConstraint& c) {
     k22 += leverRounding(c.points[1].anchorA, c.points[1].anchorB, c);
     float k12 = linear + c.invInertiaA * rn1A * rn2A + c.invInertiaB * rn1B * rn2B;
     float det = k11 * k22 - k12 * k12;
-    if (k11 * k11 < kMaxBlockConditionNumber * det && det >= kMinBlockDeterminant) {
+    // Where lockedAxisFloor() binds, K's rows are no guide to the velocities: one at a time.
+    const float least = lockedAxisFloor(n, c);
+    if (k11 * k11 < kMaxBlockConditionNumber * det && det >= kMinBlockDeterminant && k11 >= least &&
+        k22 >= least) {
         c.blockSolve = true;
         c.blockK = {k11, k12, k22};
         float invDet = 1.0f / det;

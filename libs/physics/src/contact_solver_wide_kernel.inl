@@ -498,13 +498,28 @@ E2D_WIDE_FN F leverRoundingOf(const Constraint& c, F rAx, F rAy, F rBx, F rBy) {
            (c.invInertiaA * (rAx * rAx + rAy * rAy) + c.invInertiaB * (rBx * rBx + rBy * rBy));
 }
 
-// effectiveMass() along (ax, ay); 0 where the sum is not positive.
-E2D_WIDE_FN F effectiveMassOf(const Constraint& c, F ax, F ay, F rAx, F rAy, F rBx, F rBy) {
+// lockedAxisFloor() along (ax, ay).
+E2D_WIDE_FN F lockedAxisFloorOf(const Constraint& c, F ax, F ay) {
+    // |ax| and |ay| (a -0 where std::abs() gives +0 changes no maximum below).
+    const F absX = maxOf(ax, -ax);
+    const F absY = maxOf(ay, -ay);
+    const F a = maxOf(c.invMassAx * absX, c.invMassAy * absY);
+    const F b = maxOf(c.invMassBx * absX, c.invMassBy * absY);
+    return maxOf(a, b) * splat(1.0f / kMaxContactGain);
+}
+
+// effectiveMass() along (ax, ay); 0 where the sum is not positive. `locked`: whether any lane
+// has a side locked along one axis (lockedAxisFloor() binds on no other lane).
+E2D_WIDE_FN F effectiveMassOf(const Constraint& c, F ax, F ay, F rAx, F rAy, F rBx, F rBy,
+                              bool locked) {
     F rnA = rAx * ay - rAy * ax;
     F rnB = rBx * ay - rBy * ax;
     F k = c.invMassAx * ax * ax + c.invMassAy * ay * ay + c.invMassBx * ax * ax +
           c.invMassBy * ay * ay + c.invInertiaA * rnA * rnA + c.invInertiaB * rnB * rnB;
     k = k + leverRoundingOf(c, rAx, rAy, rBx, rBy);
+    if (locked) {
+        k = maxOf(k, lockedAxisFloorOf(c, ax, ay));
+    }
     const F zero = splat(0.0f);
     I positive = k > zero;
     // The divisor is 1 where it is not used: no division by zero, even in discarded lanes.
@@ -554,6 +569,8 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, Impact& im, BodySt
                     ((c.invMassBx == zero) & (c.invMassBy == zero) & (c.invInertiaB == zero));
     const I empty = count == 0;
     c.rigidLanes = laneBits(rigid);
+    // A side free on both axes has the same inverse mass on each.
+    const bool locked = anyLane((c.invMassAx != c.invMassAy) | (c.invMassBx != c.invMassBy));
     const LaneSoftness picked = softnessOf(rigid, splatSoftness(dynamic), splatSoftness(vsStatic));
     const LaneSoftness soft{select(empty, splat(Softness{}.biasRate), picked.biasRate),
                             select(empty, splat(Softness{}.massScale), picked.massScale),
@@ -602,8 +619,10 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, Impact& im, BodySt
         cp.normalImpulse = select(present, normalImpulse, zero);
         cp.tangentImpulse = select(present, tangentImpulse, zero);
         cp.maxNormalImpulse = zero;
-        cp.normalMass = select(present, effectiveMassOf(c, nx, ny, rAx, rAy, rBx, rBy), zero);
-        cp.tangentMass = select(present, effectiveMassOf(c, tx, ty, rAx, rAy, rBx, rBy), zero);
+        cp.normalMass =
+            select(present, effectiveMassOf(c, nx, ny, rAx, rAy, rBx, rBy, locked), zero);
+        cp.tangentMass =
+            select(present, effectiveMassOf(c, tx, ty, rAx, rAy, rBx, rBy, locked), zero);
         F vrAx = vAx + (-wA) * rAy;
         F vrAy = vAy + wA * rAx;
         F vrBx = vBx + (-wB) * rBy;
@@ -649,8 +668,12 @@ E2D_WIDE_FN int prepareGroup(const Gather& in, Constraint& c, Impact& im, BodySt
     k11 = k11 + leverRoundingOf(c, p1.anchorAx, p1.anchorAy, p1.anchorBx, p1.anchorBy);
     k22 = k22 + leverRoundingOf(c, p2.anchorAx, p2.anchorAy, p2.anchorBx, p2.anchorBy);
     F det = k11 * k22 - k12 * k12;
-    const I block = (count == 2) & (k11 * k11 < splat(kMaxBlockConditionNumber) * det) &
-                    (det >= splat(kMinBlockDeterminant));
+    I block = (count == 2) & (k11 * k11 < splat(kMaxBlockConditionNumber) * det) &
+              (det >= splat(kMinBlockDeterminant));
+    if (locked) {
+        const F least = lockedAxisFloorOf(c, nx, ny);
+        block &= (k11 >= least) & (k22 >= least);
+    }
     F invDet = one / select(block, det, one);
     // Other lanes hold K = identity; empty lanes count as block lanes (see WideConstraintT).
     c.k11 = select(block, k11, one);

@@ -531,7 +531,21 @@ TEST(WideContactSolver, PreparesGroupsAsPrepareContactDoes) {
         // A rigid moving side (no mass, no inertia): the static softness.
         p.inputs[7].b.invMass = {0.0f, 0.0f};
         p.inputs[7].b.invInertia = 0.0f;
-        for (std::size_t k = 0; k < 8; ++k) {
+        // A side locked on y that cannot turn, against a static side, its normal a billionth
+        // of a radian off y (one point, then two): K is that component squared, and the
+        // impulse stopping the normal velocity would throw the body along x at a billion times
+        // the closing speed; lockedAxisFloor() holds it to kMaxContactGain times.
+        for (std::size_t k : {8u, 9u}) {
+            PrepareInput& locked = p.inputs[k];
+            locked.a = ContactBodyView{};
+            locked.b.invMass = {3.0e-9f, 0.0f};
+            locked.b.invInertia = 0.0f;
+            locked.manifold.normal = {3.7e-9f, -1.0f};
+            locked.manifold.pointCount = k == 8 ? 1 : 2;
+            locked.manifold.points[0].anchorB = {-115.0f, 3.4f};
+            locked.manifold.points[1].anchorB = {-120.0f, 3.4f};
+        }
+        for (std::size_t k = 0; k < 10; ++k) {
             PrepareInput& in = p.inputs[k];
             in.softness = softnessFor(p, in.a, in.b);
             prepareContact(p.constraints[k], in.manifold, in.a, in.b, {in.friction, 0.0f, 0.0f},
@@ -541,6 +555,14 @@ TEST(WideContactSolver, PreparesGroupsAsPrepareContactDoes) {
         ASSERT_EQ(p.constraints[2].points[0].normalMass, 0.0f);
         ASSERT_LT(p.constraints[4].points[0].normalMass, 1.0e-5f);
         ASSERT_FALSE(p.constraints[6].blockSolve);
+        for (std::size_t k : {8u, 9u}) {
+            const ContactConstraint& c = p.constraints[k];
+            // What the velocity along x gains per m/s of normal velocity stopped.
+            const float gain = c.points[0].normalMass * c.invMassB.x * c.normal.x;
+            ASSERT_GT(gain, 0.0f);
+            ASSERT_LE(gain, kMaxContactGain);
+            ASSERT_FALSE(c.blockSolve);
+        }
         const Schedule schedule = scheduleOf(p);
         SCOPED_TRACE(seed);
         int pushed = 0;
