@@ -36,7 +36,7 @@ void World::Impl::wakeBody(int bodyIndex) {
                 o.motion.sleepTime = 0.0f;
                 stack.push_back(other);
             }
-            ci = c.next[side];
+            ci = sim.contactLinks[static_cast<std::size_t>(ci)].next[side];
         }
         // Jointed bodies wake together.
         for (int ji = body(k).jointHead; ji != kNullIndex;) {
@@ -171,7 +171,7 @@ void World::setAwake(BodyId id, bool awake) {
                 o.motion.awake = false;
                 stack.push_back(other);
             }
-            ci = c.next[side];
+            ci = w.sim.contactLinks[static_cast<std::size_t>(ci)].next[side];
         }
         for (int ji = b.jointHead; ji != kNullIndex;) {
             const detail::Joint& j = w.joint(ji);

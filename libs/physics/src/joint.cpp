@@ -326,11 +326,12 @@ JointId World::createJoint(const JointDef& def) {
         int ci = w.body(bodyA).motion.contactHead;
         while (ci != kNullIndex) {
             const detail::Contact& c = w.sim.contacts[static_cast<std::size_t>(ci)];
+            const detail::ContactLinks& l = w.sim.contactLinks[static_cast<std::size_t>(ci)];
             const int side = c.bodyA == bodyA ? 0 : 1;
-            const int next = c.next[side];
+            const int next = l.next[side];
             if ((side == 0 ? c.bodyB : c.bodyA) == bodyB) {
-                w.broadPhase.removePair(static_cast<std::uint64_t>(c.shapeA),
-                                        static_cast<std::uint64_t>(c.shapeB));
+                w.broadPhase.removePair(static_cast<std::uint64_t>(l.shapeA),
+                                        static_cast<std::uint64_t>(l.shapeB));
                 w.destroyContact(ci, true);
             }
             ci = next;

@@ -25,6 +25,17 @@ namespace e2d::physics::detail {
 
 // A body's dynamics, kept in its world slot (detail::Body::motion).
 struct BodyMotion {
+    // Smallest and largest distance from the centre of mass to the shapes' surfaces, metres:
+    // a body that moves more than minExtent in a step may tunnel (continuous collision).
+    // maxExtent and awake come first: the narrow phase reads them with the body's pose (Body).
+    float maxExtent = 0.0f;
+    float minExtent = 0.0f;
+    bool awake = true;
+    bool fixedRotation = false;
+    bool lockX = false;
+    bool lockY = false;
+    bool isBullet = false;
+    bool enableSleep = true;
     Vec2 localCenter{0.0f, 0.0f};
     float mass = 0.0f;
     float inertia = 0.0f; // about the centre of mass
@@ -42,22 +53,10 @@ struct BodyMotion {
     // step of the centre; zero until the solver moves the body, and after setTransform().
     Vec2 positionResidual{0.0f, 0.0f};
     float sleepTime = 0.0f;
-    // Smallest and largest distance from the centre of mass to the shapes' surfaces, metres:
-    // a body that moves more than minExtent in a step may tunnel (continuous collision).
-    float minExtent = 0.0f;
-    float maxExtent = 0.0f;
     int contactHead = -1; // intrusive list of the body's contacts
     int solverIndex = -1; // index in this step's awake arrays, -1 when not awake
-    bool fixedRotation = false;
-    bool lockX = false;
-    bool lockY = false;
-    bool isBullet = false;
-    bool enableSleep = true;
-    bool awake = true;
 };
 
-// A pair of shapes whose fat boxes overlap. Contacts live in one array with a free list;
-// each is linked into both bodies' lists (side 0: body A, side 1: body B).
 // The root of i's set in a union-find forest (parent[root] == root), halving the path on the
 // way. Islands (island.cpp) and the wide solver's blocks (world_step.cpp) use it.
 inline int findRoot(std::vector<int>& parent, int i) {
@@ -71,13 +70,13 @@ inline int findRoot(std::vector<int>& parent, int i) {
 
 // A contact's manifold as the collision routine last computed it, in the bodies' frames, so
 // that later steps can move it with the bodies instead of colliding again
-// (SolverDef::contactRecycleDistance; contact.cpp).
+// (SolverDef::contactRecycleDistance; contact.cpp). Whether there is one: Contact::originValid.
 struct ManifoldOrigin {
-    // The bodies' relative pose, x components in one row and y components in the other (lanes
-    // of contact.cpp's SSE2 code): 0, A's origin in B's frame; 1, B's origin in A's frame; 2,
-    // B's rotation in A's frame (cos, sin); 3, unused.
-    float frameX[4]{};
-    float frameY[4]{};
+    // The bodies' relative pose, x components in frame[0..2] and y components in frame[3..5]
+    // (lanes of contact.cpp's SSE2 code): 0, A's origin in B's frame; 1, B's origin in A's
+    // frame; 2, B's rotation in A's frame (cos, sin). Each row is loaded as four floats, the
+    // fourth (the next row's first, or extentA) unused.
+    float frame[6]{};
     // The farthest any point of the body's shapes was from its origin, metres.
     float extentA = 0.0f;
     float extentB = 0.0f;
@@ -86,23 +85,26 @@ struct ManifoldOrigin {
     Vec2 normalInA{0.0f, 0.0f};
     Vec2 surfaceA[2]{};
     Vec2 surfaceB[2]{};
-    // False until the routine has run with recycling on (and for sensors and chain segments).
-    bool valid = false;
 
-    [[nodiscard]] Vec2 aInB() const { return {frameX[0], frameY[0]}; }
-    [[nodiscard]] Transform bInA() const {
-        return {{frameX[1], frameY[1]}, {frameX[2], frameY[2]}};
-    }
+    [[nodiscard]] Vec2 aInB() const { return {frame[0], frame[3]}; }
+    [[nodiscard]] Transform bInA() const { return {{frame[1], frame[4]}, {frame[2], frame[5]}}; }
     void setFrames(Vec2 aInB, const Transform& bInA) {
-        frameX[0] = aInB.x;
-        frameY[0] = aInB.y;
-        frameX[1] = bInA.p.x;
-        frameY[1] = bInA.p.y;
-        frameX[2] = bInA.q.c;
-        frameY[2] = bInA.q.s;
+        frame[0] = aInB.x;
+        frame[3] = aInB.y;
+        frame[1] = bInA.p.x;
+        frame[4] = bInA.p.y;
+        frame[2] = bInA.q.c;
+        frame[5] = bInA.q.s;
     }
 };
+static_assert(offsetof(ManifoldOrigin, extentA) == 6 * sizeof(float),
+              "the y row's four-float load ends in extentA");
 
+// A pair of shapes whose fat boxes overlap. Contacts live in one array with a free list; each
+// is linked into both bodies' lists. This part is what the narrow phase and the solver use
+// every step; the rest (which shapes, the list links, the ids) is its ContactLinks, at the same
+// index: three cache lines, not four (the narrow phase streams every contact each step).
+//
 // What the solver reads and writes of a contact each step (the manifold, the mixed materials and
 // the bodies: its first Contact::kSolverBytes) comes first: on a large island the solver visits
 // the contacts out of array order (colour by colour), twice a step, and each visit then fetches
@@ -120,19 +122,8 @@ struct Contact {
     // The end of what the solver touches (see above).
     static constexpr std::size_t kSolverBytes = 112;
     ManifoldOrigin origin{};
-    int shapeA = -1;
-    int shapeB = -1;
-    // Copies of what the narrow phase asks of the shapes every step, which stay while the
-    // contact lives (a shape's contacts end before its proxy goes or its geometry changes): the
-    // proxy keys (Shape::proxyKey) of the fat-box test, and whether both are circles (their own
-    // path). Not in snapshots: restoreSnapshot() sets them (World::Impl::copyContactShapes()).
-    int proxyKeyA = -1;
-    int proxyKeyB = -1;
-    bool circles = false;
-    int prev[2] = {-1, -1};
-    int next[2] = {-1, -1};
-    ShapeId idA{};
-    ShapeId idB{};
+    // False until the routine has run with recycling on (and for sensors and chain segments).
+    bool originValid = false;
     bool touching = false;
     bool sensor = false; // one shape is a sensor: overlap only, no constraint
     bool alive = false;
@@ -141,10 +132,31 @@ struct Contact {
     // Both shapes' event switches (contact or sensor begin/end, hits).
     bool touchEvents = true;
     bool hitEvents = true;
+    // Both shapes are circles (their own path). Not in snapshots: restoreSnapshot() sets it
+    // (World::Impl::copyContactShapes()).
+    bool circles = false;
 };
 static_assert(offsetof(Contact, bodyB) + sizeof(int) == Contact::kSolverBytes &&
                   Contact::kSolverBytes <= 128,
               "the solver's fields of a contact must come first, in two cache lines' bytes");
+static_assert(sizeof(Contact) == 192, "a contact is three cache lines' bytes");
+
+// The rest of a contact (Simulation::contactLinks, same index as Simulation::contacts): its
+// shapes, its links in both bodies' contact lists (side 0: body A, side 1: body B) and the
+// shapes' ids. The narrow phase reads the shapes only when it runs the routine.
+struct ContactLinks {
+    int shapeA = -1;
+    int shapeB = -1;
+    // Copies of the shapes' proxy keys (Shape::proxyKey), for the narrow phase's fat-box test;
+    // they stay while the contact lives (a shape's contacts end before its proxy goes). Not in
+    // snapshots: restoreSnapshot() sets them (World::Impl::copyContactShapes()).
+    int proxyKeyA = -1;
+    int proxyKeyB = -1;
+    int prev[2] = {-1, -1};
+    int next[2] = {-1, -1};
+    ShapeId idA{};
+    ShapeId idB{};
+};
 
 struct Simulation {
     SolverDef def{};
@@ -152,6 +164,7 @@ struct Simulation {
     int simdLanes = 8;
 
     std::vector<Contact> contacts;
+    std::vector<ContactLinks> contactLinks; // same size as contacts
     std::vector<int> freeContacts;
     int contactCount = 0;
 

@@ -389,9 +389,11 @@ int World::contactCount() const { return impl_->sim.contactCount; }
 
 void World::forEachTouchingContact(FunctionRef<void(const ContactData&)> callback) const {
     Impl::CallbackLock lock(*impl_, "forEachTouchingContact");
-    for (const detail::Contact& c : impl_->sim.contacts) {
+    const detail::Simulation& s = impl_->sim;
+    for (std::size_t i = 0; i < s.contacts.size(); ++i) {
+        const detail::Contact& c = s.contacts[i];
         if (c.alive && c.touching && !c.sensor) {
-            callback(ContactData{c.idA, c.idB, &c.manifold});
+            callback(ContactData{s.contactLinks[i].idA, s.contactLinks[i].idB, &c.manifold});
         }
     }
 }

@@ -350,10 +350,11 @@ void World::Impl::refreshContactMaterials(int shapeIndex) {
     const int bodyIndex = shape(shapeIndex).body;
     for (int ci = body(bodyIndex).motion.contactHead; ci != kNullIndex;) {
         detail::Contact& c = sim.contacts[static_cast<std::size_t>(ci)];
+        const detail::ContactLinks& l = sim.contactLinks[static_cast<std::size_t>(ci)];
         const int side = c.bodyA == bodyIndex ? 0 : 1;
-        if (c.shapeA == shapeIndex || c.shapeB == shapeIndex) {
-            const detail::Shape& a = shape(c.shapeA);
-            const detail::Shape& b = shape(c.shapeB);
+        if (l.shapeA == shapeIndex || l.shapeB == shapeIndex) {
+            const detail::Shape& a = shape(l.shapeA);
+            const detail::Shape& b = shape(l.shapeB);
             c.friction = detail::mixFriction(sim.def, a.friction, b.friction);
             c.restitution = detail::mixRestitution(sim.def, a.restitution, b.restitution);
             c.rollingResistance = std::max(a.rollingResistance, b.rollingResistance);
@@ -361,7 +362,7 @@ void World::Impl::refreshContactMaterials(int shapeIndex) {
                 c.sensor ? a.sensorEvents && b.sensorEvents : a.contactEvents && b.contactEvents;
             c.hitEvents = a.hitEvents && b.hitEvents;
         }
-        ci = c.next[side];
+        ci = l.next[side];
     }
 }
 

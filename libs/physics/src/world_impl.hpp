@@ -21,22 +21,25 @@ inline constexpr int kNullIndex = -1;
 // A body slot. Slots of destroyed bodies stay in the array (alive == false) and keep their
 // generation, so a stale BodyId is recognised; the id pool reuses them.
 struct Body {
+    // What the narrow phase reads of both bodies of every contact comes first, so that it is
+    // in one cache line or two (contact.cpp prefetches just these): the pose, the velocities,
+    // the type and (BodyMotion's first fields) the extent and whether the body is awake.
     Transform transform{};
     Vec2 linearVelocity{0.0f, 0.0f};
     float angularVelocity = 0.0f;
-    std::uint64_t userData = 0;
+    BodyType type = BodyType::Static;
+    bool enabled = true;
+    bool alive = false;
+    // Dynamics (mass, damping, forces, sleep, contact list): owned by the step code.
+    BodyMotion motion{};
+    std::uint16_t generation = 1;
     // Shapes of a body form an intrusive doubly linked list through the shape array, so a body
     // owns no heap memory of its own.
     int headShape = kNullIndex;
     int shapeCount = 0;
     // Intrusive list of the body's joints (detail::Joint::next[side]).
     int jointHead = kNullIndex;
-    std::uint16_t generation = 1;
-    BodyType type = BodyType::Static;
-    bool enabled = true;
-    bool alive = false;
-    // Dynamics (mass, damping, forces, sleep, contact list): owned by the step code.
-    BodyMotion motion{};
+    std::uint64_t userData = 0;
 };
 
 struct Shape {
@@ -169,10 +172,11 @@ struct World::Impl {
     // Pairs -> contacts; narrow phase; begin/end/sensor events.
     void updateContacts(float dt);
     // One contact's narrow phase (contact.cpp): its new manifold and whether it touches.
-    [[nodiscard]] bool updateManifold(detail::Contact& c, float dt) const;
+    [[nodiscard]] bool updateManifold(detail::Contact& c, const detail::ContactLinks& links,
+                                      float dt) const;
     void createContact(int shapeA, int shapeB);
-    // Sets what the live contacts copy from their shapes (Contact::proxyKeyA, proxyKeyB,
-    // circles): after restoreSnapshot(), whose contacts do not carry it.
+    // Sets what the live contacts copy from their shapes (ContactLinks::proxyKeyA, proxyKeyB,
+    // Contact::circles): after restoreSnapshot(), whose contacts do not carry it.
     void copyContactShapes();
     void destroyContact(int contactIndex, bool reportEnd);
     void solve(float dt);

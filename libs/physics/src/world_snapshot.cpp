@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -162,8 +163,9 @@ void transfer(Io& io, Manifold& m) {
     field(io, "points", m.points);
     field(io, "pointCount", m.pointCount);
 }
+// A contact's origin with whether it has one (Contact::originValid), as one structure.
 template <class Io>
-void transfer(Io& io, ManifoldOrigin& o) {
+void transfer(Io& io, ManifoldOrigin& o, bool& valid) {
     Transform bInA = o.bInA();
     Vec2 aInB = o.aInB();
     field(io, "bInA", bInA);
@@ -174,7 +176,7 @@ void transfer(Io& io, ManifoldOrigin& o) {
     field(io, "normalInA", o.normalInA);
     field(io, "surfaceA", o.surfaceA);
     field(io, "surfaceB", o.surfaceB);
-    field(io, "valid", o.valid);
+    field(io, "valid", valid);
 }
 template <class Io>
 void transfer(Io& io, Softness& s) {
@@ -330,21 +332,25 @@ void transfer(Io& io, Joint& j) {
     field(io, "reactionForce", j.reactionForce);
     field(io, "reactionTorque", j.reactionTorque);
 }
+// A contact slot: its two parts (Simulation::contacts and contactLinks) as one structure.
 template <class Io>
-void transfer(Io& io, Contact& c) {
+void transfer(Io& io, Contact& c, ContactLinks& l) {
     field(io, "manifold", c.manifold);
-    field(io, "origin", c.origin);
+    {
+        auto scope = io.scope("origin");
+        transfer(io, c.origin, c.originValid);
+    }
     field(io, "friction", c.friction);
     field(io, "restitution", c.restitution);
     field(io, "rollingResistance", c.rollingResistance);
-    field(io, "shapeA", c.shapeA);
-    field(io, "shapeB", c.shapeB);
+    field(io, "shapeA", l.shapeA);
+    field(io, "shapeB", l.shapeB);
     field(io, "bodyA", c.bodyA);
     field(io, "bodyB", c.bodyB);
-    field(io, "prev", c.prev);
-    field(io, "next", c.next);
-    field(io, "idA", c.idA);
-    field(io, "idB", c.idB);
+    field(io, "prev", l.prev);
+    field(io, "next", l.next);
+    field(io, "idA", l.idA);
+    field(io, "idB", l.idB);
     field(io, "touching", c.touching);
     field(io, "sensor", c.sensor);
     field(io, "alive", c.alive);
@@ -505,6 +511,28 @@ void transfer(Io& io, IdPool& pool) {
     SnapshotAccess::transfer(io, pool);
 }
 
+// The contact slots as one sequence (sequence()'s format): the two arrays, element by element.
+template <class Io>
+void contactSequence(Io& io, Simulation& s) {
+    const std::size_t elementBytes = [] {
+        SnapshotWriter writer;
+        Contact c{};
+        ContactLinks l{};
+        transfer(writer, c, l);
+        return writer.size();
+    }();
+    std::size_t n = s.contacts.size();
+    io.count("contacts", n, elementBytes);
+    if constexpr (Io::kReading) {
+        s.contacts.resize(n);
+        s.contactLinks.resize(n);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        auto scope = io.scope("contacts", i);
+        transfer(io, s.contacts[i], s.contactLinks[i]);
+    }
+}
+
 // The payload: every section in order (see the top of the file).
 // (W: World::Impl, a template parameter as World's private type cannot be named here.)
 template <class Io, class W>
@@ -528,7 +556,7 @@ void transferWorld(Io& io, W& w) {
     sequence(io, "joints", w.joints, encodedSize<Joint>());
     field(io, "jointIds", w.jointIds);
     io.tag("CONT");
-    sequence(io, "contacts", w.sim.contacts, encodedSize<Contact>());
+    contactSequence(io, w.sim);
     sequence(io, "freeContacts", w.sim.freeContacts, 4);
     field(io, "contactCount", w.sim.contactCount);
     io.tag("BRPH");
@@ -760,13 +788,23 @@ public:
             shapesListed += static_cast<std::size_t>(count);
             jointsListed_ +=
                 listLength(b.jointHead, static_cast<int>(i), w_.joints.size(),
-                           at("bodies", i, "jointHead"), [&](int j) -> const detail::Joint* {
-                               return liveJoint(j) ? &w_.joint(j) : nullptr;
+                           at("bodies", i, "jointHead"), [&](int j) -> std::optional<ListNode> {
+                               if (!liveJoint(j)) {
+                                   return std::nullopt;
+                               }
+                               const detail::Joint& e = w_.joint(j);
+                               return ListNode{e.bodyA, e.bodyB, e.prev, e.next};
                            });
             contactsListed_ += listLength(
                 m.contactHead, static_cast<int>(i), w_.sim.contacts.size(),
-                at("bodies", i, "motion.contactHead"), [&](int c) -> const detail::Contact* {
-                    return liveContact(c) ? &w_.sim.contacts[static_cast<std::size_t>(c)] : nullptr;
+                at("bodies", i, "motion.contactHead"), [&](int c) -> std::optional<ListNode> {
+                    if (!liveContact(c)) {
+                        return std::nullopt;
+                    }
+                    const auto k = static_cast<std::size_t>(c);
+                    const detail::Contact& e = w_.sim.contacts[k];
+                    const detail::ContactLinks& l = w_.sim.contactLinks[k];
+                    return ListNode{e.bodyA, e.bodyB, l.prev, l.next};
                 });
         }
         std::size_t liveShapes = 0;
@@ -846,19 +884,20 @@ public:
         std::size_t live = 0;
         for (std::size_t i = 0; i < s.contacts.size(); ++i) {
             const detail::Contact& c = s.contacts[i];
+            const detail::ContactLinks& l = s.contactLinks[i];
             if (!c.alive) {
                 continue;
             }
             ++live;
-            require(liveShape(c.shapeA) && liveShape(c.shapeB) && c.shapeA != c.shapeB,
+            require(liveShape(l.shapeA) && liveShape(l.shapeB) && l.shapeA != l.shapeB,
                     at("contacts", i, "shapeA"), "shapeA and shapeB must name two live shapes");
-            const detail::Shape& a = w_.shape(c.shapeA);
-            const detail::Shape& b = w_.shape(c.shapeB);
+            const detail::Shape& a = w_.shape(l.shapeA);
+            const detail::Shape& b = w_.shape(l.shapeB);
             require(a.proxyKey != kNullIndex && b.proxyKey != kNullIndex, at("contacts", i),
                     "both shapes must be in the broad phase");
             require(c.bodyA == a.body && c.bodyB == b.body && c.bodyA != c.bodyB,
                     at("contacts", i, "bodyA"), "must be the shapes' (different) bodies");
-            require(c.idA == w_.shapeId(c.shapeA) && c.idB == w_.shapeId(c.shapeB),
+            require(l.idA == w_.shapeId(l.shapeA) && l.idB == w_.shapeId(l.shapeB),
                     at("contacts", i, "idA"), "must be the shapes' ids");
             require(c.manifold.pointCount >= 0 && c.manifold.pointCount <= 2,
                     at("contacts", i, "manifold.pointCount"),
@@ -1041,17 +1080,25 @@ public:
     }
 
 private:
-    // Length of a body's intrusive list (joints or contacts: prev[2], next[2], side 0 through
-    // bodyA), checking each link; `get` gives the live element or nullptr.
+    // An element of a body's intrusive list (a joint or a contact): its bodies and its links,
+    // prev[2] and next[2] (side 0 through bodyA).
+    struct ListNode {
+        int bodyA;
+        int bodyB;
+        const int* prev;
+        const int* next;
+    };
+    // Length of a body's intrusive list, checking each link; `get` gives the live element's
+    // ListNode or nullopt.
     template <class Get>
     std::size_t listLength(int head, int bodyIndex, std::size_t slots, const std::string& path,
                            Get get) const {
         std::size_t count = 0;
         int prev = kNullIndex;
         for (int k = head; k != kNullIndex;) {
-            const auto* e = get(k);
+            const std::optional<ListNode> e = get(k);
             require(
-                e != nullptr && (e->bodyA == bodyIndex || e->bodyB == bodyIndex) && count < slots,
+                e.has_value() && (e->bodyA == bodyIndex || e->bodyB == bodyIndex) && count < slots,
                 path, "the list must link live elements of this body, got " + std::to_string(k));
             const int side = e->bodyA == bodyIndex ? 0 : 1;
             require(e->prev[side] == prev, path,

@@ -891,7 +891,8 @@ void World::Impl::solve(float dt) {
         }
         // A speculative point sits midway across the gap; the hit is on A's surface.
         const ManifoldPoint& mp = c.manifold.points[h.point];
-        s.hitEvents.push_back({c.idA, c.idB, mp.point - 0.5f * mp.separation * c.manifold.normal,
+        const detail::ContactLinks& l = s.contactLinks[static_cast<std::size_t>(h.contact)];
+        s.hitEvents.push_back({l.idA, l.idB, mp.point - 0.5f * mp.separation * c.manifold.normal,
                                c.manifold.normal, h.speed});
     }
 }
