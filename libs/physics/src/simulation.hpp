@@ -209,7 +209,7 @@ struct Simulation {
     // Per world body slot, its BodyMotion::solverIndex this step: the constraint list's walk
     // reads two a contact, scattered, and the bodies themselves are too large to stay in cache.
     std::vector<int> bodySolverIndex;
-    std::vector<ContactBodyRow> contactRows; // the wide contact build's copy of each body
+    std::vector<ContactBodyRow> contactRows; // what the contacts' constraint builds read of each
     // The solved contacts, in contact order: contact index and the sides' BodyState indices
     // (-1: static or asleep).
     struct ConstraintBodies {

@@ -540,9 +540,9 @@ void World::Impl::solve(float dt) {
         // their impulses stored right after, while its lanes are in cache. A level's contacts
         // lie one island apart in the array, too far for the hardware prefetcher: where they
         // do not fit in the cache, fetch the ones a few slots ahead: the lines the solver reads
-        // (Contact::kSolverBytes), not the whole contact. (Always inlined: GCC deletes a call to
-        // a function that only prefetches, see prefetch.hpp.)
-        // prefetchEnd: the slots before it fetch (zero: none).
+        // (Contact::kSolverBytes), not the whole contact: the slots before prefetchEnd do (none
+        // where the contacts fit). (Always inlined: GCC deletes a call to a function that only
+        // prefetches, see prefetch.hpp.)
         constexpr int kPrefetchAhead = 16;
         const int prefetchEnd = s.contacts.size() * sizeof(detail::Contact) > detail::kPrefetchBytes
                                     ? constraintCount - kPrefetchAhead
