@@ -16,6 +16,11 @@
 // 2.4's at or below what Box2D v3 (AVX2, 4 sub-steps) took over Box2D 2.4 on the same scene
 // and machine, measured in interleaved rounds; `meets` says whether this run's ratio is there.
 //
+// Repetitions run interleaved (--benchmark_enable_random_interleaving=true unless the flag is
+// given): with --benchmark_repetitions=N, the rows' runs come in a random order, so e2d's and
+// Box2D's runs of a scene sample the same stretch of a shared machine instead of minutes apart,
+// and each ratio compares the two under the same load.
+//
 // Extra flags (taken out before Google Benchmark parses the rest):
 //   --e2d_settle=N  steps run before timing each scene (default 120, 2 s)
 //   --e2d_stand=N   steps of the standing check (default 600, 10 s)
@@ -42,6 +47,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -293,6 +299,18 @@ int main(int argc, char** argv) {
     Options& options = worlds().options;
     takeIntFlag(argc, argv, "e2d_settle", options.settleSteps);
     takeIntFlag(argc, argv, "e2d_stand", options.standSteps);
+    // Interleaved repetitions by default (see the top of the file).
+    std::vector<char*> args(argv, argv + argc);
+    static char interleave[] = "--benchmark_enable_random_interleaving=true";
+    const bool chosen = std::any_of(args.begin(), args.end(), [](const char* a) {
+        return std::string_view(a).starts_with("--benchmark_enable_random_interleaving");
+    });
+    if (!chosen) {
+        args.insert(args.begin() + std::min<std::ptrdiff_t>(1, argc), interleave);
+    }
+    argc = static_cast<int>(args.size());
+    args.push_back(nullptr);
+    argv = args.data();
 
     bool e2dStands = true;
     const std::string appendix = standingReport(options.standSteps, e2dStands);

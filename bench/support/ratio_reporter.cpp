@@ -36,8 +36,11 @@ void RatioReporter::ReportRuns(const std::vector<Run>& reports) {
         }
         // items_per_second is already a rate over real time; invert it to ns per item.
         const double ns = 1e9 / items->second.value;
-        if (std::find(caseOrder_.begin(), caseOrder_.end(), caseName) == caseOrder_.end()) {
-            caseOrder_.push_back(caseName);
+        // Cases in the order their benchmarks were registered, whatever order they ran in (with
+        // random interleaving, any).
+        auto [rank, added] = caseRank_.try_emplace(caseName, run.family_index);
+        if (!added) {
+            rank->second = std::min(rank->second, run.family_index);
         }
         nsPerItem_[caseName][engine] = ns;
         run.counters["ns_per_item"] = benchmark::Counter(ns);
@@ -74,7 +77,14 @@ std::string RatioReporter::markdownTable(const std::string& unit, double nsPerUn
     }
     out << '\n';
     char buf[64];
-    for (const auto& c : caseOrder_) {
+    std::vector<std::string> caseOrder;
+    for (const auto& entry : caseRank_) {
+        caseOrder.push_back(entry.first);
+    }
+    std::stable_sort(caseOrder.begin(), caseOrder.end(), [&](const auto& a, const auto& b) {
+        return caseRank_.at(a) < caseRank_.at(b);
+    });
+    for (const auto& c : caseOrder) {
         const auto& byEngine = nsPerItem_.at(c);
         out << "| " << c << " |";
         for (const auto& e : engines_) {

@@ -3,6 +3,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -20,7 +21,7 @@ struct RatioTargets {
 /// Benchmarks are named "<group>/<case>/<engine>" and process `items` pairs or bodies per
 /// iteration (SetItemsProcessed). This reporter prints as the console reporter does, adds a
 /// counter `vs_<baseline>` (this engine's time per item over the baseline engine's, measured
-/// earlier in the same run) and writes a Markdown table of ns per item and ratios.
+/// earlier in the same run; absent when the baseline's run came later) and writes a Markdown table of ns per item and ratios.
 class RatioReporter : public benchmark::ConsoleReporter {
 public:
     RatioReporter(std::string baseline, std::vector<std::string> engineOrder,
@@ -41,7 +42,7 @@ private:
     std::string baseline_;
     std::vector<std::string> engines_;
     RatioTargets targets_;
-    std::vector<std::string> caseOrder_;
+    std::map<std::string, std::int64_t> caseRank_; // case -> its first benchmark's family index
     std::map<std::string, std::map<std::string, double>> nsPerItem_; // case -> engine -> ns
 };
 
