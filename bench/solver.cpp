@@ -17,9 +17,10 @@
 // and machine, measured in interleaved rounds; `meets` says whether this run's ratio is there.
 //
 // Repetitions run interleaved (--benchmark_enable_random_interleaving=true unless the flag is
-// given): with --benchmark_repetitions=N, the rows' runs come in a random order, so e2d's and
-// Box2D's runs of a scene sample the same stretch of a shared machine instead of minutes apart,
-// and each ratio compares the two under the same load.
+// given): with --benchmark_repetitions=N, every row's runs come in a random order over the whole
+// program instead of back to back, so a few seconds of load from a neighbour on a shared machine
+// touch some runs of each engine rather than all of one row, and the medians behind each ratio
+// sample the same stretch of time.
 //
 // Extra flags (taken out before Google Benchmark parses the rest):
 //   --e2d_settle=N  steps run before timing each scene (default 120, 2 s)
