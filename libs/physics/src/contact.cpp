@@ -2,6 +2,7 @@
 // Contacts: created from new broad-phase pairs, destroyed when the fat boxes part or a shape
 // goes, updated by the narrow phase (carrying impulses by feature id) with begin/end and
 // sensor events.
+#include "contact_solver_wide.hpp"
 #include "manifold_circles.hpp"
 #include "prefetch.hpp"
 #include "world_impl.hpp"
@@ -645,11 +646,13 @@ template <bool kPrefetch>
 void narrowPassSse2(const NarrowPass& p, int firstBlock, int endBlock) {
     narrowPass<kPrefetch>(p, firstBlock, endBlock);
 }
+#if defined(E2D_HAS_WIDE8)
 template <bool kPrefetch>
 __attribute__((target("avx2"))) void narrowPassAvx2(const NarrowPass& p, int firstBlock,
                                                     int endBlock) {
     narrowPass<kPrefetch>(p, firstBlock, endBlock);
 }
+#endif
 
 } // namespace
 
@@ -724,15 +727,23 @@ void World::Impl::updateContacts(float dt) {
                           static_cast<bool>(hooks.preSolve),
                           broadPhase.fatBoxChanges() != s.fatBoxChangesTested};
     s.fatBoxChangesTested = broadPhase.fatBoxChanges();
-    // The same loop compiled for AVX2 where the solver uses it (VEX encodings: about 12 % fewer
-    // instructions, no register copies; the same operations, so the same bits, and no FMA).
-    const bool avx2 = s.simdLanes == 8 && __builtin_cpu_supports("avx2");
+    // The same loop compiled for AVX2 where the solver may use eight lanes (the CPU has them and
+    // WorldDef::simdLanes allows them; VEX encodings: about 12 % fewer instructions, no register
+    // copies; the same operations, so the same bits, and no FMA).
+#if defined(E2D_HAS_WIDE8)
+    const bool avx2 = std::min(detail::bestWideLanes(), s.simdLanes) == 8;
+#else
+    const bool avx2 = false;
+#endif
     auto updateBlocks = [&](int firstBlock, int endBlock, int /*worker*/) {
+#if defined(E2D_HAS_WIDE8)
         if (avx2) {
             (prefetch ? narrowPassAvx2<true> : narrowPassAvx2<false>)(pass, firstBlock, endBlock);
-        } else {
-            (prefetch ? narrowPassSse2<true> : narrowPassSse2<false>)(pass, firstBlock, endBlock);
+            return;
         }
+#endif
+        (void)avx2;
+        (prefetch ? narrowPassSse2<true> : narrowPassSse2<false>)(pass, firstBlock, endBlock);
     };
     // A block is 64 contacts of 25 (circles) to 55 ns (boxes).
     tasks.parallelFor(blockCount, tasks.minRange(30 * kBlock), updateBlocks);
